@@ -1,0 +1,231 @@
+/* thermoslide model: the plain data read from an Abaqus/CalculiX keyword deck.
+ *
+ * A TslModel is built by the deck reader on rank 0 (the whole mesh), then split by the mesh module into
+ * one local TslModel per rank (its elements, their nodes, and the sets/surfaces filtered to them; all
+ * non-mesh data is copied whole). The struct knows nothing of PETSc objects or physics: it is data.
+ *
+ * Conventions
+ *  - Deck ids (node and element numbers) are kept as written; arrays of ids are indexed by position.
+ *  - Set members are stored as sorted, unique deck ids.
+ *  - Degrees of freedom use the dialect's numbers: 1..3 displacement, 11 temperature.
+ *  - Every item that came from a deck line remembers where (TslLoc) so later errors can name it.
+ */
+#pragma once
+#include <thermoslide/compat.h>
+
+/* Where something came from: index into TslModel.files[] and 1-based line number (file -1: nowhere). */
+typedef struct {
+  PetscInt file, line;
+} TslLoc;
+
+/* A reference to entities by set name or by a single id: if set[0] != 0 it names a set (node set,
+ * element set or surface depending on context), otherwise id is a node/element id. */
+typedef struct {
+  char     set[TSL_NAME_LEN];
+  PetscInt id;
+} TslTarget;
+
+typedef struct {
+  char      name[TSL_NAME_LEN];
+  PetscInt  n;
+  PetscInt *ids; /* sorted unique deck ids */
+  TslLoc    loc;
+} TslSet;
+
+typedef enum { TSL_SURFACE_ELEMENT = 0, TSL_SURFACE_NODE = 1 } TslSurfaceKind;
+
+typedef struct {
+  char           name[TSL_NAME_LEN];
+  TslSurfaceKind kind;
+  PetscInt       n;     /* number of facets (ELEMENT) or nodes (NODE) */
+  PetscInt      *elem;  /* ELEMENT: element id of each facet; NODE: node ids */
+  PetscInt      *face;  /* ELEMENT: face number 1..6 (S1..S6); NODE: NULL */
+  TslLoc         loc;
+} TslSurface;
+
+typedef struct {
+  char      name[TSL_NAME_LEN];
+  PetscBool has_elastic, has_conductivity, has_density, has_specific_heat, has_expansion;
+  PetscReal E, nu;         /* *ELASTIC (isotropic) */
+  PetscReal conductivity;  /* *CONDUCTIVITY (isotropic) */
+  PetscReal density;       /* *DENSITY */
+  PetscReal specific_heat; /* *SPECIFIC HEAT */
+  PetscReal alpha;         /* *EXPANSION (isotropic) */
+  PetscReal alpha_zero;    /* *EXPANSION, ZERO= (reference temperature of alpha; default 0) */
+  TslLoc    loc;
+} TslMaterial;
+
+typedef struct {
+  char      elset[TSL_NAME_LEN];
+  char      material[TSL_NAME_LEN];
+  PetscInt  material_index; /* resolved by TslModelCheck, index into materials[] */
+  PetscReal thickness;      /* data line; plane elements' out-of-plane thickness (default 1) */
+  TslLoc    loc;
+} TslSection;
+
+typedef struct {
+  TslTarget target; /* node or node set */
+  PetscReal value;
+  TslLoc    loc;
+} TslInitialTemperature;
+
+typedef struct {
+  char       name[TSL_NAME_LEN];
+  PetscInt   n;
+  PetscReal *t, *a;      /* tabular (time, value) pairs, t ascending */
+  PetscBool  total_time; /* TIME=TOTAL TIME (default STEP TIME) */
+  TslLoc     loc;
+} TslAmplitude;
+
+/* *EQUATION: sum_k coef[k] * u(node[k], dof[k]) = 0. The first term's dof is the dependent one
+ * (eliminated), as in the dialect. gdof[] is filled by the mesh module (global PETSc dof numbers). */
+typedef struct {
+  PetscInt   n;
+  PetscInt  *node, *dof;
+  PetscReal *coef;
+  PetscInt  *gdof; /* NULL until distributed */
+  TslLoc     loc;
+} TslEquation;
+
+typedef enum {
+  TSL_LOAD_BOUNDARY = 0, /* *BOUNDARY: prescribed dofs dof_first..dof_last = value */
+  TSL_LOAD_CLOAD,        /* *CLOAD: nodal force on dof_first */
+  TSL_LOAD_CFLUX,        /* *CFLUX: nodal heat flux (dof 11) */
+  TSL_LOAD_DLOAD,        /* *DLOAD: pressure on face (face 1..6 = P1..P6) */
+  TSL_LOAD_DFLUX,        /* *DFLUX (face 1..6 = S1..S6, face 0 = BF body flux) and *DSFLUX (surface) */
+  TSL_LOAD_FILM,         /* *FILM / *SFILM: face 1..6 = F1..F6 or surface; value = h, sink */
+  TSL_LOAD_NKINDS
+} TslLoadKind;
+
+typedef struct {
+  TslLoadKind kind;
+  TslTarget   target;            /* node/nset (BOUNDARY, CLOAD, CFLUX), element/elset or surface (faces) */
+  PetscBool   target_is_surface; /* target.set names a *SURFACE (DSFLUX, surface film, surface dload) */
+  PetscInt    dof_first, dof_last;
+  PetscInt    face;              /* 1..6 for face loads; 0 = body (BF) */
+  PetscReal   value;             /* magnitude, prescribed value, flux, or film coefficient */
+  PetscReal   sink;              /* FILM sink temperature */
+  PetscInt    amplitude;         /* index into amplitudes[], -1 = step default */
+  PetscInt    film_amplitude;    /* FILM AMPLITUDE= (scales h), -1 = none */
+  PetscBool   op_new;            /* OP=NEW on this keyword: previous loads of this kind are removed */
+  TslLoc      loc;
+} TslLoad;
+
+typedef enum { TSL_AMP_RAMP = 0, TSL_AMP_STEP = 1 } TslAmpDefault;
+
+/* An output request: *NODE OUTPUT / *ELEMENT OUTPUT / *NODE PRINT / *EL PRINT. */
+typedef struct {
+  PetscBool node;                 /* node (TRUE) or element (FALSE) variables */
+  PetscBool print;                /* *NODE PRINT (table in the job log) rather than field output */
+  char      set[TSL_NAME_LEN];    /* NSET=/ELSET= or empty */
+  PetscInt  nvar;
+  char      var[16][8];           /* U, NT, RF, RFL, S, E, HFL, ... (upper case) */
+  PetscInt  frequency;            /* FREQUENCY= (default 1) */
+  TslLoc    loc;
+} TslOutputRequest;
+
+typedef struct {
+  char          name[TSL_NAME_LEN];
+  TslLoc        loc;
+  PetscBool     coupled;      /* *COUPLED TEMPERATURE-DISPLACEMENT seen */
+  PetscBool     steady;       /* STEADY STATE */
+  PetscBool     direct;       /* DIRECT: fixed increments */
+  PetscBool     nlgeom;       /* NLGEOM accepted (small-strain kinematics used; see docs) */
+  PetscReal     dt0, period, dtmin, dtmax; /* data line; defaults dt0=period=1, dtmin=1e-5*period, dtmax=period */
+  PetscReal     deltmx;       /* DELTMX (0 = none) */
+  PetscInt      max_inc;      /* INC= (default 100) */
+  TslAmpDefault amp_default;  /* *STEP, AMPLITUDE=RAMP|STEP; default RAMP for steady, STEP for transient */
+  PetscBool     amp_given;    /* AMPLITUDE= was given explicitly */
+  PetscInt      nload;
+  TslLoad      *loads;
+  PetscInt      nout;
+  TslOutputRequest *out;
+} TslStep;
+
+typedef struct {
+  /* files read (deck and *INCLUDEs), for TslLoc */
+  PetscInt nfile;
+  char   **files;
+
+  char heading[256];
+
+  /* mesh */
+  PetscInt   dim;       /* 2 or 3, from the element types */
+  PetscInt   nnode;
+  PetscInt  *node_id;   /* [nnode] */
+  PetscReal *node_xyz;  /* [3*nnode]; z = 0 in 2D */
+  PetscInt   nelem;
+  PetscInt  *elem_id;   /* [nelem] */
+  PetscInt  *elem_type; /* [nelem] index into the element catalogue */
+  PetscInt  *elem_ptr;  /* [nelem+1] offsets into elem_conn */
+  PetscInt  *elem_conn; /* deck node ids */
+  PetscInt  *elem_line; /* [2*nelem] (file, line) of each element's data line */
+
+  PetscInt    nnset, nelset, nsurface;
+  TslSet     *nsets, *elsets;
+  TslSurface *surfaces;
+
+  PetscInt     nmaterial, nsection, ninit, namplitude, nequation;
+  TslMaterial *materials;
+  TslSection  *sections;
+  TslInitialTemperature *init;
+  TslAmplitude *amplitudes;
+  TslEquation  *equations;
+
+  PetscBool has_absolute_zero, has_stefan_boltzmann;
+  PetscReal absolute_zero, stefan_boltzmann; /* *PHYSICAL CONSTANTS */
+
+  PetscInt nstep;
+  TslStep *steps;
+
+  /* Filled by the mesh module on distribution (NULL / 0 in the model read by rank 0):
+   * local nodes are ordered owned first, then ghosts. */
+  PetscInt  nnode_global, nelem_global;
+  PetscInt  nnode_owned;
+  PetscInt *node_gnum; /* [nnode] global PETSc node number (contiguous per rank) */
+  PetscInt *node_nat;  /* [nnode] natural index = rank of the id among all node ids (output order) */
+  PetscInt *elem_nat;  /* [nelem] natural index of the element (output order) */
+} TslModel;
+
+/* Lifetime. TslModelDestroy frees everything and nulls the pointer. */
+PetscErrorCode TslModelCreate(TslModel **model);
+PetscErrorCode TslModelDestroy(TslModel **model);
+
+/* Formats "file:line" for error messages into buf. */
+const char *TslLocString(const TslModel *model, TslLoc loc, char *buf, size_t len);
+
+/* Lookups by name (case-insensitive); return -1 when absent. */
+PetscInt TslModelFindNodeSet(const TslModel *model, const char *name);
+PetscInt TslModelFindElementSet(const TslModel *model, const char *name);
+PetscInt TslModelFindSurface(const TslModel *model, const char *name);
+PetscInt TslModelFindMaterial(const TslModel *model, const char *name);
+PetscInt TslModelFindAmplitude(const TslModel *model, const char *name);
+
+/* Position of a node / element id in the model's arrays, or -1. Needs TslModelIndex() first. */
+PetscErrorCode TslModelIndex(TslModel *model); /* builds the id lookups (call after the mesh changes) */
+PetscInt       TslModelNodeIndex(const TslModel *model, PetscInt id);
+PetscInt       TslModelElementIndex(const TslModel *model, PetscInt id);
+
+/* Amplitude value at time t (linear interpolation, constant beyond the ends). */
+PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t);
+
+/* Serialisation used to broadcast / scatter models. TslModelPack writes the whole model into a
+ * newly allocated buffer (caller frees with PetscFree); TslModelUnpack builds a model from it. */
+PetscErrorCode TslModelPack(const TslModel *model, char **buf, size_t *len);
+PetscErrorCode TslModelUnpack(const char *buf, size_t len, TslModel **model);
+
+/* A copy of the model restricted to the given elements (positions, not ids) and nodes (positions,
+ * in the order wanted for the copy). Sets and NODE surfaces keep only members among those nodes,
+ * element sets and ELEMENT surfaces only members among those elements; equations keep those with a
+ * term on one of those nodes. All non-mesh data is copied whole. */
+PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt elems[], PetscInt nn,
+                              const PetscInt nodes[], TslModel **sub);
+
+/* The deck reader (rank 0 only). Reads path and its *INCLUDEs, fills a model and checks it
+ * (TslModelCheck). User errors are PETSC_ERR_USER_INPUT with "file:line: message". */
+PetscErrorCode TslDeckRead(const char *path, TslModel **model);
+
+/* Consistency checks that need the whole model: undefined sets/surfaces/materials/amplitudes,
+ * elements without a section, missing material properties, wrong node counts, duplicate ids,
+ * element references to undefined nodes, steps without a procedure. */
+PetscErrorCode TslModelCheck(TslModel *model);

@@ -1,0 +1,57 @@
+/* thermoslide output: XDMF + parallel HDF5 field output and the history CSV.
+ *
+ * Field output is written in natural (deck) order: node i of the file is the i-th smallest node id,
+ * element j the j-th smallest element id, whatever the number of ranks. Each rank hands over the
+ * values of the nodes it owns and the elements it holds, with their natural indices; the writer
+ * moves them into contiguous blocks and writes collectively.
+ *
+ * Files are written under temporary names (<job>.h5.part, <job>.xmf.part, <job>.csv.part) and
+ * renamed over the final names only by TslOutputFinalize / TslHistoryFinalize, so an earlier good
+ * result is never replaced by a partial one. Destroying an output that was not finalized removes the
+ * temporary files.
+ *
+ * Layout of <job>.h5:
+ *   /mesh/coordinates   [N][3]  double
+ *   /mesh/topology      [L]     int64, XDMF "Mixed" records (cell type id, then natural node indices)
+ *   /mesh/node_ids      [N]     int64 deck node ids
+ *   /mesh/element_ids   [M]     int64 deck element ids
+ *   /frames/NNNNNN/<name>  [N][ncomp] (node fields) or [M][ncomp] (element fields) double
+ *   attributes of /frames/NNNNNN: time, step, increment
+ */
+#pragma once
+#include <thermoslide/compat.h>
+
+typedef struct _p_TslOutput *TslOutput;
+
+/* Creates the writer; dir must exist. jobname is the deck's base name without extension. */
+PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobname, TslOutput *out);
+
+/* The mesh, given once before the first frame.
+ *   nnode_global, nelem_global: totals
+ *   nnode: nodes this rank writes (its owned nodes), node_nat[nnode] their natural indices,
+ *          node_id[nnode] deck ids, xyz[3*nnode] coordinates
+ *   nelem: elements this rank holds, elem_nat[nelem] natural indices, elem_id[nelem] deck ids,
+ *          xdmf_type[nelem] cell types, ptr[nelem+1]/conn natural node indices of each element */
+PetscErrorCode TslOutputSetMesh(TslOutput out, PetscInt nnode_global, PetscInt nnode, const PetscInt node_nat[],
+                                const PetscInt node_id[], const PetscReal xyz[], PetscInt nelem_global, PetscInt nelem,
+                                const PetscInt elem_nat[], const PetscInt elem_id[], const PetscInt xdmf_type[],
+                                const PetscInt ptr[], const PetscInt conn[]);
+
+/* One frame (an output increment). Fields are given between Begin and End; vals are
+ * [nnode][ncomp] for node fields (in SetMesh's node order) and [nelem][ncomp] for element fields. */
+PetscErrorCode TslOutputBeginFrame(TslOutput out, PetscInt step, PetscInt increment, PetscReal time);
+PetscErrorCode TslOutputNodeField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[]);
+PetscErrorCode TslOutputElementField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[]);
+PetscErrorCode TslOutputEndFrame(TslOutput out); /* flushes the .h5 and rewrites the .xmf.part */
+
+/* Moves the temporary files over <job>.h5 / <job>.xmf. Collective. */
+PetscErrorCode TslOutputFinalize(TslOutput out);
+PetscErrorCode TslOutputDestroy(TslOutput *out);
+
+/* History: one CSV row per increment, written by rank 0; values must be the same on all ranks. */
+typedef struct _p_TslHistory *TslHistory;
+PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobname, PetscInt ncol,
+                                const char *const names[], TslHistory *hist);
+PetscErrorCode TslHistoryAppend(TslHistory hist, const PetscReal vals[]);
+PetscErrorCode TslHistoryFinalize(TslHistory hist);
+PetscErrorCode TslHistoryDestroy(TslHistory *hist);
