@@ -1,0 +1,64 @@
+/* thermoslide discrete problem: the coupled u-theta unknowns of a distributed mesh, the loads and
+ * constraints active in the current step, and the assembly of residual and Jacobian.
+ *
+ * Unknowns are node-interleaved blocks (u_1..u_dim, theta), block size ndof = dim + 1, numbered
+ * contiguously per rank (owned nodes); the local form of the ghosted vectors holds owned nodes first,
+ * then ghosts, in the local model's node order.
+ *
+ * Constraints are applied by row operations during assembly (see docs/design.md):
+ *   - a prescribed dof (*BOUNDARY) gets the row  u_d - g(t) = 0  and element rows of it are dropped;
+ *   - an *EQUATION  sum c_k u_k = 0 eliminates its first dof a: element rows of a are added to the rows
+ *     of the other terms with weight -c_k/c_a (T^T R), and row a becomes  u_a + sum (c_k/c_a) u_k = 0.
+ * Both keep the Jacobian consistent with the residual (-snes_test_jacobian) and need no special solver.
+ */
+#pragma once
+#include <thermoslide/model.h>
+#include <thermoslide/element.h>
+#include <petscmat.h>
+
+typedef struct _p_TslProblem *TslProblem;
+
+/* Heat and energy totals of the current state (sums over all ranks). Rates are per unit time. */
+typedef struct {
+  PetscReal heat_in;       /* applied heat: CFLUX + surface and body fluxes */
+  PetscReal film_out;      /* heat leaving through films */
+  PetscReal reaction_heat; /* heat entering through prescribed temperatures (sum of RFL) */
+  PetscReal stored_rate;   /* change of stored heat over the increment / dt (0 in steady state) */
+  PetscReal balance;       /* heat_in + reaction_heat - film_out - stored_rate */
+} TslHeatBalance;
+
+/* Takes ownership of the local model. */
+PetscErrorCode TslProblemCreate(MPI_Comm comm, TslModel *local, TslProblem *prob);
+PetscErrorCode TslProblemDestroy(TslProblem *prob);
+PetscErrorCode TslProblemGetModel(TslProblem prob, const TslModel **model);
+
+/* The solution vector (ghosted global Vec, block size ndof) and the state at the start of the increment. */
+PetscErrorCode TslProblemGetSolution(TslProblem prob, Vec *X);
+PetscErrorCode TslProblemGetOldSolution(TslProblem prob, Vec *Xold);
+/* Matrix with the exact nonzero pattern of the current constraints (re-preallocated by SetStep). */
+PetscErrorCode TslProblemGetJacobian(TslProblem prob, Mat *J);
+/* Index sets of the displacement and temperature dofs owned here (for PCFIELDSPLIT). */
+PetscErrorCode TslProblemGetFieldIS(TslProblem prob, IS *is_u, IS *is_theta);
+
+/* Activates step s (0-based): loads and boundary conditions carried over and changed as the dialect says
+ * (OP=MOD/NEW, amplitudes, RAMP/STEP). Rebuilds the matrix pattern. */
+PetscErrorCode TslProblemSetStep(TslProblem prob, PetscInt s);
+/* Time of the increment being solved: step time t (end of increment), increment dt, total time. */
+PetscErrorCode TslProblemSetTime(TslProblem prob, PetscReal step_time, PetscReal dt, PetscReal total_time);
+/* Writes the prescribed values at the current time into X (owned dofs) and updates ghosts. */
+PetscErrorCode TslProblemApplyPrescribed(TslProblem prob, Vec X);
+
+/* SNES callbacks (ctx = the problem). */
+PetscErrorCode TslProblemFormFunction(SNES snes, Vec X, Vec F, void *ctx);
+PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx);
+
+/* After convergence: reactions (RF, RFL), heat balance of the increment and field values for output.
+ * Arrays are allocated by the callee and freed with PetscFree: node fields [nnode_owned][ncomp],
+ * element fields [nelem][ncomp]. */
+PetscErrorCode TslProblemHeatBalance(TslProblem prob, TslHeatBalance *hb);
+PetscErrorCode TslProblemNodeField(TslProblem prob, const char *name, PetscInt *ncomp, PetscReal **vals);
+PetscErrorCode TslProblemElementField(TslProblem prob, const char *name, PetscInt *ncomp, PetscReal **vals);
+/* Largest temperature change over the increment (all ranks). */
+PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta);
+/* Reference magnitudes of the displacement and temperature residuals (for convergence tests). */
+PetscErrorCode TslProblemResidualNorms(TslProblem prob, Vec F, PetscReal *norm_u, PetscReal *norm_theta);

@@ -1,0 +1,241 @@
+/* Partition the model read on rank 0 and send each rank its part (see include/thermoslide/mesh.h). */
+#include <thermoslide/mesh.h>
+#include <thermoslide/element.h>
+#include <metis.h>
+#include <string.h>
+
+typedef struct {
+  const PetscInt  *key;
+  const PetscReal *rkey;
+} SortCtx;
+
+/* Order of positions 0..n-1 by an integer key (ties keep position order). */
+static PetscErrorCode SortByInt(PetscInt n, const PetscInt key[], PetscInt perm[])
+{
+  PetscInt *k;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(n, &k));
+  for (PetscInt i = 0; i < n; i++) perm[i] = i, k[i] = key[i];
+  PetscCall(PetscSortIntWithArray(n, k, perm));
+  PetscCall(PetscFree(k));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode PartitionMetis(const TslModel *g, PetscInt nparts, PetscInt epart[])
+{
+  idx_t  ne = (idx_t)g->nelem, nn = (idx_t)g->nnode, ncommon = g->dim == 2 ? 2 : 3, np = (idx_t)nparts, objval;
+  idx_t *eptr, *eind, *ep, *npart, opts[METIS_NOPTIONS];
+  int    status;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc4(ne + 1, &eptr, g->elem_ptr[g->nelem], &eind, ne, &ep, nn, &npart));
+  for (PetscInt e = 0; e <= g->nelem; e++) eptr[e] = (idx_t)g->elem_ptr[e];
+  for (PetscInt k = 0; k < g->elem_ptr[g->nelem]; k++) eind[k] = (idx_t)TslModelNodeIndex(g, g->elem_conn[k]);
+  METIS_SetDefaultOptions(opts);
+  opts[METIS_OPTION_NUMBERING] = 0;
+  opts[METIS_OPTION_SEED]      = 1;
+  status = METIS_PartMeshDual(&ne, &nn, eptr, eind, NULL, NULL, &ncommon, &np, NULL, opts, &objval, ep, npart);
+  PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS_PartMeshDual failed (status %d)", status);
+  for (PetscInt e = 0; e < g->nelem; e++) epart[e] = (PetscInt)ep[e];
+  PetscCall(PetscFree4(eptr, eind, ep, npart));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Slabs of equal element count ordered by the centroid coordinate along one axis: lets tests force a cut
+ * (e.g. between two bodies in contact). */
+static PetscErrorCode PartitionAxis(const TslModel *g, PetscInt axis, PetscInt nparts, PetscInt epart[])
+{
+  PetscReal *c;
+  PetscInt  *perm;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(g->nelem, &c, g->nelem, &perm));
+  for (PetscInt e = 0; e < g->nelem; e++) {
+    PetscInt n = g->elem_ptr[e + 1] - g->elem_ptr[e];
+    c[e]       = 0;
+    for (PetscInt k = g->elem_ptr[e]; k < g->elem_ptr[e + 1]; k++) c[e] += g->node_xyz[3 * TslModelNodeIndex(g, g->elem_conn[k]) + axis];
+    c[e] /= n;
+    perm[e] = e;
+  }
+  PetscCall(PetscSortRealWithArrayInt(g->nelem, c, perm));
+  for (PetscInt i = 0; i < g->nelem; i++) epart[perm[i]] = (i * nparts) / g->nelem;
+  PetscCall(PetscFree2(c, perm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Local dof offset of a dialect dof number. */
+static PetscInt DofOffset(PetscInt dim, PetscInt dof)
+{
+  return dof == 11 ? dim : dof - 1;
+}
+
+/* Builds the part of rank r: its elements, nodes (owned, then ghosts), numbering arrays. */
+static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt epart[], const PetscInt owner[], const PetscInt gnum[],
+                                const PetscInt node_nat[], const PetscInt elem_nat[], const PetscInt elem_by_id[], PetscInt nnode_used,
+                                PetscInt *mark, TslModel **part)
+{
+  PetscInt *elems, *nodes, *key, ne = 0, nn = 0, nown = 0;
+  TslModel *sub;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscArrayzero(mark, g->nnode));
+  PetscCall(PetscMalloc1(g->nelem, &elems));
+  for (PetscInt i = 0; i < g->nelem; i++) {
+    PetscInt e = elem_by_id[i];
+    if (epart[e] != r) continue;
+    elems[ne++] = e;
+    for (PetscInt k = g->elem_ptr[e]; k < g->elem_ptr[e + 1]; k++) mark[TslModelNodeIndex(g, g->elem_conn[k])] = 1;
+  }
+  /* constraint closure: every node of an equation that touches this part */
+  for (PetscInt q = 0; q < g->nequation; q++) {
+    PetscBool touch = PETSC_FALSE;
+    for (PetscInt t = 0; t < g->equations[q].n; t++)
+      if (mark[TslModelNodeIndex(g, g->equations[q].node[t])] == 1) touch = PETSC_TRUE;
+    if (touch)
+      for (PetscInt t = 0; t < g->equations[q].n; t++) {
+        PetscInt p = TslModelNodeIndex(g, g->equations[q].node[t]);
+        if (!mark[p]) mark[p] = 2;
+      }
+  }
+  PetscCall(PetscMalloc2(g->nnode, &nodes, g->nnode, &key));
+  for (PetscInt p = 0; p < g->nnode; p++)
+    if (mark[p] && owner[p] == r) nodes[nn] = p, key[nn++] = gnum[p];
+  nown = nn;
+  for (PetscInt p = 0; p < g->nnode; p++)
+    if (mark[p] && owner[p] != r) nodes[nn] = p, key[nn++] = gnum[p];
+  PetscCall(PetscSortIntWithArray(nown, key, nodes));
+  PetscCall(PetscSortIntWithArray(nn - nown, key + nown, nodes + nown));
+
+  PetscCall(TslModelSubset(g, ne, elems, nn, nodes, &sub));
+  sub->nnode_global = nnode_used;
+  sub->nelem_global = g->nelem;
+  sub->nnode_owned  = nown;
+  PetscCall(PetscMalloc3(nn, &sub->node_gnum, nn, &sub->node_nat, ne, &sub->elem_nat));
+  for (PetscInt i = 0; i < nn; i++) sub->node_gnum[i] = gnum[nodes[i]], sub->node_nat[i] = node_nat[nodes[i]];
+  for (PetscInt i = 0; i < ne; i++) sub->elem_nat[i] = elem_nat[elems[i]];
+  PetscCall(PetscFree(elems));
+  PetscCall(PetscFree2(nodes, key));
+  *part = sub;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt size, TslModel **local)
+{
+  PetscInt *epart, *owner, *gnum, *node_nat, *elem_nat, *node_by_id, *elem_by_id, *count, *offset, *mark, nused = 0;
+  char      method[32] = "metis";
+  PetscInt  ndof       = g->dim + 1;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslModelIndex(g));
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-tsl_partition", method, sizeof(method), NULL));
+  PetscCheck(g->nelem >= size, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "the model has %" PetscInt_FMT " elements, fewer than the %d ranks", g->nelem, (int)size);
+  PetscCall(PetscMalloc4(g->nelem, &epart, g->nnode, &owner, g->nnode, &gnum, g->nnode, &node_nat));
+  PetscCall(PetscMalloc4(g->nelem, &elem_nat, g->nnode, &node_by_id, g->nelem, &elem_by_id, g->nnode, &mark));
+  PetscCall(PetscCalloc2(size, &count, size + 1, &offset));
+
+  if (size == 1) {
+    for (PetscInt e = 0; e < g->nelem; e++) epart[e] = 0;
+  } else if (!strcmp(method, "metis")) {
+    PetscCall(PartitionMetis(g, size, epart));
+  } else if (!strncmp(method, "axis_", 5) && method[5] >= 'x' && method[5] <= 'z' && !method[6]) {
+    PetscCall(PartitionAxis(g, method[5] - 'x', size, epart));
+  } else SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_partition %s: expected metis, axis_x, axis_y or axis_z", method);
+
+  /* owner = lowest rank among the elements using the node; -1 for nodes no element uses */
+  for (PetscInt p = 0; p < g->nnode; p++) owner[p] = -1;
+  for (PetscInt e = 0; e < g->nelem; e++)
+    for (PetscInt k = g->elem_ptr[e]; k < g->elem_ptr[e + 1]; k++) {
+      PetscInt p = TslModelNodeIndex(g, g->elem_conn[k]);
+      if (owner[p] < 0 || epart[e] < owner[p]) owner[p] = epart[e];
+    }
+  PetscCall(SortByInt(g->nnode, g->node_id, node_by_id));
+  PetscCall(SortByInt(g->nelem, g->elem_id, elem_by_id));
+  for (PetscInt i = 0; i < g->nnode; i++) {
+    PetscInt p = node_by_id[i];
+    if (owner[p] < 0) {
+      gnum[p] = node_nat[p] = -1;
+      continue;
+    }
+    node_nat[p] = nused++;
+    count[owner[p]]++;
+  }
+  for (PetscMPIInt r = 0; r < size; r++) offset[r + 1] = offset[r] + count[r];
+  for (PetscMPIInt r = 0; r < size; r++) count[r] = 0;
+  for (PetscInt i = 0; i < g->nnode; i++) {
+    PetscInt p = node_by_id[i];
+    if (owner[p] >= 0) gnum[p] = offset[owner[p]] + count[owner[p]]++;
+  }
+  for (PetscInt i = 0; i < g->nelem; i++) elem_nat[elem_by_id[i]] = i;
+  for (PetscMPIInt r = 0; r < size; r++)
+    PetscCheck(count[r] > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "the partition left rank %d without nodes; use fewer ranks", (int)r);
+
+  /* equations in global dof numbers */
+  for (PetscInt q = 0; q < g->nequation; q++) {
+    TslEquation *eq = &g->equations[q];
+    char         loc[PETSC_MAX_PATH_LEN + 32];
+    if (!eq->gdof) PetscCall(PetscMalloc1(eq->n, &eq->gdof));
+    for (PetscInt t = 0; t < eq->n; t++) {
+      PetscInt p = TslModelNodeIndex(g, eq->node[t]);
+      PetscCheck(p >= 0 && owner[p] >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: *EQUATION node %" PetscInt_FMT " does not belong to any element",
+                 TslLocString(g, eq->loc, loc, sizeof(loc)), eq->node[t]);
+      eq->gdof[t] = gnum[p] * ndof + DofOffset(g->dim, eq->dof[t]);
+    }
+  }
+
+  for (PetscMPIInt r = size - 1; r >= 0; r--) {
+    TslModel *part;
+    PetscCall(BuildPart(g, r, epart, owner, gnum, node_nat, elem_nat, elem_by_id, nused, mark, &part));
+    if (r == 0) {
+      *local = part;
+    } else {
+      char         *buf;
+      size_t        len;
+      unsigned long n;
+      PetscCall(TslModelPack(part, &buf, &len));
+      n = (unsigned long)len;
+      PetscCallMPI(MPI_Send(&n, 1, MPI_UNSIGNED_LONG, r, 0, comm));
+      PetscCallMPI(MPI_Send(buf, (int)len, MPI_BYTE, r, 1, comm));
+      PetscCall(PetscFree(buf));
+      PetscCall(TslModelDestroy(&part));
+    }
+  }
+  PetscCall(PetscFree4(epart, owner, gnum, node_nat));
+  PetscCall(PetscFree4(elem_nat, node_by_id, elem_by_id, mark));
+  PetscCall(PetscFree2(count, offset));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslMeshDistribute(MPI_Comm comm, TslModel **global, TslModel **local)
+{
+  PetscMPIInt    rank, size;
+  PetscErrorCode ierr = PETSC_SUCCESS;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(comm, &rank));
+  PetscCallMPI(MPI_Comm_size(comm, &size));
+  if (rank == 0) {
+    /* errors on rank 0 must reach the others, which wait in MPI_Recv */
+    ierr = DistributeRoot(comm, *global, size, local);
+    if (ierr) {
+      unsigned long zero = 0;
+      for (PetscMPIInt r = 1; r < size; r++) PetscCallMPI(MPI_Send(&zero, 1, MPI_UNSIGNED_LONG, r, 0, comm));
+    }
+    PetscCall(TslModelDestroy(global));
+  } else {
+    unsigned long n;
+    char         *buf;
+    PetscCallMPI(MPI_Recv(&n, 1, MPI_UNSIGNED_LONG, 0, 0, comm, MPI_STATUS_IGNORE));
+    if (n == 0) ierr = PETSC_ERR_USER_INPUT;
+    else {
+      PetscCall(PetscMalloc1(n, &buf));
+      PetscCallMPI(MPI_Recv(buf, (int)n, MPI_BYTE, 0, 1, comm, MPI_STATUS_IGNORE));
+      PetscCall(TslModelUnpack(buf, (size_t)n, local));
+      PetscCall(PetscFree(buf));
+    }
+  }
+  PetscCallMPI(MPI_Bcast(&ierr, 1, MPI_INT, 0, comm));
+  PetscCheck(!ierr, comm, PETSC_ERR_USER_INPUT, "mesh distribution failed (see the message above)");
+  PetscCall(TslModelIndex(*local));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

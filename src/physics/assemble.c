@@ -1,0 +1,365 @@
+/* Assembly of the coupled residual and Jacobian, with constraints applied by row operations.
+ *
+ * One element loop serves four purposes (AsmMode): the constrained residual, the constrained
+ * Jacobian, the nonzero pattern of that Jacobian (exact preallocation through MATPREALLOCATOR), and
+ * the unconstrained residual whose values at prescribed dofs are the reactions RF / RFL. Because the
+ * pattern is produced by the very code that inserts values, preallocation is exact by construction.
+ */
+#include "problem_impl.h"
+
+typedef enum { ASM_RESIDUAL, ASM_JACOBIAN, ASM_PATTERN, ASM_RAW } AsmMode;
+
+typedef struct {
+  PetscReal flux_in; /* heat added by fluxes (faces, body) */
+  PetscReal film;    /* heat added by films (negative when heat leaves) */
+} AsmHeat;
+
+void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const PetscScalar *xoa, TslElemData *d)
+{
+  const TslModel *m  = p->m;
+  PetscInt        k0 = m->elem_ptr[e];
+
+  d->n  = m->elem_ptr[e + 1] - k0;
+  d->nd = d->n * p->ndof;
+  for (PetscInt a = 0; a < d->n; a++) {
+    PetscInt l = p->elem_lnode[k0 + a];
+    for (PetscInt c = 0; c < 3; c++) d->x[3 * a + c] = m->node_xyz[3 * l + c];
+    for (PetscInt i = 0; i < p->ndof; i++) {
+      d->ld[a * p->ndof + i] = l * p->ndof + i;
+      d->u[a * p->ndof + i]  = xa ? PetscRealPart(xa[l * p->ndof + i]) : 0;
+      d->uo[a * p->ndof + i] = xoa ? PetscRealPart(xoa[l * p->ndof + i]) : 0;
+    }
+    d->ti[a] = p->theta_init[l];
+  }
+  d->in.type       = TslElementTypeGet(m->elem_type[e]);
+  d->in.mat        = &p->emat[e];
+  d->in.x          = d->x;
+  d->in.u          = d->u;
+  d->in.u_old      = d->uo;
+  d->in.theta_init = d->ti;
+  d->in.dt         = p->dt > 0 ? p->dt : 1.0;
+  d->in.steady     = p->steady;
+}
+
+/* Adds weight * (row r of R, K) to local row `row`. */
+static PetscErrorCode AddRow(AsmMode mode, Mat A, PetscScalar *f, PetscInt row, PetscReal w, PetscInt r, PetscInt n, const PetscInt ld[],
+                             const PetscReal R[], const PetscReal K[])
+{
+  PetscScalar v[TSL_MAX_ELEM_DOF];
+
+  PetscFunctionBeginUser;
+  if (mode == ASM_RESIDUAL || mode == ASM_RAW) {
+    f[row] += w * R[r];
+  } else {
+    for (PetscInt j = 0; j < n; j++) v[j] = K ? w * K[r * n + j] : 0;
+    PetscCall(MatSetValuesLocal(A, 1, &row, n, ld, v, ADD_VALUES));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Inserts an element block, applying the constraints: rows of prescribed dofs are dropped, rows of
+ * dofs eliminated by an equation go to the other terms' rows with weight -c_k/c_0 (T^T R, T^T K). */
+static PetscErrorCode Insert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[], const PetscReal K[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt r = 0; r < n; r++) {
+    PetscInt row = ld[r], q = p->dep[row];
+    if (mode == ASM_RAW) {
+      f[row] += R[r];
+      continue;
+    }
+    if (p->bc[row].active) continue;
+    if (q < 0) {
+      PetscCall(AddRow(mode, A, f, row, 1.0, r, n, ld, R, K));
+      continue;
+    }
+    for (PetscInt t = 1; t < p->m->equations[q].n; t++) {
+      PetscInt tr = p->eq_ldof[q][t];
+      if (p->bc[tr].active) continue;
+      PetscCall(AddRow(mode, A, f, tr, -p->m->equations[q].coef[t] / p->m->equations[q].coef[0], r, n, ld, R, K));
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode FaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscReal *value, PetscReal *sink)
+{
+  PetscFunctionBeginUser;
+  *value = TslProblemEvalHistory(p, &r->value);
+  *sink  = TslProblemEvalHistory(p, &r->sink);
+  if (r->film_amp >= 0) {
+    const TslAmplitude *a = &p->m->amplitudes[r->film_amp];
+    *value *= TslAmplitudeEval(a, a->total_time ? p->ttot : p->t);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The element loop. xa, xoa: local forms of the current and old solution; f: local form of the residual. */
+static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScalar *xa, const PetscScalar *xoa, PetscScalar *f, Mat A, AsmHeat *heat,
+                                    PetscInt *bad_elem)
+{
+  const TslModel *m    = p->m;
+  PetscBool       need_k = (mode == ASM_JACOBIAN);
+  PetscReal      *R, *K;
+  TslElemData     d;
+
+  PetscFunctionBeginUser;
+  *bad_elem = -1;
+  if (heat) heat->flux_in = heat->film = 0;
+  PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &K));
+  for (PetscInt e = 0; e < m->nelem; e++) {
+    PetscBool inverted = PETSC_FALSE;
+    TslProblemGather(p, e, xa, xoa, &d);
+    if (mode == ASM_PATTERN) {
+      PetscCall(Insert(p, mode, A, f, d.nd, d.ld, NULL, NULL));
+      continue;
+    }
+    PetscCall(TslElementResidual(&d.in, R, need_k ? K : NULL, &inverted));
+    if (inverted) {
+      if (*bad_elem < 0) *bad_elem = e;
+      continue;
+    }
+    PetscCall(Insert(p, mode, A, f, d.nd, d.ld, R, need_k ? K : NULL));
+    for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
+      const TslFaceRecord *r = &p->face[i];
+      PetscReal            value, sink, h = 0;
+      PetscCall(FaceLoadValue(p, r, &value, &sink));
+      PetscCall(PetscArrayzero(R, d.nd));
+      if (need_k) PetscCall(PetscArrayzero(K, d.nd * d.nd));
+      PetscCall(TslElementFaceLoad(&d.in, r->kind, r->face, value, sink, R, need_k ? K : NULL, &h));
+      PetscCall(Insert(p, mode, A, f, d.nd, d.ld, R, need_k ? K : NULL));
+      if (heat) {
+        if (r->kind == TSL_FACE_FILM) heat->film += h;
+        else if (r->kind != TSL_FACE_PRESSURE) heat->flux_in += h;
+      }
+    }
+  }
+  /* nodal loads (owned dofs only): residual = internal - external */
+  if (mode == ASM_RESIDUAL || mode == ASM_RAW) {
+    for (PetscInt dof = 0; dof < p->nown * p->ndof; dof++) {
+      PetscReal v;
+      if (!p->nload[dof].active) continue;
+      v = -TslProblemEvalHistory(p, &p->nload[dof]);
+      PetscCall(Insert(p, mode, A, f, 1, &dof, &v, NULL));
+      if (heat && dof % p->ndof == p->dim) heat->flux_in -= v;
+    }
+  }
+  PetscCall(PetscFree2(R, K));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* An inverted element on any rank is a user error on all ranks (collective). */
+static PetscErrorCode CheckBadElement(TslProblem p, PetscInt bad)
+{
+  PetscInt loc[3] = {-1, -1, -1}, g[3];
+  char     where[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBeginUser;
+  if (bad >= 0) loc[0] = p->m->elem_id[bad], loc[1] = p->m->elem_line[2 * bad], loc[2] = p->m->elem_line[2 * bad + 1];
+  PetscCall(MPIU_Allreduce(loc, g, 3, MPIU_INT, MPI_MAX, p->comm));
+  if (g[0] >= 0) {
+    TslLoc l = {g[1], g[2]};
+    SETERRQ(p->comm, PETSC_ERR_USER_INPUT, "%s: element %" PetscInt_FMT " is inverted or degenerate (non-positive Jacobian determinant)", TslLocString(p->m, l, where, sizeof(where)), g[0]);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemCheckElements(TslProblem p)
+{
+  PetscReal R[TSL_MAX_ELEM_DOF];
+  PetscInt  bad = -1;
+  TslElemData d;
+
+  PetscFunctionBeginUser;
+  for (PetscInt e = 0; e < p->m->nelem && bad < 0; e++) {
+    PetscBool inverted = PETSC_FALSE;
+    TslProblemGather(p, e, NULL, NULL, &d);
+    d.in.steady = PETSC_TRUE;
+    PetscCall(TslElementResidual(&d.in, R, NULL, &inverted));
+    if (inverted) bad = e;
+  }
+  PetscCall(CheckBadElement(p, bad));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Rows of the constraints themselves: u_d - g = 0 and u_a + sum_k (c_k/c_0) u_k = 0 (owned rows only). */
+static PetscErrorCode ConstraintRows(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *F, Mat A)
+{
+  const PetscReal one = 1.0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < p->nown * p->ndof; d++) {
+    PetscInt q = p->dep[d];
+    if (p->bc[d].active) {
+      if (mode == ASM_RESIDUAL) F[d] = xa[d] - TslProblemEvalHistory(p, &p->bc[d]);
+      else PetscCall(MatSetValuesLocal(A, 1, &d, 1, &d, &one, ADD_VALUES));
+    } else if (q >= 0) {
+      const TslEquation *eq = &p->m->equations[q];
+      PetscScalar        v[64];
+      PetscCheck(eq->n <= 64, PETSC_COMM_SELF, PETSC_ERR_SUP, "equations with more than 64 terms");
+      for (PetscInt t = 0; t < eq->n; t++) v[t] = eq->coef[t] / eq->coef[0];
+      if (mode == ASM_RESIDUAL) {
+        F[d] = 0;
+        for (PetscInt t = 0; t < eq->n; t++) F[d] += v[t] * xa[p->eq_ldof[q][t]];
+      } else PetscCall(MatSetValuesLocal(A, 1, &d, eq->n, p->eq_ldof[q], v, ADD_VALUES));
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Local forms of X (ghosts updated) and Xold. */
+static PetscErrorCode GetStates(TslProblem p, Vec X, Vec *xl, Vec *xol, const PetscScalar **xa, const PetscScalar **xoa)
+{
+  PetscFunctionBeginUser;
+  if (X != p->Xl) PetscCall(VecCopy(X, p->Xl));
+  PetscCall(VecGhostUpdateBegin(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateBegin(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostGetLocalForm(p->Xl, xl));
+  PetscCall(VecGhostGetLocalForm(p->Xold, xol));
+  PetscCall(VecGetArrayRead(*xl, xa));
+  PetscCall(VecGetArrayRead(*xol, xoa));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode RestoreStates(TslProblem p, Vec *xl, Vec *xol, const PetscScalar **xa, const PetscScalar **xoa)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecRestoreArrayRead(*xl, xa));
+  PetscCall(VecRestoreArrayRead(*xol, xoa));
+  PetscCall(VecGhostRestoreLocalForm(p->Xl, xl));
+  PetscCall(VecGhostRestoreLocalForm(p->Xold, xol));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Residual (constrained or raw) into F. */
+static PetscErrorCode Residual(TslProblem p, AsmMode mode, Vec X, Vec F, AsmHeat *heat)
+{
+  Vec                xl, xol, fl;
+  const PetscScalar *xa, *xoa;
+  PetscScalar       *fa, *Fa;
+  PetscInt           bad;
+
+  PetscFunctionBeginUser;
+  PetscCall(GetStates(p, X, &xl, &xol, &xa, &xoa));
+  PetscCall(VecGhostGetLocalForm(p->Fl, &fl));
+  PetscCall(VecZeroEntries(fl));
+  PetscCall(VecGetArray(fl, &fa));
+  PetscCall(AssembleLocal(p, mode, xa, xoa, fa, NULL, heat, &bad));
+  PetscCall(VecRestoreArray(fl, &fa));
+  PetscCall(VecGhostRestoreLocalForm(p->Fl, &fl));
+  PetscCall(CheckBadElement(p, bad));
+  PetscCall(VecGhostUpdateBegin(p->Fl, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateEnd(p->Fl, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecCopy(p->Fl, F));
+  if (mode == ASM_RESIDUAL) {
+    PetscCall(VecGetArray(F, &Fa));
+    PetscCall(ConstraintRows(p, mode, xa, Fa, NULL));
+    PetscCall(VecRestoreArray(F, &Fa));
+  }
+  PetscCall(RestoreStates(p, &xl, &xol, &xa, &xoa));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemFormFunction(SNES snes, Vec X, Vec F, void *ctx)
+{
+  PetscFunctionBeginUser;
+  (void)snes;
+  PetscCall(Residual((TslProblem)ctx, ASM_RESIDUAL, X, F, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
+{
+  TslProblem         p = (TslProblem)ctx;
+  Vec                xl, xol;
+  const PetscScalar *xa, *xoa;
+  PetscInt           bad;
+
+  PetscFunctionBeginUser;
+  (void)snes;
+  PetscCall(MatZeroEntries(P));
+  PetscCall(GetStates(p, X, &xl, &xol, &xa, &xoa));
+  PetscCall(AssembleLocal(p, ASM_JACOBIAN, xa, xoa, NULL, P, NULL, &bad));
+  PetscCall(ConstraintRows(p, ASM_JACOBIAN, xa, NULL, P));
+  PetscCall(RestoreStates(p, &xl, &xol, &xa, &xoa));
+  PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
+  PetscCall(CheckBadElement(p, bad));
+  if (J != P) {
+    PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
+    PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemPreallocate(TslProblem p)
+{
+  Mat      pre, J;
+  PetscInt n = p->nown * p->ndof, bad;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatCreate(p->comm, &pre));
+  PetscCall(MatSetSizes(pre, n, n, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetType(pre, MATPREALLOCATOR));
+  PetscCall(MatSetBlockSize(pre, p->ndof));
+  PetscCall(MatSetLocalToGlobalMapping(pre, p->l2g, p->l2g));
+  PetscCall(MatSetUp(pre));
+  PetscCall(AssembleLocal(p, ASM_PATTERN, NULL, NULL, NULL, pre, NULL, &bad));
+  PetscCall(ConstraintRows(p, ASM_PATTERN, NULL, NULL, pre));
+  PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
+
+  PetscCall(MatCreate(p->comm, &J));
+  PetscCall(MatSetSizes(J, n, n, PETSC_DETERMINE, PETSC_DETERMINE));
+  PetscCall(MatSetType(J, MATAIJ));
+  PetscCall(MatSetBlockSize(J, p->ndof));
+  PetscCall(MatSetFromOptions(J));
+  PetscCall(MatSetLocalToGlobalMapping(J, p->l2g, p->l2g));
+  PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, J));
+  PetscCall(MatSetOption(J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscCall(MatDestroy(&pre));
+  PetscCall(MatDestroy(&p->J));
+  p->J = J;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
+{
+  AsmHeat            heat;
+  const PetscScalar *r;
+  PetscReal          loc[4] = {0, 0, 0, 0}, g[4];
+
+  PetscFunctionBeginUser;
+  PetscCall(Residual(p, ASM_RAW, p->X, p->Rraw, &heat));
+  PetscCall(VecGetArrayRead(p->Rraw, &r));
+  for (PetscInt n = 0; n < p->nown; n++) {
+    PetscInt d = n * p->ndof + p->dim;
+    if (p->bc[d].active) loc[2] += PetscRealPart(r[d]);
+  }
+  PetscCall(VecRestoreArrayRead(p->Rraw, &r));
+  loc[0] = heat.flux_in;
+  loc[1] = -heat.film;
+  if (!p->steady) {
+    Vec                xl, xol;
+    const PetscScalar *xa, *xoa;
+    TslElemData        d;
+    PetscCall(GetStates(p, p->X, &xl, &xol, &xa, &xoa));
+    for (PetscInt e = 0; e < p->m->nelem; e++) {
+      PetscReal dq;
+      TslProblemGather(p, e, xa, xoa, &d);
+      PetscCall(TslElementHeatChange(&d.in, &dq));
+      loc[3] += dq;
+    }
+    PetscCall(RestoreStates(p, &xl, &xol, &xa, &xoa));
+    loc[3] /= (p->dt > 0 ? p->dt : 1.0);
+  }
+  PetscCall(MPIU_Allreduce(loc, g, 4, MPIU_REAL, MPIU_SUM, p->comm));
+  hb->heat_in       = g[0];
+  hb->film_out      = g[1];
+  hb->reaction_heat = g[2];
+  hb->stored_rate   = g[3];
+  hb->balance       = g[0] + g[2] - g[1] - g[3];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,275 @@
+/* Step loading history: which boundary conditions and loads are active, and their values in time.
+ *
+ * Dialect semantics (see docs/keywords.md, "Loads across steps"):
+ *  - a load or boundary condition stays active in later steps; one that followed a step-time amplitude
+ *    (or the step's ramp) is held at the value it reached at the end of its step; total-time amplitudes
+ *    keep being followed;
+ *  - OP=NEW on any line of a kind removes all earlier loads of that kind at the start of the step;
+ *  - a value defined without amplitude ramps from its previous value (or, for a newly prescribed dof,
+ *    from the current solution) under AMPLITUDE=RAMP, and applies at once under AMPLITUDE=STEP;
+ *  - film coefficients and sink temperatures apply at once, scaled by their amplitudes if given.
+ */
+#include "problem_impl.h"
+
+PetscReal TslProblemEvalHistory(TslProblem p, const TslHistoryValue *h)
+{
+  if (!h->active) return 0;
+  if (h->amp >= 0) {
+    const TslAmplitude *a = &p->m->amplitudes[h->amp];
+    return h->v1 * TslAmplitudeEval(a, a->total_time ? p->ttot : p->t);
+  }
+  if (h->amp == TSL_AMP_HOLD || p->amp_default == TSL_AMP_STEP) return h->v1;
+  return h->v0 + (h->v1 - h->v0) * (p->period > 0 ? p->t / p->period : 1.0);
+}
+
+/* At a step change: the value reached becomes a constant, unless it follows a total-time amplitude. */
+static void Freeze(TslProblem p, TslHistoryValue *h)
+{
+  PetscReal v;
+
+  if (!h->active) return;
+  if (h->amp >= 0 && p->m->amplitudes[h->amp].total_time) return;
+  v     = TslProblemEvalHistory(p, h);
+  h->v0 = h->v1 = v;
+  h->amp        = TSL_AMP_HOLD;
+}
+
+/* Starts a new value from the current one. */
+static void Redefine(TslHistoryValue *h, PetscReal start, PetscReal value, PetscInt amp)
+{
+  h->v0     = h->active ? h->v1 : start;
+  h->v1     = value;
+  h->amp    = amp;
+  h->active = PETSC_TRUE;
+}
+
+/* Local nodes of a node target (set members present here, or one id). Returns a list to free. */
+static PetscErrorCode TargetNodes(TslProblem p, const TslTarget *t, PetscInt *n, PetscInt **nodes)
+{
+  TslModel *m = p->m;
+
+  PetscFunctionBeginUser;
+  *n = 0;
+  if (t->set[0]) {
+    PetscInt k = TslModelFindNodeSet(m, t->set);
+    PetscCall(PetscMalloc1(k >= 0 ? m->nsets[k].n : 0, nodes));
+    if (k >= 0)
+      for (PetscInt i = 0; i < m->nsets[k].n; i++) {
+        PetscInt l = TslModelNodeIndex(m, m->nsets[k].ids[i]);
+        if (l >= 0) (*nodes)[(*n)++] = l;
+      }
+  } else {
+    PetscInt l = TslModelNodeIndex(m, t->id);
+    PetscCall(PetscMalloc1(1, nodes));
+    if (l >= 0) (*nodes)[(*n)++] = l;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Local (element, face) pairs of a face-load target. */
+static PetscErrorCode TargetFaces(TslProblem p, const TslLoad *ld, PetscInt *n, PetscInt **elem, PetscInt **face)
+{
+  TslModel *m = p->m;
+  PetscInt  k, cap;
+
+  PetscFunctionBeginUser;
+  *n = 0;
+  if (ld->target_is_surface) {
+    k   = TslModelFindSurface(m, ld->target.set);
+    cap = k >= 0 ? m->surfaces[k].n : 0;
+    PetscCall(PetscMalloc2(cap, elem, cap, face));
+    for (PetscInt i = 0; i < cap; i++) {
+      PetscInt e = TslModelElementIndex(m, m->surfaces[k].elem[i]);
+      if (e >= 0) (*elem)[*n] = e, (*face)[(*n)++] = m->surfaces[k].face[i];
+    }
+  } else if (ld->target.set[0]) {
+    k   = TslModelFindElementSet(m, ld->target.set);
+    cap = k >= 0 ? m->elsets[k].n : 0;
+    PetscCall(PetscMalloc2(cap, elem, cap, face));
+    for (PetscInt i = 0; i < cap; i++) {
+      PetscInt e = TslModelElementIndex(m, m->elsets[k].ids[i]);
+      if (e >= 0) (*elem)[*n] = e, (*face)[(*n)++] = ld->face;
+    }
+  } else {
+    PetscInt e = TslModelElementIndex(m, ld->target.id);
+    PetscCall(PetscMalloc2(1, elem, 1, face));
+    if (e >= 0) (*elem)[*n] = e, (*face)[(*n)++] = ld->face;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static int CompareFace(const void *a, const void *b)
+{
+  const TslFaceRecord *x = a, *y = b;
+  if (x->elem != y->elem) return x->elem < y->elem ? -1 : 1;
+  if (x->face != y->face) return x->face < y->face ? -1 : 1;
+  if (x->kind != y->kind) return x->kind < y->kind ? -1 : 1;
+  return x->seq < y->seq ? -1 : (x->seq > y->seq);
+}
+
+/* Sorts face records by element, keeps the latest definition of each (element, face, kind), and
+ * builds the per-element index. A redefined load starts from the value the earlier one had. */
+static PetscErrorCode CompactFaces(TslProblem p)
+{
+  PetscInt n = 0;
+
+  PetscFunctionBeginUser;
+  if (p->nface) qsort(p->face, (size_t)p->nface, sizeof(TslFaceRecord), CompareFace);
+  for (PetscInt i = 0; i < p->nface; i++) {
+    TslFaceRecord *r = &p->face[i];
+    if (n > 0 && p->face[n - 1].elem == r->elem && p->face[n - 1].face == r->face && p->face[n - 1].kind == r->kind) {
+      TslFaceRecord *prev = &p->face[n - 1];
+      if (r->value.amp == TSL_AMP_DEFAULT) r->value.v0 = prev->value.v1;
+      *prev = *r;
+    } else p->face[n++] = *r;
+  }
+  p->nface = n;
+  for (PetscInt e = 0; e <= p->m->nelem; e++) p->face_start[e] = 0;
+  for (PetscInt i = 0; i < n; i++) p->face_start[p->face[i].elem + 1]++;
+  for (PetscInt e = 0; e < p->m->nelem; e++) p->face_start[e + 1] += p->face_start[e];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
+{
+  TslModel       *m = p->m;
+  PetscInt        n, *elem, *face;
+  TslFaceLoadKind kind = ld->kind == TSL_LOAD_DLOAD ? TSL_FACE_PRESSURE : ld->kind == TSL_LOAD_FILM ? TSL_FACE_FILM : ld->face == 0 ? TSL_BODY_FLUX : TSL_FACE_FLUX;
+  char            loc[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBeginUser;
+  PetscCall(TargetFaces(p, ld, &n, &elem, &face));
+  PetscCall(PetscRealloc(sizeof(TslFaceRecord) * (size_t)(p->nface + n), &p->face));
+  for (PetscInt i = 0; i < n; i++) {
+    const TslElementType *type = TslElementTypeGet(m->elem_type[elem[i]]);
+    TslFaceRecord        *r    = &p->face[p->nface++];
+
+    PetscCheck(kind == TSL_BODY_FLUX || (face[i] >= 1 && face[i] <= type->geom->nface), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "%s: element %" PetscInt_FMT " (%s) has no face %" PetscInt_FMT, TslLocString(m, ld->loc, loc, sizeof(loc)), m->elem_id[elem[i]], type->name, face[i]);
+    PetscCall(PetscMemzero(r, sizeof(*r)));
+    r->elem = elem[i];
+    r->face = face[i];
+    r->kind = kind;
+    r->seq  = p->face_seq++;
+    if (kind == TSL_FACE_FILM) {
+      r->value    = (TslHistoryValue){PETSC_TRUE, ld->value, ld->value, TSL_AMP_HOLD};
+      r->sink     = (TslHistoryValue){PETSC_TRUE, ld->sink, ld->sink, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_HOLD};
+      r->film_amp = ld->film_amplitude;
+    } else {
+      r->value    = (TslHistoryValue){PETSC_TRUE, 0, ld->value, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT};
+      r->film_amp = -1;
+    }
+  }
+  PetscCall(PetscFree2(elem, face));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
+{
+  TslModel          *m    = p->m;
+  const TslStep     *step = &m->steps[s];
+  PetscBool          clear[TSL_LOAD_NKINDS] = {PETSC_FALSE};
+  Vec                xl;
+  const PetscScalar *x;
+  PetscInt           nd = p->nn * p->ndof;
+
+  PetscFunctionBeginUser;
+  /* values reached at the end of the previous step */
+  for (PetscInt d = 0; d < nd; d++) Freeze(p, &p->bc[d]), Freeze(p, &p->nload[d]);
+  for (PetscInt i = 0; i < p->nface; i++) {
+    TslFaceRecord *r = &p->face[i];
+    if (r->film_amp >= 0 && !m->amplitudes[r->film_amp].total_time) {
+      const TslAmplitude *a = &m->amplitudes[r->film_amp];
+      r->value.v0 = r->value.v1 = r->value.v1 * TslAmplitudeEval(a, p->t);
+      r->film_amp               = -1;
+    }
+    Freeze(p, &r->value);
+    Freeze(p, &r->sink);
+  }
+
+  p->step        = s;
+  p->steady      = step->steady;
+  p->amp_default = step->amp_default;
+  p->period      = step->period;
+  p->t           = 0;
+
+  for (PetscInt i = 0; i < step->nload; i++)
+    if (step->loads[i].op_new) clear[step->loads[i].kind] = PETSC_TRUE;
+  for (PetscInt d = 0; d < nd; d++) {
+    PetscBool theta = (d % p->ndof) == p->dim;
+    if (clear[TSL_LOAD_BOUNDARY]) p->bc[d].active = PETSC_FALSE;
+    if ((clear[TSL_LOAD_CLOAD] && !theta) || (clear[TSL_LOAD_CFLUX] && theta)) p->nload[d].active = PETSC_FALSE;
+  }
+  if (clear[TSL_LOAD_DLOAD] || clear[TSL_LOAD_DFLUX] || clear[TSL_LOAD_FILM]) {
+    PetscInt n = 0;
+    for (PetscInt i = 0; i < p->nface; i++) {
+      TslFaceLoadKind k = p->face[i].kind;
+      PetscBool drop = (k == TSL_FACE_PRESSURE && clear[TSL_LOAD_DLOAD]) || ((k == TSL_FACE_FLUX || k == TSL_BODY_FLUX) && clear[TSL_LOAD_DFLUX]) ||
+                       (k == TSL_FACE_FILM && clear[TSL_LOAD_FILM]);
+      if (!drop) p->face[n++] = p->face[i];
+    }
+    p->nface = n;
+  }
+
+  PetscCall(VecGhostUpdateBegin(p->X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(p->X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostGetLocalForm(p->X, &xl));
+  PetscCall(VecGetArrayRead(xl, &x));
+  for (PetscInt i = 0; i < step->nload; i++) {
+    const TslLoad *ld  = &step->loads[i];
+    PetscInt       amp = ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT;
+
+    switch (ld->kind) {
+    case TSL_LOAD_BOUNDARY:
+    case TSL_LOAD_CLOAD:
+    case TSL_LOAD_CFLUX: {
+      PetscInt n, *nodes;
+      PetscCall(TargetNodes(p, &ld->target, &n, &nodes));
+      for (PetscInt j = 0; j < n; j++)
+        for (PetscInt dof = ld->dof_first; dof <= ld->dof_last; dof++) {
+          PetscInt c = dof == 11 ? p->dim : dof - 1, d = nodes[j] * p->ndof + c;
+          if (c < 0 || c >= p->ndof) continue;
+          if (ld->kind == TSL_LOAD_BOUNDARY) Redefine(&p->bc[d], PetscRealPart(x[d]), ld->value, amp);
+          else if (nodes[j] < p->nown) Redefine(&p->nload[d], 0, ld->value, amp);
+        }
+      PetscCall(PetscFree(nodes));
+    } break;
+    default:
+      PetscCall(AddFaceLoads(p, ld));
+    }
+  }
+  PetscCall(VecRestoreArrayRead(xl, &x));
+  PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
+  for (PetscInt d = 0; d < nd; d++) {
+    char loc[PETSC_MAX_PATH_LEN + 32];
+    PetscCheck(!(p->bc[d].active && p->dep[d] >= 0), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "%s: node %" PetscInt_FMT " has a *BOUNDARY on a dof that an *EQUATION eliminates", TslLocString(m, step->loc, loc, sizeof(loc)),
+               m->node_id[d / p->ndof]);
+  }
+  PetscCall(CompactFaces(p));
+  PetscCall(TslProblemPreallocate(p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemSetTime(TslProblem p, PetscReal step_time, PetscReal dt, PetscReal total_time)
+{
+  PetscFunctionBeginUser;
+  p->t    = step_time;
+  p->dt   = dt;
+  p->ttot = total_time;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemApplyPrescribed(TslProblem p, Vec X)
+{
+  PetscScalar *x;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(X, &x));
+  for (PetscInt d = 0; d < p->nown * p->ndof; d++)
+    if (p->bc[d].active) x[d] = TslProblemEvalHistory(p, &p->bc[d]);
+  PetscCall(VecRestoreArray(X, &x));
+  PetscCall(VecGhostUpdateBegin(X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

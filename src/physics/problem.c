@@ -1,0 +1,273 @@
+/* TslProblem: unknowns, materials and initial state of a distributed mesh. */
+#include "problem_impl.h"
+#include <string.h>
+
+static PetscErrorCode SetUpMaterials(TslProblem p)
+{
+  TslModel *m = p->m;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(m->nelem, &p->emat));
+  for (PetscInt e = 0; e < m->nelem; e++) p->emat[e].E = -1; /* marks "no section" */
+  for (PetscInt s = 0; s < m->nsection; s++) {
+    const TslSection  *sec = &m->sections[s];
+    const TslMaterial *mat = &m->materials[sec->material_index];
+    PetscInt           k   = TslModelFindElementSet(m, sec->elset);
+    TslElementMaterial em  = {mat->E, mat->nu, mat->conductivity, mat->density, mat->specific_heat, mat->alpha, sec->thickness > 0 ? sec->thickness : 1.0};
+
+    if (k < 0) continue; /* the set has no element on this rank */
+    for (PetscInt i = 0; i < m->elsets[k].n; i++) {
+      PetscInt e = TslModelElementIndex(m, m->elsets[k].ids[i]);
+      if (e >= 0) p->emat[e] = em;
+    }
+  }
+  for (PetscInt e = 0; e < m->nelem; e++)
+    PetscCheck(p->emat[e].E > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "element %" PetscInt_FMT " has no *SOLID SECTION", m->elem_id[e]);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode SetUpInitialTemperature(TslProblem p)
+{
+  TslModel *m = p->m;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(p->nn, &p->theta_init));
+  for (PetscInt i = 0; i < m->ninit; i++) {
+    const TslInitialTemperature *ic = &m->init[i];
+    if (ic->target.set[0]) {
+      PetscInt k = TslModelFindNodeSet(m, ic->target.set);
+      if (k < 0) continue;
+      for (PetscInt j = 0; j < m->nsets[k].n; j++) {
+        PetscInt n = TslModelNodeIndex(m, m->nsets[k].ids[j]);
+        if (n >= 0) p->theta_init[n] = ic->value;
+      }
+    } else {
+      PetscInt n = TslModelNodeIndex(m, ic->target.id);
+      if (n >= 0) p->theta_init[n] = ic->value;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode SetUpVectors(TslProblem p)
+{
+  TslModel    *m = p->m;
+  PetscInt    *ghost, *idx;
+  PetscScalar *x;
+  Vec          xl;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(p->nn - p->nown, &ghost));
+  for (PetscInt i = p->nown; i < p->nn; i++) ghost[i - p->nown] = m->node_gnum[i];
+  PetscCall(VecCreateGhostBlock(p->comm, p->ndof, p->ndof * p->nown, PETSC_DECIDE, p->nn - p->nown, ghost, &p->X));
+  PetscCall(PetscFree(ghost));
+  PetscCall(PetscObjectSetName((PetscObject)p->X, "solution"));
+  PetscCall(VecDuplicate(p->X, &p->Xold));
+  PetscCall(VecDuplicate(p->X, &p->Xl));
+  PetscCall(VecDuplicate(p->X, &p->Rraw));
+  PetscCall(VecDuplicate(p->X, &p->Fl));
+  PetscCall(VecGetOwnershipRange(p->X, &p->rstart, NULL));
+  PetscCheck(p->nown == 0 || p->rstart == m->node_gnum[0] * p->ndof, PETSC_COMM_SELF, PETSC_ERR_PLIB, "node numbering is not contiguous per rank");
+  PetscCall(ISLocalToGlobalMappingCreate(p->comm, p->ndof, p->nn, m->node_gnum, PETSC_COPY_VALUES, &p->l2g));
+
+  /* initial state: u = 0, theta = initial temperature */
+  PetscCall(VecGhostGetLocalForm(p->X, &xl));
+  PetscCall(VecGetArray(xl, &x));
+  for (PetscInt n = 0; n < p->nn; n++) {
+    for (PetscInt c = 0; c < p->dim; c++) x[n * p->ndof + c] = 0;
+    x[n * p->ndof + p->dim] = p->theta_init[n];
+  }
+  PetscCall(VecRestoreArray(xl, &x));
+  PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
+  PetscCall(VecCopy(p->X, p->Xold));
+
+  /* field index sets over owned dofs */
+  PetscCall(PetscMalloc1(p->nown * p->dim, &idx));
+  for (PetscInt n = 0; n < p->nown; n++)
+    for (PetscInt c = 0; c < p->dim; c++) idx[n * p->dim + c] = p->rstart + n * p->ndof + c;
+  PetscCall(ISCreateGeneral(p->comm, p->nown * p->dim, idx, PETSC_OWN_POINTER, &p->is_u));
+  PetscCall(ISSetBlockSize(p->is_u, p->dim));
+  PetscCall(ISCreateStride(p->comm, p->nown, p->rstart + p->dim, p->ndof, &p->is_theta));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Local node of a global node number: owned nodes are contiguous, ghosts are sorted by number. */
+PetscErrorCode TslProblemLocalNode(TslProblem p, PetscInt gnum, PetscInt *lnode)
+{
+  PetscInt first = p->nown > 0 ? p->m->node_gnum[0] : -1, loc;
+
+  PetscFunctionBeginUser;
+  *lnode = -1;
+  if (p->nown > 0 && gnum >= first && gnum < first + p->nown) {
+    *lnode = gnum - first;
+  } else {
+    PetscCall(PetscFindInt(gnum, p->nn - p->nown, p->m->node_gnum + p->nown, &loc));
+    if (loc >= 0) *lnode = p->nown + loc;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Local dofs of every equation term and the map from an eliminated dof to its equation. Chained
+ * equations (an eliminated dof appearing in another equation) are rejected. */
+static PetscErrorCode SetUpEquations(TslProblem p)
+{
+  TslModel *m = p->m;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(p->nn * p->ndof, &p->dep));
+  for (PetscInt d = 0; d < p->nn * p->ndof; d++) p->dep[d] = -1;
+  PetscCall(PetscCalloc1(m->nequation, &p->eq_ldof));
+  for (PetscInt q = 0; q < m->nequation; q++) {
+    TslEquation *eq = &m->equations[q];
+    char         loc[PETSC_MAX_PATH_LEN + 32];
+    PetscCheck(eq->gdof, PETSC_COMM_SELF, PETSC_ERR_PLIB, "equation without global dofs");
+    PetscCheck(eq->coef[0] != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: the first coefficient of an *EQUATION must not be zero", TslLocString(m, eq->loc, loc, sizeof(loc)));
+    PetscCall(PetscMalloc1(eq->n, &p->eq_ldof[q]));
+    for (PetscInt t = 0; t < eq->n; t++) {
+      PetscInt n;
+      PetscCall(TslProblemLocalNode(p, eq->gdof[t] / p->ndof, &n));
+      PetscCheck(n >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "equation term not local");
+      p->eq_ldof[q][t] = n * p->ndof + eq->gdof[t] % p->ndof;
+    }
+    PetscCheck(p->dep[p->eq_ldof[q][0]] < 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: node %" PetscInt_FMT " dof %" PetscInt_FMT " is already eliminated by another *EQUATION",
+               TslLocString(m, eq->loc, loc, sizeof(loc)), eq->node[0], eq->dof[0]);
+    p->dep[p->eq_ldof[q][0]] = q;
+  }
+  for (PetscInt q = 0; q < m->nequation; q++)
+    for (PetscInt t = 1; t < m->equations[q].n; t++) {
+      char loc[PETSC_MAX_PATH_LEN + 32];
+      PetscCheck(p->dep[p->eq_ldof[q][t]] < 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                 "%s: node %" PetscInt_FMT " dof %" PetscInt_FMT " is eliminated by another *EQUATION; chained equations are not supported",
+                 TslLocString(m, m->equations[q].loc, loc, sizeof(loc)), m->equations[q].node[t], m->equations[q].dof[t]);
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemCreate(MPI_Comm comm, TslModel *local, TslProblem *prob)
+{
+  TslProblem p;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&p));
+  p->comm = comm;
+  p->m    = local;
+  p->dim  = local->dim;
+  p->ndof = local->dim + 1;
+  p->nn   = local->nnode;
+  p->nown = local->nnode_owned;
+  p->step = -1;
+  PetscCall(PetscMalloc1(local->elem_ptr[local->nelem], &p->elem_lnode));
+  for (PetscInt k = 0; k < local->elem_ptr[local->nelem]; k++) {
+    p->elem_lnode[k] = TslModelNodeIndex(local, local->elem_conn[k]);
+    PetscCheck(p->elem_lnode[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "element node %" PetscInt_FMT " missing on this rank", local->elem_conn[k]);
+  }
+  PetscCall(SetUpMaterials(p));
+  PetscCall(SetUpInitialTemperature(p));
+  PetscCall(SetUpVectors(p));
+  PetscCall(SetUpEquations(p));
+  PetscCall(PetscCalloc2(p->nn * p->ndof, &p->bc, p->nn * p->ndof, &p->nload));
+  PetscCall(PetscCalloc1(local->nelem + 1, &p->face_start));
+  PetscCall(TslProblemCheckElements(p));
+  *prob = p;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemDestroy(TslProblem *prob)
+{
+  TslProblem p = *prob;
+
+  PetscFunctionBeginUser;
+  if (!p) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecDestroy(&p->X));
+  PetscCall(VecDestroy(&p->Xold));
+  PetscCall(VecDestroy(&p->Xl));
+  PetscCall(VecDestroy(&p->Rraw));
+  PetscCall(VecDestroy(&p->Fl));
+  PetscCall(MatDestroy(&p->J));
+  PetscCall(ISLocalToGlobalMappingDestroy(&p->l2g));
+  PetscCall(ISDestroy(&p->is_u));
+  PetscCall(ISDestroy(&p->is_theta));
+  PetscCall(PetscFree(p->elem_lnode));
+  PetscCall(PetscFree(p->emat));
+  PetscCall(PetscFree(p->theta_init));
+  PetscCall(PetscFree2(p->bc, p->nload));
+  PetscCall(PetscFree(p->face));
+  PetscCall(PetscFree(p->face_start));
+  if (p->eq_ldof)
+    for (PetscInt q = 0; q < p->m->nequation; q++) PetscCall(PetscFree(p->eq_ldof[q]));
+  PetscCall(PetscFree(p->eq_ldof));
+  PetscCall(PetscFree(p->dep));
+  PetscCall(TslModelDestroy(&p->m));
+  PetscCall(PetscFree(p));
+  *prob = NULL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemGetModel(TslProblem p, const TslModel **model)
+{
+  PetscFunctionBeginUser;
+  *model = p->m;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemGetSolution(TslProblem p, Vec *X)
+{
+  PetscFunctionBeginUser;
+  *X = p->X;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemGetOldSolution(TslProblem p, Vec *Xold)
+{
+  PetscFunctionBeginUser;
+  *Xold = p->Xold;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemGetJacobian(TslProblem p, Mat *J)
+{
+  PetscFunctionBeginUser;
+  *J = p->J;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemGetFieldIS(TslProblem p, IS *is_u, IS *is_theta)
+{
+  PetscFunctionBeginUser;
+  *is_u     = p->is_u;
+  *is_theta = p->is_theta;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemMaxTemperatureChange(TslProblem p, PetscReal *dtheta)
+{
+  const PetscScalar *x, *xo;
+  PetscReal          d = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(p->X, &x));
+  PetscCall(VecGetArrayRead(p->Xold, &xo));
+  for (PetscInt n = 0; n < p->nown; n++) d = PetscMax(d, PetscAbsScalar(x[n * p->ndof + p->dim] - xo[n * p->ndof + p->dim]));
+  PetscCall(VecRestoreArrayRead(p->X, &x));
+  PetscCall(VecRestoreArrayRead(p->Xold, &xo));
+  PetscCall(MPIU_Allreduce(&d, dtheta, 1, MPIU_REAL, MPIU_MAX, p->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemResidualNorms(TslProblem p, Vec F, PetscReal *norm_u, PetscReal *norm_theta)
+{
+  const PetscScalar *f;
+  PetscReal          s[2] = {0, 0}, g[2];
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArrayRead(F, &f));
+  for (PetscInt n = 0; n < p->nown; n++) {
+    for (PetscInt c = 0; c < p->dim; c++) s[0] += PetscSqr(PetscRealPart(f[n * p->ndof + c]));
+    s[1] += PetscSqr(PetscRealPart(f[n * p->ndof + p->dim]));
+  }
+  PetscCall(VecRestoreArrayRead(F, &f));
+  PetscCall(MPIU_Allreduce(s, g, 2, MPIU_REAL, MPIU_SUM, p->comm));
+  *norm_u     = PetscSqrtReal(g[0]);
+  *norm_theta = PetscSqrtReal(g[1]);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,351 @@
+/* Step procedures: increments with cutback and DELTMX control, Newton through SNES, output. */
+#include <thermoslide/solve.h>
+#include <thermoslide/output.h>
+#include <petscsnes.h>
+#include <string.h>
+
+#define NFIELD_NODE 4
+#define NFIELD_ELEM 3
+static const char *const NodeFields[NFIELD_NODE] = {"U", "NT", "RF", "RFL"};
+static const char *const ElemFields[NFIELD_ELEM] = {"S", "E", "HFL"};
+
+static const char *const HistoryColumns[] = {"step", "increment", "time", "step_time", "dt", "newton_its", "heat_in", "film_heat_out", "reaction_heat", "stored_heat_rate", "balance_residual"};
+#define NHISTORY ((PetscInt)(sizeof(HistoryColumns) / sizeof(HistoryColumns[0])))
+
+typedef struct {
+  TslProblem prob;
+  MPI_Comm   comm;
+  SNES       snes;
+  TslOutput  out;
+  TslHistory hist;
+  PetscReal  rtol, atol_rel, cutback, growth;
+  PetscInt   easy_its;
+  PetscReal  scale_u, scale_theta; /* largest initial residuals seen in the job */
+  PetscReal  r0_u, r0_theta;       /* initial residuals of the current solve */
+  PetscBool  node_on[NFIELD_NODE], elem_on[NFIELD_ELEM];
+  PetscInt   frequency;
+  PetscInt   frame_step, frame_inc; /* last frame written */
+  PetscInt   done_step, done_inc;   /* last converged increment */
+  PetscReal  done_time, done_step_time, done_dt;
+} Driver;
+
+/* Default solver choices, entered only where the user gave none. */
+static PetscErrorCode SetDefaultOption(const char *name, const char *value)
+{
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsHasName(NULL, NULL, name, &set));
+  if (!set) PetscCall(PetscOptionsSetValue(NULL, name, value));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Converged when each field's residual (displacement rows, temperature rows) has dropped by rtol from
+ * the start of the increment, or is below atol_rel times the largest initial residual of the job: the
+ * two fields have different units, so one norm over both would let one hide the other. */
+static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+{
+  Driver   *d = (Driver *)ctx;
+  Vec       F;
+  PetscReal nu, nt;
+  PetscBool ok_u, ok_t;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, NULL));
+  if (*reason < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  *reason = SNES_CONVERGED_ITERATING;
+  PetscCall(SNESGetFunction(snes, &F, NULL, NULL));
+  PetscCall(TslProblemResidualNorms(d->prob, F, &nu, &nt));
+  if (it == 0) {
+    d->r0_u        = nu;
+    d->r0_theta    = nt;
+    d->scale_u     = PetscMax(d->scale_u, nu);
+    d->scale_theta = PetscMax(d->scale_theta, nt);
+  }
+  ok_u = (PetscBool)(nu <= PetscMax(d->rtol * d->r0_u, d->atol_rel * d->scale_u) || nu == 0);
+  ok_t = (PetscBool)(nt <= PetscMax(d->rtol * d->r0_theta, d->atol_rel * d->scale_theta) || nt == 0);
+  if (ok_u && ok_t && (it > 0 || (nu <= d->atol_rel * d->scale_u && nt <= d->atol_rel * d->scale_theta))) *reason = SNES_CONVERGED_FNORM_RELATIVE;
+  PetscCall(PetscInfo(snes, "it %" PetscInt_FMT ": |R_u| %g |R_theta| %g\n", it, (double)nu, (double)nt));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode SetUpSolver(Driver *d)
+{
+  KSP ksp;
+  PC  pc;
+  IS  is_u, is_theta;
+
+  PetscFunctionBeginUser;
+  PetscCall(SetDefaultOption("-snes_linesearch_type", "basic"));
+  PetscCall(SetDefaultOption("-ksp_type", "fgmres"));
+  PetscCall(SetDefaultOption("-ksp_rtol", "1e-8"));
+  PetscCall(SetDefaultOption("-ksp_max_it", "1000"));
+  PetscCall(SetDefaultOption("-ksp_gmres_restart", "100"));
+  PetscCall(SetDefaultOption("-pc_fieldsplit_type", "multiplicative"));
+  PetscCall(SetDefaultOption("-fieldsplit_T_ksp_type", "preonly"));
+  PetscCall(SetDefaultOption("-fieldsplit_T_pc_type", "hypre"));
+  PetscCall(SetDefaultOption("-fieldsplit_u_ksp_type", "preonly"));
+  PetscCall(SetDefaultOption("-fieldsplit_u_pc_type", "hypre"));
+  PetscCall(SetDefaultOption("-fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.5"));
+
+  PetscCall(SNESCreate(d->comm, &d->snes));
+  PetscCall(SNESSetType(d->snes, SNESNEWTONLS));
+  PetscCall(SNESSetConvergenceTest(d->snes, ConvergenceTest, d, NULL));
+  PetscCall(SNESGetKSP(d->snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(PCSetType(pc, PCFIELDSPLIT));
+  PetscCall(TslProblemGetFieldIS(d->prob, &is_u, &is_theta));
+  /* temperature first: without contact the heat equation does not depend on u, so the multiplicative
+   * (block Gauss-Seidel) split is then an exact block-triangular solve up to the AMG cycles */
+  PetscCall(PCFieldSplitSetIS(pc, "T", is_theta));
+  PetscCall(PCFieldSplitSetIS(pc, "u", is_u));
+  PetscCall(SNESSetFromOptions(d->snes));
+
+  d->rtol     = 1e-9;
+  d->atol_rel = 1e-12;
+  d->cutback  = 0.25;
+  d->growth   = 1.5;
+  d->easy_its = 5;
+  PetscOptionsBegin(d->comm, NULL, "thermoslide increment control", NULL);
+  PetscCall(PetscOptionsReal("-tsl_rtol", "per-field Newton residual reduction", NULL, d->rtol, &d->rtol, NULL));
+  PetscCall(PetscOptionsReal("-tsl_atol_rel", "per-field residual floor relative to the job's largest", NULL, d->atol_rel, &d->atol_rel, NULL));
+  PetscCall(PetscOptionsReal("-tsl_cutback", "increment factor after a failed increment", NULL, d->cutback, &d->cutback, NULL));
+  PetscCall(PetscOptionsReal("-tsl_growth", "increment factor after an easy increment", NULL, d->growth, &d->growth, NULL));
+  PetscCall(PetscOptionsInt("-tsl_easy_its", "Newton iterations that count as easy", NULL, d->easy_its, &d->easy_its, NULL));
+  PetscOptionsEnd();
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode SetUpOutput(Driver *d, const char *dir, const char *jobname)
+{
+  const TslModel *m;
+  PetscInt       *xtype, *conn;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCall(TslOutputCreate(d->comm, dir, jobname, &d->out));
+  PetscCall(PetscMalloc2(m->nelem, &xtype, m->elem_ptr[m->nelem], &conn));
+  for (PetscInt e = 0; e < m->nelem; e++) xtype[e] = TslElementTypeGet(m->elem_type[e])->geom->xdmf_type;
+  for (PetscInt k = 0; k < m->elem_ptr[m->nelem]; k++) conn[k] = m->node_nat[TslModelNodeIndex(m, m->elem_conn[k])];
+  PetscCall(TslOutputSetMesh(d->out, m->nnode_global, m->nnode_owned, m->node_nat, m->node_id, m->node_xyz, m->nelem_global, m->nelem, m->elem_nat, m->elem_id, xtype, m->elem_ptr, conn));
+  PetscCall(PetscFree2(xtype, conn));
+  PetscCall(TslHistoryCreate(d->comm, dir, jobname, NHISTORY, HistoryColumns, &d->hist));
+  for (PetscInt i = 0; i < NFIELD_NODE; i++) d->node_on[i] = PETSC_TRUE;
+  for (PetscInt i = 0; i < NFIELD_ELEM; i++) d->elem_on[i] = PETSC_TRUE;
+  d->frequency = 1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Field output requests of a step: they replace the previous step's when present. */
+static PetscErrorCode SetOutputRequests(Driver *d, const TslStep *step)
+{
+  PetscBool any = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  for (PetscInt r = 0; r < step->nout; r++)
+    if (!step->out[r].print) any = PETSC_TRUE;
+  if (!any) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = 0; i < NFIELD_NODE; i++) d->node_on[i] = PETSC_FALSE;
+  for (PetscInt i = 0; i < NFIELD_ELEM; i++) d->elem_on[i] = PETSC_FALSE;
+  for (PetscInt r = 0; r < step->nout; r++) {
+    const TslOutputRequest *req = &step->out[r];
+    if (req->print) continue;
+    d->frequency = PetscMax(1, req->frequency);
+    for (PetscInt v = 0; v < req->nvar; v++) {
+      PetscBool found = PETSC_FALSE;
+      for (PetscInt i = 0; i < NFIELD_NODE; i++)
+        if (!strcmp(req->var[v], NodeFields[i])) d->node_on[i] = found = PETSC_TRUE;
+      for (PetscInt i = 0; i < NFIELD_ELEM; i++)
+        if (!strcmp(req->var[v], ElemFields[i])) d->elem_on[i] = found = PETSC_TRUE;
+      if (!found) PetscCall(PetscPrintf(d->comm, "warning: output variable %s is not available; ignored\n", req->var[v]));
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteFrame(Driver *d, PetscInt step, PetscInt inc, PetscReal time)
+{
+  PetscFunctionBeginUser;
+  PetscCall(TslOutputBeginFrame(d->out, step, inc, time));
+  for (PetscInt i = 0; i < NFIELD_NODE; i++) {
+    PetscInt   nc;
+    PetscReal *v;
+    if (!d->node_on[i]) continue;
+    PetscCall(TslProblemNodeField(d->prob, NodeFields[i], &nc, &v));
+    PetscCall(TslOutputNodeField(d->out, NodeFields[i], nc, v));
+    PetscCall(PetscFree(v));
+  }
+  for (PetscInt i = 0; i < NFIELD_ELEM; i++) {
+    PetscInt   nc;
+    PetscReal *v;
+    if (!d->elem_on[i]) continue;
+    PetscCall(TslProblemElementField(d->prob, ElemFields[i], &nc, &v));
+    PetscCall(TslOutputElementField(d->out, ElemFields[i], nc, v));
+    PetscCall(PetscFree(v));
+  }
+  PetscCall(TslOutputEndFrame(d->out));
+  d->frame_step = step;
+  d->frame_inc  = inc;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *NODE PRINT tables at the end of a step: one line per node of the set owned here. */
+static PetscErrorCode NodePrint(Driver *d, const TslStep *step)
+{
+  const TslModel *m;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  for (PetscInt r = 0; r < step->nout; r++) {
+    const TslOutputRequest *req = &step->out[r];
+    PetscInt                k   = req->node && req->print ? TslModelFindNodeSet(m, req->set) : -1;
+    if (!(req->node && req->print)) continue;
+    PetscCall(PetscPrintf(d->comm, "node print, step %s, set %s:\n", step->name, req->set));
+    for (PetscInt v = 0; v < req->nvar; v++) {
+      PetscInt   nc;
+      PetscReal *vals;
+      if (TslProblemNodeField(d->prob, req->var[v], &nc, &vals)) continue;
+      for (PetscInt i = 0; k >= 0 && i < m->nsets[k].n; i++) {
+        PetscInt n = TslModelNodeIndex(m, m->nsets[k].ids[i]);
+        if (n < 0 || n >= m->nnode_owned) continue;
+        PetscCall(PetscSynchronizedPrintf(d->comm, "  %8" PetscInt_FMT " %-4s", m->node_id[n], req->var[v]));
+        for (PetscInt c = 0; c < nc; c++) PetscCall(PetscSynchronizedPrintf(d->comm, " % .6e", (double)vals[n * nc + c]));
+        PetscCall(PetscSynchronizedPrintf(d->comm, "\n"));
+      }
+      PetscCall(PetscSynchronizedFlush(d->comm, PETSC_STDOUT));
+      PetscCall(PetscFree(vals));
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
+{
+  const TslModel *m;
+  const TslStep  *step;
+  Vec             X, Xold;
+  Mat             J;
+  PetscReal       t = 0, dt, eps;
+  PetscInt        inc = 0, attempts = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  step = &m->steps[s];
+  PetscCall(PetscPrintf(d->comm, "step %" PetscInt_FMT " (%s): %s, period %g, initial increment %g\n", s + 1, step->name[0] ? step->name : "-",
+                        step->steady ? "steady state" : "transient", (double)step->period, (double)step->dt0));
+  TslCallCollective(d->comm, TslProblemSetStep(d->prob, s));
+  PetscCall(TslProblemGetJacobian(d->prob, &J));
+  PetscCall(SNESSetJacobian(d->snes, J, J, TslProblemFormJacobian, d->prob));
+  PetscCall(SetOutputRequests(d, step));
+  PetscCall(TslProblemGetSolution(d->prob, &X));
+  PetscCall(TslProblemGetOldSolution(d->prob, &Xold));
+
+  dt  = PetscMin(step->dt0, step->period);
+  eps = 1e-12 * step->period;
+  while (t < step->period - eps) {
+    SNESConvergedReason reason;
+    PetscInt            its, lits;
+    PetscReal           dtheta = 0;
+    PetscBool           accept;
+
+    if (t + dt > step->period - eps) dt = step->period - t;
+    PetscCheck(inc < step->max_inc, d->comm, PETSC_ERR_NOT_CONVERGED, "step %" PetscInt_FMT ": the maximum number of increments (INC=%" PetscInt_FMT ") was reached at step time %g",
+               s + 1, step->max_inc, (double)t);
+    attempts++;
+    PetscCall(VecCopy(X, Xold));
+    PetscCall(TslProblemSetTime(d->prob, t + dt, dt, *total_time + dt));
+    PetscCall(TslProblemApplyPrescribed(d->prob, X));
+    PetscCall(SNESSolve(d->snes, NULL, X));
+    PetscCall(SNESGetConvergedReason(d->snes, &reason));
+    PetscCall(SNESGetIterationNumber(d->snes, &its));
+    PetscCall(SNESGetLinearSolveIterations(d->snes, &lits));
+    accept = (PetscBool)(reason > 0);
+    if (accept && !step->steady && step->deltmx > 0) {
+      PetscCall(TslProblemMaxTemperatureChange(d->prob, &dtheta));
+      if (dtheta > step->deltmx * 1.0001 && !step->direct) accept = PETSC_FALSE;
+    }
+    if (!accept) {
+      PetscReal f = reason > 0 ? PetscMax(d->cutback, 0.85 * step->deltmx / dtheta) : d->cutback;
+      PetscCall(VecCopy(Xold, X));
+      PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": %s; cutback dt %g -> %g\n", s + 1, inc + 1,
+                            reason > 0 ? "temperature change exceeds DELTMX" : SNESConvergedReasons[reason], (double)dt, (double)(dt * f)));
+      PetscCheck(!step->direct, d->comm, PETSC_ERR_NOT_CONVERGED, "step %" PetscInt_FMT ": increment %" PetscInt_FMT " did not converge (%s) and DIRECT forbids a cutback",
+                 s + 1, inc + 1, SNESConvergedReasons[reason]);
+      dt *= f;
+      PetscCheck(dt >= step->dtmin * (1 - 1e-12), d->comm, PETSC_ERR_NOT_CONVERGED,
+                 "step %" PetscInt_FMT ": the increment fell below the minimum %g at step time %g; the last converged state (step time %g) is saved", s + 1,
+                 (double)step->dtmin, (double)t, (double)t);
+      continue;
+    }
+    {
+      TslHeatBalance hb;
+      PetscReal      row[NHISTORY];
+      PetscBool      last = (PetscBool)(t + dt >= step->period - eps);
+      t += dt;
+      *total_time += dt;
+      inc++;
+      PetscCall(TslProblemHeatBalance(d->prob, &hb));
+      PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": time %.6g  dt %.4g  newton %" PetscInt_FMT "  linear %" PetscInt_FMT "  heat in %.6g  film out %.6g  balance %.3g\n",
+                            s + 1, inc, (double)*total_time, (double)dt, its, lits, (double)hb.heat_in, (double)hb.film_out, (double)hb.balance));
+      row[0]  = (PetscReal)(s + 1);
+      row[1]  = (PetscReal)inc;
+      row[2]  = *total_time;
+      row[3]  = t;
+      row[4]  = dt;
+      row[5]  = (PetscReal)its;
+      row[6]  = hb.heat_in;
+      row[7]  = hb.film_out;
+      row[8]  = hb.reaction_heat;
+      row[9]  = hb.stored_rate;
+      row[10] = hb.balance;
+      PetscCall(TslHistoryAppend(d->hist, row));
+      d->done_step = s + 1, d->done_inc = inc, d->done_time = *total_time, d->done_step_time = t, d->done_dt = dt;
+      if (last || inc % d->frequency == 0) PetscCall(WriteFrame(d, s + 1, inc, *total_time));
+      if (!step->direct) {
+        PetscReal f = its <= d->easy_its ? d->growth : 1.0;
+        if (!step->steady && step->deltmx > 0 && dtheta > 0) f = PetscMin(f, 0.85 * step->deltmx / dtheta);
+        dt = PetscMin(step->dtmax, dt * PetscMax(f, d->cutback));
+      }
+    }
+  }
+  PetscCall(NodePrint(d, step));
+  PetscCall(PetscInfo(NULL, "step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %" PetscInt_FMT " attempts\n", s + 1, inc, attempts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobname)
+{
+  Driver          d;
+  const TslModel *m;
+  PetscReal       total = 0;
+  PetscErrorCode  ierr  = PETSC_SUCCESS;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&d, sizeof(d)));
+  d.prob = prob;
+  PetscCall(TslProblemGetModel(prob, &m));
+  {
+    Vec X;
+    PetscCall(TslProblemGetSolution(prob, &X));
+    PetscCall(PetscObjectGetComm((PetscObject)X, &d.comm));
+  }
+  PetscCall(SetUpSolver(&d));
+  PetscCall(SetUpOutput(&d, dir, jobname));
+  for (PetscInt s = 0; s < m->nstep && !ierr; s++) ierr = RunStep(&d, s, &total);
+  /* a result that ends at the last converged increment is still a result: keep it */
+  if (ierr == PETSC_ERR_NOT_CONVERGED && d.done_inc > 0 && (d.frame_step != d.done_step || d.frame_inc != d.done_inc)) {
+    TslHeatBalance hb;
+    PetscCall(TslProblemSetTime(prob, d.done_step_time, d.done_dt, d.done_time));
+    PetscCall(TslProblemHeatBalance(prob, &hb));
+    PetscCall(WriteFrame(&d, d.done_step, d.done_inc, d.done_time));
+  }
+  if (!ierr || ierr == PETSC_ERR_NOT_CONVERGED) {
+    PetscCall(TslOutputFinalize(d.out));
+    PetscCall(TslHistoryFinalize(d.hist));
+    if (ierr) PetscCall(PetscPrintf(d.comm, "results up to step %" PetscInt_FMT " increment %" PetscInt_FMT " are saved in %s/%s.h5\n", d.frame_step, d.frame_inc, dir, jobname));
+  }
+  PetscCall(TslOutputDestroy(&d.out));
+  PetscCall(TslHistoryDestroy(&d.hist));
+  PetscCall(SNESDestroy(&d.snes));
+  PetscFunctionReturn(ierr);
+}
