@@ -55,6 +55,7 @@ PetscErrorCode TslElementResidual(const TslElementInput *in, PetscReal R[], Pets
   *inverted = PETSC_FALSE;
   TslElementElasticity(t->kin, in->mat, D, beta);
   for (PetscInt i = 0; i < nd; i++) R[i] = 0;
+  for (PetscInt a = 0; a < n; a++) vol[a] = 0;
   if (K)
     for (PetscInt i = 0; i < nd * nd; i++) K[i] = 0;
   for (PetscInt q = 0; q < g->full.n; q++) {
@@ -69,8 +70,10 @@ PetscErrorCode TslElementResidual(const TslElementInput *in, PetscReal R[], Pets
       sig[r] = -beta[r] * dtheta;
       for (PetscInt s = 0; s < 6; s++) sig[r] += D[r][s] * eps[s];
     }
-    for (PetscInt a = 0; a < n; a++)
+    for (PetscInt a = 0; a < n; a++) {
+      vol[a] += p.N[a] * p.dV; /* the same V_a as NodalVolume() */
       for (PetscInt d = 0; d < dim; d++) grad[d] += p.dNdx[a][d] * in->u[ndof * a + dim];
+    }
     for (PetscInt a = 0; a < n; a++) {
       for (PetscInt i = 0; i < dim; i++)
         for (PetscInt r = 0; r < 6; r++) R[ndof * a + i] += B[r][dim * a + i] * sig[r] * p.dV;
@@ -104,7 +107,6 @@ PetscErrorCode TslElementResidual(const TslElementInput *in, PetscReal R[], Pets
     }
   }
   if (in->steady) PetscFunctionReturn(PETSC_SUCCESS);
-  (void)NodalVolume(in, vol); /* valid: every point was checked above */
   for (PetscInt a = 0; a < n; a++) {
     const PetscReal c = in->mat->density * in->mat->specific_heat * vol[a] / in->dt;
     const PetscInt row = ndof * a + dim;
