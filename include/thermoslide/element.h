@@ -24,6 +24,7 @@ typedef struct {
   PetscInt  n;
   PetscReal xi[TSL_MAX_QP][3];
   PetscReal w[TSL_MAX_QP];
+  PetscInt  degree; /* polynomial degree integrated exactly (per coordinate for tensor-product rules) */
 } TslQuadrature;
 
 /* A geometry family: reference element, shape functions, faces. Faces are numbered as in the
@@ -39,6 +40,8 @@ typedef struct TslGeometry {
   PetscInt    face_node[TSL_MAX_FACES][TSL_MAX_FACE_NODES];
   const struct TslGeometry *face_geom[TSL_MAX_FACES]; /* family of each face (line2, quad4, ...) */
   void (*shape)(const PetscReal xi[], PetscReal N[], PetscReal dN[]); /* dN: [nnode][dim] */
+  PetscReal node_xi[TSL_MAX_ELEM_NODES][3]; /* reference coordinates of the nodes */
+  PetscReal ref_volume;                     /* measure of the reference element */
   TslQuadrature full, reduced;
   PetscInt xdmf_type; /* XDMF mixed-topology cell type id */
 } TslGeometry;

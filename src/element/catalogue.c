@@ -45,22 +45,24 @@ static void ShapeHex8(const PetscReal xi[], PetscReal N[], PetscReal dN[])
 
 #define G2 0.57735026918962576451 /* 1/sqrt(3) */
 
-#define QUAD_LINE_1 {1, {{0, 0, 0}}, {2}}
-#define QUAD_LINE_2 {2, {{-G2, 0, 0}, {G2, 0, 0}}, {1, 1}}
-#define QUAD_QUAD_1 {1, {{0, 0, 0}}, {4}}
-#define QUAD_QUAD_4 {4, {{-G2, -G2, 0}, {G2, -G2, 0}, {G2, G2, 0}, {-G2, G2, 0}}, {1, 1, 1, 1}}
-#define QUAD_HEX_1  {1, {{0, 0, 0}}, {8}}
+#define QUAD_LINE_1 {1, {{0, 0, 0}}, {2}, 1}
+#define QUAD_LINE_2 {2, {{-G2, 0, 0}, {G2, 0, 0}}, {1, 1}, 3}
+#define QUAD_QUAD_1 {1, {{0, 0, 0}}, {4}, 1}
+#define QUAD_QUAD_4 {4, {{-G2, -G2, 0}, {G2, -G2, 0}, {G2, G2, 0}, {-G2, G2, 0}}, {1, 1, 1, 1}, 3}
+#define QUAD_HEX_1  {1, {{0, 0, 0}}, {8}, 1}
 #define QUAD_HEX_8 \
   {8, \
    {{-G2, -G2, -G2}, {G2, -G2, -G2}, {G2, G2, -G2}, {-G2, G2, -G2}, {-G2, -G2, G2}, {G2, -G2, G2}, {G2, G2, G2}, \
     {-G2, G2, G2}}, \
-   {1, 1, 1, 1, 1, 1, 1, 1}}
+   {1, 1, 1, 1, 1, 1, 1, 1}, \
+   3}
 
 /* ---- geometry families ----------------------------------------------------------------------- */
 
 static const TslGeometry GeomLine2 = {
     .name = "line2", .dim = 1, .nnode = 2, .nface = 0, .shape = ShapeLine2,
     .full = QUAD_LINE_2, .reduced = QUAD_LINE_1, .xdmf_type = 2,
+    .node_xi = {{-1, 0, 0}, {1, 0, 0}}, .ref_volume = 2,
 };
 
 static const TslGeometry GeomQuad4 = {
@@ -72,6 +74,8 @@ static const TslGeometry GeomQuad4 = {
     .face_node  = {{0, 1}, {1, 2}, {2, 3}, {3, 0}},
     .face_geom  = {&GeomLine2, &GeomLine2, &GeomLine2, &GeomLine2},
     .shape      = ShapeQuad4,
+    .node_xi    = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}},
+    .ref_volume = 4,
     .full       = QUAD_QUAD_4,
     .reduced    = QUAD_QUAD_1,
     .xdmf_type  = 5,
@@ -86,6 +90,8 @@ static const TslGeometry GeomHex8 = {
     .face_node  = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}},
     .face_geom  = {&GeomQuad4, &GeomQuad4, &GeomQuad4, &GeomQuad4, &GeomQuad4, &GeomQuad4},
     .shape      = ShapeHex8,
+    .node_xi    = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}},
+    .ref_volume = 8,
     .full       = QUAD_HEX_8,
     .reduced    = QUAD_HEX_1,
     .xdmf_type  = 9,
