@@ -277,8 +277,8 @@ static PetscErrorCode WriteField(TslOutput out, const char *name, PetscInt ncomp
   PetscReal *blk;
 
   PetscFunctionBeginUser;
-  PetscCheck(out->in_frame, out->comm, PETSC_ERR_ORDER, "Field %s given outside TslOutputBeginFrame/EndFrame", name);
   PetscCall(TslOutputCheckName(out->comm, "Field", name, "/:\"<>&'"));
+  PetscCheck(out->in_frame, out->comm, PETSC_ERR_ORDER, "Field %s given outside TslOutputBeginFrame/EndFrame", name);
   PetscCheck(ncomp >= 1, out->comm, PETSC_ERR_ARG_OUTOFRANGE, "Field %s: ncomp %" PetscInt_FMT " < 1", name, ncomp);
   f = &out->frames[out->nframe - 1];
   for (PetscInt i = 0; i < f->nfield; i++)
