@@ -1,0 +1,391 @@
+/* Field output: one parallel HDF5 file written collectively through MPI-IO, in natural order, and the
+ * XDMF text that lets ParaView/VisIt/meshio read it as a time series. See output.h for the layout. */
+#include "output_impl.h"
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+PetscErrorCode TslOutputPath(MPI_Comm comm, const char *dir, const char *name, const char *suffix, char buf[],
+                             size_t len) {
+  int n;
+
+  PetscFunctionBeginUser;
+  n = snprintf(buf, len, "%s%s%s%s", dir ? dir : "", dir && dir[0] ? "/" : "", name, suffix);
+  PetscCheck(n >= 0 && (size_t)n < len, comm, PETSC_ERR_ARG_SIZ, "Output path %s/%s%s is too long", dir, name, suffix);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Names end up in HDF5 paths ("/" separates groups), in "file.h5:/path" references (":" splits them)
+ * and in XML attributes; reject what would break any of them rather than escaping it three ways. */
+PetscErrorCode TslOutputCheckName(MPI_Comm comm, const char *kind, const char *name, const char *forbidden) {
+  size_t len;
+
+  PetscFunctionBeginUser;
+  PetscCheck(name, comm, PETSC_ERR_ARG_NULL, "%s name is NULL", kind);
+  len = strlen(name);
+  PetscCheck(len > 0 && len < TSL_NAME_LEN, comm, PETSC_ERR_ARG_WRONG, "%s name \"%s\" must have 1 to %d characters",
+             kind, name, TSL_NAME_LEN - 1);
+  PetscCheck(strcmp(name, ".") && strcmp(name, ".."), comm, PETSC_ERR_ARG_WRONG, "%s name \"%s\" is not allowed", kind,
+             name);
+  for (size_t i = 0; i < len; i++)
+    PetscCheck(!strchr(forbidden, name[i]) && (unsigned char)name[i] >= 32, comm, PETSC_ERR_ARG_WRONG,
+               "%s name \"%s\" contains a forbidden character (any of \"%s\" or a control character)", kind, name,
+               forbidden);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputCheckRoot(MPI_Comm comm, int err, const char *action, const char *path) {
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
+  PetscCheck(!err, comm, PETSC_ERR_FILE_WRITE, "Cannot %s %s: %s", action, path, strerror(err));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobname, TslOutput *out) {
+  TslOutput o;
+  hid_t fapl, grp;
+  H5E_auto2_t efunc;
+  void *edata;
+
+  PetscFunctionBeginUser;
+  PetscCheck(out, comm, PETSC_ERR_ARG_NULL, "TslOutputCreate(): out is NULL");
+  *out = NULL;
+  PetscCall(TslOutputCheckName(comm, "Job", jobname, "/:\"<>&'"));
+  PetscCall(PetscNew(&o));
+  o->comm = comm;
+  o->file = H5I_INVALID_HID;
+  o->dxpl = H5I_INVALID_HID;
+  o->frame_group = H5I_INVALID_HID;
+  PetscCallMPI(MPI_Comm_rank(comm, &o->rank));
+  PetscCall(PetscStrncpy(o->job, jobname, sizeof(o->job)));
+  PetscCall(TslOutputPath(comm, NULL, jobname, ".h5", o->h5_base, sizeof(o->h5_base)));
+  PetscCall(TslOutputPath(comm, dir, jobname, ".h5.part", o->h5_part, sizeof(o->h5_part)));
+  PetscCall(TslOutputPath(comm, dir, jobname, ".h5", o->h5_final, sizeof(o->h5_final)));
+  PetscCall(TslOutputPath(comm, dir, jobname, ".xmf.part", o->xmf_part, sizeof(o->xmf_part)));
+  PetscCall(TslOutputPath(comm, dir, jobname, ".xmf.part.tmp", o->xmf_tmp, sizeof(o->xmf_tmp)));
+  PetscCall(TslOutputPath(comm, dir, jobname, ".xmf", o->xmf_final, sizeof(o->xmf_final)));
+  *out = o; /* from here on Destroy cleans up whatever exists */
+
+  TslH5Check(comm, fapl = H5Pcreate(H5P_FILE_ACCESS), o->h5_part);
+  TslH5Check(comm, H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL), o->h5_part);
+  /* Collective metadata avoids every rank reading the same metadata block at scale. */
+  TslH5Check(comm, H5Pset_all_coll_metadata_ops(fapl, 1), o->h5_part);
+  TslH5Check(comm, H5Pset_coll_metadata_write(fapl, 1), o->h5_part);
+  /* A missing or read-only directory is a user error: report it as such, without HDF5's stack dump. */
+  TslH5Check(comm, H5Eget_auto2(H5E_DEFAULT, &efunc, &edata), o->h5_part);
+  TslH5Check(comm, H5Eset_auto2(H5E_DEFAULT, NULL, NULL), o->h5_part);
+  o->file = H5Fcreate(o->h5_part, H5F_ACC_TRUNC, H5P_DEFAULT, fapl);
+  TslH5Check(comm, H5Eset_auto2(H5E_DEFAULT, efunc, edata), o->h5_part);
+  TslH5Check(comm, H5Pclose(fapl), o->h5_part);
+  if (o->file < 0) {
+    char path[PETSC_MAX_PATH_LEN];
+    PetscCall(PetscStrncpy(path, o->h5_part, sizeof(path)));
+    PetscCall(PetscFree(o));
+    *out = NULL;
+    SETERRQ(comm, PETSC_ERR_FILE_OPEN, "Cannot create output file %s (does the directory exist and is it writable?)",
+            path);
+  }
+
+  TslH5Check(comm, o->dxpl = H5Pcreate(H5P_DATASET_XFER), o->h5_part);
+  TslH5Check(comm, H5Pset_dxpl_mpio(o->dxpl, H5FD_MPIO_COLLECTIVE), o->h5_part);
+  TslH5Check(comm, grp = H5Gcreate2(o->file, "/mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), o->h5_part);
+  TslH5Check(comm, H5Gclose(grp), o->h5_part);
+  TslH5Check(comm, grp = H5Gcreate2(o->file, "/frames", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), o->h5_part);
+  TslH5Check(comm, H5Gclose(grp), o->h5_part);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Creates dataset name under loc with global shape [gdim0] (dim1 == 0) or [gdim0][dim1] and writes
+ * rows [start, start+count) from buf collectively. Every rank calls it, possibly with count 0. */
+static PetscErrorCode WriteRows(TslOutput out, hid_t loc, const char *name, hid_t filetype, hid_t memtype,
+                                hsize_t gdim0, hsize_t dim1, hsize_t start, hsize_t count, const void *buf) {
+  const int rank = dim1 ? 2 : 1;
+  hsize_t gdims[2] = {gdim0, dim1}, mdims[2] = {count ? count : 1, dim1}, off[2] = {start, 0}, cnt[2] = {count, dim1};
+  hid_t fspace, mspace, dset;
+  double dummy = 0; /* HDF5 rejects a NULL buffer even for an empty selection */
+
+  PetscFunctionBeginUser;
+  TslH5Check(out->comm, fspace = H5Screate_simple(rank, gdims, NULL), out->h5_part);
+  TslH5Check(out->comm, dset = H5Dcreate2(loc, name, filetype, fspace, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             out->h5_part);
+  TslH5Check(out->comm, mspace = H5Screate_simple(rank, mdims, NULL), out->h5_part);
+  if (count) {
+    TslH5Check(out->comm, H5Sselect_hyperslab(fspace, H5S_SELECT_SET, off, NULL, cnt, NULL), out->h5_part);
+  } else {
+    TslH5Check(out->comm, H5Sselect_none(fspace), out->h5_part);
+    TslH5Check(out->comm, H5Sselect_none(mspace), out->h5_part);
+  }
+  TslH5Check(out->comm, H5Dwrite(dset, memtype, mspace, fspace, out->dxpl, count ? buf : (const void *)&dummy),
+             out->h5_part);
+  TslH5Check(out->comm, H5Sclose(mspace), out->h5_part);
+  TslH5Check(out->comm, H5Sclose(fspace), out->h5_part);
+  TslH5Check(out->comm, H5Dclose(dset), out->h5_part);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Moves one int per item to the natural blocks and writes it as int64. */
+static PetscErrorCode WriteIds(TslOutput out, const TslRedist *rd, const char *name, const PetscInt ids[]) {
+  int64_t *loc, *blk;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(rd->nlocal, &loc, rd->nblock, &blk));
+  for (PetscInt k = 0; k < rd->nlocal; k++) loc[k] = ids[k];
+  PetscCall(TslRedistMove(out->comm, rd, sizeof(int64_t), loc, blk));
+  PetscCall(WriteRows(out, out->file, name, H5T_STD_I64LE, H5T_NATIVE_INT64, (hsize_t)rd->nglobal, 0,
+                      (hsize_t)rd->bstart, (hsize_t)rd->nblock, blk));
+  PetscCall(PetscFree2(loc, blk));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* /mesh/topology: XDMF Mixed records [type, n0, n1, ...] in natural element order. Records differ in
+ * length, so they travel padded to the longest one; each block then packs its records and finds its
+ * offset in the file by an exclusive scan of the block lengths. */
+static PetscErrorCode WriteTopology(TslOutput out, PetscInt nelem, const PetscInt xdmf_type[], const PetscInt ptr[],
+                                    const PetscInt conn[]) {
+  const TslRedist *rd = &out->elems;
+  PetscInt maxlen = 0, badnode = -1, anybad;
+  int64_t *pad, *blkpad, *rec, blklen = 0, offset = 0, total = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt e = 0; e < nelem; e++) {
+    maxlen = PetscMax(maxlen, 1 + ptr[e + 1] - ptr[e]);
+    for (PetscInt j = ptr[e]; j < ptr[e + 1]; j++)
+      if (conn[j] < 0 || conn[j] >= out->nnode_global) badnode = conn[j];
+    if (ptr[e + 1] <= ptr[e] || xdmf_type[e] <= 0) badnode = -2;
+  }
+  anybad = badnode == -1 ? 0 : 1;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &anybad, 1, MPIU_INT, MPI_MAX, out->comm));
+  PetscCheck(!anybad, out->comm, PETSC_ERR_ARG_OUTOFRANGE,
+             "Element connectivity: empty element, bad cell type or node index outside [0, %" PetscInt_FMT
+             ") (this rank: %" PetscInt_FMT ", -1 = fine, -2 = empty element or type)",
+             out->nnode_global, badnode);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &maxlen, 1, MPIU_INT, MPI_MAX, out->comm));
+  if (maxlen == 0) maxlen = 1; /* no elements at all */
+
+  PetscCall(PetscMalloc2(nelem * maxlen, &pad, rd->nblock * maxlen, &blkpad));
+  for (PetscInt e = 0; e < nelem; e++) {
+    int64_t *r = pad + e * maxlen;
+    r[0] = xdmf_type[e];
+    for (PetscInt j = ptr[e]; j < ptr[e + 1]; j++) r[1 + j - ptr[e]] = conn[j];
+    for (PetscInt j = 1 + ptr[e + 1] - ptr[e]; j < maxlen; j++) r[j] = -1;
+  }
+  /* The padding of -1 marks where a record ends; node indices are never negative. */
+  PetscCall(TslRedistMove(out->comm, rd, maxlen * sizeof(int64_t), pad, blkpad));
+  for (PetscInt k = 0; k < rd->nblock; k++) {
+    PetscInt n = 1;
+    while (n < maxlen && blkpad[k * maxlen + n] >= 0) n++;
+    blklen += n;
+  }
+  PetscCall(PetscMalloc1(blklen, &rec));
+  blklen = 0;
+  for (PetscInt k = 0; k < rd->nblock; k++) {
+    PetscInt n = 1;
+    while (n < maxlen && blkpad[k * maxlen + n] >= 0) n++;
+    for (PetscInt j = 0; j < n; j++) rec[blklen++] = blkpad[k * maxlen + j];
+  }
+  PetscCallMPI(MPI_Exscan(&blklen, &offset, 1, MPI_INT64_T, MPI_SUM, out->comm));
+  if (out->rank == 0) offset = 0; /* MPI_Exscan leaves rank 0's result undefined */
+  PetscCallMPI(MPI_Allreduce(&blklen, &total, 1, MPI_INT64_T, MPI_SUM, out->comm));
+  out->topo_len = total;
+  PetscCall(WriteRows(out, out->file, "/mesh/topology", H5T_STD_I64LE, H5T_NATIVE_INT64, (hsize_t)total, 0,
+                      (hsize_t)offset, (hsize_t)blklen, rec));
+  PetscCall(PetscFree(rec));
+  PetscCall(PetscFree2(pad, blkpad));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputSetMesh(TslOutput out, PetscInt nnode_global, PetscInt nnode, const PetscInt node_nat[],
+                                const PetscInt node_id[], const PetscReal xyz[], PetscInt nelem_global, PetscInt nelem,
+                                const PetscInt elem_nat[], const PetscInt elem_id[], const PetscInt xdmf_type[],
+                                const PetscInt ptr[], const PetscInt conn[]) {
+  PetscReal *blkxyz;
+
+  PetscFunctionBeginUser;
+  PetscCheck(!out->mesh_set, out->comm, PETSC_ERR_ORDER, "TslOutputSetMesh() called twice");
+  PetscCheck(!out->finalized, out->comm, PETSC_ERR_ORDER, "Output %s already finalized", out->h5_final);
+  out->nnode_global = nnode_global;
+  out->nelem_global = nelem_global;
+  PetscCall(TslRedistSetUp(out->comm, nnode_global, nnode, node_nat, "Output nodes", &out->nodes));
+  PetscCall(TslRedistSetUp(out->comm, nelem_global, nelem, elem_nat, "Output elements", &out->elems));
+
+  PetscCall(PetscMalloc1(3 * out->nodes.nblock, &blkxyz));
+  PetscCall(TslRedistMove(out->comm, &out->nodes, 3 * sizeof(PetscReal), xyz, blkxyz));
+  PetscCall(WriteRows(out, out->file, "/mesh/coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, (hsize_t)nnode_global, 3,
+                      (hsize_t)out->nodes.bstart, (hsize_t)out->nodes.nblock, blkxyz));
+  PetscCall(PetscFree(blkxyz));
+  PetscCall(WriteIds(out, &out->nodes, "/mesh/node_ids", node_id));
+  PetscCall(WriteIds(out, &out->elems, "/mesh/element_ids", elem_id));
+  PetscCall(WriteTopology(out, nelem, xdmf_type, ptr, conn));
+  out->mesh_set = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteAttribute(TslOutput out, hid_t loc, const char *name, hid_t filetype, hid_t memtype,
+                                     const void *val) {
+  hid_t space, attr;
+
+  PetscFunctionBeginUser;
+  TslH5Check(out->comm, space = H5Screate(H5S_SCALAR), out->h5_part);
+  TslH5Check(out->comm, attr = H5Acreate2(loc, name, filetype, space, H5P_DEFAULT, H5P_DEFAULT), out->h5_part);
+  TslH5Check(out->comm, H5Awrite(attr, memtype, val), out->h5_part);
+  TslH5Check(out->comm, H5Aclose(attr), out->h5_part);
+  TslH5Check(out->comm, H5Sclose(space), out->h5_part);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputBeginFrame(TslOutput out, PetscInt step, PetscInt increment, PetscReal time) {
+  TslOutputFrameInfo *f;
+  char gname[32];
+  int64_t istep = step, iinc = increment;
+  double t = time;
+
+  PetscFunctionBeginUser;
+  PetscCheck(out->mesh_set, out->comm, PETSC_ERR_ORDER, "TslOutputSetMesh() must come before the first frame");
+  PetscCheck(!out->in_frame, out->comm, PETSC_ERR_ORDER, "TslOutputBeginFrame() while a frame is open");
+  PetscCheck(!out->finalized, out->comm, PETSC_ERR_ORDER, "Output %s already finalized", out->h5_final);
+  if (out->nframe == out->maxframe) {
+    TslOutputFrameInfo *more;
+    PetscInt newmax = PetscMax(8, 2 * out->maxframe);
+    PetscCall(PetscCalloc1(newmax, &more));
+    if (out->nframe) PetscCall(PetscArraycpy(more, out->frames, out->nframe));
+    PetscCall(PetscFree(out->frames));
+    out->frames = more;
+    out->maxframe = newmax;
+  }
+  f = &out->frames[out->nframe];
+  f->step = step;
+  f->increment = increment;
+  f->time = time;
+  f->nfield = 0;
+  PetscCheck(out->nframe + 1 <= 999999, out->comm, PETSC_ERR_SUP, "More than 999999 output frames");
+  snprintf(gname, sizeof(gname), "/frames/%06d", (int)(out->nframe + 1));
+  TslH5Check(out->comm, out->frame_group = H5Gcreate2(out->file, gname, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+             out->h5_part);
+  PetscCall(WriteAttribute(out, out->frame_group, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &t));
+  PetscCall(WriteAttribute(out, out->frame_group, "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &istep));
+  PetscCall(WriteAttribute(out, out->frame_group, "increment", H5T_STD_I64LE, H5T_NATIVE_INT64, &iinc));
+  out->nframe++;
+  out->in_frame = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode WriteField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[],
+                                 PetscBool on_cells) {
+  const TslRedist *rd = on_cells ? &out->elems : &out->nodes;
+  TslOutputFrameInfo *f;
+  PetscReal *blk;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslOutputCheckName(out->comm, "Field", name, "/:\"<>&'"));
+  PetscCheck(out->in_frame, out->comm, PETSC_ERR_ORDER, "Field %s given outside TslOutputBeginFrame/EndFrame", name);
+  PetscCheck(ncomp >= 1, out->comm, PETSC_ERR_ARG_OUTOFRANGE, "Field %s: ncomp %" PetscInt_FMT " < 1", name, ncomp);
+  f = &out->frames[out->nframe - 1];
+  for (PetscInt i = 0; i < f->nfield; i++)
+    PetscCheck(strcmp(f->fields[i].name, name), out->comm, PETSC_ERR_ARG_WRONG, "Field %s written twice in one frame",
+               name);
+  if (f->nfield == f->maxfield) {
+    TslOutputFieldInfo *more;
+    PetscInt newmax = PetscMax(8, 2 * f->maxfield);
+    PetscCall(PetscCalloc1(newmax, &more));
+    if (f->nfield) PetscCall(PetscArraycpy(more, f->fields, f->nfield));
+    PetscCall(PetscFree(f->fields));
+    f->fields = more;
+    f->maxfield = newmax;
+  }
+
+  PetscCall(PetscMalloc1(ncomp * rd->nblock, &blk));
+  PetscCall(TslRedistMove(out->comm, rd, ncomp * sizeof(PetscReal), vals, blk));
+  PetscCall(WriteRows(out, out->frame_group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, (hsize_t)rd->nglobal,
+                      (hsize_t)ncomp, (hsize_t)rd->bstart, (hsize_t)rd->nblock, blk));
+  PetscCall(PetscFree(blk));
+  PetscCall(PetscStrncpy(f->fields[f->nfield].name, name, sizeof(f->fields[f->nfield].name)));
+  f->fields[f->nfield].ncomp = ncomp;
+  f->fields[f->nfield].on_cells = on_cells;
+  f->nfield++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputNodeField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[]) {
+  PetscFunctionBeginUser;
+  PetscCall(WriteField(out, name, ncomp, vals, PETSC_FALSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputElementField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[]) {
+  PetscFunctionBeginUser;
+  PetscCall(WriteField(out, name, ncomp, vals, PETSC_TRUE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The .xmf.part is rewritten whole into a scratch name and renamed over, so that a reader (or a
+ * crash) never sees a half-written XML file. */
+static PetscErrorCode RewriteXmf(TslOutput out) {
+  int err = 0;
+
+  PetscFunctionBeginUser;
+  if (out->rank == 0) {
+    PetscCall(TslOutputWriteXmf(out, out->xmf_tmp, &err));
+    if (!err && rename(out->xmf_tmp, out->xmf_part)) err = errno;
+  }
+  PetscCall(TslOutputCheckRoot(out->comm, err, "write", out->xmf_part));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputEndFrame(TslOutput out) {
+  PetscFunctionBeginUser;
+  PetscCheck(out->in_frame, out->comm, PETSC_ERR_ORDER, "TslOutputEndFrame() without TslOutputBeginFrame()");
+  TslH5Check(out->comm, H5Gclose(out->frame_group), out->h5_part);
+  out->frame_group = H5I_INVALID_HID;
+  out->in_frame = PETSC_FALSE;
+  /* The .xmf about to name this frame must not point at data still in HDF5's cache. */
+  TslH5Check(out->comm, H5Fflush(out->file, H5F_SCOPE_GLOBAL), out->h5_part);
+  PetscCall(RewriteXmf(out));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputFinalize(TslOutput out) {
+  int err = 0;
+
+  PetscFunctionBeginUser;
+  PetscCheck(!out->in_frame, out->comm, PETSC_ERR_ORDER, "TslOutputFinalize() inside a frame");
+  PetscCheck(!out->finalized, out->comm, PETSC_ERR_ORDER, "Output %s already finalized", out->h5_final);
+  TslH5Check(out->comm, H5Fclose(out->file), out->h5_part);
+  out->file = H5I_INVALID_HID;
+  PetscCall(RewriteXmf(out));
+  /* The .h5 goes first: a crash in between leaves the old .xmf, which may name frames the new .h5
+   * lacks, rather than a new .xmf with no .h5 at all. */
+  if (out->rank == 0 && rename(out->h5_part, out->h5_final)) err = errno;
+  PetscCall(TslOutputCheckRoot(out->comm, err, "rename the finished output to", out->h5_final));
+  if (out->rank == 0 && rename(out->xmf_part, out->xmf_final)) err = errno;
+  PetscCall(TslOutputCheckRoot(out->comm, err, "rename the finished output to", out->xmf_final));
+  out->finalized = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective. Without a Finalize the temporary files go, and the previous results stay. */
+PetscErrorCode TslOutputDestroy(TslOutput *out) {
+  TslOutput o;
+
+  PetscFunctionBeginUser;
+  if (!out || !*out) PetscFunctionReturn(PETSC_SUCCESS);
+  o = *out;
+  if (o->frame_group >= 0) TslH5Check(o->comm, H5Gclose(o->frame_group), o->h5_part);
+  if (o->file >= 0) TslH5Check(o->comm, H5Fclose(o->file), o->h5_part);
+  if (o->dxpl >= 0) TslH5Check(o->comm, H5Pclose(o->dxpl), o->h5_part);
+  if (!o->finalized) {
+    if (o->rank == 0) {
+      (void)unlink(o->h5_part); /* any of them may never have been created */
+      (void)unlink(o->xmf_part);
+      (void)unlink(o->xmf_tmp);
+    }
+    PetscCallMPI(MPI_Barrier(o->comm)); /* no rank returns while the files are still there */
+  }
+  PetscCall(TslRedistReset(&o->nodes));
+  PetscCall(TslRedistReset(&o->elems));
+  for (PetscInt i = 0; i < o->nframe; i++) PetscCall(PetscFree(o->frames[i].fields));
+  PetscCall(PetscFree(o->frames));
+  PetscCall(PetscFree(o));
+  *out = NULL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

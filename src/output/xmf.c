@@ -1,0 +1,77 @@
+/* The XDMF 3 text describing <job>.h5 as a temporal collection, one Uniform grid per frame. The mesh
+ * datasets are referenced again by each grid (not xi:included) so that every grid stands alone; the
+ * text is small and the data is shared in the .h5 anyway. */
+#include "output_impl.h"
+#include <errno.h>
+
+/* ParaView's XDMF reader wants 3 components for a Vector; 6 is a symmetric tensor (Tensor6) and 9 a
+ * full one. Anything else is a plain N x ncomp Matrix. */
+static const char *AttributeType(PetscInt ncomp) {
+  switch (ncomp) {
+  case 1:
+    return "Scalar";
+  case 3:
+    return "Vector";
+  case 6:
+    return "Tensor6";
+  case 9:
+    return "Tensor";
+  default:
+    return "Matrix";
+  }
+}
+
+static void WriteMesh(FILE *fp, TslOutput out) {
+  fprintf(fp, "        <Topology TopologyType=\"Mixed\" NumberOfElements=\"%" PetscInt_FMT "\">\n", out->nelem_global);
+  fprintf(fp,
+          "          <DataItem Dimensions=\"%lld\" NumberType=\"Int\" Precision=\"8\" "
+          "Format=\"HDF\">%s:/mesh/topology</DataItem>\n",
+          (long long)out->topo_len, out->h5_base);
+  fprintf(fp, "        </Topology>\n");
+  fprintf(fp, "        <Geometry GeometryType=\"XYZ\">\n");
+  fprintf(fp,
+          "          <DataItem Dimensions=\"%" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" "
+          "Format=\"HDF\">%s:/mesh/coordinates</DataItem>\n",
+          out->nnode_global, out->h5_base);
+  fprintf(fp, "        </Geometry>\n");
+}
+
+PetscErrorCode TslOutputWriteXmf(TslOutput out, const char *path, int *err) {
+  FILE *fp;
+
+  PetscFunctionBeginUser;
+  *err = 0;
+  fp = fopen(path, "w");
+  if (!fp) {
+    *err = errno;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  /* Names were checked for XML-special characters when they were given; nothing needs escaping. */
+  fprintf(fp, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n");
+  fprintf(fp, "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n  <Domain>\n");
+  fprintf(fp, "    <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", out->job);
+  for (PetscInt i = 0; i < out->nframe; i++) {
+    const TslOutputFrameInfo *f = &out->frames[i];
+    if (out->in_frame && i == out->nframe - 1) break; /* the open frame is not complete yet */
+    fprintf(fp, "      <Grid Name=\"frame%06d\" GridType=\"Uniform\">\n", (int)(i + 1));
+    fprintf(fp, "        <Time Value=\"%.17g\"/>\n", (double)f->time);
+    fprintf(fp, "        <Information Name=\"step\" Value=\"%" PetscInt_FMT "\"/>\n", f->step);
+    fprintf(fp, "        <Information Name=\"increment\" Value=\"%" PetscInt_FMT "\"/>\n", f->increment);
+    WriteMesh(fp, out);
+    for (PetscInt j = 0; j < f->nfield; j++) {
+      const TslOutputFieldInfo *a = &f->fields[j];
+      fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"%s\">\n", a->name,
+              AttributeType(a->ncomp), a->on_cells ? "Cell" : "Node");
+      fprintf(fp,
+              "          <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" "
+              "Precision=\"8\" Format=\"HDF\">%s:/frames/%06d/%s</DataItem>\n",
+              a->on_cells ? out->nelem_global : out->nnode_global, a->ncomp, out->h5_base, (int)(i + 1), a->name);
+      fprintf(fp, "        </Attribute>\n");
+    }
+    fprintf(fp, "      </Grid>\n");
+  }
+  fprintf(fp, "    </Grid>\n  </Domain>\n</Xdmf>\n");
+  if (ferror(fp)) *err = errno ? errno : EIO;
+  if (fclose(fp) && !*err) *err = errno ? errno : EIO;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
