@@ -14,7 +14,7 @@
 #pragma once
 #include <thermoslide/model.h>
 #include <thermoslide/element.h>
-#include <petscmat.h>
+#include <petscsnes.h>
 
 typedef struct _p_TslProblem *TslProblem;
 
@@ -62,3 +62,8 @@ PetscErrorCode TslProblemElementField(TslProblem prob, const char *name, PetscIn
 PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta);
 /* Reference magnitudes of the displacement and temperature residuals (for convergence tests). */
 PetscErrorCode TslProblemResidualNorms(TslProblem prob, Vec F, PetscReal *norm_u, PetscReal *norm_theta);
+
+/* Rank 0, on the whole model before distribution: every body has its rigid-body modes removed by
+ * prescribed displacements in every step, and a prescribed temperature or film in steady-state steps.
+ * A violation is a user error naming the step and a node of the body. */
+PetscErrorCode TslModelCheckSupports(TslModel *global);

@@ -4,7 +4,9 @@
  */
 #include <thermoslide/mesh.h>
 #include <thermoslide/solve.h>
+#include <thermoslide/problem.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
 #include <errno.h>
 
@@ -73,6 +75,7 @@ static PetscErrorCode Run(const char *deck)
   JobName(deck, job, sizeof(job));
   if (rank == 0) {
     ierr = TslDeckRead(deck, &global);
+    if (!ierr) ierr = TslModelCheckSupports(global);
     if (!ierr && mkdir(dir, 0777) && errno != EEXIST) {
       fprintf(stderr, "thermoslide: error: cannot create the output directory %s: %s\n", dir, strerror(errno));
       ierr = PETSC_ERR_FILE_OPEN;

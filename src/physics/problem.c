@@ -247,7 +247,9 @@ PetscErrorCode TslProblemMaxTemperatureChange(TslProblem p, PetscReal *dtheta)
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(p->X, &x));
   PetscCall(VecGetArrayRead(p->Xold, &xo));
-  for (PetscInt n = 0; n < p->nown; n++) d = PetscMax(d, PetscAbsScalar(x[n * p->ndof + p->dim] - xo[n * p->ndof + p->dim]));
+  /* prescribed temperatures are excluded: their jumps are the user's, not the increment's */
+  for (PetscInt n = 0; n < p->nown; n++)
+    if (!p->bc[n * p->ndof + p->dim].active) d = PetscMax(d, PetscAbsScalar(x[n * p->ndof + p->dim] - xo[n * p->ndof + p->dim]));
   PetscCall(VecRestoreArrayRead(p->X, &x));
   PetscCall(VecRestoreArrayRead(p->Xold, &xo));
   PetscCall(MPIU_Allreduce(&d, dtheta, 1, MPIU_REAL, MPIU_MAX, p->comm));

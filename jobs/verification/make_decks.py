@@ -1,0 +1,157 @@
+#!/usr/bin/python3
+"""Writes the structured-mesh verification decks of this folder (run once; the decks are committed).
+
+Each deck is a plain Abaqus/CalculiX keyword file; this script only saves typing node and element lines.
+"""
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+MAT = """*MATERIAL, NAME=STEEL
+*ELASTIC
+ 30.0E6, 0.3
+*CONDUCTIVITY
+ 10.0
+*DENSITY
+ 1000.0
+*SPECIFIC HEAT
+ 0.001
+"""
+
+
+def grid2d(nx, ny, x0, x1, y0, y1):
+    nodes, elems = [], []
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            nodes.append((1 + i + j * (nx + 1), x0 + (x1 - x0) * i / nx, y0 + (y1 - y0) * j / ny))
+    for j in range(ny):
+        for i in range(nx):
+            n1 = 1 + i + j * (nx + 1)
+            elems.append((1 + i + j * nx, n1, n1 + 1, n1 + nx + 2, n1 + nx + 1))
+    return nodes, elems
+
+
+def grid3d(nx, ny, nz, L, H, W):
+    nodes, elems = [], []
+    nid = lambda i, j, k: 1 + i + j * (nx + 1) + k * (nx + 1) * (ny + 1)
+    for k in range(nz + 1):
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                nodes.append((nid(i, j, k), L * i / nx, H * j / ny, W * k / nz))
+    e = 1
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                elems.append((e, nid(i, j, k), nid(i + 1, j, k), nid(i + 1, j + 1, k), nid(i, j + 1, k),
+                              nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j + 1, k + 1), nid(i, j + 1, k + 1)))
+                e += 1
+    return nodes, elems
+
+
+def fmt_nodes(nodes):
+    return "*NODE, NSET=ALL\n" + "".join(" " + ", ".join([str(n[0])] + ["%.10g" % c for c in n[1:]]) + "\n" for n in nodes)
+
+
+def fmt_elems(elems, typ):
+    return "*ELEMENT, TYPE=%s, ELSET=BODY\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in elems)
+
+
+def nset(name, ids):
+    ids = list(ids)
+    return "*NSET, NSET=%s\n" % name + "".join(" " + ", ".join(str(i) for i in ids[k:k + 8]) + "\n" for k in range(0, len(ids), 8))
+
+
+def elset(name, ids):
+    ids = list(ids)
+    return "*ELSET, ELSET=%s\n" % name + "".join(" " + ", ".join(str(i) for i in ids[k:k + 8]) + "\n" for k in range(0, len(ids), 8))
+
+
+def write(name, text):
+    with open(os.path.join(HERE, name), "w") as f:
+        f.write(text)
+
+
+def conduction_steady(typ):
+    """Steady 1D conduction: theta = 100 on x = x0, film h = 50, sink 0 on x = x1 (face S2 of the last column)."""
+    nx, ny = 10, 2
+    if typ == "C3D8T":
+        nodes, elems = grid3d(nx, ny, 1, 1.0, 0.2, 0.2)
+        left = [n[0] for n in nodes if abs(n[1]) < 1e-12]
+        right = [e[0] for e in elems if (e[0] - 1) % nx == nx - 1]
+        face = "S4"
+    else:
+        x0, x1 = (1.0, 2.0) if typ == "CAX4T" else (0.0, 1.0)
+        nodes, elems = grid2d(nx, ny, x0, x1, 0.0, 0.2)
+        left = [n[0] for n in nodes if abs(n[1] - x0) < 1e-12]
+        right = [e[0] for e in elems if (e[0] - 1) % nx == nx - 1]
+        face = "S2"
+    dofs = "1, 3" if typ == "C3D8T" else "1, 2"
+    axis = "radial (r from 1 to 2), logarithmic profile" if typ == "CAX4T" else "along x, linear profile"
+    write("conduction_steady_%s.inp" % typ.lower(),
+          "*HEADING\n Steady conduction %s with %s: theta=100 at the inner face, film h=50 sink 0 at the outer face\n" % (axis, typ) +
+          fmt_nodes(nodes) + fmt_elems(elems, typ) + nset("HOT", left) + elset("FILMED", right) + MAT +
+          "*SOLID SECTION, ELSET=BODY, MATERIAL=STEEL\n 1.0\n"
+          "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
+          "*BOUNDARY\n ALL, %s\n HOT, 11, 11, 100.0\n*FILM\n FILMED, F%s, 0.0, 50.0\n" % (dofs, face[1]) +
+          "*NODE OUTPUT\n U, NT, RFL\n*ELEMENT OUTPUT\n HFL\n*END STEP\n")
+
+
+def conduction_transient():
+    """Transient 1D conduction into a slab: theta = 100 suddenly at x = 0, x = L insulated (series solution)."""
+    nx = 40
+    nodes, elems = grid2d(nx, 1, 0.0, 1.0, 0.0, 0.05)
+    left = [n[0] for n in nodes if abs(n[1]) < 1e-12]
+    write("conduction_transient_cpe4t.inp",
+          "*HEADING\n Transient 1D conduction, CPE4T: slab 0<x<1 at 0, face x=0 held at 100 from t=0, x=1 insulated\n" +
+          fmt_nodes(nodes) + fmt_elems(elems, "CPE4T") + nset("HOT", left) + MAT +
+          "*SOLID SECTION, ELSET=BODY, MATERIAL=STEEL\n 1.0\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n"
+          "*STEP, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT, DELTMX=50.0\n 0.0005, 0.03, 1e-6, 0.0005\n"
+          "*BOUNDARY\n ALL, 1, 2\n HOT, 11, 11, 100.0\n*NODE OUTPUT\n NT\n*END STEP\n")
+
+
+def expansion(typ, constrained):
+    """Uniform temperature rise 0 -> 100 of a block: free (statically determinate supports) or fully constrained."""
+    if typ == "C3D8T":
+        nodes, elems = grid3d(2, 2, 2, 1.0, 1.0, 1.0)
+        corner = [n for n in nodes if abs(n[1]) + abs(n[2]) + abs(n[3]) < 1e-12][0][0]
+        ynode = [n for n in nodes if abs(n[1]) < 1e-12 and abs(n[2] - 1) < 1e-12 and abs(n[3]) < 1e-12][0][0]
+        znode = [n for n in nodes if abs(n[1]) < 1e-12 and abs(n[2]) < 1e-12 and abs(n[3] - 1) < 1e-12][0][0]
+        supports = " %d, 1, 3\n %d, 1, 1\n %d, 3, 3\n %d, 1, 2\n" % (corner, ynode, ynode, znode)
+        alldofs = "1, 3"
+    else:
+        x0 = 1.0 if typ == "CAX4T" else 0.0
+        nodes, elems = grid2d(2, 2, x0, x0 + 1.0, 0.0, 1.0)
+        corner = [n for n in nodes if abs(n[1] - x0) + abs(n[2]) < 1e-12][0][0]
+        ynode = [n for n in nodes if abs(n[1] - x0) < 1e-12 and abs(n[2] - 1) < 1e-12][0][0]
+        supports = " %d, 2, 2\n" % corner if typ == "CAX4T" else " %d, 1, 2\n %d, 1, 1\n" % (corner, ynode)
+        alldofs = "1, 2"
+    kind = "constrained" if constrained else "free"
+    write("expansion_%s_%s.inp" % (kind, typ.lower()),
+          "*HEADING\n Uniform heating 0 -> 100 of a %s block, %s; E=30e6 nu=0.3 alpha=1e-5\n" % (kind, typ) +
+          fmt_nodes(nodes) + fmt_elems(elems, typ) + MAT + "*EXPANSION\n 1.0E-5\n" +
+          "*SOLID SECTION, ELSET=BODY, MATERIAL=STEEL\n 1.0\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n"
+          "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n*BOUNDARY\n" +
+          (" ALL, %s\n" % alldofs if constrained else supports) + " ALL, 11, 11, 100.0\n*END STEP\n")
+
+
+def jacobian_case():
+    """Small coupled transient case (expansion, film, flux, pressure) for -snes_test_jacobian."""
+    nodes, elems = grid2d(2, 2, 0.0, 1.0, 0.0, 1.0)
+    nodes = [(n, x + 0.07 * y * x, y + 0.05 * x * x) for n, x, y in nodes]
+    bottom = [n[0] for n in nodes if abs(n[2]) < 1e-12]
+    write("jacobian_coupled_cpe4t.inp",
+          "*HEADING\n Coupled transient on distorted CPE4T elements for -snes_test_jacobian\n" +
+          fmt_nodes(nodes) + fmt_elems(elems, "CPE4T") + nset("BOTTOM", bottom) + elset("TOP", [3, 4]) + MAT +
+          "*EXPANSION\n 1.0E-5\n*SOLID SECTION, ELSET=BODY, MATERIAL=STEEL\n 1.0\n"
+          "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 20.0\n"
+          "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 0.1\n*BOUNDARY\n BOTTOM, 1, 2\n"
+          "*DLOAD\n TOP, P3, 100.0\n*DFLUX\n TOP, S3, 50.0\n*FILM\n 1, F4, 0.0, 10.0\n*END STEP\n")
+
+
+if __name__ == "__main__":
+    for t in ("CPE4T", "CPS4T", "CAX4T", "C3D8T"):
+        conduction_steady(t)
+        expansion(t, False)
+        expansion(t, True)
+    conduction_transient()
+    jacobian_case()

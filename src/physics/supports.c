@@ -1,0 +1,180 @@
+/* Is every body supported? A user error is better than a singular matrix.
+ *
+ * For each step (boundary conditions carried over as the dialect says), each connected body (elements
+ * sharing nodes, or tied by *EQUATION) must have its rigid-body modes removed by prescribed
+ * displacements: the Gram matrix of the modes restricted to the prescribed dofs must have full rank
+ * (3 modes in plane models, 1 (axial translation) in axisymmetric ones, 6 in 3D). In steady-state steps
+ * each body also needs a prescribed temperature or a film, or its temperature is undetermined.
+ */
+#include <thermoslide/problem.h>
+
+static PetscInt Find(PetscInt *parent, PetscInt i)
+{
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+static void Union(PetscInt *parent, PetscInt a, PetscInt b)
+{
+  a = Find(parent, a), b = Find(parent, b);
+  if (a != b) parent[PetscMax(a, b)] = PetscMin(a, b);
+}
+
+/* Rigid-body modes of a kinematics at a point x (relative to the body centre): modes[m][3]. */
+static PetscInt RigidModes(TslKinematics kin, const PetscReal x[3], PetscReal modes[6][3])
+{
+  PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(&modes[0][0], 18));
+  switch (kin) {
+  case TSL_KIN_AXISYMMETRIC:
+    modes[0][1] = 1;
+    return 1;
+  case TSL_KIN_SOLID3D:
+    for (PetscInt i = 0; i < 3; i++) modes[i][i] = 1;
+    modes[3][1] = -x[2], modes[3][2] = x[1];
+    modes[4][0] = x[2], modes[4][2] = -x[0];
+    modes[5][0] = -x[1], modes[5][1] = x[0];
+    return 6;
+  default:
+    modes[0][0] = 1, modes[1][1] = 1;
+    modes[2][0] = -x[1], modes[2][1] = x[0];
+    return 3;
+  }
+}
+
+/* Rank of a small symmetric positive semi-definite matrix by pivoted elimination. */
+static PetscInt GramRank(PetscInt n, PetscReal G[6][6])
+{
+  PetscReal tol = 0;
+  PetscInt  rank = 0;
+  PetscBool used[6] = {PETSC_FALSE};
+
+  for (PetscInt i = 0; i < n; i++) tol = PetscMax(tol, G[i][i]);
+  tol *= 1e-10;
+  for (PetscInt k = 0; k < n; k++) {
+    PetscInt  p = -1;
+    PetscReal best = tol;
+    for (PetscInt i = 0; i < n; i++)
+      if (!used[i] && G[i][i] > best) best = G[i][i], p = i;
+    if (p < 0) break;
+    used[p] = PETSC_TRUE;
+    rank++;
+    for (PetscInt i = 0; i < n; i++)
+      for (PetscInt j = 0; j < n; j++)
+        if (i != p && j != p) G[i][j] -= G[i][p] * G[p][j] / G[p][p];
+    for (PetscInt i = 0; i < n; i++) G[i][p] = G[p][i] = 0;
+  }
+  return rank;
+}
+
+/* Nodes (positions) of a node target. */
+static void MarkTarget(const TslModel *g, const TslTarget *t, PetscInt dof_first, PetscInt dof_last, char *fixed)
+{
+  PetscInt n = 1, k = t->set[0] ? TslModelFindNodeSet(g, t->set) : -1;
+  if (k >= 0) n = g->nsets[k].n;
+  for (PetscInt i = 0; i < n; i++) {
+    PetscInt p = TslModelNodeIndex(g, k >= 0 ? g->nsets[k].ids[i] : t->id);
+    if (p < 0) continue;
+    for (PetscInt d = dof_first; d <= dof_last; d++) {
+      PetscInt c = d == 11 ? 3 : d - 1;
+      if (c >= 0 && c < 4) fixed[4 * p + c] = 1;
+    }
+  }
+}
+
+/* Elements of a face-load target get a film mark. */
+static void MarkFilm(const TslModel *g, const TslLoad *ld, char *film)
+{
+  PetscInt k, n;
+  if (ld->target_is_surface) {
+    k = TslModelFindSurface(g, ld->target.set);
+    for (PetscInt i = 0; k >= 0 && i < g->surfaces[k].n; i++) {
+      PetscInt e = TslModelElementIndex(g, g->surfaces[k].elem[i]);
+      if (e >= 0) film[e] = 1;
+    }
+    return;
+  }
+  k = ld->target.set[0] ? TslModelFindElementSet(g, ld->target.set) : -1;
+  n = k >= 0 ? g->elsets[k].n : 1;
+  for (PetscInt i = 0; i < n; i++) {
+    PetscInt e = TslModelElementIndex(g, k >= 0 ? g->elsets[k].ids[i] : ld->target.id);
+    if (e >= 0) film[e] = 1;
+  }
+}
+
+PetscErrorCode TslModelCheckSupports(TslModel *g)
+{
+  PetscInt  *parent, *first_elem, nn = g->nnode;
+  char      *fixed, *film;
+  PetscReal *centre, *size;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslModelIndex(g));
+  PetscCall(PetscMalloc4(nn, &parent, nn, &first_elem, 4 * nn, &centre, nn, &size));
+  PetscCall(PetscCalloc2(4 * nn, &fixed, g->nelem, &film));
+  for (PetscInt i = 0; i < nn; i++) parent[i] = i, first_elem[i] = -1;
+  for (PetscInt e = 0; e < g->nelem; e++)
+    for (PetscInt k = g->elem_ptr[e] + 1; k < g->elem_ptr[e + 1]; k++) Union(parent, TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]]), TslModelNodeIndex(g, g->elem_conn[k]));
+  for (PetscInt q = 0; q < g->nequation; q++)
+    for (PetscInt t = 1; t < g->equations[q].n; t++) Union(parent, TslModelNodeIndex(g, g->equations[q].node[0]), TslModelNodeIndex(g, g->equations[q].node[t]));
+  /* body centre and size (for well-scaled rotation modes); a body's kinematics from one of its elements */
+  PetscCall(PetscArrayzero(centre, 4 * nn));
+  for (PetscInt e = 0; e < g->nelem; e++) first_elem[Find(parent, TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]]))] = e;
+  for (PetscInt i = 0; i < nn; i++) {
+    PetscInt r = Find(parent, i);
+    for (PetscInt c = 0; c < 3; c++) centre[4 * r + c] += g->node_xyz[3 * i + c];
+    centre[4 * r + 3] += 1;
+  }
+  for (PetscInt i = 0; i < nn; i++) size[i] = 0;
+  for (PetscInt i = 0; i < nn; i++) {
+    PetscInt r = Find(parent, i);
+    for (PetscInt c = 0; c < 3; c++) size[r] = PetscMax(size[r], PetscAbsReal(g->node_xyz[3 * i + c] - centre[4 * r + c] / centre[4 * r + 3]));
+  }
+
+  for (PetscInt s = 0; s < g->nstep; s++) {
+    const TslStep *step = &g->steps[s];
+    PetscBool      clear_bc = PETSC_FALSE, clear_film = PETSC_FALSE;
+    char           loc[PETSC_MAX_PATH_LEN + 32];
+    for (PetscInt i = 0; i < step->nload; i++) {
+      if (step->loads[i].kind == TSL_LOAD_BOUNDARY && step->loads[i].op_new) clear_bc = PETSC_TRUE;
+      if (step->loads[i].kind == TSL_LOAD_FILM && step->loads[i].op_new) clear_film = PETSC_TRUE;
+    }
+    if (clear_bc) PetscCall(PetscArrayzero(fixed, 4 * nn));
+    if (clear_film) PetscCall(PetscArrayzero(film, g->nelem));
+    for (PetscInt i = 0; i < step->nload; i++) {
+      const TslLoad *ld = &step->loads[i];
+      if (ld->kind == TSL_LOAD_BOUNDARY) MarkTarget(g, &ld->target, ld->dof_first, ld->dof_last, fixed);
+      if (ld->kind == TSL_LOAD_FILM) MarkFilm(g, ld, film);
+    }
+    for (PetscInt r = 0; r < nn; r++) {
+      const TslElementType *type;
+      PetscReal             G[6][6], modes[6][3], x[3];
+      PetscInt              nm = 0;
+      PetscBool             thermal = PETSC_FALSE;
+      if (Find(parent, r) != r || first_elem[r] < 0) continue;
+      type = TslElementTypeGet(g->elem_type[first_elem[r]]);
+      PetscCall(PetscArrayzero(&G[0][0], 36));
+      for (PetscInt i = 0; i < nn; i++) {
+        if (Find(parent, i) != r) continue;
+        if (fixed[4 * i + 3]) thermal = PETSC_TRUE;
+        for (PetscInt c = 0; c < 3; c++) x[c] = (g->node_xyz[3 * i + c] - centre[4 * r + c] / centre[4 * r + 3]) / (size[r] > 0 ? size[r] : 1);
+        nm = RigidModes(type->kin, x, modes);
+        for (PetscInt d = 0; d < 3; d++) {
+          if (!fixed[4 * i + d]) continue;
+          for (PetscInt a = 0; a < nm; a++)
+            for (PetscInt b = 0; b < nm; b++) G[a][b] += modes[a][d] * modes[b][d];
+        }
+      }
+      for (PetscInt e = 0; e < g->nelem && !thermal; e++)
+        if (film[e] && Find(parent, TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]])) == r) thermal = PETSC_TRUE;
+      PetscCheck(GramRank(nm, G) == nm, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                 "%s: step %" PetscInt_FMT ": the body containing node %" PetscInt_FMT " is not fully supported (it can move as a rigid body, so the stiffness matrix is singular); add *BOUNDARY conditions",
+                 TslLocString(g, step->loc, loc, sizeof(loc)), s + 1, g->node_id[r]);
+      PetscCheck(thermal || !step->steady, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                 "%s: step %" PetscInt_FMT ": in this steady-state step the temperature of the body containing node %" PetscInt_FMT " is undetermined; prescribe a temperature (*BOUNDARY dof 11) or add a *FILM",
+                 TslLocString(g, step->loc, loc, sizeof(loc)), s + 1, g->node_id[r]);
+    }
+  }
+  PetscCall(PetscFree4(parent, first_elem, centre, size));
+  PetscCall(PetscFree2(fixed, film));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

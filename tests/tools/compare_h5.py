@@ -1,0 +1,38 @@
+#!/usr/bin/python3
+"""Compares every dataset of two thermoslide .h5 files (e.g. a 1-rank and a 2-rank run).
+
+usage: compare_h5.py A.h5 B.h5 [rtol]
+A dataset agrees when max|a - b| <= rtol * max(max|a|, tiny): relative to the field's magnitude, so
+that values that are zero up to round-off do not make the comparison meaningless.
+"""
+import sys
+
+import h5py
+import numpy as np
+
+
+def datasets(f):
+    out = {}
+    f.visititems(lambda name, obj: out.__setitem__(name, obj[...]) if isinstance(obj, h5py.Dataset) else None)
+    return out
+
+
+a, b = datasets(h5py.File(sys.argv[1], "r")), datasets(h5py.File(sys.argv[2], "r"))
+rtol = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-8
+bad = sorted(set(a) ^ set(b))
+if bad:
+    print("datasets present in only one file: %s" % bad)
+    sys.exit(1)
+worst = 0.0
+for name in sorted(a):
+    x, y = np.asarray(a[name], dtype=float), np.asarray(b[name], dtype=float)
+    if x.shape != y.shape:
+        print("%s: shapes differ %s vs %s FAIL" % (name, x.shape, y.shape))
+        sys.exit(1)
+    scale = max(np.abs(x).max() if x.size else 0.0, 1e-300)
+    rel = (np.abs(x - y).max() / scale) if x.size else 0.0
+    worst = max(worst, rel)
+    if rel > rtol:
+        print("%s: relative difference %.3e > %.1e FAIL" % (name, rel, rtol))
+        sys.exit(1)
+print("%d datasets agree; largest relative difference %.3e (tolerance %.1e) PASS" % (len(a), worst, rtol))
