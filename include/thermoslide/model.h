@@ -185,6 +185,12 @@ typedef struct {
   PetscInt *node_gnum; /* [nnode] global PETSc node number (contiguous per rank) */
   PetscInt *node_nat;  /* [nnode] natural index = rank of the id among all node ids (output order) */
   PetscInt *elem_nat;  /* [nelem] natural index of the element (output order) */
+
+  /* Id lookups built by TslModelIndex(): ids sorted ascending and their positions. Derived data, so
+   * not packed (TslModelUnpack and TslModelSubset rebuild them); the lookups fall back to a linear
+   * search when they are missing or stale (built for another nnode/nelem). */
+  PetscInt  index_nnode, index_nelem;
+  PetscInt *index_node_id, *index_node_pos, *index_elem_id, *index_elem_pos;
 } TslModel;
 
 /* Lifetime. TslModelDestroy frees everything and nulls the pointer. */

@@ -1,0 +1,7 @@
+#include <thermoslide/model.h>
+int main(int argc, char **argv)
+{
+  PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  PetscCall(PetscFinalize());
+  return 0;
+}
