@@ -7,7 +7,7 @@
  *   -tsl_growth <1.5>      increment factor after an increment that needed at most -tsl_easy_its Newton iterations
  *   -tsl_easy_its <5>
  * Solver defaults (overridable with the usual PETSc options): -snes_type newtonls -snes_linesearch_type basic
- * -ksp_type fgmres -ksp_rtol 1e-8 -pc_type fieldsplit (splits "T" then "u", multiplicative), each split
+ * -ksp_type fgmres -ksp_rtol 1e-10 -pc_type fieldsplit (splits "T" then "u", multiplicative), each split
  * -fieldsplit_X_ksp_type preonly -fieldsplit_X_pc_type hypre (BoomerAMG).
  */
 #pragma once

@@ -119,10 +119,12 @@ int main(int argc, char **argv)
     PetscBool help;
     PetscCall(PetscOptionsHasHelp(NULL, &help));
     if (!help) PetscCall(PetscFPrintf(PETSC_COMM_WORLD, stderr, "%s", Usage));
+    PetscCall(PetscPopErrorHandler());
     PetscCall(PetscFinalize());
     return help ? 0 : 2;
   }
   ierr = Run(deck);
+  PetscCall(PetscPopErrorHandler());
   if (ierr && ierr != PETSC_ERR_USER_INPUT && ierr != PETSC_ERR_NOT_CONVERGED && ierr != PETSC_ERR_FILE_OPEN) {
     /* an internal error may have hit one rank only: do not wait for the others */
     PetscMPIInt size;

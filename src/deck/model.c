@@ -103,8 +103,11 @@ PetscErrorCode TslDeckGrow(void *ptr, size_t sz, PetscInt n)
   for (cap = 8; cap < n; cap *= 2) {}
   if (n > 0 && n + 1 <= cap && *p) PetscFunctionReturn(PETSC_SUCCESS);
   for (want = 8; want < n + 1; want *= 2) {}
-  PetscCall(PetscRealloc((size_t)want * sz, p));
-  memset((char *)*p + (size_t)n * sz, 0, (size_t)(want - n) * sz);
+  {
+    PetscInt old = *p ? (n > 0 ? cap : 0) : 0;
+    PetscCall(PetscRealloc((size_t)want * sz, p));
+    memset((char *)*p + (size_t)old * sz, 0, (size_t)(want - old) * sz);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -268,7 +271,7 @@ static PetscErrorCode PackArray(Packer *p, void *ptr, PetscInt n, size_t sz)
 
 static PetscErrorCode PackString(Packer *p, char **s)
 {
-  PetscInt n = *s ? (PetscInt)strlen(*s) + 1 : 0;
+  PetscInt n = (!p->unpack && *s) ? (PetscInt)strlen(*s) + 1 : 0; /* on unpack *s holds the sender's pointer */
 
   PetscFunctionBeginUser;
   PetscCall(PackInt(p, &n));

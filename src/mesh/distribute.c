@@ -111,7 +111,9 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
   sub->nnode_global = nnode_used;
   sub->nelem_global = g->nelem;
   sub->nnode_owned  = nown;
-  PetscCall(PetscMalloc3(nn, &sub->node_gnum, nn, &sub->node_nat, ne, &sub->elem_nat));
+  PetscCall(PetscMalloc1(nn, &sub->node_gnum));
+  PetscCall(PetscMalloc1(nn, &sub->node_nat));
+  PetscCall(PetscMalloc1(ne, &sub->elem_nat));
   for (PetscInt i = 0; i < nn; i++) sub->node_gnum[i] = gnum[nodes[i]], sub->node_nat[i] = node_nat[nodes[i]];
   for (PetscInt i = 0; i < ne; i++) sub->elem_nat[i] = elem_nat[elems[i]];
   PetscCall(PetscFree(elems));

@@ -212,9 +212,10 @@ static PetscErrorCode GetStates(TslProblem p, Vec X, Vec *xl, Vec *xol, const Pe
 {
   PetscFunctionBeginUser;
   if (X != p->Xl) PetscCall(VecCopy(X, p->Xl));
+  /* one at a time: duplicated ghosted vectors share their scatter */
   PetscCall(VecGhostUpdateBegin(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateBegin(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostUpdateEnd(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateBegin(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostUpdateEnd(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostGetLocalForm(p->Xl, xl));
   PetscCall(VecGhostGetLocalForm(p->Xold, xol));

@@ -16,6 +16,7 @@ typedef struct {
   TslProblem prob;
   MPI_Comm   comm;
   SNES       snes;
+  Vec        F;
   TslOutput  out;
   TslHistory hist;
   PetscReal  rtol, atol_rel, cutback, growth;
@@ -78,7 +79,7 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscFunctionBeginUser;
   PetscCall(SetDefaultOption("-snes_linesearch_type", "basic"));
   PetscCall(SetDefaultOption("-ksp_type", "fgmres"));
-  PetscCall(SetDefaultOption("-ksp_rtol", "1e-8"));
+  PetscCall(SetDefaultOption("-ksp_rtol", "1e-10"));
   PetscCall(SetDefaultOption("-ksp_max_it", "1000"));
   PetscCall(SetDefaultOption("-ksp_gmres_restart", "100"));
   PetscCall(SetDefaultOption("-pc_fieldsplit_type", "multiplicative"));
@@ -91,6 +92,12 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(SNESCreate(d->comm, &d->snes));
   PetscCall(SNESSetType(d->snes, SNESNEWTONLS));
   PetscCall(SNESSetConvergenceTest(d->snes, ConvergenceTest, d, NULL));
+  {
+    Vec X;
+    PetscCall(TslProblemGetSolution(d->prob, &X));
+    PetscCall(VecDuplicate(X, &d->F));
+    PetscCall(SNESSetFunction(d->snes, d->F, TslProblemFormFunction, d->prob));
+  }
   PetscCall(SNESGetKSP(d->snes, &ksp));
   PetscCall(KSPGetPC(ksp, &pc));
   PetscCall(PCSetType(pc, PCFIELDSPLIT));
@@ -347,5 +354,6 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
   PetscCall(TslOutputDestroy(&d.out));
   PetscCall(TslHistoryDestroy(&d.hist));
   PetscCall(SNESDestroy(&d.snes));
+  PetscCall(VecDestroy(&d.F));
   PetscFunctionReturn(ierr);
 }

@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """Compares every dataset of two thermoslide .h5 files (e.g. a 1-rank and a 2-rank run).
 
-usage: compare_h5.py A.h5 B.h5 [rtol]
-A dataset agrees when max|a - b| <= rtol * max(max|a|, tiny): relative to the field's magnitude, so
-that values that are zero up to round-off do not make the comparison meaningless.
+usage: compare_h5.py A.h5 B.h5 [rtol] [FIELD=floor ...]
+A dataset agrees when max|a - b| <= rtol * max(max|a|, floor): relative to the field's magnitude.
+A field that is physically zero (reactions of a free body) is only round-off; FIELD=floor gives the
+magnitude it is compared against (e.g. RF=1e4 for forces of order 1e4 elsewhere in the model).
 """
 import sys
 
@@ -19,6 +20,7 @@ def datasets(f):
 
 a, b = datasets(h5py.File(sys.argv[1], "r")), datasets(h5py.File(sys.argv[2], "r"))
 rtol = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-8
+floors = dict((kv.split("=")[0], float(kv.split("=")[1])) for kv in sys.argv[4:])
 bad = sorted(set(a) ^ set(b))
 if bad:
     print("datasets present in only one file: %s" % bad)
@@ -29,7 +31,7 @@ for name in sorted(a):
     if x.shape != y.shape:
         print("%s: shapes differ %s vs %s FAIL" % (name, x.shape, y.shape))
         sys.exit(1)
-    scale = max(np.abs(x).max() if x.size else 0.0, 1e-300)
+    scale = max(np.abs(x).max() if x.size else 0.0, floors.get(name.split("/")[-1], 1e-300))
     rel = (np.abs(x - y).max() / scale) if x.size else 0.0
     worst = max(worst, rel)
     if rel > rtol:

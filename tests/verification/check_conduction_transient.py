@@ -4,7 +4,8 @@ x = L insulated; diffusivity kappa = k / (rho c) = 10 / (1000 * 0.001) = 10.
 
 theta(x, t) = 100 [1 - sum_n 4/((2n+1) pi) sin((2n+1) pi x / 2L) exp(-(2n+1)^2 pi^2 kappa t / 4L^2)]
 Backward Euler (dt = 5e-4, Fourier step 0.005) on 40 elements: the nodal error is checked at Fourier
-numbers ~0.1 and 0.3 with tolerance 0.6 (of 100); the energy balance residual of every increment is
+numbers ~0.1 and 0.3 with tolerances 1.0 and 0.5 (of 100): backward Euler's O(dt) error is largest
+early, when the profile is steep (halving dt halves it); the energy balance residual of every increment is
 checked against 1e-6 of the heat stored.
 usage: check_conduction_transient.py OUTDIR JOB
 """
@@ -28,11 +29,11 @@ def exact(x, t):
 
 
 times = [float(r.frame(i).attrs["time"]) for i in range(len(r.frames))]
-for target in (0.01, 0.03):
+for target, tol in ((0.01, 1.0), (0.03, 0.5)):
     i = min(range(len(times)), key=lambda j: abs(times[j] - target))
     nt = r.field("NT", i)[:, 0]
     err = max(abs(nt[j] - exact(r.xyz[j, 0], times[i])) for j in range(len(nt)))
-    check("max nodal error at t = %.4g (Fourier %.2g)" % (times[i], kappa * times[i]), err, 0.0, 0.6)
+    check("max nodal error at t = %.4g (Fourier %.2g)" % (times[i], kappa * times[i]), err, 0.0, tol)
 stored = abs(r.history["stored_heat_rate"]).max()
 check("worst energy balance residual over increments", abs(r.history["balance_residual"]).max(), 0.0, 1e-6 * stored)
 finish()
