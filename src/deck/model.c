@@ -102,9 +102,10 @@ PetscErrorCode TslDeckGrow(void *ptr, size_t sz, PetscInt n)
   PetscFunctionBeginUser;
   for (cap = 8; cap < n; cap *= 2) {}
   if (n > 0 && n + 1 <= cap && *p) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscInt keep = *p ? n : 0; /* a first allocation is zeroed whole (elem_ptr[0] must read 0) */
   for (want = 8; want < n + 1; want *= 2) {}
   PetscCall(PetscRealloc((size_t)want * sz, p));
-  memset((char *)*p + (size_t)n * sz, 0, (size_t)(want - n) * sz);
+  memset((char *)*p + (size_t)keep * sz, 0, (size_t)(want - keep) * sz);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
