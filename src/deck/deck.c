@@ -23,55 +23,54 @@
 #define DECK_MAX_PARAM 32
 
 typedef struct {
-  char    *text;
-  size_t   pos, len;
+  char *text;
+  size_t pos, len;
   PetscInt file, line;
 } DeckFrame;
 
 typedef struct {
   TslModel *m;
   DeckFrame frame[DECK_MAX_DEPTH];
-  PetscInt  depth;
-  char    **texts; /* every file's text, freed at the end */
-  PetscInt  ntext;
+  PetscInt depth;
+  char **texts; /* every file's text, freed at the end */
+  PetscInt ntext;
 
   /* raw line pushback */
-  PetscBool   back;
+  PetscBool back;
   const char *raw;
-  TslLoc      rawloc;
+  TslLoc rawloc;
 
   /* current data line */
-  char    *buf;
-  size_t   bufcap;
-  char   **field;
+  char *buf;
+  size_t bufcap;
+  char **field;
   PetscInt nfield;
-  TslLoc   loc;
+  TslLoc loc;
 
   /* current keyword line */
-  char    *kwbuf;
-  size_t   kwcap;
-  char    *kw;
+  char *kwbuf;
+  size_t kwcap;
+  char *kw;
   PetscInt nparam;
-  char    *pkey[DECK_MAX_PARAM], *pval[DECK_MAX_PARAM];
-  TslLoc   kwloc;
+  char *pkey[DECK_MAX_PARAM], *pval[DECK_MAX_PARAM];
+  TslLoc kwloc;
 
   /* state */
-  PetscInt  step;     /* index of the open step or -1 */
-  PetscInt  material; /* material the property keywords apply to, or -1 */
-  PetscInt  out_frequency;
+  PetscInt step;     /* index of the open step or -1 */
+  PetscInt material; /* material the property keywords apply to, or -1 */
+  PetscInt out_frequency;
   PetscInt *node_line; /* [2*nnode] (file, line) of each node, for duplicate messages */
 } Deck;
 
-#define LOC_FMT         TSL_LOC_FMT
-#define DLOC(d)         TSL_LOC_ARGS((d)->m, (d)->loc)
-#define KLOC(d)         TSL_LOC_ARGS((d)->m, (d)->kwloc)
-#define USER_ERR(...)   SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
+#define LOC_FMT            TSL_LOC_FMT
+#define DLOC(d)            TSL_LOC_ARGS((d)->m, (d)->loc)
+#define KLOC(d)            TSL_LOC_ARGS((d)->m, (d)->kwloc)
+#define USER_ERR(...)      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
 #define USER_CHECK(c, ...) PetscCheck(c, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
 
 /* ---- small string helpers -------------------------------------------------------------------- */
 
-static char *Trim(char *s)
-{
+static char *Trim(char *s) {
   char *e;
   while (*s && isspace((unsigned char)*s)) s++;
   e = s + strlen(s);
@@ -80,20 +79,19 @@ static char *Trim(char *s)
 }
 
 /* Upper case, runs of blanks collapsed to one space, trimmed; in place. */
-static char *Normalize(char *s)
-{
+static char *Normalize(char *s) {
   char *r = Trim(s), *w = r;
   for (char *p = r; *p; p++) {
     if (isspace((unsigned char)*p)) {
       if (w > r && w[-1] != ' ') *w++ = ' ';
-    } else *w++ = (char)toupper((unsigned char)*p);
+    } else
+      *w++ = (char)toupper((unsigned char)*p);
   }
   *w = 0;
   return r;
 }
 
-static PetscBool IsInteger(const char *s)
-{
+static PetscBool IsInteger(const char *s) {
   if (*s == '+' || *s == '-') s++;
   if (!*s) return PETSC_FALSE;
   for (; *s; s++)
@@ -101,8 +99,7 @@ static PetscBool IsInteger(const char *s)
   return PETSC_TRUE;
 }
 
-static PetscErrorCode BufReserve(char **buf, size_t *cap, size_t need)
-{
+static PetscErrorCode BufReserve(char **buf, size_t *cap, size_t need) {
   PetscFunctionBeginUser;
   if (need <= *cap) PetscFunctionReturn(PETSC_SUCCESS);
   *cap = need < 256 ? 256 : 2 * need;
@@ -113,9 +110,8 @@ static PetscErrorCode BufReserve(char **buf, size_t *cap, size_t need)
 /* ---- numbers --------------------------------------------------------------------------------- */
 
 /* A real in C or Fortran form (1.e6, 1.0D3, 30.0E+06). */
-static PetscErrorCode DeckReal(Deck *d, const char *s, const char *what, PetscReal *x)
-{
-  char  tmp[64], *end;
+static PetscErrorCode DeckReal(Deck *d, const char *s, const char *what, PetscReal *x) {
+  char tmp[64], *end;
   size_t n = strlen(s);
 
   PetscFunctionBeginUser;
@@ -123,53 +119,51 @@ static PetscErrorCode DeckReal(Deck *d, const char *s, const char *what, PetscRe
   USER_CHECK(n < sizeof(tmp), LOC_FMT "expected a number for %s, got '%s'", DLOC(d), what, s);
   for (size_t i = 0; i <= n; i++) tmp[i] = (s[i] == 'd' || s[i] == 'D') ? 'e' : s[i];
   errno = 0;
-  *x    = (PetscReal)strtod(tmp, &end);
-  USER_CHECK(end != tmp && *end == 0 && errno != ERANGE, LOC_FMT "expected a number for %s, got '%s'", DLOC(d), what, s);
+  *x = (PetscReal)strtod(tmp, &end);
+  USER_CHECK(end != tmp && *end == 0 && errno != ERANGE && !PetscIsInfOrNanReal(*x),
+             LOC_FMT "expected a number for %s, got '%s'", DLOC(d), what, s);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode DeckInt(Deck *d, const char *s, const char *what, PetscInt *x)
-{
-  long  v;
+static PetscErrorCode DeckInt(Deck *d, const char *s, const char *what, PetscInt *x) {
+  long v;
   char *end;
 
   PetscFunctionBeginUser;
   USER_CHECK(*s, LOC_FMT "missing value for %s", DLOC(d), what);
   errno = 0;
-  v     = strtol(s, &end, 10);
-  USER_CHECK(end != s && *end == 0 && errno != ERANGE && v == (PetscInt)v, LOC_FMT "expected an integer for %s, got '%s'",
-             DLOC(d), what, s);
+  v = strtol(s, &end, 10);
+  USER_CHECK(end != s && *end == 0 && errno != ERANGE && v == (PetscInt)v,
+             LOC_FMT "expected an integer for %s, got '%s'", DLOC(d), what, s);
   *x = (PetscInt)v;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Field i as a real, or def when absent or blank. */
-static PetscErrorCode FieldRealDefault(Deck *d, PetscInt i, const char *what, PetscReal def, PetscReal *x)
-{
+static PetscErrorCode FieldRealDefault(Deck *d, PetscInt i, const char *what, PetscReal def, PetscReal *x) {
   PetscFunctionBeginUser;
-  if (i >= d->nfield || !d->field[i][0]) *x = def;
-  else PetscCall(DeckReal(d, d->field[i], what, x));
+  if (i >= d->nfield || !d->field[i][0])
+    *x = def;
+  else
+    PetscCall(DeckReal(d, d->field[i], what, x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode FieldReal(Deck *d, PetscInt i, const char *what, PetscReal *x)
-{
+static PetscErrorCode FieldReal(Deck *d, PetscInt i, const char *what, PetscReal *x) {
   PetscFunctionBeginUser;
   USER_CHECK(i < d->nfield, LOC_FMT "missing value for %s", DLOC(d), what);
   PetscCall(DeckReal(d, d->field[i], what, x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode FieldInt(Deck *d, PetscInt i, const char *what, PetscInt *x)
-{
+static PetscErrorCode FieldInt(Deck *d, PetscInt i, const char *what, PetscInt *x) {
   PetscFunctionBeginUser;
   USER_CHECK(i < d->nfield, LOC_FMT "missing value for %s", DLOC(d), what);
   PetscCall(DeckInt(d, d->field[i], what, x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CopyName(Deck *d, TslLoc loc, char dst[TSL_NAME_LEN], const char *src)
-{
+static PetscErrorCode CopyName(Deck *d, TslLoc loc, char dst[TSL_NAME_LEN], const char *src) {
   PetscFunctionBeginUser;
   USER_CHECK(strlen(src) < TSL_NAME_LEN, LOC_FMT "name '%s' is longer than %d characters", TSL_LOC_ARGS(d->m, loc), src,
              TSL_NAME_LEN - 1);
@@ -179,11 +173,10 @@ static PetscErrorCode CopyName(Deck *d, TslLoc loc, char dst[TSL_NAME_LEN], cons
 
 /* ---- files and raw lines --------------------------------------------------------------------- */
 
-static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include)
-{
-  FILE     *fp;
-  long      len;
-  char     *text;
+static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include) {
+  FILE *fp;
+  long len;
+  char *text;
   DeckFrame *f;
 
   PetscFunctionBeginUser;
@@ -209,10 +202,10 @@ static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include)
 
   PetscCall(TslDeckGrow(&d->m->files, sizeof(char *), d->m->nfile));
   PetscCall(PetscStrallocpy(path, &d->m->files[d->m->nfile]));
-  f       = &d->frame[d->depth++];
+  f = &d->frame[d->depth++];
   f->text = text;
-  f->pos  = 0;
-  f->len  = (size_t)len;
+  f->pos = 0;
+  f->len = (size_t)len;
   f->file = d->m->nfile++;
   f->line = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -221,19 +214,18 @@ static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include)
 static PetscErrorCode ParseKeyword(Deck *d, char *line);
 
 /* *INCLUDE, INPUT=path: the path is relative to the including file's directory. */
-static PetscErrorCode DeckInclude(Deck *d)
-{
+static PetscErrorCode DeckInclude(Deck *d) {
   const char *input = NULL, *from = d->m->files[d->kwloc.file], *slash;
-  char       *path;
-  size_t      dirlen, n;
+  char *path;
+  size_t dirlen, n;
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < d->nparam; i++)
     if (!strcmp(d->pkey[i], "INPUT")) input = d->pval[i];
   USER_CHECK(input && input[0], LOC_FMT "*INCLUDE needs INPUT=file", KLOC(d));
-  slash  = strrchr(from, '/');
+  slash = strrchr(from, '/');
   dirlen = (input[0] == '/' || !slash) ? 0 : (size_t)(slash - from) + 1;
-  n      = dirlen + strlen(input) + 1;
+  n = dirlen + strlen(input) + 1;
   PetscCall(PetscMalloc1(n, &path));
   memcpy(path, from, dirlen);
   memcpy(path + dirlen, input, strlen(input) + 1);
@@ -243,37 +235,36 @@ static PetscErrorCode DeckInclude(Deck *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscBool IsKeywordLine(const char *s)
-{
+static PetscBool IsKeywordLine(const char *s) {
   return (s[0] == '*' && s[1] != '*') ? PETSC_TRUE : PETSC_FALSE;
 }
 
 /* The next non-blank, non-comment physical line (trimmed), or got = FALSE at the end of the deck.
  * *INCLUDE lines are followed here. */
-static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
-{
+static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got) {
   PetscFunctionBeginUser;
   if (d->back) {
     d->back = PETSC_FALSE;
-    *s      = d->raw;
-    d->loc  = d->rawloc;
-    *got    = PETSC_TRUE;
+    *s = d->raw;
+    d->loc = d->rawloc;
+    *got = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   *got = PETSC_FALSE;
   while (d->depth > 0) {
     DeckFrame *f = &d->frame[d->depth - 1];
-    char      *line, *nl;
+    char *line, *nl;
     if (f->pos >= f->len) {
       d->depth--;
       continue;
     }
     line = f->text + f->pos;
-    nl   = strchr(line, '\n');
+    nl = strchr(line, '\n');
     if (nl) {
-      *nl    = 0;
+      *nl = 0;
       f->pos = (size_t)(nl - f->text) + 1;
-    } else f->pos = f->len;
+    } else
+      f->pos = f->len;
     f->line++;
     line = Trim(line);
     if (!line[0] || (line[0] == '*' && line[1] == '*')) continue;
@@ -288,9 +279,9 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
       head[k] = 0;
       if (!strcmp(head, "INCLUDE")) {
         /* an include may come between the data lines of another keyword: keep that keyword's state */
-        char    *kw = d->kw, *pkey[DECK_MAX_PARAM], *pval[DECK_MAX_PARAM];
+        char *kw = d->kw, *pkey[DECK_MAX_PARAM], *pval[DECK_MAX_PARAM];
         PetscInt np = d->nparam;
-        TslLoc   kl = d->kwloc;
+        TslLoc kl = d->kwloc;
         memcpy(pkey, d->pkey, sizeof(pkey));
         memcpy(pval, d->pval, sizeof(pval));
         d->kwloc = d->rawloc;
@@ -304,42 +295,39 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
     }
     d->raw = line;
     d->loc = d->rawloc;
-    *s     = line;
-    *got   = PETSC_TRUE;
+    *s = line;
+    *got = PETSC_TRUE;
     break;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static void RawUnget(Deck *d)
-{
+static void RawUnget(Deck *d) {
   d->back = PETSC_TRUE;
 }
 
 /* ---- logical lines --------------------------------------------------------------------------- */
 
-static PetscInt CountFields(const char *s)
-{
+static PetscInt CountFields(const char *s) {
   PetscInt n = 0, nonempty = 0;
   for (const char *p = s;; p++) {
     if (*p == ',' || !*p) {
       if (nonempty) n++;
       nonempty = 0;
       if (!*p) break;
-    } else if (!isspace((unsigned char)*p)) nonempty = 1;
+    } else if (!isspace((unsigned char)*p))
+      nonempty = 1;
   }
   return n;
 }
 
-static PetscBool EndsWithComma(const char *s)
-{
+static PetscBool EndsWithComma(const char *s) {
   size_t n = strlen(s);
   return (n && s[n - 1] == ',') ? PETSC_TRUE : PETSC_FALSE;
 }
 
 /* Splits buf at commas into trimmed fields; trailing empty fields (a trailing comma) are dropped. */
-static PetscErrorCode SplitFields(Deck *d, char *s)
-{
+static PetscErrorCode SplitFields(Deck *d, char *s) {
   PetscFunctionBeginUser;
   d->nfield = 0;
   for (;;) {
@@ -357,11 +345,10 @@ static PetscErrorCode SplitFields(Deck *d, char *s)
 /* The next data line of the current keyword, split into fields; got = FALSE (and nothing consumed)
  * when the next line is a keyword or the deck ends. With want > 0, a line ending in a comma is joined
  * with the following data lines until it has want fields (long *ELEMENT lines). */
-static PetscErrorCode DataLine(Deck *d, PetscInt want, PetscBool *got)
-{
+static PetscErrorCode DataLine(Deck *d, PetscInt want, PetscBool *got) {
   const char *s;
-  size_t      n;
-  TslLoc      first;
+  size_t n;
+  TslLoc first;
 
   PetscFunctionBeginUser;
   PetscCall(RawNext(d, &s, got));
@@ -372,7 +359,7 @@ static PetscErrorCode DataLine(Deck *d, PetscInt want, PetscBool *got)
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   first = d->loc;
-  n     = strlen(s);
+  n = strlen(s);
   PetscCall(BufReserve(&d->buf, &d->bufcap, n + 1));
   memcpy(d->buf, s, n + 1);
   while (want > 0 && EndsWithComma(d->buf) && CountFields(d->buf) < want) {
@@ -393,18 +380,17 @@ static PetscErrorCode DataLine(Deck *d, PetscInt want, PetscBool *got)
 }
 
 /* Parses a keyword line (in place) into kw and parameters. */
-static PetscErrorCode ParseKeyword(Deck *d, char *line)
-{
+static PetscErrorCode ParseKeyword(Deck *d, char *line) {
   char *p = line + 1, *c;
 
   PetscFunctionBeginUser;
   d->nparam = 0;
-  c         = strchr(p, ',');
+  c = strchr(p, ',');
   if (c) *c = 0;
   d->kw = Normalize(p);
   while (c) {
     char *item = c + 1, *eq;
-    c          = strchr(item, ',');
+    c = strchr(item, ',');
     if (c) *c = 0;
     item = Trim(item);
     if (!item[0]) continue;
@@ -412,22 +398,22 @@ static PetscErrorCode ParseKeyword(Deck *d, char *line)
     eq = strchr(item, '=');
     if (eq) {
       char *v = Trim(eq + 1);
-      *eq     = 0;
+      *eq = 0;
       if (v[0] == '"') {
         size_t n = strlen(v);
         v++;
         if (n >= 2 && v[n - 2] == '"') v[n - 2] = 0;
       }
       d->pval[d->nparam] = v;
-    } else d->pval[d->nparam] = NULL;
+    } else
+      d->pval[d->nparam] = NULL;
     d->pkey[d->nparam++] = Normalize(item);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Reads the keyword line starting at s (joining continuation lines that follow a trailing comma) into kwbuf. */
-static PetscErrorCode KeywordLine(Deck *d, const char *s)
-{
+static PetscErrorCode KeywordLine(Deck *d, const char *s) {
   size_t n = strlen(s);
 
   PetscFunctionBeginUser;
@@ -452,15 +438,13 @@ static PetscErrorCode KeywordLine(Deck *d, const char *s)
 
 /* ---- parameters ------------------------------------------------------------------------------ */
 
-static const char *Param(Deck *d, const char *key)
-{
+static const char *Param(Deck *d, const char *key) {
   for (PetscInt i = 0; i < d->nparam; i++)
     if (!strcmp(d->pkey[i], key)) return d->pval[i] ? d->pval[i] : "";
   return NULL;
 }
 
-static PetscErrorCode ParamRequired(Deck *d, const char *key, const char **val)
-{
+static PetscErrorCode ParamRequired(Deck *d, const char *key, const char **val) {
   PetscFunctionBeginUser;
   *val = Param(d, key);
   USER_CHECK(*val && (*val)[0], LOC_FMT "*%s needs the parameter %s=", KLOC(d), d->kw, key);
@@ -468,18 +452,16 @@ static PetscErrorCode ParamRequired(Deck *d, const char *key, const char **val)
 }
 
 /* Parameter value upper-cased with blanks normalised into buf (for enumerated values). */
-static const char *ParamUpper(Deck *d, const char *key, char *buf, size_t len)
-{
+static const char *ParamUpper(Deck *d, const char *key, char *buf, size_t len) {
   const char *v = Param(d, key);
   if (!v) return NULL;
   (void)PetscStrncpy(buf, v, len);
   return Normalize(buf);
 }
 
-static PetscErrorCode ParamReal(Deck *d, const char *key, PetscReal *x, PetscBool *set)
-{
+static PetscErrorCode ParamReal(Deck *d, const char *key, PetscReal *x, PetscBool *set) {
   const char *v = Param(d, key);
-  TslLoc      save = d->loc;
+  TslLoc save = d->loc;
 
   PetscFunctionBeginUser;
   if (set) *set = v ? PETSC_TRUE : PETSC_FALSE;
@@ -490,10 +472,9 @@ static PetscErrorCode ParamReal(Deck *d, const char *key, PetscReal *x, PetscBoo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ParamInt(Deck *d, const char *key, PetscInt *x)
-{
+static PetscErrorCode ParamInt(Deck *d, const char *key, PetscInt *x) {
   const char *v = Param(d, key);
-  TslLoc      save = d->loc;
+  TslLoc save = d->loc;
 
   PetscFunctionBeginUser;
   if (!v) PetscFunctionReturn(PETSC_SUCCESS);
@@ -510,34 +491,31 @@ typedef enum { CTX_MODEL, CTX_STEP, CTX_ANY, CTX_MATERIAL } DeckContext;
 typedef struct DeckKeyword DeckKeyword;
 typedef PetscErrorCode (*DeckLoadLine)(Deck *, TslLoad *);
 struct DeckKeyword {
-  const char  *name;
-  DeckContext  where;
-  const char  *params; /* '|'-separated known parameters; NULL: ignored keyword */
+  const char *name;
+  DeckContext where;
+  const char *params; /* '|'-separated known parameters; NULL: ignored keyword */
   PetscErrorCode (*handler)(Deck *, const DeckKeyword *);
-  PetscInt     kind;   /* load kind, or output request flags */
-  DeckLoadLine line;   /* load data-line parser */
+  PetscInt kind;     /* load kind, or output request flags */
+  DeckLoadLine line; /* load data-line parser */
 };
 
 /* ---- mesh ------------------------------------------------------------------------------------ */
 
-static PetscErrorCode SetAppend(TslSet *s, PetscInt id)
-{
+static PetscErrorCode SetAppend(TslSet *s, PetscInt id) {
   PetscFunctionBeginUser;
   PetscCall(TslDeckGrow(&s->ids, sizeof(PetscInt), s->n));
   s->ids[s->n++] = id;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SetFinish(TslSet *s)
-{
+static PetscErrorCode SetFinish(TslSet *s) {
   PetscFunctionBeginUser;
   PetscCall(PetscSortRemoveDupsInt(&s->n, s->ids));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The set called name in (*sets, *n), created at loc when new. */
-static PetscErrorCode SetGet(Deck *d, TslSet **sets, PetscInt *n, const char *name, PetscInt *index)
-{
+static PetscErrorCode SetGet(Deck *d, TslSet **sets, PetscInt *n, const char *name, PetscInt *index) {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < *n; i++)
     if (TslDeckNameEqual((*sets)[i].name, name)) {
@@ -547,14 +525,13 @@ static PetscErrorCode SetGet(Deck *d, TslSet **sets, PetscInt *n, const char *na
   PetscCall(TslDeckGrow(sets, sizeof(TslSet), *n));
   PetscCall(CopyName(d, d->kwloc, (*sets)[*n].name, name));
   (*sets)[*n].loc = d->kwloc;
-  *index          = (*n)++;
+  *index = (*n)++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwHeading(Deck *d, const DeckKeyword *kw)
-{
+static PetscErrorCode KwHeading(Deck *d, const DeckKeyword *kw) {
   const char *s;
-  PetscBool   got, first = PETSC_TRUE;
+  PetscBool got, first = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -571,12 +548,11 @@ static PetscErrorCode KwHeading(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
-{
-  TslModel   *m = d->m;
+static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
   const char *nset = Param(d, "NSET");
-  PetscInt    iset = -1;
-  PetscBool   got;
+  PetscInt iset = -1;
+  PetscBool got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -598,7 +574,7 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
       static const char *what[3] = {"the x coordinate", "the y coordinate", "the z coordinate"};
       PetscCall(FieldRealDefault(d, 1 + c, what[c], 0.0, &m->node_xyz[3 * m->nnode + c]));
     }
-    d->node_line[2 * m->nnode]     = d->loc.file;
+    d->node_line[2 * m->nnode] = d->loc.file;
     d->node_line[2 * m->nnode + 1] = d->loc.line;
     m->nnode++;
     if (iset >= 0) PetscCall(SetAppend(&m->nsets[iset], id));
@@ -607,13 +583,12 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
-{
-  TslModel             *m = d->m;
-  const char           *tname, *elset = Param(d, "ELSET");
-  PetscInt              type, nn, iset = -1;
+static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
+  const char *tname, *elset = Param(d, "ELSET");
+  PetscInt type, nn, iset = -1;
   const TslElementType *et;
-  PetscBool             got;
+  PetscBool got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -623,7 +598,9 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
   et = TslElementTypeGet(type);
   nn = et->geom->nnode;
   if (!m->dim) m->dim = et->dim;
-  USER_CHECK(m->dim == et->dim, LOC_FMT "element type %s is %" PetscInt_FMT "D but the model already has %" PetscInt_FMT "D elements (mixing is not supported)",
+  USER_CHECK(m->dim == et->dim,
+             LOC_FMT "element type %s is %" PetscInt_FMT "D but the model already has %" PetscInt_FMT
+                     "D elements (mixing is not supported)",
              KLOC(d), et->name, et->dim, m->dim);
   if (elset) {
     USER_CHECK(elset[0], LOC_FMT "ELSET= needs a name", KLOC(d));
@@ -633,8 +610,8 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     PetscInt id, k;
     PetscCall(DataLine(d, 1 + nn, &got));
     if (!got) break;
-    USER_CHECK(d->nfield == 1 + nn, LOC_FMT "element has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT, DLOC(d),
-               d->nfield - 1, et->name, nn);
+    USER_CHECK(d->nfield == 1 + nn, LOC_FMT "element has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT,
+               DLOC(d), d->nfield - 1, et->name, nn);
     PetscCall(FieldInt(d, 0, "the element id", &id));
     PetscCall(TslDeckGrow(&m->elem_id, sizeof(PetscInt), m->nelem));
     PetscCall(TslDeckGrow(&m->elem_type, sizeof(PetscInt), m->nelem));
@@ -645,11 +622,11 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
       PetscCall(TslDeckGrow(&m->elem_conn, sizeof(PetscInt), k));
       PetscCall(FieldInt(d, 1 + j, "a node id", &m->elem_conn[k++]));
     }
-    m->elem_id[m->nelem]           = id;
-    m->elem_type[m->nelem]         = type;
-    m->elem_line[2 * m->nelem]     = d->loc.file;
+    m->elem_id[m->nelem] = id;
+    m->elem_type[m->nelem] = type;
+    m->elem_line[2 * m->nelem] = d->loc.file;
     m->elem_line[2 * m->nelem + 1] = d->loc.line;
-    m->elem_ptr[++m->nelem]        = k;
+    m->elem_ptr[++m->nelem] = k;
     if (iset >= 0) PetscCall(SetAppend(&m->elsets[iset], id));
   }
   if (iset >= 0) PetscCall(SetFinish(&m->elsets[iset]));
@@ -657,13 +634,12 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
 }
 
 /* *NSET / *ELSET (kind = 0 / 1). */
-static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
-{
-  TslModel   *m     = d->m;
-  PetscBool   node  = kw->kind == 0 ? PETSC_TRUE : PETSC_FALSE, got;
-  TslSet    **sets  = node ? &m->nsets : &m->elsets;
-  PetscInt   *nset  = node ? &m->nnset : &m->nelset, iset;
-  PetscBool   gen   = Param(d, "GENERATE") ? PETSC_TRUE : PETSC_FALSE;
+static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
+  PetscBool node = kw->kind == 0 ? PETSC_TRUE : PETSC_FALSE, got;
+  TslSet **sets = node ? &m->nsets : &m->elsets;
+  PetscInt *nset = node ? &m->nnset : &m->nelset, iset;
+  PetscBool gen = Param(d, "GENERATE") ? PETSC_TRUE : PETSC_FALSE;
   const char *name, *kind = node ? "node" : "element";
 
   PetscFunctionBeginUser;
@@ -674,7 +650,8 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
     if (!got) break;
     if (gen) {
       PetscInt first, last, inc = 1;
-      USER_CHECK(d->nfield >= 2 && d->nfield <= 3, LOC_FMT "GENERATE data line needs: first, last[, increment]", DLOC(d));
+      USER_CHECK(d->nfield >= 2 && d->nfield <= 3, LOC_FMT "GENERATE data line needs: first, last[, increment]",
+                 DLOC(d));
       PetscCall(FieldInt(d, 0, "the first id", &first));
       PetscCall(FieldInt(d, 1, "the last id", &last));
       if (d->nfield > 2) PetscCall(FieldInt(d, 2, "the increment", &inc));
@@ -684,7 +661,7 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
     }
     for (PetscInt i = 0; i < d->nfield; i++) {
       const char *f = d->field[i];
-      PetscInt    id, src = -1;
+      PetscInt id, src = -1;
       if (!f[0]) continue;
       if (IsInteger(f)) {
         PetscCall(DeckInt(d, f, "an id", &id));
@@ -701,16 +678,14 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
 }
 
 /* Face label "<prefix>1".."<prefix>6" -> 1..6; the bare prefix -> 0 (surface form); anything else -> -1. */
-static PetscInt FaceLabel(const char *s, char prefix)
-{
+static PetscInt FaceLabel(const char *s, char prefix) {
   if (toupper((unsigned char)s[0]) != prefix) return -1;
   if (!s[1]) return 0;
   if (s[1] >= '1' && s[1] <= '6' && !s[2]) return s[1] - '0';
   return -1;
 }
 
-static PetscErrorCode SurfaceAppend(TslSurface *s, PetscInt id, PetscInt face)
-{
+static PetscErrorCode SurfaceAppend(TslSurface *s, PetscInt id, PetscInt face) {
   PetscFunctionBeginUser;
   PetscCall(TslDeckGrow(&s->elem, sizeof(PetscInt), s->n));
   if (s->kind == TSL_SURFACE_ELEMENT) {
@@ -721,38 +696,40 @@ static PetscErrorCode SurfaceAppend(TslSurface *s, PetscInt id, PetscInt face)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw)
-{
-  TslModel   *m = d->m;
+static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
   const char *name, *type;
-  char        tbuf[32];
+  char tbuf[32];
   TslSurface *s;
-  PetscBool   got;
+  PetscBool got;
 
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(ParamRequired(d, "NAME", &name));
   USER_CHECK(TslModelFindSurface(m, name) < 0, LOC_FMT "surface %s is defined twice", KLOC(d), name);
   type = ParamUpper(d, "TYPE", tbuf, sizeof(tbuf));
-  USER_CHECK(!type || !strcmp(type, "ELEMENT") || !strcmp(type, "NODE"), LOC_FMT "*SURFACE, TYPE=%s is not supported (ELEMENT or NODE)", KLOC(d), type);
+  USER_CHECK(!type || !strcmp(type, "ELEMENT") || !strcmp(type, "NODE"),
+             LOC_FMT "*SURFACE, TYPE=%s is not supported (ELEMENT or NODE)", KLOC(d), type);
   PetscCall(TslDeckGrow(&m->surfaces, sizeof(TslSurface), m->nsurface));
   s = &m->surfaces[m->nsurface++];
   PetscCall(CopyName(d, d->kwloc, s->name, name));
   s->kind = (type && !strcmp(type, "NODE")) ? TSL_SURFACE_NODE : TSL_SURFACE_ELEMENT;
-  s->loc  = d->kwloc;
+  s->loc = d->kwloc;
   for (;;) {
     const char *t;
-    PetscInt    face = 0, id;
+    PetscInt face = 0, id;
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
     t = d->field[0];
     if (s->kind == TSL_SURFACE_ELEMENT) {
-      USER_CHECK(d->nfield == 2, LOC_FMT "element surface data line needs: element or element set, face label (S1..S6)", DLOC(d));
+      USER_CHECK(d->nfield == 2, LOC_FMT "element surface data line needs: element or element set, face label (S1..S6)",
+                 DLOC(d));
       face = FaceLabel(d->field[1], 'S');
       USER_CHECK(face > 0, LOC_FMT "bad face label '%s' (expected S1..S6)", DLOC(d), d->field[1]);
     } else {
       PetscReal w;
-      USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "node surface data line needs: node or node set[, weight]", DLOC(d));
+      USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "node surface data line needs: node or node set[, weight]",
+                 DLOC(d));
       if (d->nfield == 2) PetscCall(FieldReal(d, 1, "the weight", &w));
     }
     if (IsInteger(t)) {
@@ -760,7 +737,8 @@ static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw)
       PetscCall(SurfaceAppend(s, id, face));
     } else {
       PetscInt src = s->kind == TSL_SURFACE_ELEMENT ? TslModelFindElementSet(m, t) : TslModelFindNodeSet(m, t);
-      USER_CHECK(src >= 0, LOC_FMT "undefined %s set %s", DLOC(d), s->kind == TSL_SURFACE_ELEMENT ? "element" : "node", t);
+      USER_CHECK(src >= 0, LOC_FMT "undefined %s set %s", DLOC(d), s->kind == TSL_SURFACE_ELEMENT ? "element" : "node",
+                 t);
       const TslSet *set = s->kind == TSL_SURFACE_ELEMENT ? &m->elsets[src] : &m->nsets[src];
       for (PetscInt k = 0; k < set->n; k++) PetscCall(SurfaceAppend(s, set->ids[k], face));
     }
@@ -770,9 +748,8 @@ static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw)
 
 /* ---- materials and sections ------------------------------------------------------------------ */
 
-static PetscErrorCode KwMaterial(Deck *d, const DeckKeyword *kw)
-{
-  TslModel   *m = d->m;
+static PetscErrorCode KwMaterial(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
   const char *name;
 
   PetscFunctionBeginUser;
@@ -782,21 +759,22 @@ static PetscErrorCode KwMaterial(Deck *d, const DeckKeyword *kw)
   PetscCall(TslDeckGrow(&m->materials, sizeof(TslMaterial), m->nmaterial));
   PetscCall(CopyName(d, d->kwloc, m->materials[m->nmaterial].name, name));
   m->materials[m->nmaterial].loc = d->kwloc;
-  d->material                    = m->nmaterial++;
+  d->material = m->nmaterial++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The one data line of a material property with nval values and an optional temperature column. */
-static PetscErrorCode PropertyLine(Deck *d, PetscInt nval, const char *what[], PetscReal val[])
-{
+static PetscErrorCode PropertyLine(Deck *d, PetscInt nval, const char *what[], PetscReal val[]) {
   PetscBool got;
-  char      kwname[64];
+  char kwname[64];
 
   PetscFunctionBeginUser;
   PetscCall(PetscStrncpy(kwname, d->kw, sizeof(kwname)));
   PetscCall(DataLine(d, 0, &got));
   USER_CHECK(got, LOC_FMT "*%s needs a data line", KLOC(d), kwname);
-  USER_CHECK(d->nfield <= nval + 1, LOC_FMT "*%s data line has %" PetscInt_FMT " values, expected %" PetscInt_FMT " (and an optional temperature)",
+  USER_CHECK(d->nfield <= nval + 1,
+             LOC_FMT "*%s data line has %" PetscInt_FMT " values, expected %" PetscInt_FMT
+                     " (and an optional temperature)",
              DLOC(d), kwname, d->nfield, nval);
   for (PetscInt i = 0; i < nval; i++) PetscCall(FieldReal(d, i, what[i], &val[i]));
   if (d->nfield > nval) { /* a temperature column: accepted when it is the only row */
@@ -804,25 +782,25 @@ static PetscErrorCode PropertyLine(Deck *d, PetscInt nval, const char *what[], P
     PetscCall(FieldReal(d, nval, "the temperature", &t));
   }
   PetscCall(DataLine(d, 0, &got));
-  USER_CHECK(!got, LOC_FMT "temperature-dependent *%s data (more than one data line) is not supported yet", DLOC(d), kwname);
+  USER_CHECK(!got, LOC_FMT "temperature-dependent *%s data (more than one data line) is not supported yet", DLOC(d),
+             kwname);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckIsotropic(Deck *d)
-{
-  char        buf[32];
+static PetscErrorCode CheckIsotropic(Deck *d) {
+  char buf[32];
   const char *t = ParamUpper(d, "TYPE", buf, sizeof(buf));
 
   PetscFunctionBeginUser;
-  USER_CHECK(!t || !strcmp(t, "ISO") || !strcmp(t, "ISOTROPIC"), LOC_FMT "*%s, TYPE=%s is not supported (only ISOTROPIC)", KLOC(d), d->kw, t);
+  USER_CHECK(!t || !strcmp(t, "ISO") || !strcmp(t, "ISOTROPIC"),
+             LOC_FMT "*%s, TYPE=%s is not supported (only ISOTROPIC)", KLOC(d), d->kw, t);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* kind: 0 elastic, 1 conductivity, 2 density, 3 specific heat, 4 expansion */
-static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
-{
+static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw) {
   TslMaterial *mat = &d->m->materials[d->material];
-  PetscReal    v[2];
+  PetscReal v[2];
 
   PetscFunctionBeginUser;
   switch (kw->kind) {
@@ -830,27 +808,27 @@ static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
     const char *what[] = {"Young's modulus", "Poisson's ratio"};
     PetscCall(CheckIsotropic(d));
     PetscCall(PropertyLine(d, 2, what, v));
-    mat->E           = v[0];
-    mat->nu          = v[1];
+    mat->E = v[0];
+    mat->nu = v[1];
     mat->has_elastic = PETSC_TRUE;
   } break;
   case 1: {
     const char *what[] = {"the conductivity"};
     PetscCall(CheckIsotropic(d));
     PetscCall(PropertyLine(d, 1, what, v));
-    mat->conductivity     = v[0];
+    mat->conductivity = v[0];
     mat->has_conductivity = PETSC_TRUE;
   } break;
   case 2: {
     const char *what[] = {"the density"};
     PetscCall(PropertyLine(d, 1, what, v));
-    mat->density     = v[0];
+    mat->density = v[0];
     mat->has_density = PETSC_TRUE;
   } break;
   case 3: {
     const char *what[] = {"the specific heat"};
     PetscCall(PropertyLine(d, 1, what, v));
-    mat->specific_heat     = v[0];
+    mat->specific_heat = v[0];
     mat->has_specific_heat = PETSC_TRUE;
   } break;
   default: {
@@ -858,19 +836,18 @@ static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
     PetscCall(CheckIsotropic(d));
     PetscCall(ParamReal(d, "ZERO", &mat->alpha_zero, NULL));
     PetscCall(PropertyLine(d, 1, what, v));
-    mat->alpha         = v[0];
+    mat->alpha = v[0];
     mat->has_expansion = PETSC_TRUE;
   } break;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
-{
-  TslModel   *m = d->m;
+static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
   const char *elset, *mat;
   TslSection *s;
-  PetscBool   got;
+  PetscBool got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -881,8 +858,8 @@ static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
   PetscCall(CopyName(d, d->kwloc, s->elset, elset));
   PetscCall(CopyName(d, d->kwloc, s->material, mat));
   s->material_index = -1;
-  s->thickness      = 1.0;
-  s->loc            = d->kwloc;
+  s->thickness = 1.0;
+  s->loc = d->kwloc;
   PetscCall(DataLine(d, 0, &got));
   if (got) {
     USER_CHECK(d->nfield <= 1, LOC_FMT "*SOLID SECTION data line needs only the thickness", DLOC(d));
@@ -894,28 +871,29 @@ static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
 
 /* ---- other model data ------------------------------------------------------------------------ */
 
-static PetscErrorCode ParseTarget(Deck *d, const char *f, TslTarget *t)
-{
+static PetscErrorCode ParseTarget(Deck *d, const char *f, TslTarget *t) {
   PetscFunctionBeginUser;
   USER_CHECK(f[0], LOC_FMT "missing node/element or set name", DLOC(d));
   t->set[0] = 0;
-  t->id     = -1;
-  if (IsInteger(f)) PetscCall(DeckInt(d, f, "an id", &t->id));
-  else PetscCall(CopyName(d, d->loc, t->set, f));
+  t->id = -1;
+  if (IsInteger(f))
+    PetscCall(DeckInt(d, f, "an id", &t->id));
+  else
+    PetscCall(CopyName(d, d->loc, t->set, f));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw)
-{
-  TslModel   *m = d->m;
-  char        buf[32];
+static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
+  char buf[32];
   const char *type = ParamUpper(d, "TYPE", buf, sizeof(buf));
-  PetscBool   got;
+  PetscBool got;
 
   PetscFunctionBeginUser;
   (void)kw;
   USER_CHECK(type && type[0], LOC_FMT "*INITIAL CONDITIONS needs the parameter TYPE=", KLOC(d));
-  USER_CHECK(!strcmp(type, "TEMPERATURE"), LOC_FMT "*INITIAL CONDITIONS, TYPE=%s is not supported (only TEMPERATURE)", KLOC(d), type);
+  USER_CHECK(!strcmp(type, "TEMPERATURE"), LOC_FMT "*INITIAL CONDITIONS, TYPE=%s is not supported (only TEMPERATURE)",
+             KLOC(d), type);
   for (;;) {
     TslInitialTemperature *it;
     PetscCall(DataLine(d, 0, &got));
@@ -930,38 +908,40 @@ static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw)
-{
-  TslModel     *m = d->m;
-  const char   *name, *time, *def;
-  char          b1[32], b2[32];
+static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
+  const char *name, *time, *def;
+  char b1[32], b2[32];
   TslAmplitude *a;
-  PetscBool     got;
+  PetscBool got;
 
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(ParamRequired(d, "NAME", &name));
   USER_CHECK(TslModelFindAmplitude(m, name) < 0, LOC_FMT "amplitude %s is defined twice", KLOC(d), name);
   time = ParamUpper(d, "TIME", b1, sizeof(b1));
-  def  = ParamUpper(d, "DEFINITION", b2, sizeof(b2));
-  USER_CHECK(!time || !strcmp(time, "STEP TIME") || !strcmp(time, "TOTAL TIME"), LOC_FMT "*AMPLITUDE, TIME=%s is not supported (STEP TIME or TOTAL TIME)", KLOC(d), time);
-  USER_CHECK(!def || !strcmp(def, "TABULAR"), LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (only TABULAR)", KLOC(d), def);
+  def = ParamUpper(d, "DEFINITION", b2, sizeof(b2));
+  USER_CHECK(!time || !strcmp(time, "STEP TIME") || !strcmp(time, "TOTAL TIME"),
+             LOC_FMT "*AMPLITUDE, TIME=%s is not supported (STEP TIME or TOTAL TIME)", KLOC(d), time);
+  USER_CHECK(!def || !strcmp(def, "TABULAR"), LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (only TABULAR)",
+             KLOC(d), def);
   PetscCall(TslDeckGrow(&m->amplitudes, sizeof(TslAmplitude), m->namplitude));
   a = &m->amplitudes[m->namplitude++];
   PetscCall(CopyName(d, d->kwloc, a->name, name));
   a->total_time = (time && !strcmp(time, "TOTAL TIME")) ? PETSC_TRUE : PETSC_FALSE;
-  a->loc        = d->kwloc;
+  a->loc = d->kwloc;
   for (;;) {
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
-    USER_CHECK(d->nfield % 2 == 0, LOC_FMT "*AMPLITUDE data lines hold (time, value) pairs; got an odd number of values", DLOC(d));
+    USER_CHECK(d->nfield % 2 == 0,
+               LOC_FMT "*AMPLITUDE data lines hold (time, value) pairs; got an odd number of values", DLOC(d));
     for (PetscInt i = 0; i < d->nfield; i += 2) {
       PetscCall(TslDeckGrow(&a->t, sizeof(PetscReal), a->n));
       PetscCall(TslDeckGrow(&a->a, sizeof(PetscReal), a->n));
       PetscCall(FieldReal(d, i, "a time", &a->t[a->n]));
       PetscCall(FieldReal(d, i + 1, "an amplitude value", &a->a[a->n]));
-      USER_CHECK(a->n == 0 || a->t[a->n] >= a->t[a->n - 1], LOC_FMT "amplitude times must not decrease (%g after %g)", DLOC(d),
-                 (double)a->t[a->n], (double)a->t[a->n - 1]);
+      USER_CHECK(a->n == 0 || a->t[a->n] >= a->t[a->n - 1], LOC_FMT "amplitude times must not decrease (%g after %g)",
+                 DLOC(d), (double)a->t[a->n], (double)a->t[a->n - 1]);
       a->n++;
     }
   }
@@ -969,8 +949,7 @@ static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwPhysical(Deck *d, const DeckKeyword *kw)
-{
+static PetscErrorCode KwPhysical(Deck *d, const DeckKeyword *kw) {
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(ParamReal(d, "ABSOLUTE ZERO", &d->m->absolute_zero, &d->m->has_absolute_zero));
@@ -978,14 +957,12 @@ static PetscErrorCode KwPhysical(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscBool ValidDof(const Deck *d, PetscInt dof)
-{
+static PetscBool ValidDof(const Deck *d, PetscInt dof) {
   PetscInt dim = d->m->dim ? d->m->dim : 3;
   return ((dof >= 1 && dof <= dim) || dof == 11) ? PETSC_TRUE : PETSC_FALSE;
 }
 
-static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
-{
+static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw) {
   TslModel *m = d->m;
   PetscBool got;
 
@@ -993,29 +970,32 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
   (void)kw;
   for (;;) {
     TslEquation *e;
-    PetscInt     n, k = 0;
+    PetscInt n, k = 0;
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
     USER_CHECK(d->nfield == 1, LOC_FMT "*EQUATION: expected the number of terms alone on this line", DLOC(d));
     PetscCall(FieldInt(d, 0, "the number of terms", &n));
     USER_CHECK(n >= 1, LOC_FMT "*EQUATION needs at least one term", DLOC(d));
     PetscCall(TslDeckGrow(&m->equations, sizeof(TslEquation), m->nequation));
-    e      = &m->equations[m->nequation++];
-    e->n   = n;
+    e = &m->equations[m->nequation++];
+    e->n = n;
     e->loc = d->loc;
     PetscCall(PetscMalloc1(n, &e->node));
     PetscCall(PetscMalloc1(n, &e->dof));
     PetscCall(PetscMalloc1(n, &e->coef));
     while (k < n) {
       PetscCall(DataLine(d, 0, &got));
-      USER_CHECK(got, LOC_FMT "*EQUATION with %" PetscInt_FMT " terms has only %" PetscInt_FMT, TSL_LOC_ARGS(m, e->loc), n, k);
-      USER_CHECK(d->nfield % 3 == 0 && k + d->nfield / 3 <= n, LOC_FMT "*EQUATION terms are (node, dof, coefficient) triples, %" PetscInt_FMT " in all",
-                 DLOC(d), n);
+      USER_CHECK(got, LOC_FMT "*EQUATION with %" PetscInt_FMT " terms has only %" PetscInt_FMT, TSL_LOC_ARGS(m, e->loc),
+                 n, k);
+      USER_CHECK(d->nfield % 3 == 0 && k + d->nfield / 3 <= n,
+                 LOC_FMT "*EQUATION terms are (node, dof, coefficient) triples, %" PetscInt_FMT " in all", DLOC(d), n);
       for (PetscInt i = 0; i < d->nfield; i += 3, k++) {
-        USER_CHECK(IsInteger(d->field[i]), LOC_FMT "*EQUATION with a node set (%s) is not supported yet; give node ids", DLOC(d), d->field[i]);
+        USER_CHECK(IsInteger(d->field[i]), LOC_FMT "*EQUATION with a node set (%s) is not supported yet; give node ids",
+                   DLOC(d), d->field[i]);
         PetscCall(FieldInt(d, i, "a node id", &e->node[k]));
         PetscCall(FieldInt(d, i + 1, "a degree of freedom", &e->dof[k]));
-        USER_CHECK(ValidDof(d, e->dof[k]), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)", DLOC(d),
+        USER_CHECK(ValidDof(d, e->dof[k]),
+                   LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)", DLOC(d),
                    e->dof[k], m->dim ? m->dim : 3);
         PetscCall(FieldReal(d, i + 2, "a coefficient", &e->coef[k]));
       }
@@ -1026,71 +1006,78 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
 
 /* ---- steps ----------------------------------------------------------------------------------- */
 
-static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
-{
-  TslModel   *m = d->m;
-  TslStep    *s;
+static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
+  TslStep *s;
   const char *name = Param(d, "NAME"), *nl;
-  char        buf[32];
+  char buf[32];
 
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(TslDeckGrow(&m->steps, sizeof(TslStep), m->nstep));
   s = &m->steps[m->nstep];
-  if (name && name[0]) PetscCall(CopyName(d, d->kwloc, s->name, name));
-  else PetscCall(PetscSNPrintf(s->name, sizeof(s->name), "Step-%" PetscInt_FMT, m->nstep + 1));
-  s->loc     = d->kwloc;
+  if (name && name[0])
+    PetscCall(CopyName(d, d->kwloc, s->name, name));
+  else
+    PetscCall(PetscSNPrintf(s->name, sizeof(s->name), "Step-%" PetscInt_FMT, m->nstep + 1));
+  s->loc = d->kwloc;
   s->max_inc = 100;
   PetscCall(ParamInt(d, "INC", &s->max_inc));
   USER_CHECK(s->max_inc > 0, LOC_FMT "INC= must be positive", KLOC(d));
   nl = ParamUpper(d, "NLGEOM", buf, sizeof(buf));
-  USER_CHECK(!nl || !nl[0] || !strcmp(nl, "YES") || !strcmp(nl, "NO"), LOC_FMT "NLGEOM=%s: expected YES or NO", KLOC(d), nl);
+  USER_CHECK(!nl || !nl[0] || !strcmp(nl, "YES") || !strcmp(nl, "NO"), LOC_FMT "NLGEOM=%s: expected YES or NO", KLOC(d),
+             nl);
   s->nlgeom = (nl && strcmp(nl, "NO")) ? PETSC_TRUE : PETSC_FALSE;
-  nl        = ParamUpper(d, "AMPLITUDE", buf, sizeof(buf));
+  nl = ParamUpper(d, "AMPLITUDE", buf, sizeof(buf));
   if (nl) {
-    USER_CHECK(!strcmp(nl, "RAMP") || !strcmp(nl, "STEP"), LOC_FMT "*STEP, AMPLITUDE=%s: expected RAMP or STEP", KLOC(d), nl);
-    s->amp_given   = PETSC_TRUE;
+    USER_CHECK(!strcmp(nl, "RAMP") || !strcmp(nl, "STEP"), LOC_FMT "*STEP, AMPLITUDE=%s: expected RAMP or STEP",
+               KLOC(d), nl);
+    s->amp_given = PETSC_TRUE;
     s->amp_default = !strcmp(nl, "RAMP") ? TSL_AMP_RAMP : TSL_AMP_STEP;
   }
   s->dt0 = s->period = s->dtmax = 1.0;
-  s->dtmin                      = 1e-5;
-  d->step                       = m->nstep++;
-  d->out_frequency              = 1;
+  s->dtmin = 1e-5;
+  d->step = m->nstep++;
+  d->out_frequency = 1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwEndStep(Deck *d, const DeckKeyword *kw)
-{
+static PetscErrorCode KwEndStep(Deck *d, const DeckKeyword *kw) {
   PetscFunctionBeginUser;
   (void)kw;
   d->step = -1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw)
-{
-  TslStep  *s = &d->m->steps[d->step];
+static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw) {
+  TslStep *s = &d->m->steps[d->step];
   PetscBool got, set;
 
   PetscFunctionBeginUser;
   (void)kw;
   USER_CHECK(!s->coupled, LOC_FMT "step %s already has a procedure", KLOC(d), s->name);
   s->coupled = PETSC_TRUE;
-  s->steady  = Param(d, "STEADY STATE") ? PETSC_TRUE : PETSC_FALSE;
-  s->direct  = Param(d, "DIRECT") ? PETSC_TRUE : PETSC_FALSE;
+  s->steady = Param(d, "STEADY STATE") ? PETSC_TRUE : PETSC_FALSE;
+  s->direct = Param(d, "DIRECT") ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(ParamReal(d, "DELTMX", &s->deltmx, &set));
   USER_CHECK(!set || s->deltmx >= 0, LOC_FMT "DELTMX must not be negative", KLOC(d));
   if (!s->amp_given) s->amp_default = s->steady ? TSL_AMP_RAMP : TSL_AMP_STEP;
   PetscCall(DataLine(d, 0, &got));
   s->dt0 = s->period = 1.0;
   if (got) {
-    USER_CHECK(d->nfield <= 4, LOC_FMT "*COUPLED TEMPERATURE-DISPLACEMENT data line: initial increment, step period, minimum, maximum increment", DLOC(d));
+    USER_CHECK(
+        d->nfield <= 4,
+        LOC_FMT
+        "*COUPLED TEMPERATURE-DISPLACEMENT data line: initial increment, step period, minimum, maximum increment",
+        DLOC(d));
     PetscCall(FieldRealDefault(d, 0, "the initial increment", 1.0, &s->dt0));
     PetscCall(FieldRealDefault(d, 1, "the step period", 1.0, &s->period));
-    USER_CHECK(s->dt0 > 0 && s->period > 0, LOC_FMT "the initial increment and the step period must be positive", DLOC(d));
+    USER_CHECK(s->dt0 > 0 && s->period > 0, LOC_FMT "the initial increment and the step period must be positive",
+               DLOC(d));
     PetscCall(FieldRealDefault(d, 2, "the minimum increment", PetscMin(s->dt0, 1e-5 * s->period), &s->dtmin));
     PetscCall(FieldRealDefault(d, 3, "the maximum increment", s->period, &s->dtmax));
-    USER_CHECK(s->dtmin > 0 && s->dtmin <= s->dtmax, LOC_FMT "need 0 < minimum increment <= maximum increment", DLOC(d));
+    USER_CHECK(s->dtmin > 0 && s->dtmin <= s->dtmax, LOC_FMT "need 0 < minimum increment <= maximum increment",
+               DLOC(d));
   } else {
     s->dtmin = PetscMin(s->dt0, 1e-5 * s->period);
     s->dtmax = s->period;
@@ -1100,31 +1087,35 @@ static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw)
 
 /* ---- loads ----------------------------------------------------------------------------------- */
 
-static PetscErrorCode CheckDof(Deck *d, PetscInt dof)
-{
+static PetscErrorCode CheckDof(Deck *d, PetscInt dof) {
   PetscFunctionBeginUser;
-  USER_CHECK(ValidDof(d, dof), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)", DLOC(d), dof,
-             d->m->dim ? d->m->dim : 3);
+  USER_CHECK(ValidDof(d, dof), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)",
+             DLOC(d), dof, d->m->dim ? d->m->dim : 3);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineBoundary(Deck *d, TslLoad *l)
-{
+static PetscErrorCode LineBoundary(Deck *d, TslLoad *l) {
   const char *f;
-  char        up[32];
-  PetscInt    dim = d->m->dim ? d->m->dim : 3;
+  char up[32];
+  PetscInt dim = d->m->dim ? d->m->dim : 3;
 
   PetscFunctionBeginUser;
-  USER_CHECK(d->nfield >= 2 && d->nfield <= 4, LOC_FMT "*BOUNDARY data line needs: node or node set, first dof[, last dof[, value]]", DLOC(d));
+  USER_CHECK(d->nfield >= 2 && d->nfield <= 4,
+             LOC_FMT "*BOUNDARY data line needs: node or node set, first dof[, last dof[, value]]", DLOC(d));
   f = d->field[1];
   if (!IsInteger(f)) {
     (void)PetscStrncpy(up, f, sizeof(up));
     Normalize(up);
-    if (!strcmp(up, "ENCASTRE") || !strcmp(up, "PINNED")) l->dof_first = 1, l->dof_last = PetscMin(3, dim);
-    else if (!strcmp(up, "XSYMM")) l->dof_first = l->dof_last = 1;
-    else if (!strcmp(up, "YSYMM")) l->dof_first = l->dof_last = 2;
-    else if (!strcmp(up, "ZSYMM")) l->dof_first = l->dof_last = 3;
-    else USER_ERR(LOC_FMT "bad degree of freedom '%s' (a number, ENCASTRE, PINNED, XSYMM, YSYMM or ZSYMM)", DLOC(d), f);
+    if (!strcmp(up, "ENCASTRE") || !strcmp(up, "PINNED"))
+      l->dof_first = 1, l->dof_last = PetscMin(3, dim);
+    else if (!strcmp(up, "XSYMM"))
+      l->dof_first = l->dof_last = 1;
+    else if (!strcmp(up, "YSYMM"))
+      l->dof_first = l->dof_last = 2;
+    else if (!strcmp(up, "ZSYMM"))
+      l->dof_first = l->dof_last = 3;
+    else
+      USER_ERR(LOC_FMT "bad degree of freedom '%s' (a number, ENCASTRE, PINNED, XSYMM, YSYMM or ZSYMM)", DLOC(d), f);
     USER_CHECK(d->nfield == 2, LOC_FMT "*BOUNDARY with %s takes no further values", DLOC(d), up);
     PetscCall(CheckDof(d, l->dof_last));
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -1136,18 +1127,19 @@ static PetscErrorCode LineBoundary(Deck *d, TslLoad *l)
   PetscCall(CheckDof(d, l->dof_first));
   PetscCall(CheckDof(d, l->dof_last));
   /* a range may not run from a displacement into the temperature: 4..10 are no dofs */
-  USER_CHECK(l->dof_first <= l->dof_last && (l->dof_last != 11 || l->dof_first == 11), LOC_FMT "bad dof range %" PetscInt_FMT "..%" PetscInt_FMT,
-             DLOC(d), l->dof_first, l->dof_last);
+  USER_CHECK(l->dof_first <= l->dof_last && (l->dof_last != 11 || l->dof_first == 11),
+             LOC_FMT "bad dof range %" PetscInt_FMT "..%" PetscInt_FMT, DLOC(d), l->dof_first, l->dof_last);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineConcentrated(Deck *d, TslLoad *l)
-{
+static PetscErrorCode LineConcentrated(Deck *d, TslLoad *l) {
   PetscFunctionBeginUser;
   USER_CHECK(d->nfield == 3, LOC_FMT "data line needs: node or node set, dof, magnitude", DLOC(d));
   PetscCall(FieldInt(d, 1, "the dof", &l->dof_first));
   l->dof_last = l->dof_first;
-  if (l->kind == TSL_LOAD_CFLUX) USER_CHECK(l->dof_first == 11, LOC_FMT "bad degree of freedom %" PetscInt_FMT " for *CFLUX (must be 11)", DLOC(d), l->dof_first);
+  if (l->kind == TSL_LOAD_CFLUX)
+    USER_CHECK(l->dof_first == 11, LOC_FMT "bad degree of freedom %" PetscInt_FMT " for *CFLUX (must be 11)", DLOC(d),
+               l->dof_first);
   else {
     PetscCall(CheckDof(d, l->dof_first));
     USER_CHECK(l->dof_first != 11, LOC_FMT "bad degree of freedom 11 for *CLOAD (use *CFLUX for heat)", DLOC(d));
@@ -1157,20 +1149,22 @@ static PetscErrorCode LineConcentrated(Deck *d, TslLoad *l)
 }
 
 /* Face label of a distributed load: prefix1..6 on elements, the bare prefix on a surface, BF (body flux) if allowed. */
-static PetscErrorCode LoadFace(Deck *d, TslLoad *l, char prefix, PetscBool surface_only, PetscBool body)
-{
+static PetscErrorCode LoadFace(Deck *d, TslLoad *l, char prefix, PetscBool surface_only, PetscBool body) {
   const char *f = d->field[1];
 
   PetscFunctionBeginUser;
   if (body && (f[0] == 'B' || f[0] == 'b') && (f[1] == 'F' || f[1] == 'f') && !f[2]) {
-    USER_CHECK(!l->target.set[0] || TslModelFindSurface(d->m, l->target.set) < 0 || TslModelFindElementSet(d->m, l->target.set) >= 0,
+    USER_CHECK(!l->target.set[0] || TslModelFindSurface(d->m, l->target.set) < 0 ||
+                   TslModelFindElementSet(d->m, l->target.set) >= 0,
                LOC_FMT "BF needs elements, not a surface", DLOC(d));
     l->face = 0;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   l->face = FaceLabel(f, prefix);
-  if (surface_only) USER_CHECK(l->face == 0, LOC_FMT "bad load label '%s' (expected %c with a surface)", DLOC(d), f, prefix);
-  USER_CHECK(l->face >= 0, LOC_FMT "bad load label '%s' (expected %c1..%c6%s, or %c with a surface)", DLOC(d), f, prefix, prefix, body ? " or BF" : "", prefix);
+  if (surface_only)
+    USER_CHECK(l->face == 0, LOC_FMT "bad load label '%s' (expected %c with a surface)", DLOC(d), f, prefix);
+  USER_CHECK(l->face >= 0, LOC_FMT "bad load label '%s' (expected %c1..%c6%s, or %c with a surface)", DLOC(d), f,
+             prefix, prefix, body ? " or BF" : "", prefix);
   if (l->face == 0) {
     USER_CHECK(l->target.set[0], LOC_FMT "label %c needs a surface name, not an element id", DLOC(d), prefix);
     l->target_is_surface = PETSC_TRUE;
@@ -1178,26 +1172,25 @@ static PetscErrorCode LoadFace(Deck *d, TslLoad *l, char prefix, PetscBool surfa
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineDload(Deck *d, TslLoad *l)
-{
+static PetscErrorCode LineDload(Deck *d, TslLoad *l) {
   PetscFunctionBeginUser;
-  USER_CHECK(d->nfield == 3, LOC_FMT "*DLOAD data line needs: element, element set or surface, P1..P6 or P, magnitude", DLOC(d));
+  USER_CHECK(d->nfield == 3, LOC_FMT "*DLOAD data line needs: element, element set or surface, P1..P6 or P, magnitude",
+             DLOC(d));
   PetscCall(LoadFace(d, l, 'P', PETSC_FALSE, PETSC_FALSE));
   PetscCall(FieldReal(d, 2, "the magnitude", &l->value));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineDflux(Deck *d, TslLoad *l)
-{
+static PetscErrorCode LineDflux(Deck *d, TslLoad *l) {
   PetscFunctionBeginUser;
-  USER_CHECK(d->nfield == 3, LOC_FMT "*DFLUX data line needs: element or element set, S1..S6 or BF, magnitude", DLOC(d));
+  USER_CHECK(d->nfield == 3, LOC_FMT "*DFLUX data line needs: element or element set, S1..S6 or BF, magnitude",
+             DLOC(d));
   PetscCall(LoadFace(d, l, 'S', PETSC_FALSE, PETSC_TRUE));
   PetscCall(FieldReal(d, 2, "the magnitude", &l->value));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineDsflux(Deck *d, TslLoad *l)
-{
+static PetscErrorCode LineDsflux(Deck *d, TslLoad *l) {
   PetscFunctionBeginUser;
   USER_CHECK(d->nfield == 3, LOC_FMT "*DSFLUX data line needs: surface, S, magnitude", DLOC(d));
   USER_CHECK(l->target.set[0], LOC_FMT "*DSFLUX needs a surface name", DLOC(d));
@@ -1206,8 +1199,7 @@ static PetscErrorCode LineDsflux(Deck *d, TslLoad *l)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineFilm(Deck *d, TslLoad *l)
-{
+static PetscErrorCode LineFilm(Deck *d, TslLoad *l) {
   PetscBool sfilm = d->kw[0] == 'S' ? PETSC_TRUE : PETSC_FALSE;
 
   PetscFunctionBeginUser;
@@ -1220,8 +1212,7 @@ static PetscErrorCode LineFilm(Deck *d, TslLoad *l)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode AmplitudeParam(Deck *d, const char *key, PetscInt *index)
-{
+static PetscErrorCode AmplitudeParam(Deck *d, const char *key, PetscInt *index) {
   const char *a = Param(d, key);
 
   PetscFunctionBeginUser;
@@ -1232,13 +1223,12 @@ static PetscErrorCode AmplitudeParam(Deck *d, const char *key, PetscInt *index)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
-{
-  TslStep    *s = &d->m->steps[d->step];
-  char        buf[16];
+static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw) {
+  TslStep *s = &d->m->steps[d->step];
+  char buf[16];
   const char *op = ParamUpper(d, "OP", buf, sizeof(buf));
-  PetscInt    amp, famp;
-  PetscBool   got;
+  PetscInt amp, famp;
+  PetscBool got;
 
   PetscFunctionBeginUser;
   USER_CHECK(!op || !strcmp(op, "NEW") || !strcmp(op, "MOD"), LOC_FMT "OP=%s: expected NEW or MOD", KLOC(d), op);
@@ -1249,11 +1239,11 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
     PetscCall(PetscMemzero(&l, sizeof(l)));
-    l.kind           = (TslLoadKind)kw->kind;
-    l.amplitude      = amp;
+    l.kind = (TslLoadKind)kw->kind;
+    l.amplitude = amp;
     l.film_amplitude = famp;
-    l.op_new         = (op && !strcmp(op, "NEW")) ? PETSC_TRUE : PETSC_FALSE;
-    l.loc            = d->loc;
+    l.op_new = (op && !strcmp(op, "NEW")) ? PETSC_TRUE : PETSC_FALSE;
+    l.loc = d->loc;
     USER_CHECK(d->nfield >= 2, LOC_FMT "*%s data line is too short", DLOC(d), d->kw);
     PetscCall(ParseTarget(d, d->field[0], &l.target));
     PetscCall(kw->line(d, &l));
@@ -1265,8 +1255,7 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
 
 /* ---- output requests ------------------------------------------------------------------------- */
 
-static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
-{
+static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw) {
   PetscFunctionBeginUser;
   (void)kw;
   d->out_frequency = 1;
@@ -1278,20 +1267,19 @@ static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
 #define OUT_NODE  1
 #define OUT_PRINT 2
 
-static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw)
-{
-  TslStep          *s = &d->m->steps[d->step];
+static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw) {
+  TslStep *s = &d->m->steps[d->step];
   TslOutputRequest *r;
-  PetscBool         node = (kw->kind & OUT_NODE) ? PETSC_TRUE : PETSC_FALSE, got;
-  const char       *key = node ? "NSET" : "ELSET", *set = Param(d, key);
+  PetscBool node = (kw->kind & OUT_NODE) ? PETSC_TRUE : PETSC_FALSE, got;
+  const char *key = node ? "NSET" : "ELSET", *set = Param(d, key);
 
   PetscFunctionBeginUser;
   if (kw->kind & OUT_PRINT) PetscCall(ParamRequired(d, key, &set));
   PetscCall(TslDeckGrow(&s->out, sizeof(TslOutputRequest), s->nout));
-  r            = &s->out[s->nout++];
-  r->node      = node;
-  r->print     = (kw->kind & OUT_PRINT) ? PETSC_TRUE : PETSC_FALSE;
-  r->loc       = d->kwloc;
+  r = &s->out[s->nout++];
+  r->node = node;
+  r->print = (kw->kind & OUT_PRINT) ? PETSC_TRUE : PETSC_FALSE;
+  r->loc = d->kwloc;
   r->frequency = d->out_frequency;
   PetscCall(ParamInt(d, "FREQUENCY", &r->frequency));
   if (set) PetscCall(CopyName(d, d->kwloc, r->set, set));
@@ -1302,15 +1290,15 @@ static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw)
       char *v = Normalize(d->field[i]);
       if (!v[0]) continue;
       USER_CHECK(strlen(v) < sizeof(r->var[0]), LOC_FMT "output variable name %s is too long", DLOC(d), v);
-      USER_CHECK(r->nvar < (PetscInt)(sizeof(r->var) / sizeof(r->var[0])), LOC_FMT "too many output variables (at most 16)", DLOC(d));
+      USER_CHECK(r->nvar < (PetscInt)(sizeof(r->var) / sizeof(r->var[0])),
+                 LOC_FMT "too many output variables (at most 16)", DLOC(d));
       PetscCall(PetscStrncpy(r->var[r->nvar++], v, sizeof(r->var[0])));
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
-{
+static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw) {
   PetscBool got;
 
   PetscFunctionBeginUser;
@@ -1367,12 +1355,11 @@ static const DeckKeyword Keywords[] = {
     {"ENERGY PRINT", CTX_ANY, NULL, KwIgnored, 0, NULL},
 };
 
-static PetscBool ParamKnown(const char *list, const char *key)
-{
+static PetscBool ParamKnown(const char *list, const char *key) {
   size_t n = strlen(key);
   for (const char *p = list; *p;) {
     const char *e = strchr(p, '|');
-    size_t      l = e ? (size_t)(e - p) : strlen(p);
+    size_t l = e ? (size_t)(e - p) : strlen(p);
     if (l == n && !strncmp(p, key, n)) return PETSC_TRUE;
     if (!e) break;
     p = e + 1;
@@ -1380,8 +1367,7 @@ static PetscBool ParamKnown(const char *list, const char *key)
   return PETSC_FALSE;
 }
 
-static PetscErrorCode DeckKeywordLine(Deck *d)
-{
+static PetscErrorCode DeckKeywordLine(Deck *d) {
   const DeckKeyword *kw = NULL;
 
   PetscFunctionBeginUser;
@@ -1391,7 +1377,10 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
   if (kw->where != CTX_MATERIAL && kw->handler != KwIgnored) d->material = -1;
   switch (kw->where) {
   case CTX_MODEL:
-    USER_CHECK(d->step < 0, LOC_FMT "*%s is model data and cannot appear inside a step (missing *END STEP for the *STEP at %s:%" PetscInt_FMT "?)",
+    USER_CHECK(d->step < 0,
+               LOC_FMT
+               "*%s is model data and cannot appear inside a step (missing *END STEP for the *STEP at %s:%" PetscInt_FMT
+               "?)",
                KLOC(d), d->kw, TslDeckFileName(d->m, d->m->steps[d->step].loc.file), d->m->steps[d->step].loc.line);
     break;
   case CTX_STEP:
@@ -1399,7 +1388,8 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
     USER_CHECK(d->step >= 0, LOC_FMT "*%s is only allowed inside a step (*STEP ... *END STEP)", KLOC(d), d->kw);
     break;
   case CTX_MATERIAL:
-    USER_CHECK(d->step < 0 && d->material >= 0, LOC_FMT "*%s must follow *MATERIAL (material properties outside a material)", KLOC(d), d->kw);
+    USER_CHECK(d->step < 0 && d->material >= 0,
+               LOC_FMT "*%s must follow *MATERIAL (material properties outside a material)", KLOC(d), d->kw);
     break;
   case CTX_ANY:
     break;
@@ -1407,15 +1397,15 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
   if (kw->params)
     for (PetscInt i = 0; i < d->nparam; i++)
       if (!ParamKnown(kw->params, d->pkey[i]))
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: parameter %s of *%s is ignored\n", KLOC(d), d->pkey[i], d->kw));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: parameter %s of *%s is ignored\n", KLOC(d), d->pkey[i],
+                              d->kw));
   PetscCall(kw->handler(d, kw));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode DeckParse(Deck *d, const char *path)
-{
+static PetscErrorCode DeckParse(Deck *d, const char *path) {
   const char *s;
-  PetscBool   got;
+  PetscBool got;
 
   PetscFunctionBeginUser;
   PetscCall(DeckOpen(d, path, PETSC_FALSE));
@@ -1437,8 +1427,7 @@ static PetscErrorCode DeckParse(Deck *d, const char *path)
 }
 
 /* Duplicate node ids, reported at the later definition (nodes carry no location in the model). */
-static PetscErrorCode DeckCheckDuplicateNodes(Deck *d)
-{
+static PetscErrorCode DeckCheckDuplicateNodes(Deck *d) {
   TslModel *m = d->m;
   PetscInt *id, *pos;
 
@@ -1450,11 +1439,11 @@ static PetscErrorCode DeckCheckDuplicateNodes(Deck *d)
   for (PetscInt i = 1; i < m->nnode; i++) {
     if (id[i] == id[i - 1]) {
       PetscInt a = PetscMin(pos[i], pos[i - 1]), b = PetscMax(pos[i], pos[i - 1]), dup = id[i];
-      TslLoc   la = {d->node_line[2 * a], d->node_line[2 * a + 1]}, lb = {d->node_line[2 * b], d->node_line[2 * b + 1]};
+      TslLoc la = {d->node_line[2 * a], d->node_line[2 * a + 1]}, lb = {d->node_line[2 * b], d->node_line[2 * b + 1]};
       PetscCall(PetscFree(id));
       PetscCall(PetscFree(pos));
-      USER_ERR(LOC_FMT "duplicate node id %" PetscInt_FMT " (first defined at %s:%" PetscInt_FMT ")", TSL_LOC_ARGS(m, lb), dup,
-               TslDeckFileName(m, la.file), la.line);
+      USER_ERR(LOC_FMT "duplicate node id %" PetscInt_FMT " (first defined at %s:%" PetscInt_FMT ")",
+               TSL_LOC_ARGS(m, lb), dup, TslDeckFileName(m, la.file), la.line);
     }
   }
   PetscCall(PetscFree(id));
@@ -1462,8 +1451,7 @@ static PetscErrorCode DeckCheckDuplicateNodes(Deck *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode DeckFree(Deck *d)
-{
+static PetscErrorCode DeckFree(Deck *d) {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < d->ntext; i++) PetscCall(PetscFree(d->texts[i]));
   PetscCall(PetscFree(d->texts));
@@ -1474,15 +1462,14 @@ static PetscErrorCode DeckFree(Deck *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslDeckRead(const char *path, TslModel **model)
-{
-  Deck           d;
+PetscErrorCode TslDeckRead(const char *path, TslModel **model) {
+  Deck d;
   PetscErrorCode ierr;
 
   PetscFunctionBeginUser;
   *model = NULL;
   PetscCall(PetscMemzero(&d, sizeof(d)));
-  d.step     = -1;
+  d.step = -1;
   d.material = -1;
   PetscCall(TslModelCreate(&d.m));
   /* On a user error the partial model and the reader's buffers are freed before the error goes up. */

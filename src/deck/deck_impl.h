@@ -3,7 +3,7 @@
 #include <thermoslide/model.h>
 
 /* printf prefix and arguments for "file:line: " of a TslLoc, for SETERRQ messages. */
-#define TSL_LOC_FMT       "%s:%" PetscInt_FMT ": "
+#define TSL_LOC_FMT        "%s:%" PetscInt_FMT ": "
 #define TSL_LOC_ARGS(m, l) TslDeckFileName((m), (l).file), (l).line
 
 /* Path of file index f, or "<unknown>" when there is none. */

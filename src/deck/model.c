@@ -3,16 +3,14 @@
 #include <ctype.h>
 #include <string.h>
 
-PetscErrorCode TslModelCreate(TslModel **model)
-{
+PetscErrorCode TslModelCreate(TslModel **model) {
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(1, model));
   (*model)->absolute_zero = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ModelFreeIndex(TslModel *m)
-{
+static PetscErrorCode ModelFreeIndex(TslModel *m) {
   PetscFunctionBeginUser;
   PetscCall(PetscFree(m->index_node_id));
   PetscCall(PetscFree(m->index_node_pos));
@@ -22,8 +20,7 @@ static PetscErrorCode ModelFreeIndex(TslModel *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslModelDestroy(TslModel **model)
-{
+PetscErrorCode TslModelDestroy(TslModel **model) {
   TslModel *m;
 
   PetscFunctionBeginUser;
@@ -75,75 +72,65 @@ PetscErrorCode TslModelDestroy(TslModel **model)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-const char *TslDeckFileName(const TslModel *model, PetscInt f)
-{
+const char *TslDeckFileName(const TslModel *model, PetscInt f) {
   if (!model || f < 0 || f >= model->nfile || !model->files[f]) return "<unknown>";
   return model->files[f];
 }
 
-const char *TslLocString(const TslModel *model, TslLoc loc, char *buf, size_t len)
-{
+const char *TslLocString(const TslModel *model, TslLoc loc, char *buf, size_t len) {
   if (!buf || !len) return buf;
   (void)PetscSNPrintf(buf, len, "%s:%" PetscInt_FMT, TslDeckFileName(model, loc.file), loc.line);
   return buf;
 }
 
-PetscBool TslDeckNameEqual(const char *a, const char *b)
-{
+PetscBool TslDeckNameEqual(const char *a, const char *b) {
   while (*a && *b && toupper((unsigned char)*a) == toupper((unsigned char)*b)) a++, b++;
   return (!*a && !*b) ? PETSC_TRUE : PETSC_FALSE;
 }
 
-PetscErrorCode TslDeckGrow(void *ptr, size_t sz, PetscInt n)
-{
-  void   **p = (void **)ptr;
+PetscErrorCode TslDeckGrow(void *ptr, size_t sz, PetscInt n) {
+  void **p = (void **)ptr;
   PetscInt cap, want;
 
   PetscFunctionBeginUser;
-  for (cap = 8; cap < n; cap *= 2) {}
-  if (n > 0 && n + 1 <= cap && *p) PetscFunctionReturn(PETSC_SUCCESS);
-  for (want = 8; want < n + 1; want *= 2) {}
-  {
-    PetscInt old = *p ? (n > 0 ? cap : 0) : 0;
-    PetscCall(PetscRealloc((size_t)want * sz, p));
-    memset((char *)*p + (size_t)old * sz, 0, (size_t)(want - old) * sz);
+  for (cap = 8; cap < n; cap *= 2) {
   }
+  if (n > 0 && n + 1 <= cap && *p) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscInt keep = *p ? n : 0; /* a first allocation is zeroed whole (elem_ptr[0] must read 0) */
+  for (want = 8; want < n + 1; want *= 2) {
+  }
+  PetscCall(PetscRealloc((size_t)want * sz, p));
+  memset((char *)*p + (size_t)keep * sz, 0, (size_t)(want - keep) * sz);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* ---- lookups --------------------------------------------------------------------------------- */
 
-#define FIND_BY_NAME(arr, cnt) \
-  do { \
-    if (!model || !name) return -1; \
-    for (PetscInt i = 0; i < model->cnt; i++) \
-      if (TslDeckNameEqual(model->arr[i].name, name)) return i; \
-    return -1; \
+#define FIND_BY_NAME(arr, cnt)                                                                                         \
+  do {                                                                                                                 \
+    if (!model || !name) return -1;                                                                                    \
+    for (PetscInt i = 0; i < model->cnt; i++)                                                                          \
+      if (TslDeckNameEqual(model->arr[i].name, name)) return i;                                                        \
+    return -1;                                                                                                         \
   } while (0)
 
-PetscInt TslModelFindNodeSet(const TslModel *model, const char *name)
-{
+PetscInt TslModelFindNodeSet(const TslModel *model, const char *name) {
   FIND_BY_NAME(nsets, nnset);
 }
-PetscInt TslModelFindElementSet(const TslModel *model, const char *name)
-{
+PetscInt TslModelFindElementSet(const TslModel *model, const char *name) {
   FIND_BY_NAME(elsets, nelset);
 }
-PetscInt TslModelFindSurface(const TslModel *model, const char *name)
-{
+PetscInt TslModelFindSurface(const TslModel *model, const char *name) {
   FIND_BY_NAME(surfaces, nsurface);
 }
-PetscInt TslModelFindMaterial(const TslModel *model, const char *name)
-{
+PetscInt TslModelFindMaterial(const TslModel *model, const char *name) {
   FIND_BY_NAME(materials, nmaterial);
 }
-PetscInt TslModelFindAmplitude(const TslModel *model, const char *name)
-{
+PetscInt TslModelFindAmplitude(const TslModel *model, const char *name) {
   FIND_BY_NAME(amplitudes, namplitude);
 }
 
-static PetscErrorCode BuildIndex(PetscInt n, const PetscInt ids[], PetscInt **sid, PetscInt **pos)
-{
+static PetscErrorCode BuildIndex(PetscInt n, const PetscInt ids[], PetscInt **sid, PetscInt **pos) {
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(n, sid));
   PetscCall(PetscMalloc1(n, pos));
@@ -155,8 +142,7 @@ static PetscErrorCode BuildIndex(PetscInt n, const PetscInt ids[], PetscInt **si
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslModelIndex(TslModel *model)
-{
+PetscErrorCode TslModelIndex(TslModel *model) {
   PetscFunctionBeginUser;
   PetscCall(ModelFreeIndex(model));
   PetscCall(BuildIndex(model->nnode, model->node_id, &model->index_node_id, &model->index_node_pos));
@@ -167,15 +153,16 @@ PetscErrorCode TslModelIndex(TslModel *model)
 }
 
 static PetscInt IndexLookup(PetscInt n, const PetscInt *sid, const PetscInt *pos, PetscInt nidx, const PetscInt *ids,
-                            PetscInt id)
-{
+                            PetscInt id) {
   if (sid && nidx == n) {
     PetscInt lo = 0, hi = n - 1;
     while (lo <= hi) {
       PetscInt mid = lo + (hi - lo) / 2;
       if (sid[mid] == id) return pos[mid];
-      if (sid[mid] < id) lo = mid + 1;
-      else hi = mid - 1;
+      if (sid[mid] < id)
+        lo = mid + 1;
+      else
+        hi = mid - 1;
     }
     return -1;
   }
@@ -184,13 +171,11 @@ static PetscInt IndexLookup(PetscInt n, const PetscInt *sid, const PetscInt *pos
   return -1;
 }
 
-PetscInt TslModelNodeIndex(const TslModel *model, PetscInt id)
-{
+PetscInt TslModelNodeIndex(const TslModel *model, PetscInt id) {
   return IndexLookup(model->nnode, model->index_node_id, model->index_node_pos, model->index_nnode, model->node_id, id);
 }
 
-PetscInt TslModelElementIndex(const TslModel *model, PetscInt id)
-{
+PetscInt TslModelElementIndex(const TslModel *model, PetscInt id) {
   return IndexLookup(model->nelem, model->index_elem_id, model->index_elem_pos, model->index_nelem, model->elem_id, id);
 }
 
@@ -198,8 +183,7 @@ PetscInt TslModelElementIndex(const TslModel *model, PetscInt id)
 
 /* Piecewise linear through (t_i, a_i), constant beyond the ends. At a repeated time (a jump) the
  * later value wins, so a jump at t takes effect at t. */
-PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t)
-{
+PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t) {
   if (!amp || amp->n < 1) return 1.0;
   if (t < amp->t[0]) return amp->a[0];
   for (PetscInt i = 0; i + 1 < amp->n; i++) {
@@ -219,15 +203,14 @@ PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t)
  * unpack mode replaces the stale pointer read with the struct by a fresh allocation. */
 
 typedef struct {
-  PetscBool   unpack;
-  char       *out; /* pack: growing buffer */
-  size_t      cap;
+  PetscBool unpack;
+  char *out; /* pack: growing buffer */
+  size_t cap;
   const char *in; /* unpack: source */
-  size_t      pos, len;
+  size_t pos, len;
 } Packer;
 
-static PetscErrorCode PackBytes(Packer *p, void *x, size_t n)
-{
+static PetscErrorCode PackBytes(Packer *p, void *x, size_t n) {
   PetscFunctionBeginUser;
   if (!n) PetscFunctionReturn(PETSC_SUCCESS);
   if (p->unpack) {
@@ -246,17 +229,15 @@ static PetscErrorCode PackBytes(Packer *p, void *x, size_t n)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode PackInt(Packer *p, PetscInt *x)
-{
+static PetscErrorCode PackInt(Packer *p, PetscInt *x) {
   PetscFunctionBeginUser;
   PetscCall(PackBytes(p, x, sizeof(*x)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* An array of n elements of size sz at *ptr; NULL-ness is kept (a NULL array stays NULL). */
-static PetscErrorCode PackArray(Packer *p, void *ptr, PetscInt n, size_t sz)
-{
-  void   **a       = (void **)ptr;
+static PetscErrorCode PackArray(Packer *p, void *ptr, PetscInt n, size_t sz) {
+  void **a = (void **)ptr;
   PetscInt present = *a ? 1 : 0;
 
   PetscFunctionBeginUser;
@@ -269,8 +250,7 @@ static PetscErrorCode PackArray(Packer *p, void *ptr, PetscInt n, size_t sz)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode PackString(Packer *p, char **s)
-{
+static PetscErrorCode PackString(Packer *p, char **s) {
   PetscInt n = (!p->unpack && *s) ? (PetscInt)strlen(*s) + 1 : 0; /* on unpack *s holds the sender's pointer */
 
   PetscFunctionBeginUser;
@@ -283,8 +263,7 @@ static PetscErrorCode PackString(Packer *p, char **s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
-{
+static PetscErrorCode ModelWalk(Packer *p, TslModel *m) {
   PetscFunctionBeginUser;
   PetscCall(PackBytes(p, m, sizeof(*m)));
   if (p->unpack) { /* the derived index is rebuilt, never transported */
@@ -339,9 +318,8 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslModelPack(const TslModel *model, char **buf, size_t *len)
-{
-  Packer   p = {0};
+PetscErrorCode TslModelPack(const TslModel *model, char **buf, size_t *len) {
+  Packer p = {0};
   TslModel copy;
 
   PetscFunctionBeginUser;
@@ -352,15 +330,14 @@ PetscErrorCode TslModelPack(const TslModel *model, char **buf, size_t *len)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslModelUnpack(const char *buf, size_t len, TslModel **model)
-{
-  Packer    p = {0};
+PetscErrorCode TslModelUnpack(const char *buf, size_t len, TslModel **model) {
+  Packer p = {0};
   TslModel *m;
 
   PetscFunctionBeginUser;
   p.unpack = PETSC_TRUE;
-  p.in     = buf;
-  p.len    = len;
+  p.in = buf;
+  p.len = len;
   PetscCall(TslModelCreate(&m));
   PetscCall(ModelWalk(&p, m));
   PetscCheck(p.pos == len, PETSC_COMM_SELF, PETSC_ERR_ARG_CORRUPT, "Model buffer has %zu trailing bytes", len - p.pos);
@@ -372,8 +349,7 @@ PetscErrorCode TslModelUnpack(const char *buf, size_t len, TslModel **model)
 /* ---- subsets --------------------------------------------------------------------------------- */
 
 static PetscErrorCode FilterIds(PetscInt n, const PetscInt ids[], PetscInt nkeep, const PetscInt keep_sorted[],
-                                PetscInt *nout, PetscInt **out)
-{
+                                PetscInt *nout, PetscInt **out) {
   PetscInt k = 0, loc;
 
   PetscFunctionBeginUser;
@@ -386,8 +362,7 @@ static PetscErrorCode FilterIds(PetscInt n, const PetscInt ids[], PetscInt nkeep
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SubsetSets(PetscInt nset, const TslSet *src, TslSet *dst, PetscInt nkeep, const PetscInt keep[])
-{
+static PetscErrorCode SubsetSets(PetscInt nset, const TslSet *src, TslSet *dst, PetscInt nkeep, const PetscInt keep[]) {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < nset; i++) {
     dst[i] = src[i];
@@ -397,9 +372,8 @@ static PetscErrorCode SubsetSets(PetscInt nset, const TslSet *src, TslSet *dst, 
 }
 
 static PetscErrorCode SubsetSurface(const TslSurface *src, TslSurface *dst, PetscInt nnk, const PetscInt nkeep[],
-                                    PetscInt nek, const PetscInt ekeep[])
-{
-  PetscInt        k = 0, loc, nkp = src->kind == TSL_SURFACE_NODE ? nnk : nek;
+                                    PetscInt nek, const PetscInt ekeep[]) {
+  PetscInt k = 0, loc, nkp = src->kind == TSL_SURFACE_NODE ? nnk : nek;
   const PetscInt *kp = src->kind == TSL_SURFACE_NODE ? nkeep : ekeep;
 
   PetscFunctionBeginUser;
@@ -418,8 +392,7 @@ static PetscErrorCode SubsetSurface(const TslSurface *src, TslSurface *dst, Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CopyEquation(const TslEquation *src, TslEquation *dst)
-{
+static PetscErrorCode CopyEquation(const TslEquation *src, TslEquation *dst) {
   PetscFunctionBeginUser;
   *dst = *src;
   PetscCall(PetscMalloc1(src->n, &dst->node));
@@ -437,8 +410,7 @@ static PetscErrorCode CopyEquation(const TslEquation *src, TslEquation *dst)
 }
 
 static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt elems[], PetscInt nn,
-                                 const PetscInt nodes[], TslModel *s)
-{
+                                 const PetscInt nodes[], TslModel *s) {
   PetscInt nconn = 0;
 
   PetscFunctionBeginUser;
@@ -447,12 +419,14 @@ static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt 
   PetscCall(PetscMalloc1(nn, &s->node_id));
   PetscCall(PetscMalloc1(3 * nn, &s->node_xyz));
   for (PetscInt i = 0; i < nn; i++) {
-    PetscCheck(nodes[i] >= 0 && nodes[i] < m->nnode, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Node position %" PetscInt_FMT " out of range", nodes[i]);
+    PetscCheck(nodes[i] >= 0 && nodes[i] < m->nnode, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+               "Node position %" PetscInt_FMT " out of range", nodes[i]);
     s->node_id[i] = m->node_id[nodes[i]];
     for (PetscInt c = 0; c < 3; c++) s->node_xyz[3 * i + c] = m->node_xyz[3 * nodes[i] + c];
   }
   for (PetscInt i = 0; i < ne; i++) {
-    PetscCheck(elems[i] >= 0 && elems[i] < m->nelem, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Element position %" PetscInt_FMT " out of range", elems[i]);
+    PetscCheck(elems[i] >= 0 && elems[i] < m->nelem, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+               "Element position %" PetscInt_FMT " out of range", elems[i]);
     nconn += m->elem_ptr[elems[i] + 1] - m->elem_ptr[elems[i]];
   }
   PetscCall(PetscMalloc1(ne, &s->elem_id));
@@ -463,9 +437,9 @@ static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt 
   s->elem_ptr[0] = 0;
   for (PetscInt i = 0; i < ne; i++) {
     PetscInt e = elems[i], k = s->elem_ptr[i];
-    s->elem_id[i]           = m->elem_id[e];
-    s->elem_type[i]         = m->elem_type[e];
-    s->elem_line[2 * i]     = m->elem_line ? m->elem_line[2 * e] : -1;
+    s->elem_id[i] = m->elem_id[e];
+    s->elem_type[i] = m->elem_type[e];
+    s->elem_line[2 * i] = m->elem_line ? m->elem_line[2 * e] : -1;
     s->elem_line[2 * i + 1] = m->elem_line ? m->elem_line[2 * e + 1] : 0;
     for (PetscInt j = m->elem_ptr[e]; j < m->elem_ptr[e + 1]; j++) s->elem_conn[k++] = m->elem_conn[j];
     s->elem_ptr[i + 1] = k;
@@ -483,12 +457,11 @@ static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt 
 }
 
 PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt elems[], PetscInt nn,
-                              const PetscInt nodes[], TslModel **sub)
-{
-  TslModel  meta = *model, *s;
+                              const PetscInt nodes[], TslModel **sub) {
+  TslModel meta = *model, *s;
   PetscInt *nkeep, *ekeep, k = 0;
-  char     *buf;
-  size_t    len;
+  char *buf;
+  size_t len;
 
   PetscFunctionBeginUser;
   /* Deep-copy everything but the mesh-dependent data through the packer, then add the filtered parts. */
@@ -496,8 +469,8 @@ PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt
   meta.node_id = meta.elem_id = meta.elem_type = meta.elem_ptr = meta.elem_conn = meta.elem_line = NULL;
   meta.node_xyz = NULL;
   meta.nsets = meta.elsets = NULL;
-  meta.surfaces            = NULL;
-  meta.equations           = NULL;
+  meta.surfaces = NULL;
+  meta.equations = NULL;
   meta.node_gnum = meta.node_nat = meta.elem_nat = NULL;
   PetscCall(TslModelPack(&meta, &buf, &len));
   PetscCall(TslModelUnpack(buf, len, &s));
@@ -511,7 +484,7 @@ PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt
   PetscCall(PetscSortInt(nn, nkeep));
   PetscCall(PetscSortInt(ne, ekeep));
 
-  s->nnset  = model->nnset;
+  s->nnset = model->nnset;
   s->nelset = model->nelset;
   PetscCall(PetscCalloc1(model->nnset, &s->nsets));
   PetscCall(PetscCalloc1(model->nelset, &s->elsets));
@@ -524,8 +497,8 @@ PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt
 
   PetscCall(PetscCalloc1(model->nequation, &s->equations));
   for (PetscInt i = 0; i < model->nequation; i++) {
-    const TslEquation *e    = &model->equations[i];
-    PetscBool          keep = PETSC_FALSE;
+    const TslEquation *e = &model->equations[i];
+    PetscBool keep = PETSC_FALSE;
     for (PetscInt j = 0; j < e->n && !keep; j++) {
       PetscInt loc;
       PetscCall(PetscFindInt(e->node[j], nn, nkeep, &loc));
