@@ -136,13 +136,29 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
   PetscCall(PetscMalloc4(g->nelem, &elem_nat, g->nnode, &node_by_id, g->nelem, &elem_by_id, g->nnode, &mark));
   PetscCall(PetscCalloc2(size, &count, size + 1, &offset));
 
-  if (size == 1) {
-    for (PetscInt e = 0; e < g->nelem; e++) epart[e] = 0;
-  } else if (!strcmp(method, "metis")) {
-    PetscCall(PartitionMetis(g, size, epart));
-  } else if (!strncmp(method, "axis_", 5) && method[5] >= 'x' && method[5] <= 'z' && !method[6]) {
-    PetscCall(PartitionAxis(g, method[5] - 'x', size, epart));
-  } else SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_partition %s: expected metis, axis_x, axis_y or axis_z", method);
+  {
+    PetscBool metis = (PetscBool)!strcmp(method, "metis"), axis = (PetscBool)(!strncmp(method, "axis_", 5) && method[5] >= 'x' && method[5] <= 'z' && !method[6]);
+    PetscInt *count_e;
+    PetscBool empty = PETSC_FALSE;
+
+    PetscCheck(metis || axis, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_partition %s: expected metis, axis_x, axis_y or axis_z", method);
+    if (size == 1) {
+      for (PetscInt e = 0; e < g->nelem; e++) epart[e] = 0;
+    } else if (metis) {
+      PetscCall(PartitionMetis(g, size, epart));
+    } else {
+      PetscCall(PartitionAxis(g, method[5] - 'x', size, epart));
+    }
+    /* METIS may leave a part empty on very small meshes: fall back to slabs along x */
+    PetscCall(PetscCalloc1(size, &count_e));
+    for (PetscInt e = 0; e < g->nelem; e++) count_e[epart[e]]++;
+    for (PetscMPIInt r = 0; r < size; r++) empty = (PetscBool)(empty || count_e[r] == 0);
+    PetscCall(PetscFree(count_e));
+    if (empty) {
+      PetscCall(PetscInfo(NULL, "METIS left a part empty; partitioning along x instead\n"));
+      PetscCall(PartitionAxis(g, 0, size, epart));
+    }
+  }
 
   /* owner = lowest rank among the elements using the node; -1 for nodes no element uses */
   for (PetscInt p = 0; p < g->nnode; p++) owner[p] = -1;
@@ -169,8 +185,6 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
     if (owner[p] >= 0) gnum[p] = offset[owner[p]] + count[owner[p]]++;
   }
   for (PetscInt i = 0; i < g->nelem; i++) elem_nat[elem_by_id[i]] = i;
-  for (PetscMPIInt r = 0; r < size; r++)
-    PetscCheck(count[r] > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "the partition left rank %d without nodes; use fewer ranks", (int)r);
 
   /* equations in global dof numbers */
   for (PetscInt q = 0; q < g->nequation; q++) {
@@ -237,7 +251,7 @@ PetscErrorCode TslMeshDistribute(MPI_Comm comm, TslModel **global, TslModel **lo
     }
   }
   PetscCallMPI(MPI_Bcast(&ierr, 1, MPI_INT, 0, comm));
-  PetscCheck(!ierr, comm, PETSC_ERR_USER_INPUT, "mesh distribution failed (see the message above)");
+  PetscCheck(!ierr, comm, PETSC_ERR_USER_INPUT, " "); /* reported by rank 0 */
   PetscCall(TslModelIndex(*local));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

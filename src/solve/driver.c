@@ -21,6 +21,7 @@ typedef struct {
   TslHistory hist;
   PetscReal  rtol, atol_rel, cutback, growth;
   PetscInt   easy_its;
+  PetscInt   debug_diverge_step; /* test hook: every increment of this step is declared diverged */
   PetscReal  scale_u, scale_theta; /* largest initial residuals seen in the job */
   PetscReal  r0_u, r0_theta;       /* initial residuals of the current solve */
   PetscBool  node_on[NFIELD_NODE], elem_on[NFIELD_ELEM];
@@ -119,6 +120,7 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(PetscOptionsReal("-tsl_cutback", "increment factor after a failed increment", NULL, d->cutback, &d->cutback, NULL));
   PetscCall(PetscOptionsReal("-tsl_growth", "increment factor after an easy increment", NULL, d->growth, &d->growth, NULL));
   PetscCall(PetscOptionsInt("-tsl_easy_its", "Newton iterations that count as easy", NULL, d->easy_its, &d->easy_its, NULL));
+  PetscCall(PetscOptionsInt("-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", NULL, d->debug_diverge_step, &d->debug_diverge_step, NULL));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -264,6 +266,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscCall(TslProblemApplyPrescribed(d->prob, X));
     PetscCall(SNESSolve(d->snes, NULL, X));
     PetscCall(SNESGetConvergedReason(d->snes, &reason));
+    if (s + 1 == d->debug_diverge_step) reason = SNES_DIVERGED_FUNCTION_DOMAIN;
     PetscCall(SNESGetIterationNumber(d->snes, &its));
     PetscCall(SNESGetLinearSolveIterations(d->snes, &lits));
     accept = (PetscBool)(reason > 0);
