@@ -97,6 +97,8 @@ typedef enum {
   TSL_LOAD_NKINDS
 } TslLoadKind;
 
+/* A load whose target is empty (set[0] == 0, id < 0) comes from a keyword line with OP=NEW and no data
+ * lines: it only removes the earlier loads of its kind. */
 typedef struct {
   TslLoadKind kind;
   TslTarget   target;            /* node/nset (BOUNDARY, CLOAD, CFLUX), element/elset or surface (faces) */

@@ -151,7 +151,33 @@ def jacobian_case():
           "*DLOAD\n TOP, P3, 100.0\n*DFLUX\n TOP, S3, 50.0\n*FILM\n 1, F4, 0.0, 10.0\n*END STEP\n")
 
 
+def loads_multistep():
+    """Two steps exercising *EQUATION, *CLOAD, OP=NEW, *DLOAD, *DFLUX, *CFLUX and a film coefficient
+    that follows an amplitude. Plate 1 x 0.5, rollers at the bottom, top edge kept straight by equations."""
+    nx, ny, W, H = 4, 2, 1.0, 0.5
+    nodes, elems = grid2d(nx, ny, 0.0, W, 0.0, H)
+    bottom = [n[0] for n in nodes if abs(n[2]) < 1e-12]
+    top = [n[0] for n in nodes if abs(n[2] - H) < 1e-12]
+    top_elems = [e[0] for e in elems if e[0] > nx * (ny - 1)]
+    bottom_elems = [e[0] for e in elems if e[0] <= nx]
+    eqs = "".join("*EQUATION\n 2\n %d, 2, 1.0, %d, 2, -1.0\n" % (n, top[0]) for n in top[1:])
+    write("loads_multistep_cpe4t.inp",
+          "*HEADING\n Loads across steps: equation-tied top edge under a point load, then pressure (OP=NEW), flux, film with amplitude\n" +
+          fmt_nodes(nodes) + fmt_elems(elems, "CPE4T") + nset("BOTTOM", bottom) + nset("TOP", top) +
+          elset("TOPE", top_elems) + elset("BOTE", bottom_elems) + MAT +
+          "*SOLID SECTION, ELSET=BODY, MATERIAL=STEEL\n 1.0\n" + eqs +
+          "*AMPLITUDE, NAME=HRAMP\n 0.0, 1.0, 0.1, 3.0\n"
+          "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n"
+          "*STEP, NAME=POINT LOAD\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
+          "*BOUNDARY\n BOTTOM, 2, 2\n %d, 1, 1\n*CLOAD\n %d, 2, -100.0\n" % (bottom[0], top[0]) +
+          "*DFLUX\n TOPE, S3, 50.0\n*FILM\n BOTE, F1, 0.0, 10.0\n*END STEP\n"
+          "*STEP, NAME=PRESSURE\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.01, 0.1\n"
+          "*CLOAD, OP=NEW\n*DLOAD\n TOPE, P3, 200.0\n*CFLUX\n %d, 11, 5.0\n" % top[-1] +
+          "*FILM, FILM AMPLITUDE=HRAMP\n BOTE, F1, 0.0, 10.0\n*END STEP\n")
+
+
 if __name__ == "__main__":
+    loads_multistep()
     for t in ("CPE4T", "CPS4T", "CAX4T", "C3D8T"):
         conduction_steady(t)
         expansion(t, False)

@@ -148,6 +148,7 @@ static PetscErrorCode CheckNodeTarget(TslModel *m, const TslTarget *t, TslLoc lo
 
 static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l) {
   PetscFunctionBeginUser;
+  if (!l->target.set[0] && l->target.id < 0) PetscFunctionReturn(PETSC_SUCCESS); /* OP=NEW alone: only removes */
   CHECK(l->amplitude >= -1 && l->amplitude < m->namplitude, l->loc, "bad amplitude index %" PetscInt_FMT, l->amplitude);
   CHECK(l->film_amplitude >= -1 && l->film_amplitude < m->namplitude, l->loc, "bad amplitude index %" PetscInt_FMT,
         l->film_amplitude);

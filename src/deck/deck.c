@@ -1227,7 +1227,7 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw) {
   TslStep *s = &d->m->steps[d->step];
   char buf[16];
   const char *op = ParamUpper(d, "OP", buf, sizeof(buf));
-  PetscInt amp, famp;
+  PetscInt amp, famp, nline = 0;
   PetscBool got;
 
   PetscFunctionBeginUser;
@@ -1247,6 +1247,20 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw) {
     USER_CHECK(d->nfield >= 2, LOC_FMT "*%s data line is too short", DLOC(d), d->kw);
     PetscCall(ParseTarget(d, d->field[0], &l.target));
     PetscCall(kw->line(d, &l));
+    PetscCall(TslDeckGrow(&s->loads, sizeof(TslLoad), s->nload));
+    s->loads[s->nload++] = l;
+    nline++;
+  }
+  /* "*CLOAD, OP=NEW" alone removes every earlier load of its kind: keep it as a load without target */
+  if (!nline && op && !strcmp(op, "NEW")) {
+    TslLoad l;
+    PetscCall(PetscMemzero(&l, sizeof(l)));
+    l.kind           = (TslLoadKind)kw->kind;
+    l.target.id      = -1;
+    l.amplitude      = -1;
+    l.film_amplitude = -1;
+    l.op_new         = PETSC_TRUE;
+    l.loc            = d->kwloc;
     PetscCall(TslDeckGrow(&s->loads, sizeof(TslLoad), s->nload));
     s->loads[s->nload++] = l;
   }

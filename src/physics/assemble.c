@@ -164,40 +164,53 @@ static PetscErrorCode CheckBadElement(TslProblem p, PetscInt bad)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Checks every element's geometry, and measures the mean diagonal of the element matrices per field:
+ * constraint rows are scaled by it, so that they look like the rows around them to the AMG smoothers
+ * (rows of 1 next to rows of E*thickness slow BoomerAMG down badly in parallel). */
 PetscErrorCode TslProblemCheckElements(TslProblem p)
 {
-  PetscReal R[TSL_MAX_ELEM_DOF];
-  PetscInt  bad = -1;
+  PetscReal  *R, *K, sum[4] = {0, 0, 0, 0}, g[4];
+  PetscInt    bad = -1;
   TslElemData d;
 
   PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &K));
   for (PetscInt e = 0; e < p->m->nelem && bad < 0; e++) {
     PetscBool inverted = PETSC_FALSE;
     TslProblemGather(p, e, NULL, NULL, &d);
     d.in.steady = PETSC_TRUE;
-    PetscCall(TslElementResidual(&d.in, R, NULL, &inverted));
+    PetscCall(TslElementResidual(&d.in, R, K, &inverted));
     if (inverted) bad = e;
+    else
+      for (PetscInt r = 0; r < d.nd; r++) {
+        PetscInt f = (r % p->ndof) == p->dim;
+        sum[f] += PetscAbsReal(K[r * d.nd + r]);
+        sum[2 + f] += 1;
+      }
   }
+  PetscCall(PetscFree2(R, K));
   PetscCall(CheckBadElement(p, bad));
+  PetscCall(MPIU_Allreduce(sum, g, 4, MPIU_REAL, MPIU_SUM, p->comm));
+  for (PetscInt f = 0; f < 2; f++) p->row_scale[f] = (g[2 + f] > 0 && g[f] > 0) ? g[f] / g[2 + f] : 1.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Rows of the constraints themselves: u_d - g = 0 and u_a + sum_k (c_k/c_0) u_k = 0 (owned rows only). */
+/* Rows of the constraints themselves, scaled by the field's row scale (owned rows only):
+ *   s (u_d - g) = 0    and    s (u_a + sum_k (c_k/c_0) u_k) = 0 */
 static PetscErrorCode ConstraintRows(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *F, Mat A)
 {
-  const PetscReal one = 1.0;
-
   PetscFunctionBeginUser;
   for (PetscInt d = 0; d < p->nown * p->ndof; d++) {
-    PetscInt q = p->dep[d];
+    PetscInt  q = p->dep[d];
+    PetscReal s = p->row_scale[(d % p->ndof) == p->dim];
     if (p->bc[d].active) {
-      if (mode == ASM_RESIDUAL) F[d] = xa[d] - TslProblemEvalHistory(p, &p->bc[d]);
-      else PetscCall(MatSetValuesLocal(A, 1, &d, 1, &d, &one, ADD_VALUES));
+      if (mode == ASM_RESIDUAL) F[d] = s * (xa[d] - TslProblemEvalHistory(p, &p->bc[d]));
+      else PetscCall(MatSetValuesLocal(A, 1, &d, 1, &d, &s, ADD_VALUES));
     } else if (q >= 0) {
       const TslEquation *eq = &p->m->equations[q];
       PetscScalar        v[64];
       PetscCheck(eq->n <= 64, PETSC_COMM_SELF, PETSC_ERR_SUP, "equations with more than 64 terms");
-      for (PetscInt t = 0; t < eq->n; t++) v[t] = eq->coef[t] / eq->coef[0];
+      for (PetscInt t = 0; t < eq->n; t++) v[t] = s * eq->coef[t] / eq->coef[0];
       if (mode == ASM_RESIDUAL) {
         F[d] = 0;
         for (PetscInt t = 0; t < eq->n; t++) F[d] += v[t] * xa[p->eq_ldof[q][t]];

@@ -122,19 +122,26 @@ static PetscErrorCode SetUpEquations(TslProblem p)
     char         loc[PETSC_MAX_PATH_LEN + 32];
     PetscCheck(eq->gdof, PETSC_COMM_SELF, PETSC_ERR_PLIB, "equation without global dofs");
     PetscCheck(eq->coef[0] != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: the first coefficient of an *EQUATION must not be zero", TslLocString(m, eq->loc, loc, sizeof(loc)));
+    PetscBool complete = PETSC_TRUE;
     PetscCall(PetscMalloc1(eq->n, &p->eq_ldof[q]));
     for (PetscInt t = 0; t < eq->n; t++) {
       PetscInt n;
       PetscCall(TslProblemLocalNode(p, eq->gdof[t] / p->ndof, &n));
-      PetscCheck(n >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "equation term not local");
+      if (n < 0) complete = PETSC_FALSE;
       p->eq_ldof[q][t] = n * p->ndof + eq->gdof[t] % p->ndof;
+    }
+    /* the distribution brings every term of an equation whose eliminated dof is used here; an
+     * equation seen only through such a brought-in node is not needed on this rank */
+    if (!complete) {
+      PetscCall(PetscFree(p->eq_ldof[q]));
+      continue;
     }
     PetscCheck(p->dep[p->eq_ldof[q][0]] < 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: node %" PetscInt_FMT " dof %" PetscInt_FMT " is already eliminated by another *EQUATION",
                TslLocString(m, eq->loc, loc, sizeof(loc)), eq->node[0], eq->dof[0]);
     p->dep[p->eq_ldof[q][0]] = q;
   }
   for (PetscInt q = 0; q < m->nequation; q++)
-    for (PetscInt t = 1; t < m->equations[q].n; t++) {
+    for (PetscInt t = 1; p->eq_ldof[q] && t < m->equations[q].n; t++) {
       char loc[PETSC_MAX_PATH_LEN + 32];
       PetscCheck(p->dep[p->eq_ldof[q][t]] < 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                  "%s: node %" PetscInt_FMT " dof %" PetscInt_FMT " is eliminated by another *EQUATION; chained equations are not supported",
@@ -161,10 +168,11 @@ PetscErrorCode TslProblemCreate(MPI_Comm comm, TslModel *local, TslProblem *prob
     p->elem_lnode[k] = TslModelNodeIndex(local, local->elem_conn[k]);
     PetscCheck(p->elem_lnode[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "element node %" PetscInt_FMT " missing on this rank", local->elem_conn[k]);
   }
+  /* checks that can fail on one rank come before the first collective call */
   PetscCall(SetUpMaterials(p));
   PetscCall(SetUpInitialTemperature(p));
-  PetscCall(SetUpVectors(p));
   PetscCall(SetUpEquations(p));
+  PetscCall(SetUpVectors(p));
   PetscCall(PetscCalloc2(p->nn * p->ndof, &p->bc, p->nn * p->ndof, &p->nload));
   PetscCall(PetscCalloc1(local->nelem + 1, &p->face_start));
   PetscCall(TslProblemCheckElements(p));

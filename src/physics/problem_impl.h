@@ -38,6 +38,7 @@ struct _p_TslProblem {
   PetscInt           *elem_lnode; /* local node of each element node (model elem_ptr layout) */
   TslElementMaterial *emat;       /* [nelem] */
   PetscReal          *theta_init; /* [nn] */
+  PetscReal           row_scale[2]; /* constraint-row scale for displacement and temperature dofs */
 
   /* step state */
   PetscInt      step;
