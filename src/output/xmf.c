@@ -4,16 +4,15 @@
 #include "output_impl.h"
 #include <errno.h>
 
-/* ParaView's XDMF reader wants 3 components for a Vector; 6 is a symmetric tensor (Tensor6) and 9 a
- * full one. Anything else is a plain N x ncomp Matrix. */
+/* ParaView's XDMF reader wants 3 components for a Vector and 9 for a full Tensor. Six components are
+ * written as a plain Matrix, not Tensor6: our stresses and strains are in the dialect's order (11, 22,
+ * 33, 12, 13, 23), XDMF's Tensor6 is (xx, xy, xz, yy, yz, zz), and a reader would label them wrongly. */
 static const char *AttributeType(PetscInt ncomp) {
   switch (ncomp) {
   case 1:
     return "Scalar";
   case 3:
     return "Vector";
-  case 6:
-    return "Tensor6";
   case 9:
     return "Tensor";
   default:

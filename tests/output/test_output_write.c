@@ -190,7 +190,7 @@ static PetscErrorCode CheckXmf(const char *dir, const char *job) {
       EXPECT(strstr(text, want), "%s: does not mention %s", path, want);
     }
   }
-  EXPECT(strstr(text, "AttributeType=\"Tensor6\" Center=\"Cell\""), "%s: S not a cell Tensor6", path);
+  EXPECT(strstr(text, "AttributeType=\"Matrix\" Center=\"Cell\""), "%s: S not a cell Matrix", path);
   EXPECT(strstr(text, "AttributeType=\"Matrix\" Center=\"Node\""), "%s: V not a node Matrix", path);
   EXPECT(!strstr(text, ".part"), "%s mentions a .part file", path);
   PetscCall(PetscFree(text));
