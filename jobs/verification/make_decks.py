@@ -170,7 +170,8 @@ def loads_multistep():
           "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n"
           "*STEP, NAME=POINT LOAD\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
           "*BOUNDARY\n BOTTOM, 2, 2\n %d, 1, 1\n*CLOAD\n %d, 2, -100.0\n" % (bottom[0], top[0]) +
-          "*DFLUX\n TOPE, S3, 50.0\n*FILM\n BOTE, F1, 0.0, 10.0\n*END STEP\n"
+          "*DFLUX\n TOPE, S3, 50.0\n*FILM\n BOTE, F1, 0.0, 10.0\n"
+          "*NODE PRINT, NSET=TOP\n U, NT\n*EL PRINT, ELSET=TOPE\n S\n*END STEP\n"
           "*STEP, NAME=PRESSURE\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.01, 0.1\n"
           "*CLOAD, OP=NEW\n*DLOAD\n TOPE, P3, 200.0\n*CFLUX\n %d, 11, 5.0\n" % top[-1] +
           "*FILM, FILM AMPLITUDE=HRAMP\n BOTE, F1, 0.0, 10.0\n*END STEP\n")

@@ -198,8 +198,9 @@ static PetscErrorCode WriteFrame(Driver *d, PetscInt step, PetscInt inc, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* *NODE PRINT tables at the end of a step: one line per node of the set owned here. */
-static PetscErrorCode NodePrint(Driver *d, const TslStep *step)
+/* *NODE PRINT / *EL PRINT tables at the end of a step: one line per node (element) of the set, printed
+ * by the rank that owns it. */
+static PetscErrorCode PrintTables(Driver *d, const TslStep *step)
 {
   const TslModel *m;
 
@@ -207,17 +208,32 @@ static PetscErrorCode NodePrint(Driver *d, const TslStep *step)
   PetscCall(TslProblemGetModel(d->prob, &m));
   for (PetscInt r = 0; r < step->nout; r++) {
     const TslOutputRequest *req = &step->out[r];
-    PetscInt                k   = req->node && req->print ? TslModelFindNodeSet(m, req->set) : -1;
-    if (!(req->node && req->print)) continue;
-    PetscCall(PetscPrintf(d->comm, "node print, step %s, set %s:\n", step->name, req->set));
+    PetscInt                k, n;
+    const TslSet           *set;
+    if (!req->print) continue;
+    k   = req->node ? TslModelFindNodeSet(m, req->set) : TslModelFindElementSet(m, req->set);
+    set = k < 0 ? NULL : req->node ? &m->nsets[k] : &m->elsets[k];
+    PetscCall(PetscPrintf(d->comm, "%s print, step %s, set %s:\n", req->node ? "node" : "element", step->name, req->set));
     for (PetscInt v = 0; v < req->nvar; v++) {
       PetscInt   nc;
       PetscReal *vals;
-      if (TslProblemNodeField(d->prob, req->var[v], &nc, &vals)) continue;
-      for (PetscInt i = 0; k >= 0 && i < m->nsets[k].n; i++) {
-        PetscInt n = TslModelNodeIndex(m, m->nsets[k].ids[i]);
-        if (n < 0 || n >= m->nnode_owned) continue;
-        PetscCall(PetscSynchronizedPrintf(d->comm, "  %8" PetscInt_FMT " %-4s", m->node_id[n], req->var[v]));
+      PetscErrorCode ierr;
+      PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
+      ierr = req->node ? TslProblemNodeField(d->prob, req->var[v], &nc, &vals) : TslProblemElementField(d->prob, req->var[v], &nc, &vals);
+      PetscCall(PetscPopErrorHandler());
+      if (ierr) {
+        PetscCall(PetscPrintf(d->comm, "  %s: not available\n", req->var[v]));
+        continue;
+      }
+      for (PetscInt i = 0; set && i < set->n; i++) {
+        if (req->node) {
+          n = TslModelNodeIndex(m, set->ids[i]);
+          if (n < 0 || n >= m->nnode_owned) continue;
+        } else {
+          n = TslModelElementIndex(m, set->ids[i]);
+          if (n < 0) continue;
+        }
+        PetscCall(PetscSynchronizedPrintf(d->comm, "  %8" PetscInt_FMT " %-4s", set->ids[i], req->var[v]));
         for (PetscInt c = 0; c < nc; c++) PetscCall(PetscSynchronizedPrintf(d->comm, " % .6e", (double)vals[n * nc + c]));
         PetscCall(PetscSynchronizedPrintf(d->comm, "\n"));
       }
@@ -318,7 +334,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       }
     }
   }
-  PetscCall(NodePrint(d, step));
+  PetscCall(PrintTables(d, step));
   PetscCall(PetscInfo(NULL, "step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %" PetscInt_FMT " attempts\n", s + 1, inc, attempts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
