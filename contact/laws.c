@@ -11,7 +11,7 @@ PetscErrorCode TslTableEvaluate(PetscInt n, const PetscReal x[], const PetscReal
   for (PetscInt i = 1; i < n; i++)
     PetscCheck(x[i] > x[i - 1], PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
                "Table arguments must increase strictly (%g after %g)", (double)x[i], (double)x[i - 1]);
-  if (n == 1 || arg <= x[0]) {
+  if (n == 1 || arg < x[0]) {
     v = y[0];
   } else if (arg >= x[n - 1]) {
     v = y[n - 1];
