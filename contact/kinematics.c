@@ -75,9 +75,9 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
     PetscReal dx;
 
     F = ProjectionFunction(geo, DVar(x, TSL_DUAL_XI));
-    dx = -F.v / F.d[TSL_DUAL_XI];
     PetscCheck(PetscIsNormalReal(F.d[TSL_DUAL_XI]), PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED,
                "Contact projection: singular Newton derivative (node too far from a concave smoothed corner?)");
+    dx = -F.v / F.d[TSL_DUAL_XI];
     dx = PetscMax(-0.25, PetscMin(0.25, dx)); /* the smoothed normal turns quickly: limit the step */
     x += dx;
     if (x < -1 || x > 2) {
