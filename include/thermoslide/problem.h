@@ -20,11 +20,14 @@ typedef struct _p_TslProblem *TslProblem;
 
 /* Heat and energy totals of the current state (sums over all ranks). Rates are per unit time. */
 typedef struct {
-  PetscReal heat_in;       /* applied heat: CFLUX + surface and body fluxes */
-  PetscReal film_out;      /* heat leaving through films */
-  PetscReal reaction_heat; /* heat entering through prescribed temperatures (sum of RFL) */
-  PetscReal stored_rate;   /* change of stored heat over the increment / dt (0 in steady state) */
-  PetscReal balance;       /* heat_in + reaction_heat - film_out - stored_rate */
+  PetscReal heat_in;        /* applied heat: CFLUX + surface and body fluxes */
+  PetscReal film_out;       /* heat leaving through films */
+  PetscReal reaction_heat;  /* heat entering through prescribed temperatures (sum of RFL) */
+  PetscReal stored_rate;    /* change of stored heat over the increment / dt (0 in steady state) */
+  PetscReal interface_heat; /* heat crossing contact interfaces, main -> secondary (internal) */
+  PetscReal dissipation;    /* frictional dissipation rate */
+  PetscReal friction_heat;  /* part of the dissipation converted to heat (eta) */
+  PetscReal balance;        /* heat_in + reaction_heat + friction_heat - film_out - stored_rate */
 } TslHeatBalance;
 
 /* Takes ownership of the local model. */
@@ -58,6 +61,15 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
 PetscErrorCode TslProblemHeatBalance(TslProblem prob, TslHeatBalance *hb);
 PetscErrorCode TslProblemNodeField(TslProblem prob, const char *name, PetscInt *ncomp, PetscReal **vals);
 PetscErrorCode TslProblemElementField(TslProblem prob, const char *name, PetscInt *ncomp, PetscReal **vals);
+/* Contact (collective). Search: pairs secondary nodes at the current solution, rebuilding the matrix
+ * pattern when pairing changed (then *repattern: hand the new matrix to the solver). Update: after a
+ * converged solve, re-pairs nodes that left their segment and updates augmented-Lagrange multipliers;
+ * *again: solve the increment again. Commit / Rollback: accept or reject the increment's contact state. */
+PetscErrorCode TslProblemContactSearch(TslProblem prob, PetscBool *repattern);
+PetscErrorCode TslProblemContactUpdate(TslProblem prob, PetscBool *again, PetscBool *repattern);
+PetscErrorCode TslProblemContactCommit(TslProblem prob);
+PetscErrorCode TslProblemContactRollback(TslProblem prob);
+
 /* Largest temperature change over the increment (all ranks). */
 PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta);
 /* Reference magnitudes of the displacement and temperature residuals (for convergence tests). */

@@ -7,12 +7,6 @@
  */
 #include "problem_impl.h"
 
-typedef enum { ASM_RESIDUAL, ASM_JACOBIAN, ASM_PATTERN, ASM_RAW } AsmMode;
-
-typedef struct {
-  PetscReal flux_in; /* heat added by fluxes (faces, body) */
-  PetscReal film;    /* heat added by films (negative when heat leaves) */
-} AsmHeat;
 
 void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const PetscScalar *xoa, TslElemData *d)
 {
@@ -59,7 +53,7 @@ static PetscErrorCode AddRow(AsmMode mode, Mat A, PetscScalar *f, PetscInt row, 
 
 /* Inserts an element block, applying the constraints: rows of prescribed dofs are dropped, rows of
  * dofs eliminated by an equation go to the other terms' rows with weight -c_k/c_0 (T^T R, T^T K). */
-static PetscErrorCode Insert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[], const PetscReal K[])
+PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[], const PetscReal K[])
 {
   PetscFunctionBeginUser;
   for (PetscInt r = 0; r < n; r++) {
@@ -105,13 +99,13 @@ static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScala
 
   PetscFunctionBeginUser;
   *bad_elem = -1;
-  if (heat) heat->flux_in = heat->film = 0;
+  if (heat) PetscCall(PetscMemzero(heat, sizeof(*heat)));
   PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &K));
   for (PetscInt e = 0; e < m->nelem; e++) {
     PetscBool inverted = PETSC_FALSE;
     TslProblemGather(p, e, xa, xoa, &d);
     if (mode == ASM_PATTERN) {
-      PetscCall(Insert(p, mode, A, f, d.nd, d.ld, NULL, NULL));
+      PetscCall(TslProblemInsert(p, mode, A, f, d.nd, d.ld, NULL, NULL));
       continue;
     }
     PetscCall(TslElementResidual(&d.in, R, need_k ? K : NULL, &inverted));
@@ -119,7 +113,7 @@ static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScala
       if (*bad_elem < 0) *bad_elem = e;
       continue;
     }
-    PetscCall(Insert(p, mode, A, f, d.nd, d.ld, R, need_k ? K : NULL));
+    PetscCall(TslProblemInsert(p, mode, A, f, d.nd, d.ld, R, need_k ? K : NULL));
     for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
       const TslFaceRecord *r = &p->face[i];
       PetscReal            value, sink, h = 0;
@@ -127,20 +121,21 @@ static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScala
       PetscCall(PetscArrayzero(R, d.nd));
       if (need_k) PetscCall(PetscArrayzero(K, d.nd * d.nd));
       PetscCall(TslElementFaceLoad(&d.in, r->kind, r->face, value, sink, R, need_k ? K : NULL, &h));
-      PetscCall(Insert(p, mode, A, f, d.nd, d.ld, R, need_k ? K : NULL));
+      PetscCall(TslProblemInsert(p, mode, A, f, d.nd, d.ld, R, need_k ? K : NULL));
       if (heat) {
         if (r->kind == TSL_FACE_FILM) heat->film += h;
         else if (r->kind != TSL_FACE_PRESSURE) heat->flux_in += h;
       }
     }
   }
+  PetscCall(TslProblemContactAssemble(p, mode, xa, f, A, heat));
   /* nodal loads (owned dofs only): residual = internal - external */
   if (mode == ASM_RESIDUAL || mode == ASM_RAW) {
     for (PetscInt dof = 0; dof < p->nown * p->ndof; dof++) {
       PetscReal v;
       if (!p->nload[dof].active) continue;
       v = -TslProblemEvalHistory(p, &p->nload[dof]);
-      PetscCall(Insert(p, mode, A, f, 1, &dof, &v, NULL));
+      PetscCall(TslProblemInsert(p, mode, A, f, 1, &dof, &v, NULL));
       if (heat && dof % p->ndof == p->dim) heat->flux_in -= v;
     }
   }
@@ -343,7 +338,7 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
 {
   AsmHeat            heat;
   const PetscScalar *r;
-  PetscReal          loc[4] = {0, 0, 0, 0}, g[4];
+  PetscReal          loc[7] = {0, 0, 0, 0, 0, 0, 0}, g[7];
 
   PetscFunctionBeginUser;
   PetscCall(Residual(p, ASM_RAW, p->X, p->Rraw, &heat));
@@ -355,6 +350,9 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
   PetscCall(VecRestoreArrayRead(p->Rraw, &r));
   loc[0] = heat.flux_in;
   loc[1] = -heat.film;
+  loc[4] = heat.interface;
+  loc[5] = heat.dissipation;
+  loc[6] = heat.friction_heat;
   if (!p->steady) {
     Vec                xl, xol;
     const PetscScalar *xa, *xoa;
@@ -369,11 +367,14 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
     PetscCall(RestoreStates(p, &xl, &xol, &xa, &xoa));
     loc[3] /= (p->dt > 0 ? p->dt : 1.0);
   }
-  PetscCall(MPIU_Allreduce(loc, g, 4, MPIU_REAL, MPIU_SUM, p->comm));
-  hb->heat_in       = g[0];
-  hb->film_out      = g[1];
-  hb->reaction_heat = g[2];
-  hb->stored_rate   = g[3];
-  hb->balance       = g[0] + g[2] - g[1] - g[3];
+  PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_SUM, p->comm));
+  hb->heat_in        = g[0];
+  hb->film_out       = g[1];
+  hb->reaction_heat  = g[2];
+  hb->stored_rate    = g[3];
+  hb->interface_heat = g[4];
+  hb->dissipation    = g[5];
+  hb->friction_heat  = g[6];
+  hb->balance        = g[0] + g[2] + g[6] - g[1] - g[3];
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -2,7 +2,8 @@
 #include "problem_impl.h"
 #include <string.h>
 
-/* Node fields: U (3 comps, z = 0 in 2D), NT, RF (3), RFL. RF/RFL are the unconstrained residual at
+/* Node fields: U (3 comps, z = 0 in 2D), NT, RF (3), RFL, and the contact fields CPRESS, CSLIP,
+ * CSTATUS, HFLA (see contact.c). RF/RFL are the unconstrained residual at
  * prescribed dofs, as computed by the last TslProblemHeatBalance; zero elsewhere. */
 PetscErrorCode TslProblemNodeField(TslProblem p, const char *name, PetscInt *ncomp, PetscReal **vals)
 {
@@ -11,6 +12,12 @@ PetscErrorCode TslProblemNodeField(TslProblem p, const char *name, PetscInt *nco
   Vec                src = (is_rf || is_rfl) ? p->Rraw : p->X;
 
   PetscFunctionBeginUser;
+  if (!strcmp(name, "CPRESS") || !strcmp(name, "CSLIP") || !strcmp(name, "CSTATUS") || !strcmp(name, "HFLA")) {
+    *ncomp = 1;
+    PetscCall(PetscCalloc1(p->nown, vals));
+    PetscCall(TslProblemContactNodeField(p, name, *vals));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCheck(is_u || is_nt || is_rf || is_rfl, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "unknown node field %s", name);
   *ncomp = (is_u || is_rf) ? 3 : 1;
   PetscCall(PetscCalloc1(p->nown * *ncomp, vals));

@@ -176,6 +176,7 @@ PetscErrorCode TslProblemCreate(MPI_Comm comm, TslModel *local, TslProblem *prob
   PetscCall(PetscCalloc2(p->nn * p->ndof, &p->bc, p->nn * p->ndof, &p->nload));
   PetscCall(PetscCalloc1(local->nelem + 1, &p->face_start));
   PetscCall(TslProblemCheckElements(p));
+  PetscCall(TslProblemContactSetUp(p));
   *prob = p;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -205,6 +206,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
     for (PetscInt q = 0; q < p->m->nequation; q++) PetscCall(PetscFree(p->eq_ldof[q]));
   PetscCall(PetscFree(p->eq_ldof));
   PetscCall(PetscFree(p->dep));
+  PetscCall(TslProblemContactDestroy(p));
   PetscCall(TslModelDestroy(&p->m));
   PetscCall(PetscFree(p));
   *prob = NULL;

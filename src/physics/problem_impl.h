@@ -1,6 +1,30 @@
 /* Private layout of TslProblem, shared by the files of src/physics/. */
 #pragma once
 #include <thermoslide/problem.h>
+#include <thermoslide/contact.h>
+#include <string.h>
+
+/* One contact pair on this rank: the law and the main surface (all its nodes are local here when the
+ * rank owns secondary nodes of the pair; active is false otherwise). */
+typedef struct {
+  TslContactLaw law;
+  PetscBool     active;
+  PetscInt      nmain;
+  PetscInt     *main_lnode; /* [2*nmain] local nodes of each segment, main body on the left */
+  PetscInt     *prev, *next; /* [nmain] neighbouring segments, -1 at the ends */
+  PetscReal     smooth, thickness, search_radius;
+  TslKinematics kin;
+} TslContactSurface;
+
+/* A secondary node owned by this rank: its pairing and history (current and committed). */
+typedef struct {
+  PetscInt          pair, lnode;
+  PetscReal         length; /* tributary length on the secondary surface */
+  PetscInt          seg, seg_c;
+  TslContactHistory hist, hist_c;
+  PetscReal         cslip, cslip_c; /* accumulated slip */
+  TslContactOutput  out;            /* last evaluation */
+} TslContactNode;
 
 /* Amplitude codes besides an index into model->amplitudes[]. */
 #define TSL_AMP_DEFAULT (-1) /* the step's default: RAMP or STEP */
@@ -52,6 +76,12 @@ struct _p_TslProblem {
   TslFaceRecord   *face;       /* sorted by element */
   PetscInt        *face_start; /* [nelem+1] CSR over face[] */
 
+  /* contact */
+  PetscInt           ncsurf, ncnode;
+  TslContactSurface *csurf;
+  TslContactNode    *cnode;
+  PetscReal          augment_tol;
+
   /* equations: dep[d] = index into m->equations if local dof d is eliminated, else -1 */
   PetscInt  *dep;
   PetscInt **eq_ldof; /* [nequation][n] local dof of each term */
@@ -66,6 +96,22 @@ typedef struct {
 } TslElemData;
 
 void           TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const PetscScalar *xoa, TslElemData *d);
+typedef enum { ASM_RESIDUAL, ASM_JACOBIAN, ASM_PATTERN, ASM_RAW } AsmMode;
+
+/* Heat totals gathered during an assembly (this rank's share, per unit time). */
+typedef struct {
+  PetscReal flux_in;       /* heat added by fluxes (faces, body, nodes) */
+  PetscReal film;          /* heat added by films (negative when heat leaves) */
+  PetscReal interface;     /* heat conducted and radiated across contact interfaces (main -> secondary) */
+  PetscReal dissipation;   /* frictional dissipation rate */
+  PetscReal friction_heat; /* part of it converted to heat (eta) */
+} AsmHeat;
+
+PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[], const PetscReal K[]);
+PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);
+PetscErrorCode TslProblemContactSetUp(TslProblem p);
+PetscErrorCode TslProblemContactDestroy(TslProblem p);
+PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[]);
 PetscReal      TslProblemEvalHistory(TslProblem p, const TslHistoryValue *h);
 PetscErrorCode TslProblemLocalNode(TslProblem p, PetscInt gnum, PetscInt *lnode);
 PetscErrorCode TslProblemPreallocate(TslProblem p);

@@ -4,12 +4,14 @@
 #include <petscsnes.h>
 #include <string.h>
 
-#define NFIELD_NODE 4
+#define NFIELD_NODE 8
 #define NFIELD_ELEM 3
-static const char *const NodeFields[NFIELD_NODE] = {"U", "NT", "RF", "RFL"};
+#define NFIELD_NODE_BASIC 4 /* the contact fields follow */
+static const char *const NodeFields[NFIELD_NODE] = {"U", "NT", "RF", "RFL", "CPRESS", "CSLIP", "CSTATUS", "HFLA"};
 static const char *const ElemFields[NFIELD_ELEM] = {"S", "E", "HFL"};
 
-static const char *const HistoryColumns[] = {"step", "increment", "time", "step_time", "dt", "newton_its", "heat_in", "film_heat_out", "reaction_heat", "stored_heat_rate", "balance_residual"};
+static const char *const HistoryColumns[] = {"step", "increment", "time", "step_time", "dt", "newton_its", "heat_in", "film_heat_out", "reaction_heat", "stored_heat_rate",
+                                             "interface_heat", "friction_dissipation_rate", "friction_dissipation_total", "friction_heat_total", "balance_residual"};
 #define NHISTORY ((PetscInt)(sizeof(HistoryColumns) / sizeof(HistoryColumns[0])))
 
 typedef struct {
@@ -28,6 +30,8 @@ typedef struct {
   PetscInt   frequency;
   PetscInt   frame_step, frame_inc; /* last frame written */
   PetscInt   done_step, done_inc;   /* last converged increment */
+  PetscReal  dissipated, absorbed;  /* frictional dissipation and the heat made of it, since the start */
+  PetscInt   max_contact_its;
   PetscReal  done_time, done_step_time, done_dt;
 } Driver;
 
@@ -120,6 +124,8 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(PetscOptionsReal("-tsl_cutback", "increment factor after a failed increment", NULL, d->cutback, &d->cutback, NULL));
   PetscCall(PetscOptionsReal("-tsl_growth", "increment factor after an easy increment", NULL, d->growth, &d->growth, NULL));
   PetscCall(PetscOptionsInt("-tsl_easy_its", "Newton iterations that count as easy", NULL, d->easy_its, &d->easy_its, NULL));
+  d->max_contact_its = 8;
+  PetscCall(PetscOptionsInt("-tsl_contact_max_its", "solves of one increment while contact pairing or multipliers change", NULL, d->max_contact_its, &d->max_contact_its, NULL));
   PetscCall(PetscOptionsInt("-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", NULL, d->debug_diverge_step, &d->debug_diverge_step, NULL));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -139,7 +145,7 @@ static PetscErrorCode SetUpOutput(Driver *d, const char *dir, const char *jobnam
   PetscCall(TslOutputSetMesh(d->out, m->nnode_global, m->nnode_owned, m->node_nat, m->node_id, m->node_xyz, m->nelem_global, m->nelem, m->elem_nat, m->elem_id, xtype, m->elem_ptr, conn));
   PetscCall(PetscFree2(xtype, conn));
   PetscCall(TslHistoryCreate(d->comm, dir, jobname, NHISTORY, HistoryColumns, &d->hist));
-  for (PetscInt i = 0; i < NFIELD_NODE; i++) d->node_on[i] = PETSC_TRUE;
+  for (PetscInt i = 0; i < NFIELD_NODE; i++) d->node_on[i] = (PetscBool)(i < NFIELD_NODE_BASIC || m->npair > 0);
   for (PetscInt i = 0; i < NFIELD_ELEM; i++) d->elem_on[i] = PETSC_TRUE;
   d->frequency = 1;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -244,6 +250,39 @@ static PetscErrorCode PrintTables(Driver *d, const TslStep *step)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* One increment's solve: contact pairing at its start, Newton, and again while contact pairing or
+ * augmented-Lagrange multipliers change (at most -tsl_contact_max_its solves). */
+static PetscErrorCode SolveIncrement(Driver *d, Vec X, SNESConvergedReason *reason, PetscInt *its, PetscInt *lits)
+{
+  PetscBool again = PETSC_TRUE, repattern;
+  PetscInt  n = 0;
+
+  PetscFunctionBeginUser;
+  *its = *lits = 0;
+  PetscCall(TslProblemContactSearch(d->prob, &repattern));
+  while (again) {
+    PetscInt i, l;
+    if (repattern) {
+      Mat J;
+      PetscCall(TslProblemGetJacobian(d->prob, &J));
+      PetscCall(SNESSetJacobian(d->snes, J, J, TslProblemFormJacobian, d->prob));
+    }
+    PetscCall(SNESSolve(d->snes, NULL, X));
+    PetscCall(SNESGetConvergedReason(d->snes, reason));
+    PetscCall(SNESGetIterationNumber(d->snes, &i));
+    PetscCall(SNESGetLinearSolveIterations(d->snes, &l));
+    *its += i, *lits += l;
+    if (*reason <= 0) break;
+    PetscCall(TslProblemContactUpdate(d->prob, &again, &repattern));
+    if (again && ++n >= d->max_contact_its) {
+      PetscCall(PetscInfo(d->snes, "contact state still changing after %" PetscInt_FMT " solves\n", n));
+      *reason = SNES_DIVERGED_MAX_IT;
+      break;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
 {
   const TslModel *m;
@@ -280,11 +319,8 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscCall(VecCopy(X, Xold));
     PetscCall(TslProblemSetTime(d->prob, t + dt, dt, *total_time + dt));
     PetscCall(TslProblemApplyPrescribed(d->prob, X));
-    PetscCall(SNESSolve(d->snes, NULL, X));
-    PetscCall(SNESGetConvergedReason(d->snes, &reason));
+    PetscCall(SolveIncrement(d, X, &reason, &its, &lits));
     if (s + 1 == d->debug_diverge_step) reason = SNES_DIVERGED_FUNCTION_DOMAIN;
-    PetscCall(SNESGetIterationNumber(d->snes, &its));
-    PetscCall(SNESGetLinearSolveIterations(d->snes, &lits));
     accept = (PetscBool)(reason > 0);
     if (accept && !step->steady && step->deltmx > 0) {
       PetscCall(TslProblemMaxTemperatureChange(d->prob, &dtheta));
@@ -293,6 +329,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     if (!accept) {
       PetscReal f = reason > 0 ? PetscMax(d->cutback, 0.85 * step->deltmx / dtheta) : d->cutback;
       PetscCall(VecCopy(Xold, X));
+      PetscCall(TslProblemContactRollback(d->prob));
       PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": %s; cutback dt %g -> %g\n", s + 1, inc + 1,
                             reason > 0 ? "temperature change exceeds DELTMX" : SNESConvergedReasons[reason], (double)dt, (double)(dt * f)));
       PetscCheck(!step->direct, d->comm, PETSC_ERR_NOT_CONVERGED, "step %" PetscInt_FMT ": increment %" PetscInt_FMT " did not converge (%s) and DIRECT forbids a cutback",
@@ -311,6 +348,9 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       *total_time += dt;
       inc++;
       PetscCall(TslProblemHeatBalance(d->prob, &hb));
+      PetscCall(TslProblemContactCommit(d->prob));
+      d->dissipated += hb.dissipation * dt;
+      d->absorbed += hb.friction_heat * dt;
       PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": time %.6g  dt %.4g  newton %" PetscInt_FMT "  linear %" PetscInt_FMT "  heat in %.6g  film out %.6g  balance %.3g\n",
                             s + 1, inc, (double)*total_time, (double)dt, its, lits, (double)hb.heat_in, (double)hb.film_out, (double)hb.balance));
       row[0]  = (PetscReal)(s + 1);
@@ -323,7 +363,11 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       row[7]  = hb.film_out;
       row[8]  = hb.reaction_heat;
       row[9]  = hb.stored_rate;
-      row[10] = hb.balance;
+      row[10] = hb.interface_heat;
+      row[11] = hb.dissipation;
+      row[12] = d->dissipated;
+      row[13] = d->absorbed;
+      row[14] = hb.balance;
       PetscCall(TslHistoryAppend(d->hist, row));
       d->done_step = s + 1, d->done_inc = inc, d->done_time = *total_time, d->done_step_time = t, d->done_dt = dt;
       if (last || inc % d->frequency == 0) PetscCall(WriteFrame(d, s + 1, inc, *total_time));

@@ -1,0 +1,412 @@
+/* Finite-sliding node-to-surface contact in the assembly (2D: plane and axisymmetric models).
+ *
+ * Each secondary node owned by this rank is paired with one main segment (or none). All nodes of the
+ * main surface are ghosts on every rank that owns secondary nodes of the pair (see src/mesh/), so the
+ * main-surface data a rank needs arrives with the ordinary ghost update in every Newton iteration, and
+ * the contact blocks are inserted through the same constraint-aware path as element blocks (rows of
+ * ghost nodes reach their owners through PETSc's stash).
+ *
+ * Pairing: a bin grid over the current main segments gives the candidates of each secondary node (never
+ * a loop over all pairs); the nearest segment whose projection lies inside it wins. A node whose
+ * closest point is beyond the end of the main surface is out of contact: no force, no heat. Pairing is
+ * fixed during a Newton solve; after convergence, nodes whose projection left their segment are
+ * re-paired and the increment is solved again (the matrix pattern is rebuilt when pairing changes).
+ *
+ * History (projection at the start of the increment, sticking anchor, augmented-Lagrange multiplier) is
+ * committed when an increment is accepted and restored on a cutback.
+ *
+ * The laws and the element kernel are in contact/ (include/thermoslide/contact.h).
+ */
+#include "problem_impl.h"
+
+/* Local nodes of a contact element in kernel order: s, m1, m2, [m0], [m3]. */
+static PetscInt ElementNodes(TslProblem p, const TslContactNode *cn, PetscInt nodes[TSL_CONTACT_MAX_NODES])
+{
+  const TslContactSurface *cs = &p->csurf[cn->pair];
+  PetscInt                 n  = 0, seg = cn->seg;
+
+  nodes[n++] = cn->lnode;
+  nodes[n++] = cs->main_lnode[2 * seg];
+  nodes[n++] = cs->main_lnode[2 * seg + 1];
+  if (cs->smooth > 0 && cs->prev[seg] >= 0) nodes[n++] = cs->main_lnode[2 * cs->prev[seg]];
+  if (cs->smooth > 0 && cs->next[seg] >= 0) nodes[n++] = cs->main_lnode[2 * cs->next[seg] + 1];
+  return n;
+}
+
+/* Reference coordinates (2) and current unknowns (u_x, u_y, theta) of a local node. */
+static void NodeData(TslProblem p, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[3])
+{
+  for (PetscInt c = 0; c < 2; c++) x[c] = p->m->node_xyz[3 * l + c];
+  for (PetscInt c = 0; c < 3; c++) u[c] = xa ? PetscRealPart(xa[l * p->ndof + c]) : 0;
+}
+
+static void CurrentPosition(TslProblem p, const PetscScalar *xa, PetscInt l, PetscReal y[2])
+{
+  PetscReal x[2], u[3];
+  NodeData(p, xa, l, x, u);
+  y[0] = x[0] + u[0], y[1] = x[1] + u[1];
+}
+
+PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat)
+{
+  PetscReal R[TSL_CONTACT_MAX_DOF], K[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF], xp[2], up[3], xn[2], un[3];
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    TslContactNode          *cn = &p->cnode[i];
+    const TslContactSurface *cs;
+    TslContactInput          in;
+    PetscInt                 nodes[TSL_CONTACT_MAX_NODES], n, ld[TSL_CONTACT_MAX_DOF];
+
+    if (cn->seg < 0) continue;
+    cs = &p->csurf[cn->pair];
+    n  = ElementNodes(p, cn, nodes);
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt c = 0; c < 3; c++) ld[3 * a + c] = nodes[a] * p->ndof + c;
+    if (mode == ASM_PATTERN) {
+      PetscCall(TslProblemInsert(p, mode, A, f, 3 * n, ld, NULL, NULL));
+      continue;
+    }
+    PetscCall(PetscMemzero(&in, sizeof(in)));
+    in.kin       = cs->kin;
+    in.thickness = cs->thickness;
+    in.length    = cn->length;
+    for (PetscInt a = 0; a < 3; a++) NodeData(p, xa, nodes[a], in.x[a], in.u[a]);
+    if (cs->smooth > 0 && cs->prev[cn->seg] >= 0) {
+      NodeData(p, xa, nodes[3], xp, up);
+      in.x_prev = xp, in.u_prev = up;
+    }
+    if (cs->smooth > 0 && cs->next[cn->seg] >= 0) {
+      NodeData(p, xa, nodes[n - 1], xn, un);
+      in.x_next = xn, in.u_next = un;
+    }
+    in.smoothing = cs->smooth;
+    in.dt        = p->dt > 0 ? p->dt : 1.0;
+    in.hist      = cn->hist;
+    PetscCall(TslContactElement(&cs->law, &in, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
+    PetscCall(TslProblemInsert(p, mode, A, f, 3 * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
+    if (heat) {
+      heat->interface += cn->out.heat_flux * cn->out.area;
+      heat->dissipation += cn->out.dissipation_rate * cn->out.area;
+      heat->friction_heat += cn->out.heat_generation * cn->out.area;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Moves a node's history from segment `from` to segment `to` along the surface (neighbour by neighbour);
+ * returns PETSC_FALSE when `to` is not within a few segments (the history then starts afresh). */
+static PetscBool TransferHistory(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt from, PetscInt to, TslContactHistory *h)
+{
+  for (PetscInt side = -1; side <= 1; side += 2) {
+    TslContactHistory t = *h;
+    PetscInt          s = from;
+    for (PetscInt step = 0; step < 4 && s >= 0; step++) {
+      PetscInt  nb = side > 0 ? cs->next[s] : cs->prev[s];
+      PetscReal a[2], b[2], c[2], d[2], Lf, Lt;
+      if (nb < 0) break;
+      CurrentPosition(p, xa, cs->main_lnode[2 * s], a);
+      CurrentPosition(p, xa, cs->main_lnode[2 * s + 1], b);
+      CurrentPosition(p, xa, cs->main_lnode[2 * nb], c);
+      CurrentPosition(p, xa, cs->main_lnode[2 * nb + 1], d);
+      Lf = PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
+      Lt = PetscSqrtReal(PetscSqr(d[0] - c[0]) + PetscSqr(d[1] - c[1]));
+      PetscCallAbort(PETSC_COMM_SELF, TslContactHistoryTransfer(side, Lf, Lt, &t));
+      s = nb;
+      if (s == to) {
+        *h = t;
+        return PETSC_TRUE;
+      }
+    }
+  }
+  return PETSC_FALSE;
+}
+
+/* Pairs every owned secondary node with its main segment at the state xa. *changed counts the nodes
+ * whose segment changed (this rank). */
+static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *changed)
+{
+  PetscInt *cand, cap = 64;
+
+  PetscFunctionBeginUser;
+  *changed = 0;
+  PetscCall(PetscMalloc1(cap, &cand));
+  for (PetscInt k = 0; k < p->ncsurf; k++) {
+    TslContactSurface *cs = &p->csurf[k];
+    PetscReal         *seg_x;
+    TslContactBinGrid  grid;
+
+    if (!cs->active) continue;
+    PetscCall(PetscMalloc1(4 * cs->nmain, &seg_x));
+    for (PetscInt s = 0; s < cs->nmain; s++) {
+      CurrentPosition(p, xa, cs->main_lnode[2 * s], &seg_x[4 * s]);
+      CurrentPosition(p, xa, cs->main_lnode[2 * s + 1], &seg_x[4 * s + 2]);
+    }
+    PetscCall(TslContactBinGridCreate(cs->nmain, seg_x, cs->search_radius, &grid));
+    for (PetscInt i = 0; i < p->ncnode; i++) {
+      TslContactNode *cn = &p->cnode[i];
+      PetscReal       y[2], best_d = PETSC_MAX_REAL, best_xi = 0;
+      PetscInt        ncand, best = -1;
+      PetscBool       best_inside = PETSC_FALSE;
+
+      if (cn->pair != k) continue;
+      CurrentPosition(p, xa, cn->lnode, y);
+      PetscCall(TslContactBinGridQuery(grid, y, cs->search_radius, cap, cand, &ncand, NULL));
+      if (ncand > cap) {
+        cap = ncand;
+        PetscCall(PetscFree(cand));
+        PetscCall(PetscMalloc1(cap, &cand));
+        PetscCall(TslContactBinGridQuery(grid, y, cs->search_radius, cap, cand, &ncand, NULL));
+      }
+      for (PetscInt c = 0; c < ncand; c++) {
+        const PetscReal *a = &seg_x[4 * cand[c]], *b = &seg_x[4 * cand[c] + 2];
+        PetscReal        t[2] = {b[0] - a[0], b[1] - a[1]}, L2 = t[0] * t[0] + t[1] * t[1], xi, xc, q[2], dist, gap;
+        PetscBool        inside;
+        if (L2 <= 0) continue;
+        xi     = ((y[0] - a[0]) * t[0] + (y[1] - a[1]) * t[1]) / L2;
+        inside = (PetscBool)(xi >= 0 && xi <= 1);
+        xc     = PetscMin(1, PetscMax(0, xi));
+        q[0] = a[0] + xc * t[0] - y[0], q[1] = a[1] + xc * t[1] - y[1];
+        dist = PetscSqrtReal(q[0] * q[0] + q[1] * q[1]);
+        /* outward normal (t_y, -t_x)/L: body of the main surface on the left of the segment */
+        gap = ((y[0] - a[0] - xc * t[0]) * t[1] - (y[1] - a[1] - xc * t[1]) * t[0]) / PetscSqrtReal(L2);
+        if (gap < -cs->search_radius) continue; /* behind the surface: another body, not a contact */
+        if ((inside && !best_inside) || (inside == best_inside && dist < best_d)) {
+          best = cand[c], best_d = dist, best_xi = xi, best_inside = inside;
+        }
+      }
+      /* beyond an end of the main surface: out of contact */
+      if (best >= 0 && !best_inside && ((best_xi < 0 && cs->prev[best] < 0) || (best_xi > 1 && cs->next[best] < 0))) best = -1;
+      if (best != cn->seg) {
+        (*changed)++;
+        if (best >= 0 && cn->seg >= 0 && TransferHistory(p, cs, xa, cn->seg, best, &cn->hist)) {
+        } else if (best >= 0) {
+          cn->hist.xi_old = cn->hist.xi_anchor = PetscMin(1, PetscMax(0, best_xi));
+          cn->hist.lambda = 0;
+        }
+        cn->seg = best;
+      }
+    }
+    PetscCall(TslContactBinGridDestroy(&grid));
+    PetscCall(PetscFree(seg_x));
+  }
+  PetscCall(PetscFree(cand));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective. Pairs secondary nodes at the current solution; rebuilds the matrix pattern when pairing
+ * changed anywhere. */
+PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
+{
+  Vec                xl;
+  const PetscScalar *xa;
+  PetscInt           changed, g;
+
+  PetscFunctionBeginUser;
+  *repattern = PETSC_FALSE;
+  if (!p->ncsurf) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecCopy(p->X, p->Xl));
+  PetscCall(VecGhostUpdateBegin(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostGetLocalForm(p->Xl, &xl));
+  PetscCall(VecGetArrayRead(xl, &xa));
+  PetscCall(Search(p, xa, &changed));
+  PetscCall(VecRestoreArrayRead(xl, &xa));
+  PetscCall(VecGhostRestoreLocalForm(p->Xl, &xl));
+  PetscCall(MPIU_Allreduce(&changed, &g, 1, MPIU_INT, MPI_SUM, p->comm));
+  if (g) {
+    PetscCall(PetscInfo(NULL, "contact pairing changed for %" PetscInt_FMT " secondary nodes\n", g));
+    PetscCall(TslProblemPreallocate(p));
+    *repattern = PETSC_TRUE;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective. After a converged solve: nodes whose projection left their segment need re-pairing, and
+ * augmented-Lagrange multipliers are updated. *again is set when the increment must be solved again. */
+PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool *repattern)
+{
+  PetscInt  loc[2] = {0, 0}, g[2];
+  PetscReal change = 0, scale = 0, gc[2], lc[2];
+
+  PetscFunctionBeginUser;
+  *again = *repattern = PETSC_FALSE;
+  if (!p->ncsurf) PetscFunctionReturn(PETSC_SUCCESS);
+  {
+    TslHeatBalance hb; /* evaluates every contact element at the converged state */
+    PetscCall(TslProblemHeatBalance(p, &hb));
+  }
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    TslContactNode          *cn = &p->cnode[i];
+    const TslContactSurface *cs = &p->csurf[cn->pair];
+    if (cn->seg < 0) continue;
+    if (cn->out.side != 0) loc[0]++;
+    if (cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED) {
+      PetscReal c;
+      PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &cn->hist.lambda, &c));
+      change = PetscMax(change, PetscAbsReal(c));
+      scale  = PetscMax(scale, cn->out.pressure);
+    }
+  }
+  lc[0] = change, lc[1] = scale;
+  PetscCall(MPIU_Allreduce(loc, g, 1, MPIU_INT, MPI_SUM, p->comm));
+  PetscCall(MPIU_Allreduce(lc, gc, 2, MPIU_REAL, MPIU_MAX, p->comm));
+  if (g[0]) {
+    PetscCall(TslProblemContactSearch(p, repattern));
+    *again = PETSC_TRUE;
+  }
+  if (gc[0] > p->augment_tol * PetscMax(gc[1], PETSC_SMALL)) *again = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* An accepted increment: its contact state becomes the start of the next one. */
+PetscErrorCode TslProblemContactCommit(TslProblem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    TslContactNode *cn = &p->cnode[i];
+    if (cn->seg >= 0) {
+      PetscCall(TslContactHistoryUpdate(&cn->out, &cn->hist));
+      cn->cslip += PetscAbsReal(cn->out.slip);
+    }
+    cn->seg_c   = cn->seg;
+    cn->hist_c  = cn->hist;
+    cn->cslip_c = cn->cslip;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A rejected increment: back to the state at its start. */
+PetscErrorCode TslProblemContactRollback(TslProblem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    TslContactNode *cn = &p->cnode[i];
+    cn->seg   = cn->seg_c;
+    cn->hist  = cn->hist_c;
+    cn->cslip = cn->cslip_c;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Contact node fields over owned nodes (zero where a node is not a secondary node):
+ * CPRESS contact pressure, CSLIP accumulated slip, CSTATUS 0 open / 1 stick / 2 slip, HFLA heat flux per
+ * area into the secondary surface. */
+PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[])
+{
+  PetscInt which = !strcmp(name, "CPRESS") ? 0 : !strcmp(name, "CSLIP") ? 1 : !strcmp(name, "CSTATUS") ? 2 : 3;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    const TslContactNode *cn = &p->cnode[i];
+    PetscReal             v  = 0;
+    if (cn->seg >= 0) {
+      if (which == 0) v = cn->out.pressure;
+      else if (which == 2) v = (PetscReal)cn->out.status;
+      else if (which == 3) v = cn->out.heat_flux;
+    }
+    if (which == 1) v = cn->cslip;
+    vals[cn->lnode] = v;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The contact law of an interaction, in the kernel's terms. */
+static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, TslContactLaw *law)
+{
+  const TslModel       *m  = p->m;
+  const TslInteraction *it = &m->interactions[pair->interaction_index];
+  char                  loc[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBeginUser;
+  PetscCall(TslContactLawSetDefaults(law));
+  law->normal = it->behavior.given && it->behavior.enforcement == TSL_CONTACT_AUGMENTED_LAGRANGE ? TSL_CONTACT_NORMAL_AUGMENTED : TSL_CONTACT_NORMAL_PENALTY;
+  law->eps_n  = it->behavior.given && it->behavior.penalty_stiffness > 0 ? it->behavior.penalty_stiffness : pair->penalty;
+  PetscCheck(!(it->friction.given && it->friction.rough), PETSC_COMM_SELF, PETSC_ERR_SUP, "%s: *FRICTION, ROUGH is not supported yet", TslLocString(m, it->friction.loc, loc, sizeof(loc)));
+  if (it->friction.given && it->friction.mu > 0) {
+    law->mu       = it->friction.mu;
+    law->friction = it->friction.lagrange ? TSL_CONTACT_FRICTION_LAGRANGE : TSL_CONTACT_FRICTION_PENALTY;
+    law->eps_t    = it->friction.stick_slope > 0 ? it->friction.stick_slope : law->eps_n;
+  }
+  if (it->conductance.given) {
+    law->conductance = it->conductance.by_pressure ? TSL_CONTACT_CONDUCTANCE_PRESSURE : TSL_CONTACT_CONDUCTANCE_CLEARANCE;
+    law->k_n         = it->conductance.n;
+    law->k_arg       = it->conductance.abscissa;
+    law->k_value     = it->conductance.value;
+  }
+  if (it->radiation.given) {
+    PetscCheck(m->has_stefan_boltzmann && m->has_absolute_zero, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "%s: *GAP RADIATION needs *PHYSICAL CONSTANTS, ABSOLUTE ZERO= and STEFAN BOLTZMANN=", TslLocString(m, it->radiation.loc, loc, sizeof(loc)));
+    law->F_n           = it->radiation.n;
+    law->F_clearance   = it->radiation.clearance;
+    law->F_value       = it->radiation.view_factor;
+    law->eps_main      = it->radiation.emissivity_main;
+    law->eps_secondary = it->radiation.emissivity_secondary;
+    law->sigma         = m->stefan_boltzmann;
+    law->theta_zero    = m->absolute_zero;
+  }
+  law->eta = it->heat_generation.given ? it->heat_generation.fraction : 1.0;
+  law->f   = it->heat_generation.given ? it->heat_generation.weight_secondary : 0.5;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemContactSetUp(TslProblem p)
+{
+  const TslModel *m = p->m;
+  PetscInt        n = 0;
+
+  PetscFunctionBeginUser;
+  p->augment_tol = 1e-3;
+  PetscCall(PetscOptionsGetReal(NULL, NULL, "-tsl_contact_augment_tol", &p->augment_tol, NULL));
+  p->ncsurf = m->npair;
+  PetscCall(PetscCalloc1(m->npair, &p->csurf));
+  for (PetscInt k = 0; k < m->npair; k++) n += m->pairs[k].nsec;
+  PetscCall(PetscCalloc1(n, &p->cnode));
+  for (PetscInt k = 0; k < m->npair; k++) {
+    const TslContactPair *pair = &m->pairs[k];
+    TslContactSurface    *cs   = &p->csurf[k];
+    PetscReal             Lsum = 0;
+
+    PetscCall(SetUpLaw(p, pair, &cs->law));
+    cs->kin       = (TslKinematics)pair->kin;
+    cs->thickness = pair->thickness;
+    cs->smooth    = pair->smooth;
+    cs->nmain     = pair->nmain;
+    cs->active    = (PetscBool)(pair->nsec > 0);
+    PetscCall(PetscMalloc3(2 * pair->nmain, &cs->main_lnode, pair->nmain, &cs->prev, pair->nmain, &cs->next));
+    for (PetscInt s = 0; s < pair->nmain; s++) {
+      cs->prev[s] = pair->main_prev[s];
+      cs->next[s] = pair->main_next[s];
+      for (PetscInt a = 0; a < 2; a++) {
+        cs->main_lnode[2 * s + a] = TslModelNodeIndex(m, pair->main_node[2 * s + a]);
+        PetscCheck(!cs->active || cs->main_lnode[2 * s + a] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "main-surface node %" PetscInt_FMT " is not local", pair->main_node[2 * s + a]);
+      }
+      if (cs->active) {
+        const PetscReal *a = &m->node_xyz[3 * cs->main_lnode[2 * s]], *b = &m->node_xyz[3 * cs->main_lnode[2 * s + 1]];
+        Lsum += PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
+      }
+    }
+    /* candidates within one mean segment length, or the largest tabulated clearance */
+    cs->search_radius = pair->nmain ? Lsum / pair->nmain : 0;
+    if (cs->law.conductance == TSL_CONTACT_CONDUCTANCE_CLEARANCE) cs->search_radius = PetscMax(cs->search_radius, cs->law.k_arg[cs->law.k_n - 1]);
+    if (cs->law.F_n) cs->search_radius = PetscMax(cs->search_radius, cs->law.F_clearance[cs->law.F_n - 1]);
+    for (PetscInt i = 0; i < pair->nsec; i++) {
+      TslContactNode *cn = &p->cnode[p->ncnode++];
+      cn->pair           = k;
+      cn->lnode          = TslModelNodeIndex(m, pair->sec_node[i]);
+      cn->length         = pair->sec_length[i];
+      cn->seg = cn->seg_c = -1;
+      PetscCheck(cn->lnode >= 0 && cn->lnode < p->nown, PETSC_COMM_SELF, PETSC_ERR_PLIB, "secondary node %" PetscInt_FMT " is not owned here", pair->sec_node[i]);
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemContactDestroy(TslProblem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < p->ncsurf; k++) PetscCall(PetscFree3(p->csurf[k].main_lnode, p->csurf[k].prev, p->csurf[k].next));
+  PetscCall(PetscFree(p->csurf));
+  PetscCall(PetscFree(p->cnode));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
