@@ -150,7 +150,9 @@ typedef struct {
   TslLoc    loc;
 } TslFriction;
 
-/* *GAP CONDUCTANCE: k(abscissa), abscissa = contact pressure (PRESSURE) or clearance, ascending. */
+/* *GAP CONDUCTANCE: q = k (theta_main - theta_secondary), k(abscissa) with abscissa the contact pressure
+ * (PRESSURE) or the clearance, ascending. k is linear in the table and keeps its end values beyond it,
+ * except beyond the last clearance, where the dialect makes it zero. */
 typedef struct {
   PetscBool  given;
   PetscBool  by_pressure;
@@ -161,7 +163,9 @@ typedef struct {
 } TslGapConductance;
 
 /* *GAP RADIATION: q = C [(theta_A - theta_Z)^4 - (theta_B - theta_Z)^4] with
- * C = F sigma / (1/eps_A + 1/eps_B - 1) (Abaqus Theory Guide, "Thermal contact properties"). */
+ * C = F sigma / (1/eps_A + 1/eps_B - 1) (Abaqus Theory Guide, "Thermal contact properties"), A the main
+ * and B the secondary surface, sigma and theta_Z from *PHYSICAL CONSTANTS. F(clearance) is linear in
+ * the table and zero beyond its last clearance. */
 typedef struct {
   PetscBool  given;
   PetscReal  emissivity_main, emissivity_secondary; /* eps_A, eps_B: first data line */
