@@ -1038,12 +1038,11 @@ static PetscErrorCode KwSurfaceInteraction(Deck *d, const DeckKeyword *kw) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The open interaction, after checking that this law is not given twice in it. */
-static PetscErrorCode InteractionLaw(Deck *d, PetscBool *given, TslLoc *loc, TslInteraction **it) {
+/* Marks a law of the open interaction as given here, after checking that it was not given before. */
+static PetscErrorCode InteractionLaw(Deck *d, PetscBool *given, TslLoc *loc) {
   PetscFunctionBeginUser;
-  *it = &d->m->interactions[d->interaction];
   USER_CHECK(!*given, LOC_FMT "*%s is given twice for surface interaction %s (first at %s:%" PetscInt_FMT ")", KLOC(d),
-             d->kw, (*it)->name, TslDeckFileName(d->m, loc->file), loc->line);
+             d->kw, d->m->interactions[d->interaction].name, TslDeckFileName(d->m, loc->file), loc->line);
   *given = PETSC_TRUE;
   *loc = d->kwloc;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -1067,17 +1066,15 @@ static PetscErrorCode FieldUnsupported(Deck *d, PetscInt i, const char *kwname, 
 }
 
 static PetscErrorCode KwSurfaceBehavior(Deck *d, const DeckKeyword *kw) {
-  TslInteraction *it = &d->m->interactions[d->interaction];
-  TslSurfaceBehavior *b = &it->behavior;
-  char buf[32], kwname[32];
+  TslSurfaceBehavior *b = &d->m->interactions[d->interaction].behavior;
+  char buf[32];
   const char *po = ParamUpper(d, "PRESSURE-OVERCLOSURE", buf, sizeof(buf));
   PetscBool penalty = Param(d, "PENALTY") ? PETSC_TRUE : PETSC_FALSE, got;
   PetscBool auglag = Param(d, "AUGMENTED LAGRANGE") ? PETSC_TRUE : PETSC_FALSE;
 
   PetscFunctionBeginUser;
   (void)kw;
-  PetscCall(InteractionLaw(d, &b->given, &b->loc, &it));
-  PetscCall(PetscStrncpy(kwname, d->kw, sizeof(kwname)));
+  PetscCall(InteractionLaw(d, &b->given, &b->loc));
   USER_CHECK(!po || !strcmp(po, "HARD"),
              LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=%s is not supported yet (only HARD)", KLOC(d), po);
   USER_CHECK(!(penalty && auglag), LOC_FMT "*SURFACE BEHAVIOR: PENALTY and AUGMENTED LAGRANGE exclude each other",
@@ -1093,20 +1090,19 @@ static PetscErrorCode KwSurfaceBehavior(Deck *d, const DeckKeyword *kw) {
   PetscCall(FieldRealDefault(d, 0, "the penalty stiffness", 0.0, &b->penalty_stiffness));
   USER_CHECK(b->penalty_stiffness >= 0, LOC_FMT "the penalty stiffness must be positive (or blank for the default)",
              DLOC(d));
-  PetscCall(FieldUnsupported(d, 1, kwname, "a clearance at zero contact pressure"));
-  PetscCall(FieldUnsupported(d, 2, kwname, "a penalty stiffness scale factor"));
-  PetscCall(NoMoreRows(d, kwname, "a pressure-overclosure table"));
+  PetscCall(FieldUnsupported(d, 1, "SURFACE BEHAVIOR", "a clearance at zero contact pressure"));
+  PetscCall(FieldUnsupported(d, 2, "SURFACE BEHAVIOR", "a penalty stiffness scale factor"));
+  PetscCall(NoMoreRows(d, "SURFACE BEHAVIOR", "a pressure-overclosure table"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscErrorCode KwFriction(Deck *d, const DeckKeyword *kw) {
-  TslInteraction *it = &d->m->interactions[d->interaction];
-  TslFriction *f = &it->friction;
+  TslFriction *f = &d->m->interactions[d->interaction].friction;
   PetscBool got, tol;
 
   PetscFunctionBeginUser;
   (void)kw;
-  PetscCall(InteractionLaw(d, &f->given, &f->loc, &it));
+  PetscCall(InteractionLaw(d, &f->given, &f->loc));
   f->lagrange = Param(d, "LAGRANGE") ? PETSC_TRUE : PETSC_FALSE;
   f->rough = Param(d, "ROUGH") ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(ParamReal(d, "SLIP TOLERANCE", &f->slip_tolerance, &tol));
@@ -1142,15 +1138,14 @@ static PetscErrorCode SortTable(PetscInt n, PetscReal x[], PetscReal y[]) {
 }
 
 static PetscErrorCode KwGapConductance(Deck *d, const DeckKeyword *kw) {
-  TslInteraction *it = &d->m->interactions[d->interaction];
-  TslGapConductance *g = &it->conductance;
+  TslGapConductance *g = &d->m->interactions[d->interaction].conductance;
   PetscInt deps = 0;
   PetscReal theta = 0;
   PetscBool got, has_theta = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   (void)kw;
-  PetscCall(InteractionLaw(d, &g->given, &g->loc, &it));
+  PetscCall(InteractionLaw(d, &g->given, &g->loc));
   USER_CHECK(!Param(d, "USER"), LOC_FMT "*GAP CONDUCTANCE, USER (subroutine GAPCON) is not supported", KLOC(d));
   PetscCall(ParamInt(d, "DEPENDENCIES", &deps));
   USER_CHECK(deps == 0, LOC_FMT "*GAP CONDUCTANCE, DEPENDENCIES (field variables) is not supported yet", KLOC(d));
@@ -1183,13 +1178,12 @@ static PetscErrorCode KwGapConductance(Deck *d, const DeckKeyword *kw) {
 }
 
 static PetscErrorCode KwGapRadiation(Deck *d, const DeckKeyword *kw) {
-  TslInteraction *it = &d->m->interactions[d->interaction];
-  TslGapRadiation *r = &it->radiation;
+  TslGapRadiation *r = &d->m->interactions[d->interaction].radiation;
   PetscBool got;
 
   PetscFunctionBeginUser;
   (void)kw;
-  PetscCall(InteractionLaw(d, &r->given, &r->loc, &it));
+  PetscCall(InteractionLaw(d, &r->given, &r->loc));
   PetscCall(DataLine(d, 0, &got));
   USER_CHECK(got, LOC_FMT "*GAP RADIATION needs a data line with the two emissivities", KLOC(d));
   USER_CHECK(d->nfield == 2, LOC_FMT "*GAP RADIATION first data line: emissivity of the main surface, of the secondary",
@@ -1214,14 +1208,13 @@ static PetscErrorCode KwGapRadiation(Deck *d, const DeckKeyword *kw) {
 }
 
 static PetscErrorCode KwGapHeatGeneration(Deck *d, const DeckKeyword *kw) {
-  TslInteraction *it = &d->m->interactions[d->interaction];
-  TslGapHeatGeneration *h = &it->heat_generation;
+  TslGapHeatGeneration *h = &d->m->interactions[d->interaction].heat_generation;
   PetscReal slip_rate;
   PetscBool got;
 
   PetscFunctionBeginUser;
   (void)kw;
-  PetscCall(InteractionLaw(d, &h->given, &h->loc, &it));
+  PetscCall(InteractionLaw(d, &h->given, &h->loc));
   USER_CHECK(!Param(d, "USER"), LOC_FMT "*GAP HEAT GENERATION, USER is not supported", KLOC(d));
   PetscCall(DataLine(d, 0, &got));
   if (!got) PetscFunctionReturn(PETSC_SUCCESS);
