@@ -126,6 +126,93 @@ typedef struct {
   TslLoc    loc;
 } TslOutputRequest;
 
+/* ---- contact (model data; read, checked and distributed, not yet used by the solver) ----------
+ * A *SURFACE INTERACTION is a named set of interface laws; a *CONTACT PAIR puts one between a secondary
+ * and a main surface. Each law remembers whether its keyword was given (given) and where (loc). */
+
+/* Normal contact (*SURFACE BEHAVIOR): hard pressure-overclosure enforced by a penalty (default) or by
+ * augmented Lagrange. penalty_stiffness 0 means "the solver's default". */
+typedef enum { TSL_CONTACT_HARD_PENALTY = 0, TSL_CONTACT_AUGMENTED_LAGRANGE = 1 } TslContactEnforcement;
+
+typedef struct {
+  PetscBool             given;
+  TslContactEnforcement enforcement;
+  PetscReal             penalty_stiffness;
+  TslLoc                loc;
+} TslSurfaceBehavior;
+
+/* Coulomb friction (*FRICTION). Without the keyword the interface is frictionless. */
+typedef struct {
+  PetscBool given;
+  PetscReal mu;             /* friction coefficient */
+  PetscBool lagrange;       /* LAGRANGE: exact stick (Lagrange multiplier) instead of penalty elastic slip */
+  PetscBool rough;          /* ROUGH: no slip at all (mu unused) */
+  PetscReal slip_tolerance; /* SLIP TOLERANCE= (default 0.005): allowed elastic slip / facet size */
+  PetscReal stick_slope;    /* CalculiX second value: stick stiffness; 0 = solver default */
+  TslLoc    loc;
+} TslFriction;
+
+/* *GAP CONDUCTANCE: q = k (theta_main - theta_secondary), k(abscissa) with abscissa the contact pressure
+ * (PRESSURE) or the clearance, ascending. k is linear in the table and keeps its end values beyond it,
+ * except beyond the last clearance, where the dialect makes it zero. */
+typedef struct {
+  PetscBool  given;
+  PetscBool  by_pressure;
+  PetscInt   n;
+  PetscReal *value;    /* conductance k */
+  PetscReal *abscissa; /* clearance d or pressure p */
+  TslLoc     loc;
+} TslGapConductance;
+
+/* *GAP RADIATION: q = C [(theta_A - theta_Z)^4 - (theta_B - theta_Z)^4] with
+ * C = F sigma / (1/eps_A + 1/eps_B - 1) (Abaqus Theory Guide, "Thermal contact properties"), A the main
+ * and B the secondary surface, sigma and theta_Z from *PHYSICAL CONSTANTS. F(clearance) is linear in
+ * the table and zero beyond its last clearance. */
+typedef struct {
+  PetscBool  given;
+  PetscReal  emissivity_main, emissivity_secondary; /* eps_A, eps_B: first data line */
+  PetscInt   n;
+  PetscReal *view_factor; /* effective view factor F */
+  PetscReal *clearance;   /* ascending */
+  TslLoc     loc;
+} TslGapRadiation;
+
+/* *GAP HEAT GENERATION: eta * (frictional dissipation) becomes heat; the secondary surface receives
+ * the fraction weight_secondary (f), the main one 1 - f. Defaults eta = 1, f = 0.5 also when absent. */
+typedef struct {
+  PetscBool given;
+  PetscReal fraction;         /* eta */
+  PetscReal weight_secondary; /* f */
+  TslLoc    loc;
+} TslGapHeatGeneration;
+
+typedef struct {
+  char                 name[TSL_NAME_LEN];
+  PetscReal            thickness; /* optional data line: out-of-plane thickness (2D), default 1 */
+  TslSurfaceBehavior   behavior;
+  TslFriction          friction;
+  TslGapConductance    conductance;
+  TslGapRadiation      radiation;
+  TslGapHeatGeneration heat_generation;
+  TslLoc               loc;
+} TslInteraction;
+
+typedef enum { TSL_CONTACT_NODE_TO_SURFACE = 0, TSL_CONTACT_SURFACE_TO_SURFACE = 1 } TslContactType;
+
+/* *CONTACT PAIR: one per data line "secondary surface, main surface". */
+typedef struct {
+  char           interaction[TSL_NAME_LEN];
+  PetscInt       interaction_index; /* resolved by TslModelCheck, index into interactions[] */
+  char           secondary[TSL_NAME_LEN], main[TSL_NAME_LEN];
+  TslContactType type;          /* TYPE= (default NODE TO SURFACE) */
+  PetscBool      small_sliding; /* SMALL SLIDING */
+  PetscReal      smooth;        /* SMOOTH= (default 0.2) */
+  PetscBool      adjust_given;  /* ADJUST= given: a distance (adjust) or a node set (adjust_set) */
+  PetscReal      adjust;
+  char           adjust_set[TSL_NAME_LEN];
+  TslLoc         loc; /* the data line */
+} TslContactPair;
+
 typedef struct {
   char          name[TSL_NAME_LEN];
   TslLoc        loc;
@@ -174,6 +261,10 @@ typedef struct {
   TslAmplitude *amplitudes;
   TslEquation  *equations;
 
+  PetscInt        ninteraction, npair;
+  TslInteraction *interactions;
+  TslContactPair *pairs;
+
   PetscBool has_absolute_zero, has_stefan_boltzmann;
   PetscReal absolute_zero, stefan_boltzmann; /* *PHYSICAL CONSTANTS */
 
@@ -208,6 +299,7 @@ PetscInt TslModelFindElementSet(const TslModel *model, const char *name);
 PetscInt TslModelFindSurface(const TslModel *model, const char *name);
 PetscInt TslModelFindMaterial(const TslModel *model, const char *name);
 PetscInt TslModelFindAmplitude(const TslModel *model, const char *name);
+PetscInt TslModelFindInteraction(const TslModel *model, const char *name);
 
 /* Position of a node / element id in the model's arrays, or -1. Needs TslModelIndex() first. */
 PetscErrorCode TslModelIndex(TslModel *model); /* builds the id lookups (call after the mesh changes) */
@@ -235,5 +327,6 @@ PetscErrorCode TslDeckRead(const char *path, TslModel **model);
 
 /* Consistency checks that need the whole model: undefined sets/surfaces/materials/amplitudes,
  * elements without a section, missing material properties, wrong node counts, duplicate ids,
- * element references to undefined nodes, steps without a procedure. */
+ * element references to undefined nodes, steps without a procedure; contact pairs (interaction and
+ * surfaces defined, main surface element-based, secondary != main) and the interface laws' values. */
 PetscErrorCode TslModelCheck(TslModel *model);

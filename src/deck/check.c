@@ -199,6 +199,76 @@ static PetscErrorCode CheckSteps(TslModel *m) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A table's abscissae (clearance or pressure) must increase strictly: the reader sorts them, so what
+ * remains to catch is a value given twice (or a table built unsorted by other code). */
+static PetscErrorCode CheckTableAbscissae(TslModel *m, TslLoc loc, const char *inter, const char *kw, const char *what,
+                                          PetscInt n, const PetscReal x[]) {
+  PetscFunctionBeginUser;
+  for (PetscInt k = 1; k < n; k++) {
+    CHECK(x[k] != x[k - 1], loc, "surface interaction %s: *%s gives the %s %g twice", inter, kw, what, (double)x[k]);
+    CHECK(x[k] > x[k - 1], loc, "surface interaction %s: *%s %s values must increase (%g after %g)", inter, kw, what,
+          (double)x[k], (double)x[k - 1]);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode CheckInteraction(TslModel *m, const TslInteraction *it) {
+  const TslGapConductance *g = &it->conductance;
+  const TslGapRadiation *r = &it->radiation;
+  const TslGapHeatGeneration *h = &it->heat_generation;
+
+  PetscFunctionBeginUser;
+  if (it->friction.given)
+    CHECK(it->friction.mu >= 0, it->friction.loc,
+          "surface interaction %s: the friction coefficient must not be negative (got %g)", it->name,
+          (double)it->friction.mu);
+  if (g->given) {
+    for (PetscInt k = 0; k < g->n; k++)
+      CHECK(g->value[k] >= 0, g->loc, "surface interaction %s: the gap conductance must not be negative (got %g)",
+            it->name, (double)g->value[k]);
+    PetscCall(CheckTableAbscissae(m, g->loc, it->name, "GAP CONDUCTANCE", g->by_pressure ? "pressure" : "clearance",
+                                  g->n, g->abscissa));
+  }
+  if (r->given) {
+    CHECK(r->emissivity_main > 0 && r->emissivity_main <= 1 && r->emissivity_secondary > 0 &&
+              r->emissivity_secondary <= 1,
+          r->loc, "surface interaction %s: emissivities must lie in (0, 1] (got %g, %g)", it->name,
+          (double)r->emissivity_main, (double)r->emissivity_secondary);
+    for (PetscInt k = 0; k < r->n; k++)
+      CHECK(r->view_factor[k] >= 0 && r->view_factor[k] <= 1, r->loc,
+            "surface interaction %s: the effective view factor must lie in [0, 1] (got %g)", it->name,
+            (double)r->view_factor[k]);
+    PetscCall(CheckTableAbscissae(m, r->loc, it->name, "GAP RADIATION", "clearance", r->n, r->clearance));
+  }
+  CHECK(h->fraction >= 0 && h->fraction <= 1, h->loc,
+        "surface interaction %s: the fraction of dissipation converted to heat must lie in [0, 1] (got %g)", it->name,
+        (double)h->fraction);
+  CHECK(h->weight_secondary >= 0 && h->weight_secondary <= 1, h->loc,
+        "surface interaction %s: the heat weight of the secondary surface must lie in [0, 1] (got %g)", it->name,
+        (double)h->weight_secondary);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode CheckContactPair(TslModel *m, TslContactPair *p) {
+  PetscInt s, mn;
+
+  PetscFunctionBeginUser;
+  p->interaction_index = TslModelFindInteraction(m, p->interaction);
+  CHECK(p->interaction_index >= 0, p->loc, "undefined surface interaction %s", p->interaction);
+  s = TslModelFindSurface(m, p->secondary);
+  mn = TslModelFindSurface(m, p->main);
+  CHECK(s >= 0, p->loc, "undefined surface %s", p->secondary);
+  CHECK(mn >= 0, p->loc, "undefined surface %s", p->main);
+  CHECK(s != mn, p->loc, "contact pair: the secondary and the main surface are both %s", p->main);
+  CHECK(m->surfaces[mn].kind == TSL_SURFACE_ELEMENT, p->loc,
+        "main surface %s must be an element surface (TYPE=ELEMENT); node surfaces can only be secondary", p->main);
+  CHECK(p->type != TSL_CONTACT_SURFACE_TO_SURFACE || m->surfaces[s].kind == TSL_SURFACE_ELEMENT, p->loc,
+        "TYPE=SURFACE TO SURFACE needs an element surface as secondary; %s is a node surface", p->secondary);
+  if (p->adjust_set[0])
+    CHECK(TslModelFindNodeSet(m, p->adjust_set) >= 0, p->loc, "undefined node set %s", p->adjust_set);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslModelCheck(TslModel *m) {
   PetscFunctionBeginUser;
   PetscCall(TslModelIndex(m));
@@ -219,6 +289,8 @@ PetscErrorCode TslModelCheck(TslModel *m) {
     for (PetscInt k = 1; k < a->n; k++)
       CHECK(a->t[k] >= a->t[k - 1], a->loc, "amplitude %s: times must not decrease", a->name);
   }
+  for (PetscInt i = 0; i < m->ninteraction; i++) PetscCall(CheckInteraction(m, &m->interactions[i]));
+  for (PetscInt i = 0; i < m->npair; i++) PetscCall(CheckContactPair(m, &m->pairs[i]));
   PetscCall(CheckSteps(m));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -56,8 +56,9 @@ typedef struct {
   TslLoc kwloc;
 
   /* state */
-  PetscInt step;     /* index of the open step or -1 */
-  PetscInt material; /* material the property keywords apply to, or -1 */
+  PetscInt step;        /* index of the open step or -1 */
+  PetscInt material;    /* material the property keywords apply to, or -1 */
+  PetscInt interaction; /* surface interaction the interface-law keywords apply to, or -1 */
   PetscInt out_frequency;
   PetscInt *node_line; /* [2*nnode] (file, line) of each node, for duplicate messages */
 } Deck;
@@ -486,7 +487,7 @@ static PetscErrorCode ParamInt(Deck *d, const char *key, PetscInt *x) {
 
 /* ---- keyword table --------------------------------------------------------------------------- */
 
-typedef enum { CTX_MODEL, CTX_STEP, CTX_ANY, CTX_MATERIAL } DeckContext;
+typedef enum { CTX_MODEL, CTX_STEP, CTX_ANY, CTX_MATERIAL, CTX_INTERACTION } DeckContext;
 
 typedef struct DeckKeyword DeckKeyword;
 typedef PetscErrorCode (*DeckLoadLine)(Deck *, TslLoad *);
@@ -1004,6 +1005,284 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* ---- contact --------------------------------------------------------------------------------
+ * *SURFACE INTERACTION opens a block, like *MATERIAL: the interface-law keywords that follow it
+ * (CTX_INTERACTION) fill it until any other keyword. Values are range-checked in TslModelCheck. */
+
+static PetscErrorCode KwSurfaceInteraction(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
+  TslInteraction *it;
+  const char *name;
+  PetscBool got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  PetscCall(ParamRequired(d, "NAME", &name));
+  USER_CHECK(TslModelFindInteraction(m, name) < 0, LOC_FMT "surface interaction %s is defined twice", KLOC(d), name);
+  PetscCall(TslDeckGrow(&m->interactions, sizeof(TslInteraction), m->ninteraction));
+  it = &m->interactions[m->ninteraction];
+  PetscCall(CopyName(d, d->kwloc, it->name, name));
+  it->loc = d->kwloc;
+  it->thickness = 1.0;
+  it->behavior.enforcement = TSL_CONTACT_HARD_PENALTY;
+  it->friction.slip_tolerance = 0.005;
+  it->heat_generation.fraction = 1.0;
+  it->heat_generation.weight_secondary = 0.5;
+  d->interaction = m->ninteraction++;
+  PetscCall(DataLine(d, 0, &got)); /* Abaqus: optional out-of-plane thickness (2D) */
+  if (got) {
+    USER_CHECK(d->nfield <= 1, LOC_FMT "*SURFACE INTERACTION data line needs only the out-of-plane thickness", DLOC(d));
+    PetscCall(FieldRealDefault(d, 0, "the out-of-plane thickness", 1.0, &it->thickness));
+    USER_CHECK(it->thickness > 0, LOC_FMT "the out-of-plane thickness must be positive", DLOC(d));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Marks a law of the open interaction as given here, after checking that it was not given before. */
+static PetscErrorCode InteractionLaw(Deck *d, PetscBool *given, TslLoc *loc) {
+  PetscFunctionBeginUser;
+  USER_CHECK(!*given, LOC_FMT "*%s is given twice for surface interaction %s (first at %s:%" PetscInt_FMT ")", KLOC(d),
+             d->kw, d->m->interactions[d->interaction].name, TslDeckFileName(d->m, loc->file), loc->line);
+  *given = PETSC_TRUE;
+  *loc = d->kwloc;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Fails when the keyword has another data line: the laws below take one row (no dependencies). */
+static PetscErrorCode NoMoreRows(Deck *d, const char *kwname, const char *what) {
+  PetscBool got;
+
+  PetscFunctionBeginUser;
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(!got, LOC_FMT "*%s takes one data line (%s is not supported yet)", DLOC(d), kwname, what);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Field i must be absent or blank: a feature of the dialect not supported yet. */
+static PetscErrorCode FieldUnsupported(Deck *d, PetscInt i, const char *kwname, const char *what) {
+  PetscFunctionBeginUser;
+  USER_CHECK(i >= d->nfield || !d->field[i][0], LOC_FMT "*%s: %s is not supported yet", DLOC(d), kwname, what);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwSurfaceBehavior(Deck *d, const DeckKeyword *kw) {
+  TslSurfaceBehavior *b = &d->m->interactions[d->interaction].behavior;
+  char buf[32];
+  const char *po = ParamUpper(d, "PRESSURE-OVERCLOSURE", buf, sizeof(buf));
+  PetscBool penalty = Param(d, "PENALTY") ? PETSC_TRUE : PETSC_FALSE, got;
+  PetscBool auglag = Param(d, "AUGMENTED LAGRANGE") ? PETSC_TRUE : PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  PetscCall(InteractionLaw(d, &b->given, &b->loc));
+  USER_CHECK(!po || !strcmp(po, "HARD"),
+             LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=%s is not supported yet (only HARD)", KLOC(d), po);
+  USER_CHECK(!(penalty && auglag), LOC_FMT "*SURFACE BEHAVIOR: PENALTY and AUGMENTED LAGRANGE exclude each other",
+             KLOC(d));
+  USER_CHECK(!Param(d, "DIRECT"),
+             LOC_FMT "*SURFACE BEHAVIOR, DIRECT is not supported (use PENALTY or AUGMENTED LAGRANGE)", KLOC(d));
+  USER_CHECK(!Param(d, "NO SEPARATION"), LOC_FMT "*SURFACE BEHAVIOR, NO SEPARATION is not supported yet", KLOC(d));
+  b->enforcement = auglag ? TSL_CONTACT_AUGMENTED_LAGRANGE : TSL_CONTACT_HARD_PENALTY;
+  PetscCall(DataLine(d, 0, &got)); /* optional: penalty stiffness, clearance at zero pressure, stiffness scale */
+  if (!got) PetscFunctionReturn(PETSC_SUCCESS);
+  USER_CHECK(d->nfield <= 3, LOC_FMT "*SURFACE BEHAVIOR data line: penalty stiffness[, clearance, scale factor]",
+             DLOC(d));
+  PetscCall(FieldRealDefault(d, 0, "the penalty stiffness", 0.0, &b->penalty_stiffness));
+  USER_CHECK(b->penalty_stiffness >= 0, LOC_FMT "the penalty stiffness must be positive (or blank for the default)",
+             DLOC(d));
+  PetscCall(FieldUnsupported(d, 1, "SURFACE BEHAVIOR", "a clearance at zero contact pressure"));
+  PetscCall(FieldUnsupported(d, 2, "SURFACE BEHAVIOR", "a penalty stiffness scale factor"));
+  PetscCall(NoMoreRows(d, "SURFACE BEHAVIOR", "a pressure-overclosure table"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwFriction(Deck *d, const DeckKeyword *kw) {
+  TslFriction *f = &d->m->interactions[d->interaction].friction;
+  PetscBool got, tol;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  PetscCall(InteractionLaw(d, &f->given, &f->loc));
+  f->lagrange = Param(d, "LAGRANGE") ? PETSC_TRUE : PETSC_FALSE;
+  f->rough = Param(d, "ROUGH") ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(ParamReal(d, "SLIP TOLERANCE", &f->slip_tolerance, &tol));
+  USER_CHECK(!(tol && f->lagrange), LOC_FMT "*FRICTION: SLIP TOLERANCE does not apply with LAGRANGE", KLOC(d));
+  USER_CHECK(f->slip_tolerance > 0, LOC_FMT "*FRICTION: SLIP TOLERANCE must be positive", KLOC(d));
+  PetscCall(DataLine(d, 0, &got));
+  if (!got) {
+    USER_CHECK(f->rough, LOC_FMT "*FRICTION needs a data line with the friction coefficient", KLOC(d));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  /* CalculiX: mu, stick slope. Abaqus: mu, then slip rate, pressure, temperature... for dependent data. */
+  USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "*FRICTION data line: friction coefficient[, stick slope]",
+             DLOC(d));
+  PetscCall(FieldReal(d, 0, "the friction coefficient", &f->mu));
+  PetscCall(FieldRealDefault(d, 1, "the stick slope", 0.0, &f->stick_slope));
+  USER_CHECK(f->stick_slope >= 0, LOC_FMT "the stick slope must be positive (or blank for the default)", DLOC(d));
+  PetscCall(NoMoreRows(d, "FRICTION", "rate-, pressure- or temperature-dependent friction"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Sorts the rows of a two-column table by x (the deck may list them in any order). */
+static PetscErrorCode SortTable(PetscInt n, PetscReal x[], PetscReal y[]) {
+  PetscInt *perm;
+  PetscReal *tx, *ty;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc3(n, &perm, n, &tx, n, &ty));
+  for (PetscInt i = 0; i < n; i++) perm[i] = i, tx[i] = x[i], ty[i] = y[i];
+  PetscCall(PetscSortRealWithPermutation(n, tx, perm));
+  for (PetscInt i = 0; i < n; i++) x[i] = tx[perm[i]], y[i] = ty[perm[i]];
+  PetscCall(PetscFree3(perm, tx, ty));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwGapConductance(Deck *d, const DeckKeyword *kw) {
+  TslGapConductance *g = &d->m->interactions[d->interaction].conductance;
+  PetscInt deps = 0;
+  PetscReal theta = 0;
+  PetscBool got, has_theta = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  PetscCall(InteractionLaw(d, &g->given, &g->loc));
+  USER_CHECK(!Param(d, "USER"), LOC_FMT "*GAP CONDUCTANCE, USER (subroutine GAPCON) is not supported", KLOC(d));
+  PetscCall(ParamInt(d, "DEPENDENCIES", &deps));
+  USER_CHECK(deps == 0, LOC_FMT "*GAP CONDUCTANCE, DEPENDENCIES (field variables) is not supported yet", KLOC(d));
+  g->by_pressure = Param(d, "PRESSURE") ? PETSC_TRUE : PETSC_FALSE;
+  for (;;) {
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    USER_CHECK(d->nfield >= 1 && d->nfield <= 3,
+               LOC_FMT "*GAP CONDUCTANCE data line: conductance, %s[, temperature] (mass flow rate and field variables "
+                       "are not supported)",
+               DLOC(d), g->by_pressure ? "pressure" : "clearance");
+    PetscCall(TslDeckGrow(&g->value, sizeof(PetscReal), g->n));
+    PetscCall(TslDeckGrow(&g->abscissa, sizeof(PetscReal), g->n));
+    PetscCall(FieldReal(d, 0, "the gap conductance", &g->value[g->n]));
+    PetscCall(
+        FieldRealDefault(d, 1, g->by_pressure ? "the contact pressure" : "the clearance", 0.0, &g->abscissa[g->n]));
+    g->n++;
+    if (d->nfield > 2 && d->field[2][0]) { /* one temperature for the whole table is no dependence */
+      PetscReal t;
+      PetscCall(FieldReal(d, 2, "the temperature", &t));
+      USER_CHECK(!has_theta || t == theta,
+                 LOC_FMT "temperature-dependent *GAP CONDUCTANCE (temperature %g after %g) is not supported yet",
+                 DLOC(d), (double)t, (double)theta);
+      theta = t, has_theta = PETSC_TRUE;
+    }
+  }
+  USER_CHECK(g->n > 0, LOC_FMT "*GAP CONDUCTANCE needs at least one data line", KLOC(d));
+  PetscCall(SortTable(g->n, g->abscissa, g->value));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwGapRadiation(Deck *d, const DeckKeyword *kw) {
+  TslGapRadiation *r = &d->m->interactions[d->interaction].radiation;
+  PetscBool got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  PetscCall(InteractionLaw(d, &r->given, &r->loc));
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(got, LOC_FMT "*GAP RADIATION needs a data line with the two emissivities", KLOC(d));
+  USER_CHECK(d->nfield == 2, LOC_FMT "*GAP RADIATION first data line: emissivity of the main surface, of the secondary",
+             DLOC(d));
+  PetscCall(FieldReal(d, 0, "the emissivity of the main surface", &r->emissivity_main));
+  PetscCall(FieldReal(d, 1, "the emissivity of the secondary surface", &r->emissivity_secondary));
+  for (;;) {
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "*GAP RADIATION data line: effective view factor, clearance",
+               DLOC(d));
+    PetscCall(TslDeckGrow(&r->view_factor, sizeof(PetscReal), r->n));
+    PetscCall(TslDeckGrow(&r->clearance, sizeof(PetscReal), r->n));
+    PetscCall(FieldReal(d, 0, "the effective view factor", &r->view_factor[r->n]));
+    PetscCall(FieldRealDefault(d, 1, "the clearance", 0.0, &r->clearance[r->n]));
+    r->n++;
+  }
+  USER_CHECK(r->n > 0, LOC_FMT "*GAP RADIATION needs the view factor vs clearance lines after the emissivities",
+             KLOC(d));
+  PetscCall(SortTable(r->n, r->clearance, r->view_factor));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwGapHeatGeneration(Deck *d, const DeckKeyword *kw) {
+  TslGapHeatGeneration *h = &d->m->interactions[d->interaction].heat_generation;
+  PetscReal slip_rate;
+  PetscBool got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  PetscCall(InteractionLaw(d, &h->given, &h->loc));
+  USER_CHECK(!Param(d, "USER"), LOC_FMT "*GAP HEAT GENERATION, USER is not supported", KLOC(d));
+  PetscCall(DataLine(d, 0, &got));
+  if (!got) PetscFunctionReturn(PETSC_SUCCESS);
+  USER_CHECK(d->nfield <= 3,
+             LOC_FMT "*GAP HEAT GENERATION data line: fraction converted to heat, weight of the "
+                     "secondary surface",
+             DLOC(d));
+  PetscCall(FieldRealDefault(d, 0, "the fraction converted to heat", 1.0, &h->fraction));
+  PetscCall(FieldRealDefault(d, 1, "the weight of the secondary surface", 0.5, &h->weight_secondary));
+  /* CalculiX third value: a prescribed slip rate; negative means "computed", which is what we do */
+  PetscCall(FieldRealDefault(d, 2, "the slip rate", -1.0, &slip_rate));
+  USER_CHECK(slip_rate < 0, LOC_FMT "*GAP HEAT GENERATION: a prescribed slip rate (third value) is not supported yet",
+             DLOC(d));
+  PetscCall(NoMoreRows(d, "GAP HEAT GENERATION", "more than one row"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw) {
+  TslModel *m = d->m;
+  TslContactPair proto;
+  const char *inter, *type, *adjust = Param(d, "ADJUST");
+  char tbuf[32];
+  PetscInt first = m->npair;
+  PetscBool got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  PetscCall(PetscMemzero(&proto, sizeof(proto)));
+  PetscCall(ParamRequired(d, "INTERACTION", &inter));
+  PetscCall(CopyName(d, d->kwloc, proto.interaction, inter));
+  proto.interaction_index = -1;
+  type = ParamUpper(d, "TYPE", tbuf, sizeof(tbuf));
+  USER_CHECK(!type || !strcmp(type, "NODE TO SURFACE") || !strcmp(type, "SURFACE TO SURFACE"),
+             LOC_FMT "*CONTACT PAIR, TYPE=%s is not supported (NODE TO SURFACE or SURFACE TO SURFACE)", KLOC(d), type);
+  proto.type =
+      (type && !strcmp(type, "SURFACE TO SURFACE")) ? TSL_CONTACT_SURFACE_TO_SURFACE : TSL_CONTACT_NODE_TO_SURFACE;
+  USER_CHECK(!Param(d, "TIED"), LOC_FMT "*CONTACT PAIR, TIED is not supported yet", KLOC(d));
+  proto.small_sliding = Param(d, "SMALL SLIDING") ? PETSC_TRUE : PETSC_FALSE;
+  proto.smooth = 0.2;
+  PetscCall(ParamReal(d, "SMOOTH", &proto.smooth, NULL));
+  USER_CHECK(proto.smooth >= 0 && proto.smooth <= 0.5, LOC_FMT "*CONTACT PAIR: SMOOTH must lie in [0, 0.5] (got %g)",
+             KLOC(d), (double)proto.smooth);
+  if (adjust) {
+    USER_CHECK(adjust[0], LOC_FMT "*CONTACT PAIR: ADJUST= needs a distance or a node set", KLOC(d));
+    proto.adjust_given = PETSC_TRUE;
+    if (isdigit((unsigned char)adjust[0]) || adjust[0] == '.' || adjust[0] == '+' || adjust[0] == '-') {
+      PetscCall(ParamReal(d, "ADJUST", &proto.adjust, NULL));
+      USER_CHECK(proto.adjust >= 0, LOC_FMT "*CONTACT PAIR: ADJUST must not be negative", KLOC(d));
+    } else
+      PetscCall(CopyName(d, d->kwloc, proto.adjust_set, adjust));
+  }
+  for (;;) {
+    TslContactPair *p;
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    USER_CHECK(d->nfield == 2 && d->field[0][0] && d->field[1][0],
+               LOC_FMT "*CONTACT PAIR data line needs: secondary surface, main surface", DLOC(d));
+    PetscCall(TslDeckGrow(&m->pairs, sizeof(TslContactPair), m->npair));
+    p = &m->pairs[m->npair++];
+    *p = proto;
+    p->loc = d->loc;
+    PetscCall(CopyName(d, d->loc, p->secondary, d->field[0]));
+    PetscCall(CopyName(d, d->loc, p->main, d->field[1]));
+  }
+  USER_CHECK(m->npair > first, LOC_FMT "*CONTACT PAIR needs a data line: secondary surface, main surface", KLOC(d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* ---- steps ----------------------------------------------------------------------------------- */
 
 static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw) {
@@ -1342,6 +1621,14 @@ static const DeckKeyword Keywords[] = {
     {"AMPLITUDE", CTX_MODEL, "NAME|TIME|DEFINITION", KwAmplitude, 0, NULL},
     {"PHYSICAL CONSTANTS", CTX_MODEL, "ABSOLUTE ZERO|STEFAN BOLTZMANN", KwPhysical, 0, NULL},
     {"EQUATION", CTX_ANY, "", KwEquation, 0, NULL},
+    {"SURFACE INTERACTION", CTX_MODEL, "NAME", KwSurfaceInteraction, 0, NULL},
+    {"SURFACE BEHAVIOR", CTX_INTERACTION, "PRESSURE-OVERCLOSURE|PENALTY|AUGMENTED LAGRANGE|DIRECT|NO SEPARATION",
+     KwSurfaceBehavior, 0, NULL},
+    {"FRICTION", CTX_INTERACTION, "LAGRANGE|ROUGH|SLIP TOLERANCE", KwFriction, 0, NULL},
+    {"GAP CONDUCTANCE", CTX_INTERACTION, "PRESSURE|DEPENDENCIES|USER", KwGapConductance, 0, NULL},
+    {"GAP RADIATION", CTX_INTERACTION, "", KwGapRadiation, 0, NULL},
+    {"GAP HEAT GENERATION", CTX_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
+    {"CONTACT PAIR", CTX_MODEL, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED", KwContactPair, 0, NULL},
     {"STEP", CTX_MODEL, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
     {"END STEP", CTX_STEP, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", CTX_STEP, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
@@ -1367,6 +1654,8 @@ static const DeckKeyword Keywords[] = {
     {"CONTACT PRINT", CTX_ANY, NULL, KwIgnored, 0, NULL},
     {"CONTACT FILE", CTX_ANY, NULL, KwIgnored, 0, NULL},
     {"ENERGY PRINT", CTX_ANY, NULL, KwIgnored, 0, NULL},
+    {"CONTACT CONTROLS", CTX_ANY, NULL, KwIgnored, 0, NULL},
+    {"CONTACT OUTPUT", CTX_ANY, NULL, KwIgnored, 0, NULL},
 };
 
 static PetscBool ParamKnown(const char *list, const char *key) {
@@ -1389,6 +1678,7 @@ static PetscErrorCode DeckKeywordLine(Deck *d) {
     if (!strcmp(Keywords[i].name, d->kw)) kw = &Keywords[i];
   USER_CHECK(kw, LOC_FMT "unsupported keyword *%s", KLOC(d), d->kw);
   if (kw->where != CTX_MATERIAL && kw->handler != KwIgnored) d->material = -1;
+  if (kw->where != CTX_INTERACTION && kw->handler != KwIgnored) d->interaction = -1;
   switch (kw->where) {
   case CTX_MODEL:
     USER_CHECK(d->step < 0,
@@ -1404,6 +1694,11 @@ static PetscErrorCode DeckKeywordLine(Deck *d) {
   case CTX_MATERIAL:
     USER_CHECK(d->step < 0 && d->material >= 0,
                LOC_FMT "*%s must follow *MATERIAL (material properties outside a material)", KLOC(d), d->kw);
+    break;
+  case CTX_INTERACTION:
+    USER_CHECK(d->step < 0 && d->interaction >= 0,
+               LOC_FMT "*%s must follow *SURFACE INTERACTION (interface properties outside a surface interaction)",
+               KLOC(d), d->kw);
     break;
   case CTX_ANY:
     break;
@@ -1485,6 +1780,7 @@ PetscErrorCode TslDeckRead(const char *path, TslModel **model) {
   PetscCall(PetscMemzero(&d, sizeof(d)));
   d.step = -1;
   d.material = -1;
+  d.interaction = -1;
   PetscCall(TslModelCreate(&d.m));
   /* On a user error the partial model and the reader's buffers are freed before the error goes up. */
   ierr = DeckParse(&d, path);

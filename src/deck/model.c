@@ -59,6 +59,15 @@ PetscErrorCode TslModelDestroy(TslModel **model) {
     PetscCall(PetscFree(m->equations[i].gdof));
   }
   PetscCall(PetscFree(m->equations));
+  for (PetscInt i = 0; i < m->ninteraction; i++) {
+    TslInteraction *it = &m->interactions[i];
+    PetscCall(PetscFree(it->conductance.value));
+    PetscCall(PetscFree(it->conductance.abscissa));
+    PetscCall(PetscFree(it->radiation.view_factor));
+    PetscCall(PetscFree(it->radiation.clearance));
+  }
+  PetscCall(PetscFree(m->interactions));
+  PetscCall(PetscFree(m->pairs));
   for (PetscInt i = 0; i < m->nstep; i++) {
     PetscCall(PetscFree(m->steps[i].loads));
     PetscCall(PetscFree(m->steps[i].out));
@@ -128,6 +137,9 @@ PetscInt TslModelFindMaterial(const TslModel *model, const char *name) {
 }
 PetscInt TslModelFindAmplitude(const TslModel *model, const char *name) {
   FIND_BY_NAME(amplitudes, namplitude);
+}
+PetscInt TslModelFindInteraction(const TslModel *model, const char *name) {
+  FIND_BY_NAME(interactions, ninteraction);
 }
 
 static PetscErrorCode BuildIndex(PetscInt n, const PetscInt ids[], PetscInt **sid, PetscInt **pos) {
@@ -307,6 +319,15 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m) {
     PetscCall(PackArray(p, &e->coef, e->n, sizeof(PetscReal)));
     PetscCall(PackArray(p, &e->gdof, e->n, sizeof(PetscInt)));
   }
+  PetscCall(PackArray(p, &m->interactions, m->ninteraction, sizeof(TslInteraction)));
+  for (PetscInt i = 0; i < m->ninteraction; i++) {
+    TslInteraction *it = &m->interactions[i];
+    PetscCall(PackArray(p, &it->conductance.value, it->conductance.n, sizeof(PetscReal)));
+    PetscCall(PackArray(p, &it->conductance.abscissa, it->conductance.n, sizeof(PetscReal)));
+    PetscCall(PackArray(p, &it->radiation.view_factor, it->radiation.n, sizeof(PetscReal)));
+    PetscCall(PackArray(p, &it->radiation.clearance, it->radiation.n, sizeof(PetscReal)));
+  }
+  PetscCall(PackArray(p, &m->pairs, m->npair, sizeof(TslContactPair)));
   PetscCall(PackArray(p, &m->steps, m->nstep, sizeof(TslStep)));
   for (PetscInt i = 0; i < m->nstep; i++) {
     PetscCall(PackArray(p, &m->steps[i].loads, m->steps[i].nload, sizeof(TslLoad)));

@@ -19,6 +19,8 @@ static PetscErrorCode Summary(const TslModel *m) {
                         "materials %" PetscInt_FMT ", sections %" PetscInt_FMT ", initial conditions %" PetscInt_FMT
                         ", amplitudes %" PetscInt_FMT ", equations %" PetscInt_FMT "\n",
                         m->nmaterial, m->nsection, m->ninit, m->namplitude, m->nequation));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "surface interactions %" PetscInt_FMT ", contact pairs %" PetscInt_FMT "\n",
+                        m->ninteraction, m->npair));
   for (PetscInt i = 0; i < m->nstep; i++) {
     const TslStep *s = &m->steps[i];
     PetscCall(PetscPrintf(PETSC_COMM_SELF,
