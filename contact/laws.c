@@ -72,12 +72,14 @@ PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHi
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Contact pressure: penalty pN = eps_n <-g>, augmented pN = <lambda + eps_n (-g)>. */
+/* Contact pressure: penalty pN = eps_n <-g>, augmented pN = <lambda + eps_n (-g)>. Exactly touching
+ * (argument 0) takes the closed branch: zero pressure but the penalty stiffness, so bodies that start
+ * in contact are held from the first Newton iteration. */
 static TslDual NormalPressure(const TslContactLaw *law, const TslContactHistory *h, TslDual g) {
   TslDual a = DScale(-law->eps_n, g);
 
   if (law->normal == TSL_CONTACT_NORMAL_AUGMENTED) a = DAddC(a, h->lambda);
-  return a.v > 0 ? a : DConst(0);
+  return a.v >= 0 ? a : DConst(0);
 }
 
 typedef struct {

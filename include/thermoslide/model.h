@@ -110,6 +110,7 @@ typedef struct {
   PetscInt    amplitude;         /* index into amplitudes[], -1 = step default */
   PetscInt    film_amplitude;    /* FILM AMPLITUDE= (scales h), -1 = none */
   PetscBool   op_new;            /* OP=NEW on this keyword: previous loads of this kind are removed */
+  PetscBool   fixed;             /* *BOUNDARY, FIXED: hold the dofs at their values at the start of the step */
   TslLoc      loc;
 } TslLoad;
 
@@ -211,6 +212,20 @@ typedef struct {
   PetscReal      adjust;
   char           adjust_set[TSL_NAME_LEN];
   TslLoc         loc; /* the data line */
+
+  /* Derived by the mesh module on rank 0 (NULL / 0 before): the main surface as segments (2D), the
+   * secondary nodes with their tributary lengths; after distribution each rank keeps the secondary
+   * nodes it owns and the whole main surface (whose nodes it holds as ghosts). */
+  PetscInt   nmain;
+  PetscInt  *main_node;            /* [2*nmain] node ids of each segment, main body on the left */
+  PetscInt  *main_prev, *main_next; /* [nmain] neighbouring segment, -1 at an end */
+  PetscInt   nsec;
+  PetscInt  *sec_node;   /* [nsec] node ids */
+  PetscReal *sec_length; /* [nsec] tributary length on the secondary surface (reference) */
+  PetscReal  thickness;  /* out-of-plane thickness of the secondary elements (plane models) */
+  PetscInt   kin;        /* TslKinematics of the secondary elements */
+  PetscReal  mean_length; /* mean main segment length (reference) */
+  PetscReal  penalty;    /* default normal penalty: 10 E / mean_length */
 } TslContactPair;
 
 typedef struct {

@@ -2,7 +2,7 @@
  *
  * Run-time options (PETSc options database):
  *   -tsl_rtol <1e-9>       Newton: per-field residual reduction (displacement and temperature rows separately)
- *   -tsl_atol_rel <1e-12>  Newton: per-field residual below this fraction of the largest residual seen in the job
+ *   -tsl_atol_rel <1e-8>   Newton: per-field residual below this fraction of the largest residual seen in the job
  *   -tsl_cutback <0.25>    increment factor after a failed increment
  *   -tsl_growth <1.5>      increment factor after an increment that needed at most -tsl_easy_its Newton iterations
  *   -tsl_easy_its <5>

@@ -177,7 +177,67 @@ def loads_multistep():
           "*FILM, FILM AMPLITUDE=HRAMP\n BOTE, F1, 0.0, 10.0\n*END STEP\n")
 
 
+def sliding_blocks(series):
+    """The spec's finite-sliding problems in plane strain (CPE4T): a block 2 x 1 (8 x 3 elements) pressed
+    on a block 6 x 1 (12 x 2 elements) fixed at its bottom; total area 8, rho c = 1.
+    series: conductance (pressure-dependent gap conductance, 5 steps), radiation (gap radiation,
+    5 steps), friction (Lagrange friction and frictional heating, 3 steps)."""
+    bnodes, belems = grid2d(12, 2, 0.0, 6.0, 0.0, 1.0)
+    tnodes, telems = grid2d(8, 3, 2.0, 4.0, 1.0, 2.0)
+    tnodes = [(n + 1000, x, y) for n, x, y in tnodes]
+    telems = [(e[0] + 1000,) + tuple(v + 1000 for v in e[1:]) for e in telems]
+    base = [n[0] for n in bnodes if abs(n[2]) < 1e-12]
+    topface = [n[0] for n in tnodes if abs(n[2] - 2.0) < 1e-12]
+    main_elems = [e[0] for e in belems if e[0] > 12]                   # top row of the large block
+    sec_elems = [e[0] for e in telems if e[0] <= 1008]                 # bottom row of the small block
+    pressed = [e[0] for e in telems if e[0] > 1016]                    # top row of the small block
+    filmed = [6, 7]                                                    # centre of the large block's bottom
+    text = ("*HEADING\n Finite sliding between coupled temperature-displacement CPE4T blocks: %s series\n" % series +
+            fmt_nodes(bnodes) + "*NODE, NSET=ALL\n" + "".join(" %d, %.10g, %.10g\n" % n for n in tnodes) +
+            "*ELEMENT, TYPE=CPE4T, ELSET=LARGE\n" + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
+            "*ELEMENT, TYPE=CPE4T, ELSET=SMALL\n" + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
+            nset("BASE", base) + nset("TOPFACE", topface) + elset("MAINE", main_elems) + elset("SECE", sec_elems) +
+            elset("PRESSED", pressed) + elset("FILMED", filmed) +
+            "*SURFACE, NAME=MAIN, TYPE=ELEMENT\n MAINE, S3\n*SURFACE, NAME=SECONDARY, TYPE=ELEMENT\n SECE, S1\n" + MAT +
+            "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n 1.0\n")
+    if series == "conductance":
+        text += "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
+    elif series == "radiation":
+        text += ("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
+                 "*SURFACE INTERACTION, NAME=IFACE\n*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 1.0\n")
+    else:
+        text += ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION, LAGRANGE\n 0.1\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n"
+                 "*GAP HEAT GENERATION\n 0.5, 0.5\n")
+    text += ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05\n SECONDARY, MAIN\n"
+             "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n"
+             "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+    if series == "friction":
+        ref = topface[0]
+        text += "".join("*EQUATION\n 2\n %d, %d, 1.0, %d, %d, -1.0\n" % (n, d, ref, d) for n in topface[1:] for d in (1, 2))
+        text += ("*STEP, NAME=PRESS, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.5, 1.0\n"
+                 "*BOUNDARY\n BASE, 1, 2\n %d, 1, 1\n*CLOAD\n %d, 2, -200.0\n*END STEP\n" % (ref, ref) +
+                 "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.025, 3.0, 1e-5, 0.025\n"
+                 "*BOUNDARY, AMPLITUDE=SLIDE\n %d, 1, 1, 1.5\n*END STEP\n" % ref +
+                 "*STEP, NAME=EQUILIBRATE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 20.0, 1e-5, 2.0\n*END STEP\n")
+    else:
+        text += ("*AMPLITUDE, NAME=OFF\n 0.0, 0.0, 1.0, 1.0\n*AMPLITUDE, NAME=FLUXDOWN\n 0.0, 1.0, 0.1, 0.0\n"
+                 "*STEP, NAME=HEAT, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 1.0, 1e-5, 0.1\n"
+                 "*BOUNDARY\n BASE, 1, 2\n TOPFACE, 1, 1\n*DLOAD\n PRESSED, P3, 100.0\n*DFLUX\n PRESSED, S3, 100.0\n"
+                 "*FILM\n FILMED, F1, 0.0, 10.0\n*END STEP\n"
+                 "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.05\n"
+                 "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, 1, 1, 1.5\n*END STEP\n"
+                 "*STEP, NAME=STEADY\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n*END STEP\n"
+                 "*STEP, NAME=DOUBLE PRESSURE\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
+                 "*DLOAD\n PRESSED, P3, 200.0\n*END STEP\n"
+                 "*STEP, NAME=SLIDE OFF, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.1\n"
+                 "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, 2, 2\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, 1, 1, 5.0\n"
+                 "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S3, 100.0\n*END STEP\n")
+    write("sliding_%s_cpe4t.inp" % series, text)
+
+
 if __name__ == "__main__":
+    for series in ("conductance", "radiation", "friction"):
+        sliding_blocks(series)
     loads_multistep()
     for t in ("CPE4T", "CPS4T", "CAX4T", "C3D8T"):
         conduction_steady(t)

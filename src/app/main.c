@@ -20,7 +20,7 @@ static const char Usage[] = "usage: mpirun -n N thermoslide job.inp [-o DIR] [op
                             "  -o DIR, -tsl_output_dir DIR   output directory (created if missing)\n"
                             "  -tsl_partition metis|axis_x|axis_y|axis_z   element partition (default metis)\n"
                             "  -tsl_rtol 1e-9                Newton: per-field residual reduction\n"
-                            "  -tsl_atol_rel 1e-12           Newton: per-field floor, relative to the largest residual of the job\n"
+                            "  -tsl_atol_rel 1e-8            Newton: per-field floor, relative to the largest residual of the job\n"
                             "  -tsl_cutback 0.25             increment factor after a failed increment\n"
                             "  -tsl_growth 1.5               increment factor after an easy increment\n"
                             "  -tsl_easy_its 5               Newton iterations that count as easy\n"

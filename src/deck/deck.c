@@ -1522,6 +1522,7 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw) {
     l.amplitude = amp;
     l.film_amplitude = famp;
     l.op_new = (op && !strcmp(op, "NEW")) ? PETSC_TRUE : PETSC_FALSE;
+    l.fixed = Param(d, "FIXED") ? PETSC_TRUE : PETSC_FALSE;
     l.loc = d->loc;
     USER_CHECK(d->nfield >= 2, LOC_FMT "*%s data line is too short", DLOC(d), d->kw);
     PetscCall(ParseTarget(d, d->field[0], &l.target));
@@ -1632,7 +1633,7 @@ static const DeckKeyword Keywords[] = {
     {"STEP", CTX_MODEL, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
     {"END STEP", CTX_STEP, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", CTX_STEP, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
-    {"BOUNDARY", CTX_STEP, LOAD_PARAMS, KwLoad, TSL_LOAD_BOUNDARY, LineBoundary},
+    {"BOUNDARY", CTX_STEP, LOAD_PARAMS "|FIXED", KwLoad, TSL_LOAD_BOUNDARY, LineBoundary},
     {"CLOAD", CTX_STEP, LOAD_PARAMS, KwLoad, TSL_LOAD_CLOAD, LineConcentrated},
     {"CFLUX", CTX_STEP, LOAD_PARAMS, KwLoad, TSL_LOAD_CFLUX, LineConcentrated},
     {"DLOAD", CTX_STEP, LOAD_PARAMS, KwLoad, TSL_LOAD_DLOAD, LineDload},

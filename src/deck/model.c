@@ -67,6 +67,14 @@ PetscErrorCode TslModelDestroy(TslModel **model) {
     PetscCall(PetscFree(it->radiation.clearance));
   }
   PetscCall(PetscFree(m->interactions));
+  for (PetscInt i = 0; i < m->npair; i++) {
+    TslContactPair *c = &m->pairs[i];
+    PetscCall(PetscFree(c->main_node));
+    PetscCall(PetscFree(c->main_prev));
+    PetscCall(PetscFree(c->main_next));
+    PetscCall(PetscFree(c->sec_node));
+    PetscCall(PetscFree(c->sec_length));
+  }
   PetscCall(PetscFree(m->pairs));
   for (PetscInt i = 0; i < m->nstep; i++) {
     PetscCall(PetscFree(m->steps[i].loads));
@@ -328,6 +336,14 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m) {
     PetscCall(PackArray(p, &it->radiation.clearance, it->radiation.n, sizeof(PetscReal)));
   }
   PetscCall(PackArray(p, &m->pairs, m->npair, sizeof(TslContactPair)));
+  for (PetscInt i = 0; i < m->npair; i++) {
+    TslContactPair *c = &m->pairs[i];
+    PetscCall(PackArray(p, &c->main_node, 2 * c->nmain, sizeof(PetscInt)));
+    PetscCall(PackArray(p, &c->main_prev, c->nmain, sizeof(PetscInt)));
+    PetscCall(PackArray(p, &c->main_next, c->nmain, sizeof(PetscInt)));
+    PetscCall(PackArray(p, &c->sec_node, c->nsec, sizeof(PetscInt)));
+    PetscCall(PackArray(p, &c->sec_length, c->nsec, sizeof(PetscReal)));
+  }
   PetscCall(PackArray(p, &m->steps, m->nstep, sizeof(TslStep)));
   for (PetscInt i = 0; i < m->nstep; i++) {
     PetscCall(PackArray(p, &m->steps[i].loads, m->steps[i].nload, sizeof(TslLoad)));

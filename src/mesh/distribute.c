@@ -98,6 +98,17 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
         if (!mark[p]) mark[p] = 2;
       }
   }
+  /* contact: a rank that owns secondary nodes of a pair holds the whole main surface (as ghosts), so
+   * the main-surface data it needs arrives with every ghost update */
+  for (PetscInt k = 0; k < g->npair; k++) {
+    const TslContactPair *c     = &g->pairs[k];
+    PetscBool             owns = PETSC_FALSE;
+    for (PetscInt i = 0; i < c->nsec && !owns; i++) owns = (PetscBool)(owner[TslModelNodeIndex(g, c->sec_node[i])] == r);
+    for (PetscInt i = 0; owns && i < 2 * c->nmain; i++) {
+      PetscInt q = TslModelNodeIndex(g, c->main_node[i]);
+      if (!mark[q]) mark[q] = 2;
+    }
+  }
   PetscCall(PetscMalloc2(g->nnode, &nodes, g->nnode, &key));
   for (PetscInt p = 0; p < g->nnode; p++)
     if (mark[p] && owner[p] == r) nodes[nn] = p, key[nn++] = gnum[p];
@@ -108,6 +119,13 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
   PetscCall(PetscSortIntWithArray(nn - nown, key + nown, nodes + nown));
 
   PetscCall(TslModelSubset(g, ne, elems, nn, nodes, &sub));
+  for (PetscInt k = 0; k < sub->npair; k++) {
+    TslContactPair *c = &sub->pairs[k];
+    PetscInt        n = 0;
+    for (PetscInt i = 0; i < c->nsec; i++)
+      if (owner[TslModelNodeIndex(g, c->sec_node[i])] == r) c->sec_node[n] = c->sec_node[i], c->sec_length[n++] = c->sec_length[i];
+    c->nsec = n;
+  }
   sub->nnode_global = nnode_used;
   sub->nelem_global = g->nelem;
   sub->nnode_owned  = nown;
@@ -122,6 +140,114 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The section of an element (its thickness and material), or -1. */
+static PetscInt ElementSection(const TslModel *g, PetscInt id)
+{
+  for (PetscInt s = 0; s < g->nsection; s++) {
+    PetscInt k = TslModelFindElementSet(g, g->sections[s].elset), loc;
+    if (k < 0) continue;
+    PetscCallAbort(PETSC_COMM_SELF, PetscFindInt(id, g->elsets[k].n, g->elsets[k].ids, &loc));
+    if (loc >= 0) return s;
+  }
+  return -1;
+}
+
+/* Nodes of face f (1-based) of element position e: the catalogue's face list, in its orientation. */
+static PetscInt FaceNodes(const TslModel *g, PetscInt e, PetscInt f, PetscInt nodes[])
+{
+  const TslGeometry *geom = TslElementTypeGet(g->elem_type[e])->geom;
+  for (PetscInt a = 0; a < geom->face_nnode[f - 1]; a++) nodes[a] = g->elem_conn[g->elem_ptr[e] + geom->face_node[f - 1][a]];
+  return geom->face_nnode[f - 1];
+}
+
+/* Contact pairs in the solver's terms (rank 0, whole model): main surfaces as oriented segments with
+ * their neighbours, secondary nodes with tributary lengths, thickness, kinematics, default penalty. */
+static PetscErrorCode PrepareContactPairs(TslModel *g)
+{
+  char loc[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < g->npair; k++) {
+    TslContactPair   *c    = &g->pairs[k];
+    const TslSurface *main = &g->surfaces[TslModelFindSurface(g, c->main)];
+    const TslSurface *sec  = &g->surfaces[TslModelFindSurface(g, c->secondary)];
+    PetscInt         *first, *perm, nsec = 0, e0 = -1, s;
+    PetscReal         Lsum = 0, E = 0;
+
+    PetscCheck(c->type == TSL_CONTACT_NODE_TO_SURFACE, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: *CONTACT PAIR, TYPE=SURFACE TO SURFACE is not supported yet (use the default node-to-surface)",
+               TslLocString(g, c->loc, loc, sizeof(loc)));
+    PetscCheck(g->dim == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact between 3D elements is not supported yet", TslLocString(g, c->loc, loc, sizeof(loc)));
+    /* main segments */
+    c->nmain = main->n;
+    PetscCall(PetscMalloc1(2 * c->nmain, &c->main_node));
+    PetscCall(PetscMalloc1(c->nmain, &c->main_prev));
+    PetscCall(PetscMalloc1(c->nmain, &c->main_next));
+    for (PetscInt i = 0; i < main->n; i++) {
+      PetscInt e = TslModelElementIndex(g, main->elem[i]), nodes[TSL_MAX_FACE_NODES];
+      PetscInt nf = FaceNodes(g, e, main->face[i], nodes);
+      PetscCheck(nf == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact on faces with %" PetscInt_FMT " nodes is not supported yet", TslLocString(g, c->loc, loc, sizeof(loc)), nf);
+      c->main_node[2 * i] = nodes[0], c->main_node[2 * i + 1] = nodes[1];
+      c->main_prev[i] = c->main_next[i] = -1;
+      {
+        const PetscReal *a = &g->node_xyz[3 * TslModelNodeIndex(g, nodes[0])], *b = &g->node_xyz[3 * TslModelNodeIndex(g, nodes[1])];
+        Lsum += PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
+      }
+      if (i == 0) e0 = main->elem[i];
+    }
+    /* neighbours: the segment that starts where this one ends */
+    PetscCall(PetscMalloc2(c->nmain, &first, c->nmain, &perm));
+    for (PetscInt i = 0; i < c->nmain; i++) first[i] = c->main_node[2 * i], perm[i] = i;
+    PetscCall(PetscSortIntWithArray(c->nmain, first, perm));
+    for (PetscInt i = 0; i < c->nmain; i++) {
+      PetscInt at;
+      PetscCall(PetscFindInt(c->main_node[2 * i + 1], c->nmain, first, &at));
+      if (at >= 0) c->main_next[i] = perm[at], c->main_prev[perm[at]] = i;
+    }
+    PetscCall(PetscFree2(first, perm));
+    s = ElementSection(g, e0);
+    if (s >= 0) E = g->materials[g->sections[s].material_index].E;
+    c->mean_length = c->nmain ? Lsum / c->nmain : 0;
+    c->penalty     = c->mean_length > 0 ? 10.0 * E / c->mean_length : 0;
+
+    /* secondary nodes and their tributary lengths */
+    if (sec->kind == TSL_SURFACE_NODE) {
+      c->nsec = sec->n;
+      PetscCall(PetscMalloc1(c->nsec, &c->sec_node));
+      PetscCall(PetscMalloc1(c->nsec, &c->sec_length));
+      for (PetscInt i = 0; i < sec->n; i++) c->sec_node[i] = sec->elem[i], c->sec_length[i] = 1.0; /* node surfaces: unit area per node */
+    } else {
+      PetscCall(PetscMalloc1(2 * sec->n, &c->sec_node));
+      PetscCall(PetscMalloc1(2 * sec->n, &c->sec_length));
+      for (PetscInt i = 0; i < sec->n; i++) {
+        PetscInt e = TslModelElementIndex(g, sec->elem[i]), nodes[TSL_MAX_FACE_NODES], nf = FaceNodes(g, e, sec->face[i], nodes);
+        const PetscReal *a, *b;
+        PetscReal        L;
+        PetscCheck(nf == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact on faces with %" PetscInt_FMT " nodes is not supported yet", TslLocString(g, c->loc, loc, sizeof(loc)), nf);
+        a = &g->node_xyz[3 * TslModelNodeIndex(g, nodes[0])], b = &g->node_xyz[3 * TslModelNodeIndex(g, nodes[1])];
+        L = PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
+        for (PetscInt a2 = 0; a2 < 2; a2++) c->sec_node[nsec] = nodes[a2], c->sec_length[nsec++] = 0.5 * L;
+        if (i == 0) e0 = sec->elem[i];
+      }
+      /* merge duplicates: a node shared by two facets gets both halves */
+      PetscCall(PetscSortIntWithScalarArray(nsec, c->sec_node, c->sec_length));
+      c->nsec = 0;
+      for (PetscInt i = 0; i < nsec; i++) {
+        if (c->nsec > 0 && c->sec_node[c->nsec - 1] == c->sec_node[i]) c->sec_length[c->nsec - 1] += c->sec_length[i];
+        else c->sec_node[c->nsec] = c->sec_node[i], c->sec_length[c->nsec++] = c->sec_length[i];
+      }
+    }
+    if (sec->kind == TSL_SURFACE_ELEMENT && sec->n > 0) {
+      PetscInt ps = ElementSection(g, e0);
+      c->kin       = TslElementTypeGet(g->elem_type[TslModelElementIndex(g, e0)])->kin;
+      c->thickness = ps >= 0 && g->sections[ps].thickness > 0 ? g->sections[ps].thickness : 1.0;
+    } else {
+      c->kin       = g->nelem ? TslElementTypeGet(g->elem_type[0])->kin : TSL_KIN_PLANE_STRAIN;
+      c->thickness = 1.0;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt size, TslModel **local)
 {
   PetscInt *epart, *owner, *gnum, *node_nat, *elem_nat, *node_by_id, *elem_by_id, *count, *offset, *mark, nused = 0;
@@ -130,6 +256,7 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
 
   PetscFunctionBeginUser;
   PetscCall(TslModelIndex(g));
+  PetscCall(PrepareContactPairs(g));
   PetscCall(PetscOptionsGetString(NULL, NULL, "-tsl_partition", method, sizeof(method), NULL));
   PetscCheck(g->nelem >= size, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "the model has %" PetscInt_FMT " elements, fewer than the %d ranks", g->nelem, (int)size);
   PetscCall(PetscMalloc4(g->nelem, &epart, g->nnode, &owner, g->nnode, &gnum, g->nnode, &node_nat));

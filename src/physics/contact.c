@@ -240,7 +240,8 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
     TslContactNode          *cn = &p->cnode[i];
     const TslContactSurface *cs = &p->csurf[cn->pair];
     if (cn->seg < 0) continue;
-    if (cn->out.side != 0) loc[0]++;
+    /* a node on a segment end may fall outside [0,1] by round-off: only a real departure re-pairs */
+    if (TslContactProjectionSide(cn->out.xi_raw, 1e-6) != 0) loc[0]++;
     if (cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED) {
       PetscReal c;
       PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &cn->hist.lambda, &c));
@@ -312,7 +313,7 @@ PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscR
 }
 
 /* The contact law of an interaction, in the kernel's terms. */
-static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, TslContactLaw *law)
+static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscReal seg_length, TslContactLaw *law)
 {
   const TslModel       *m  = p->m;
   const TslInteraction *it = &m->interactions[pair->interaction_index];
@@ -327,6 +328,9 @@ static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, TslCont
     law->mu       = it->friction.mu;
     law->friction = it->friction.lagrange ? TSL_CONTACT_FRICTION_LAGRANGE : TSL_CONTACT_FRICTION_PENALTY;
     law->eps_t    = it->friction.stick_slope > 0 ? it->friction.stick_slope : law->eps_n;
+    /* LAGRANGE: sign(slip) is regularised over a slip far below any slip that heats (1e-4 of a segment):
+     * sharper makes Newton oscillate at sticking nodes, and every finite slip still dissipates mu p |ds| */
+    law->slip_tol = 1e-4 * seg_length;
   }
   if (it->conductance.given) {
     law->conductance = it->conductance.by_pressure ? TSL_CONTACT_CONDUCTANCE_PRESSURE : TSL_CONTACT_CONDUCTANCE_CLEARANCE;
@@ -345,7 +349,8 @@ static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, TslCont
     law->sigma         = m->stefan_boltzmann;
     law->theta_zero    = m->absolute_zero;
   }
-  law->eta = it->heat_generation.given ? it->heat_generation.fraction : 1.0;
+  /* without *GAP HEAT GENERATION friction dissipates without heating the bodies */
+  law->eta = it->heat_generation.given ? it->heat_generation.fraction : 0.0;
   law->f   = it->heat_generation.given ? it->heat_generation.weight_secondary : 0.5;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -365,9 +370,7 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
   for (PetscInt k = 0; k < m->npair; k++) {
     const TslContactPair *pair = &m->pairs[k];
     TslContactSurface    *cs   = &p->csurf[k];
-    PetscReal             Lsum = 0;
 
-    PetscCall(SetUpLaw(p, pair, &cs->law));
     cs->kin       = (TslKinematics)pair->kin;
     cs->thickness = pair->thickness;
     cs->smooth    = pair->smooth;
@@ -381,13 +384,10 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
         cs->main_lnode[2 * s + a] = TslModelNodeIndex(m, pair->main_node[2 * s + a]);
         PetscCheck(!cs->active || cs->main_lnode[2 * s + a] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "main-surface node %" PetscInt_FMT " is not local", pair->main_node[2 * s + a]);
       }
-      if (cs->active) {
-        const PetscReal *a = &m->node_xyz[3 * cs->main_lnode[2 * s]], *b = &m->node_xyz[3 * cs->main_lnode[2 * s + 1]];
-        Lsum += PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
-      }
     }
+    PetscCall(SetUpLaw(p, pair, pair->mean_length, &cs->law));
     /* candidates within one mean segment length, or the largest tabulated clearance */
-    cs->search_radius = pair->nmain ? Lsum / pair->nmain : 0;
+    cs->search_radius = pair->mean_length;
     if (cs->law.conductance == TSL_CONTACT_CONDUCTANCE_CLEARANCE) cs->search_radius = PetscMax(cs->search_radius, cs->law.k_arg[cs->law.k_n - 1]);
     if (cs->law.F_n) cs->search_radius = PetscMax(cs->search_radius, cs->law.F_clearance[cs->law.F_n - 1]);
     for (PetscInt i = 0; i < pair->nsec; i++) {

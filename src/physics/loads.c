@@ -7,7 +7,8 @@
  *  - OP=NEW on any line of a kind removes all earlier loads of that kind at the start of the step;
  *  - a value defined without amplitude ramps from its previous value (or, for a newly prescribed dof,
  *    from the current solution) under AMPLITUDE=RAMP, and applies at once under AMPLITUDE=STEP;
- *  - film coefficients and sink temperatures apply at once, scaled by their amplitudes if given.
+ *  - film coefficients and sink temperatures apply at once, scaled by their amplitudes if given;
+ *  - *BOUNDARY, FIXED holds the dofs at the values they have at the start of the step.
  */
 #include "problem_impl.h"
 
@@ -229,7 +230,8 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
         for (PetscInt dof = ld->dof_first; dof <= ld->dof_last; dof++) {
           PetscInt c = dof == 11 ? p->dim : dof - 1, d = nodes[j] * p->ndof + c;
           if (c < 0 || c >= p->ndof) continue;
-          if (ld->kind == TSL_LOAD_BOUNDARY) Redefine(&p->bc[d], PetscRealPart(x[d]), ld->value, amp);
+          if (ld->kind == TSL_LOAD_BOUNDARY && ld->fixed) p->bc[d] = (TslHistoryValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD};
+          else if (ld->kind == TSL_LOAD_BOUNDARY) Redefine(&p->bc[d], PetscRealPart(x[d]), ld->value, amp);
           else if (nodes[j] < p->nown) Redefine(&p->nload[d], 0, ld->value, amp);
         }
       PetscCall(PetscFree(nodes));

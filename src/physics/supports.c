@@ -5,6 +5,7 @@
  * displacements: the Gram matrix of the modes restricted to the prescribed dofs must have full rank
  * (3 modes in plane models, 1 (axial translation) in axisymmetric ones, 6 in 3D). In steady-state steps
  * each body also needs a prescribed temperature or a film, or its temperature is undetermined.
+ * Bodies joined by a contact pair count as one: contact is assumed to hold the secondary body.
  */
 #include <thermoslide/problem.h>
 
@@ -116,6 +117,20 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
     for (PetscInt k = g->elem_ptr[e] + 1; k < g->elem_ptr[e + 1]; k++) Union(parent, TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]]), TslModelNodeIndex(g, g->elem_conn[k]));
   for (PetscInt q = 0; q < g->nequation; q++)
     for (PetscInt t = 1; t < g->equations[q].n; t++) Union(parent, TslModelNodeIndex(g, g->equations[q].node[0]), TslModelNodeIndex(g, g->equations[q].node[t]));
+  /* a contact pair supports the secondary body on the main one (assumed closed) */
+  for (PetscInt k = 0; k < g->npair; k++) {
+    PetscInt nd[2] = {-1, -1};
+    for (PetscInt side = 0; side < 2; side++) {
+      PetscInt j = TslModelFindSurface(g, side ? g->pairs[k].main : g->pairs[k].secondary);
+      if (j < 0 || g->surfaces[j].n == 0) continue;
+      if (g->surfaces[j].kind == TSL_SURFACE_NODE) nd[side] = TslModelNodeIndex(g, g->surfaces[j].elem[0]);
+      else {
+        PetscInt e = TslModelElementIndex(g, g->surfaces[j].elem[0]);
+        if (e >= 0) nd[side] = TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]]);
+      }
+    }
+    if (nd[0] >= 0 && nd[1] >= 0) Union(parent, nd[0], nd[1]);
+  }
   /* body centre and size (for well-scaled rotation modes); a body's kinematics from one of its elements */
   PetscCall(PetscArrayzero(centre, 4 * nn));
   for (PetscInt e = 0; e < g->nelem; e++) first_elem[Find(parent, TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]]))] = e;
