@@ -178,19 +178,22 @@ def loads_multistep():
 
 
 def sliding_blocks(series):
-    """The spec's finite-sliding problems in plane strain (CPE4T): a block 2 x 1 (8 x 3 elements) pressed
-    on a block 6 x 1 (12 x 2 elements) fixed at its bottom; total area 8, rho c = 1.
+    """The spec's finite-sliding problems in plane strain (CPE4T): a block 2 x 0.25 (4 x 6 elements)
+    pressed on a block 6 x 1.25 (12 x 2 elements) fixed at its bottom; total area 8, rho c = 1. The thin
+    upper block passes the applied pressure on nearly uniformly (a few % spread), and the blocks' nodes
+    meet along the interface at the start; both have 24 elements, so slabs along y put them on different
+    ranks.
     series: conductance (pressure-dependent gap conductance, 5 steps), radiation (gap radiation,
     5 steps), friction (Lagrange friction and frictional heating, 3 steps)."""
-    bnodes, belems = grid2d(12, 2, 0.0, 6.0, 0.0, 1.0)
-    tnodes, telems = grid2d(8, 3, 2.0, 4.0, 1.0, 2.0)
+    bnodes, belems = grid2d(12, 2, 0.0, 6.0, 0.0, 1.25)
+    tnodes, telems = grid2d(4, 6, 2.0, 4.0, 1.25, 1.5)
     tnodes = [(n + 1000, x, y) for n, x, y in tnodes]
     telems = [(e[0] + 1000,) + tuple(v + 1000 for v in e[1:]) for e in telems]
     base = [n[0] for n in bnodes if abs(n[2]) < 1e-12]
-    topface = [n[0] for n in tnodes if abs(n[2] - 2.0) < 1e-12]
+    topface = [n[0] for n in tnodes if abs(n[2] - 1.5) < 1e-12]
     main_elems = [e[0] for e in belems if e[0] > 12]                   # top row of the large block
-    sec_elems = [e[0] for e in telems if e[0] <= 1008]                 # bottom row of the small block
-    pressed = [e[0] for e in telems if e[0] > 1016]                    # top row of the small block
+    sec_elems = [e[0] for e in telems if e[0] <= 1004]                 # bottom row of the small block
+    pressed = [e[0] for e in telems if e[0] > 1020]                    # top row of the small block
     filmed = [6, 7]                                                    # centre of the large block's bottom
     text = ("*HEADING\n Finite sliding between coupled temperature-displacement CPE4T blocks: %s series\n" % series +
             fmt_nodes(bnodes) + "*NODE, NSET=ALL\n" + "".join(" %d, %.10g, %.10g\n" % n for n in tnodes) +

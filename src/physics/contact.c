@@ -355,6 +355,39 @@ static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Job-log line per pair: which ranks own its secondary nodes and its main-surface nodes. */
+static PetscErrorCode ReportPartition(TslProblem p)
+{
+  const TslModel *m = p->m;
+  PetscMPIInt     size;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  for (PetscInt k = 0; k < m->npair; k++) {
+    const TslContactPair *c = &m->pairs[k];
+    PetscInt              mine[2] = {c->nsec > 0, 0}, *all;
+    char                  line[2][256];
+    for (PetscInt i = 0; i < 2 * c->nmain && !mine[1]; i++) {
+      PetscInt l = TslModelNodeIndex(m, c->main_node[i]);
+      mine[1]    = (PetscInt)(l >= 0 && l < p->nown);
+    }
+    PetscCall(PetscMalloc1(2 * size, &all));
+    PetscCallMPI(MPI_Allgather(mine, 2, MPIU_INT, all, 2, MPIU_INT, p->comm));
+    for (PetscInt w = 0; w < 2; w++) {
+      size_t len = 0;
+      line[w][0] = 0;
+      for (PetscMPIInt r = 0; r < size; r++)
+        if (all[2 * r + w]) {
+          PetscCall(PetscSNPrintf(line[w] + len, sizeof(line[w]) - len, "%s%d", len ? " " : "", (int)r));
+          PetscCall(PetscStrlen(line[w], &len));
+        }
+    }
+    PetscCall(PetscPrintf(p->comm, "contact pair %" PetscInt_FMT " (%s on %s): secondary nodes on ranks %s; main-surface nodes on ranks %s\n", k + 1, c->secondary, c->main, line[0], line[1]));
+    PetscCall(PetscFree(all));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemContactSetUp(TslProblem p)
 {
   const TslModel *m = p->m;
@@ -399,6 +432,7 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
       PetscCheck(cn->lnode >= 0 && cn->lnode < p->nown, PETSC_COMM_SELF, PETSC_ERR_PLIB, "secondary node %" PetscInt_FMT " is not owned here", pair->sec_node[i]);
     }
   }
+  PetscCall(ReportPartition(p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,0 +1,119 @@
+#!/usr/bin/python3
+"""The spec's finite-sliding series (jobs/verification/sliding_*_cpe4t.inp): a 2 x 0.25 block (node ids
+> 1000) pressed on a 6 x 1.25 block fixed at its bottom (total area 8), symmetric about x = 3.
+
+conductance / radiation (5 steps):
+  1, 3  temperatures symmetric about x = 3 (1e-6 of the largest temperature)
+  3     steady: flux in (100 x area 2) = heat across the interface = film heat out, 1e-6 relative
+  3, 4  the interface law node by node: HFLA = k(CPRESS) (theta_main - theta_secondary) (conductance,
+        table 20 at p = 100, 5 at p = 200), or C [(theta_m - theta_Z)^4 - (theta_s - theta_Z)^4]
+        with C = 1e-6, theta_Z = -273.16 (radiation); 1e-6 relative
+  4     mean temperature drop across the interface = 4 x step 3 for conductance: k falls from 20 to 5
+        as the pressure doubles from 100 to 200. The contact pressure is not exactly uniform (a block on
+        a wider elastic block: a few % spread, printed), and the two-point table clips at 100 and 200, so
+        the check is (a) the ratio of drops equals the ratio of the area-averaged conductances at the
+        measured nodal pressures (1 %: the drop itself is not exactly uniform), and (b) it lies within the
+        bounds the measured pressure range allows around the nominal 4 (k(p_max,3)/k(p_min,4) to
+        k(p_min,3)/k(p_max,4)). Radiation: pressure-independent, = step 3 within 1e-6.
+  2     sliding back and forth converges; energy balance of every increment within 1e-6 of the heat input
+  5     after sliding off: the small block is isothermal (spread < 1e-6 of its mean), no heat crosses the
+        interface, every secondary node is open
+friction (3 steps): frictional dissipation 120 and heat absorbed 60 (eta = 0.5) within 0.1 %; after
+  step 3 every node at 60 / (rho c area) = 60 / 8 = 7.5 within 0.1 %; energy balance every increment.
+usage: check_sliding.py OUTDIR JOB conductance|radiation|friction
+"""
+import sys
+
+import numpy as np
+
+sys.path.insert(0, sys.path[0] + "/../tools")
+from tslcheck import Result, check, check_true, finish
+
+outdir, job, series = sys.argv[1:4]
+r = Result(outdir, job)
+ids, xyz, h = r.node_ids, r.xyz, r.history
+small = ids > 1000
+large = ~small
+
+
+def last_row(step):
+    return [i for i in range(len(h["step"])) if h["step"][i] == step][-1]
+
+
+balance_scale = max(abs(h["heat_in"]).max(), abs(h["friction_dissipation_rate"]).max(), 1e-300)
+check("worst energy balance residual over all increments", abs(h["balance_residual"]).max(), 0.0, 1e-6 * balance_scale)
+
+if series == "friction":
+    check("total frictional dissipation", h["friction_dissipation_total"][-1], 120.0, 1e-3, relative=True)
+    check("heat absorbed by the blocks (eta = 0.5)", h["friction_heat_total"][-1], 60.0, 1e-3, relative=True)
+    nt = r.field("NT")[:, 0]
+    check("final temperature, coldest node", nt.min(), 7.5, 1e-3, relative=True)
+    check("final temperature, hottest node", nt.max(), 7.5, 1e-3, relative=True)
+    finish()
+
+
+def mirror_error(frame):
+    nt = r.field("NT", frame)[:, 0]
+    key = {(bool(small[i]), round(xyz[i, 0], 9), round(xyz[i, 1], 9)): i for i in range(len(ids))}
+    worst = 0.0
+    for i in range(len(ids)):
+        j = key[(bool(small[i]), round(6.0 - xyz[i, 0], 9), round(xyz[i, 1], 9))]
+        worst = max(worst, abs(nt[i] - nt[j]))
+    return worst, abs(nt).max()
+
+
+for step in (1, 3):
+    err, scale = mirror_error(r.frame_of_step(step))
+    check("step %d temperatures symmetric about x = 3 (worst mirror difference)" % step, err, 0.0, 1e-6 * scale)
+
+s3 = last_row(3)
+check("step 3 heat across the interface = flux in", abs(h["interface_heat"][s3]), h["heat_in"][s3], 1e-6, relative=True)
+check("step 3 film heat out = flux in", h["film_heat_out"][s3], h["heat_in"][s3], 1e-6, relative=True)
+
+
+def interface(frame):
+    """Secondary nodes (small block, y = 1) with theta_s, theta_main interpolated at their current x,
+    CPRESS, HFLA, and the tributary weights."""
+    nt, u = r.field("NT", frame)[:, 0], r.field("U", frame)
+    cp, q = r.field("CPRESS", frame)[:, 0], r.field("HFLA", frame)[:, 0]
+    y0 = xyz[small, 1].min()  # the interface
+    sec = sorted([i for i in range(len(ids)) if small[i] and abs(xyz[i, 1] - y0) < 1e-9], key=lambda i: xyz[i, 0])
+    top = sorted([i for i in range(len(ids)) if large[i] and abs(xyz[i, 1] - y0) < 1e-9], key=lambda i: xyz[i, 0])
+    xm = np.array([xyz[i, 0] + u[i, 0] for i in top])
+    tm = np.interp([xyz[i, 0] + u[i, 0] for i in sec], xm, nt[top])
+    w = np.array([0.5 if k in (0, len(sec) - 1) else 1.0 for k in range(len(sec))])  # uniform spacing
+    return nt[sec], tm, cp[sec], q[sec], w
+
+
+def k_table(p):
+    return np.interp(p, [100.0, 200.0], [20.0, 5.0])
+
+
+drops, kmean, prange = {}, {}, {}
+for step in (3, 4):
+    ts, tm, cp, q, w = interface(r.frame_of_step(step))
+    drops[step] = float(np.sum(w * (ts - tm)) / np.sum(w))
+    kmean[step] = float(np.sum(w * k_table(cp)) / np.sum(w))
+    prange[step] = (cp.min(), cp.max())
+    if series == "conductance":
+        expected = np.interp(cp, [100.0, 200.0], [20.0, 5.0]) * (tm - ts)
+    else:
+        expected = 1e-6 * ((tm + 273.16) ** 4 - (ts + 273.16) ** 4)
+    err = np.abs(q - expected).max() / np.abs(expected).max()
+    check("step %d interface law node by node (HFLA vs law, worst relative)" % step, err, 0.0, 1e-6)
+if series == "conductance":
+    ratio = drops[4] / drops[3]
+    print("contact pressure under the block: step 3 %.2f to %.2f, step 4 %.2f to %.2f (nominal 100, 200)" % (prange[3] + prange[4]))
+    check("step 4 / step 3 mean drop = ratio of mean conductances at the nodal pressures", ratio, kmean[3] / kmean[4], 0.01, relative=True)
+    lo, hi = k_table(prange[3][1]) / k_table(prange[4][0]), k_table(prange[3][0]) / k_table(prange[4][1])
+    check_true("step 4 / step 3 mean drop = 4 within the pressure-spread bounds", lo * 0.99 <= ratio <= hi * 1.01,
+               "%.4f in [%.4f, %.4f] (nominal 4)" % (ratio, lo, hi))
+else:
+    check("step 4 / step 3 mean temperature drop across the interface", drops[4] / drops[3], 1.0, 1e-6, relative=True)
+
+nt = r.field("NT")[:, 0][small]
+check("step 5 small block isothermal: spread / mean", (nt.max() - nt.min()) / abs(nt.mean()), 0.0, 1e-6)
+check("step 5 heat across the interface after sliding off", abs(h["interface_heat"][-1]), 0.0, 1e-12)
+status = r.field("CSTATUS")[:, 0][small]
+check_true("step 5 every secondary node open", bool(np.all(status == 0)), "(CSTATUS max %g)" % status.max())
+finish()
