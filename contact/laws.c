@@ -165,14 +165,15 @@ static PetscErrorCode Conductance(const TslContactLaw *law, TslDual pN, TslDual 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Gap radiation constant C(F(d)), d = <g>; the view factor table is constant beyond its ends. */
+/* Gap radiation constant C(F(d)), d = <g>; like clearance conductance, the view factor is zero beyond
+ * the last tabulated clearance (docs/keywords.md) and keeps its first value below the first. */
 static PetscErrorCode RadiationConstant(const TslContactLaw *law, TslDual g, TslDual *C) {
   TslDual d = g.v > 0 ? g : DConst(0);
   PetscReal F, dF, c, dc;
 
   PetscFunctionBeginUser;
   *C = DConst(0);
-  if (law->F_n < 1) PetscFunctionReturn(PETSC_SUCCESS);
+  if (law->F_n < 1 || d.v > law->F_clearance[law->F_n - 1]) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(TslTableEvaluate(law->F_n, law->F_clearance, law->F_value, d.v, &F, &dF));
   PetscCall(TslGapRadiationCoefficient(law->sigma, F, law->eps_main, law->eps_secondary, &c, &dc));
   *C = DChain(d, c, dc * dF);

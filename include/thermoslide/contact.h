@@ -73,7 +73,7 @@ typedef struct {
   PetscInt k_n;
   const PetscReal *k_arg, *k_value; /* k: power/(area temperature) */
 
-  /* gap radiation: effective view factor table F(d) (d clearance, constant beyond the ends), emissivities
+  /* gap radiation: effective view factor table F(d) (d clearance; first value below the table, zero beyond its last clearance), emissivities
    * of the main (A) and secondary (B) surfaces, Stefan-Boltzmann constant, absolute zero. F_n = 0: none. */
   PetscInt F_n;
   const PetscReal *F_clearance, *F_value;

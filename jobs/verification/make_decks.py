@@ -238,7 +238,39 @@ def sliding_blocks(series):
     write("sliding_%s_cpe4t.inp" % series, text)
 
 
+def contact_jacobian():
+    """A block (1 element) on a block (2 x 1 elements) with every interface law active, in three steps
+    that put the contact in stick, slip and open states: for -snes_test_jacobian. Materials scaled so
+    that the mechanical, coupling and thermal blocks of the Jacobian have entries of similar size."""
+    bnodes, belems = grid2d(2, 1, 0.0, 2.0, 0.0, 1.0)
+    tnodes, telems = grid2d(1, 1, 0.5, 1.5, 1.0 - 1e-4, 2.0)  # slightly overclosed: no kink at the start
+    tnodes = [(n + 100, x, y) for n, x, y in tnodes]
+    telems = [(e[0] + 100,) + tuple(v + 100 for v in e[1:]) for e in telems]
+    write("contact_jacobian_cpe4t.inp",
+          "*HEADING\n Contact Jacobian check: stick, slip and open states with conductance, radiation, frictional heat\n" +
+          fmt_nodes(bnodes) + "*NODE, NSET=ALL\n" + "".join(" %d, %.10g, %.10g\n" % n for n in tnodes) +
+          "*ELEMENT, TYPE=CPE4T, ELSET=LOWER\n" + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
+          "*ELEMENT, TYPE=CPE4T, ELSET=UPPER\n" + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
+          nset("BASE", [1, 2, 3]) + nset("TOP", [103, 104]) + elset("BODY", [1, 2, 101]) +
+          "*SURFACE, NAME=MAIN\n LOWER, S3\n*SURFACE, NAME=SECONDARY\n 101, S1\n"
+          "*MATERIAL, NAME=SOFT\n*ELASTIC\n 1000.0, 0.3\n*CONDUCTIVITY\n 10.0\n*DENSITY\n 1.0\n*SPECIFIC HEAT\n 1.0\n"
+          "*SOLID SECTION, ELSET=BODY, MATERIAL=SOFT\n 1.0\n"
+          "*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
+          "*SURFACE INTERACTION, NAME=ALL LAWS\n*FRICTION\n 0.2\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n 5.0, 20.0\n"
+          "*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 0.5\n*GAP HEAT GENERATION\n 0.5, 0.5\n"
+          "*CONTACT PAIR, INTERACTION=ALL LAWS, SMOOTH=0.05\n SECONDARY, MAIN\n"
+          "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 20.0\n"
+          "*STEP, NAME=STICK\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.1, 0.1\n"
+          # the top of the upper block is driven: pressed (about 10 of contact pressure), then moved
+          # sideways a little (stick) and a lot (slip), then lifted (open, radiation across the gap)
+          "*BOUNDARY\n BASE, 1, 2\n BASE, 11, 11, 20.0\n TOP, 1, 1, 1.0E-5\n TOP, 2, 2, -0.011\n*DFLUX\n 101, S3, 50.0\n*END STEP\n"
+          "*STEP, NAME=SLIP\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.1, 0.1\n*BOUNDARY\n TOP, 1, 1, 0.1\n*END STEP\n"
+          "*STEP, NAME=OPEN\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.1, 0.1\n"
+          "*BOUNDARY\n TOP, 2, 2, 0.05\n*END STEP\n")
+
+
 if __name__ == "__main__":
+    contact_jacobian()
     for series in ("conductance", "radiation", "friction"):
         sliding_blocks(series)
     loads_multistep()

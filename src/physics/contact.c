@@ -85,6 +85,9 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
     in.hist      = cn->hist;
     PetscCall(TslContactElement(&cs->law, &in, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
     PetscCall(TslProblemInsert(p, mode, A, f, 3 * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
+    if (mode == ASM_RESIDUAL)
+      PetscCall(PetscInfo(NULL, "contact node %" PetscInt_FMT ": segment %" PetscInt_FMT " xi %g gap %g p %g slip %g shear %g q %g status %d\n", p->m->node_id[cn->lnode], cn->seg,
+                          (double)cn->out.xi_raw, (double)cn->out.gap, (double)cn->out.pressure, (double)cn->out.slip, (double)cn->out.shear, (double)cn->out.heat_flux, (int)cn->out.status));
     if (heat) {
       heat->interface += cn->out.heat_flux * cn->out.area;
       heat->dissipation += cn->out.dissipation_rate * cn->out.area;

@@ -248,10 +248,18 @@ static PetscErrorCode CheckRadiation(TestLog *log) {
   CheckRel(log, out.heat_flux, 1e-6 * (tm * tm * tm * tm - ts * ts * ts * ts), 1e-13, 0,
            "radiation: q = C [(theta_m - theta_Z)^4 - (theta_s - theta_Z)^4]");
   Check(log, R[2] + R[5] + R[8], 0, 1e-12, "radiation: heat balance");
-  in.x[0][1] = 0.5;
-  PetscCall(TslContactElement(&law, &in, R, NULL, &out));
-  CheckRel(log, out.heat_flux, 1e-6 * (tm * tm * tm * tm - ts * ts * ts * ts), 1e-13, 0,
-           "radiation: continues across an open gap (F constant beyond the table)");
+  {
+    const PetscReal d2[2] = {0, 1}, F2[2] = {1e-6, 1e-6};
+    law.F_n         = 2;
+    law.F_clearance = d2;
+    law.F_value     = F2;
+    in.x[0][1]      = 0.5;
+    PetscCall(TslContactElement(&law, &in, R, NULL, &out));
+    CheckRel(log, out.heat_flux, 1e-6 * (tm * tm * tm * tm - ts * ts * ts * ts), 1e-13, 0, "radiation: continues across an open gap within the table");
+    in.x[0][1] = 2.0;
+    PetscCall(TslContactElement(&law, &in, R, NULL, &out));
+    Check(log, out.heat_flux, 0, 0, "radiation: zero beyond the last tabulated clearance");
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
