@@ -19,7 +19,8 @@ typedef struct {
   PetscReal d[TSL_DUAL_N];
 } TslDual;
 
-static inline TslDual DConst(PetscReal v) {
+static inline TslDual DConst(PetscReal v)
+{
   TslDual r;
   r.v = v;
   for (PetscInt i = 0; i < TSL_DUAL_N; i++) r.d[i] = 0;
@@ -27,79 +28,90 @@ static inline TslDual DConst(PetscReal v) {
 }
 
 /* A variable with value v seeded in slot (slot < 0: constant). */
-static inline TslDual DVar(PetscReal v, PetscInt slot) {
+static inline TslDual DVar(PetscReal v, PetscInt slot)
+{
   TslDual r = DConst(v);
   if (slot >= 0) r.d[slot] = 1;
   return r;
 }
 
-static inline TslDual DAdd(TslDual a, TslDual b) {
+static inline TslDual DAdd(TslDual a, TslDual b)
+{
   a.v += b.v;
   for (PetscInt i = 0; i < TSL_DUAL_N; i++) a.d[i] += b.d[i];
   return a;
 }
 
-static inline TslDual DSub(TslDual a, TslDual b) {
+static inline TslDual DSub(TslDual a, TslDual b)
+{
   a.v -= b.v;
   for (PetscInt i = 0; i < TSL_DUAL_N; i++) a.d[i] -= b.d[i];
   return a;
 }
 
-static inline TslDual DScale(PetscReal s, TslDual a) {
+static inline TslDual DScale(PetscReal s, TslDual a)
+{
   a.v *= s;
   for (PetscInt i = 0; i < TSL_DUAL_N; i++) a.d[i] *= s;
   return a;
 }
 
-static inline TslDual DAddC(TslDual a, PetscReal c) {
+static inline TslDual DAddC(TslDual a, PetscReal c)
+{
   a.v += c;
   return a;
 }
 
-static inline TslDual DMul(TslDual a, TslDual b) {
+static inline TslDual DMul(TslDual a, TslDual b)
+{
   TslDual r;
   r.v = a.v * b.v;
   for (PetscInt i = 0; i < TSL_DUAL_N; i++) r.d[i] = a.d[i] * b.v + a.v * b.d[i];
   return r;
 }
 
-static inline TslDual DDiv(TslDual a, TslDual b) {
-  TslDual r;
+static inline TslDual DDiv(TslDual a, TslDual b)
+{
+  TslDual   r;
   PetscReal ib = 1 / b.v;
-  r.v = a.v * ib;
+  r.v          = a.v * ib;
   for (PetscInt i = 0; i < TSL_DUAL_N; i++) r.d[i] = (a.d[i] - r.v * b.d[i]) * ib;
   return r;
 }
 
-static inline TslDual DSqrt(TslDual a) {
-  TslDual r;
+static inline TslDual DSqrt(TslDual a)
+{
+  TslDual   r;
   PetscReal s = PetscSqrtReal(a.v);
-  r.v = s;
+  r.v         = s;
   for (PetscInt i = 0; i < TSL_DUAL_N; i++) r.d[i] = a.d[i] / (2 * s);
   return r;
 }
 
 /* f(a) with f(a.v) = fv and f'(a.v) = df: chain rule for tabulated or scalar functions. */
-static inline TslDual DChain(TslDual a, PetscReal fv, PetscReal df) {
+static inline TslDual DChain(TslDual a, PetscReal fv, PetscReal df)
+{
   TslDual r;
   r.v = fv;
   for (PetscInt i = 0; i < TSL_DUAL_N; i++) r.d[i] = df * a.d[i];
   return r;
 }
 
-static inline TslDual DPow4(TslDual a) {
+static inline TslDual DPow4(TslDual a)
+{
   PetscReal a3 = a.v * a.v * a.v;
   return DChain(a, a3 * a.v, 4 * a3);
 }
 
 /* Linear combination of two dual vectors stored as [2] arrays. */
-static inline TslDual DDot(const TslDual a[2], const TslDual b[2]) {
+static inline TslDual DDot(const TslDual a[2], const TslDual b[2])
+{
   return DAdd(DMul(a[0], b[0]), DMul(a[1], b[1]));
 }
 
 /* Geometry of one element in dual numbers (current coordinates of all nodes present). */
 typedef struct {
-  TslDual xs[2], x1[2], x2[2], x0[2], x3[2];
+  TslDual   xs[2], x1[2], x2[2], x0[2], x3[2];
   PetscBool has_prev, has_next;
   PetscReal s; /* smoothing fraction */
 } TslContactGeom;

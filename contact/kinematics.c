@@ -3,7 +3,8 @@
 #include "contact_impl.h"
 
 /* Unit outward normal (body on the left of a -> b): n = (e_y, -e_x), e = (b - a)/|b - a|. */
-static void SegmentNormal(const TslDual a[2], const TslDual b[2], TslDual n[2]) {
+static void SegmentNormal(const TslDual a[2], const TslDual b[2], TslDual n[2])
+{
   TslDual dx = DSub(b[0], a[0]), dy = DSub(b[1], a[1]);
   TslDual L = DSqrt(DAdd(DMul(dx, dx), DMul(dy, dy)));
 
@@ -14,22 +15,24 @@ static void SegmentNormal(const TslDual a[2], const TslDual b[2], TslDual n[2]) 
 /* Weight of the neighbour's normal at distance t (in units of s, t = 1 at the node, 0 at the end of the
  * rounded zone): w = h(t)/2, h(t) = 3t^2 - 2t^3 on [0,1], so w and dw/dxi are continuous (w' = 0 at both ends
  * of the zone) and both segments meet at the average normal. */
-static TslDual BlendWeight(TslDual t) {
+static TslDual BlendWeight(TslDual t)
+{
   if (t.v >= 1) return DConst(0.5);
   if (t.v <= 0) return DConst(0);
   return DScale(0.5, DMul(DMul(t, t), DAddC(DScale(-2, t), 3)));
 }
 
-void TslContactNormalDual(const TslContactGeom *geo, TslDual xi, TslDual n[2], TslDual tau[2]) {
+void TslContactNormalDual(const TslContactGeom *geo, TslDual xi, TslDual n[2], TslDual tau[2])
+{
   const PetscReal s = geo->s;
-  TslDual nc[2];
+  TslDual         nc[2];
 
   SegmentNormal(geo->x1, geo->x2, nc);
   n[0] = nc[0];
   n[1] = nc[1];
   if (s > 0 && ((geo->has_prev && xi.v < s) || (geo->has_next && xi.v > 1 - s))) {
     PetscBool near_start = (PetscBool)(geo->has_prev && xi.v < s);
-    TslDual nb[2], t, w, m[2], len;
+    TslDual   nb[2], t, w, m[2], len;
 
     if (near_start) {
       SegmentNormal(geo->x0, geo->x1, nb);
@@ -40,7 +43,7 @@ void TslContactNormalDual(const TslContactGeom *geo, TslDual xi, TslDual n[2], T
     }
     w = BlendWeight(t);
     for (PetscInt d = 0; d < 2; d++) m[d] = DAdd(nc[d], DMul(w, DSub(nb[d], nc[d])));
-    len = DSqrt(DDot(m, m));
+    len  = DSqrt(DDot(m, m));
     n[0] = DDiv(m[0], len);
     n[1] = DDiv(m[1], len);
   }
@@ -49,27 +52,29 @@ void TslContactNormalDual(const TslContactGeom *geo, TslDual xi, TslDual n[2], T
 }
 
 /* F(xi) = (x_s - x_m(xi)) . tau(xi); zero at the normal projection. */
-static TslDual ProjectionFunction(const TslContactGeom *geo, TslDual xi) {
+static TslDual ProjectionFunction(const TslContactGeom *geo, TslDual xi)
+{
   TslDual n[2], tau[2], r[2];
 
   TslContactNormalDual(geo, xi, n, tau);
   for (PetscInt d = 0; d < 2; d++) {
     TslDual xm = DAdd(geo->x1[d], DMul(xi, DSub(geo->x2[d], geo->x1[d])));
-    r[d] = DSub(geo->xs[d], xm);
+    r[d]       = DSub(geo->xs[d], xm);
   }
   return DDot(r, tau);
 }
 
-PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, PetscReal *xi_raw) {
+PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, PetscReal *xi_raw)
+{
   PetscReal e[2] = {geo->x2[0].v - geo->x1[0].v, geo->x2[1].v - geo->x1[1].v}, L2 = e[0] * e[0] + e[1] * e[1];
   PetscReal x, tol;
-  TslDual F;
+  TslDual   F;
   PetscBool converged = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCheck(L2 > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Contact segment of zero length");
   /* start from the projection on the straight segment: exact when no smoothing is active */
-  x = ((geo->xs[0].v - geo->x1[0].v) * e[0] + (geo->xs[1].v - geo->x1[1].v) * e[1]) / L2;
+  x   = ((geo->xs[0].v - geo->x1[0].v) * e[0] + (geo->xs[1].v - geo->x1[1].v) * e[1]) / L2;
   tol = 1e-13;
   for (PetscInt it = 0; it < 50; it++) {
     PetscReal dx;
@@ -81,7 +86,7 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
     dx = PetscMax(-0.25, PetscMin(0.25, dx)); /* the smoothed normal turns quickly: limit the step */
     x += dx;
     if (x < -1 || x > 2) {
-      x = x < -1 ? -1 : 2; /* far outside: the caller re-pairs, precision does not matter */
+      x         = x < -1 ? -1 : 2; /* far outside: the caller re-pairs, precision does not matter */
       converged = PETSC_TRUE;
       break;
     }
@@ -90,30 +95,31 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
       break;
     }
   }
-  PetscCheck(converged, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Contact projection did not converge (xi = %g)",
-             (double)x);
+  PetscCheck(converged, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Contact projection did not converge (xi = %g)", (double)x);
   *xi_raw = x;
   if (x < 0 || x > 1) {
     *xi = DConst(x < 0 ? 0 : 1); /* clamped: the projection no longer moves with the unknowns */
   } else {
     /* implicit function theorem at F(xi, u) = 0: dxi/du = -F_u / F_xi */
-    F = ProjectionFunction(geo, DVar(x, TSL_DUAL_XI));
+    F   = ProjectionFunction(geo, DVar(x, TSL_DUAL_XI));
     *xi = DConst(x);
     for (PetscInt i = 0; i < TSL_DUAL_XI; i++) xi->d[i] = -F.d[i] / F.d[TSL_DUAL_XI];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static void SetPoint(const PetscReal X[], const PetscReal U[], PetscInt node, PetscBool seed, TslDual x[2]) {
+static void SetPoint(const PetscReal X[], const PetscReal U[], PetscInt node, PetscBool seed, TslDual x[2])
+{
   for (PetscInt d = 0; d < 2; d++) x[d] = DVar(X[d] + U[d], seed ? 3 * node + d : -1);
 }
 
-PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, TslContactGeom *geo, PetscInt *nnode) {
+PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, TslContactGeom *geo, PetscInt *nnode)
+{
   PetscInt k = 3;
 
   PetscFunctionBeginUser;
-  PetscCheck(in->smoothing >= 0 && in->smoothing < 0.5, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "Contact smoothing fraction %g outside [0, 0.5)", (double)in->smoothing);
+  PetscCheck(in->smoothing >= 0 && in->smoothing < 0.5, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Contact smoothing fraction %g outside [0, 0.5)",
+             (double)in->smoothing);
   PetscCheck(!in->x_prev == !in->u_prev && !in->x_next == !in->u_next, PETSC_COMM_SELF, PETSC_ERR_ARG_NULL,
              "Neighbour node needs both reference coordinates and unknowns");
   SetPoint(in->x[0], in->u[0], 0, seed, geo->xs);
@@ -128,10 +134,11 @@ PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, Ts
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactProject(const TslContactInput *in, PetscReal *xi, PetscReal *g, PetscReal n[]) {
+PetscErrorCode TslContactProject(const TslContactInput *in, PetscReal *xi, PetscReal *g, PetscReal n[])
+{
   TslContactGeom geo;
-  TslDual x, nn[2], tau[2], r[2];
-  PetscReal raw;
+  TslDual        x, nn[2], tau[2], r[2];
+  PetscReal      raw;
 
   PetscFunctionBeginUser;
   PetscCall(TslContactGeomSetUp(in, PETSC_FALSE, &geo, NULL));
@@ -147,32 +154,35 @@ PetscErrorCode TslContactProject(const TslContactInput *in, PetscReal *xi, Petsc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscInt TslContactProjectionSide(PetscReal xi, PetscReal tol) {
+PetscInt TslContactProjectionSide(PetscReal xi, PetscReal tol)
+{
   if (xi < -tol) return -1;
   if (xi > 1 + tol) return 1;
   return 0;
 }
 
-PetscErrorCode TslContactHistoryTransfer(PetscInt side, PetscReal L_from, PetscReal L_to, TslContactHistory *h) {
+PetscErrorCode TslContactHistoryTransfer(PetscInt side, PetscReal L_from, PetscReal L_to, TslContactHistory *h)
+{
   PetscReal r = L_from / L_to;
 
   PetscFunctionBeginUser;
   PetscCheck(side == 1 || side == -1, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "side must be +1 or -1");
   PetscCheck(L_from > 0 && L_to > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "segment lengths must be positive");
   if (side == 1) {
-    h->xi_old = (h->xi_old - 1) * r;
+    h->xi_old    = (h->xi_old - 1) * r;
     h->xi_anchor = (h->xi_anchor - 1) * r;
   } else {
-    h->xi_old = 1 + h->xi_old * r;
+    h->xi_old    = 1 + h->xi_old * r;
     h->xi_anchor = 1 + h->xi_anchor * r;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1[], const PetscReal x2[],
-                                        const PetscReal x3[], PetscReal s, PetscReal xi, PetscReal n[]) {
+PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1[], const PetscReal x2[], const PetscReal x3[], PetscReal s,
+                                        PetscReal xi, PetscReal n[])
+{
   TslContactGeom geo;
-  TslDual nn[2], tau[2];
+  TslDual        nn[2], tau[2];
 
   PetscFunctionBeginUser;
   PetscCheck(s >= 0 && s < 0.5, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "smoothing %g outside [0, 0.5)", (double)s);
@@ -185,7 +195,7 @@ PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1
   }
   geo.has_prev = (PetscBool)(x0 != NULL);
   geo.has_next = (PetscBool)(x3 != NULL);
-  geo.s = s;
+  geo.s        = s;
   TslContactNormalDual(&geo, DConst(xi), nn, tau);
   n[0] = nn[0].v;
   n[1] = nn[1].v;

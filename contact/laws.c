@@ -2,15 +2,15 @@
  * diagnostics). Formulas, units and signs: include/thermoslide/contact.h and docs/contact.md. */
 #include "contact_impl.h"
 
-PetscErrorCode TslTableEvaluate(PetscInt n, const PetscReal x[], const PetscReal y[], PetscReal arg, PetscReal *value,
-                                PetscReal *dvalue) {
+PetscErrorCode TslTableEvaluate(PetscInt n, const PetscReal x[], const PetscReal y[], PetscReal arg, PetscReal *value, PetscReal *dvalue)
+{
   PetscReal v = 0, dv = 0;
 
   PetscFunctionBeginUser;
   PetscCheck(n >= 1, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Table needs at least one point");
   for (PetscInt i = 1; i < n; i++)
-    PetscCheck(x[i] > x[i - 1], PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
-               "Table arguments must increase strictly (%g after %g)", (double)x[i], (double)x[i - 1]);
+    PetscCheck(x[i] > x[i - 1], PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Table arguments must increase strictly (%g after %g)", (double)x[i],
+               (double)x[i - 1]);
   if (n == 1 || arg < x[0]) {
     v = y[0];
   } else if (arg >= x[n - 1]) {
@@ -19,44 +19,46 @@ PetscErrorCode TslTableEvaluate(PetscInt n, const PetscReal x[], const PetscReal
     PetscInt i = 0;
     while (arg >= x[i + 1]) i++; /* x[i] <= arg < x[i+1]: a breakpoint takes the slope on its right */
     dv = (y[i + 1] - y[i]) / (x[i + 1] - x[i]);
-    v = y[i] + dv * (arg - x[i]);
+    v  = y[i] + dv * (arg - x[i]);
   }
   if (value) *value = v;
   if (dvalue) *dvalue = dv;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactLawSetDefaults(TslContactLaw *law) {
+PetscErrorCode TslContactLawSetDefaults(TslContactLaw *law)
+{
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(law, sizeof(*law)));
-  law->normal = TSL_CONTACT_NORMAL_PENALTY;
-  law->friction = TSL_CONTACT_FRICTION_NONE;
-  law->slip_tol = 1e-12;
-  law->conductance = TSL_CONTACT_CONDUCTANCE_NONE;
-  law->eps_main = 1;
+  law->normal        = TSL_CONTACT_NORMAL_PENALTY;
+  law->friction      = TSL_CONTACT_FRICTION_NONE;
+  law->slip_tol      = 1e-12;
+  law->conductance   = TSL_CONTACT_CONDUCTANCE_NONE;
+  law->eps_main      = 1;
   law->eps_secondary = 1;
-  law->eta = 1;
-  law->f = 0.5;
+  law->eta           = 1;
+  law->f             = 0.5;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Abaqus Theory Guide, "Thermal contact properties" (radiation across a gap between surfaces A and B):
  *   q = C [(theta_A - theta_Z)^4 - (theta_B - theta_Z)^4],  C = F sigma / (1/eps_A + 1/eps_B - 1),
  * exact for two close infinite grey plates with F = 1; otherwise F scales the exchange. */
-PetscErrorCode TslGapRadiationCoefficient(PetscReal sigma, PetscReal F, PetscReal eps_A, PetscReal eps_B, PetscReal *C,
-                                          PetscReal *dC_dF) {
+PetscErrorCode TslGapRadiationCoefficient(PetscReal sigma, PetscReal F, PetscReal eps_A, PetscReal eps_B, PetscReal *C, PetscReal *dC_dF)
+{
   PetscReal den;
 
   PetscFunctionBeginUser;
-  PetscCheck(eps_A > 0 && eps_A <= 1 && eps_B > 0 && eps_B <= 1, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "Emissivities must lie in (0, 1]: %g, %g", (double)eps_A, (double)eps_B);
+  PetscCheck(eps_A > 0 && eps_A <= 1 && eps_B > 0 && eps_B <= 1, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Emissivities must lie in (0, 1]: %g, %g",
+             (double)eps_A, (double)eps_B);
   den = 1 / eps_A + 1 / eps_B - 1;
   if (C) *C = F * sigma / den;
   if (dC_dF) *dC_dF = sigma / den;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactAugmentedUpdate(PetscReal eps_n, PetscReal g, PetscReal *lambda, PetscReal *change) {
+PetscErrorCode TslContactAugmentedUpdate(PetscReal eps_n, PetscReal g, PetscReal *lambda, PetscReal *change)
+{
   PetscReal l = PetscMax(0, *lambda - eps_n * g);
 
   PetscFunctionBeginUser;
@@ -65,9 +67,10 @@ PetscErrorCode TslContactAugmentedUpdate(PetscReal eps_n, PetscReal g, PetscReal
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHistory *h) {
+PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHistory *h)
+{
   PetscFunctionBeginUser;
-  h->xi_old = out->xi;
+  h->xi_old    = out->xi;
   h->xi_anchor = out->xi_anchor;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -75,7 +78,8 @@ PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHi
 /* Contact pressure: penalty pN = eps_n <-g>, augmented pN = <lambda + eps_n (-g)>. Exactly touching
  * (argument 0) takes the closed branch: zero pressure but the penalty stiffness, so bodies that start
  * in contact are held from the first Newton iteration. */
-static TslDual NormalPressure(const TslContactLaw *law, const TslContactHistory *h, TslDual g) {
+static TslDual NormalPressure(const TslContactLaw *law, const TslContactHistory *h, TslDual g)
+{
   TslDual a = DScale(-law->eps_n, g);
 
   if (law->normal == TSL_CONTACT_NORMAL_AUGMENTED) a = DAddC(a, h->lambda);
@@ -83,10 +87,10 @@ static TslDual NormalPressure(const TslContactLaw *law, const TslContactHistory 
 }
 
 typedef struct {
-  TslDual tT;          /* shear stress */
-  TslDual D;           /* dissipation rate per area (before eta) */
-  PetscReal slip_diss; /* dissipative slip increment */
-  PetscReal anchor;    /* updated sticking anchor */
+  TslDual          tT;        /* shear stress */
+  TslDual          D;         /* dissipation rate per area (before eta) */
+  PetscReal        slip_diss; /* dissipative slip increment */
+  PetscReal        anchor;    /* updated sticking anchor */
   TslContactStatus status;
 } FrictionState;
 
@@ -94,58 +98,58 @@ typedef struct {
  * |tT| <= mu pN; the plastic slip (tT* - tT)/eps_t dissipates. LAGRANGE: no elastic slip; tT = mu pN sign(ds)
  * with sign(ds) replaced by ds/slip_tol for |ds| < slip_tol, so tT ds = mu pN |ds| exactly once |ds| >= slip_tol
  * (all relative motion becomes heat, as the spec's frictional-heating tests require). */
-static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *in, TslDual pN, TslDual xi, TslDual L,
-                               TslDual ds, FrictionState *fs) {
+static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *in, TslDual pN, TslDual xi, TslDual L, TslDual ds, FrictionState *fs)
+{
   PetscFunctionBeginUser;
-  fs->tT = DConst(0);
-  fs->D = DConst(0);
+  fs->tT        = DConst(0);
+  fs->D         = DConst(0);
   fs->slip_diss = 0;
-  fs->anchor = xi.v; /* open or frictionless: a new contact starts stress-free */
-  fs->status = pN.v > 0 ? TSL_CONTACT_SLIP : TSL_CONTACT_OPEN;
+  fs->anchor    = xi.v; /* open or frictionless: a new contact starts stress-free */
+  fs->status    = pN.v > 0 ? TSL_CONTACT_SLIP : TSL_CONTACT_OPEN;
   if (pN.v <= 0 || law->friction == TSL_CONTACT_FRICTION_NONE || law->mu == 0) PetscFunctionReturn(PETSC_SUCCESS);
   if (law->friction == TSL_CONTACT_FRICTION_PENALTY) {
-    TslDual trial = DMul(DScale(law->eps_t, L), DAddC(xi, -in->hist.xi_anchor));
-    TslDual limit = DScale(law->mu, pN);
-    PetscReal sgn = trial.v >= 0 ? 1 : -1;
+    TslDual   trial = DMul(DScale(law->eps_t, L), DAddC(xi, -in->hist.xi_anchor));
+    TslDual   limit = DScale(law->mu, pN);
+    PetscReal sgn   = trial.v >= 0 ? 1 : -1;
 
     PetscCheck(law->eps_t > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Penalty friction needs eps_t > 0");
     if (PetscAbsReal(trial.v) <= limit.v) {
-      fs->tT = trial;
+      fs->tT     = trial;
       fs->anchor = in->hist.xi_anchor;
       fs->status = TSL_CONTACT_STICK;
     } else {
       TslDual slip = DScale(1 / law->eps_t, DSub(trial, DScale(sgn, limit)));
 
-      fs->tT = DScale(sgn, limit);
+      fs->tT        = DScale(sgn, limit);
       fs->slip_diss = slip.v;
-      fs->anchor = xi.v - fs->tT.v / (law->eps_t * L.v);
-      fs->D = DMul(fs->tT, slip);
+      fs->anchor    = xi.v - fs->tT.v / (law->eps_t * L.v);
+      fs->D         = DMul(fs->tT, slip);
     }
   } else {
     PetscReal tol = law->slip_tol;
-    TslDual sgn;
+    TslDual   sgn;
 
     PetscCheck(tol > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Lagrange friction needs slip_tol > 0");
     if (PetscAbsReal(ds.v) >= tol) {
       sgn = DConst(ds.v > 0 ? 1 : -1);
     } else {
-      sgn = DScale(1 / tol, ds);
+      sgn        = DScale(1 / tol, ds);
       fs->status = TSL_CONTACT_STICK;
     }
-    fs->tT = DMul(DScale(law->mu, pN), sgn);
+    fs->tT        = DMul(DScale(law->mu, pN), sgn);
     fs->slip_diss = ds.v;
-    fs->D = DMul(fs->tT, ds);
+    fs->D         = DMul(fs->tT, ds);
   }
   /* dissipated energy per area over the increment -> rate */
-  if (law->eta != 0)
-    PetscCheck(in->dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Frictional heating needs dt > 0");
+  if (law->eta != 0) PetscCheck(in->dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Frictional heating needs dt > 0");
   fs->D = in->dt > 0 ? DScale(1 / in->dt, fs->D) : DConst(0);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Gap conductance k: by pressure (only while in contact) or by clearance d = <g> (zero beyond the last
  * tabulated clearance, as the dialect specifies). */
-static PetscErrorCode Conductance(const TslContactLaw *law, TslDual pN, TslDual g, TslDual *k) {
+static PetscErrorCode Conductance(const TslContactLaw *law, TslDual pN, TslDual g, TslDual *k)
+{
   PetscReal v, dv;
 
   PetscFunctionBeginUser;
@@ -167,8 +171,9 @@ static PetscErrorCode Conductance(const TslContactLaw *law, TslDual pN, TslDual 
 
 /* Gap radiation constant C(F(d)), d = <g>; like clearance conductance, the view factor is zero beyond
  * the last tabulated clearance (docs/keywords.md) and keeps its first value below the first. */
-static PetscErrorCode RadiationConstant(const TslContactLaw *law, TslDual g, TslDual *C) {
-  TslDual d = g.v > 0 ? g : DConst(0);
+static PetscErrorCode RadiationConstant(const TslContactLaw *law, TslDual g, TslDual *C)
+{
+  TslDual   d = g.v > 0 ? g : DConst(0);
   PetscReal F, dF, c, dc;
 
   PetscFunctionBeginUser;
@@ -180,14 +185,14 @@ static PetscErrorCode RadiationConstant(const TslContactLaw *law, TslDual g, Tsl
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[],
-                                 TslContactOutput *out) {
+PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out)
+{
   TslContactGeom geo;
-  PetscInt nnode, ndof;
-  PetscReal xi_raw, area;
-  TslDual xi, n[2], tau[2], r[2], g, L, pN, ds, traction[2], k, C, q, theta_s, theta_m, N[2], heat;
-  TslDual Rd[TSL_CONTACT_MAX_DOF];
-  FrictionState fs;
+  PetscInt       nnode, ndof;
+  PetscReal      xi_raw, area;
+  TslDual        xi, n[2], tau[2], r[2], g, L, pN, ds, traction[2], k, C, q, theta_s, theta_m, N[2], heat;
+  TslDual        Rd[TSL_CONTACT_MAX_DOF];
+  FrictionState  fs;
 
   PetscFunctionBeginUser;
   PetscCheck(in->length > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Tributary length must be positive");
@@ -205,9 +210,9 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   g = DDot(r, n);
   {
     TslDual e[2] = {DSub(geo.x2[0], geo.x1[0]), DSub(geo.x2[1], geo.x1[1])};
-    L = DSqrt(DDot(e, e));
+    L            = DSqrt(DDot(e, e));
   }
-  ds = DMul(L, DAddC(xi, -in->hist.xi_old));
+  ds   = DMul(L, DAddC(xi, -in->hist.xi_old));
   N[0] = DAddC(DScale(-1, xi), 1);
   N[1] = xi;
 
@@ -222,8 +227,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   PetscCall(Conductance(law, pN, g, &k));
   PetscCall(RadiationConstant(law, g, &C));
   q = DMul(k, DSub(theta_m, theta_s));
-  if (C.v != 0)
-    q = DAdd(q, DMul(C, DSub(DPow4(DAddC(theta_m, -law->theta_zero)), DPow4(DAddC(theta_s, -law->theta_zero)))));
+  if (C.v != 0) q = DAdd(q, DMul(C, DSub(DPow4(DAddC(theta_m, -law->theta_zero)), DPow4(DAddC(theta_s, -law->theta_zero)))));
   heat = DScale(law->eta, fs.D);
 
   /* residual: internal - external; contact force and heat inflow are external to each node */
@@ -241,25 +245,25 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
     for (PetscInt i = 0; i < ndof; i++)
       for (PetscInt j = 0; j < ndof; j++) K[i * ndof + j] = Rd[i].d[j];
   if (out) {
-    out->nnode = nnode;
-    out->xi = xi.v;
-    out->xi_raw = xi_raw;
-    out->side = TslContactProjectionSide(xi_raw, 0);
-    out->normal[0] = n[0].v;
-    out->normal[1] = n[1].v;
-    out->gap = g.v;
-    out->area = area;
-    out->pressure = pN.v;
-    out->slip = ds.v;
-    out->shear = fs.tT.v;
+    out->nnode            = nnode;
+    out->xi               = xi.v;
+    out->xi_raw           = xi_raw;
+    out->side             = TslContactProjectionSide(xi_raw, 0);
+    out->normal[0]        = n[0].v;
+    out->normal[1]        = n[1].v;
+    out->gap              = g.v;
+    out->area             = area;
+    out->pressure         = pN.v;
+    out->slip             = ds.v;
+    out->shear            = fs.tT.v;
     out->slip_dissipative = fs.slip_diss;
-    out->conductance = k.v;
-    out->radiation_C = C.v;
-    out->heat_flux = q.v;
+    out->conductance      = k.v;
+    out->radiation_C      = C.v;
+    out->heat_flux        = q.v;
     out->dissipation_rate = fs.D.v;
-    out->heat_generation = heat.v;
-    out->status = fs.status;
-    out->xi_anchor = fs.anchor;
+    out->heat_generation  = heat.v;
+    out->status           = fs.status;
+    out->xi_anchor        = fs.anchor;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

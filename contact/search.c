@@ -4,23 +4,24 @@
 #include <thermoslide/contact.h>
 
 struct _n_TslContactBinGrid {
-  PetscInt nseg, nx, ny;
-  PetscReal x0, y0, h;     /* grid origin and bin size */
-  PetscReal *box;          /* [4*nseg] xmin, ymin, xmax, ymax (inflated) */
-  PetscInt *offset, *item; /* bin b lists item[offset[b] .. offset[b+1]-1] */
-  PetscInt *mark, stamp;   /* de-duplication of segments met in several bins during one query */
+  PetscInt   nseg, nx, ny;
+  PetscReal  x0, y0, h;     /* grid origin and bin size */
+  PetscReal *box;           /* [4*nseg] xmin, ymin, xmax, ymax (inflated) */
+  PetscInt  *offset, *item; /* bin b lists item[offset[b] .. offset[b+1]-1] */
+  PetscInt  *mark, stamp;   /* de-duplication of segments met in several bins during one query */
 };
 
-static PetscInt BinIndex(PetscReal v, PetscReal origin, PetscReal h, PetscInt n) {
+static PetscInt BinIndex(PetscReal v, PetscReal origin, PetscReal h, PetscInt n)
+{
   PetscInt i = (PetscInt)PetscFloorReal((v - origin) / h);
   return PetscMax(0, PetscMin(n - 1, i));
 }
 
-PetscErrorCode TslContactBinGridCreate(PetscInt nseg, const PetscReal seg_x[], PetscReal margin,
-                                       TslContactBinGrid *grid) {
+PetscErrorCode TslContactBinGridCreate(PetscInt nseg, const PetscReal seg_x[], PetscReal margin, TslContactBinGrid *grid)
+{
   TslContactBinGrid G;
-  PetscReal lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL}, size = 0;
-  PetscInt nbin, *fill;
+  PetscReal         lo[2] = {PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[2] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL}, size = 0;
+  PetscInt          nbin, *fill;
 
   PetscFunctionBeginUser;
   PetscCheck(nseg >= 0 && margin >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Need nseg >= 0 and margin >= 0");
@@ -29,7 +30,7 @@ PetscErrorCode TslContactBinGridCreate(PetscInt nseg, const PetscReal seg_x[], P
   PetscCall(PetscMalloc2(4 * nseg + 1, &G->box, nseg + 1, &G->mark));
   for (PetscInt s = 0; s < nseg; s++) {
     const PetscReal *x = &seg_x[4 * s];
-    PetscReal *b = &G->box[4 * s];
+    PetscReal       *b = &G->box[4 * s];
 
     b[0] = PetscMin(x[0], x[2]) - margin;
     b[1] = PetscMin(x[1], x[3]) - margin;
@@ -45,7 +46,7 @@ PetscErrorCode TslContactBinGridCreate(PetscInt nseg, const PetscReal seg_x[], P
   if (nseg == 0) {
     lo[0] = lo[1] = 0;
     hi[0] = hi[1] = 1;
-    size = 1;
+    size          = 1;
   }
   /* bins about the size of a typical box, but never more than ~4 bins per segment in total */
   G->h = PetscMax(size / PetscMax(nseg, 1), 1e-12 * PetscMax(hi[0] - lo[0], hi[1] - lo[1]));
@@ -58,16 +59,16 @@ PetscErrorCode TslContactBinGridCreate(PetscInt nseg, const PetscReal seg_x[], P
   }
   G->x0 = lo[0];
   G->y0 = lo[1];
-  nbin = G->nx * G->ny;
+  nbin  = G->nx * G->ny;
 
   /* two passes: count per bin, then fill */
   PetscCall(PetscCalloc1(nbin + 1, &G->offset));
   PetscCall(PetscCalloc1(nbin, &fill));
   for (PetscInt pass = 0; pass < 2; pass++) {
     for (PetscInt s = 0; s < nseg; s++) {
-      const PetscReal *b = &G->box[4 * s];
-      PetscInt i0 = BinIndex(b[0], G->x0, G->h, G->nx), i1 = BinIndex(b[2], G->x0, G->h, G->nx);
-      PetscInt j0 = BinIndex(b[1], G->y0, G->h, G->ny), j1 = BinIndex(b[3], G->y0, G->h, G->ny);
+      const PetscReal *b  = &G->box[4 * s];
+      PetscInt         i0 = BinIndex(b[0], G->x0, G->h, G->nx), i1 = BinIndex(b[2], G->x0, G->h, G->nx);
+      PetscInt         j0 = BinIndex(b[1], G->y0, G->h, G->ny), j1 = BinIndex(b[3], G->y0, G->h, G->ny);
 
       for (PetscInt j = j0; j <= j1; j++)
         for (PetscInt i = i0; i <= i1; i++) {
@@ -85,11 +86,12 @@ PetscErrorCode TslContactBinGridCreate(PetscInt nseg, const PetscReal seg_x[], P
   }
   PetscCall(PetscFree(fill));
   G->stamp = 0;
-  *grid = G;
+  *grid    = G;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactBinGridDestroy(TslContactBinGrid *grid) {
+PetscErrorCode TslContactBinGridDestroy(TslContactBinGrid *grid)
+{
   PetscFunctionBeginUser;
   if (!*grid) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscFree2((*grid)->box, (*grid)->mark));
@@ -99,11 +101,12 @@ PetscErrorCode TslContactBinGridDestroy(TslContactBinGrid *grid) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactBinGridQuery(TslContactBinGrid G, const PetscReal p[], PetscReal radius, PetscInt cap,
-                                      PetscInt cand[], PetscInt *ncand, PetscInt *nbins) {
-  PetscReal q[4] = {p[0] - radius, p[1] - radius, p[0] + radius, p[1] + radius};
+PetscErrorCode TslContactBinGridQuery(TslContactBinGrid G, const PetscReal p[], PetscReal radius, PetscInt cap, PetscInt cand[], PetscInt *ncand,
+                                      PetscInt *nbins)
+{
+  PetscReal q[4]   = {p[0] - radius, p[1] - radius, p[0] + radius, p[1] + radius};
   PetscReal top[2] = {G->x0 + G->nx * G->h, G->y0 + G->ny * G->h};
-  PetscInt n = 0, visited = 0;
+  PetscInt  n = 0, visited = 0;
 
   PetscFunctionBeginUser;
   PetscCheck(radius >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Query radius must be >= 0");
@@ -122,7 +125,7 @@ PetscErrorCode TslContactBinGridQuery(TslContactBinGrid G, const PetscReal p[], 
 
         visited++;
         for (PetscInt k = G->offset[bin]; k < G->offset[bin + 1]; k++) {
-          PetscInt s = G->item[k];
+          PetscInt         s = G->item[k];
           const PetscReal *b = &G->box[4 * s];
 
           if (G->mark[s] == G->stamp) continue;
@@ -139,7 +142,8 @@ PetscErrorCode TslContactBinGridQuery(TslContactBinGrid G, const PetscReal p[], 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactBinGridGetSize(TslContactBinGrid grid, PetscInt *nx, PetscInt *ny) {
+PetscErrorCode TslContactBinGridGetSize(TslContactBinGrid grid, PetscInt *nx, PetscInt *ny)
+{
   PetscFunctionBeginUser;
   if (nx) *nx = grid->nx;
   if (ny) *ny = grid->ny;

@@ -3,7 +3,7 @@
 #include <petscsys.h>
 
 #if !defined(PETSC_SUCCESS)
-  #define PETSC_SUCCESS ((PetscErrorCode)0)
+#define PETSC_SUCCESS ((PetscErrorCode)0)
 #endif
 
 /* Maximum length of a deck name (set, surface, material, amplitude...), including the NUL.

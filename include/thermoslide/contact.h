@@ -35,8 +35,7 @@
 /* Piecewise-linear table y(x) through n points (x[] strictly increasing; n >= 1), constant beyond the
  * ends (dydx = 0 there). At an interior breakpoint the slope of the interval to the right is returned.
  * Outputs: *y, *dydx (may be NULL). Errors (PETSC_ERR_ARG_OUTOFRANGE / WRONG) for n < 1 or unsorted x. */
-PetscErrorCode TslTableEvaluate(PetscInt n, const PetscReal x[], const PetscReal y[], PetscReal arg, PetscReal *value,
-                                PetscReal *dvalue);
+PetscErrorCode TslTableEvaluate(PetscInt n, const PetscReal x[], const PetscReal y[], PetscReal arg, PetscReal *value, PetscReal *dvalue);
 
 /* ---------------------------------------------------------------------------------------------------
  * Interaction law (one *SURFACE INTERACTION)
@@ -61,23 +60,23 @@ typedef enum {
 
 typedef struct {
   TslContactNormalMethod normal;
-  PetscReal eps_n; /* normal penalty stiffness (force/length^3: pressure per penetration) */
+  PetscReal              eps_n; /* normal penalty stiffness (force/length^3: pressure per penetration) */
 
   TslContactFrictionMethod friction;
-  PetscReal mu;       /* Coulomb coefficient */
-  PetscReal eps_t;    /* tangential penalty stiffness (pressure per slip length), PENALTY mode */
-  PetscReal slip_tol; /* LAGRANGE mode: |ds| below which sign(ds) is regularised (length) */
+  PetscReal                mu;       /* Coulomb coefficient */
+  PetscReal                eps_t;    /* tangential penalty stiffness (pressure per slip length), PENALTY mode */
+  PetscReal                slip_tol; /* LAGRANGE mode: |ds| below which sign(ds) is regularised (length) */
 
   /* gap conductance table: k_value[i] at k_arg[i] (pressure or clearance, increasing) */
   TslContactConductanceKind conductance;
-  PetscInt k_n;
-  const PetscReal *k_arg, *k_value; /* k: power/(area temperature) */
+  PetscInt                  k_n;
+  const PetscReal          *k_arg, *k_value; /* k: power/(area temperature) */
 
   /* gap radiation: effective view factor table F(d) (d clearance; first value below the table, zero beyond its last clearance), emissivities
    * of the main (A) and secondary (B) surfaces, Stefan-Boltzmann constant, absolute zero. F_n = 0: none. */
-  PetscInt F_n;
+  PetscInt         F_n;
   const PetscReal *F_clearance, *F_value;
-  PetscReal eps_main, eps_secondary, sigma, theta_zero;
+  PetscReal        eps_main, eps_secondary, sigma, theta_zero;
 
   /* gap heat generation: eta = fraction of frictional dissipation converted to heat; f = fraction of that heat
    * into the SECONDARY surface, (1 - f) into the main surface (Abaqus *GAP HEAT GENERATION convention). */
@@ -92,8 +91,7 @@ PetscErrorCode TslContactLawSetDefaults(TslContactLaw *law);
  *   C = F sigma / (1/eps_A + 1/eps_B - 1)
  * sigma Stefan-Boltzmann constant, F effective view factor (0..1), eps_A/eps_B emissivities (0..1].
  * Units of C: power / (area temperature^4). dC_dF may be NULL. */
-PetscErrorCode TslGapRadiationCoefficient(PetscReal sigma, PetscReal F, PetscReal eps_A, PetscReal eps_B, PetscReal *C,
-                                          PetscReal *dC_dF);
+PetscErrorCode TslGapRadiationCoefficient(PetscReal sigma, PetscReal F, PetscReal eps_A, PetscReal eps_B, PetscReal *C, PetscReal *dC_dF);
 
 /* Augmented-Lagrange multiplier update between augmentations (caller-owned, per secondary node):
  *   lambda_new = <lambda + eps_n (-g)>   (the converged contact pressure of this augmentation).
@@ -117,15 +115,15 @@ typedef enum { TSL_CONTACT_OPEN = 0, TSL_CONTACT_STICK, TSL_CONTACT_SLIP } TslCo
  * neighbour nodes used for smoothing: m0 (start of the previous segment m0 -> m1) if x_prev is given,
  * then m3 (end of the next segment m2 -> m3) if x_next is given. */
 typedef struct {
-  TslKinematics kin;                /* TSL_KIN_PLANE_STRAIN, TSL_KIN_PLANE_STRESS or TSL_KIN_AXISYMMETRIC */
-  PetscReal thickness;              /* plane models (length); ignored for axisymmetry */
-  PetscReal length;                 /* tributary length of the secondary node on its own surface (reference) */
-  PetscReal x[3][2];                /* reference coordinates of s, m1, m2 */
-  PetscReal u[3][3];                /* current unknowns (u_x, u_y, theta) of s, m1, m2 */
-  const PetscReal *x_prev, *u_prev; /* m0: reference coords [2], unknowns [3]; NULL at a surface end */
-  const PetscReal *x_next, *u_next; /* m3: idem */
-  PetscReal smoothing;              /* fraction s of the segment length rounded at each end, 0 <= s < 0.5 */
-  PetscReal dt;                     /* increment (time) for the dissipation rate; > 0 when friction heats */
+  TslKinematics     kin;             /* TSL_KIN_PLANE_STRAIN, TSL_KIN_PLANE_STRESS or TSL_KIN_AXISYMMETRIC */
+  PetscReal         thickness;       /* plane models (length); ignored for axisymmetry */
+  PetscReal         length;          /* tributary length of the secondary node on its own surface (reference) */
+  PetscReal         x[3][2];         /* reference coordinates of s, m1, m2 */
+  PetscReal         u[3][3];         /* current unknowns (u_x, u_y, theta) of s, m1, m2 */
+  const PetscReal  *x_prev, *u_prev; /* m0: reference coords [2], unknowns [3]; NULL at a surface end */
+  const PetscReal  *x_next, *u_next; /* m3: idem */
+  PetscReal         smoothing;       /* fraction s of the segment length rounded at each end, 0 <= s < 0.5 */
+  PetscReal         dt;              /* increment (time) for the dissipation rate; > 0 when friction heats */
   TslContactHistory hist;
 } TslContactInput;
 
@@ -150,31 +148,31 @@ PetscErrorCode TslContactHistoryTransfer(PetscInt side, PetscReal L_from, PetscR
  * segment, x3 = end of the next segment, NULL at surface ends). The weight of the neighbour's normal is
  * w = h(1 - xi/s)/2 near m1 (h(t) = 3t^2 - 2t^3, clamped to [0,1]), so at the node both segments give the
  * normalised average normal with zero derivative: the normal field is C1 along the surface. */
-PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1[], const PetscReal x2[],
-                                        const PetscReal x3[], PetscReal s, PetscReal xi, PetscReal n[]);
+PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1[], const PetscReal x2[], const PetscReal x3[], PetscReal s,
+                                        PetscReal xi, PetscReal n[]);
 
 /* ---------------------------------------------------------------------------------------------------
  * The contact element kernel
  * ------------------------------------------------------------------------------------------------- */
 typedef struct {
-  PetscInt nnode;             /* 3 + (x_prev != NULL) + (x_next != NULL); R and K have 3*nnode rows */
-  PetscReal xi;               /* clamped projection used */
-  PetscReal xi_raw;           /* unclamped projection (see TslContactProjectionSide) */
-  PetscInt side;              /* TslContactProjectionSide(xi_raw, 0) */
-  PetscReal normal[2];        /* unit normal used (outward from main) */
-  PetscReal gap;              /* g (length), negative = penetration */
-  PetscReal area;             /* A = length * thickness, or length * 2 pi r_s (reference r of s) */
-  PetscReal pressure;         /* CPRESS = pN >= 0 */
-  PetscReal slip;             /* slip increment ds = L (xi - xi_old) (length), CSLIP increment */
-  PetscReal shear;            /* CSHEAR = tT (signed like the slip it resists) */
-  PetscReal slip_dissipative; /* part of ds that dissipates (ds in LAGRANGE mode, plastic slip in PENALTY) */
-  PetscReal conductance;      /* k used */
-  PetscReal radiation_C;      /* C used */
-  PetscReal heat_flux;        /* q = q_cond + q_rad per area, main -> secondary (HFLA) */
-  PetscReal dissipation_rate; /* tT * slip_dissipative / dt per area (power/area) */
-  PetscReal heat_generation;  /* eta * dissipation_rate per area */
+  PetscInt         nnode;            /* 3 + (x_prev != NULL) + (x_next != NULL); R and K have 3*nnode rows */
+  PetscReal        xi;               /* clamped projection used */
+  PetscReal        xi_raw;           /* unclamped projection (see TslContactProjectionSide) */
+  PetscInt         side;             /* TslContactProjectionSide(xi_raw, 0) */
+  PetscReal        normal[2];        /* unit normal used (outward from main) */
+  PetscReal        gap;              /* g (length), negative = penetration */
+  PetscReal        area;             /* A = length * thickness, or length * 2 pi r_s (reference r of s) */
+  PetscReal        pressure;         /* CPRESS = pN >= 0 */
+  PetscReal        slip;             /* slip increment ds = L (xi - xi_old) (length), CSLIP increment */
+  PetscReal        shear;            /* CSHEAR = tT (signed like the slip it resists) */
+  PetscReal        slip_dissipative; /* part of ds that dissipates (ds in LAGRANGE mode, plastic slip in PENALTY) */
+  PetscReal        conductance;      /* k used */
+  PetscReal        radiation_C;      /* C used */
+  PetscReal        heat_flux;        /* q = q_cond + q_rad per area, main -> secondary (HFLA) */
+  PetscReal        dissipation_rate; /* tT * slip_dissipative / dt per area (power/area) */
+  PetscReal        heat_generation;  /* eta * dissipation_rate per area */
   TslContactStatus status;
-  PetscReal xi_anchor; /* updated sticking anchor: store with TslContactHistoryUpdate after convergence */
+  PetscReal        xi_anchor; /* updated sticking anchor: store with TslContactHistoryUpdate after convergence */
 } TslContactOutput;
 
 /* Residual R[3*nnode] (internal - external: the contact force on a node enters with a minus sign, heat
@@ -187,8 +185,7 @@ typedef struct {
  * with N_1 = 1 - xi, N_2 = xi, q = k (theta_m - theta_s) + C [(theta_m - theta_Z)^4 - (theta_s - theta_Z)^4],
  * theta_m = N_a theta_a, D the dissipation rate per area. The projection is clamped to [0,1]; when
  * out->side != 0 the caller must re-pair or drop the node (see TslContactProjectionSide). */
-PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[],
-                                 TslContactOutput *out);
+PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
 
 /* After an increment converged: xi_old = out->xi, xi_anchor = out->xi_anchor (lambda is left to
  * TslContactAugmentedUpdate). */
@@ -202,16 +199,15 @@ typedef struct _n_TslContactBinGrid *TslContactBinGrid;
 /* Builds the grid over nseg segments, seg_x[4*i..4*i+3] = (x1, y1, x2, y2) in current coordinates, each box
  * inflated by margin (length, >= 0). The bin size is about the mean inflated box size, so a segment covers
  * O(1) bins. The grid copies what it needs; destroy with TslContactBinGridDestroy. */
-PetscErrorCode TslContactBinGridCreate(PetscInt nseg, const PetscReal seg_x[], PetscReal margin,
-                                       TslContactBinGrid *grid);
+PetscErrorCode TslContactBinGridCreate(PetscInt nseg, const PetscReal seg_x[], PetscReal margin, TslContactBinGrid *grid);
 PetscErrorCode TslContactBinGridDestroy(TslContactBinGrid *grid);
 
 /* Candidate segments for point p[2]: every segment whose inflated box contains a point within distance
  * radius (box test, radius >= 0) of p. Writes at most cap indices (ascending) to cand[], sets *ncand to
  * the number found (may exceed cap: call again with a larger array) and *nbins (may be NULL) to the
  * number of bins visited. Not thread safe (uses the grid's marker array). */
-PetscErrorCode TslContactBinGridQuery(TslContactBinGrid grid, const PetscReal p[], PetscReal radius, PetscInt cap,
-                                      PetscInt cand[], PetscInt *ncand, PetscInt *nbins);
+PetscErrorCode TslContactBinGridQuery(TslContactBinGrid grid, const PetscReal p[], PetscReal radius, PetscInt cap, PetscInt cand[], PetscInt *ncand,
+                                      PetscInt *nbins);
 
 /* Number of bins in x and y (for logs and tests). */
 PetscErrorCode TslContactBinGridGetSize(TslContactBinGrid grid, PetscInt *nx, PetscInt *ny);

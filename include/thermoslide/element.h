@@ -32,18 +32,18 @@ typedef struct {
  * whose outward normal follows the right-hand rule (3D) or whose edge direction keeps the body on
  * the left (2D, counter-clockwise elements). */
 typedef struct TslGeometry {
-  const char *name;  /* "quad4", "hex8", ... */
-  PetscInt    dim;   /* parametric dimension */
-  PetscInt    nnode;
-  PetscInt    nface;
-  PetscInt    face_nnode[TSL_MAX_FACES];
-  PetscInt    face_node[TSL_MAX_FACES][TSL_MAX_FACE_NODES];
-  const struct TslGeometry *face_geom[TSL_MAX_FACES]; /* family of each face (line2, quad4, ...) */
+  const char               *name; /* "quad4", "hex8", ... */
+  PetscInt                  dim;  /* parametric dimension */
+  PetscInt                  nnode;
+  PetscInt                  nface;
+  PetscInt                  face_nnode[TSL_MAX_FACES];
+  PetscInt                  face_node[TSL_MAX_FACES][TSL_MAX_FACE_NODES];
+  const struct TslGeometry *face_geom[TSL_MAX_FACES];                 /* family of each face (line2, quad4, ...) */
   void (*shape)(const PetscReal xi[], PetscReal N[], PetscReal dN[]); /* dN: [nnode][dim] */
-  PetscReal node_xi[TSL_MAX_ELEM_NODES][3]; /* reference coordinates of the nodes */
-  PetscReal ref_volume;                     /* measure of the reference element */
+  PetscReal     node_xi[TSL_MAX_ELEM_NODES][3];                       /* reference coordinates of the nodes */
+  PetscReal     ref_volume;                                           /* measure of the reference element */
   TslQuadrature full, reduced;
-  PetscInt xdmf_type; /* XDMF mixed-topology cell type id */
+  PetscInt      xdmf_type; /* XDMF mixed-topology cell type id */
 } TslGeometry;
 
 typedef enum {
@@ -54,7 +54,7 @@ typedef enum {
 } TslKinematics;
 
 typedef struct {
-  const char        *name;        /* deck type name, upper case */
+  const char        *name; /* deck type name, upper case */
   const TslGeometry *geom;
   TslKinematics      kin;
   PetscInt           dim;         /* spatial dimension of the model (2 or 3) */
@@ -105,8 +105,8 @@ typedef enum {
  * applied loads enter with a minus sign, the film's heat loss with a plus sign) and to K where the load
  * depends on the unknowns (film). face is 1-based (S1..S6). *heat returns the heat the load adds to the
  * body per unit time (flux: positive in; film: negative when heat leaves); may be NULL. */
-PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value,
-                                  PetscReal value2, PetscReal R[], PetscReal K[], PetscReal *heat);
+PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],
+                                  PetscReal K[], PetscReal *heat);
 
 /* Heat stored per element between u_old and u (lumped capacity): sum rho c V_a (theta_a - theta_old_a). */
 PetscErrorCode TslElementHeatChange(const TslElementInput *in, PetscReal *dQ);

@@ -37,9 +37,9 @@ typedef enum { TSL_SURFACE_ELEMENT = 0, TSL_SURFACE_NODE = 1 } TslSurfaceKind;
 typedef struct {
   char           name[TSL_NAME_LEN];
   TslSurfaceKind kind;
-  PetscInt       n;     /* number of facets (ELEMENT) or nodes (NODE) */
-  PetscInt      *elem;  /* ELEMENT: element id of each facet; NODE: node ids */
-  PetscInt      *face;  /* ELEMENT: face number 1..6 (S1..S6); NODE: NULL */
+  PetscInt       n;    /* number of facets (ELEMENT) or nodes (NODE) */
+  PetscInt      *elem; /* ELEMENT: element id of each facet; NODE: node ids */
+  PetscInt      *face; /* ELEMENT: face number 1..6 (S1..S6); NODE: NULL */
   TslLoc         loc;
 } TslSurface;
 
@@ -104,13 +104,13 @@ typedef struct {
   TslTarget   target;            /* node/nset (BOUNDARY, CLOAD, CFLUX), element/elset or surface (faces) */
   PetscBool   target_is_surface; /* target.set names a *SURFACE (DSFLUX, surface film, surface dload) */
   PetscInt    dof_first, dof_last;
-  PetscInt    face;              /* 1..6 for face loads; 0 = body (BF) */
-  PetscReal   value;             /* magnitude, prescribed value, flux, or film coefficient */
-  PetscReal   sink;              /* FILM sink temperature */
-  PetscInt    amplitude;         /* index into amplitudes[], -1 = step default */
-  PetscInt    film_amplitude;    /* FILM AMPLITUDE= (scales h), -1 = none */
-  PetscBool   op_new;            /* OP=NEW on this keyword: previous loads of this kind are removed */
-  PetscBool   fixed;             /* *BOUNDARY, FIXED: hold the dofs at their values at the start of the step */
+  PetscInt    face;           /* 1..6 for face loads; 0 = body (BF) */
+  PetscReal   value;          /* magnitude, prescribed value, flux, or film coefficient */
+  PetscReal   sink;           /* FILM sink temperature */
+  PetscInt    amplitude;      /* index into amplitudes[], -1 = step default */
+  PetscInt    film_amplitude; /* FILM AMPLITUDE= (scales h), -1 = none */
+  PetscBool   op_new;         /* OP=NEW on this keyword: previous loads of this kind are removed */
+  PetscBool   fixed;          /* *BOUNDARY, FIXED: hold the dofs at their values at the start of the step */
   TslLoc      loc;
 } TslLoad;
 
@@ -118,12 +118,12 @@ typedef enum { TSL_AMP_RAMP = 0, TSL_AMP_STEP = 1 } TslAmpDefault;
 
 /* An output request: *NODE OUTPUT / *ELEMENT OUTPUT / *NODE PRINT / *EL PRINT. */
 typedef struct {
-  PetscBool node;                 /* node (TRUE) or element (FALSE) variables */
-  PetscBool print;                /* *NODE PRINT (table in the job log) rather than field output */
-  char      set[TSL_NAME_LEN];    /* NSET=/ELSET= or empty */
+  PetscBool node;              /* node (TRUE) or element (FALSE) variables */
+  PetscBool print;             /* *NODE PRINT (table in the job log) rather than field output */
+  char      set[TSL_NAME_LEN]; /* NSET=/ELSET= or empty */
   PetscInt  nvar;
-  char      var[16][8];           /* U, NT, RF, RFL, S, E, HFL, ... (upper case) */
-  PetscInt  frequency;            /* FREQUENCY= (default 1) */
+  char      var[16][8]; /* U, NT, RF, RFL, S, E, HFL, ... (upper case) */
+  PetscInt  frequency;  /* FREQUENCY= (default 1) */
   TslLoc    loc;
 } TslOutputRequest;
 
@@ -217,32 +217,32 @@ typedef struct {
    * secondary nodes with their tributary lengths; after distribution each rank keeps the secondary
    * nodes it owns and the whole main surface (whose nodes it holds as ghosts). */
   PetscInt   nmain;
-  PetscInt  *main_node;            /* [2*nmain] node ids of each segment, main body on the left */
+  PetscInt  *main_node;             /* [2*nmain] node ids of each segment, main body on the left */
   PetscInt  *main_prev, *main_next; /* [nmain] neighbouring segment, -1 at an end */
   PetscInt   nsec;
-  PetscInt  *sec_node;   /* [nsec] node ids */
-  PetscReal *sec_length; /* [nsec] tributary length on the secondary surface (reference) */
-  PetscReal  thickness;  /* out-of-plane thickness of the secondary elements (plane models) */
-  PetscInt   kin;        /* TslKinematics of the secondary elements */
+  PetscInt  *sec_node;    /* [nsec] node ids */
+  PetscReal *sec_length;  /* [nsec] tributary length on the secondary surface (reference) */
+  PetscReal  thickness;   /* out-of-plane thickness of the secondary elements (plane models) */
+  PetscInt   kin;         /* TslKinematics of the secondary elements */
   PetscReal  mean_length; /* mean main segment length (reference) */
-  PetscReal  penalty;    /* default normal penalty: 10 E / mean_length */
+  PetscReal  penalty;     /* default normal penalty: 10 E / mean_length */
 } TslContactPair;
 
 typedef struct {
-  char          name[TSL_NAME_LEN];
-  TslLoc        loc;
-  PetscBool     coupled;      /* *COUPLED TEMPERATURE-DISPLACEMENT seen */
-  PetscBool     steady;       /* STEADY STATE */
-  PetscBool     direct;       /* DIRECT: fixed increments */
-  PetscBool     nlgeom;       /* NLGEOM accepted (small-strain kinematics used; see docs) */
-  PetscReal     dt0, period, dtmin, dtmax; /* data line; defaults dt0=period=1, dtmin=1e-5*period, dtmax=period */
-  PetscReal     deltmx;       /* DELTMX (0 = none) */
-  PetscInt      max_inc;      /* INC= (default 100) */
-  TslAmpDefault amp_default;  /* *STEP, AMPLITUDE=RAMP|STEP; default RAMP for steady, STEP for transient */
-  PetscBool     amp_given;    /* AMPLITUDE= was given explicitly */
-  PetscInt      nload;
-  TslLoad      *loads;
-  PetscInt      nout;
+  char              name[TSL_NAME_LEN];
+  TslLoc            loc;
+  PetscBool         coupled;                   /* *COUPLED TEMPERATURE-DISPLACEMENT seen */
+  PetscBool         steady;                    /* STEADY STATE */
+  PetscBool         direct;                    /* DIRECT: fixed increments */
+  PetscBool         nlgeom;                    /* NLGEOM accepted (small-strain kinematics used; see docs) */
+  PetscReal         dt0, period, dtmin, dtmax; /* data line; defaults dt0=period=1, dtmin=1e-5*period, dtmax=period */
+  PetscReal         deltmx;                    /* DELTMX (0 = none) */
+  PetscInt          max_inc;                   /* INC= (default 100) */
+  TslAmpDefault     amp_default;               /* *STEP, AMPLITUDE=RAMP|STEP; default RAMP for steady, STEP for transient */
+  PetscBool         amp_given;                 /* AMPLITUDE= was given explicitly */
+  PetscInt          nload;
+  TslLoad          *loads;
+  PetscInt          nout;
   TslOutputRequest *out;
 } TslStep;
 
@@ -254,10 +254,10 @@ typedef struct {
   char heading[256];
 
   /* mesh */
-  PetscInt   dim;       /* 2 or 3, from the element types */
+  PetscInt   dim; /* 2 or 3, from the element types */
   PetscInt   nnode;
-  PetscInt  *node_id;   /* [nnode] */
-  PetscReal *node_xyz;  /* [3*nnode]; z = 0 in 2D */
+  PetscInt  *node_id;  /* [nnode] */
+  PetscReal *node_xyz; /* [3*nnode]; z = 0 in 2D */
   PetscInt   nelem;
   PetscInt  *elem_id;   /* [nelem] */
   PetscInt  *elem_type; /* [nelem] index into the element catalogue */
@@ -269,12 +269,12 @@ typedef struct {
   TslSet     *nsets, *elsets;
   TslSurface *surfaces;
 
-  PetscInt     nmaterial, nsection, ninit, namplitude, nequation;
-  TslMaterial *materials;
-  TslSection  *sections;
+  PetscInt               nmaterial, nsection, ninit, namplitude, nequation;
+  TslMaterial           *materials;
+  TslSection            *sections;
   TslInitialTemperature *init;
-  TslAmplitude *amplitudes;
-  TslEquation  *equations;
+  TslAmplitude          *amplitudes;
+  TslEquation           *equations;
 
   PetscInt        ninteraction, npair;
   TslInteraction *interactions;
@@ -333,8 +333,7 @@ PetscErrorCode TslModelUnpack(const char *buf, size_t len, TslModel **model);
  * in the order wanted for the copy). Sets and NODE surfaces keep only members among those nodes,
  * element sets and ELEMENT surfaces only members among those elements; equations keep those with a
  * term on one of those nodes. All non-mesh data is copied whole. */
-PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt elems[], PetscInt nn,
-                              const PetscInt nodes[], TslModel **sub);
+PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt elems[], PetscInt nn, const PetscInt nodes[], TslModel **sub);
 
 /* The deck reader (rank 0 only). Reads path and its *INCLUDEs, fills a model and checks it
  * (TslModelCheck). User errors are PETSC_ERR_USER_INPUT with "file:line: message". */

@@ -32,10 +32,9 @@ PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobna
  *          node_id[nnode] deck ids, xyz[3*nnode] coordinates
  *   nelem: elements this rank holds, elem_nat[nelem] natural indices, elem_id[nelem] deck ids,
  *          xdmf_type[nelem] cell types, ptr[nelem+1]/conn natural node indices of each element */
-PetscErrorCode TslOutputSetMesh(TslOutput out, PetscInt nnode_global, PetscInt nnode, const PetscInt node_nat[],
-                                const PetscInt node_id[], const PetscReal xyz[], PetscInt nelem_global, PetscInt nelem,
-                                const PetscInt elem_nat[], const PetscInt elem_id[], const PetscInt xdmf_type[],
-                                const PetscInt ptr[], const PetscInt conn[]);
+PetscErrorCode TslOutputSetMesh(TslOutput out, PetscInt nnode_global, PetscInt nnode, const PetscInt node_nat[], const PetscInt node_id[],
+                                const PetscReal xyz[], PetscInt nelem_global, PetscInt nelem, const PetscInt elem_nat[], const PetscInt elem_id[],
+                                const PetscInt xdmf_type[], const PetscInt ptr[], const PetscInt conn[]);
 
 /* One frame (an output increment). Fields are given between Begin and End; vals are
  * [nnode][ncomp] for node fields (in SetMesh's node order) and [nelem][ncomp] for element fields. */
@@ -50,8 +49,7 @@ PetscErrorCode TslOutputDestroy(TslOutput *out);
 
 /* History: one CSV row per increment, written by rank 0; values must be the same on all ranks. */
 typedef struct _p_TslHistory *TslHistory;
-PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobname, PetscInt ncol,
-                                const char *const names[], TslHistory *hist);
+PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobname, PetscInt ncol, const char *const names[], TslHistory *hist);
 PetscErrorCode TslHistoryAppend(TslHistory hist, const PetscReal vals[]);
 PetscErrorCode TslHistoryFinalize(TslHistory hist);
 PetscErrorCode TslHistoryDestroy(TslHistory *hist);

@@ -19,9 +19,9 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
 
 /* Calls a function that may fail on some ranks only, and turns its failure into an error on all ranks
  * (so no rank waits forever in a collective call). The original message is printed by the failing rank. */
-#define TslCallCollective(comm, call) \
-  do { \
-    PetscErrorCode tsl_ierr_ = (call), tsl_gerr_ = 0; \
-    PetscCallMPI(MPI_Allreduce(&tsl_ierr_, &tsl_gerr_, 1, MPI_INT, MPI_MAX, (comm))); \
-    if (tsl_gerr_) SETERRQ((comm), tsl_gerr_, " "); \
+#define TslCallCollective(comm, call)                                                                                                                \
+  do {                                                                                                                                               \
+    PetscErrorCode tsl_ierr_ = (call), tsl_gerr_ = 0;                                                                                                \
+    PetscCallMPI(MPI_Allreduce(&tsl_ierr_, &tsl_gerr_, 1, MPI_INT, MPI_MAX, (comm)));                                                                \
+    if (tsl_gerr_) SETERRQ((comm), tsl_gerr_, " ");                                                                                                  \
   } while (0)

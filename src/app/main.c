@@ -32,7 +32,8 @@ static const char Usage[] = "usage: mpirun -n N thermoslide job.inp [-o DIR] [op
 
 /* Prints the first report of an error once: user errors as a plain message, others with their origin.
  * A blank message is the follow-up of an error already reported by another rank. */
-static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, const char *file, PetscErrorCode n, PetscErrorType p, const char *mess, void *ctx)
+static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, const char *file, PetscErrorCode n, PetscErrorType p, const char *mess,
+                                   void *ctx)
 {
   PetscMPIInt rank = 0;
 
@@ -40,8 +41,10 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
   if (p != PETSC_ERROR_INITIAL || !mess || !strcmp(mess, " ")) return n;
   if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
   if (rank != 0) return n;
-  if (n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_NOT_CONVERGED) fprintf(stderr, "thermoslide: error: %s\n", mess);
-  else fprintf(stderr, "thermoslide: error %d in %s() (%s:%d): %s\n", (int)n, fun, file, line, mess);
+  if (n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_NOT_CONVERGED)
+    fprintf(stderr, "thermoslide: error: %s\n", mess);
+  else
+    fprintf(stderr, "thermoslide: error %d in %s() (%s:%d): %s\n", (int)n, fun, file, line, mess);
   fflush(stderr);
   return n;
 }

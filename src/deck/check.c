@@ -4,35 +4,36 @@
 #include <thermoslide/element.h>
 #include <string.h>
 
-#define CHECK(c, loc, fmt, ...)                                                                                        \
-  PetscCheck(c, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, TSL_LOC_FMT fmt, TSL_LOC_ARGS(m, loc), __VA_ARGS__)
+#define CHECK(c, loc, fmt, ...) PetscCheck(c, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, TSL_LOC_FMT fmt, TSL_LOC_ARGS(m, loc), __VA_ARGS__)
 
-static TslLoc ElemLoc(const TslModel *m, PetscInt e) {
+static TslLoc ElemLoc(const TslModel *m, PetscInt e)
+{
   TslLoc l = {-1, 0};
   if (m->elem_line) l.file = m->elem_line[2 * e], l.line = m->elem_line[2 * e + 1];
   return l;
 }
 
-static PetscInt Dim(const TslModel *m) {
+static PetscInt Dim(const TslModel *m)
+{
   return m->dim ? m->dim : 3;
 }
 
-static PetscBool DofValid(const TslModel *m, PetscInt dof) {
+static PetscBool DofValid(const TslModel *m, PetscInt dof)
+{
   return ((dof >= 1 && dof <= Dim(m)) || dof == 11) ? PETSC_TRUE : PETSC_FALSE;
 }
 
-static PetscErrorCode CheckMesh(TslModel *m) {
+static PetscErrorCode CheckMesh(TslModel *m)
+{
   PetscFunctionBeginUser;
   for (PetscInt i = 1; i < m->nnode; i++) {
     TslLoc none = {0, 0};
-    CHECK(m->index_node_id[i] != m->index_node_id[i - 1], none, "duplicate node id %" PetscInt_FMT,
-          m->index_node_id[i]);
+    CHECK(m->index_node_id[i] != m->index_node_id[i - 1], none, "duplicate node id %" PetscInt_FMT, m->index_node_id[i]);
   }
   for (PetscInt i = 1; i < m->nelem; i++) {
     if (m->index_elem_id[i] == m->index_elem_id[i - 1]) {
-      PetscInt a = PetscMin(m->index_elem_pos[i], m->index_elem_pos[i - 1]),
-               b = PetscMax(m->index_elem_pos[i], m->index_elem_pos[i - 1]);
-      char first[PETSC_MAX_PATH_LEN];
+      PetscInt a = PetscMin(m->index_elem_pos[i], m->index_elem_pos[i - 1]), b = PetscMax(m->index_elem_pos[i], m->index_elem_pos[i - 1]);
+      char     first[PETSC_MAX_PATH_LEN];
       CHECK(PETSC_FALSE, ElemLoc(m, b), "duplicate element id %" PetscInt_FMT " (first defined at %s)", m->elem_id[b],
             TslLocString(m, ElemLoc(m, a), first, sizeof(first)));
     }
@@ -44,33 +45,34 @@ static PetscErrorCode CheckMesh(TslModel *m) {
           "element %" PetscInt_FMT " has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT, m->elem_id[e],
           m->elem_ptr[e + 1] - m->elem_ptr[e], et->name, et->geom->nnode);
     for (PetscInt j = m->elem_ptr[e]; j < m->elem_ptr[e + 1]; j++)
-      CHECK(TslModelNodeIndex(m, m->elem_conn[j]) >= 0, ElemLoc(m, e),
-            "element %" PetscInt_FMT " references undefined node %" PetscInt_FMT, m->elem_id[e], m->elem_conn[j]);
+      CHECK(TslModelNodeIndex(m, m->elem_conn[j]) >= 0, ElemLoc(m, e), "element %" PetscInt_FMT " references undefined node %" PetscInt_FMT,
+            m->elem_id[e], m->elem_conn[j]);
   }
   for (PetscInt s = 0; s < m->nnset; s++)
     for (PetscInt k = 0; k < m->nsets[s].n; k++)
-      CHECK(TslModelNodeIndex(m, m->nsets[s].ids[k]) >= 0, m->nsets[s].loc,
-            "node set %s contains undefined node %" PetscInt_FMT, m->nsets[s].name, m->nsets[s].ids[k]);
+      CHECK(TslModelNodeIndex(m, m->nsets[s].ids[k]) >= 0, m->nsets[s].loc, "node set %s contains undefined node %" PetscInt_FMT, m->nsets[s].name,
+            m->nsets[s].ids[k]);
   for (PetscInt s = 0; s < m->nelset; s++)
     for (PetscInt k = 0; k < m->elsets[s].n; k++)
-      CHECK(TslModelElementIndex(m, m->elsets[s].ids[k]) >= 0, m->elsets[s].loc,
-            "element set %s contains undefined element %" PetscInt_FMT, m->elsets[s].name, m->elsets[s].ids[k]);
+      CHECK(TslModelElementIndex(m, m->elsets[s].ids[k]) >= 0, m->elsets[s].loc, "element set %s contains undefined element %" PetscInt_FMT,
+            m->elsets[s].name, m->elsets[s].ids[k]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Element e exists and has a face number face (0 = body, always valid). */
-static PetscErrorCode CheckFace(TslModel *m, TslLoc loc, PetscInt id, PetscInt face) {
+static PetscErrorCode CheckFace(TslModel *m, TslLoc loc, PetscInt id, PetscInt face)
+{
   PetscInt e = TslModelElementIndex(m, id);
 
   PetscFunctionBeginUser;
   CHECK(e >= 0, loc, "undefined element %" PetscInt_FMT, id);
-  CHECK(face <= TslElementTypeGet(m->elem_type[e])->geom->nface, loc,
-        "element %" PetscInt_FMT " (%s) has no face %" PetscInt_FMT, id, TslElementTypeGet(m->elem_type[e])->name,
-        face);
+  CHECK(face <= TslElementTypeGet(m->elem_type[e])->geom->nface, loc, "element %" PetscInt_FMT " (%s) has no face %" PetscInt_FMT, id,
+        TslElementTypeGet(m->elem_type[e])->name, face);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckSurfaces(TslModel *m) {
+static PetscErrorCode CheckSurfaces(TslModel *m)
+{
   PetscFunctionBeginUser;
   for (PetscInt s = 0; s < m->nsurface; s++) {
     const TslSurface *sf = &m->surfaces[s];
@@ -78,42 +80,39 @@ static PetscErrorCode CheckSurfaces(TslModel *m) {
       if (sf->kind == TSL_SURFACE_ELEMENT)
         PetscCall(CheckFace(m, sf->loc, sf->elem[k], sf->face[k]));
       else
-        CHECK(TslModelNodeIndex(m, sf->elem[k]) >= 0, sf->loc, "surface %s: undefined node %" PetscInt_FMT, sf->name,
-              sf->elem[k]);
+        CHECK(TslModelNodeIndex(m, sf->elem[k]) >= 0, sf->loc, "surface %s: undefined node %" PetscInt_FMT, sf->name, sf->elem[k]);
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckMaterial(TslModel *m, const TslMaterial *mat, const TslSection *sec) {
+static PetscErrorCode CheckMaterial(TslModel *m, const TslMaterial *mat, const TslSection *sec)
+{
   char where[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBeginUser;
   (void)TslLocString(m, sec->loc, where, sizeof(where));
   CHECK(mat->has_elastic, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *ELASTIC", mat->name, where);
-  CHECK(mat->has_conductivity, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *CONDUCTIVITY",
-        mat->name, where);
+  CHECK(mat->has_conductivity, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *CONDUCTIVITY", mat->name, where);
   CHECK(mat->has_density, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *DENSITY", mat->name, where);
-  CHECK(mat->has_specific_heat, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *SPECIFIC HEAT",
-        mat->name, where);
+  CHECK(mat->has_specific_heat, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *SPECIFIC HEAT", mat->name, where);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckMaterialsAndSections(TslModel *m) {
+static PetscErrorCode CheckMaterialsAndSections(TslModel *m)
+{
   PetscBool *covered;
-  PetscInt bad = -1;
+  PetscInt   bad = -1;
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < m->nmaterial; i++) {
     const TslMaterial *mat = &m->materials[i];
     if (mat->has_elastic) {
       CHECK(mat->E > 0, mat->loc, "material %s: Young's modulus must be positive (got %g)", mat->name, (double)mat->E);
-      CHECK(mat->nu > -1 && mat->nu < 0.5, mat->loc, "material %s: Poisson's ratio must lie in (-1, 0.5) (got %g)",
-            mat->name, (double)mat->nu);
+      CHECK(mat->nu > -1 && mat->nu < 0.5, mat->loc, "material %s: Poisson's ratio must lie in (-1, 0.5) (got %g)", mat->name, (double)mat->nu);
     }
     if (mat->has_conductivity)
-      CHECK(mat->conductivity > 0, mat->loc, "material %s: conductivity must be positive (got %g)", mat->name,
-            (double)mat->conductivity);
+      CHECK(mat->conductivity > 0, mat->loc, "material %s: conductivity must be positive (got %g)", mat->name, (double)mat->conductivity);
   }
   for (PetscInt s = 0; s < m->nsection; s++) {
     TslSection *sec = &m->sections[s];
@@ -137,7 +136,8 @@ static PetscErrorCode CheckMaterialsAndSections(TslModel *m) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckNodeTarget(TslModel *m, const TslTarget *t, TslLoc loc) {
+static PetscErrorCode CheckNodeTarget(TslModel *m, const TslTarget *t, TslLoc loc)
+{
   PetscFunctionBeginUser;
   if (t->set[0])
     CHECK(TslModelFindNodeSet(m, t->set) >= 0, loc, "undefined node set %s", t->set);
@@ -146,27 +146,25 @@ static PetscErrorCode CheckNodeTarget(TslModel *m, const TslTarget *t, TslLoc lo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l) {
+static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l)
+{
   PetscFunctionBeginUser;
   if (!l->target.set[0] && l->target.id < 0) PetscFunctionReturn(PETSC_SUCCESS); /* OP=NEW alone: only removes */
   CHECK(l->amplitude >= -1 && l->amplitude < m->namplitude, l->loc, "bad amplitude index %" PetscInt_FMT, l->amplitude);
-  CHECK(l->film_amplitude >= -1 && l->film_amplitude < m->namplitude, l->loc, "bad amplitude index %" PetscInt_FMT,
-        l->film_amplitude);
+  CHECK(l->film_amplitude >= -1 && l->film_amplitude < m->namplitude, l->loc, "bad amplitude index %" PetscInt_FMT, l->film_amplitude);
   switch (l->kind) {
   case TSL_LOAD_BOUNDARY:
   case TSL_LOAD_CLOAD:
   case TSL_LOAD_CFLUX:
     PetscCall(CheckNodeTarget(m, &l->target, l->loc));
-    CHECK(DofValid(m, l->dof_first) && DofValid(m, l->dof_last), l->loc,
-          "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)",
+    CHECK(DofValid(m, l->dof_first) && DofValid(m, l->dof_last), l->loc, "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)",
           DofValid(m, l->dof_first) ? l->dof_last : l->dof_first, Dim(m));
     break;
   default:
     if (l->target_is_surface) {
       PetscInt s = TslModelFindSurface(m, l->target.set);
       CHECK(s >= 0, l->loc, "undefined surface %s", l->target.set);
-      CHECK(m->surfaces[s].kind == TSL_SURFACE_ELEMENT, l->loc, "surface %s must be an element surface (TYPE=ELEMENT)",
-            l->target.set);
+      CHECK(m->surfaces[s].kind == TSL_SURFACE_ELEMENT, l->loc, "surface %s must be an element surface (TYPE=ELEMENT)", l->target.set);
     } else if (l->target.set[0]) {
       PetscInt s = TslModelFindElementSet(m, l->target.set);
       CHECK(s >= 0, l->loc, "undefined element set %s", l->target.set);
@@ -177,7 +175,8 @@ static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckSteps(TslModel *m) {
+static PetscErrorCode CheckSteps(TslModel *m)
+{
   PetscFunctionBeginUser;
   {
     TslLoc first = {0, 1};
@@ -201,61 +200,56 @@ static PetscErrorCode CheckSteps(TslModel *m) {
 
 /* A table's abscissae (clearance or pressure) must increase strictly: the reader sorts them, so what
  * remains to catch is a value given twice (or a table built unsorted by other code). */
-static PetscErrorCode CheckTableAbscissae(TslModel *m, TslLoc loc, const char *inter, const char *kw, const char *what,
-                                          PetscInt n, const PetscReal x[]) {
+static PetscErrorCode CheckTableAbscissae(TslModel *m, TslLoc loc, const char *inter, const char *kw, const char *what, PetscInt n,
+                                          const PetscReal x[])
+{
   PetscFunctionBeginUser;
   for (PetscInt k = 1; k < n; k++) {
     CHECK(x[k] != x[k - 1], loc, "surface interaction %s: *%s gives the %s %g twice", inter, kw, what, (double)x[k]);
-    CHECK(x[k] > x[k - 1], loc, "surface interaction %s: *%s %s values must increase (%g after %g)", inter, kw, what,
-          (double)x[k], (double)x[k - 1]);
+    CHECK(x[k] > x[k - 1], loc, "surface interaction %s: *%s %s values must increase (%g after %g)", inter, kw, what, (double)x[k], (double)x[k - 1]);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckInteraction(TslModel *m, const TslInteraction *it) {
-  const TslGapConductance *g = &it->conductance;
-  const TslGapRadiation *r = &it->radiation;
+static PetscErrorCode CheckInteraction(TslModel *m, const TslInteraction *it)
+{
+  const TslGapConductance    *g = &it->conductance;
+  const TslGapRadiation      *r = &it->radiation;
   const TslGapHeatGeneration *h = &it->heat_generation;
 
   PetscFunctionBeginUser;
   if (it->friction.given)
-    CHECK(it->friction.mu >= 0, it->friction.loc,
-          "surface interaction %s: the friction coefficient must not be negative (got %g)", it->name,
+    CHECK(it->friction.mu >= 0, it->friction.loc, "surface interaction %s: the friction coefficient must not be negative (got %g)", it->name,
           (double)it->friction.mu);
   if (g->given) {
     for (PetscInt k = 0; k < g->n; k++)
-      CHECK(g->value[k] >= 0, g->loc, "surface interaction %s: the gap conductance must not be negative (got %g)",
-            it->name, (double)g->value[k]);
-    PetscCall(CheckTableAbscissae(m, g->loc, it->name, "GAP CONDUCTANCE", g->by_pressure ? "pressure" : "clearance",
-                                  g->n, g->abscissa));
+      CHECK(g->value[k] >= 0, g->loc, "surface interaction %s: the gap conductance must not be negative (got %g)", it->name, (double)g->value[k]);
+    PetscCall(CheckTableAbscissae(m, g->loc, it->name, "GAP CONDUCTANCE", g->by_pressure ? "pressure" : "clearance", g->n, g->abscissa));
   }
   if (r->given) {
-    CHECK(r->emissivity_main > 0 && r->emissivity_main <= 1 && r->emissivity_secondary > 0 &&
-              r->emissivity_secondary <= 1,
-          r->loc, "surface interaction %s: emissivities must lie in (0, 1] (got %g, %g)", it->name,
-          (double)r->emissivity_main, (double)r->emissivity_secondary);
+    CHECK(r->emissivity_main > 0 && r->emissivity_main <= 1 && r->emissivity_secondary > 0 && r->emissivity_secondary <= 1, r->loc,
+          "surface interaction %s: emissivities must lie in (0, 1] (got %g, %g)", it->name, (double)r->emissivity_main,
+          (double)r->emissivity_secondary);
     for (PetscInt k = 0; k < r->n; k++)
-      CHECK(r->view_factor[k] >= 0 && r->view_factor[k] <= 1, r->loc,
-            "surface interaction %s: the effective view factor must lie in [0, 1] (got %g)", it->name,
-            (double)r->view_factor[k]);
+      CHECK(r->view_factor[k] >= 0 && r->view_factor[k] <= 1, r->loc, "surface interaction %s: the effective view factor must lie in [0, 1] (got %g)",
+            it->name, (double)r->view_factor[k]);
     PetscCall(CheckTableAbscissae(m, r->loc, it->name, "GAP RADIATION", "clearance", r->n, r->clearance));
   }
   CHECK(h->fraction >= 0 && h->fraction <= 1, h->loc,
-        "surface interaction %s: the fraction of dissipation converted to heat must lie in [0, 1] (got %g)", it->name,
-        (double)h->fraction);
+        "surface interaction %s: the fraction of dissipation converted to heat must lie in [0, 1] (got %g)", it->name, (double)h->fraction);
   CHECK(h->weight_secondary >= 0 && h->weight_secondary <= 1, h->loc,
-        "surface interaction %s: the heat weight of the secondary surface must lie in [0, 1] (got %g)", it->name,
-        (double)h->weight_secondary);
+        "surface interaction %s: the heat weight of the secondary surface must lie in [0, 1] (got %g)", it->name, (double)h->weight_secondary);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckContactPair(TslModel *m, TslContactPair *p) {
+static PetscErrorCode CheckContactPair(TslModel *m, TslContactPair *p)
+{
   PetscInt s, mn;
 
   PetscFunctionBeginUser;
   p->interaction_index = TslModelFindInteraction(m, p->interaction);
   CHECK(p->interaction_index >= 0, p->loc, "undefined surface interaction %s", p->interaction);
-  s = TslModelFindSurface(m, p->secondary);
+  s  = TslModelFindSurface(m, p->secondary);
   mn = TslModelFindSurface(m, p->main);
   CHECK(s >= 0, p->loc, "undefined surface %s", p->secondary);
   CHECK(mn >= 0, p->loc, "undefined surface %s", p->main);
@@ -264,12 +258,12 @@ static PetscErrorCode CheckContactPair(TslModel *m, TslContactPair *p) {
         "main surface %s must be an element surface (TYPE=ELEMENT); node surfaces can only be secondary", p->main);
   CHECK(p->type != TSL_CONTACT_SURFACE_TO_SURFACE || m->surfaces[s].kind == TSL_SURFACE_ELEMENT, p->loc,
         "TYPE=SURFACE TO SURFACE needs an element surface as secondary; %s is a node surface", p->secondary);
-  if (p->adjust_set[0])
-    CHECK(TslModelFindNodeSet(m, p->adjust_set) >= 0, p->loc, "undefined node set %s", p->adjust_set);
+  if (p->adjust_set[0]) CHECK(TslModelFindNodeSet(m, p->adjust_set) >= 0, p->loc, "undefined node set %s", p->adjust_set);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslModelCheck(TslModel *m) {
+PetscErrorCode TslModelCheck(TslModel *m)
+{
   PetscFunctionBeginUser;
   PetscCall(TslModelIndex(m));
   PetscCall(CheckMesh(m));
@@ -279,15 +273,13 @@ PetscErrorCode TslModelCheck(TslModel *m) {
   for (PetscInt i = 0; i < m->nequation; i++) {
     const TslEquation *e = &m->equations[i];
     for (PetscInt k = 0; k < e->n; k++) {
-      CHECK(TslModelNodeIndex(m, e->node[k]) >= 0, e->loc, "*EQUATION refers to undefined node %" PetscInt_FMT,
-            e->node[k]);
+      CHECK(TslModelNodeIndex(m, e->node[k]) >= 0, e->loc, "*EQUATION refers to undefined node %" PetscInt_FMT, e->node[k]);
       CHECK(DofValid(m, e->dof[k]), e->loc, "*EQUATION: bad degree of freedom %" PetscInt_FMT, e->dof[k]);
     }
   }
   for (PetscInt i = 0; i < m->namplitude; i++) {
     const TslAmplitude *a = &m->amplitudes[i];
-    for (PetscInt k = 1; k < a->n; k++)
-      CHECK(a->t[k] >= a->t[k - 1], a->loc, "amplitude %s: times must not decrease", a->name);
+    for (PetscInt k = 1; k < a->n; k++) CHECK(a->t[k] >= a->t[k - 1], a->loc, "amplitude %s: times must not decrease", a->name);
   }
   for (PetscInt i = 0; i < m->ninteraction; i++) PetscCall(CheckInteraction(m, &m->interactions[i]));
   for (PetscInt i = 0; i < m->npair; i++) PetscCall(CheckContactPair(m, &m->pairs[i]));

@@ -23,43 +23,43 @@
 #define DECK_MAX_PARAM 32
 
 typedef struct {
-  char *text;
-  size_t pos, len;
+  char    *text;
+  size_t   pos, len;
   PetscInt file, line;
 } DeckFrame;
 
 typedef struct {
   TslModel *m;
   DeckFrame frame[DECK_MAX_DEPTH];
-  PetscInt depth;
-  char **texts; /* every file's text, freed at the end */
-  PetscInt ntext;
+  PetscInt  depth;
+  char    **texts; /* every file's text, freed at the end */
+  PetscInt  ntext;
 
   /* raw line pushback */
-  PetscBool back;
+  PetscBool   back;
   const char *raw;
-  TslLoc rawloc;
+  TslLoc      rawloc;
 
   /* current data line */
-  char *buf;
-  size_t bufcap;
-  char **field;
+  char    *buf;
+  size_t   bufcap;
+  char   **field;
   PetscInt nfield;
-  TslLoc loc;
+  TslLoc   loc;
 
   /* current keyword line */
-  char *kwbuf;
-  size_t kwcap;
-  char *kw;
+  char    *kwbuf;
+  size_t   kwcap;
+  char    *kw;
   PetscInt nparam;
-  char *pkey[DECK_MAX_PARAM], *pval[DECK_MAX_PARAM];
-  TslLoc kwloc;
+  char    *pkey[DECK_MAX_PARAM], *pval[DECK_MAX_PARAM];
+  TslLoc   kwloc;
 
   /* state */
-  PetscInt step;        /* index of the open step or -1 */
-  PetscInt material;    /* material the property keywords apply to, or -1 */
-  PetscInt interaction; /* surface interaction the interface-law keywords apply to, or -1 */
-  PetscInt out_frequency;
+  PetscInt  step;        /* index of the open step or -1 */
+  PetscInt  material;    /* material the property keywords apply to, or -1 */
+  PetscInt  interaction; /* surface interaction the interface-law keywords apply to, or -1 */
+  PetscInt  out_frequency;
   PetscInt *node_line; /* [2*nnode] (file, line) of each node, for duplicate messages */
 } Deck;
 
@@ -71,7 +71,8 @@ typedef struct {
 
 /* ---- small string helpers -------------------------------------------------------------------- */
 
-static char *Trim(char *s) {
+static char *Trim(char *s)
+{
   char *e;
   while (*s && isspace((unsigned char)*s)) s++;
   e = s + strlen(s);
@@ -80,7 +81,8 @@ static char *Trim(char *s) {
 }
 
 /* Upper case, runs of blanks collapsed to one space, trimmed; in place. */
-static char *Normalize(char *s) {
+static char *Normalize(char *s)
+{
   char *r = Trim(s), *w = r;
   for (char *p = r; *p; p++) {
     if (isspace((unsigned char)*p)) {
@@ -92,7 +94,8 @@ static char *Normalize(char *s) {
   return r;
 }
 
-static PetscBool IsInteger(const char *s) {
+static PetscBool IsInteger(const char *s)
+{
   if (*s == '+' || *s == '-') s++;
   if (!*s) return PETSC_FALSE;
   for (; *s; s++)
@@ -100,7 +103,8 @@ static PetscBool IsInteger(const char *s) {
   return PETSC_TRUE;
 }
 
-static PetscErrorCode BufReserve(char **buf, size_t *cap, size_t need) {
+static PetscErrorCode BufReserve(char **buf, size_t *cap, size_t need)
+{
   PetscFunctionBeginUser;
   if (need <= *cap) PetscFunctionReturn(PETSC_SUCCESS);
   *cap = need < 256 ? 256 : 2 * need;
@@ -111,8 +115,9 @@ static PetscErrorCode BufReserve(char **buf, size_t *cap, size_t need) {
 /* ---- numbers --------------------------------------------------------------------------------- */
 
 /* A real in C or Fortran form (1.e6, 1.0D3, 30.0E+06). */
-static PetscErrorCode DeckReal(Deck *d, const char *s, const char *what, PetscReal *x) {
-  char tmp[64], *end;
+static PetscErrorCode DeckReal(Deck *d, const char *s, const char *what, PetscReal *x)
+{
+  char   tmp[64], *end;
   size_t n = strlen(s);
 
   PetscFunctionBeginUser;
@@ -120,28 +125,28 @@ static PetscErrorCode DeckReal(Deck *d, const char *s, const char *what, PetscRe
   USER_CHECK(n < sizeof(tmp), LOC_FMT "expected a number for %s, got '%s'", DLOC(d), what, s);
   for (size_t i = 0; i <= n; i++) tmp[i] = (s[i] == 'd' || s[i] == 'D') ? 'e' : s[i];
   errno = 0;
-  *x = (PetscReal)strtod(tmp, &end);
-  USER_CHECK(end != tmp && *end == 0 && errno != ERANGE && !PetscIsInfOrNanReal(*x),
-             LOC_FMT "expected a number for %s, got '%s'", DLOC(d), what, s);
+  *x    = (PetscReal)strtod(tmp, &end);
+  USER_CHECK(end != tmp && *end == 0 && errno != ERANGE && !PetscIsInfOrNanReal(*x), LOC_FMT "expected a number for %s, got '%s'", DLOC(d), what, s);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode DeckInt(Deck *d, const char *s, const char *what, PetscInt *x) {
-  long v;
+static PetscErrorCode DeckInt(Deck *d, const char *s, const char *what, PetscInt *x)
+{
+  long  v;
   char *end;
 
   PetscFunctionBeginUser;
   USER_CHECK(*s, LOC_FMT "missing value for %s", DLOC(d), what);
   errno = 0;
-  v = strtol(s, &end, 10);
-  USER_CHECK(end != s && *end == 0 && errno != ERANGE && v == (PetscInt)v,
-             LOC_FMT "expected an integer for %s, got '%s'", DLOC(d), what, s);
+  v     = strtol(s, &end, 10);
+  USER_CHECK(end != s && *end == 0 && errno != ERANGE && v == (PetscInt)v, LOC_FMT "expected an integer for %s, got '%s'", DLOC(d), what, s);
   *x = (PetscInt)v;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Field i as a real, or def when absent or blank. */
-static PetscErrorCode FieldRealDefault(Deck *d, PetscInt i, const char *what, PetscReal def, PetscReal *x) {
+static PetscErrorCode FieldRealDefault(Deck *d, PetscInt i, const char *what, PetscReal def, PetscReal *x)
+{
   PetscFunctionBeginUser;
   if (i >= d->nfield || !d->field[i][0])
     *x = def;
@@ -150,34 +155,37 @@ static PetscErrorCode FieldRealDefault(Deck *d, PetscInt i, const char *what, Pe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode FieldReal(Deck *d, PetscInt i, const char *what, PetscReal *x) {
+static PetscErrorCode FieldReal(Deck *d, PetscInt i, const char *what, PetscReal *x)
+{
   PetscFunctionBeginUser;
   USER_CHECK(i < d->nfield, LOC_FMT "missing value for %s", DLOC(d), what);
   PetscCall(DeckReal(d, d->field[i], what, x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode FieldInt(Deck *d, PetscInt i, const char *what, PetscInt *x) {
+static PetscErrorCode FieldInt(Deck *d, PetscInt i, const char *what, PetscInt *x)
+{
   PetscFunctionBeginUser;
   USER_CHECK(i < d->nfield, LOC_FMT "missing value for %s", DLOC(d), what);
   PetscCall(DeckInt(d, d->field[i], what, x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CopyName(Deck *d, TslLoc loc, char dst[TSL_NAME_LEN], const char *src) {
+static PetscErrorCode CopyName(Deck *d, TslLoc loc, char dst[TSL_NAME_LEN], const char *src)
+{
   PetscFunctionBeginUser;
-  USER_CHECK(strlen(src) < TSL_NAME_LEN, LOC_FMT "name '%s' is longer than %d characters", TSL_LOC_ARGS(d->m, loc), src,
-             TSL_NAME_LEN - 1);
+  USER_CHECK(strlen(src) < TSL_NAME_LEN, LOC_FMT "name '%s' is longer than %d characters", TSL_LOC_ARGS(d->m, loc), src, TSL_NAME_LEN - 1);
   PetscCall(PetscStrncpy(dst, src, TSL_NAME_LEN));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* ---- files and raw lines --------------------------------------------------------------------- */
 
-static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include) {
-  FILE *fp;
-  long len;
-  char *text;
+static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include)
+{
+  FILE      *fp;
+  long       len;
+  char      *text;
   DeckFrame *f;
 
   PetscFunctionBeginUser;
@@ -203,10 +211,10 @@ static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include) {
 
   PetscCall(TslDeckGrow(&d->m->files, sizeof(char *), d->m->nfile));
   PetscCall(PetscStrallocpy(path, &d->m->files[d->m->nfile]));
-  f = &d->frame[d->depth++];
+  f       = &d->frame[d->depth++];
   f->text = text;
-  f->pos = 0;
-  f->len = (size_t)len;
+  f->pos  = 0;
+  f->len  = (size_t)len;
   f->file = d->m->nfile++;
   f->line = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -215,18 +223,19 @@ static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include) {
 static PetscErrorCode ParseKeyword(Deck *d, char *line);
 
 /* *INCLUDE, INPUT=path: the path is relative to the including file's directory. */
-static PetscErrorCode DeckInclude(Deck *d) {
+static PetscErrorCode DeckInclude(Deck *d)
+{
   const char *input = NULL, *from = d->m->files[d->kwloc.file], *slash;
-  char *path;
-  size_t dirlen, n;
+  char       *path;
+  size_t      dirlen, n;
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < d->nparam; i++)
     if (!strcmp(d->pkey[i], "INPUT")) input = d->pval[i];
   USER_CHECK(input && input[0], LOC_FMT "*INCLUDE needs INPUT=file", KLOC(d));
-  slash = strrchr(from, '/');
+  slash  = strrchr(from, '/');
   dirlen = (input[0] == '/' || !slash) ? 0 : (size_t)(slash - from) + 1;
-  n = dirlen + strlen(input) + 1;
+  n      = dirlen + strlen(input) + 1;
   PetscCall(PetscMalloc1(n, &path));
   memcpy(path, from, dirlen);
   memcpy(path + dirlen, input, strlen(input) + 1);
@@ -236,33 +245,35 @@ static PetscErrorCode DeckInclude(Deck *d) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscBool IsKeywordLine(const char *s) {
+static PetscBool IsKeywordLine(const char *s)
+{
   return (s[0] == '*' && s[1] != '*') ? PETSC_TRUE : PETSC_FALSE;
 }
 
 /* The next non-blank, non-comment physical line (trimmed), or got = FALSE at the end of the deck.
  * *INCLUDE lines are followed here. */
-static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got) {
+static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
+{
   PetscFunctionBeginUser;
   if (d->back) {
     d->back = PETSC_FALSE;
-    *s = d->raw;
-    d->loc = d->rawloc;
-    *got = PETSC_TRUE;
+    *s      = d->raw;
+    d->loc  = d->rawloc;
+    *got    = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   *got = PETSC_FALSE;
   while (d->depth > 0) {
     DeckFrame *f = &d->frame[d->depth - 1];
-    char *line, *nl;
+    char      *line, *nl;
     if (f->pos >= f->len) {
       d->depth--;
       continue;
     }
     line = f->text + f->pos;
-    nl = strchr(line, '\n');
+    nl   = strchr(line, '\n');
     if (nl) {
-      *nl = 0;
+      *nl    = 0;
       f->pos = (size_t)(nl - f->text) + 1;
     } else
       f->pos = f->len;
@@ -273,16 +284,16 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got) {
     d->rawloc.line = f->line;
     if (line[0] == '*') {
       /* cheap test for *INCLUDE before a full parse */
-      char head[16];
+      char   head[16];
       size_t k = 0;
       for (const char *p = line + 1; *p && *p != ',' && k < sizeof(head) - 1; p++)
         if (!isspace((unsigned char)*p)) head[k++] = (char)toupper((unsigned char)*p);
       head[k] = 0;
       if (!strcmp(head, "INCLUDE")) {
         /* an include may come between the data lines of another keyword: keep that keyword's state */
-        char *kw = d->kw, *pkey[DECK_MAX_PARAM], *pval[DECK_MAX_PARAM];
+        char    *kw = d->kw, *pkey[DECK_MAX_PARAM], *pval[DECK_MAX_PARAM];
         PetscInt np = d->nparam;
-        TslLoc kl = d->kwloc;
+        TslLoc   kl = d->kwloc;
         memcpy(pkey, d->pkey, sizeof(pkey));
         memcpy(pval, d->pval, sizeof(pval));
         d->kwloc = d->rawloc;
@@ -296,20 +307,22 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got) {
     }
     d->raw = line;
     d->loc = d->rawloc;
-    *s = line;
-    *got = PETSC_TRUE;
+    *s     = line;
+    *got   = PETSC_TRUE;
     break;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static void RawUnget(Deck *d) {
+static void RawUnget(Deck *d)
+{
   d->back = PETSC_TRUE;
 }
 
 /* ---- logical lines --------------------------------------------------------------------------- */
 
-static PetscInt CountFields(const char *s) {
+static PetscInt CountFields(const char *s)
+{
   PetscInt n = 0, nonempty = 0;
   for (const char *p = s;; p++) {
     if (*p == ',' || !*p) {
@@ -322,13 +335,15 @@ static PetscInt CountFields(const char *s) {
   return n;
 }
 
-static PetscBool EndsWithComma(const char *s) {
+static PetscBool EndsWithComma(const char *s)
+{
   size_t n = strlen(s);
   return (n && s[n - 1] == ',') ? PETSC_TRUE : PETSC_FALSE;
 }
 
 /* Splits buf at commas into trimmed fields; trailing empty fields (a trailing comma) are dropped. */
-static PetscErrorCode SplitFields(Deck *d, char *s) {
+static PetscErrorCode SplitFields(Deck *d, char *s)
+{
   PetscFunctionBeginUser;
   d->nfield = 0;
   for (;;) {
@@ -346,10 +361,11 @@ static PetscErrorCode SplitFields(Deck *d, char *s) {
 /* The next data line of the current keyword, split into fields; got = FALSE (and nothing consumed)
  * when the next line is a keyword or the deck ends. With want > 0, a line ending in a comma is joined
  * with the following data lines until it has want fields (long *ELEMENT lines). */
-static PetscErrorCode DataLine(Deck *d, PetscInt want, PetscBool *got) {
+static PetscErrorCode DataLine(Deck *d, PetscInt want, PetscBool *got)
+{
   const char *s;
-  size_t n;
-  TslLoc first;
+  size_t      n;
+  TslLoc      first;
 
   PetscFunctionBeginUser;
   PetscCall(RawNext(d, &s, got));
@@ -360,7 +376,7 @@ static PetscErrorCode DataLine(Deck *d, PetscInt want, PetscBool *got) {
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   first = d->loc;
-  n = strlen(s);
+  n     = strlen(s);
   PetscCall(BufReserve(&d->buf, &d->bufcap, n + 1));
   memcpy(d->buf, s, n + 1);
   while (want > 0 && EndsWithComma(d->buf) && CountFields(d->buf) < want) {
@@ -381,17 +397,18 @@ static PetscErrorCode DataLine(Deck *d, PetscInt want, PetscBool *got) {
 }
 
 /* Parses a keyword line (in place) into kw and parameters. */
-static PetscErrorCode ParseKeyword(Deck *d, char *line) {
+static PetscErrorCode ParseKeyword(Deck *d, char *line)
+{
   char *p = line + 1, *c;
 
   PetscFunctionBeginUser;
   d->nparam = 0;
-  c = strchr(p, ',');
+  c         = strchr(p, ',');
   if (c) *c = 0;
   d->kw = Normalize(p);
   while (c) {
     char *item = c + 1, *eq;
-    c = strchr(item, ',');
+    c          = strchr(item, ',');
     if (c) *c = 0;
     item = Trim(item);
     if (!item[0]) continue;
@@ -399,7 +416,7 @@ static PetscErrorCode ParseKeyword(Deck *d, char *line) {
     eq = strchr(item, '=');
     if (eq) {
       char *v = Trim(eq + 1);
-      *eq = 0;
+      *eq     = 0;
       if (v[0] == '"') {
         size_t n = strlen(v);
         v++;
@@ -414,7 +431,8 @@ static PetscErrorCode ParseKeyword(Deck *d, char *line) {
 }
 
 /* Reads the keyword line starting at s (joining continuation lines that follow a trailing comma) into kwbuf. */
-static PetscErrorCode KeywordLine(Deck *d, const char *s) {
+static PetscErrorCode KeywordLine(Deck *d, const char *s)
+{
   size_t n = strlen(s);
 
   PetscFunctionBeginUser;
@@ -439,13 +457,15 @@ static PetscErrorCode KeywordLine(Deck *d, const char *s) {
 
 /* ---- parameters ------------------------------------------------------------------------------ */
 
-static const char *Param(Deck *d, const char *key) {
+static const char *Param(Deck *d, const char *key)
+{
   for (PetscInt i = 0; i < d->nparam; i++)
     if (!strcmp(d->pkey[i], key)) return d->pval[i] ? d->pval[i] : "";
   return NULL;
 }
 
-static PetscErrorCode ParamRequired(Deck *d, const char *key, const char **val) {
+static PetscErrorCode ParamRequired(Deck *d, const char *key, const char **val)
+{
   PetscFunctionBeginUser;
   *val = Param(d, key);
   USER_CHECK(*val && (*val)[0], LOC_FMT "*%s needs the parameter %s=", KLOC(d), d->kw, key);
@@ -453,16 +473,18 @@ static PetscErrorCode ParamRequired(Deck *d, const char *key, const char **val) 
 }
 
 /* Parameter value upper-cased with blanks normalised into buf (for enumerated values). */
-static const char *ParamUpper(Deck *d, const char *key, char *buf, size_t len) {
+static const char *ParamUpper(Deck *d, const char *key, char *buf, size_t len)
+{
   const char *v = Param(d, key);
   if (!v) return NULL;
   (void)PetscStrncpy(buf, v, len);
   return Normalize(buf);
 }
 
-static PetscErrorCode ParamReal(Deck *d, const char *key, PetscReal *x, PetscBool *set) {
-  const char *v = Param(d, key);
-  TslLoc save = d->loc;
+static PetscErrorCode ParamReal(Deck *d, const char *key, PetscReal *x, PetscBool *set)
+{
+  const char *v    = Param(d, key);
+  TslLoc      save = d->loc;
 
   PetscFunctionBeginUser;
   if (set) *set = v ? PETSC_TRUE : PETSC_FALSE;
@@ -473,9 +495,10 @@ static PetscErrorCode ParamReal(Deck *d, const char *key, PetscReal *x, PetscBoo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ParamInt(Deck *d, const char *key, PetscInt *x) {
-  const char *v = Param(d, key);
-  TslLoc save = d->loc;
+static PetscErrorCode ParamInt(Deck *d, const char *key, PetscInt *x)
+{
+  const char *v    = Param(d, key);
+  TslLoc      save = d->loc;
 
   PetscFunctionBeginUser;
   if (!v) PetscFunctionReturn(PETSC_SUCCESS);
@@ -496,27 +519,30 @@ struct DeckKeyword {
   DeckContext where;
   const char *params; /* '|'-separated known parameters; NULL: ignored keyword */
   PetscErrorCode (*handler)(Deck *, const DeckKeyword *);
-  PetscInt kind;     /* load kind, or output request flags */
+  PetscInt     kind; /* load kind, or output request flags */
   DeckLoadLine line; /* load data-line parser */
 };
 
 /* ---- mesh ------------------------------------------------------------------------------------ */
 
-static PetscErrorCode SetAppend(TslSet *s, PetscInt id) {
+static PetscErrorCode SetAppend(TslSet *s, PetscInt id)
+{
   PetscFunctionBeginUser;
   PetscCall(TslDeckGrow(&s->ids, sizeof(PetscInt), s->n));
   s->ids[s->n++] = id;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SetFinish(TslSet *s) {
+static PetscErrorCode SetFinish(TslSet *s)
+{
   PetscFunctionBeginUser;
   PetscCall(PetscSortRemoveDupsInt(&s->n, s->ids));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The set called name in (*sets, *n), created at loc when new. */
-static PetscErrorCode SetGet(Deck *d, TslSet **sets, PetscInt *n, const char *name, PetscInt *index) {
+static PetscErrorCode SetGet(Deck *d, TslSet **sets, PetscInt *n, const char *name, PetscInt *index)
+{
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < *n; i++)
     if (TslDeckNameEqual((*sets)[i].name, name)) {
@@ -526,13 +552,14 @@ static PetscErrorCode SetGet(Deck *d, TslSet **sets, PetscInt *n, const char *na
   PetscCall(TslDeckGrow(sets, sizeof(TslSet), *n));
   PetscCall(CopyName(d, d->kwloc, (*sets)[*n].name, name));
   (*sets)[*n].loc = d->kwloc;
-  *index = (*n)++;
+  *index          = (*n)++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwHeading(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwHeading(Deck *d, const DeckKeyword *kw)
+{
   const char *s;
-  PetscBool got, first = PETSC_TRUE;
+  PetscBool   got, first = PETSC_TRUE;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -549,11 +576,12 @@ static PetscErrorCode KwHeading(Deck *d, const DeckKeyword *kw) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
+static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
+{
+  TslModel   *m    = d->m;
   const char *nset = Param(d, "NSET");
-  PetscInt iset = -1;
-  PetscBool got;
+  PetscInt    iset = -1;
+  PetscBool   got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -575,7 +603,7 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw) {
       static const char *what[3] = {"the x coordinate", "the y coordinate", "the z coordinate"};
       PetscCall(FieldRealDefault(d, 1 + c, what[c], 0.0, &m->node_xyz[3 * m->nnode + c]));
     }
-    d->node_line[2 * m->nnode] = d->loc.file;
+    d->node_line[2 * m->nnode]     = d->loc.file;
     d->node_line[2 * m->nnode + 1] = d->loc.line;
     m->nnode++;
     if (iset >= 0) PetscCall(SetAppend(&m->nsets[iset], id));
@@ -584,12 +612,13 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
-  const char *tname, *elset = Param(d, "ELSET");
-  PetscInt type, nn, iset = -1;
+static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
+{
+  TslModel             *m = d->m;
+  const char           *tname, *elset = Param(d, "ELSET");
+  PetscInt              type, nn, iset = -1;
   const TslElementType *et;
-  PetscBool got;
+  PetscBool             got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -600,9 +629,8 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw) {
   nn = et->geom->nnode;
   if (!m->dim) m->dim = et->dim;
   USER_CHECK(m->dim == et->dim,
-             LOC_FMT "element type %s is %" PetscInt_FMT "D but the model already has %" PetscInt_FMT
-                     "D elements (mixing is not supported)",
-             KLOC(d), et->name, et->dim, m->dim);
+             LOC_FMT "element type %s is %" PetscInt_FMT "D but the model already has %" PetscInt_FMT "D elements (mixing is not supported)", KLOC(d),
+             et->name, et->dim, m->dim);
   if (elset) {
     USER_CHECK(elset[0], LOC_FMT "ELSET= needs a name", KLOC(d));
     PetscCall(SetGet(d, &m->elsets, &m->nelset, elset, &iset));
@@ -611,8 +639,8 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw) {
     PetscInt id, k;
     PetscCall(DataLine(d, 1 + nn, &got));
     if (!got) break;
-    USER_CHECK(d->nfield == 1 + nn, LOC_FMT "element has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT,
-               DLOC(d), d->nfield - 1, et->name, nn);
+    USER_CHECK(d->nfield == 1 + nn, LOC_FMT "element has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT, DLOC(d), d->nfield - 1, et->name,
+               nn);
     PetscCall(FieldInt(d, 0, "the element id", &id));
     PetscCall(TslDeckGrow(&m->elem_id, sizeof(PetscInt), m->nelem));
     PetscCall(TslDeckGrow(&m->elem_type, sizeof(PetscInt), m->nelem));
@@ -623,11 +651,11 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw) {
       PetscCall(TslDeckGrow(&m->elem_conn, sizeof(PetscInt), k));
       PetscCall(FieldInt(d, 1 + j, "a node id", &m->elem_conn[k++]));
     }
-    m->elem_id[m->nelem] = id;
-    m->elem_type[m->nelem] = type;
-    m->elem_line[2 * m->nelem] = d->loc.file;
+    m->elem_id[m->nelem]           = id;
+    m->elem_type[m->nelem]         = type;
+    m->elem_line[2 * m->nelem]     = d->loc.file;
     m->elem_line[2 * m->nelem + 1] = d->loc.line;
-    m->elem_ptr[++m->nelem] = k;
+    m->elem_ptr[++m->nelem]        = k;
     if (iset >= 0) PetscCall(SetAppend(&m->elsets[iset], id));
   }
   if (iset >= 0) PetscCall(SetFinish(&m->elsets[iset]));
@@ -635,12 +663,13 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw) {
 }
 
 /* *NSET / *ELSET (kind = 0 / 1). */
-static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
-  PetscBool node = kw->kind == 0 ? PETSC_TRUE : PETSC_FALSE, got;
-  TslSet **sets = node ? &m->nsets : &m->elsets;
-  PetscInt *nset = node ? &m->nnset : &m->nelset, iset;
-  PetscBool gen = Param(d, "GENERATE") ? PETSC_TRUE : PETSC_FALSE;
+static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
+{
+  TslModel   *m    = d->m;
+  PetscBool   node = kw->kind == 0 ? PETSC_TRUE : PETSC_FALSE, got;
+  TslSet    **sets = node ? &m->nsets : &m->elsets;
+  PetscInt   *nset = node ? &m->nnset : &m->nelset, iset;
+  PetscBool   gen  = Param(d, "GENERATE") ? PETSC_TRUE : PETSC_FALSE;
   const char *name, *kind = node ? "node" : "element";
 
   PetscFunctionBeginUser;
@@ -651,8 +680,7 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw) {
     if (!got) break;
     if (gen) {
       PetscInt first, last, inc = 1;
-      USER_CHECK(d->nfield >= 2 && d->nfield <= 3, LOC_FMT "GENERATE data line needs: first, last[, increment]",
-                 DLOC(d));
+      USER_CHECK(d->nfield >= 2 && d->nfield <= 3, LOC_FMT "GENERATE data line needs: first, last[, increment]", DLOC(d));
       PetscCall(FieldInt(d, 0, "the first id", &first));
       PetscCall(FieldInt(d, 1, "the last id", &last));
       if (d->nfield > 2) PetscCall(FieldInt(d, 2, "the increment", &inc));
@@ -662,7 +690,7 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw) {
     }
     for (PetscInt i = 0; i < d->nfield; i++) {
       const char *f = d->field[i];
-      PetscInt id, src = -1;
+      PetscInt    id, src = -1;
       if (!f[0]) continue;
       if (IsInteger(f)) {
         PetscCall(DeckInt(d, f, "an id", &id));
@@ -679,14 +707,16 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw) {
 }
 
 /* Face label "<prefix>1".."<prefix>6" -> 1..6; the bare prefix -> 0 (surface form); anything else -> -1. */
-static PetscInt FaceLabel(const char *s, char prefix) {
+static PetscInt FaceLabel(const char *s, char prefix)
+{
   if (toupper((unsigned char)s[0]) != prefix) return -1;
   if (!s[1]) return 0;
   if (s[1] >= '1' && s[1] <= '6' && !s[2]) return s[1] - '0';
   return -1;
 }
 
-static PetscErrorCode SurfaceAppend(TslSurface *s, PetscInt id, PetscInt face) {
+static PetscErrorCode SurfaceAppend(TslSurface *s, PetscInt id, PetscInt face)
+{
   PetscFunctionBeginUser;
   PetscCall(TslDeckGrow(&s->elem, sizeof(PetscInt), s->n));
   if (s->kind == TSL_SURFACE_ELEMENT) {
@@ -697,40 +727,39 @@ static PetscErrorCode SurfaceAppend(TslSurface *s, PetscInt id, PetscInt face) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
+static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw)
+{
+  TslModel   *m = d->m;
   const char *name, *type;
-  char tbuf[32];
+  char        tbuf[32];
   TslSurface *s;
-  PetscBool got;
+  PetscBool   got;
 
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(ParamRequired(d, "NAME", &name));
   USER_CHECK(TslModelFindSurface(m, name) < 0, LOC_FMT "surface %s is defined twice", KLOC(d), name);
   type = ParamUpper(d, "TYPE", tbuf, sizeof(tbuf));
-  USER_CHECK(!type || !strcmp(type, "ELEMENT") || !strcmp(type, "NODE"),
-             LOC_FMT "*SURFACE, TYPE=%s is not supported (ELEMENT or NODE)", KLOC(d), type);
+  USER_CHECK(!type || !strcmp(type, "ELEMENT") || !strcmp(type, "NODE"), LOC_FMT "*SURFACE, TYPE=%s is not supported (ELEMENT or NODE)", KLOC(d),
+             type);
   PetscCall(TslDeckGrow(&m->surfaces, sizeof(TslSurface), m->nsurface));
   s = &m->surfaces[m->nsurface++];
   PetscCall(CopyName(d, d->kwloc, s->name, name));
   s->kind = (type && !strcmp(type, "NODE")) ? TSL_SURFACE_NODE : TSL_SURFACE_ELEMENT;
-  s->loc = d->kwloc;
+  s->loc  = d->kwloc;
   for (;;) {
     const char *t;
-    PetscInt face = 0, id;
+    PetscInt    face = 0, id;
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
     t = d->field[0];
     if (s->kind == TSL_SURFACE_ELEMENT) {
-      USER_CHECK(d->nfield == 2, LOC_FMT "element surface data line needs: element or element set, face label (S1..S6)",
-                 DLOC(d));
+      USER_CHECK(d->nfield == 2, LOC_FMT "element surface data line needs: element or element set, face label (S1..S6)", DLOC(d));
       face = FaceLabel(d->field[1], 'S');
       USER_CHECK(face > 0, LOC_FMT "bad face label '%s' (expected S1..S6)", DLOC(d), d->field[1]);
     } else {
       PetscReal w;
-      USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "node surface data line needs: node or node set[, weight]",
-                 DLOC(d));
+      USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "node surface data line needs: node or node set[, weight]", DLOC(d));
       if (d->nfield == 2) PetscCall(FieldReal(d, 1, "the weight", &w));
     }
     if (IsInteger(t)) {
@@ -738,8 +767,7 @@ static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw) {
       PetscCall(SurfaceAppend(s, id, face));
     } else {
       PetscInt src = s->kind == TSL_SURFACE_ELEMENT ? TslModelFindElementSet(m, t) : TslModelFindNodeSet(m, t);
-      USER_CHECK(src >= 0, LOC_FMT "undefined %s set %s", DLOC(d), s->kind == TSL_SURFACE_ELEMENT ? "element" : "node",
-                 t);
+      USER_CHECK(src >= 0, LOC_FMT "undefined %s set %s", DLOC(d), s->kind == TSL_SURFACE_ELEMENT ? "element" : "node", t);
       const TslSet *set = s->kind == TSL_SURFACE_ELEMENT ? &m->elsets[src] : &m->nsets[src];
       for (PetscInt k = 0; k < set->n; k++) PetscCall(SurfaceAppend(s, set->ids[k], face));
     }
@@ -749,8 +777,9 @@ static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw) {
 
 /* ---- materials and sections ------------------------------------------------------------------ */
 
-static PetscErrorCode KwMaterial(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
+static PetscErrorCode KwMaterial(Deck *d, const DeckKeyword *kw)
+{
+  TslModel   *m = d->m;
   const char *name;
 
   PetscFunctionBeginUser;
@@ -760,22 +789,21 @@ static PetscErrorCode KwMaterial(Deck *d, const DeckKeyword *kw) {
   PetscCall(TslDeckGrow(&m->materials, sizeof(TslMaterial), m->nmaterial));
   PetscCall(CopyName(d, d->kwloc, m->materials[m->nmaterial].name, name));
   m->materials[m->nmaterial].loc = d->kwloc;
-  d->material = m->nmaterial++;
+  d->material                    = m->nmaterial++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The one data line of a material property with nval values and an optional temperature column. */
-static PetscErrorCode PropertyLine(Deck *d, PetscInt nval, const char *what[], PetscReal val[]) {
+static PetscErrorCode PropertyLine(Deck *d, PetscInt nval, const char *what[], PetscReal val[])
+{
   PetscBool got;
-  char kwname[64];
+  char      kwname[64];
 
   PetscFunctionBeginUser;
   PetscCall(PetscStrncpy(kwname, d->kw, sizeof(kwname)));
   PetscCall(DataLine(d, 0, &got));
   USER_CHECK(got, LOC_FMT "*%s needs a data line", KLOC(d), kwname);
-  USER_CHECK(d->nfield <= nval + 1,
-             LOC_FMT "*%s data line has %" PetscInt_FMT " values, expected %" PetscInt_FMT
-                     " (and an optional temperature)",
+  USER_CHECK(d->nfield <= nval + 1, LOC_FMT "*%s data line has %" PetscInt_FMT " values, expected %" PetscInt_FMT " (and an optional temperature)",
              DLOC(d), kwname, d->nfield, nval);
   for (PetscInt i = 0; i < nval; i++) PetscCall(FieldReal(d, i, what[i], &val[i]));
   if (d->nfield > nval) { /* a temperature column: accepted when it is the only row */
@@ -783,25 +811,25 @@ static PetscErrorCode PropertyLine(Deck *d, PetscInt nval, const char *what[], P
     PetscCall(FieldReal(d, nval, "the temperature", &t));
   }
   PetscCall(DataLine(d, 0, &got));
-  USER_CHECK(!got, LOC_FMT "temperature-dependent *%s data (more than one data line) is not supported yet", DLOC(d),
-             kwname);
+  USER_CHECK(!got, LOC_FMT "temperature-dependent *%s data (more than one data line) is not supported yet", DLOC(d), kwname);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckIsotropic(Deck *d) {
-  char buf[32];
+static PetscErrorCode CheckIsotropic(Deck *d)
+{
+  char        buf[32];
   const char *t = ParamUpper(d, "TYPE", buf, sizeof(buf));
 
   PetscFunctionBeginUser;
-  USER_CHECK(!t || !strcmp(t, "ISO") || !strcmp(t, "ISOTROPIC"),
-             LOC_FMT "*%s, TYPE=%s is not supported (only ISOTROPIC)", KLOC(d), d->kw, t);
+  USER_CHECK(!t || !strcmp(t, "ISO") || !strcmp(t, "ISOTROPIC"), LOC_FMT "*%s, TYPE=%s is not supported (only ISOTROPIC)", KLOC(d), d->kw, t);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* kind: 0 elastic, 1 conductivity, 2 density, 3 specific heat, 4 expansion */
-static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
+{
   TslMaterial *mat = &d->m->materials[d->material];
-  PetscReal v[2];
+  PetscReal    v[2];
 
   PetscFunctionBeginUser;
   switch (kw->kind) {
@@ -809,27 +837,27 @@ static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw) {
     const char *what[] = {"Young's modulus", "Poisson's ratio"};
     PetscCall(CheckIsotropic(d));
     PetscCall(PropertyLine(d, 2, what, v));
-    mat->E = v[0];
-    mat->nu = v[1];
+    mat->E           = v[0];
+    mat->nu          = v[1];
     mat->has_elastic = PETSC_TRUE;
   } break;
   case 1: {
     const char *what[] = {"the conductivity"};
     PetscCall(CheckIsotropic(d));
     PetscCall(PropertyLine(d, 1, what, v));
-    mat->conductivity = v[0];
+    mat->conductivity     = v[0];
     mat->has_conductivity = PETSC_TRUE;
   } break;
   case 2: {
     const char *what[] = {"the density"};
     PetscCall(PropertyLine(d, 1, what, v));
-    mat->density = v[0];
+    mat->density     = v[0];
     mat->has_density = PETSC_TRUE;
   } break;
   case 3: {
     const char *what[] = {"the specific heat"};
     PetscCall(PropertyLine(d, 1, what, v));
-    mat->specific_heat = v[0];
+    mat->specific_heat     = v[0];
     mat->has_specific_heat = PETSC_TRUE;
   } break;
   default: {
@@ -837,18 +865,19 @@ static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw) {
     PetscCall(CheckIsotropic(d));
     PetscCall(ParamReal(d, "ZERO", &mat->alpha_zero, NULL));
     PetscCall(PropertyLine(d, 1, what, v));
-    mat->alpha = v[0];
+    mat->alpha         = v[0];
     mat->has_expansion = PETSC_TRUE;
   } break;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
+static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
+{
+  TslModel   *m = d->m;
   const char *elset, *mat;
   TslSection *s;
-  PetscBool got;
+  PetscBool   got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -859,8 +888,8 @@ static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw) {
   PetscCall(CopyName(d, d->kwloc, s->elset, elset));
   PetscCall(CopyName(d, d->kwloc, s->material, mat));
   s->material_index = -1;
-  s->thickness = 1.0;
-  s->loc = d->kwloc;
+  s->thickness      = 1.0;
+  s->loc            = d->kwloc;
   PetscCall(DataLine(d, 0, &got));
   if (got) {
     USER_CHECK(d->nfield <= 1, LOC_FMT "*SOLID SECTION data line needs only the thickness", DLOC(d));
@@ -872,11 +901,12 @@ static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw) {
 
 /* ---- other model data ------------------------------------------------------------------------ */
 
-static PetscErrorCode ParseTarget(Deck *d, const char *f, TslTarget *t) {
+static PetscErrorCode ParseTarget(Deck *d, const char *f, TslTarget *t)
+{
   PetscFunctionBeginUser;
   USER_CHECK(f[0], LOC_FMT "missing node/element or set name", DLOC(d));
   t->set[0] = 0;
-  t->id = -1;
+  t->id     = -1;
   if (IsInteger(f))
     PetscCall(DeckInt(d, f, "an id", &t->id));
   else
@@ -884,17 +914,17 @@ static PetscErrorCode ParseTarget(Deck *d, const char *f, TslTarget *t) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
-  char buf[32];
+static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw)
+{
+  TslModel   *m = d->m;
+  char        buf[32];
   const char *type = ParamUpper(d, "TYPE", buf, sizeof(buf));
-  PetscBool got;
+  PetscBool   got;
 
   PetscFunctionBeginUser;
   (void)kw;
   USER_CHECK(type && type[0], LOC_FMT "*INITIAL CONDITIONS needs the parameter TYPE=", KLOC(d));
-  USER_CHECK(!strcmp(type, "TEMPERATURE"), LOC_FMT "*INITIAL CONDITIONS, TYPE=%s is not supported (only TEMPERATURE)",
-             KLOC(d), type);
+  USER_CHECK(!strcmp(type, "TEMPERATURE"), LOC_FMT "*INITIAL CONDITIONS, TYPE=%s is not supported (only TEMPERATURE)", KLOC(d), type);
   for (;;) {
     TslInitialTemperature *it;
     PetscCall(DataLine(d, 0, &got));
@@ -909,40 +939,39 @@ static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
-  const char *name, *time, *def;
-  char b1[32], b2[32];
+static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw)
+{
+  TslModel     *m = d->m;
+  const char   *name, *time, *def;
+  char          b1[32], b2[32];
   TslAmplitude *a;
-  PetscBool got;
+  PetscBool     got;
 
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(ParamRequired(d, "NAME", &name));
   USER_CHECK(TslModelFindAmplitude(m, name) < 0, LOC_FMT "amplitude %s is defined twice", KLOC(d), name);
   time = ParamUpper(d, "TIME", b1, sizeof(b1));
-  def = ParamUpper(d, "DEFINITION", b2, sizeof(b2));
+  def  = ParamUpper(d, "DEFINITION", b2, sizeof(b2));
   USER_CHECK(!time || !strcmp(time, "STEP TIME") || !strcmp(time, "TOTAL TIME"),
              LOC_FMT "*AMPLITUDE, TIME=%s is not supported (STEP TIME or TOTAL TIME)", KLOC(d), time);
-  USER_CHECK(!def || !strcmp(def, "TABULAR"), LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (only TABULAR)",
-             KLOC(d), def);
+  USER_CHECK(!def || !strcmp(def, "TABULAR"), LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (only TABULAR)", KLOC(d), def);
   PetscCall(TslDeckGrow(&m->amplitudes, sizeof(TslAmplitude), m->namplitude));
   a = &m->amplitudes[m->namplitude++];
   PetscCall(CopyName(d, d->kwloc, a->name, name));
   a->total_time = (time && !strcmp(time, "TOTAL TIME")) ? PETSC_TRUE : PETSC_FALSE;
-  a->loc = d->kwloc;
+  a->loc        = d->kwloc;
   for (;;) {
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
-    USER_CHECK(d->nfield % 2 == 0,
-               LOC_FMT "*AMPLITUDE data lines hold (time, value) pairs; got an odd number of values", DLOC(d));
+    USER_CHECK(d->nfield % 2 == 0, LOC_FMT "*AMPLITUDE data lines hold (time, value) pairs; got an odd number of values", DLOC(d));
     for (PetscInt i = 0; i < d->nfield; i += 2) {
       PetscCall(TslDeckGrow(&a->t, sizeof(PetscReal), a->n));
       PetscCall(TslDeckGrow(&a->a, sizeof(PetscReal), a->n));
       PetscCall(FieldReal(d, i, "a time", &a->t[a->n]));
       PetscCall(FieldReal(d, i + 1, "an amplitude value", &a->a[a->n]));
-      USER_CHECK(a->n == 0 || a->t[a->n] >= a->t[a->n - 1], LOC_FMT "amplitude times must not decrease (%g after %g)",
-                 DLOC(d), (double)a->t[a->n], (double)a->t[a->n - 1]);
+      USER_CHECK(a->n == 0 || a->t[a->n] >= a->t[a->n - 1], LOC_FMT "amplitude times must not decrease (%g after %g)", DLOC(d), (double)a->t[a->n],
+                 (double)a->t[a->n - 1]);
       a->n++;
     }
   }
@@ -950,7 +979,8 @@ static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwPhysical(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwPhysical(Deck *d, const DeckKeyword *kw)
+{
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(ParamReal(d, "ABSOLUTE ZERO", &d->m->absolute_zero, &d->m->has_absolute_zero));
@@ -958,12 +988,14 @@ static PetscErrorCode KwPhysical(Deck *d, const DeckKeyword *kw) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscBool ValidDof(const Deck *d, PetscInt dof) {
+static PetscBool ValidDof(const Deck *d, PetscInt dof)
+{
   PetscInt dim = d->m->dim ? d->m->dim : 3;
   return ((dof >= 1 && dof <= dim) || dof == 11) ? PETSC_TRUE : PETSC_FALSE;
 }
 
-static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
+{
   TslModel *m = d->m;
   PetscBool got;
 
@@ -971,33 +1003,30 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw) {
   (void)kw;
   for (;;) {
     TslEquation *e;
-    PetscInt n, k = 0;
+    PetscInt     n, k = 0;
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
     USER_CHECK(d->nfield == 1, LOC_FMT "*EQUATION: expected the number of terms alone on this line", DLOC(d));
     PetscCall(FieldInt(d, 0, "the number of terms", &n));
     USER_CHECK(n >= 1, LOC_FMT "*EQUATION needs at least one term", DLOC(d));
     PetscCall(TslDeckGrow(&m->equations, sizeof(TslEquation), m->nequation));
-    e = &m->equations[m->nequation++];
-    e->n = n;
+    e      = &m->equations[m->nequation++];
+    e->n   = n;
     e->loc = d->loc;
     PetscCall(PetscMalloc1(n, &e->node));
     PetscCall(PetscMalloc1(n, &e->dof));
     PetscCall(PetscMalloc1(n, &e->coef));
     while (k < n) {
       PetscCall(DataLine(d, 0, &got));
-      USER_CHECK(got, LOC_FMT "*EQUATION with %" PetscInt_FMT " terms has only %" PetscInt_FMT, TSL_LOC_ARGS(m, e->loc),
-                 n, k);
+      USER_CHECK(got, LOC_FMT "*EQUATION with %" PetscInt_FMT " terms has only %" PetscInt_FMT, TSL_LOC_ARGS(m, e->loc), n, k);
       USER_CHECK(d->nfield % 3 == 0 && k + d->nfield / 3 <= n,
                  LOC_FMT "*EQUATION terms are (node, dof, coefficient) triples, %" PetscInt_FMT " in all", DLOC(d), n);
       for (PetscInt i = 0; i < d->nfield; i += 3, k++) {
-        USER_CHECK(IsInteger(d->field[i]), LOC_FMT "*EQUATION with a node set (%s) is not supported yet; give node ids",
-                   DLOC(d), d->field[i]);
+        USER_CHECK(IsInteger(d->field[i]), LOC_FMT "*EQUATION with a node set (%s) is not supported yet; give node ids", DLOC(d), d->field[i]);
         PetscCall(FieldInt(d, i, "a node id", &e->node[k]));
         PetscCall(FieldInt(d, i + 1, "a degree of freedom", &e->dof[k]));
-        USER_CHECK(ValidDof(d, e->dof[k]),
-                   LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)", DLOC(d),
-                   e->dof[k], m->dim ? m->dim : 3);
+        USER_CHECK(ValidDof(d, e->dof[k]), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)", DLOC(d), e->dof[k],
+                   m->dim ? m->dim : 3);
         PetscCall(FieldReal(d, i + 2, "a coefficient", &e->coef[k]));
       }
     }
@@ -1009,11 +1038,12 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw) {
  * *SURFACE INTERACTION opens a block, like *MATERIAL: the interface-law keywords that follow it
  * (CTX_INTERACTION) fill it until any other keyword. Values are range-checked in TslModelCheck. */
 
-static PetscErrorCode KwSurfaceInteraction(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
+static PetscErrorCode KwSurfaceInteraction(Deck *d, const DeckKeyword *kw)
+{
+  TslModel       *m = d->m;
   TslInteraction *it;
-  const char *name;
-  PetscBool got;
+  const char     *name;
+  PetscBool       got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -1022,13 +1052,13 @@ static PetscErrorCode KwSurfaceInteraction(Deck *d, const DeckKeyword *kw) {
   PetscCall(TslDeckGrow(&m->interactions, sizeof(TslInteraction), m->ninteraction));
   it = &m->interactions[m->ninteraction];
   PetscCall(CopyName(d, d->kwloc, it->name, name));
-  it->loc = d->kwloc;
-  it->thickness = 1.0;
-  it->behavior.enforcement = TSL_CONTACT_HARD_PENALTY;
-  it->friction.slip_tolerance = 0.005;
-  it->heat_generation.fraction = 1.0;
+  it->loc                              = d->kwloc;
+  it->thickness                        = 1.0;
+  it->behavior.enforcement             = TSL_CONTACT_HARD_PENALTY;
+  it->friction.slip_tolerance          = 0.005;
+  it->heat_generation.fraction         = 1.0;
   it->heat_generation.weight_secondary = 0.5;
-  d->interaction = m->ninteraction++;
+  d->interaction                       = m->ninteraction++;
   PetscCall(DataLine(d, 0, &got)); /* Abaqus: optional out-of-plane thickness (2D) */
   if (got) {
     USER_CHECK(d->nfield <= 1, LOC_FMT "*SURFACE INTERACTION data line needs only the out-of-plane thickness", DLOC(d));
@@ -1039,17 +1069,19 @@ static PetscErrorCode KwSurfaceInteraction(Deck *d, const DeckKeyword *kw) {
 }
 
 /* Marks a law of the open interaction as given here, after checking that it was not given before. */
-static PetscErrorCode InteractionLaw(Deck *d, PetscBool *given, TslLoc *loc) {
+static PetscErrorCode InteractionLaw(Deck *d, PetscBool *given, TslLoc *loc)
+{
   PetscFunctionBeginUser;
-  USER_CHECK(!*given, LOC_FMT "*%s is given twice for surface interaction %s (first at %s:%" PetscInt_FMT ")", KLOC(d),
-             d->kw, d->m->interactions[d->interaction].name, TslDeckFileName(d->m, loc->file), loc->line);
+  USER_CHECK(!*given, LOC_FMT "*%s is given twice for surface interaction %s (first at %s:%" PetscInt_FMT ")", KLOC(d), d->kw,
+             d->m->interactions[d->interaction].name, TslDeckFileName(d->m, loc->file), loc->line);
   *given = PETSC_TRUE;
-  *loc = d->kwloc;
+  *loc   = d->kwloc;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Fails when the keyword has another data line: the laws below take one row (no dependencies). */
-static PetscErrorCode NoMoreRows(Deck *d, const char *kwname, const char *what) {
+static PetscErrorCode NoMoreRows(Deck *d, const char *kwname, const char *what)
+{
   PetscBool got;
 
   PetscFunctionBeginUser;
@@ -1059,52 +1091,50 @@ static PetscErrorCode NoMoreRows(Deck *d, const char *kwname, const char *what) 
 }
 
 /* Field i must be absent or blank: a feature of the dialect not supported yet. */
-static PetscErrorCode FieldUnsupported(Deck *d, PetscInt i, const char *kwname, const char *what) {
+static PetscErrorCode FieldUnsupported(Deck *d, PetscInt i, const char *kwname, const char *what)
+{
   PetscFunctionBeginUser;
   USER_CHECK(i >= d->nfield || !d->field[i][0], LOC_FMT "*%s: %s is not supported yet", DLOC(d), kwname, what);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwSurfaceBehavior(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwSurfaceBehavior(Deck *d, const DeckKeyword *kw)
+{
   TslSurfaceBehavior *b = &d->m->interactions[d->interaction].behavior;
-  char buf[32];
-  const char *po = ParamUpper(d, "PRESSURE-OVERCLOSURE", buf, sizeof(buf));
-  PetscBool penalty = Param(d, "PENALTY") ? PETSC_TRUE : PETSC_FALSE, got;
-  PetscBool auglag = Param(d, "AUGMENTED LAGRANGE") ? PETSC_TRUE : PETSC_FALSE;
+  char                buf[32];
+  const char         *po      = ParamUpper(d, "PRESSURE-OVERCLOSURE", buf, sizeof(buf));
+  PetscBool           penalty = Param(d, "PENALTY") ? PETSC_TRUE : PETSC_FALSE, got;
+  PetscBool           auglag  = Param(d, "AUGMENTED LAGRANGE") ? PETSC_TRUE : PETSC_FALSE;
 
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(InteractionLaw(d, &b->given, &b->loc));
-  USER_CHECK(!po || !strcmp(po, "HARD"),
-             LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=%s is not supported yet (only HARD)", KLOC(d), po);
-  USER_CHECK(!(penalty && auglag), LOC_FMT "*SURFACE BEHAVIOR: PENALTY and AUGMENTED LAGRANGE exclude each other",
-             KLOC(d));
-  USER_CHECK(!Param(d, "DIRECT"),
-             LOC_FMT "*SURFACE BEHAVIOR, DIRECT is not supported (use PENALTY or AUGMENTED LAGRANGE)", KLOC(d));
+  USER_CHECK(!po || !strcmp(po, "HARD"), LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=%s is not supported yet (only HARD)", KLOC(d), po);
+  USER_CHECK(!(penalty && auglag), LOC_FMT "*SURFACE BEHAVIOR: PENALTY and AUGMENTED LAGRANGE exclude each other", KLOC(d));
+  USER_CHECK(!Param(d, "DIRECT"), LOC_FMT "*SURFACE BEHAVIOR, DIRECT is not supported (use PENALTY or AUGMENTED LAGRANGE)", KLOC(d));
   USER_CHECK(!Param(d, "NO SEPARATION"), LOC_FMT "*SURFACE BEHAVIOR, NO SEPARATION is not supported yet", KLOC(d));
   b->enforcement = auglag ? TSL_CONTACT_AUGMENTED_LAGRANGE : TSL_CONTACT_HARD_PENALTY;
   PetscCall(DataLine(d, 0, &got)); /* optional: penalty stiffness, clearance at zero pressure, stiffness scale */
   if (!got) PetscFunctionReturn(PETSC_SUCCESS);
-  USER_CHECK(d->nfield <= 3, LOC_FMT "*SURFACE BEHAVIOR data line: penalty stiffness[, clearance, scale factor]",
-             DLOC(d));
+  USER_CHECK(d->nfield <= 3, LOC_FMT "*SURFACE BEHAVIOR data line: penalty stiffness[, clearance, scale factor]", DLOC(d));
   PetscCall(FieldRealDefault(d, 0, "the penalty stiffness", 0.0, &b->penalty_stiffness));
-  USER_CHECK(b->penalty_stiffness >= 0, LOC_FMT "the penalty stiffness must be positive (or blank for the default)",
-             DLOC(d));
+  USER_CHECK(b->penalty_stiffness >= 0, LOC_FMT "the penalty stiffness must be positive (or blank for the default)", DLOC(d));
   PetscCall(FieldUnsupported(d, 1, "SURFACE BEHAVIOR", "a clearance at zero contact pressure"));
   PetscCall(FieldUnsupported(d, 2, "SURFACE BEHAVIOR", "a penalty stiffness scale factor"));
   PetscCall(NoMoreRows(d, "SURFACE BEHAVIOR", "a pressure-overclosure table"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwFriction(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwFriction(Deck *d, const DeckKeyword *kw)
+{
   TslFriction *f = &d->m->interactions[d->interaction].friction;
-  PetscBool got, tol;
+  PetscBool    got, tol;
 
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(InteractionLaw(d, &f->given, &f->loc));
   f->lagrange = Param(d, "LAGRANGE") ? PETSC_TRUE : PETSC_FALSE;
-  f->rough = Param(d, "ROUGH") ? PETSC_TRUE : PETSC_FALSE;
+  f->rough    = Param(d, "ROUGH") ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(ParamReal(d, "SLIP TOLERANCE", &f->slip_tolerance, &tol));
   USER_CHECK(!(tol && f->lagrange), LOC_FMT "*FRICTION: SLIP TOLERANCE does not apply with LAGRANGE", KLOC(d));
   USER_CHECK(f->slip_tolerance > 0, LOC_FMT "*FRICTION: SLIP TOLERANCE must be positive", KLOC(d));
@@ -1114,8 +1144,7 @@ static PetscErrorCode KwFriction(Deck *d, const DeckKeyword *kw) {
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   /* CalculiX: mu, stick slope. Abaqus: mu, then slip rate, pressure, temperature... for dependent data. */
-  USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "*FRICTION data line: friction coefficient[, stick slope]",
-             DLOC(d));
+  USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "*FRICTION data line: friction coefficient[, stick slope]", DLOC(d));
   PetscCall(FieldReal(d, 0, "the friction coefficient", &f->mu));
   PetscCall(FieldRealDefault(d, 1, "the stick slope", 0.0, &f->stick_slope));
   USER_CHECK(f->stick_slope >= 0, LOC_FMT "the stick slope must be positive (or blank for the default)", DLOC(d));
@@ -1124,8 +1153,9 @@ static PetscErrorCode KwFriction(Deck *d, const DeckKeyword *kw) {
 }
 
 /* Sorts the rows of a two-column table by x (the deck may list them in any order). */
-static PetscErrorCode SortTable(PetscInt n, PetscReal x[], PetscReal y[]) {
-  PetscInt *perm;
+static PetscErrorCode SortTable(PetscInt n, PetscReal x[], PetscReal y[])
+{
+  PetscInt  *perm;
   PetscReal *tx, *ty;
 
   PetscFunctionBeginUser;
@@ -1137,11 +1167,12 @@ static PetscErrorCode SortTable(PetscInt n, PetscReal x[], PetscReal y[]) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwGapConductance(Deck *d, const DeckKeyword *kw) {
-  TslGapConductance *g = &d->m->interactions[d->interaction].conductance;
-  PetscInt deps = 0;
-  PetscReal theta = 0;
-  PetscBool got, has_theta = PETSC_FALSE;
+static PetscErrorCode KwGapConductance(Deck *d, const DeckKeyword *kw)
+{
+  TslGapConductance *g     = &d->m->interactions[d->interaction].conductance;
+  PetscInt           deps  = 0;
+  PetscReal          theta = 0;
+  PetscBool          got, has_theta = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -1160,15 +1191,13 @@ static PetscErrorCode KwGapConductance(Deck *d, const DeckKeyword *kw) {
     PetscCall(TslDeckGrow(&g->value, sizeof(PetscReal), g->n));
     PetscCall(TslDeckGrow(&g->abscissa, sizeof(PetscReal), g->n));
     PetscCall(FieldReal(d, 0, "the gap conductance", &g->value[g->n]));
-    PetscCall(
-        FieldRealDefault(d, 1, g->by_pressure ? "the contact pressure" : "the clearance", 0.0, &g->abscissa[g->n]));
+    PetscCall(FieldRealDefault(d, 1, g->by_pressure ? "the contact pressure" : "the clearance", 0.0, &g->abscissa[g->n]));
     g->n++;
     if (d->nfield > 2 && d->field[2][0]) { /* one temperature for the whole table is no dependence */
       PetscReal t;
       PetscCall(FieldReal(d, 2, "the temperature", &t));
-      USER_CHECK(!has_theta || t == theta,
-                 LOC_FMT "temperature-dependent *GAP CONDUCTANCE (temperature %g after %g) is not supported yet",
-                 DLOC(d), (double)t, (double)theta);
+      USER_CHECK(!has_theta || t == theta, LOC_FMT "temperature-dependent *GAP CONDUCTANCE (temperature %g after %g) is not supported yet", DLOC(d),
+                 (double)t, (double)theta);
       theta = t, has_theta = PETSC_TRUE;
     }
   }
@@ -1177,40 +1206,39 @@ static PetscErrorCode KwGapConductance(Deck *d, const DeckKeyword *kw) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwGapRadiation(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwGapRadiation(Deck *d, const DeckKeyword *kw)
+{
   TslGapRadiation *r = &d->m->interactions[d->interaction].radiation;
-  PetscBool got;
+  PetscBool        got;
 
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(InteractionLaw(d, &r->given, &r->loc));
   PetscCall(DataLine(d, 0, &got));
   USER_CHECK(got, LOC_FMT "*GAP RADIATION needs a data line with the two emissivities", KLOC(d));
-  USER_CHECK(d->nfield == 2, LOC_FMT "*GAP RADIATION first data line: emissivity of the main surface, of the secondary",
-             DLOC(d));
+  USER_CHECK(d->nfield == 2, LOC_FMT "*GAP RADIATION first data line: emissivity of the main surface, of the secondary", DLOC(d));
   PetscCall(FieldReal(d, 0, "the emissivity of the main surface", &r->emissivity_main));
   PetscCall(FieldReal(d, 1, "the emissivity of the secondary surface", &r->emissivity_secondary));
   for (;;) {
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
-    USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "*GAP RADIATION data line: effective view factor, clearance",
-               DLOC(d));
+    USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "*GAP RADIATION data line: effective view factor, clearance", DLOC(d));
     PetscCall(TslDeckGrow(&r->view_factor, sizeof(PetscReal), r->n));
     PetscCall(TslDeckGrow(&r->clearance, sizeof(PetscReal), r->n));
     PetscCall(FieldReal(d, 0, "the effective view factor", &r->view_factor[r->n]));
     PetscCall(FieldRealDefault(d, 1, "the clearance", 0.0, &r->clearance[r->n]));
     r->n++;
   }
-  USER_CHECK(r->n > 0, LOC_FMT "*GAP RADIATION needs the view factor vs clearance lines after the emissivities",
-             KLOC(d));
+  USER_CHECK(r->n > 0, LOC_FMT "*GAP RADIATION needs the view factor vs clearance lines after the emissivities", KLOC(d));
   PetscCall(SortTable(r->n, r->clearance, r->view_factor));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwGapHeatGeneration(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwGapHeatGeneration(Deck *d, const DeckKeyword *kw)
+{
   TslGapHeatGeneration *h = &d->m->interactions[d->interaction].heat_generation;
-  PetscReal slip_rate;
-  PetscBool got;
+  PetscReal             slip_rate;
+  PetscBool             got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -1226,19 +1254,19 @@ static PetscErrorCode KwGapHeatGeneration(Deck *d, const DeckKeyword *kw) {
   PetscCall(FieldRealDefault(d, 1, "the weight of the secondary surface", 0.5, &h->weight_secondary));
   /* CalculiX third value: a prescribed slip rate; negative means "computed", which is what we do */
   PetscCall(FieldRealDefault(d, 2, "the slip rate", -1.0, &slip_rate));
-  USER_CHECK(slip_rate < 0, LOC_FMT "*GAP HEAT GENERATION: a prescribed slip rate (third value) is not supported yet",
-             DLOC(d));
+  USER_CHECK(slip_rate < 0, LOC_FMT "*GAP HEAT GENERATION: a prescribed slip rate (third value) is not supported yet", DLOC(d));
   PetscCall(NoMoreRows(d, "GAP HEAT GENERATION", "more than one row"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
+static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw)
+{
+  TslModel      *m = d->m;
   TslContactPair proto;
-  const char *inter, *type, *adjust = Param(d, "ADJUST");
-  char tbuf[32];
-  PetscInt first = m->npair;
-  PetscBool got;
+  const char    *inter, *type, *adjust = Param(d, "ADJUST");
+  char           tbuf[32];
+  PetscInt       first = m->npair;
+  PetscBool      got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -1246,17 +1274,15 @@ static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw) {
   PetscCall(ParamRequired(d, "INTERACTION", &inter));
   PetscCall(CopyName(d, d->kwloc, proto.interaction, inter));
   proto.interaction_index = -1;
-  type = ParamUpper(d, "TYPE", tbuf, sizeof(tbuf));
+  type                    = ParamUpper(d, "TYPE", tbuf, sizeof(tbuf));
   USER_CHECK(!type || !strcmp(type, "NODE TO SURFACE") || !strcmp(type, "SURFACE TO SURFACE"),
              LOC_FMT "*CONTACT PAIR, TYPE=%s is not supported (NODE TO SURFACE or SURFACE TO SURFACE)", KLOC(d), type);
-  proto.type =
-      (type && !strcmp(type, "SURFACE TO SURFACE")) ? TSL_CONTACT_SURFACE_TO_SURFACE : TSL_CONTACT_NODE_TO_SURFACE;
+  proto.type = (type && !strcmp(type, "SURFACE TO SURFACE")) ? TSL_CONTACT_SURFACE_TO_SURFACE : TSL_CONTACT_NODE_TO_SURFACE;
   USER_CHECK(!Param(d, "TIED"), LOC_FMT "*CONTACT PAIR, TIED is not supported yet", KLOC(d));
   proto.small_sliding = Param(d, "SMALL SLIDING") ? PETSC_TRUE : PETSC_FALSE;
-  proto.smooth = 0.2;
+  proto.smooth        = 0.2;
   PetscCall(ParamReal(d, "SMOOTH", &proto.smooth, NULL));
-  USER_CHECK(proto.smooth >= 0 && proto.smooth <= 0.5, LOC_FMT "*CONTACT PAIR: SMOOTH must lie in [0, 0.5] (got %g)",
-             KLOC(d), (double)proto.smooth);
+  USER_CHECK(proto.smooth >= 0 && proto.smooth <= 0.5, LOC_FMT "*CONTACT PAIR: SMOOTH must lie in [0, 0.5] (got %g)", KLOC(d), (double)proto.smooth);
   if (adjust) {
     USER_CHECK(adjust[0], LOC_FMT "*CONTACT PAIR: ADJUST= needs a distance or a node set", KLOC(d));
     proto.adjust_given = PETSC_TRUE;
@@ -1270,11 +1296,10 @@ static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw) {
     TslContactPair *p;
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
-    USER_CHECK(d->nfield == 2 && d->field[0][0] && d->field[1][0],
-               LOC_FMT "*CONTACT PAIR data line needs: secondary surface, main surface", DLOC(d));
+    USER_CHECK(d->nfield == 2 && d->field[0][0] && d->field[1][0], LOC_FMT "*CONTACT PAIR data line needs: secondary surface, main surface", DLOC(d));
     PetscCall(TslDeckGrow(&m->pairs, sizeof(TslContactPair), m->npair));
-    p = &m->pairs[m->npair++];
-    *p = proto;
+    p      = &m->pairs[m->npair++];
+    *p     = proto;
     p->loc = d->loc;
     PetscCall(CopyName(d, d->loc, p->secondary, d->field[0]));
     PetscCall(CopyName(d, d->loc, p->main, d->field[1]));
@@ -1285,11 +1310,12 @@ static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw) {
 
 /* ---- steps ----------------------------------------------------------------------------------- */
 
-static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw) {
-  TslModel *m = d->m;
-  TslStep *s;
+static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
+{
+  TslModel   *m = d->m;
+  TslStep    *s;
   const char *name = Param(d, "NAME"), *nl;
-  char buf[32];
+  char        buf[32];
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -1299,64 +1325,59 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw) {
     PetscCall(CopyName(d, d->kwloc, s->name, name));
   else
     PetscCall(PetscSNPrintf(s->name, sizeof(s->name), "Step-%" PetscInt_FMT, m->nstep + 1));
-  s->loc = d->kwloc;
+  s->loc     = d->kwloc;
   s->max_inc = 100;
   PetscCall(ParamInt(d, "INC", &s->max_inc));
   USER_CHECK(s->max_inc > 0, LOC_FMT "INC= must be positive", KLOC(d));
   nl = ParamUpper(d, "NLGEOM", buf, sizeof(buf));
-  USER_CHECK(!nl || !nl[0] || !strcmp(nl, "YES") || !strcmp(nl, "NO"), LOC_FMT "NLGEOM=%s: expected YES or NO", KLOC(d),
-             nl);
+  USER_CHECK(!nl || !nl[0] || !strcmp(nl, "YES") || !strcmp(nl, "NO"), LOC_FMT "NLGEOM=%s: expected YES or NO", KLOC(d), nl);
   s->nlgeom = (nl && strcmp(nl, "NO")) ? PETSC_TRUE : PETSC_FALSE;
-  nl = ParamUpper(d, "AMPLITUDE", buf, sizeof(buf));
+  nl        = ParamUpper(d, "AMPLITUDE", buf, sizeof(buf));
   if (nl) {
-    USER_CHECK(!strcmp(nl, "RAMP") || !strcmp(nl, "STEP"), LOC_FMT "*STEP, AMPLITUDE=%s: expected RAMP or STEP",
-               KLOC(d), nl);
-    s->amp_given = PETSC_TRUE;
+    USER_CHECK(!strcmp(nl, "RAMP") || !strcmp(nl, "STEP"), LOC_FMT "*STEP, AMPLITUDE=%s: expected RAMP or STEP", KLOC(d), nl);
+    s->amp_given   = PETSC_TRUE;
     s->amp_default = !strcmp(nl, "RAMP") ? TSL_AMP_RAMP : TSL_AMP_STEP;
   }
   s->dt0 = s->period = s->dtmax = 1.0;
-  s->dtmin = 1e-5;
-  d->step = m->nstep++;
-  d->out_frequency = 1;
+  s->dtmin                      = 1e-5;
+  d->step                       = m->nstep++;
+  d->out_frequency              = 1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwEndStep(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwEndStep(Deck *d, const DeckKeyword *kw)
+{
   PetscFunctionBeginUser;
   (void)kw;
   d->step = -1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw) {
-  TslStep *s = &d->m->steps[d->step];
+static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw)
+{
+  TslStep  *s = &d->m->steps[d->step];
   PetscBool got, set;
 
   PetscFunctionBeginUser;
   (void)kw;
   USER_CHECK(!s->coupled, LOC_FMT "step %s already has a procedure", KLOC(d), s->name);
   s->coupled = PETSC_TRUE;
-  s->steady = Param(d, "STEADY STATE") ? PETSC_TRUE : PETSC_FALSE;
-  s->direct = Param(d, "DIRECT") ? PETSC_TRUE : PETSC_FALSE;
+  s->steady  = Param(d, "STEADY STATE") ? PETSC_TRUE : PETSC_FALSE;
+  s->direct  = Param(d, "DIRECT") ? PETSC_TRUE : PETSC_FALSE;
   PetscCall(ParamReal(d, "DELTMX", &s->deltmx, &set));
   USER_CHECK(!set || s->deltmx >= 0, LOC_FMT "DELTMX must not be negative", KLOC(d));
   if (!s->amp_given) s->amp_default = s->steady ? TSL_AMP_RAMP : TSL_AMP_STEP;
   PetscCall(DataLine(d, 0, &got));
   s->dt0 = s->period = 1.0;
   if (got) {
-    USER_CHECK(
-        d->nfield <= 4,
-        LOC_FMT
-        "*COUPLED TEMPERATURE-DISPLACEMENT data line: initial increment, step period, minimum, maximum increment",
-        DLOC(d));
+    USER_CHECK(d->nfield <= 4, LOC_FMT "*COUPLED TEMPERATURE-DISPLACEMENT data line: initial increment, step period, minimum, maximum increment",
+               DLOC(d));
     PetscCall(FieldRealDefault(d, 0, "the initial increment", 1.0, &s->dt0));
     PetscCall(FieldRealDefault(d, 1, "the step period", 1.0, &s->period));
-    USER_CHECK(s->dt0 > 0 && s->period > 0, LOC_FMT "the initial increment and the step period must be positive",
-               DLOC(d));
+    USER_CHECK(s->dt0 > 0 && s->period > 0, LOC_FMT "the initial increment and the step period must be positive", DLOC(d));
     PetscCall(FieldRealDefault(d, 2, "the minimum increment", PetscMin(s->dt0, 1e-5 * s->period), &s->dtmin));
     PetscCall(FieldRealDefault(d, 3, "the maximum increment", s->period, &s->dtmax));
-    USER_CHECK(s->dtmin > 0 && s->dtmin <= s->dtmax, LOC_FMT "need 0 < minimum increment <= maximum increment",
-               DLOC(d));
+    USER_CHECK(s->dtmin > 0 && s->dtmin <= s->dtmax, LOC_FMT "need 0 < minimum increment <= maximum increment", DLOC(d));
   } else {
     s->dtmin = PetscMin(s->dt0, 1e-5 * s->period);
     s->dtmax = s->period;
@@ -1366,21 +1387,22 @@ static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw) {
 
 /* ---- loads ----------------------------------------------------------------------------------- */
 
-static PetscErrorCode CheckDof(Deck *d, PetscInt dof) {
+static PetscErrorCode CheckDof(Deck *d, PetscInt dof)
+{
   PetscFunctionBeginUser;
-  USER_CHECK(ValidDof(d, dof), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)",
-             DLOC(d), dof, d->m->dim ? d->m->dim : 3);
+  USER_CHECK(ValidDof(d, dof), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)", DLOC(d), dof,
+             d->m->dim ? d->m->dim : 3);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineBoundary(Deck *d, TslLoad *l) {
+static PetscErrorCode LineBoundary(Deck *d, TslLoad *l)
+{
   const char *f;
-  char up[32];
-  PetscInt dim = d->m->dim ? d->m->dim : 3;
+  char        up[32];
+  PetscInt    dim = d->m->dim ? d->m->dim : 3;
 
   PetscFunctionBeginUser;
-  USER_CHECK(d->nfield >= 2 && d->nfield <= 4,
-             LOC_FMT "*BOUNDARY data line needs: node or node set, first dof[, last dof[, value]]", DLOC(d));
+  USER_CHECK(d->nfield >= 2 && d->nfield <= 4, LOC_FMT "*BOUNDARY data line needs: node or node set, first dof[, last dof[, value]]", DLOC(d));
   f = d->field[1];
   if (!IsInteger(f)) {
     (void)PetscStrncpy(up, f, sizeof(up));
@@ -1406,19 +1428,19 @@ static PetscErrorCode LineBoundary(Deck *d, TslLoad *l) {
   PetscCall(CheckDof(d, l->dof_first));
   PetscCall(CheckDof(d, l->dof_last));
   /* a range may not run from a displacement into the temperature: 4..10 are no dofs */
-  USER_CHECK(l->dof_first <= l->dof_last && (l->dof_last != 11 || l->dof_first == 11),
-             LOC_FMT "bad dof range %" PetscInt_FMT "..%" PetscInt_FMT, DLOC(d), l->dof_first, l->dof_last);
+  USER_CHECK(l->dof_first <= l->dof_last && (l->dof_last != 11 || l->dof_first == 11), LOC_FMT "bad dof range %" PetscInt_FMT "..%" PetscInt_FMT,
+             DLOC(d), l->dof_first, l->dof_last);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineConcentrated(Deck *d, TslLoad *l) {
+static PetscErrorCode LineConcentrated(Deck *d, TslLoad *l)
+{
   PetscFunctionBeginUser;
   USER_CHECK(d->nfield == 3, LOC_FMT "data line needs: node or node set, dof, magnitude", DLOC(d));
   PetscCall(FieldInt(d, 1, "the dof", &l->dof_first));
   l->dof_last = l->dof_first;
   if (l->kind == TSL_LOAD_CFLUX)
-    USER_CHECK(l->dof_first == 11, LOC_FMT "bad degree of freedom %" PetscInt_FMT " for *CFLUX (must be 11)", DLOC(d),
-               l->dof_first);
+    USER_CHECK(l->dof_first == 11, LOC_FMT "bad degree of freedom %" PetscInt_FMT " for *CFLUX (must be 11)", DLOC(d), l->dof_first);
   else {
     PetscCall(CheckDof(d, l->dof_first));
     USER_CHECK(l->dof_first != 11, LOC_FMT "bad degree of freedom 11 for *CLOAD (use *CFLUX for heat)", DLOC(d));
@@ -1428,22 +1450,21 @@ static PetscErrorCode LineConcentrated(Deck *d, TslLoad *l) {
 }
 
 /* Face label of a distributed load: prefix1..6 on elements, the bare prefix on a surface, BF (body flux) if allowed. */
-static PetscErrorCode LoadFace(Deck *d, TslLoad *l, char prefix, PetscBool surface_only, PetscBool body) {
+static PetscErrorCode LoadFace(Deck *d, TslLoad *l, char prefix, PetscBool surface_only, PetscBool body)
+{
   const char *f = d->field[1];
 
   PetscFunctionBeginUser;
   if (body && (f[0] == 'B' || f[0] == 'b') && (f[1] == 'F' || f[1] == 'f') && !f[2]) {
-    USER_CHECK(!l->target.set[0] || TslModelFindSurface(d->m, l->target.set) < 0 ||
-                   TslModelFindElementSet(d->m, l->target.set) >= 0,
+    USER_CHECK(!l->target.set[0] || TslModelFindSurface(d->m, l->target.set) < 0 || TslModelFindElementSet(d->m, l->target.set) >= 0,
                LOC_FMT "BF needs elements, not a surface", DLOC(d));
     l->face = 0;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   l->face = FaceLabel(f, prefix);
-  if (surface_only)
-    USER_CHECK(l->face == 0, LOC_FMT "bad load label '%s' (expected %c with a surface)", DLOC(d), f, prefix);
-  USER_CHECK(l->face >= 0, LOC_FMT "bad load label '%s' (expected %c1..%c6%s, or %c with a surface)", DLOC(d), f,
-             prefix, prefix, body ? " or BF" : "", prefix);
+  if (surface_only) USER_CHECK(l->face == 0, LOC_FMT "bad load label '%s' (expected %c with a surface)", DLOC(d), f, prefix);
+  USER_CHECK(l->face >= 0, LOC_FMT "bad load label '%s' (expected %c1..%c6%s, or %c with a surface)", DLOC(d), f, prefix, prefix,
+             body ? " or BF" : "", prefix);
   if (l->face == 0) {
     USER_CHECK(l->target.set[0], LOC_FMT "label %c needs a surface name, not an element id", DLOC(d), prefix);
     l->target_is_surface = PETSC_TRUE;
@@ -1451,25 +1472,26 @@ static PetscErrorCode LoadFace(Deck *d, TslLoad *l, char prefix, PetscBool surfa
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineDload(Deck *d, TslLoad *l) {
+static PetscErrorCode LineDload(Deck *d, TslLoad *l)
+{
   PetscFunctionBeginUser;
-  USER_CHECK(d->nfield == 3, LOC_FMT "*DLOAD data line needs: element, element set or surface, P1..P6 or P, magnitude",
-             DLOC(d));
+  USER_CHECK(d->nfield == 3, LOC_FMT "*DLOAD data line needs: element, element set or surface, P1..P6 or P, magnitude", DLOC(d));
   PetscCall(LoadFace(d, l, 'P', PETSC_FALSE, PETSC_FALSE));
   PetscCall(FieldReal(d, 2, "the magnitude", &l->value));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineDflux(Deck *d, TslLoad *l) {
+static PetscErrorCode LineDflux(Deck *d, TslLoad *l)
+{
   PetscFunctionBeginUser;
-  USER_CHECK(d->nfield == 3, LOC_FMT "*DFLUX data line needs: element or element set, S1..S6 or BF, magnitude",
-             DLOC(d));
+  USER_CHECK(d->nfield == 3, LOC_FMT "*DFLUX data line needs: element or element set, S1..S6 or BF, magnitude", DLOC(d));
   PetscCall(LoadFace(d, l, 'S', PETSC_FALSE, PETSC_TRUE));
   PetscCall(FieldReal(d, 2, "the magnitude", &l->value));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineDsflux(Deck *d, TslLoad *l) {
+static PetscErrorCode LineDsflux(Deck *d, TslLoad *l)
+{
   PetscFunctionBeginUser;
   USER_CHECK(d->nfield == 3, LOC_FMT "*DSFLUX data line needs: surface, S, magnitude", DLOC(d));
   USER_CHECK(l->target.set[0], LOC_FMT "*DSFLUX needs a surface name", DLOC(d));
@@ -1478,7 +1500,8 @@ static PetscErrorCode LineDsflux(Deck *d, TslLoad *l) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineFilm(Deck *d, TslLoad *l) {
+static PetscErrorCode LineFilm(Deck *d, TslLoad *l)
+{
   PetscBool sfilm = d->kw[0] == 'S' ? PETSC_TRUE : PETSC_FALSE;
 
   PetscFunctionBeginUser;
@@ -1491,7 +1514,8 @@ static PetscErrorCode LineFilm(Deck *d, TslLoad *l) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode AmplitudeParam(Deck *d, const char *key, PetscInt *index) {
+static PetscErrorCode AmplitudeParam(Deck *d, const char *key, PetscInt *index)
+{
   const char *a = Param(d, key);
 
   PetscFunctionBeginUser;
@@ -1502,12 +1526,13 @@ static PetscErrorCode AmplitudeParam(Deck *d, const char *key, PetscInt *index) 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw) {
-  TslStep *s = &d->m->steps[d->step];
-  char buf[16];
+static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
+{
+  TslStep    *s = &d->m->steps[d->step];
+  char        buf[16];
   const char *op = ParamUpper(d, "OP", buf, sizeof(buf));
-  PetscInt amp, famp, nline = 0;
-  PetscBool got;
+  PetscInt    amp, famp, nline = 0;
+  PetscBool   got;
 
   PetscFunctionBeginUser;
   USER_CHECK(!op || !strcmp(op, "NEW") || !strcmp(op, "MOD"), LOC_FMT "OP=%s: expected NEW or MOD", KLOC(d), op);
@@ -1518,12 +1543,12 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw) {
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
     PetscCall(PetscMemzero(&l, sizeof(l)));
-    l.kind = (TslLoadKind)kw->kind;
-    l.amplitude = amp;
+    l.kind           = (TslLoadKind)kw->kind;
+    l.amplitude      = amp;
     l.film_amplitude = famp;
-    l.op_new = (op && !strcmp(op, "NEW")) ? PETSC_TRUE : PETSC_FALSE;
-    l.fixed = Param(d, "FIXED") ? PETSC_TRUE : PETSC_FALSE;
-    l.loc = d->loc;
+    l.op_new         = (op && !strcmp(op, "NEW")) ? PETSC_TRUE : PETSC_FALSE;
+    l.fixed          = Param(d, "FIXED") ? PETSC_TRUE : PETSC_FALSE;
+    l.loc            = d->loc;
     USER_CHECK(d->nfield >= 2, LOC_FMT "*%s data line is too short", DLOC(d), d->kw);
     PetscCall(ParseTarget(d, d->field[0], &l.target));
     PetscCall(kw->line(d, &l));
@@ -1549,7 +1574,8 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw) {
 
 /* ---- output requests ------------------------------------------------------------------------- */
 
-static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
+{
   PetscFunctionBeginUser;
   (void)kw;
   d->out_frequency = 1;
@@ -1561,19 +1587,20 @@ static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw) {
 #define OUT_NODE  1
 #define OUT_PRINT 2
 
-static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw) {
-  TslStep *s = &d->m->steps[d->step];
+static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw)
+{
+  TslStep          *s = &d->m->steps[d->step];
   TslOutputRequest *r;
-  PetscBool node = (kw->kind & OUT_NODE) ? PETSC_TRUE : PETSC_FALSE, got;
-  const char *key = node ? "NSET" : "ELSET", *set = Param(d, key);
+  PetscBool         node = (kw->kind & OUT_NODE) ? PETSC_TRUE : PETSC_FALSE, got;
+  const char       *key = node ? "NSET" : "ELSET", *set = Param(d, key);
 
   PetscFunctionBeginUser;
   if (kw->kind & OUT_PRINT) PetscCall(ParamRequired(d, key, &set));
   PetscCall(TslDeckGrow(&s->out, sizeof(TslOutputRequest), s->nout));
-  r = &s->out[s->nout++];
-  r->node = node;
-  r->print = (kw->kind & OUT_PRINT) ? PETSC_TRUE : PETSC_FALSE;
-  r->loc = d->kwloc;
+  r            = &s->out[s->nout++];
+  r->node      = node;
+  r->print     = (kw->kind & OUT_PRINT) ? PETSC_TRUE : PETSC_FALSE;
+  r->loc       = d->kwloc;
   r->frequency = d->out_frequency;
   PetscCall(ParamInt(d, "FREQUENCY", &r->frequency));
   if (set) PetscCall(CopyName(d, d->kwloc, r->set, set));
@@ -1584,15 +1611,15 @@ static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw) {
       char *v = Normalize(d->field[i]);
       if (!v[0]) continue;
       USER_CHECK(strlen(v) < sizeof(r->var[0]), LOC_FMT "output variable name %s is too long", DLOC(d), v);
-      USER_CHECK(r->nvar < (PetscInt)(sizeof(r->var) / sizeof(r->var[0])),
-                 LOC_FMT "too many output variables (at most 16)", DLOC(d));
+      USER_CHECK(r->nvar < (PetscInt)(sizeof(r->var) / sizeof(r->var[0])), LOC_FMT "too many output variables (at most 16)", DLOC(d));
       PetscCall(PetscStrncpy(r->var[r->nvar++], v, sizeof(r->var[0])));
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw) {
+static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
+{
   PetscBool got;
 
   PetscFunctionBeginUser;
@@ -1623,8 +1650,7 @@ static const DeckKeyword Keywords[] = {
     {"PHYSICAL CONSTANTS", CTX_MODEL, "ABSOLUTE ZERO|STEFAN BOLTZMANN", KwPhysical, 0, NULL},
     {"EQUATION", CTX_ANY, "", KwEquation, 0, NULL},
     {"SURFACE INTERACTION", CTX_MODEL, "NAME", KwSurfaceInteraction, 0, NULL},
-    {"SURFACE BEHAVIOR", CTX_INTERACTION, "PRESSURE-OVERCLOSURE|PENALTY|AUGMENTED LAGRANGE|DIRECT|NO SEPARATION",
-     KwSurfaceBehavior, 0, NULL},
+    {"SURFACE BEHAVIOR", CTX_INTERACTION, "PRESSURE-OVERCLOSURE|PENALTY|AUGMENTED LAGRANGE|DIRECT|NO SEPARATION", KwSurfaceBehavior, 0, NULL},
     {"FRICTION", CTX_INTERACTION, "LAGRANGE|ROUGH|SLIP TOLERANCE", KwFriction, 0, NULL},
     {"GAP CONDUCTANCE", CTX_INTERACTION, "PRESSURE|DEPENDENCIES|USER", KwGapConductance, 0, NULL},
     {"GAP RADIATION", CTX_INTERACTION, "", KwGapRadiation, 0, NULL},
@@ -1659,11 +1685,12 @@ static const DeckKeyword Keywords[] = {
     {"CONTACT OUTPUT", CTX_ANY, NULL, KwIgnored, 0, NULL},
 };
 
-static PetscBool ParamKnown(const char *list, const char *key) {
+static PetscBool ParamKnown(const char *list, const char *key)
+{
   size_t n = strlen(key);
   for (const char *p = list; *p;) {
     const char *e = strchr(p, '|');
-    size_t l = e ? (size_t)(e - p) : strlen(p);
+    size_t      l = e ? (size_t)(e - p) : strlen(p);
     if (l == n && !strncmp(p, key, n)) return PETSC_TRUE;
     if (!e) break;
     p = e + 1;
@@ -1671,7 +1698,8 @@ static PetscBool ParamKnown(const char *list, const char *key) {
   return PETSC_FALSE;
 }
 
-static PetscErrorCode DeckKeywordLine(Deck *d) {
+static PetscErrorCode DeckKeywordLine(Deck *d)
+{
   const DeckKeyword *kw = NULL;
 
   PetscFunctionBeginUser;
@@ -1682,10 +1710,7 @@ static PetscErrorCode DeckKeywordLine(Deck *d) {
   if (kw->where != CTX_INTERACTION && kw->handler != KwIgnored) d->interaction = -1;
   switch (kw->where) {
   case CTX_MODEL:
-    USER_CHECK(d->step < 0,
-               LOC_FMT
-               "*%s is model data and cannot appear inside a step (missing *END STEP for the *STEP at %s:%" PetscInt_FMT
-               "?)",
+    USER_CHECK(d->step < 0, LOC_FMT "*%s is model data and cannot appear inside a step (missing *END STEP for the *STEP at %s:%" PetscInt_FMT "?)",
                KLOC(d), d->kw, TslDeckFileName(d->m, d->m->steps[d->step].loc.file), d->m->steps[d->step].loc.line);
     break;
   case CTX_STEP:
@@ -1693,13 +1718,11 @@ static PetscErrorCode DeckKeywordLine(Deck *d) {
     USER_CHECK(d->step >= 0, LOC_FMT "*%s is only allowed inside a step (*STEP ... *END STEP)", KLOC(d), d->kw);
     break;
   case CTX_MATERIAL:
-    USER_CHECK(d->step < 0 && d->material >= 0,
-               LOC_FMT "*%s must follow *MATERIAL (material properties outside a material)", KLOC(d), d->kw);
+    USER_CHECK(d->step < 0 && d->material >= 0, LOC_FMT "*%s must follow *MATERIAL (material properties outside a material)", KLOC(d), d->kw);
     break;
   case CTX_INTERACTION:
     USER_CHECK(d->step < 0 && d->interaction >= 0,
-               LOC_FMT "*%s must follow *SURFACE INTERACTION (interface properties outside a surface interaction)",
-               KLOC(d), d->kw);
+               LOC_FMT "*%s must follow *SURFACE INTERACTION (interface properties outside a surface interaction)", KLOC(d), d->kw);
     break;
   case CTX_ANY:
     break;
@@ -1707,15 +1730,15 @@ static PetscErrorCode DeckKeywordLine(Deck *d) {
   if (kw->params)
     for (PetscInt i = 0; i < d->nparam; i++)
       if (!ParamKnown(kw->params, d->pkey[i]))
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: parameter %s of *%s is ignored\n", KLOC(d), d->pkey[i],
-                              d->kw));
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: parameter %s of *%s is ignored\n", KLOC(d), d->pkey[i], d->kw));
   PetscCall(kw->handler(d, kw));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode DeckParse(Deck *d, const char *path) {
+static PetscErrorCode DeckParse(Deck *d, const char *path)
+{
   const char *s;
-  PetscBool got;
+  PetscBool   got;
 
   PetscFunctionBeginUser;
   PetscCall(DeckOpen(d, path, PETSC_FALSE));
@@ -1737,7 +1760,8 @@ static PetscErrorCode DeckParse(Deck *d, const char *path) {
 }
 
 /* Duplicate node ids, reported at the later definition (nodes carry no location in the model). */
-static PetscErrorCode DeckCheckDuplicateNodes(Deck *d) {
+static PetscErrorCode DeckCheckDuplicateNodes(Deck *d)
+{
   TslModel *m = d->m;
   PetscInt *id, *pos;
 
@@ -1749,11 +1773,11 @@ static PetscErrorCode DeckCheckDuplicateNodes(Deck *d) {
   for (PetscInt i = 1; i < m->nnode; i++) {
     if (id[i] == id[i - 1]) {
       PetscInt a = PetscMin(pos[i], pos[i - 1]), b = PetscMax(pos[i], pos[i - 1]), dup = id[i];
-      TslLoc la = {d->node_line[2 * a], d->node_line[2 * a + 1]}, lb = {d->node_line[2 * b], d->node_line[2 * b + 1]};
+      TslLoc   la = {d->node_line[2 * a], d->node_line[2 * a + 1]}, lb = {d->node_line[2 * b], d->node_line[2 * b + 1]};
       PetscCall(PetscFree(id));
       PetscCall(PetscFree(pos));
-      USER_ERR(LOC_FMT "duplicate node id %" PetscInt_FMT " (first defined at %s:%" PetscInt_FMT ")",
-               TSL_LOC_ARGS(m, lb), dup, TslDeckFileName(m, la.file), la.line);
+      USER_ERR(LOC_FMT "duplicate node id %" PetscInt_FMT " (first defined at %s:%" PetscInt_FMT ")", TSL_LOC_ARGS(m, lb), dup,
+               TslDeckFileName(m, la.file), la.line);
     }
   }
   PetscCall(PetscFree(id));
@@ -1761,7 +1785,8 @@ static PetscErrorCode DeckCheckDuplicateNodes(Deck *d) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode DeckFree(Deck *d) {
+static PetscErrorCode DeckFree(Deck *d)
+{
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < d->ntext; i++) PetscCall(PetscFree(d->texts[i]));
   PetscCall(PetscFree(d->texts));
@@ -1772,15 +1797,16 @@ static PetscErrorCode DeckFree(Deck *d) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslDeckRead(const char *path, TslModel **model) {
-  Deck d;
+PetscErrorCode TslDeckRead(const char *path, TslModel **model)
+{
+  Deck           d;
   PetscErrorCode ierr;
 
   PetscFunctionBeginUser;
   *model = NULL;
   PetscCall(PetscMemzero(&d, sizeof(d)));
-  d.step = -1;
-  d.material = -1;
+  d.step        = -1;
+  d.material    = -1;
   d.interaction = -1;
   PetscCall(TslModelCreate(&d.m));
   /* On a user error the partial model and the reader's buffers are freed before the error goes up. */

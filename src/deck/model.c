@@ -3,14 +3,16 @@
 #include <ctype.h>
 #include <string.h>
 
-PetscErrorCode TslModelCreate(TslModel **model) {
+PetscErrorCode TslModelCreate(TslModel **model)
+{
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(1, model));
   (*model)->absolute_zero = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ModelFreeIndex(TslModel *m) {
+static PetscErrorCode ModelFreeIndex(TslModel *m)
+{
   PetscFunctionBeginUser;
   PetscCall(PetscFree(m->index_node_id));
   PetscCall(PetscFree(m->index_node_pos));
@@ -20,7 +22,8 @@ static PetscErrorCode ModelFreeIndex(TslModel *m) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslModelDestroy(TslModel **model) {
+PetscErrorCode TslModelDestroy(TslModel **model)
+{
   TslModel *m;
 
   PetscFunctionBeginUser;
@@ -89,24 +92,28 @@ PetscErrorCode TslModelDestroy(TslModel **model) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-const char *TslDeckFileName(const TslModel *model, PetscInt f) {
+const char *TslDeckFileName(const TslModel *model, PetscInt f)
+{
   if (!model || f < 0 || f >= model->nfile || !model->files[f]) return "<unknown>";
   return model->files[f];
 }
 
-const char *TslLocString(const TslModel *model, TslLoc loc, char *buf, size_t len) {
+const char *TslLocString(const TslModel *model, TslLoc loc, char *buf, size_t len)
+{
   if (!buf || !len) return buf;
   (void)PetscSNPrintf(buf, len, "%s:%" PetscInt_FMT, TslDeckFileName(model, loc.file), loc.line);
   return buf;
 }
 
-PetscBool TslDeckNameEqual(const char *a, const char *b) {
+PetscBool TslDeckNameEqual(const char *a, const char *b)
+{
   while (*a && *b && toupper((unsigned char)*a) == toupper((unsigned char)*b)) a++, b++;
   return (!*a && !*b) ? PETSC_TRUE : PETSC_FALSE;
 }
 
-PetscErrorCode TslDeckGrow(void *ptr, size_t sz, PetscInt n) {
-  void **p = (void **)ptr;
+PetscErrorCode TslDeckGrow(void *ptr, size_t sz, PetscInt n)
+{
+  void   **p = (void **)ptr;
   PetscInt cap, want;
 
   PetscFunctionBeginUser;
@@ -123,34 +130,41 @@ PetscErrorCode TslDeckGrow(void *ptr, size_t sz, PetscInt n) {
 
 /* ---- lookups --------------------------------------------------------------------------------- */
 
-#define FIND_BY_NAME(arr, cnt)                                                                                         \
-  do {                                                                                                                 \
-    if (!model || !name) return -1;                                                                                    \
-    for (PetscInt i = 0; i < model->cnt; i++)                                                                          \
-      if (TslDeckNameEqual(model->arr[i].name, name)) return i;                                                        \
-    return -1;                                                                                                         \
+#define FIND_BY_NAME(arr, cnt)                                                                                                                       \
+  do {                                                                                                                                               \
+    if (!model || !name) return -1;                                                                                                                  \
+    for (PetscInt i = 0; i < model->cnt; i++)                                                                                                        \
+      if (TslDeckNameEqual(model->arr[i].name, name)) return i;                                                                                      \
+    return -1;                                                                                                                                       \
   } while (0)
 
-PetscInt TslModelFindNodeSet(const TslModel *model, const char *name) {
+PetscInt TslModelFindNodeSet(const TslModel *model, const char *name)
+{
   FIND_BY_NAME(nsets, nnset);
 }
-PetscInt TslModelFindElementSet(const TslModel *model, const char *name) {
+PetscInt TslModelFindElementSet(const TslModel *model, const char *name)
+{
   FIND_BY_NAME(elsets, nelset);
 }
-PetscInt TslModelFindSurface(const TslModel *model, const char *name) {
+PetscInt TslModelFindSurface(const TslModel *model, const char *name)
+{
   FIND_BY_NAME(surfaces, nsurface);
 }
-PetscInt TslModelFindMaterial(const TslModel *model, const char *name) {
+PetscInt TslModelFindMaterial(const TslModel *model, const char *name)
+{
   FIND_BY_NAME(materials, nmaterial);
 }
-PetscInt TslModelFindAmplitude(const TslModel *model, const char *name) {
+PetscInt TslModelFindAmplitude(const TslModel *model, const char *name)
+{
   FIND_BY_NAME(amplitudes, namplitude);
 }
-PetscInt TslModelFindInteraction(const TslModel *model, const char *name) {
+PetscInt TslModelFindInteraction(const TslModel *model, const char *name)
+{
   FIND_BY_NAME(interactions, ninteraction);
 }
 
-static PetscErrorCode BuildIndex(PetscInt n, const PetscInt ids[], PetscInt **sid, PetscInt **pos) {
+static PetscErrorCode BuildIndex(PetscInt n, const PetscInt ids[], PetscInt **sid, PetscInt **pos)
+{
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc1(n, sid));
   PetscCall(PetscMalloc1(n, pos));
@@ -162,7 +176,8 @@ static PetscErrorCode BuildIndex(PetscInt n, const PetscInt ids[], PetscInt **si
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslModelIndex(TslModel *model) {
+PetscErrorCode TslModelIndex(TslModel *model)
+{
   PetscFunctionBeginUser;
   PetscCall(ModelFreeIndex(model));
   PetscCall(BuildIndex(model->nnode, model->node_id, &model->index_node_id, &model->index_node_pos));
@@ -172,8 +187,8 @@ PetscErrorCode TslModelIndex(TslModel *model) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscInt IndexLookup(PetscInt n, const PetscInt *sid, const PetscInt *pos, PetscInt nidx, const PetscInt *ids,
-                            PetscInt id) {
+static PetscInt IndexLookup(PetscInt n, const PetscInt *sid, const PetscInt *pos, PetscInt nidx, const PetscInt *ids, PetscInt id)
+{
   if (sid && nidx == n) {
     PetscInt lo = 0, hi = n - 1;
     while (lo <= hi) {
@@ -191,11 +206,13 @@ static PetscInt IndexLookup(PetscInt n, const PetscInt *sid, const PetscInt *pos
   return -1;
 }
 
-PetscInt TslModelNodeIndex(const TslModel *model, PetscInt id) {
+PetscInt TslModelNodeIndex(const TslModel *model, PetscInt id)
+{
   return IndexLookup(model->nnode, model->index_node_id, model->index_node_pos, model->index_nnode, model->node_id, id);
 }
 
-PetscInt TslModelElementIndex(const TslModel *model, PetscInt id) {
+PetscInt TslModelElementIndex(const TslModel *model, PetscInt id)
+{
   return IndexLookup(model->nelem, model->index_elem_id, model->index_elem_pos, model->index_nelem, model->elem_id, id);
 }
 
@@ -203,7 +220,8 @@ PetscInt TslModelElementIndex(const TslModel *model, PetscInt id) {
 
 /* Piecewise linear through (t_i, a_i), constant beyond the ends. At a repeated time (a jump) the
  * later value wins, so a jump at t takes effect at t. */
-PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t) {
+PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t)
+{
   if (!amp || amp->n < 1) return 1.0;
   if (t < amp->t[0]) return amp->a[0];
   for (PetscInt i = 0; i + 1 < amp->n; i++) {
@@ -223,14 +241,15 @@ PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t) {
  * unpack mode replaces the stale pointer read with the struct by a fresh allocation. */
 
 typedef struct {
-  PetscBool unpack;
-  char *out; /* pack: growing buffer */
-  size_t cap;
+  PetscBool   unpack;
+  char       *out; /* pack: growing buffer */
+  size_t      cap;
   const char *in; /* unpack: source */
-  size_t pos, len;
+  size_t      pos, len;
 } Packer;
 
-static PetscErrorCode PackBytes(Packer *p, void *x, size_t n) {
+static PetscErrorCode PackBytes(Packer *p, void *x, size_t n)
+{
   PetscFunctionBeginUser;
   if (!n) PetscFunctionReturn(PETSC_SUCCESS);
   if (p->unpack) {
@@ -249,15 +268,17 @@ static PetscErrorCode PackBytes(Packer *p, void *x, size_t n) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode PackInt(Packer *p, PetscInt *x) {
+static PetscErrorCode PackInt(Packer *p, PetscInt *x)
+{
   PetscFunctionBeginUser;
   PetscCall(PackBytes(p, x, sizeof(*x)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* An array of n elements of size sz at *ptr; NULL-ness is kept (a NULL array stays NULL). */
-static PetscErrorCode PackArray(Packer *p, void *ptr, PetscInt n, size_t sz) {
-  void **a = (void **)ptr;
+static PetscErrorCode PackArray(Packer *p, void *ptr, PetscInt n, size_t sz)
+{
+  void   **a       = (void **)ptr;
   PetscInt present = *a ? 1 : 0;
 
   PetscFunctionBeginUser;
@@ -270,7 +291,8 @@ static PetscErrorCode PackArray(Packer *p, void *ptr, PetscInt n, size_t sz) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode PackString(Packer *p, char **s) {
+static PetscErrorCode PackString(Packer *p, char **s)
+{
   PetscInt n = (!p->unpack && *s) ? (PetscInt)strlen(*s) + 1 : 0; /* on unpack *s holds the sender's pointer */
 
   PetscFunctionBeginUser;
@@ -283,7 +305,8 @@ static PetscErrorCode PackString(Packer *p, char **s) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ModelWalk(Packer *p, TslModel *m) {
+static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
+{
   PetscFunctionBeginUser;
   PetscCall(PackBytes(p, m, sizeof(*m)));
   if (p->unpack) { /* the derived index is rebuilt, never transported */
@@ -355,8 +378,9 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslModelPack(const TslModel *model, char **buf, size_t *len) {
-  Packer p = {0};
+PetscErrorCode TslModelPack(const TslModel *model, char **buf, size_t *len)
+{
+  Packer   p = {0};
   TslModel copy;
 
   PetscFunctionBeginUser;
@@ -367,14 +391,15 @@ PetscErrorCode TslModelPack(const TslModel *model, char **buf, size_t *len) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslModelUnpack(const char *buf, size_t len, TslModel **model) {
-  Packer p = {0};
+PetscErrorCode TslModelUnpack(const char *buf, size_t len, TslModel **model)
+{
+  Packer    p = {0};
   TslModel *m;
 
   PetscFunctionBeginUser;
   p.unpack = PETSC_TRUE;
-  p.in = buf;
-  p.len = len;
+  p.in     = buf;
+  p.len    = len;
   PetscCall(TslModelCreate(&m));
   PetscCall(ModelWalk(&p, m));
   PetscCheck(p.pos == len, PETSC_COMM_SELF, PETSC_ERR_ARG_CORRUPT, "Model buffer has %zu trailing bytes", len - p.pos);
@@ -385,8 +410,8 @@ PetscErrorCode TslModelUnpack(const char *buf, size_t len, TslModel **model) {
 
 /* ---- subsets --------------------------------------------------------------------------------- */
 
-static PetscErrorCode FilterIds(PetscInt n, const PetscInt ids[], PetscInt nkeep, const PetscInt keep_sorted[],
-                                PetscInt *nout, PetscInt **out) {
+static PetscErrorCode FilterIds(PetscInt n, const PetscInt ids[], PetscInt nkeep, const PetscInt keep_sorted[], PetscInt *nout, PetscInt **out)
+{
   PetscInt k = 0, loc;
 
   PetscFunctionBeginUser;
@@ -399,7 +424,8 @@ static PetscErrorCode FilterIds(PetscInt n, const PetscInt ids[], PetscInt nkeep
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SubsetSets(PetscInt nset, const TslSet *src, TslSet *dst, PetscInt nkeep, const PetscInt keep[]) {
+static PetscErrorCode SubsetSets(PetscInt nset, const TslSet *src, TslSet *dst, PetscInt nkeep, const PetscInt keep[])
+{
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < nset; i++) {
     dst[i] = src[i];
@@ -408,9 +434,10 @@ static PetscErrorCode SubsetSets(PetscInt nset, const TslSet *src, TslSet *dst, 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SubsetSurface(const TslSurface *src, TslSurface *dst, PetscInt nnk, const PetscInt nkeep[],
-                                    PetscInt nek, const PetscInt ekeep[]) {
-  PetscInt k = 0, loc, nkp = src->kind == TSL_SURFACE_NODE ? nnk : nek;
+static PetscErrorCode SubsetSurface(const TslSurface *src, TslSurface *dst, PetscInt nnk, const PetscInt nkeep[], PetscInt nek,
+                                    const PetscInt ekeep[])
+{
+  PetscInt        k = 0, loc, nkp = src->kind == TSL_SURFACE_NODE ? nnk : nek;
   const PetscInt *kp = src->kind == TSL_SURFACE_NODE ? nkeep : ekeep;
 
   PetscFunctionBeginUser;
@@ -429,7 +456,8 @@ static PetscErrorCode SubsetSurface(const TslSurface *src, TslSurface *dst, Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CopyEquation(const TslEquation *src, TslEquation *dst) {
+static PetscErrorCode CopyEquation(const TslEquation *src, TslEquation *dst)
+{
   PetscFunctionBeginUser;
   *dst = *src;
   PetscCall(PetscMalloc1(src->n, &dst->node));
@@ -446,8 +474,8 @@ static PetscErrorCode CopyEquation(const TslEquation *src, TslEquation *dst) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt elems[], PetscInt nn,
-                                 const PetscInt nodes[], TslModel *s) {
+static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt elems[], PetscInt nn, const PetscInt nodes[], TslModel *s)
+{
   PetscInt nconn = 0;
 
   PetscFunctionBeginUser;
@@ -456,14 +484,14 @@ static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt 
   PetscCall(PetscMalloc1(nn, &s->node_id));
   PetscCall(PetscMalloc1(3 * nn, &s->node_xyz));
   for (PetscInt i = 0; i < nn; i++) {
-    PetscCheck(nodes[i] >= 0 && nodes[i] < m->nnode, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-               "Node position %" PetscInt_FMT " out of range", nodes[i]);
+    PetscCheck(nodes[i] >= 0 && nodes[i] < m->nnode, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Node position %" PetscInt_FMT " out of range",
+               nodes[i]);
     s->node_id[i] = m->node_id[nodes[i]];
     for (PetscInt c = 0; c < 3; c++) s->node_xyz[3 * i + c] = m->node_xyz[3 * nodes[i] + c];
   }
   for (PetscInt i = 0; i < ne; i++) {
-    PetscCheck(elems[i] >= 0 && elems[i] < m->nelem, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-               "Element position %" PetscInt_FMT " out of range", elems[i]);
+    PetscCheck(elems[i] >= 0 && elems[i] < m->nelem, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Element position %" PetscInt_FMT " out of range",
+               elems[i]);
     nconn += m->elem_ptr[elems[i] + 1] - m->elem_ptr[elems[i]];
   }
   PetscCall(PetscMalloc1(ne, &s->elem_id));
@@ -474,9 +502,9 @@ static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt 
   s->elem_ptr[0] = 0;
   for (PetscInt i = 0; i < ne; i++) {
     PetscInt e = elems[i], k = s->elem_ptr[i];
-    s->elem_id[i] = m->elem_id[e];
-    s->elem_type[i] = m->elem_type[e];
-    s->elem_line[2 * i] = m->elem_line ? m->elem_line[2 * e] : -1;
+    s->elem_id[i]           = m->elem_id[e];
+    s->elem_type[i]         = m->elem_type[e];
+    s->elem_line[2 * i]     = m->elem_line ? m->elem_line[2 * e] : -1;
     s->elem_line[2 * i + 1] = m->elem_line ? m->elem_line[2 * e + 1] : 0;
     for (PetscInt j = m->elem_ptr[e]; j < m->elem_ptr[e + 1]; j++) s->elem_conn[k++] = m->elem_conn[j];
     s->elem_ptr[i + 1] = k;
@@ -493,21 +521,21 @@ static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt elems[], PetscInt nn,
-                              const PetscInt nodes[], TslModel **sub) {
-  TslModel meta = *model, *s;
+PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt elems[], PetscInt nn, const PetscInt nodes[], TslModel **sub)
+{
+  TslModel  meta = *model, *s;
   PetscInt *nkeep, *ekeep, k = 0;
-  char *buf;
-  size_t len;
+  char     *buf;
+  size_t    len;
 
   PetscFunctionBeginUser;
   /* Deep-copy everything but the mesh-dependent data through the packer, then add the filtered parts. */
   meta.nnode = meta.nelem = meta.nnset = meta.nelset = meta.nsurface = meta.nequation = 0;
   meta.node_id = meta.elem_id = meta.elem_type = meta.elem_ptr = meta.elem_conn = meta.elem_line = NULL;
-  meta.node_xyz = NULL;
+  meta.node_xyz                                                                                  = NULL;
   meta.nsets = meta.elsets = NULL;
-  meta.surfaces = NULL;
-  meta.equations = NULL;
+  meta.surfaces            = NULL;
+  meta.equations           = NULL;
   meta.node_gnum = meta.node_nat = meta.elem_nat = NULL;
   PetscCall(TslModelPack(&meta, &buf, &len));
   PetscCall(TslModelUnpack(buf, len, &s));
@@ -521,7 +549,7 @@ PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt
   PetscCall(PetscSortInt(nn, nkeep));
   PetscCall(PetscSortInt(ne, ekeep));
 
-  s->nnset = model->nnset;
+  s->nnset  = model->nnset;
   s->nelset = model->nelset;
   PetscCall(PetscCalloc1(model->nnset, &s->nsets));
   PetscCall(PetscCalloc1(model->nelset, &s->elsets));
@@ -529,13 +557,12 @@ PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt
   PetscCall(SubsetSets(model->nelset, model->elsets, s->elsets, ne, ekeep));
   s->nsurface = model->nsurface;
   PetscCall(PetscCalloc1(model->nsurface, &s->surfaces));
-  for (PetscInt i = 0; i < model->nsurface; i++)
-    PetscCall(SubsetSurface(&model->surfaces[i], &s->surfaces[i], nn, nkeep, ne, ekeep));
+  for (PetscInt i = 0; i < model->nsurface; i++) PetscCall(SubsetSurface(&model->surfaces[i], &s->surfaces[i], nn, nkeep, ne, ekeep));
 
   PetscCall(PetscCalloc1(model->nequation, &s->equations));
   for (PetscInt i = 0; i < model->nequation; i++) {
-    const TslEquation *e = &model->equations[i];
-    PetscBool keep = PETSC_FALSE;
+    const TslEquation *e    = &model->equations[i];
+    PetscBool          keep = PETSC_FALSE;
     for (PetscInt j = 0; j < e->n && !keep; j++) {
       PetscInt loc;
       PetscCall(PetscFindInt(e->node[j], nn, nkeep, &loc));

@@ -30,8 +30,7 @@ static void ShapeQuad4(const PetscReal xi[], PetscReal N[], PetscReal dN[])
 
 static void ShapeHex8(const PetscReal xi[], PetscReal N[], PetscReal dN[])
 {
-  static const PetscReal s[8] = {-1, 1, 1, -1, -1, 1, 1, -1}, t[8] = {-1, -1, 1, 1, -1, -1, 1, 1},
-                         r[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+  static const PetscReal s[8] = {-1, 1, 1, -1, -1, 1, 1, -1}, t[8] = {-1, -1, 1, 1, -1, -1, 1, 1}, r[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
   for (int a = 0; a < 8; a++) {
     const PetscReal fs = 1 + s[a] * xi[0], ft = 1 + t[a] * xi[1], fr = 1 + r[a] * xi[2];
     N[a]          = 0.125 * fs * ft * fr;
@@ -45,24 +44,45 @@ static void ShapeHex8(const PetscReal xi[], PetscReal N[], PetscReal dN[])
 
 #define G2 0.57735026918962576451 /* 1/sqrt(3) */
 
-#define QUAD_LINE_1 {1, {{0, 0, 0}}, {2}, 1}
-#define QUAD_LINE_2 {2, {{-G2, 0, 0}, {G2, 0, 0}}, {1, 1}, 3}
-#define QUAD_QUAD_1 {1, {{0, 0, 0}}, {4}, 1}
-#define QUAD_QUAD_4 {4, {{-G2, -G2, 0}, {G2, -G2, 0}, {G2, G2, 0}, {-G2, G2, 0}}, {1, 1, 1, 1}, 3}
-#define QUAD_HEX_1  {1, {{0, 0, 0}}, {8}, 1}
-#define QUAD_HEX_8 \
-  {8, \
-   {{-G2, -G2, -G2}, {G2, -G2, -G2}, {G2, G2, -G2}, {-G2, G2, -G2}, {-G2, -G2, G2}, {G2, -G2, G2}, {G2, G2, G2}, \
-    {-G2, G2, G2}}, \
-   {1, 1, 1, 1, 1, 1, 1, 1}, \
-   3}
+#define QUAD_LINE_1                                                                                                                                  \
+  {                                                                                                                                                  \
+    1, {{0, 0, 0}}, {2}, 1                                                                                                                           \
+  }
+#define QUAD_LINE_2                                                                                                                                  \
+  {                                                                                                                                                  \
+    2, {{-G2, 0, 0}, {G2, 0, 0}}, {1, 1}, 3                                                                                                          \
+  }
+#define QUAD_QUAD_1                                                                                                                                  \
+  {                                                                                                                                                  \
+    1, {{0, 0, 0}}, {4}, 1                                                                                                                           \
+  }
+#define QUAD_QUAD_4                                                                                                                                  \
+  {                                                                                                                                                  \
+    4, {{-G2, -G2, 0}, {G2, -G2, 0}, {G2, G2, 0}, {-G2, G2, 0}}, {1, 1, 1, 1}, 3                                                                     \
+  }
+#define QUAD_HEX_1                                                                                                                                   \
+  {                                                                                                                                                  \
+    1, {{0, 0, 0}}, {8}, 1                                                                                                                           \
+  }
+#define QUAD_HEX_8                                                                                                                                   \
+  {                                                                                                                                                  \
+    8, {{-G2, -G2, -G2}, {G2, -G2, -G2}, {G2, G2, -G2}, {-G2, G2, -G2}, {-G2, -G2, G2}, {G2, -G2, G2}, {G2, G2, G2}, {-G2, G2, G2}},                 \
+        {1, 1, 1, 1, 1, 1, 1, 1}, 3                                                                                                                  \
+  }
 
 /* ---- geometry families ----------------------------------------------------------------------- */
 
 static const TslGeometry GeomLine2 = {
-    .name = "line2", .dim = 1, .nnode = 2, .nface = 0, .shape = ShapeLine2,
-    .full = QUAD_LINE_2, .reduced = QUAD_LINE_1, .xdmf_type = 2,
-    .node_xi = {{-1, 0, 0}, {1, 0, 0}}, .ref_volume = 2,
+    .name       = "line2",
+    .dim        = 1,
+    .nnode      = 2,
+    .nface      = 0,
+    .shape      = ShapeLine2,
+    .full       = QUAD_LINE_2,
+    .reduced    = QUAD_LINE_1,
+    .xdmf_type  = 2,
+    .node_xi    = {{-1, 0, 0}, {1, 0, 0}},
+    .ref_volume = 2,
 };
 
 static const TslGeometry GeomQuad4 = {

@@ -24,12 +24,11 @@ typedef struct {
 
 /* Evaluates the point at reference coordinates xi with quadrature weight w. Returns PETSC_FALSE when
  * the map is not valid there (detJ <= 0, or r <= 0 for axisymmetric elements). */
-PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementMaterial *mat, const PetscReal x[],
-                                  const PetscReal xi[], PetscReal w, TslElementPoint *p);
+PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementMaterial *mat, const PetscReal x[], const PetscReal xi[], PetscReal w,
+                                  TslElementPoint *p);
 
 /* Voigt strain-displacement matrix B[6][nnode*dim] (engineering shear) at a point. */
-void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p,
-                            PetscReal B[6][TSL_MAX_ELEM_NODES * 3]);
+void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p, PetscReal B[6][TSL_MAX_ELEM_NODES * 3]);
 
 /* Effective elasticity D[6][6] for the kinematics (plane stress: condensed so that sigma_33 = 0) and the
  * thermal stress per unit temperature rise beta = D m alpha (m = normal-components indicator). */

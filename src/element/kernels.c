@@ -9,9 +9,10 @@
  * capacity matrix keeps backward Euler monotone after a sudden change of flux (no undershoot below
  * the initial temperature next to the loaded face), and makes the stored heat a nodal sum that the
  * global heat balance can close exactly. Returns PETSC_FALSE for an invalid (inverted) element. */
-static PetscBool NodalVolume(const TslElementInput *in, PetscReal vol[]) {
+static PetscBool NodalVolume(const TslElementInput *in, PetscReal vol[])
+{
   const TslGeometry *g = in->type->geom;
-  TslElementPoint p;
+  TslElementPoint    p;
 
   for (PetscInt a = 0; a < g->nnode; a++) vol[a] = 0;
   for (PetscInt q = 0; q < g->full.n; q++) {
@@ -22,8 +23,9 @@ static PetscBool NodalVolume(const TslElementInput *in, PetscReal vol[]) {
 }
 
 /* Strain (Voigt, engineering shear) and theta - theta_init at a point. */
-static void PointStrain(const TslElementInput *in, const TslElementPoint *p, PetscReal B[6][TSL_MAX_ELEM_NODES * 3],
-                        PetscReal eps[6], PetscReal *dtheta) {
+static void PointStrain(const TslElementInput *in, const TslElementPoint *p, PetscReal B[6][TSL_MAX_ELEM_NODES * 3], PetscReal eps[6],
+                        PetscReal *dtheta)
+{
   const PetscInt dim = in->type->dim, ndof = in->type->ndof, n = in->type->geom->nnode;
 
   TslElementStrainMatrix(in->type, p, B);
@@ -41,17 +43,17 @@ static void PointStrain(const TslElementInput *in, const TslElementPoint *p, Pet
  *   R_theta(a) = int k grad N_a . grad theta dV + C_a (theta_a - theta_old_a) / dt,  C_a = rho c V_a
  * Tangent: K_uu = int B^T D B dV, K_u_theta = -int B^T beta N dV (beta = D m alpha), K_theta_u = 0,
  *          K_theta_theta = int k grad N grad N^T dV + diag(C_a / dt). The capacity is dropped when steady. */
-PetscErrorCode TslElementResidual(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted) {
-  const TslElementType *t = in->type;
-  const TslGeometry *g = t->geom;
-  const PetscInt dim = t->dim, ndof = t->ndof, n = g->nnode, nd = n * ndof;
-  const PetscReal k = in->mat->conductivity;
-  PetscReal D[6][6], beta[6], B[6][TSL_MAX_ELEM_NODES * 3], vol[TSL_MAX_ELEM_NODES];
-  TslElementPoint p;
+PetscErrorCode TslElementResidual(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted)
+{
+  const TslElementType *t   = in->type;
+  const TslGeometry    *g   = t->geom;
+  const PetscInt        dim = t->dim, ndof = t->ndof, n = g->nnode, nd = n * ndof;
+  const PetscReal       k = in->mat->conductivity;
+  PetscReal             D[6][6], beta[6], B[6][TSL_MAX_ELEM_NODES * 3], vol[TSL_MAX_ELEM_NODES];
+  TslElementPoint       p;
 
   PetscFunctionBeginUser;
-  PetscCheck(in->steady || in->dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
-             "Transient element residual needs dt > 0, got %g", (double)in->dt);
+  PetscCheck(in->steady || in->dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Transient element residual needs dt > 0, got %g", (double)in->dt);
   *inverted = PETSC_FALSE;
   TslElementElasticity(t->kin, in->mat, D, beta);
   for (PetscInt i = 0; i < nd; i++) R[i] = 0;
@@ -87,8 +89,8 @@ PetscErrorCode TslElementResidual(const TslElementInput *in, PetscReal R[], Pets
       }
     for (PetscInt a = 0; a < n; a++) {
       for (PetscInt i = 0; i < dim; i++) {
-        const PetscInt row = ndof * a + i;
-        PetscReal Bbeta = 0;
+        const PetscInt row   = ndof * a + i;
+        PetscReal      Bbeta = 0;
         for (PetscInt r = 0; r < 6; r++) Bbeta += B[r][dim * a + i] * beta[r];
         for (PetscInt b = 0; b < n; b++) {
           for (PetscInt j = 0; j < dim; j++) {
@@ -108,8 +110,8 @@ PetscErrorCode TslElementResidual(const TslElementInput *in, PetscReal R[], Pets
   }
   if (in->steady) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt a = 0; a < n; a++) {
-    const PetscReal c = in->mat->density * in->mat->specific_heat * vol[a] / in->dt;
-    const PetscInt row = ndof * a + dim;
+    const PetscReal c   = in->mat->density * in->mat->specific_heat * vol[a] / in->dt;
+    const PetscInt  row = ndof * a + dim;
     R[row] += c * (in->u[row] - in->u_old[row]);
     if (K) K[row * nd + row] += c;
   }
@@ -125,11 +127,12 @@ typedef struct {
   PetscReal dA;
 } FacePoint;
 
-static void FacePointEvaluate(const TslElementInput *in, PetscInt face, PetscInt q, FacePoint *fp) {
-  const TslGeometry *g = in->type->geom, *fg = g->face_geom[face];
+static void FacePointEvaluate(const TslElementInput *in, PetscInt face, PetscInt q, FacePoint *fp)
+{
+  const TslGeometry       *g = in->type->geom, *fg = g->face_geom[face];
   const TslKinematicsInfo *info = TslKinematicsInfoGet(in->type->kin);
-  const PetscInt fn = g->face_nnode[face], fdim = fg->dim;
-  PetscReal dN[TSL_MAX_FACE_NODES * 3], T[2][3] = {{0}};
+  const PetscInt           fn = g->face_nnode[face], fdim      = fg->dim;
+  PetscReal                dN[TSL_MAX_FACE_NODES * 3], T[2][3] = {{0}};
 
   fg->shape(fg->full.xi[q], fp->N, dN);
   for (PetscInt d = 0; d < 3; d++) fp->x[d] = 0;
@@ -159,11 +162,12 @@ static void FacePointEvaluate(const TslElementInput *in, PetscInt face, PetscInt
 }
 
 /* Body heat source, R_theta(a) -= int N_a q dV; returns int q dV. */
-static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[]) {
-  const TslGeometry *g = in->type->geom;
-  const PetscInt ndof = in->type->ndof, dim = in->type->dim;
-  PetscReal heat = 0;
-  TslElementPoint p;
+static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
+{
+  const TslGeometry *g    = in->type->geom;
+  const PetscInt     ndof = in->type->ndof, dim = in->type->dim;
+  PetscReal          heat = 0;
+  TslElementPoint    p;
 
   for (PetscInt i = 0; i < g->full.n; i++) {
     (void)TslElementPointEvaluate(in->type, in->mat, in->x, g->full.xi[i], g->full.w[i], &p);
@@ -179,11 +183,12 @@ static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
  *   film h, sink:                               R_theta(a) += int N_a h (theta - sink) dA,
  *                                               K_ab       += int h N_a N_b dA,        heat = -int h (theta - sink) dA
  *   body flux q per volume:                     R_theta(a) -= int N_a q dV,            heat = int q dV */
-PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value,
-                                  PetscReal value2, PetscReal R[], PetscReal K[], PetscReal *heat) {
-  const TslGeometry *g = in->type->geom;
-  const PetscInt ndof = in->type->ndof, dim = in->type->dim, nd = g->nnode * ndof;
-  PetscReal total = 0;
+PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],
+                                  PetscReal K[], PetscReal *heat)
+{
+  const TslGeometry *g    = in->type->geom;
+  const PetscInt     ndof = in->type->ndof, dim = in->type->dim, nd = g->nnode * ndof;
+  PetscReal          total = 0;
 
   PetscFunctionBeginUser;
   if (kind == TSL_BODY_FLUX) {
@@ -196,9 +201,9 @@ PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kin
   face--;
   for (PetscInt q = 0; q < g->face_geom[face]->full.n; q++) {
     const PetscInt *node = g->face_node[face];
-    const PetscInt fn = g->face_nnode[face];
-    FacePoint fp;
-    PetscReal theta = 0;
+    const PetscInt  fn   = g->face_nnode[face];
+    FacePoint       fp;
+    PetscReal       theta = 0;
 
     FacePointEvaluate(in, face, q, &fp);
     switch (kind) {
@@ -230,9 +235,10 @@ PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kin
 
 /* dQ = sum_a C_a (theta_a - theta_old_a), the same lumped capacity as in the residual, so that
  * heat in - heat out - stored closes to solver tolerance. */
-PetscErrorCode TslElementHeatChange(const TslElementInput *in, PetscReal *dQ) {
+PetscErrorCode TslElementHeatChange(const TslElementInput *in, PetscReal *dQ)
+{
   const PetscInt ndof = in->type->ndof, dim = in->type->dim;
-  PetscReal vol[TSL_MAX_ELEM_NODES];
+  PetscReal      vol[TSL_MAX_ELEM_NODES];
 
   PetscFunctionBeginUser;
   PetscCheck(NodalVolume(in, vol), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", in->type->name);
@@ -245,13 +251,14 @@ PetscErrorCode TslElementHeatChange(const TslElementInput *in, PetscReal *dQ) {
 /* Arithmetic means over the full-quadrature points of sigma = D (eps - m alpha dT), eps, and -k grad theta.
  * Plane stress reports the out-of-plane strain that makes sigma_33 = 0 with the full isotropic D:
  *   eps_33 = alpha dT - lambda (eps_11 + eps_22 - 2 alpha dT) / (lambda + 2 mu). */
-PetscErrorCode TslElementOutput(const TslElementInput *in, PetscReal S[6], PetscReal E[6], PetscReal HFL[3]) {
-  const TslElementType *t = in->type;
-  const TslGeometry *g = t->geom;
-  const PetscInt dim = t->dim, ndof = t->ndof, nq = g->full.n;
-  const PetscReal nu = in->mat->nu, alpha = in->mat->alpha;
-  PetscReal D[6][6], beta[6], B[6][TSL_MAX_ELEM_NODES * 3];
-  TslElementPoint p;
+PetscErrorCode TslElementOutput(const TslElementInput *in, PetscReal S[6], PetscReal E[6], PetscReal HFL[3])
+{
+  const TslElementType *t   = in->type;
+  const TslGeometry    *g   = t->geom;
+  const PetscInt        dim = t->dim, ndof = t->ndof, nq = g->full.n;
+  const PetscReal       nu = in->mat->nu, alpha = in->mat->alpha;
+  PetscReal             D[6][6], beta[6], B[6][TSL_MAX_ELEM_NODES * 3];
+  TslElementPoint       p;
 
   PetscFunctionBeginUser;
   TslElementElasticity(t->kin, in->mat, D, beta);
@@ -260,8 +267,8 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, PetscReal S[6], Petsc
   for (PetscInt q = 0; q < nq; q++) {
     PetscReal eps[6], dtheta;
 
-    PetscCheck(TslElementPointEvaluate(t, in->mat, in->x, g->full.xi[q], g->full.w[q], &p), PETSC_COMM_SELF,
-               PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
+    PetscCheck(TslElementPointEvaluate(t, in->mat, in->x, g->full.xi[q], g->full.w[q], &p), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+               "Inverted %s element", t->name);
     PointStrain(in, &p, B, eps, &dtheta);
     for (PetscInt r = 0; r < 6; r++) {
       PetscReal s = -beta[r] * dtheta;
@@ -270,7 +277,7 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, PetscReal S[6], Petsc
     }
     if (TslKinematicsInfoGet(t->kin)->free_normal) {
       const PetscReal ratio = nu / (1 - nu); /* lambda / (lambda + 2 mu) */
-      eps[2] = alpha * dtheta - ratio * (eps[0] + eps[1] - 2 * alpha * dtheta);
+      eps[2]                = alpha * dtheta - ratio * (eps[0] + eps[1] - 2 * alpha * dtheta);
     }
     for (PetscInt r = 0; r < 6; r++) E[r] += eps[r] / nq;
     for (PetscInt a = 0; a < g->nnode; a++)
@@ -279,7 +286,8 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, PetscReal S[6], Petsc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslElementNodalVolume(const TslElementInput *in, PetscReal vol[]) {
+PetscErrorCode TslElementNodalVolume(const TslElementInput *in, PetscReal vol[])
+{
   PetscFunctionBeginUser;
   PetscCheck(NodalVolume(in, vol), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", in->type->name);
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -14,18 +14,20 @@ static const TslKinematicsInfo KinematicsTable[] = {
     [TSL_KIN_PLANE_STRAIN] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE},
     [TSL_KIN_PLANE_STRESS] = {PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE},
     [TSL_KIN_AXISYMMETRIC] = {PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE},
-    [TSL_KIN_SOLID3D] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE},
+    [TSL_KIN_SOLID3D]      = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE},
 };
 
-const TslKinematicsInfo *TslKinematicsInfoGet(TslKinematics kin) {
+const TslKinematicsInfo *TslKinematicsInfoGet(TslKinematics kin)
+{
   return &KinematicsTable[kin];
 }
 
 /* Inverse of the dim x dim Jacobian J[i][j] = dx_i/dxi_j; returns det J. */
-static PetscReal InvertJacobian(PetscInt dim, const PetscReal J[3][3], PetscReal Ji[3][3]) {
+static PetscReal InvertJacobian(PetscInt dim, const PetscReal J[3][3], PetscReal Ji[3][3])
+{
   PetscReal det;
   if (dim == 2) {
-    det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+    det      = J[0][0] * J[1][1] - J[0][1] * J[1][0];
     Ji[0][0] = J[1][1] / det;
     Ji[0][1] = -J[0][1] / det;
     Ji[1][0] = -J[1][0] / det;
@@ -46,12 +48,13 @@ static PetscReal InvertJacobian(PetscInt dim, const PetscReal J[3][3], PetscReal
   return det;
 }
 
-PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementMaterial *mat, const PetscReal x[],
-                                  const PetscReal xi[], PetscReal w, TslElementPoint *p) {
-  const TslGeometry *g = type->geom;
+PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementMaterial *mat, const PetscReal x[], const PetscReal xi[], PetscReal w,
+                                  TslElementPoint *p)
+{
+  const TslGeometry       *g    = type->geom;
   const TslKinematicsInfo *info = TslKinematicsInfoGet(type->kin);
-  const PetscInt dim = g->dim, n = g->nnode;
-  PetscReal dN[TSL_MAX_ELEM_NODES * 3], J[3][3] = {{0}}, Ji[3][3] = {{0}};
+  const PetscInt           dim = g->dim, n                     = g->nnode;
+  PetscReal                dN[TSL_MAX_ELEM_NODES * 3], J[3][3] = {{0}}, Ji[3][3] = {{0}};
 
   g->shape(xi, p->N, dN);
   for (PetscInt d = 0; d < 3; d++) p->x[d] = 0;
@@ -76,9 +79,9 @@ PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementMa
   return PETSC_TRUE;
 }
 
-void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p,
-                            PetscReal B[6][TSL_MAX_ELEM_NODES * 3]) {
-  const PetscInt dim = type->dim, n = type->geom->nnode;
+void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p, PetscReal B[6][TSL_MAX_ELEM_NODES * 3])
+{
+  const PetscInt           dim = type->dim, n = type->geom->nnode;
   const TslKinematicsInfo *info = TslKinematicsInfoGet(type->kin);
   /* Voigt row -> (i, j) of the symmetric gradient; for the 3D shear rows both orders contribute */
   static const PetscInt vi[6] = {0, 1, 2, 0, 0, 1}, vj[6] = {0, 1, 2, 1, 2, 2};
@@ -96,7 +99,8 @@ void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p
   }
 }
 
-void TslElementElasticity(TslKinematics kin, const TslElementMaterial *mat, PetscReal D[6][6], PetscReal beta[6]) {
+void TslElementElasticity(TslKinematics kin, const TslElementMaterial *mat, PetscReal D[6][6], PetscReal beta[6])
+{
   const PetscReal E = mat->E, nu = mat->nu;
   const PetscReal lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
   const PetscReal m[6] = {1, 1, 1, 0, 0, 0};
@@ -106,7 +110,7 @@ void TslElementElasticity(TslKinematics kin, const TslElementMaterial *mat, Pets
   if (TslKinematicsInfoGet(kin)->free_normal) {
     /* sigma_33 = 0: eliminate eps_33 = -(D_3j eps_j) / D_33, giving D_ps on the remaining rows */
     const PetscReal d33 = D[2][2];
-    PetscReal c[6];
+    PetscReal       c[6];
     for (PetscInt j = 0; j < 6; j++) c[j] = D[2][j];
     for (PetscInt i = 0; i < 6; i++)
       for (PetscInt j = 0; j < 6; j++) D[i][j] -= c[i] * c[j] / d33;

@@ -35,7 +35,7 @@ static PetscErrorCode PartitionMetis(const TslModel *g, PetscInt nparts, PetscIn
   METIS_SetDefaultOptions(opts);
   opts[METIS_OPTION_NUMBERING] = 0;
   opts[METIS_OPTION_SEED]      = 1;
-  status = METIS_PartMeshDual(&ne, &nn, eptr, eind, NULL, NULL, &ncommon, &np, NULL, opts, &objval, ep, npart);
+  status                       = METIS_PartMeshDual(&ne, &nn, eptr, eind, NULL, NULL, &ncommon, &np, NULL, opts, &objval, ep, npart);
   PetscCheck(status == METIS_OK, PETSC_COMM_SELF, PETSC_ERR_LIB, "METIS_PartMeshDual failed (status %d)", status);
   for (PetscInt e = 0; e < g->nelem; e++) epart[e] = (PetscInt)ep[e];
   PetscCall(PetscFree4(eptr, eind, ep, npart));
@@ -101,7 +101,7 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
   /* contact: a rank that owns secondary nodes of a pair holds the whole main surface (as ghosts), so
    * the main-surface data it needs arrives with every ghost update */
   for (PetscInt k = 0; k < g->npair; k++) {
-    const TslContactPair *c     = &g->pairs[k];
+    const TslContactPair *c    = &g->pairs[k];
     PetscBool             owns = PETSC_FALSE;
     for (PetscInt i = 0; i < c->nsec && !owns; i++) owns = (PetscBool)(owner[TslModelNodeIndex(g, c->sec_node[i])] == r);
     for (PetscInt i = 0; owns && i < 2 * c->nmain; i++) {
@@ -174,18 +174,21 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
     PetscInt         *first, *perm, nsec = 0, e0 = -1, s;
     PetscReal         Lsum = 0, E = 0;
 
-    PetscCheck(c->type == TSL_CONTACT_NODE_TO_SURFACE, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: *CONTACT PAIR, TYPE=SURFACE TO SURFACE is not supported yet (use the default node-to-surface)",
+    PetscCheck(c->type == TSL_CONTACT_NODE_TO_SURFACE, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "%s: *CONTACT PAIR, TYPE=SURFACE TO SURFACE is not supported yet (use the default node-to-surface)",
                TslLocString(g, c->loc, loc, sizeof(loc)));
-    PetscCheck(g->dim == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact between 3D elements is not supported yet", TslLocString(g, c->loc, loc, sizeof(loc)));
+    PetscCheck(g->dim == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact between 3D elements is not supported yet",
+               TslLocString(g, c->loc, loc, sizeof(loc)));
     /* main segments */
     c->nmain = main->n;
     PetscCall(PetscMalloc1(2 * c->nmain, &c->main_node));
     PetscCall(PetscMalloc1(c->nmain, &c->main_prev));
     PetscCall(PetscMalloc1(c->nmain, &c->main_next));
     for (PetscInt i = 0; i < main->n; i++) {
-      PetscInt e = TslModelElementIndex(g, main->elem[i]), nodes[TSL_MAX_FACE_NODES];
+      PetscInt e  = TslModelElementIndex(g, main->elem[i]), nodes[TSL_MAX_FACE_NODES];
       PetscInt nf = FaceNodes(g, e, main->face[i], nodes);
-      PetscCheck(nf == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact on faces with %" PetscInt_FMT " nodes is not supported yet", TslLocString(g, c->loc, loc, sizeof(loc)), nf);
+      PetscCheck(nf == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact on faces with %" PetscInt_FMT " nodes is not supported yet",
+                 TslLocString(g, c->loc, loc, sizeof(loc)), nf);
       c->main_node[2 * i] = nodes[0], c->main_node[2 * i + 1] = nodes[1];
       c->main_prev[i] = c->main_next[i] = -1;
       {
@@ -219,10 +222,11 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
       PetscCall(PetscMalloc1(2 * sec->n, &c->sec_node));
       PetscCall(PetscMalloc1(2 * sec->n, &c->sec_length));
       for (PetscInt i = 0; i < sec->n; i++) {
-        PetscInt e = TslModelElementIndex(g, sec->elem[i]), nodes[TSL_MAX_FACE_NODES], nf = FaceNodes(g, e, sec->face[i], nodes);
+        PetscInt         e = TslModelElementIndex(g, sec->elem[i]), nodes[TSL_MAX_FACE_NODES], nf = FaceNodes(g, e, sec->face[i], nodes);
         const PetscReal *a, *b;
         PetscReal        L;
-        PetscCheck(nf == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact on faces with %" PetscInt_FMT " nodes is not supported yet", TslLocString(g, c->loc, loc, sizeof(loc)), nf);
+        PetscCheck(nf == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact on faces with %" PetscInt_FMT " nodes is not supported yet",
+                   TslLocString(g, c->loc, loc, sizeof(loc)), nf);
         a = &g->node_xyz[3 * TslModelNodeIndex(g, nodes[0])], b = &g->node_xyz[3 * TslModelNodeIndex(g, nodes[1])];
         L = PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
         for (PetscInt a2 = 0; a2 < 2; a2++) c->sec_node[nsec] = nodes[a2], c->sec_length[nsec++] = 0.5 * L;
@@ -232,12 +236,14 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
       PetscCall(PetscSortIntWithScalarArray(nsec, c->sec_node, c->sec_length));
       c->nsec = 0;
       for (PetscInt i = 0; i < nsec; i++) {
-        if (c->nsec > 0 && c->sec_node[c->nsec - 1] == c->sec_node[i]) c->sec_length[c->nsec - 1] += c->sec_length[i];
-        else c->sec_node[c->nsec] = c->sec_node[i], c->sec_length[c->nsec++] = c->sec_length[i];
+        if (c->nsec > 0 && c->sec_node[c->nsec - 1] == c->sec_node[i])
+          c->sec_length[c->nsec - 1] += c->sec_length[i];
+        else
+          c->sec_node[c->nsec] = c->sec_node[i], c->sec_length[c->nsec++] = c->sec_length[i];
       }
     }
     if (sec->kind == TSL_SURFACE_ELEMENT && sec->n > 0) {
-      PetscInt ps = ElementSection(g, e0);
+      PetscInt ps  = ElementSection(g, e0);
       c->kin       = TslElementTypeGet(g->elem_type[TslModelElementIndex(g, e0)])->kin;
       c->thickness = ps >= 0 && g->sections[ps].thickness > 0 ? g->sections[ps].thickness : 1.0;
     } else {
@@ -258,13 +264,15 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
   PetscCall(TslModelIndex(g));
   PetscCall(PrepareContactPairs(g));
   PetscCall(PetscOptionsGetString(NULL, NULL, "-tsl_partition", method, sizeof(method), NULL));
-  PetscCheck(g->nelem >= size, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "the model has %" PetscInt_FMT " elements, fewer than the %d ranks", g->nelem, (int)size);
+  PetscCheck(g->nelem >= size, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "the model has %" PetscInt_FMT " elements, fewer than the %d ranks", g->nelem,
+             (int)size);
   PetscCall(PetscMalloc4(g->nelem, &epart, g->nnode, &owner, g->nnode, &gnum, g->nnode, &node_nat));
   PetscCall(PetscMalloc4(g->nelem, &elem_nat, g->nnode, &node_by_id, g->nelem, &elem_by_id, g->nnode, &mark));
   PetscCall(PetscCalloc2(size, &count, size + 1, &offset));
 
   {
-    PetscBool metis = (PetscBool)!strcmp(method, "metis"), axis = (PetscBool)(!strncmp(method, "axis_", 5) && method[5] >= 'x' && method[5] <= 'z' && !method[6]);
+    PetscBool metis = (PetscBool)!strcmp(method, "metis"),
+              axis  = (PetscBool)(!strncmp(method, "axis_", 5) && method[5] >= 'x' && method[5] <= 'z' && !method[6]);
     PetscInt *count_e;
     PetscBool empty = PETSC_FALSE;
 
@@ -320,8 +328,8 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
     if (!eq->gdof) PetscCall(PetscMalloc1(eq->n, &eq->gdof));
     for (PetscInt t = 0; t < eq->n; t++) {
       PetscInt p = TslModelNodeIndex(g, eq->node[t]);
-      PetscCheck(p >= 0 && owner[p] >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: *EQUATION node %" PetscInt_FMT " does not belong to any element",
-                 TslLocString(g, eq->loc, loc, sizeof(loc)), eq->node[t]);
+      PetscCheck(p >= 0 && owner[p] >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                 "%s: *EQUATION node %" PetscInt_FMT " does not belong to any element", TslLocString(g, eq->loc, loc, sizeof(loc)), eq->node[t]);
       eq->gdof[t] = gnum[p] * ndof + DofOffset(g->dim, eq->dof[t]);
     }
   }
@@ -369,7 +377,8 @@ PetscErrorCode TslMeshDistribute(MPI_Comm comm, TslModel **global, TslModel **lo
     unsigned long n;
     char         *buf;
     PetscCallMPI(MPI_Recv(&n, 1, MPI_UNSIGNED_LONG, 0, 0, comm, MPI_STATUS_IGNORE));
-    if (n == 0) ierr = PETSC_ERR_USER_INPUT;
+    if (n == 0)
+      ierr = PETSC_ERR_USER_INPUT;
     else {
       PetscCall(PetscMalloc1(n, &buf));
       PetscCallMPI(MPI_Recv(buf, (int)n, MPI_BYTE, 0, 1, comm, MPI_STATUS_IGNORE));

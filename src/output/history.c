@@ -5,10 +5,10 @@
 #include <string.h>
 #include <unistd.h>
 
-PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobname, PetscInt ncol,
-                                const char *const names[], TslHistory *hist) {
+PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobname, PetscInt ncol, const char *const names[], TslHistory *hist)
+{
   TslHistory h;
-  int err = 0;
+  int        err = 0;
 
   PetscFunctionBeginUser;
   PetscCheck(hist, comm, PETSC_ERR_ARG_NULL, "TslHistoryCreate(): hist is NULL");
@@ -45,7 +45,8 @@ PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobn
 }
 
 /* Collective: the values are taken from rank 0, and a write failure is raised on every rank. */
-PetscErrorCode TslHistoryAppend(TslHistory hist, const PetscReal vals[]) {
+PetscErrorCode TslHistoryAppend(TslHistory hist, const PetscReal vals[])
+{
   int err = 0;
 
   PetscFunctionBeginUser;
@@ -59,7 +60,8 @@ PetscErrorCode TslHistoryAppend(TslHistory hist, const PetscReal vals[]) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslHistoryFinalize(TslHistory hist) {
+PetscErrorCode TslHistoryFinalize(TslHistory hist)
+{
   int err = 0;
 
   PetscFunctionBeginUser;
@@ -76,7 +78,8 @@ PetscErrorCode TslHistoryFinalize(TslHistory hist) {
 }
 
 /* Collective. Without a Finalize the .csv.part goes and an earlier <job>.csv stays. */
-PetscErrorCode TslHistoryDestroy(TslHistory *hist) {
+PetscErrorCode TslHistoryDestroy(TslHistory *hist)
+{
   TslHistory h;
 
   PetscFunctionBeginUser;

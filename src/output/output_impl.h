@@ -7,9 +7,9 @@
 
 /* Checks an HDF5 return value (herr_t or hid_t: negative means failure) and raises a PETSc error
  * naming the call and the file, so that no HDF5 failure passes silently. */
-#define TslH5Check(comm, expr, path)                                                                                   \
-  do {                                                                                                                 \
-    if ((expr) < 0) SETERRQ((comm), PETSC_ERR_LIB, "HDF5 call %s failed on %s", #expr, (path));                        \
+#define TslH5Check(comm, expr, path)                                                                                                                 \
+  do {                                                                                                                                               \
+    if ((expr) < 0) SETERRQ((comm), PETSC_ERR_LIB, "HDF5 call %s failed on %s", #expr, (path));                                                      \
   } while (0)
 
 /* Moves per-item records from "each rank its own items, any natural indices" to "each rank one
@@ -17,47 +17,46 @@
  * more). Set up once per index set (nodes, elements); then any fixed-width record can be moved.
  * Memory is O(local items + block + ranks); nothing is of global size. */
 typedef struct {
-  PetscInt nglobal;                               /* N */
-  PetscInt nlocal;                                /* items this rank hands over */
-  PetscInt bstart;                                /* first natural index of this rank's block */
-  PetscInt nblock;                                /* size of this rank's block */
+  PetscInt     nglobal;                           /* N */
+  PetscInt     nlocal;                            /* items this rank hands over */
+  PetscInt     bstart;                            /* first natural index of this rank's block */
+  PetscInt     nblock;                            /* size of this rank's block */
   PetscMPIInt *scount, *sdispl, *rcount, *rdispl; /* per rank, in items */
-  PetscInt *sorder;                               /* sorder[k]: local item placed k-th in the send buffer */
-  PetscInt *rslot;                                /* rslot[k]: block position of the k-th received item */
+  PetscInt    *sorder;                            /* sorder[k]: local item placed k-th in the send buffer */
+  PetscInt    *rslot;                             /* rslot[k]: block position of the k-th received item */
 } TslRedist;
 
-PetscErrorCode TslRedistSetUp(MPI_Comm comm, PetscInt nglobal, PetscInt nlocal, const PetscInt nat[], const char *what,
-                              TslRedist *rd);
+PetscErrorCode TslRedistSetUp(MPI_Comm comm, PetscInt nglobal, PetscInt nlocal, const PetscInt nat[], const char *what, TslRedist *rd);
 PetscErrorCode TslRedistMove(MPI_Comm comm, const TslRedist *rd, size_t width, const void *src, void *dst);
 PetscErrorCode TslRedistReset(TslRedist *rd);
 
 /* What the .xmf needs to know about a frame; kept on every rank (small: names and sizes only). */
 typedef struct {
-  char name[TSL_NAME_LEN];
-  PetscInt ncomp;
+  char      name[TSL_NAME_LEN];
+  PetscInt  ncomp;
   PetscBool on_cells;
 } TslOutputFieldInfo;
 
 typedef struct {
-  PetscInt step, increment;
-  PetscReal time;
-  PetscInt nfield, maxfield;
+  PetscInt            step, increment;
+  PetscReal           time;
+  PetscInt            nfield, maxfield;
   TslOutputFieldInfo *fields;
 } TslOutputFrameInfo;
 
 struct _p_TslOutput {
-  MPI_Comm comm;
-  PetscMPIInt rank;
-  char job[TSL_NAME_LEN];
-  char h5_base[PETSC_MAX_PATH_LEN]; /* "<job>.h5", as the .xmf refers to it */
-  char h5_part[PETSC_MAX_PATH_LEN], h5_final[PETSC_MAX_PATH_LEN];
-  char xmf_part[PETSC_MAX_PATH_LEN], xmf_tmp[PETSC_MAX_PATH_LEN], xmf_final[PETSC_MAX_PATH_LEN];
-  hid_t file, dxpl, frame_group;
-  PetscBool mesh_set, in_frame, finalized;
-  PetscInt nnode_global, nelem_global;
-  int64_t topo_len; /* length of /mesh/topology */
-  TslRedist nodes, elems;
-  PetscInt nframe, maxframe;
+  MPI_Comm            comm;
+  PetscMPIInt         rank;
+  char                job[TSL_NAME_LEN];
+  char                h5_base[PETSC_MAX_PATH_LEN]; /* "<job>.h5", as the .xmf refers to it */
+  char                h5_part[PETSC_MAX_PATH_LEN], h5_final[PETSC_MAX_PATH_LEN];
+  char                xmf_part[PETSC_MAX_PATH_LEN], xmf_tmp[PETSC_MAX_PATH_LEN], xmf_final[PETSC_MAX_PATH_LEN];
+  hid_t               file, dxpl, frame_group;
+  PetscBool           mesh_set, in_frame, finalized;
+  PetscInt            nnode_global, nelem_global;
+  int64_t             topo_len; /* length of /mesh/topology */
+  TslRedist           nodes, elems;
+  PetscInt            nframe, maxframe;
   TslOutputFrameInfo *frames;
 };
 
@@ -69,15 +68,14 @@ PetscErrorCode TslOutputWriteXmf(TslOutput out, const char *path, int *err);
 PetscErrorCode TslOutputCheckRoot(MPI_Comm comm, int err, const char *action, const char *path);
 
 /* Builds dir/name+suffix into buf, failing if it does not fit. */
-PetscErrorCode TslOutputPath(MPI_Comm comm, const char *dir, const char *name, const char *suffix, char buf[],
-                             size_t len);
+PetscErrorCode TslOutputPath(MPI_Comm comm, const char *dir, const char *name, const char *suffix, char buf[], size_t len);
 PetscErrorCode TslOutputCheckName(MPI_Comm comm, const char *kind, const char *name, const char *forbidden);
 
 struct _p_TslHistory {
-  MPI_Comm comm;
+  MPI_Comm    comm;
   PetscMPIInt rank;
-  PetscInt ncol;
-  FILE *fp; /* rank 0 only */
-  char part[PETSC_MAX_PATH_LEN], final[PETSC_MAX_PATH_LEN];
-  PetscBool finalized;
+  PetscInt    ncol;
+  FILE       *fp; /* rank 0 only */
+  char        part[PETSC_MAX_PATH_LEN], final[PETSC_MAX_PATH_LEN];
+  PetscBool   finalized;
 };

@@ -6,30 +6,32 @@
 
 /* Owner of natural index i in the split of n items over size ranks where the first n % size ranks get
  * n / size + 1 items (PetscSplitOwnership). */
-static PetscMPIInt BlockOwner(PetscInt n, PetscMPIInt size, PetscInt i) {
+static PetscMPIInt BlockOwner(PetscInt n, PetscMPIInt size, PetscInt i)
+{
   const PetscInt q = n / size, rem = n % size, big = rem * (q + 1);
   if (i < big) return (PetscMPIInt)(i / (q + 1));
   return (PetscMPIInt)(rem + (i - big) / q);
 }
 
-static PetscInt BlockStart(PetscInt n, PetscMPIInt size, PetscMPIInt r) {
+static PetscInt BlockStart(PetscInt n, PetscMPIInt size, PetscMPIInt r)
+{
   const PetscInt q = n / size, rem = n % size;
   return r * q + PetscMin((PetscInt)r, rem);
 }
 
-PetscErrorCode TslRedistSetUp(MPI_Comm comm, PetscInt nglobal, PetscInt nlocal, const PetscInt nat[], const char *what,
-                              TslRedist *rd) {
+PetscErrorCode TslRedistSetUp(MPI_Comm comm, PetscInt nglobal, PetscInt nlocal, const PetscInt nat[], const char *what, TslRedist *rd)
+{
   PetscMPIInt size, rank;
-  PetscInt total, nrecv, *sendnat, *recvnat, *next;
-  char *seen;
+  PetscInt    total, nrecv, *sendnat, *recvnat, *next;
+  char       *seen;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(rd, sizeof(*rd)));
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCallMPI(MPI_Allreduce(&nlocal, &total, 1, MPIU_INT, MPI_SUM, comm));
-  PetscCheck(total == nglobal, comm, PETSC_ERR_ARG_SIZ,
-             "%s: ranks hand over %" PetscInt_FMT " in all, expected %" PetscInt_FMT, what, total, nglobal);
+  PetscCheck(total == nglobal, comm, PETSC_ERR_ARG_SIZ, "%s: ranks hand over %" PetscInt_FMT " in all, expected %" PetscInt_FMT, what, total,
+             nglobal);
   {
     PetscInt bad = -1, anybad;
     for (PetscInt k = 0; k < nlocal && bad < 0; k++)
@@ -37,14 +39,13 @@ PetscErrorCode TslRedistSetUp(MPI_Comm comm, PetscInt nglobal, PetscInt nlocal, 
     anybad = bad < 0 ? 0 : 1; /* checked collectively so that no rank is left waiting in a collective */
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &anybad, 1, MPIU_INT, MPI_MAX, comm));
     PetscCheck(!anybad, comm, PETSC_ERR_ARG_OUTOFRANGE,
-               "%s: natural index out of range [0, %" PetscInt_FMT ") (this rank: %" PetscInt_FMT ", -1 = none)", what,
-               nglobal, bad);
+               "%s: natural index out of range [0, %" PetscInt_FMT ") (this rank: %" PetscInt_FMT ", -1 = none)", what, nglobal, bad);
   }
 
   rd->nglobal = nglobal;
-  rd->nlocal = nlocal;
-  rd->bstart = BlockStart(nglobal, size, rank);
-  rd->nblock = BlockStart(nglobal, size, rank + 1) - rd->bstart;
+  rd->nlocal  = nlocal;
+  rd->bstart  = BlockStart(nglobal, size, rank);
+  rd->nblock  = BlockStart(nglobal, size, rank + 1) - rd->bstart;
   PetscCall(PetscCalloc4(size, &rd->scount, size, &rd->sdispl, size, &rd->rcount, size, &rd->rdispl));
   PetscCall(PetscMalloc1(nlocal, &rd->sorder));
   PetscCall(PetscMalloc1(rd->nblock, &rd->rslot));
@@ -66,8 +67,7 @@ PetscErrorCode TslRedistSetUp(MPI_Comm comm, PetscInt nglobal, PetscInt nlocal, 
    * that no rank is left waiting in a later collective. */
   PetscCall(PetscMalloc2(nlocal, &sendnat, nrecv, &recvnat));
   for (PetscInt k = 0; k < nlocal; k++) sendnat[k] = nat[rd->sorder[k]];
-  PetscCallMPI(
-      MPI_Alltoallv(sendnat, rd->scount, rd->sdispl, MPIU_INT, recvnat, rd->rcount, rd->rdispl, MPIU_INT, comm));
+  PetscCallMPI(MPI_Alltoallv(sendnat, rd->scount, rd->sdispl, MPIU_INT, recvnat, rd->rcount, rd->rdispl, MPIU_INT, comm));
   PetscCall(PetscCalloc1(rd->nblock, &seen));
   {
     PetscInt dup = -1, anydup;
@@ -81,9 +81,7 @@ PetscErrorCode TslRedistSetUp(MPI_Comm comm, PetscInt nglobal, PetscInt nlocal, 
     anydup = dup < 0 ? 0 : 1;
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &anydup, 1, MPIU_INT, MPI_MAX, comm));
     PetscCheck(!anydup, comm, PETSC_ERR_ARG_WRONG,
-               "%s: natural indices are not disjoint across ranks (this rank's block: near %" PetscInt_FMT
-               ", -1 = fine)",
-               what, dup);
+               "%s: natural indices are not disjoint across ranks (this rank's block: near %" PetscInt_FMT ", -1 = fine)", what, dup);
   }
   PetscCall(PetscFree(seen));
   PetscCall(PetscFree2(sendnat, recvnat));
@@ -91,12 +89,13 @@ PetscErrorCode TslRedistSetUp(MPI_Comm comm, PetscInt nglobal, PetscInt nlocal, 
 }
 
 /* src: nlocal records of width bytes in the caller's item order; dst: nblock records in natural order. */
-PetscErrorCode TslRedistMove(MPI_Comm comm, const TslRedist *rd, size_t width, const void *src, void *dst) {
+PetscErrorCode TslRedistMove(MPI_Comm comm, const TslRedist *rd, size_t width, const void *src, void *dst)
+{
   MPI_Datatype rec;
-  char *sbuf, *rbuf;
-  const char *s = (const char *)src;
-  char *d = (char *)dst;
-  PetscMPIInt iwidth;
+  char        *sbuf, *rbuf;
+  const char  *s = (const char *)src;
+  char        *d = (char *)dst;
+  PetscMPIInt  iwidth;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMPIIntCast((PetscInt)width, &iwidth));
@@ -111,7 +110,8 @@ PetscErrorCode TslRedistMove(MPI_Comm comm, const TslRedist *rd, size_t width, c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslRedistReset(TslRedist *rd) {
+PetscErrorCode TslRedistReset(TslRedist *rd)
+{
   PetscFunctionBeginUser;
   PetscCall(PetscFree4(rd->scount, rd->sdispl, rd->rcount, rd->rdispl));
   PetscCall(PetscFree(rd->sorder));

@@ -6,8 +6,8 @@
 #include <string.h>
 #include <unistd.h>
 
-PetscErrorCode TslOutputPath(MPI_Comm comm, const char *dir, const char *name, const char *suffix, char buf[],
-                             size_t len) {
+PetscErrorCode TslOutputPath(MPI_Comm comm, const char *dir, const char *name, const char *suffix, char buf[], size_t len)
+{
   int n;
 
   PetscFunctionBeginUser;
@@ -18,44 +18,44 @@ PetscErrorCode TslOutputPath(MPI_Comm comm, const char *dir, const char *name, c
 
 /* Names end up in HDF5 paths ("/" separates groups), in "file.h5:/path" references (":" splits them)
  * and in XML attributes; reject what would break any of them rather than escaping it three ways. */
-PetscErrorCode TslOutputCheckName(MPI_Comm comm, const char *kind, const char *name, const char *forbidden) {
+PetscErrorCode TslOutputCheckName(MPI_Comm comm, const char *kind, const char *name, const char *forbidden)
+{
   size_t len;
 
   PetscFunctionBeginUser;
   PetscCheck(name, comm, PETSC_ERR_ARG_NULL, "%s name is NULL", kind);
   len = strlen(name);
-  PetscCheck(len > 0 && len < TSL_NAME_LEN, comm, PETSC_ERR_ARG_WRONG, "%s name \"%s\" must have 1 to %d characters",
-             kind, name, TSL_NAME_LEN - 1);
-  PetscCheck(strcmp(name, ".") && strcmp(name, ".."), comm, PETSC_ERR_ARG_WRONG, "%s name \"%s\" is not allowed", kind,
-             name);
+  PetscCheck(len > 0 && len < TSL_NAME_LEN, comm, PETSC_ERR_ARG_WRONG, "%s name \"%s\" must have 1 to %d characters", kind, name, TSL_NAME_LEN - 1);
+  PetscCheck(strcmp(name, ".") && strcmp(name, ".."), comm, PETSC_ERR_ARG_WRONG, "%s name \"%s\" is not allowed", kind, name);
   for (size_t i = 0; i < len; i++)
     PetscCheck(!strchr(forbidden, name[i]) && (unsigned char)name[i] >= 32, comm, PETSC_ERR_ARG_WRONG,
-               "%s name \"%s\" contains a forbidden character (any of \"%s\" or a control character)", kind, name,
-               forbidden);
+               "%s name \"%s\" contains a forbidden character (any of \"%s\" or a control character)", kind, name, forbidden);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslOutputCheckRoot(MPI_Comm comm, int err, const char *action, const char *path) {
+PetscErrorCode TslOutputCheckRoot(MPI_Comm comm, int err, const char *action, const char *path)
+{
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, comm));
   PetscCheck(!err, comm, PETSC_ERR_FILE_WRITE, "Cannot %s %s: %s", action, path, strerror(err));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobname, TslOutput *out) {
-  TslOutput o;
-  hid_t fapl, grp;
+PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobname, TslOutput *out)
+{
+  TslOutput   o;
+  hid_t       fapl, grp;
   H5E_auto2_t efunc;
-  void *edata;
+  void       *edata;
 
   PetscFunctionBeginUser;
   PetscCheck(out, comm, PETSC_ERR_ARG_NULL, "TslOutputCreate(): out is NULL");
   *out = NULL;
   PetscCall(TslOutputCheckName(comm, "Job", jobname, "/:\"<>&'"));
   PetscCall(PetscNew(&o));
-  o->comm = comm;
-  o->file = H5I_INVALID_HID;
-  o->dxpl = H5I_INVALID_HID;
+  o->comm        = comm;
+  o->file        = H5I_INVALID_HID;
+  o->dxpl        = H5I_INVALID_HID;
   o->frame_group = H5I_INVALID_HID;
   PetscCallMPI(MPI_Comm_rank(comm, &o->rank));
   PetscCall(PetscStrncpy(o->job, jobname, sizeof(o->job)));
@@ -83,8 +83,7 @@ PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobna
     PetscCall(PetscStrncpy(path, o->h5_part, sizeof(path)));
     PetscCall(PetscFree(o));
     *out = NULL;
-    SETERRQ(comm, PETSC_ERR_FILE_OPEN, "Cannot create output file %s (does the directory exist and is it writable?)",
-            path);
+    SETERRQ(comm, PETSC_ERR_FILE_OPEN, "Cannot create output file %s (does the directory exist and is it writable?)", path);
   }
 
   TslH5Check(comm, o->dxpl = H5Pcreate(H5P_DATASET_XFER), o->h5_part);
@@ -98,17 +97,17 @@ PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobna
 
 /* Creates dataset name under loc with global shape [gdim0] (dim1 == 0) or [gdim0][dim1] and writes
  * rows [start, start+count) from buf collectively. Every rank calls it, possibly with count 0. */
-static PetscErrorCode WriteRows(TslOutput out, hid_t loc, const char *name, hid_t filetype, hid_t memtype,
-                                hsize_t gdim0, hsize_t dim1, hsize_t start, hsize_t count, const void *buf) {
-  const int rank = dim1 ? 2 : 1;
-  hsize_t gdims[2] = {gdim0, dim1}, mdims[2] = {count ? count : 1, dim1}, off[2] = {start, 0}, cnt[2] = {count, dim1};
-  hid_t fspace, mspace, dset;
-  double dummy = 0; /* HDF5 rejects a NULL buffer even for an empty selection */
+static PetscErrorCode WriteRows(TslOutput out, hid_t loc, const char *name, hid_t filetype, hid_t memtype, hsize_t gdim0, hsize_t dim1, hsize_t start,
+                                hsize_t count, const void *buf)
+{
+  const int rank     = dim1 ? 2 : 1;
+  hsize_t   gdims[2] = {gdim0, dim1}, mdims[2] = {count ? count : 1, dim1}, off[2] = {start, 0}, cnt[2] = {count, dim1};
+  hid_t     fspace, mspace, dset;
+  double    dummy = 0; /* HDF5 rejects a NULL buffer even for an empty selection */
 
   PetscFunctionBeginUser;
   TslH5Check(out->comm, fspace = H5Screate_simple(rank, gdims, NULL), out->h5_part);
-  TslH5Check(out->comm, dset = H5Dcreate2(loc, name, filetype, fspace, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-             out->h5_part);
+  TslH5Check(out->comm, dset = H5Dcreate2(loc, name, filetype, fspace, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), out->h5_part);
   TslH5Check(out->comm, mspace = H5Screate_simple(rank, mdims, NULL), out->h5_part);
   if (count) {
     TslH5Check(out->comm, H5Sselect_hyperslab(fspace, H5S_SELECT_SET, off, NULL, cnt, NULL), out->h5_part);
@@ -116,8 +115,7 @@ static PetscErrorCode WriteRows(TslOutput out, hid_t loc, const char *name, hid_
     TslH5Check(out->comm, H5Sselect_none(fspace), out->h5_part);
     TslH5Check(out->comm, H5Sselect_none(mspace), out->h5_part);
   }
-  TslH5Check(out->comm, H5Dwrite(dset, memtype, mspace, fspace, out->dxpl, count ? buf : (const void *)&dummy),
-             out->h5_part);
+  TslH5Check(out->comm, H5Dwrite(dset, memtype, mspace, fspace, out->dxpl, count ? buf : (const void *)&dummy), out->h5_part);
   TslH5Check(out->comm, H5Sclose(mspace), out->h5_part);
   TslH5Check(out->comm, H5Sclose(fspace), out->h5_part);
   TslH5Check(out->comm, H5Dclose(dset), out->h5_part);
@@ -125,15 +123,15 @@ static PetscErrorCode WriteRows(TslOutput out, hid_t loc, const char *name, hid_
 }
 
 /* Moves one int per item to the natural blocks and writes it as int64. */
-static PetscErrorCode WriteIds(TslOutput out, const TslRedist *rd, const char *name, const PetscInt ids[]) {
+static PetscErrorCode WriteIds(TslOutput out, const TslRedist *rd, const char *name, const PetscInt ids[])
+{
   int64_t *loc, *blk;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc2(rd->nlocal, &loc, rd->nblock, &blk));
   for (PetscInt k = 0; k < rd->nlocal; k++) loc[k] = ids[k];
   PetscCall(TslRedistMove(out->comm, rd, sizeof(int64_t), loc, blk));
-  PetscCall(WriteRows(out, out->file, name, H5T_STD_I64LE, H5T_NATIVE_INT64, (hsize_t)rd->nglobal, 0,
-                      (hsize_t)rd->bstart, (hsize_t)rd->nblock, blk));
+  PetscCall(WriteRows(out, out->file, name, H5T_STD_I64LE, H5T_NATIVE_INT64, (hsize_t)rd->nglobal, 0, (hsize_t)rd->bstart, (hsize_t)rd->nblock, blk));
   PetscCall(PetscFree2(loc, blk));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -141,11 +139,11 @@ static PetscErrorCode WriteIds(TslOutput out, const TslRedist *rd, const char *n
 /* /mesh/topology: XDMF Mixed records [type, n0, n1, ...] in natural element order. Records differ in
  * length, so they travel padded to the longest one; each block then packs its records and finds its
  * offset in the file by an exclusive scan of the block lengths. */
-static PetscErrorCode WriteTopology(TslOutput out, PetscInt nelem, const PetscInt xdmf_type[], const PetscInt ptr[],
-                                    const PetscInt conn[]) {
-  const TslRedist *rd = &out->elems;
-  PetscInt maxlen = 0, badnode = -1, anybad;
-  int64_t *pad, *blkpad, *rec, blklen = 0, offset = 0, total = 0;
+static PetscErrorCode WriteTopology(TslOutput out, PetscInt nelem, const PetscInt xdmf_type[], const PetscInt ptr[], const PetscInt conn[])
+{
+  const TslRedist *rd     = &out->elems;
+  PetscInt         maxlen = 0, badnode = -1, anybad;
+  int64_t         *pad, *blkpad, *rec, blklen = 0, offset = 0, total = 0;
 
   PetscFunctionBeginUser;
   for (PetscInt e = 0; e < nelem; e++) {
@@ -157,8 +155,8 @@ static PetscErrorCode WriteTopology(TslOutput out, PetscInt nelem, const PetscIn
   anybad = badnode == -1 ? 0 : 1;
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &anybad, 1, MPIU_INT, MPI_MAX, out->comm));
   PetscCheck(!anybad, out->comm, PETSC_ERR_ARG_OUTOFRANGE,
-             "Element connectivity: empty element, bad cell type or node index outside [0, %" PetscInt_FMT
-             ") (this rank: %" PetscInt_FMT ", -1 = fine, -2 = empty element or type)",
+             "Element connectivity: empty element, bad cell type or node index outside [0, %" PetscInt_FMT ") (this rank: %" PetscInt_FMT
+             ", -1 = fine, -2 = empty element or type)",
              out->nnode_global, badnode);
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &maxlen, 1, MPIU_INT, MPI_MAX, out->comm));
   if (maxlen == 0) maxlen = 1; /* no elements at all */
@@ -166,7 +164,7 @@ static PetscErrorCode WriteTopology(TslOutput out, PetscInt nelem, const PetscIn
   PetscCall(PetscMalloc2(nelem * maxlen, &pad, rd->nblock * maxlen, &blkpad));
   for (PetscInt e = 0; e < nelem; e++) {
     int64_t *r = pad + e * maxlen;
-    r[0] = xdmf_type[e];
+    r[0]       = xdmf_type[e];
     for (PetscInt j = ptr[e]; j < ptr[e + 1]; j++) r[1 + j - ptr[e]] = conn[j];
     for (PetscInt j = 1 + ptr[e + 1] - ptr[e]; j < maxlen; j++) r[j] = -1;
   }
@@ -188,17 +186,16 @@ static PetscErrorCode WriteTopology(TslOutput out, PetscInt nelem, const PetscIn
   if (out->rank == 0) offset = 0; /* MPI_Exscan leaves rank 0's result undefined */
   PetscCallMPI(MPI_Allreduce(&blklen, &total, 1, MPI_INT64_T, MPI_SUM, out->comm));
   out->topo_len = total;
-  PetscCall(WriteRows(out, out->file, "/mesh/topology", H5T_STD_I64LE, H5T_NATIVE_INT64, (hsize_t)total, 0,
-                      (hsize_t)offset, (hsize_t)blklen, rec));
+  PetscCall(WriteRows(out, out->file, "/mesh/topology", H5T_STD_I64LE, H5T_NATIVE_INT64, (hsize_t)total, 0, (hsize_t)offset, (hsize_t)blklen, rec));
   PetscCall(PetscFree(rec));
   PetscCall(PetscFree2(pad, blkpad));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslOutputSetMesh(TslOutput out, PetscInt nnode_global, PetscInt nnode, const PetscInt node_nat[],
-                                const PetscInt node_id[], const PetscReal xyz[], PetscInt nelem_global, PetscInt nelem,
-                                const PetscInt elem_nat[], const PetscInt elem_id[], const PetscInt xdmf_type[],
-                                const PetscInt ptr[], const PetscInt conn[]) {
+PetscErrorCode TslOutputSetMesh(TslOutput out, PetscInt nnode_global, PetscInt nnode, const PetscInt node_nat[], const PetscInt node_id[],
+                                const PetscReal xyz[], PetscInt nelem_global, PetscInt nelem, const PetscInt elem_nat[], const PetscInt elem_id[],
+                                const PetscInt xdmf_type[], const PetscInt ptr[], const PetscInt conn[])
+{
   PetscReal *blkxyz;
 
   PetscFunctionBeginUser;
@@ -211,8 +208,8 @@ PetscErrorCode TslOutputSetMesh(TslOutput out, PetscInt nnode_global, PetscInt n
 
   PetscCall(PetscMalloc1(3 * out->nodes.nblock, &blkxyz));
   PetscCall(TslRedistMove(out->comm, &out->nodes, 3 * sizeof(PetscReal), xyz, blkxyz));
-  PetscCall(WriteRows(out, out->file, "/mesh/coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, (hsize_t)nnode_global, 3,
-                      (hsize_t)out->nodes.bstart, (hsize_t)out->nodes.nblock, blkxyz));
+  PetscCall(WriteRows(out, out->file, "/mesh/coordinates", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, (hsize_t)nnode_global, 3, (hsize_t)out->nodes.bstart,
+                      (hsize_t)out->nodes.nblock, blkxyz));
   PetscCall(PetscFree(blkxyz));
   PetscCall(WriteIds(out, &out->nodes, "/mesh/node_ids", node_id));
   PetscCall(WriteIds(out, &out->elems, "/mesh/element_ids", elem_id));
@@ -221,8 +218,8 @@ PetscErrorCode TslOutputSetMesh(TslOutput out, PetscInt nnode_global, PetscInt n
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode WriteAttribute(TslOutput out, hid_t loc, const char *name, hid_t filetype, hid_t memtype,
-                                     const void *val) {
+static PetscErrorCode WriteAttribute(TslOutput out, hid_t loc, const char *name, hid_t filetype, hid_t memtype, const void *val)
+{
   hid_t space, attr;
 
   PetscFunctionBeginUser;
@@ -234,11 +231,12 @@ static PetscErrorCode WriteAttribute(TslOutput out, hid_t loc, const char *name,
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslOutputBeginFrame(TslOutput out, PetscInt step, PetscInt increment, PetscReal time) {
+PetscErrorCode TslOutputBeginFrame(TslOutput out, PetscInt step, PetscInt increment, PetscReal time)
+{
   TslOutputFrameInfo *f;
-  char gname[32];
-  int64_t istep = step, iinc = increment;
-  double t = time;
+  char                gname[32];
+  int64_t             istep = step, iinc = increment;
+  double              t = time;
 
   PetscFunctionBeginUser;
   PetscCheck(out->mesh_set, out->comm, PETSC_ERR_ORDER, "TslOutputSetMesh() must come before the first frame");
@@ -246,22 +244,21 @@ PetscErrorCode TslOutputBeginFrame(TslOutput out, PetscInt step, PetscInt increm
   PetscCheck(!out->finalized, out->comm, PETSC_ERR_ORDER, "Output %s already finalized", out->h5_final);
   if (out->nframe == out->maxframe) {
     TslOutputFrameInfo *more;
-    PetscInt newmax = PetscMax(8, 2 * out->maxframe);
+    PetscInt            newmax = PetscMax(8, 2 * out->maxframe);
     PetscCall(PetscCalloc1(newmax, &more));
     if (out->nframe) PetscCall(PetscArraycpy(more, out->frames, out->nframe));
     PetscCall(PetscFree(out->frames));
-    out->frames = more;
+    out->frames   = more;
     out->maxframe = newmax;
   }
-  f = &out->frames[out->nframe];
-  f->step = step;
+  f            = &out->frames[out->nframe];
+  f->step      = step;
   f->increment = increment;
-  f->time = time;
-  f->nfield = 0;
+  f->time      = time;
+  f->nfield    = 0;
   PetscCheck(out->nframe + 1 <= 999999, out->comm, PETSC_ERR_SUP, "More than 999999 output frames");
   snprintf(gname, sizeof(gname), "/frames/%06d", (int)(out->nframe + 1));
-  TslH5Check(out->comm, out->frame_group = H5Gcreate2(out->file, gname, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-             out->h5_part);
+  TslH5Check(out->comm, out->frame_group = H5Gcreate2(out->file, gname, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), out->h5_part);
   PetscCall(WriteAttribute(out, out->frame_group, "time", H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, &t));
   PetscCall(WriteAttribute(out, out->frame_group, "step", H5T_STD_I64LE, H5T_NATIVE_INT64, &istep));
   PetscCall(WriteAttribute(out, out->frame_group, "increment", H5T_STD_I64LE, H5T_NATIVE_INT64, &iinc));
@@ -270,11 +267,11 @@ PetscErrorCode TslOutputBeginFrame(TslOutput out, PetscInt step, PetscInt increm
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode WriteField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[],
-                                 PetscBool on_cells) {
-  const TslRedist *rd = on_cells ? &out->elems : &out->nodes;
+static PetscErrorCode WriteField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[], PetscBool on_cells)
+{
+  const TslRedist    *rd = on_cells ? &out->elems : &out->nodes;
   TslOutputFrameInfo *f;
-  PetscReal *blk;
+  PetscReal          *blk;
 
   PetscFunctionBeginUser;
   PetscCall(TslOutputCheckName(out->comm, "Field", name, "/:\"<>&'"));
@@ -282,37 +279,38 @@ static PetscErrorCode WriteField(TslOutput out, const char *name, PetscInt ncomp
   PetscCheck(ncomp >= 1, out->comm, PETSC_ERR_ARG_OUTOFRANGE, "Field %s: ncomp %" PetscInt_FMT " < 1", name, ncomp);
   f = &out->frames[out->nframe - 1];
   for (PetscInt i = 0; i < f->nfield; i++)
-    PetscCheck(strcmp(f->fields[i].name, name), out->comm, PETSC_ERR_ARG_WRONG, "Field %s written twice in one frame",
-               name);
+    PetscCheck(strcmp(f->fields[i].name, name), out->comm, PETSC_ERR_ARG_WRONG, "Field %s written twice in one frame", name);
   if (f->nfield == f->maxfield) {
     TslOutputFieldInfo *more;
-    PetscInt newmax = PetscMax(8, 2 * f->maxfield);
+    PetscInt            newmax = PetscMax(8, 2 * f->maxfield);
     PetscCall(PetscCalloc1(newmax, &more));
     if (f->nfield) PetscCall(PetscArraycpy(more, f->fields, f->nfield));
     PetscCall(PetscFree(f->fields));
-    f->fields = more;
+    f->fields   = more;
     f->maxfield = newmax;
   }
 
   PetscCall(PetscMalloc1(ncomp * rd->nblock, &blk));
   PetscCall(TslRedistMove(out->comm, rd, ncomp * sizeof(PetscReal), vals, blk));
-  PetscCall(WriteRows(out, out->frame_group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, (hsize_t)rd->nglobal,
-                      (hsize_t)ncomp, (hsize_t)rd->bstart, (hsize_t)rd->nblock, blk));
+  PetscCall(WriteRows(out, out->frame_group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, (hsize_t)rd->nglobal, (hsize_t)ncomp, (hsize_t)rd->bstart,
+                      (hsize_t)rd->nblock, blk));
   PetscCall(PetscFree(blk));
   PetscCall(PetscStrncpy(f->fields[f->nfield].name, name, sizeof(f->fields[f->nfield].name)));
-  f->fields[f->nfield].ncomp = ncomp;
+  f->fields[f->nfield].ncomp    = ncomp;
   f->fields[f->nfield].on_cells = on_cells;
   f->nfield++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslOutputNodeField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[]) {
+PetscErrorCode TslOutputNodeField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[])
+{
   PetscFunctionBeginUser;
   PetscCall(WriteField(out, name, ncomp, vals, PETSC_FALSE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslOutputElementField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[]) {
+PetscErrorCode TslOutputElementField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[])
+{
   PetscFunctionBeginUser;
   PetscCall(WriteField(out, name, ncomp, vals, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -320,7 +318,8 @@ PetscErrorCode TslOutputElementField(TslOutput out, const char *name, PetscInt n
 
 /* The .xmf.part is rewritten whole into a scratch name and renamed over, so that a reader (or a
  * crash) never sees a half-written XML file. */
-static PetscErrorCode RewriteXmf(TslOutput out) {
+static PetscErrorCode RewriteXmf(TslOutput out)
+{
   int err = 0;
 
   PetscFunctionBeginUser;
@@ -332,19 +331,21 @@ static PetscErrorCode RewriteXmf(TslOutput out) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslOutputEndFrame(TslOutput out) {
+PetscErrorCode TslOutputEndFrame(TslOutput out)
+{
   PetscFunctionBeginUser;
   PetscCheck(out->in_frame, out->comm, PETSC_ERR_ORDER, "TslOutputEndFrame() without TslOutputBeginFrame()");
   TslH5Check(out->comm, H5Gclose(out->frame_group), out->h5_part);
   out->frame_group = H5I_INVALID_HID;
-  out->in_frame = PETSC_FALSE;
+  out->in_frame    = PETSC_FALSE;
   /* The .xmf about to name this frame must not point at data still in HDF5's cache. */
   TslH5Check(out->comm, H5Fflush(out->file, H5F_SCOPE_GLOBAL), out->h5_part);
   PetscCall(RewriteXmf(out));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslOutputFinalize(TslOutput out) {
+PetscErrorCode TslOutputFinalize(TslOutput out)
+{
   int err = 0;
 
   PetscFunctionBeginUser;
@@ -364,7 +365,8 @@ PetscErrorCode TslOutputFinalize(TslOutput out) {
 }
 
 /* Collective. Without a Finalize the temporary files go, and the previous results stay. */
-PetscErrorCode TslOutputDestroy(TslOutput *out) {
+PetscErrorCode TslOutputDestroy(TslOutput *out)
+{
   TslOutput o;
 
   PetscFunctionBeginUser;

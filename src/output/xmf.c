@@ -7,7 +7,8 @@
 /* ParaView's XDMF reader wants 3 components for a Vector and 9 for a full Tensor. Six components are
  * written as a plain Matrix, not Tensor6: our stresses and strains are in the dialect's order (11, 22,
  * 33, 12, 13, 23), XDMF's Tensor6 is (xx, xy, xz, yy, yz, zz), and a reader would label them wrongly. */
-static const char *AttributeType(PetscInt ncomp) {
+static const char *AttributeType(PetscInt ncomp)
+{
   switch (ncomp) {
   case 1:
     return "Scalar";
@@ -20,7 +21,8 @@ static const char *AttributeType(PetscInt ncomp) {
   }
 }
 
-static void WriteMesh(FILE *fp, TslOutput out) {
+static void WriteMesh(FILE *fp, TslOutput out)
+{
   fprintf(fp, "        <Topology TopologyType=\"Mixed\" NumberOfElements=\"%" PetscInt_FMT "\">\n", out->nelem_global);
   fprintf(fp,
           "          <DataItem Dimensions=\"%lld\" NumberType=\"Int\" Precision=\"8\" "
@@ -35,12 +37,13 @@ static void WriteMesh(FILE *fp, TslOutput out) {
   fprintf(fp, "        </Geometry>\n");
 }
 
-PetscErrorCode TslOutputWriteXmf(TslOutput out, const char *path, int *err) {
+PetscErrorCode TslOutputWriteXmf(TslOutput out, const char *path, int *err)
+{
   FILE *fp;
 
   PetscFunctionBeginUser;
   *err = 0;
-  fp = fopen(path, "w");
+  fp   = fopen(path, "w");
   if (!fp) {
     *err = errno;
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -59,8 +62,8 @@ PetscErrorCode TslOutputWriteXmf(TslOutput out, const char *path, int *err) {
     WriteMesh(fp, out);
     for (PetscInt j = 0; j < f->nfield; j++) {
       const TslOutputFieldInfo *a = &f->fields[j];
-      fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"%s\">\n", a->name,
-              AttributeType(a->ncomp), a->on_cells ? "Cell" : "Node");
+      fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"%s\">\n", a->name, AttributeType(a->ncomp),
+              a->on_cells ? "Cell" : "Node");
       fprintf(fp,
               "          <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" "
               "Precision=\"8\" Format=\"HDF\">%s:/frames/%06d/%s</DataItem>\n",

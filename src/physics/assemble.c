@@ -7,7 +7,6 @@
  */
 #include "problem_impl.h"
 
-
 void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const PetscScalar *xoa, TslElemData *d)
 {
   const TslModel *m  = p->m;
@@ -53,7 +52,8 @@ static PetscErrorCode AddRow(AsmMode mode, Mat A, PetscScalar *f, PetscInt row, 
 
 /* Inserts an element block, applying the constraints: rows of prescribed dofs are dropped, rows of
  * dofs eliminated by an equation go to the other terms' rows with weight -c_k/c_0 (T^T R, T^T K). */
-PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[], const PetscReal K[])
+PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[],
+                                const PetscReal K[])
 {
   PetscFunctionBeginUser;
   for (PetscInt r = 0; r < n; r++) {
@@ -92,7 +92,7 @@ static PetscErrorCode FaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscR
 static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScalar *xa, const PetscScalar *xoa, PetscScalar *f, Mat A, AsmHeat *heat,
                                     PetscInt *bad_elem)
 {
-  const TslModel *m    = p->m;
+  const TslModel *m      = p->m;
   PetscBool       need_k = (mode == ASM_JACOBIAN);
   PetscReal      *R, *K;
   TslElemData     d;
@@ -123,8 +123,10 @@ static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScala
       PetscCall(TslElementFaceLoad(&d.in, r->kind, r->face, value, sink, R, need_k ? K : NULL, &h));
       PetscCall(TslProblemInsert(p, mode, A, f, d.nd, d.ld, R, need_k ? K : NULL));
       if (heat) {
-        if (r->kind == TSL_FACE_FILM) heat->film += h;
-        else if (r->kind != TSL_FACE_PRESSURE) heat->flux_in += h;
+        if (r->kind == TSL_FACE_FILM)
+          heat->film += h;
+        else if (r->kind != TSL_FACE_PRESSURE)
+          heat->flux_in += h;
       }
     }
   }
@@ -154,7 +156,8 @@ static PetscErrorCode CheckBadElement(TslProblem p, PetscInt bad)
   PetscCall(MPIU_Allreduce(loc, g, 3, MPIU_INT, MPI_MAX, p->comm));
   if (g[0] >= 0) {
     TslLoc l = {g[1], g[2]};
-    SETERRQ(p->comm, PETSC_ERR_USER_INPUT, "%s: element %" PetscInt_FMT " is inverted or degenerate (non-positive Jacobian determinant)", TslLocString(p->m, l, where, sizeof(where)), g[0]);
+    SETERRQ(p->comm, PETSC_ERR_USER_INPUT, "%s: element %" PetscInt_FMT " is inverted or degenerate (non-positive Jacobian determinant)",
+            TslLocString(p->m, l, where, sizeof(where)), g[0]);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -175,7 +178,8 @@ PetscErrorCode TslProblemCheckElements(TslProblem p)
     TslProblemGather(p, e, NULL, NULL, &d);
     d.in.steady = PETSC_TRUE;
     PetscCall(TslElementResidual(&d.in, R, K, &inverted));
-    if (inverted) bad = e;
+    if (inverted)
+      bad = e;
     else
       for (PetscInt r = 0; r < d.nd; r++) {
         PetscInt f = (r % p->ndof) == p->dim;
@@ -199,8 +203,10 @@ static PetscErrorCode ConstraintRows(TslProblem p, AsmMode mode, const PetscScal
     PetscInt  q = p->dep[d];
     PetscReal s = p->row_scale[(d % p->ndof) == p->dim];
     if (p->bc[d].active) {
-      if (mode == ASM_RESIDUAL) F[d] = s * (xa[d] - TslProblemEvalHistory(p, &p->bc[d]));
-      else PetscCall(MatSetValuesLocal(A, 1, &d, 1, &d, &s, ADD_VALUES));
+      if (mode == ASM_RESIDUAL)
+        F[d] = s * (xa[d] - TslProblemEvalHistory(p, &p->bc[d]));
+      else
+        PetscCall(MatSetValuesLocal(A, 1, &d, 1, &d, &s, ADD_VALUES));
     } else if (q >= 0) {
       const TslEquation *eq = &p->m->equations[q];
       PetscScalar        v[64];
@@ -209,7 +215,8 @@ static PetscErrorCode ConstraintRows(TslProblem p, AsmMode mode, const PetscScal
       if (mode == ASM_RESIDUAL) {
         F[d] = 0;
         for (PetscInt t = 0; t < eq->n; t++) F[d] += v[t] * xa[p->eq_ldof[q][t]];
-      } else PetscCall(MatSetValuesLocal(A, 1, &d, eq->n, p->eq_ldof[q], v, ADD_VALUES));
+      } else
+        PetscCall(MatSetValuesLocal(A, 1, &d, eq->n, p->eq_ldof[q], v, ADD_VALUES));
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -23,7 +23,7 @@
 static PetscInt ElementNodes(TslProblem p, const TslContactNode *cn, PetscInt nodes[TSL_CONTACT_MAX_NODES])
 {
   const TslContactSurface *cs = &p->csurf[cn->pair];
-  PetscInt                 n  = 0, seg = cn->seg;
+  PetscInt                 n = 0, seg = cn->seg;
 
   nodes[n++] = cn->lnode;
   nodes[n++] = cs->main_lnode[2 * seg];
@@ -86,8 +86,9 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
     PetscCall(TslContactElement(&cs->law, &in, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
     PetscCall(TslProblemInsert(p, mode, A, f, 3 * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
     if (mode == ASM_RESIDUAL)
-      PetscCall(PetscInfo(NULL, "contact node %" PetscInt_FMT ": segment %" PetscInt_FMT " xi %g gap %g p %g slip %g shear %g q %g status %d\n", p->m->node_id[cn->lnode], cn->seg,
-                          (double)cn->out.xi_raw, (double)cn->out.gap, (double)cn->out.pressure, (double)cn->out.slip, (double)cn->out.shear, (double)cn->out.heat_flux, (int)cn->out.status));
+      PetscCall(PetscInfo(NULL, "contact node %" PetscInt_FMT ": segment %" PetscInt_FMT " xi %g gap %g p %g slip %g shear %g q %g status %d\n",
+                          p->m->node_id[cn->lnode], cn->seg, (double)cn->out.xi_raw, (double)cn->out.gap, (double)cn->out.pressure,
+                          (double)cn->out.slip, (double)cn->out.shear, (double)cn->out.heat_flux, (int)cn->out.status));
     if (heat) {
       heat->interface += cn->out.heat_flux * cn->out.area;
       heat->dissipation += cn->out.dissipation_rate * cn->out.area;
@@ -185,7 +186,7 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
         if (best >= 0 && cn->seg >= 0 && TransferHistory(p, cs, xa, cn->seg, best, &cn->hist)) {
         } else if (best >= 0) {
           cn->hist.xi_old = cn->hist.xi_anchor = PetscMin(1, PetscMax(0, best_xi));
-          cn->hist.lambda = 0;
+          cn->hist.lambda                      = 0;
         }
         cn->seg = best;
       }
@@ -286,9 +287,9 @@ PetscErrorCode TslProblemContactRollback(TslProblem p)
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode *cn = &p->cnode[i];
-    cn->seg   = cn->seg_c;
-    cn->hist  = cn->hist_c;
-    cn->cslip = cn->cslip_c;
+    cn->seg            = cn->seg_c;
+    cn->hist           = cn->hist_c;
+    cn->cslip          = cn->cslip_c;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -305,9 +306,12 @@ PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscR
     const TslContactNode *cn = &p->cnode[i];
     PetscReal             v  = 0;
     if (cn->seg >= 0) {
-      if (which == 0) v = cn->out.pressure;
-      else if (which == 2) v = (PetscReal)cn->out.status;
-      else if (which == 3) v = cn->out.heat_flux;
+      if (which == 0)
+        v = cn->out.pressure;
+      else if (which == 2)
+        v = (PetscReal)cn->out.status;
+      else if (which == 3)
+        v = cn->out.heat_flux;
     }
     if (which == 1) v = cn->cslip;
     vals[cn->lnode] = v;
@@ -324,9 +328,11 @@ static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscRe
 
   PetscFunctionBeginUser;
   PetscCall(TslContactLawSetDefaults(law));
-  law->normal = it->behavior.given && it->behavior.enforcement == TSL_CONTACT_AUGMENTED_LAGRANGE ? TSL_CONTACT_NORMAL_AUGMENTED : TSL_CONTACT_NORMAL_PENALTY;
-  law->eps_n  = it->behavior.given && it->behavior.penalty_stiffness > 0 ? it->behavior.penalty_stiffness : pair->penalty;
-  PetscCheck(!(it->friction.given && it->friction.rough), PETSC_COMM_SELF, PETSC_ERR_SUP, "%s: *FRICTION, ROUGH is not supported yet", TslLocString(m, it->friction.loc, loc, sizeof(loc)));
+  law->normal =
+      it->behavior.given && it->behavior.enforcement == TSL_CONTACT_AUGMENTED_LAGRANGE ? TSL_CONTACT_NORMAL_AUGMENTED : TSL_CONTACT_NORMAL_PENALTY;
+  law->eps_n = it->behavior.given && it->behavior.penalty_stiffness > 0 ? it->behavior.penalty_stiffness : pair->penalty;
+  PetscCheck(!(it->friction.given && it->friction.rough), PETSC_COMM_SELF, PETSC_ERR_SUP, "%s: *FRICTION, ROUGH is not supported yet",
+             TslLocString(m, it->friction.loc, loc, sizeof(loc)));
   if (it->friction.given && it->friction.mu > 0) {
     law->mu       = it->friction.mu;
     law->friction = it->friction.lagrange ? TSL_CONTACT_FRICTION_LAGRANGE : TSL_CONTACT_FRICTION_PENALTY;
@@ -342,8 +348,9 @@ static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscRe
     law->k_value     = it->conductance.value;
   }
   if (it->radiation.given) {
-    PetscCheck(m->has_stefan_boltzmann && m->has_absolute_zero, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-               "%s: *GAP RADIATION needs *PHYSICAL CONSTANTS, ABSOLUTE ZERO= and STEFAN BOLTZMANN=", TslLocString(m, it->radiation.loc, loc, sizeof(loc)));
+    PetscCheck(
+        m->has_stefan_boltzmann && m->has_absolute_zero, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+        "%s: *GAP RADIATION needs *PHYSICAL CONSTANTS, ABSOLUTE ZERO= and STEFAN BOLTZMANN=", TslLocString(m, it->radiation.loc, loc, sizeof(loc)));
     law->F_n           = it->radiation.n;
     law->F_clearance   = it->radiation.clearance;
     law->F_value       = it->radiation.view_factor;
@@ -367,7 +374,7 @@ static PetscErrorCode ReportPartition(TslProblem p)
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   for (PetscInt k = 0; k < m->npair; k++) {
-    const TslContactPair *c = &m->pairs[k];
+    const TslContactPair *c       = &m->pairs[k];
     PetscInt              mine[2] = {c->nsec > 0, 0}, *all;
     char                  line[2][256];
     for (PetscInt i = 0; i < 2 * c->nmain && !mine[1]; i++) {
@@ -385,7 +392,8 @@ static PetscErrorCode ReportPartition(TslProblem p)
           PetscCall(PetscStrlen(line[w], &len));
         }
     }
-    PetscCall(PetscPrintf(p->comm, "contact pair %" PetscInt_FMT " (%s on %s): secondary nodes on ranks %s; main-surface nodes on ranks %s\n", k + 1, c->secondary, c->main, line[0], line[1]));
+    PetscCall(PetscPrintf(p->comm, "contact pair %" PetscInt_FMT " (%s on %s): secondary nodes on ranks %s; main-surface nodes on ranks %s\n", k + 1,
+                          c->secondary, c->main, line[0], line[1]));
     PetscCall(PetscFree(all));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -418,7 +426,8 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
       cs->next[s] = pair->main_next[s];
       for (PetscInt a = 0; a < 2; a++) {
         cs->main_lnode[2 * s + a] = TslModelNodeIndex(m, pair->main_node[2 * s + a]);
-        PetscCheck(!cs->active || cs->main_lnode[2 * s + a] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "main-surface node %" PetscInt_FMT " is not local", pair->main_node[2 * s + a]);
+        PetscCheck(!cs->active || cs->main_lnode[2 * s + a] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "main-surface node %" PetscInt_FMT " is not local",
+                   pair->main_node[2 * s + a]);
       }
     }
     PetscCall(SetUpLaw(p, pair, pair->mean_length, &cs->law));
@@ -432,7 +441,8 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
       cn->lnode          = TslModelNodeIndex(m, pair->sec_node[i]);
       cn->length         = pair->sec_length[i];
       cn->seg = cn->seg_c = -1;
-      PetscCheck(cn->lnode >= 0 && cn->lnode < p->nown, PETSC_COMM_SELF, PETSC_ERR_PLIB, "secondary node %" PetscInt_FMT " is not owned here", pair->sec_node[i]);
+      PetscCheck(cn->lnode >= 0 && cn->lnode < p->nown, PETSC_COMM_SELF, PETSC_ERR_PLIB, "secondary node %" PetscInt_FMT " is not owned here",
+                 pair->sec_node[i]);
     }
   }
   PetscCall(ReportPartition(p));

@@ -122,7 +122,8 @@ static PetscErrorCode CompactFaces(TslProblem p)
       TslFaceRecord *prev = &p->face[n - 1];
       if (r->value.amp == TSL_AMP_DEFAULT) r->value.v0 = prev->value.v1;
       *prev = *r;
-    } else p->face[n++] = *r;
+    } else
+      p->face[n++] = *r;
   }
   p->nface = n;
   for (PetscInt e = 0; e <= p->m->nelem; e++) p->face_start[e] = 0;
@@ -135,7 +136,10 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
 {
   TslModel       *m = p->m;
   PetscInt        n, *elem, *face;
-  TslFaceLoadKind kind = ld->kind == TSL_LOAD_DLOAD ? TSL_FACE_PRESSURE : ld->kind == TSL_LOAD_FILM ? TSL_FACE_FILM : ld->face == 0 ? TSL_BODY_FLUX : TSL_FACE_FLUX;
+  TslFaceLoadKind kind = ld->kind == TSL_LOAD_DLOAD  ? TSL_FACE_PRESSURE
+                         : ld->kind == TSL_LOAD_FILM ? TSL_FACE_FILM
+                         : ld->face == 0             ? TSL_BODY_FLUX
+                                                     : TSL_FACE_FLUX;
   char            loc[PETSC_MAX_PATH_LEN + 32];
 
   PetscFunctionBeginUser;
@@ -146,7 +150,8 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
     TslFaceRecord        *r    = &p->face[p->nface++];
 
     PetscCheck(kind == TSL_BODY_FLUX || (face[i] >= 1 && face[i] <= type->geom->nface), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-               "%s: element %" PetscInt_FMT " (%s) has no face %" PetscInt_FMT, TslLocString(m, ld->loc, loc, sizeof(loc)), m->elem_id[elem[i]], type->name, face[i]);
+               "%s: element %" PetscInt_FMT " (%s) has no face %" PetscInt_FMT, TslLocString(m, ld->loc, loc, sizeof(loc)), m->elem_id[elem[i]],
+               type->name, face[i]);
     PetscCall(PetscMemzero(r, sizeof(*r)));
     r->elem = elem[i];
     r->face = face[i];
@@ -167,8 +172,8 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
 
 PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
 {
-  TslModel          *m    = p->m;
-  const TslStep     *step = &m->steps[s];
+  TslModel          *m                      = p->m;
+  const TslStep     *step                   = &m->steps[s];
   PetscBool          clear[TSL_LOAD_NKINDS] = {PETSC_FALSE};
   Vec                xl;
   const PetscScalar *x;
@@ -230,9 +235,12 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
         for (PetscInt dof = ld->dof_first; dof <= ld->dof_last; dof++) {
           PetscInt c = dof == 11 ? p->dim : dof - 1, d = nodes[j] * p->ndof + c;
           if (c < 0 || c >= p->ndof) continue;
-          if (ld->kind == TSL_LOAD_BOUNDARY && ld->fixed) p->bc[d] = (TslHistoryValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD};
-          else if (ld->kind == TSL_LOAD_BOUNDARY) Redefine(&p->bc[d], PetscRealPart(x[d]), ld->value, amp);
-          else if (nodes[j] < p->nown) Redefine(&p->nload[d], 0, ld->value, amp);
+          if (ld->kind == TSL_LOAD_BOUNDARY && ld->fixed)
+            p->bc[d] = (TslHistoryValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD};
+          else if (ld->kind == TSL_LOAD_BOUNDARY)
+            Redefine(&p->bc[d], PetscRealPart(x[d]), ld->value, amp);
+          else if (nodes[j] < p->nown)
+            Redefine(&p->nload[d], 0, ld->value, amp);
         }
       PetscCall(PetscFree(nodes));
     } break;

@@ -13,7 +13,8 @@ static PetscErrorCode SetUpMaterials(TslProblem p)
     const TslSection  *sec = &m->sections[s];
     const TslMaterial *mat = &m->materials[sec->material_index];
     PetscInt           k   = TslModelFindElementSet(m, sec->elset);
-    TslElementMaterial em  = {mat->E, mat->nu, mat->conductivity, mat->density, mat->specific_heat, mat->alpha, sec->thickness > 0 ? sec->thickness : 1.0};
+    TslElementMaterial em  = {
+         mat->E, mat->nu, mat->conductivity, mat->density, mat->specific_heat, mat->alpha, sec->thickness > 0 ? sec->thickness : 1.0};
 
     if (k < 0) continue; /* the set has no element on this rank */
     for (PetscInt i = 0; i < m->elsets[k].n; i++) {
@@ -121,7 +122,8 @@ static PetscErrorCode SetUpEquations(TslProblem p)
     TslEquation *eq = &m->equations[q];
     char         loc[PETSC_MAX_PATH_LEN + 32];
     PetscCheck(eq->gdof, PETSC_COMM_SELF, PETSC_ERR_PLIB, "equation without global dofs");
-    PetscCheck(eq->coef[0] != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: the first coefficient of an *EQUATION must not be zero", TslLocString(m, eq->loc, loc, sizeof(loc)));
+    PetscCheck(eq->coef[0] != 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: the first coefficient of an *EQUATION must not be zero",
+               TslLocString(m, eq->loc, loc, sizeof(loc)));
     PetscBool complete = PETSC_TRUE;
     PetscCall(PetscMalloc1(eq->n, &p->eq_ldof[q]));
     for (PetscInt t = 0; t < eq->n; t++) {
@@ -136,7 +138,8 @@ static PetscErrorCode SetUpEquations(TslProblem p)
       PetscCall(PetscFree(p->eq_ldof[q]));
       continue;
     }
-    PetscCheck(p->dep[p->eq_ldof[q][0]] < 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: node %" PetscInt_FMT " dof %" PetscInt_FMT " is already eliminated by another *EQUATION",
+    PetscCheck(p->dep[p->eq_ldof[q][0]] < 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "%s: node %" PetscInt_FMT " dof %" PetscInt_FMT " is already eliminated by another *EQUATION",
                TslLocString(m, eq->loc, loc, sizeof(loc)), eq->node[0], eq->dof[0]);
     p->dep[p->eq_ldof[q][0]] = q;
   }

@@ -10,7 +10,7 @@ typedef struct {
   TslContactLaw law;
   PetscBool     active;
   PetscInt      nmain;
-  PetscInt     *main_lnode; /* [2*nmain] local nodes of each segment, main body on the left */
+  PetscInt     *main_lnode;  /* [2*nmain] local nodes of each segment, main body on the left */
   PetscInt     *prev, *next; /* [nmain] neighbouring segments, -1 at the ends */
   PetscReal     smooth, thickness, search_radius;
   TslKinematics kin;
@@ -41,10 +41,10 @@ typedef struct {
 typedef struct {
   PetscInt        elem, face; /* local element, face 1..6 (0: body) */
   TslFaceLoadKind kind;
-  TslHistoryValue value;      /* pressure, flux or film coefficient */
-  TslHistoryValue sink;       /* film sink temperature */
-  PetscInt        film_amp;   /* amplitude scaling the film coefficient, or -1 */
-  PetscInt        seq;        /* order of definition (later replaces earlier) */
+  TslHistoryValue value;    /* pressure, flux or film coefficient */
+  TslHistoryValue sink;     /* film sink temperature */
+  PetscInt        film_amp; /* amplitude scaling the film coefficient, or -1 */
+  PetscInt        seq;      /* order of definition (later replaces earlier) */
 } TslFaceRecord;
 
 struct _p_TslProblem {
@@ -59,9 +59,9 @@ struct _p_TslProblem {
   ISLocalToGlobalMapping l2g;
   IS                     is_u, is_theta;
 
-  PetscInt           *elem_lnode; /* local node of each element node (model elem_ptr layout) */
-  TslElementMaterial *emat;       /* [nelem] */
-  PetscReal          *theta_init; /* [nn] */
+  PetscInt           *elem_lnode;   /* local node of each element node (model elem_ptr layout) */
+  TslElementMaterial *emat;         /* [nelem] */
+  PetscReal          *theta_init;   /* [nn] */
   PetscReal           row_scale[2]; /* constraint-row scale for displacement and temperature dofs */
 
   /* step state */
@@ -89,13 +89,13 @@ struct _p_TslProblem {
 
 /* Element data gathered from the local (ghosted) arrays; xa / xoa may be NULL (zeros). */
 typedef struct {
-  PetscInt  n, nd;
-  PetscInt  ld[TSL_MAX_ELEM_DOF];
-  PetscReal x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], uo[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES];
+  PetscInt        n, nd;
+  PetscInt        ld[TSL_MAX_ELEM_DOF];
+  PetscReal       x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], uo[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES];
   TslElementInput in;
 } TslElemData;
 
-void           TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const PetscScalar *xoa, TslElemData *d);
+void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const PetscScalar *xoa, TslElemData *d);
 typedef enum { ASM_RESIDUAL, ASM_JACOBIAN, ASM_PATTERN, ASM_RAW } AsmMode;
 
 /* Heat totals gathered during an assembly (this rank's share, per unit time). */
@@ -107,7 +107,8 @@ typedef struct {
   PetscReal friction_heat; /* part of it converted to heat (eta) */
 } AsmHeat;
 
-PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[], const PetscReal K[]);
+PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[],
+                                const PetscReal K[]);
 PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);
 PetscErrorCode TslProblemContactSetUp(TslProblem p);
 PetscErrorCode TslProblemContactDestroy(TslProblem p);

@@ -45,14 +45,14 @@ static PetscInt RigidModes(TslKinematics kin, const PetscReal x[3], PetscReal mo
 /* Rank of a small symmetric positive semi-definite matrix by pivoted elimination. */
 static PetscInt GramRank(PetscInt n, PetscReal G[6][6])
 {
-  PetscReal tol = 0;
-  PetscInt  rank = 0;
+  PetscReal tol     = 0;
+  PetscInt  rank    = 0;
   PetscBool used[6] = {PETSC_FALSE};
 
   for (PetscInt i = 0; i < n; i++) tol = PetscMax(tol, G[i][i]);
   tol *= 1e-10;
   for (PetscInt k = 0; k < n; k++) {
-    PetscInt  p = -1;
+    PetscInt  p    = -1;
     PetscReal best = tol;
     for (PetscInt i = 0; i < n; i++)
       if (!used[i] && G[i][i] > best) best = G[i][i], p = i;
@@ -114,16 +114,19 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
   PetscCall(PetscCalloc2(4 * nn, &fixed, g->nelem, &film));
   for (PetscInt i = 0; i < nn; i++) parent[i] = i, first_elem[i] = -1;
   for (PetscInt e = 0; e < g->nelem; e++)
-    for (PetscInt k = g->elem_ptr[e] + 1; k < g->elem_ptr[e + 1]; k++) Union(parent, TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]]), TslModelNodeIndex(g, g->elem_conn[k]));
+    for (PetscInt k = g->elem_ptr[e] + 1; k < g->elem_ptr[e + 1]; k++)
+      Union(parent, TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]]), TslModelNodeIndex(g, g->elem_conn[k]));
   for (PetscInt q = 0; q < g->nequation; q++)
-    for (PetscInt t = 1; t < g->equations[q].n; t++) Union(parent, TslModelNodeIndex(g, g->equations[q].node[0]), TslModelNodeIndex(g, g->equations[q].node[t]));
+    for (PetscInt t = 1; t < g->equations[q].n; t++)
+      Union(parent, TslModelNodeIndex(g, g->equations[q].node[0]), TslModelNodeIndex(g, g->equations[q].node[t]));
   /* a contact pair supports the secondary body on the main one (assumed closed) */
   for (PetscInt k = 0; k < g->npair; k++) {
     PetscInt nd[2] = {-1, -1};
     for (PetscInt side = 0; side < 2; side++) {
       PetscInt j = TslModelFindSurface(g, side ? g->pairs[k].main : g->pairs[k].secondary);
       if (j < 0 || g->surfaces[j].n == 0) continue;
-      if (g->surfaces[j].kind == TSL_SURFACE_NODE) nd[side] = TslModelNodeIndex(g, g->surfaces[j].elem[0]);
+      if (g->surfaces[j].kind == TSL_SURFACE_NODE)
+        nd[side] = TslModelNodeIndex(g, g->surfaces[j].elem[0]);
       else {
         PetscInt e = TslModelElementIndex(g, g->surfaces[j].elem[0]);
         if (e >= 0) nd[side] = TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]]);
@@ -146,7 +149,7 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
   }
 
   for (PetscInt s = 0; s < g->nstep; s++) {
-    const TslStep *step = &g->steps[s];
+    const TslStep *step     = &g->steps[s];
     PetscBool      clear_bc = PETSC_FALSE, clear_film = PETSC_FALSE;
     char           loc[PETSC_MAX_PATH_LEN + 32];
     for (PetscInt i = 0; i < step->nload; i++) {
@@ -163,7 +166,7 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
     for (PetscInt r = 0; r < nn; r++) {
       const TslElementType *type;
       PetscReal             G[6][6], modes[6][3], x[3];
-      PetscInt              nm = 0;
+      PetscInt              nm      = 0;
       PetscBool             thermal = PETSC_FALSE;
       if (Find(parent, r) != r || first_elem[r] < 0) continue;
       type = TslElementTypeGet(g->elem_type[first_elem[r]]);
@@ -182,10 +185,12 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
       for (PetscInt e = 0; e < g->nelem && !thermal; e++)
         if (film[e] && Find(parent, TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]])) == r) thermal = PETSC_TRUE;
       PetscCheck(GramRank(nm, G) == nm, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-                 "%s: step %" PetscInt_FMT ": the body containing node %" PetscInt_FMT " is not fully supported (it can move as a rigid body, so the stiffness matrix is singular); add *BOUNDARY conditions",
+                 "%s: step %" PetscInt_FMT ": the body containing node %" PetscInt_FMT
+                 " is not fully supported (it can move as a rigid body, so the stiffness matrix is singular); add *BOUNDARY conditions",
                  TslLocString(g, step->loc, loc, sizeof(loc)), s + 1, g->node_id[r]);
       PetscCheck(thermal || !step->steady, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-                 "%s: step %" PetscInt_FMT ": in this steady-state step the temperature of the body containing node %" PetscInt_FMT " is undetermined; prescribe a temperature (*BOUNDARY dof 11) or add a *FILM",
+                 "%s: step %" PetscInt_FMT ": in this steady-state step the temperature of the body containing node %" PetscInt_FMT
+                 " is undetermined; prescribe a temperature (*BOUNDARY dof 11) or add a *FILM",
                  TslLocString(g, step->loc, loc, sizeof(loc)), s + 1, g->node_id[r]);
     }
   }

@@ -4,14 +4,27 @@
 #include <petscsnes.h>
 #include <string.h>
 
-#define NFIELD_NODE 8
-#define NFIELD_ELEM 3
+#define NFIELD_NODE       8
+#define NFIELD_ELEM       3
 #define NFIELD_NODE_BASIC 4 /* the contact fields follow */
 static const char *const NodeFields[NFIELD_NODE] = {"U", "NT", "RF", "RFL", "CPRESS", "CSLIP", "CSTATUS", "HFLA"};
 static const char *const ElemFields[NFIELD_ELEM] = {"S", "E", "HFL"};
 
-static const char *const HistoryColumns[] = {"step", "increment", "time", "step_time", "dt", "newton_its", "heat_in", "film_heat_out", "reaction_heat", "stored_heat_rate",
-                                             "interface_heat", "friction_dissipation_rate", "friction_dissipation_total", "friction_heat_total", "balance_residual"};
+static const char *const HistoryColumns[] = {"step",
+                                             "increment",
+                                             "time",
+                                             "step_time",
+                                             "dt",
+                                             "newton_its",
+                                             "heat_in",
+                                             "film_heat_out",
+                                             "reaction_heat",
+                                             "stored_heat_rate",
+                                             "interface_heat",
+                                             "friction_dissipation_rate",
+                                             "friction_dissipation_total",
+                                             "friction_heat_total",
+                                             "balance_residual"};
 #define NHISTORY ((PetscInt)(sizeof(HistoryColumns) / sizeof(HistoryColumns[0])))
 
 typedef struct {
@@ -23,7 +36,7 @@ typedef struct {
   TslHistory hist;
   PetscReal  rtol, atol_rel, cutback, growth;
   PetscInt   easy_its;
-  PetscInt   debug_diverge_step; /* test hook: every increment of this step is declared diverged */
+  PetscInt   debug_diverge_step;   /* test hook: every increment of this step is declared diverged */
   PetscReal  scale_u, scale_theta; /* largest initial residuals seen in the job */
   PetscReal  r0_u, r0_theta;       /* initial residuals of the current solve */
   PetscBool  node_on[NFIELD_NODE], elem_on[NFIELD_ELEM];
@@ -49,7 +62,8 @@ static PetscErrorCode SetDefaultOption(const char *name, const char *value)
 /* Converged when each field's residual (displacement rows, temperature rows) has dropped by rtol from
  * the start of the increment, or is below atol_rel times the largest initial residual of the job: the
  * two fields have different units, so one norm over both would let one hide the other. */
-static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason, void *ctx)
+static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason,
+                                      void *ctx)
 {
   Driver   *d = (Driver *)ctx;
   Vec       F;
@@ -133,8 +147,10 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(PetscOptionsReal("-tsl_growth", "increment factor after an easy increment", NULL, d->growth, &d->growth, NULL));
   PetscCall(PetscOptionsInt("-tsl_easy_its", "Newton iterations that count as easy", NULL, d->easy_its, &d->easy_its, NULL));
   d->max_contact_its = 8;
-  PetscCall(PetscOptionsInt("-tsl_contact_max_its", "solves of one increment while contact pairing or multipliers change", NULL, d->max_contact_its, &d->max_contact_its, NULL));
-  PetscCall(PetscOptionsInt("-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", NULL, d->debug_diverge_step, &d->debug_diverge_step, NULL));
+  PetscCall(PetscOptionsInt("-tsl_contact_max_its", "solves of one increment while contact pairing or multipliers change", NULL, d->max_contact_its,
+                            &d->max_contact_its, NULL));
+  PetscCall(PetscOptionsInt("-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", NULL,
+                            d->debug_diverge_step, &d->debug_diverge_step, NULL));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -150,7 +166,8 @@ static PetscErrorCode SetUpOutput(Driver *d, const char *dir, const char *jobnam
   PetscCall(PetscMalloc2(m->nelem, &xtype, m->elem_ptr[m->nelem], &conn));
   for (PetscInt e = 0; e < m->nelem; e++) xtype[e] = TslElementTypeGet(m->elem_type[e])->geom->xdmf_type;
   for (PetscInt k = 0; k < m->elem_ptr[m->nelem]; k++) conn[k] = m->node_nat[TslModelNodeIndex(m, m->elem_conn[k])];
-  PetscCall(TslOutputSetMesh(d->out, m->nnode_global, m->nnode_owned, m->node_nat, m->node_id, m->node_xyz, m->nelem_global, m->nelem, m->elem_nat, m->elem_id, xtype, m->elem_ptr, conn));
+  PetscCall(TslOutputSetMesh(d->out, m->nnode_global, m->nnode_owned, m->node_nat, m->node_id, m->node_xyz, m->nelem_global, m->nelem, m->elem_nat,
+                             m->elem_id, xtype, m->elem_ptr, conn));
   PetscCall(PetscFree2(xtype, conn));
   PetscCall(TslHistoryCreate(d->comm, dir, jobname, NHISTORY, HistoryColumns, &d->hist));
   for (PetscInt i = 0; i < NFIELD_NODE; i++) d->node_on[i] = (PetscBool)(i < NFIELD_NODE_BASIC || m->npair > 0);
@@ -229,8 +246,8 @@ static PetscErrorCode PrintTables(Driver *d, const TslStep *step)
     set = k < 0 ? NULL : req->node ? &m->nsets[k] : &m->elsets[k];
     PetscCall(PetscPrintf(d->comm, "%s print, step %s, set %s:\n", req->node ? "node" : "element", step->name, req->set));
     for (PetscInt v = 0; v < req->nvar; v++) {
-      PetscInt   nc;
-      PetscReal *vals;
+      PetscInt       nc;
+      PetscReal     *vals;
       PetscErrorCode ierr;
       PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
       ierr = req->node ? TslProblemNodeField(d->prob, req->var[v], &nc, &vals) : TslProblemElementField(d->prob, req->var[v], &nc, &vals);
@@ -263,7 +280,7 @@ static PetscErrorCode PrintTables(Driver *d, const TslStep *step)
 static PetscErrorCode SolveIncrement(Driver *d, Vec X, SNESConvergedReason *reason, PetscInt *its, PetscInt *lits)
 {
   PetscBool again = PETSC_TRUE, repattern;
-  PetscInt  n = 0;
+  PetscInt  n     = 0;
 
   PetscFunctionBeginUser;
   *its = *lits = 0;
@@ -297,7 +314,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   const TslStep  *step;
   Vec             X, Xold;
   Mat             J;
-  PetscReal       t = 0, dt, eps;
+  PetscReal       t   = 0, dt, eps;
   PetscInt        inc = 0, attempts = 0;
 
   PetscFunctionBeginUser;
@@ -321,8 +338,9 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscBool           accept;
 
     if (t + dt > step->period - eps) dt = step->period - t;
-    PetscCheck(inc < step->max_inc, d->comm, PETSC_ERR_NOT_CONVERGED, "step %" PetscInt_FMT ": the maximum number of increments (INC=%" PetscInt_FMT ") was reached at step time %g",
-               s + 1, step->max_inc, (double)t);
+    PetscCheck(inc < step->max_inc, d->comm, PETSC_ERR_NOT_CONVERGED,
+               "step %" PetscInt_FMT ": the maximum number of increments (INC=%" PetscInt_FMT ") was reached at step time %g", s + 1, step->max_inc,
+               (double)t);
     attempts++;
     PetscCall(VecCopy(X, Xold));
     PetscCall(TslProblemSetTime(d->prob, t + dt, dt, *total_time + dt));
@@ -340,12 +358,13 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscCall(TslProblemContactRollback(d->prob));
       PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": %s; cutback dt %g -> %g\n", s + 1, inc + 1,
                             reason > 0 ? "temperature change exceeds DELTMX" : SNESConvergedReasons[reason], (double)dt, (double)(dt * f)));
-      PetscCheck(!step->direct, d->comm, PETSC_ERR_NOT_CONVERGED, "step %" PetscInt_FMT ": increment %" PetscInt_FMT " did not converge (%s) and DIRECT forbids a cutback",
-                 s + 1, inc + 1, SNESConvergedReasons[reason]);
+      PetscCheck(!step->direct, d->comm, PETSC_ERR_NOT_CONVERGED,
+                 "step %" PetscInt_FMT ": increment %" PetscInt_FMT " did not converge (%s) and DIRECT forbids a cutback", s + 1, inc + 1,
+                 SNESConvergedReasons[reason]);
       dt *= f;
       PetscCheck(dt >= step->dtmin * (1 - 1e-12), d->comm, PETSC_ERR_NOT_CONVERGED,
-                 "step %" PetscInt_FMT ": the increment fell below the minimum %g at step time %g; the last converged state (step time %g) is saved", s + 1,
-                 (double)step->dtmin, (double)t, (double)t);
+                 "step %" PetscInt_FMT ": the increment fell below the minimum %g at step time %g; the last converged state (step time %g) is saved",
+                 s + 1, (double)step->dtmin, (double)t, (double)t);
       continue;
     }
     {
@@ -359,7 +378,9 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscCall(TslProblemContactCommit(d->prob));
       d->dissipated += hb.dissipation * dt;
       d->absorbed += hb.friction_heat * dt;
-      PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": time %.6g  dt %.4g  newton %" PetscInt_FMT "  linear %" PetscInt_FMT "  heat in %.6g  film out %.6g  balance %.3g\n",
+      PetscCall(PetscPrintf(d->comm,
+                            "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": time %.6g  dt %.4g  newton %" PetscInt_FMT
+                            "  linear %" PetscInt_FMT "  heat in %.6g  film out %.6g  balance %.3g\n",
                             s + 1, inc, (double)*total_time, (double)dt, its, lits, (double)hb.heat_in, (double)hb.film_out, (double)hb.balance));
       row[0]  = (PetscReal)(s + 1);
       row[1]  = (PetscReal)inc;
@@ -420,7 +441,9 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
   if (!ierr || ierr == PETSC_ERR_NOT_CONVERGED) {
     PetscCall(TslOutputFinalize(d.out));
     PetscCall(TslHistoryFinalize(d.hist));
-    if (ierr) PetscCall(PetscPrintf(d.comm, "results up to step %" PetscInt_FMT " increment %" PetscInt_FMT " are saved in %s/%s.h5\n", d.frame_step, d.frame_inc, dir, jobname));
+    if (ierr)
+      PetscCall(PetscPrintf(d.comm, "results up to step %" PetscInt_FMT " increment %" PetscInt_FMT " are saved in %s/%s.h5\n", d.frame_step,
+                            d.frame_inc, dir, jobname));
   }
   PetscCall(TslOutputDestroy(&d.out));
   PetscCall(TslHistoryDestroy(&d.hist));

@@ -11,8 +11,8 @@ typedef struct {
   PetscInt checks, failures;
 } TestLog;
 
-static inline void CheckV(TestLog *log, PetscBool ok, PetscReal value, PetscReal expected, PetscReal tol,
-                          const char *fmt, va_list ap) {
+static inline void CheckV(TestLog *log, PetscBool ok, PetscReal value, PetscReal expected, PetscReal tol, const char *fmt, va_list ap)
+{
   char name[256];
 
   vsnprintf(name, sizeof(name), fmt, ap);
@@ -22,7 +22,8 @@ static inline void CheckV(TestLog *log, PetscBool ok, PetscReal value, PetscReal
 }
 
 /* |value - expected| <= tol passes. */
-static inline void Check(TestLog *log, PetscReal value, PetscReal expected, PetscReal tol, const char *fmt, ...) {
+static inline void Check(TestLog *log, PetscReal value, PetscReal expected, PetscReal tol, const char *fmt, ...)
+{
   va_list ap;
 
   va_start(ap, fmt);
@@ -31,9 +32,9 @@ static inline void Check(TestLog *log, PetscReal value, PetscReal expected, Pets
 }
 
 /* |value - expected| <= rtol * max(|expected|, floor) passes. */
-static inline void CheckRel(TestLog *log, PetscReal value, PetscReal expected, PetscReal rtol, PetscReal floor,
-                            const char *fmt, ...) {
-  va_list ap;
+static inline void CheckRel(TestLog *log, PetscReal value, PetscReal expected, PetscReal rtol, PetscReal floor, const char *fmt, ...)
+{
+  va_list   ap;
   PetscReal tol = rtol * PetscMax(PetscAbsReal(expected), floor);
 
   va_start(ap, fmt);
@@ -41,20 +42,22 @@ static inline void CheckRel(TestLog *log, PetscReal value, PetscReal expected, P
   va_end(ap);
 }
 
-static inline int Summary(const TestLog *log) {
+static inline int Summary(const TestLog *log)
+{
   printf("%d of %d checks failed\n", (int)log->failures, (int)log->checks);
   return log->failures ? 1 : 0;
 }
 
 /* A plane-strain element input with zero unknowns: s at xs, segment x1 -> x2. */
-static inline TslContactInput InputSetUp(const PetscReal xs[2], const PetscReal x1[2], const PetscReal x2[2]) {
+static inline TslContactInput InputSetUp(const PetscReal xs[2], const PetscReal x1[2], const PetscReal x2[2])
+{
   TslContactInput in;
 
   memset(&in, 0, sizeof(in));
-  in.kin = TSL_KIN_PLANE_STRAIN;
+  in.kin       = TSL_KIN_PLANE_STRAIN;
   in.thickness = 1;
-  in.length = 1;
-  in.dt = 1;
+  in.length    = 1;
+  in.dt        = 1;
   for (PetscInt d = 0; d < 2; d++) {
     in.x[0][d] = xs[d];
     in.x[1][d] = x1[d];

@@ -3,11 +3,12 @@
  * nodes and at the edges of the rounded zones, continuous projection round a convex corner). */
 #include "check.h"
 
-static PetscErrorCode CheckFlat(TestLog *log) {
+static PetscErrorCode CheckFlat(TestLog *log)
+{
   /* top face of a lower block, CCW element: m1 = (2,1) -> m2 = (0,1), outward normal (0,1) */
   const PetscReal x1[2] = {2, 1}, x2[2] = {0, 1}, above[2] = {0.5, 1.1}, below[2] = {0.5, 0.95};
   TslContactInput in = InputSetUp(above, x1, x2);
-  PetscReal xi, g, n[2];
+  PetscReal       xi, g, n[2];
 
   PetscFunctionBeginUser;
   PetscCall(TslContactProject(&in, &xi, &g, n));
@@ -22,10 +23,11 @@ static PetscErrorCode CheckFlat(TestLog *log) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckInclined(TestLog *log) {
+static PetscErrorCode CheckInclined(TestLog *log)
+{
   const PetscReal x1[2] = {0, 0}, x2[2] = {1, 1}, xs[2] = {1, 0};
   TslContactInput in = InputSetUp(xs, x1, x2);
-  PetscReal xi, g, n[2];
+  PetscReal       xi, g, n[2];
 
   PetscFunctionBeginUser;
   PetscCall(TslContactProject(&in, &xi, &g, n));
@@ -46,13 +48,14 @@ static PetscErrorCode CheckInclined(TestLog *log) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckLeaving(TestLog *log) {
-  const PetscReal x1[2] = {0, 0}, x2[2] = {1, 0}, xs[2] = {1.2, -0.1};
-  TslContactInput in = InputSetUp(xs, x1, x2);
-  TslContactOutput out;
-  TslContactLaw law;
+static PetscErrorCode CheckLeaving(TestLog *log)
+{
+  const PetscReal   x1[2] = {0, 0}, x2[2] = {1, 0}, xs[2] = {1.2, -0.1};
+  TslContactInput   in = InputSetUp(xs, x1, x2);
+  TslContactOutput  out;
+  TslContactLaw     law;
   TslContactHistory h = {0.9, 0.85, 0};
-  PetscReal xi, g;
+  PetscReal         xi, g;
 
   PetscFunctionBeginUser;
   PetscCall(TslContactProject(&in, &xi, &g, NULL));
@@ -78,13 +81,15 @@ static PetscErrorCode CheckLeaving(TestLog *log) {
 /* Polyline inscribed in the unit circle, vertices at 30k degrees traversed counter-clockwise: the disc (main
  * body) is on the left and the outward normal points away from the centre. */
 #define NV 7
-static void Vertex(PetscInt k, PetscReal x[2]) {
+static void Vertex(PetscInt k, PetscReal x[2])
+{
   PetscReal a = (PETSC_PI / 6) * k;
-  x[0] = PetscCosReal(a);
-  x[1] = PetscSinReal(a);
+  x[0]        = PetscCosReal(a);
+  x[1]        = PetscSinReal(a);
 }
 
-static PetscErrorCode NormalOn(PetscInt seg, PetscReal s, PetscReal xi, PetscReal n[2]) {
+static PetscErrorCode NormalOn(PetscInt seg, PetscReal s, PetscReal xi, PetscReal n[2])
+{
   PetscReal x0[2], x1[2], x2[2], x3[2];
 
   PetscFunctionBeginUser;
@@ -96,9 +101,10 @@ static PetscErrorCode NormalOn(PetscInt seg, PetscReal s, PetscReal xi, PetscRea
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckSmoothing(TestLog *log) {
+static PetscErrorCode CheckSmoothing(TestLog *log)
+{
   const PetscReal s = 0.05, h = 1e-6;
-  PetscReal na[2], nb[2], nc[2], nd[2], L = 2 * PetscSinReal(PETSC_PI / 12);
+  PetscReal       na[2], nb[2], nc[2], nd[2], L = 2 * PetscSinReal(PETSC_PI / 12);
 
   PetscFunctionBeginUser;
   /* mid-segment: the facet normal, pointing radially out at the mid-angle */
@@ -131,47 +137,47 @@ static PetscErrorCode CheckSmoothing(TestLog *log) {
 
 /* A node outside a convex corner: unsmoothed it projects beyond both facets (a dead zone); smoothed it
  * projects into one of them, and the gap varies continuously as it moves round the corner. */
-static PetscErrorCode CheckCorner(TestLog *log) {
-  PetscReal v[NV][2], gprev = 0;
-  const PetscReal s = 0.05;
-  PetscBool first = PETSC_TRUE;
-  PetscReal maxjump = 0;
+static PetscErrorCode CheckCorner(TestLog *log)
+{
+  PetscReal       v[NV][2], gprev = 0;
+  const PetscReal s       = 0.05;
+  PetscBool       first   = PETSC_TRUE;
+  PetscReal       maxjump = 0;
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < NV; k++) Vertex(k, v[k]);
   {
-    PetscReal p[2] = {1.1 * PetscCosReal(PETSC_PI / 2), 1.1 * PetscSinReal(PETSC_PI / 2)}, xa, xb;
+    PetscReal       p[2] = {1.1 * PetscCosReal(PETSC_PI / 2), 1.1 * PetscSinReal(PETSC_PI / 2)}, xa, xb;
     TslContactInput a = InputSetUp(p, v[2], v[3]), b = InputSetUp(p, v[3], v[4]);
 
     PetscCall(TslContactProject(&a, &xa, NULL, NULL));
     PetscCall(TslContactProject(&b, &xb, NULL, NULL));
     /* radial point over vertex 3 (angle 90): unsmoothed it projects beyond the end of segment 2 and before the
      * start of segment 3 */
-    Check(log, (PetscReal)(xa > 1 && xb < 0), 1, 0, "corner unsmoothed: radial point xa = %g > 1, xb = %g < 0",
-          (double)xa, (double)xb);
+    Check(log, (PetscReal)(xa > 1 && xb < 0), 1, 0, "corner unsmoothed: radial point xa = %g > 1, xb = %g < 0", (double)xa, (double)xb);
     p[0] = 1.1 * PetscCosReal(PETSC_PI / 2 + 0.01);
     p[1] = 1.1 * PetscSinReal(PETSC_PI / 2 + 0.01);
-    a = InputSetUp(p, v[2], v[3]);
-    b = InputSetUp(p, v[3], v[4]);
+    a    = InputSetUp(p, v[2], v[3]);
+    b    = InputSetUp(p, v[3], v[4]);
     PetscCall(TslContactProject(&a, &xa, NULL, NULL));
     PetscCall(TslContactProject(&b, &xb, NULL, NULL));
     Check(log, (PetscReal)(xa > 1 && xb < 0), 1, 0, "corner unsmoothed: dead zone (beyond both facets)");
-    a.x_prev = v[1];
-    a.u_prev = (PetscReal[3]){0};
-    a.x_next = v[4];
-    a.u_next = (PetscReal[3]){0};
-    b.x_prev = v[2];
-    b.u_prev = (PetscReal[3]){0};
-    b.x_next = v[5];
-    b.u_next = (PetscReal[3]){0};
+    a.x_prev    = v[1];
+    a.u_prev    = (PetscReal[3]){0};
+    a.x_next    = v[4];
+    a.u_next    = (PetscReal[3]){0};
+    b.x_prev    = v[2];
+    b.u_prev    = (PetscReal[3]){0};
+    b.x_next    = v[5];
+    b.u_next    = (PetscReal[3]){0};
     a.smoothing = b.smoothing = s;
     PetscCall(TslContactProject(&a, &xa, NULL, NULL));
     PetscCall(TslContactProject(&b, &xb, NULL, NULL));
-    Check(log, (PetscReal)((xa >= 0 && xa <= 1) || (xb >= 0 && xb <= 1)), 1, 0,
-          "corner smoothed: projects onto a facet (xa=%g, xb=%g)", (double)xa, (double)xb);
+    Check(log, (PetscReal)((xa >= 0 && xa <= 1) || (xb >= 0 && xb <= 1)), 1, 0, "corner smoothed: projects onto a facet (xa=%g, xb=%g)", (double)xa,
+          (double)xb);
     /* on the bisector both segments own the point at their shared node, with the same gap */
-    p[0] = 0;
-    p[1] = 1.1;
+    p[0]      = 0;
+    p[1]      = 1.1;
     a.x[0][0] = b.x[0][0] = p[0];
     a.x[0][1] = b.x[0][1] = p[1];
     {
@@ -186,18 +192,18 @@ static PetscErrorCode CheckCorner(TestLog *log) {
   }
   /* sweep a point at radius 1.05 round vertex 3: gap continuous, one of the segments always owns it */
   for (PetscInt i = -40; i <= 40; i++) {
-    PetscReal ang = PETSC_PI / 2 + 0.004 * i, p[2] = {1.05 * PetscCosReal(ang), 1.05 * PetscSinReal(ang)};
-    PetscReal xa, xb, ga, gb, g;
+    PetscReal       ang = PETSC_PI / 2 + 0.004 * i, p[2] = {1.05 * PetscCosReal(ang), 1.05 * PetscSinReal(ang)};
+    PetscReal       xa, xb, ga, gb, g;
     TslContactInput a = InputSetUp(p, v[2], v[3]), b = InputSetUp(p, v[3], v[4]);
 
-    a.x_prev = v[1];
-    a.u_prev = (PetscReal[3]){0};
-    a.x_next = v[4];
-    a.u_next = (PetscReal[3]){0};
-    b.x_prev = v[2];
-    b.u_prev = (PetscReal[3]){0};
-    b.x_next = v[5];
-    b.u_next = (PetscReal[3]){0};
+    a.x_prev    = v[1];
+    a.u_prev    = (PetscReal[3]){0};
+    a.x_next    = v[4];
+    a.u_next    = (PetscReal[3]){0};
+    b.x_prev    = v[2];
+    b.u_prev    = (PetscReal[3]){0};
+    b.x_next    = v[5];
+    b.u_next    = (PetscReal[3]){0};
     a.smoothing = b.smoothing = s;
     PetscCall(TslContactProject(&a, &xa, &ga, NULL));
     PetscCall(TslContactProject(&b, &xb, &gb, NULL));
@@ -218,26 +224,27 @@ static PetscErrorCode CheckCorner(TestLog *log) {
 }
 
 /* In the rounded zone the projection satisfies its definition: x_s - x_m(xi) parallel to n(xi). */
-static PetscErrorCode CheckProjectionDefinition(TestLog *log) {
-  PetscReal v[NV][2], xi, g, n[2];
+static PetscErrorCode CheckProjectionDefinition(TestLog *log)
+{
+  PetscReal       v[NV][2], xi, g, n[2];
   const PetscReal s = 0.2;
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < NV; k++) Vertex(k, v[k]);
   {
-    PetscReal p[2] = {1.02 * PetscCosReal(PETSC_PI / 2 - 0.03), 1.02 * PetscSinReal(PETSC_PI / 2 - 0.03)};
-    TslContactInput a = InputSetUp(p, v[2], v[3]);
-    PetscReal xm[2], r[2];
+    PetscReal       p[2] = {1.02 * PetscCosReal(PETSC_PI / 2 - 0.03), 1.02 * PetscSinReal(PETSC_PI / 2 - 0.03)};
+    TslContactInput a    = InputSetUp(p, v[2], v[3]);
+    PetscReal       xm[2], r[2];
 
-    a.x_prev = v[1];
-    a.u_prev = (PetscReal[3]){0};
-    a.x_next = v[4];
-    a.u_next = (PetscReal[3]){0};
+    a.x_prev    = v[1];
+    a.u_prev    = (PetscReal[3]){0};
+    a.x_next    = v[4];
+    a.u_next    = (PetscReal[3]){0};
     a.smoothing = s;
     PetscCall(TslContactProject(&a, &xi, &g, n));
     for (PetscInt d = 0; d < 2; d++) {
       xm[d] = (1 - xi) * v[2][d] + xi * v[3][d];
-      r[d] = p[d] - xm[d];
+      r[d]  = p[d] - xm[d];
     }
     Check(log, (PetscReal)(xi > 1 - s && xi < 1), 1, 0, "rounded zone: xi = %g inside the zone", (double)xi);
     Check(log, r[0] * n[1] - r[1] * n[0], 0, 1e-12, "rounded zone: (x_s - x_m) x n = 0");
@@ -246,7 +253,8 @@ static PetscErrorCode CheckProjectionDefinition(TestLog *log) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-int main(int argc, char **argv) {
+int main(int argc, char **argv)
+{
   TestLog log = {0, 0};
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));

@@ -7,20 +7,22 @@
 /* Lower block's top face: m1 = (2,0) -> m2 = (0,0); n = (0,1), tau = (-1,0), L = 2. */
 static const PetscReal X1[2] = {2, 0}, X2[2] = {0, 0};
 
-static TslContactInput FlatInput(PetscReal xs, PetscReal g) {
+static TslContactInput FlatInput(PetscReal xs, PetscReal g)
+{
   const PetscReal p[2] = {xs, g};
-  TslContactInput in = InputSetUp(p, X1, X2);
+  TslContactInput in   = InputSetUp(p, X1, X2);
 
-  in.thickness = 2;
-  in.length = 0.5; /* A = 1 */
+  in.thickness   = 2;
+  in.length      = 0.5; /* A = 1 */
   in.hist.xi_old = in.hist.xi_anchor = (2 - xs) / 2;
   return in;
 }
 
-static PetscErrorCode CheckTable(TestLog *log) {
+static PetscErrorCode CheckTable(TestLog *log)
+{
   /* spec: k(p=100) = 20, k(p=200) = 5 */
   const PetscReal p[2] = {100, 200}, k[2] = {20, 5};
-  PetscReal v, dv;
+  PetscReal       v, dv;
 
   PetscFunctionBeginUser;
   PetscCall(TslTableEvaluate(2, p, k, 150, &v, &dv));
@@ -38,11 +40,12 @@ static PetscErrorCode CheckTable(TestLog *log) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckNormal(TestLog *log) {
-  TslContactLaw law;
-  TslContactInput in = FlatInput(1, -0.01);
+static PetscErrorCode CheckNormal(TestLog *log)
+{
+  TslContactLaw    law;
+  TslContactInput  in = FlatInput(1, -0.01);
   TslContactOutput out;
-  PetscReal R[9], lambda, change;
+  PetscReal        R[9], lambda, change;
 
   PetscFunctionBeginUser;
   PetscCall(TslContactLawSetDefaults(&law));
@@ -60,12 +63,12 @@ static PetscErrorCode CheckNormal(TestLog *log) {
   Check(log, (PetscReal)out.status, TSL_CONTACT_OPEN, 0, "penalty: open status");
   Check(log, PetscAbsReal(R[1]) + PetscAbsReal(R[4]), 0, 0, "penalty: open gap, no force");
 
-  law.normal = TSL_CONTACT_NORMAL_AUGMENTED;
-  in = FlatInput(1, -0.01);
+  law.normal     = TSL_CONTACT_NORMAL_AUGMENTED;
+  in             = FlatInput(1, -0.01);
   in.hist.lambda = 50;
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.pressure, 150, 1e-10, "augmented: p = <lambda + eps_n (-g)>");
-  in = FlatInput(1, 0.002);
+  in             = FlatInput(1, 0.002);
   in.hist.lambda = 50;
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.pressure, 30, 1e-10, "augmented: multiplier holds contact across a small clearance");
@@ -76,8 +79,8 @@ static PetscErrorCode CheckNormal(TestLog *log) {
   PetscCall(TslContactAugmentedUpdate(law.eps_n, 0.01, &lambda, NULL));
   Check(log, lambda, 0, 0, "augmented update: separation releases the multiplier");
 
-  in = FlatInput(3, -0.01);
-  in.kin = TSL_KIN_AXISYMMETRIC;
+  in         = FlatInput(3, -0.01);
+  in.kin     = TSL_KIN_AXISYMMETRIC;
   in.x[1][0] = 4;
   in.x[2][0] = 2;
   law.normal = TSL_CONTACT_NORMAL_PENALTY;
@@ -89,23 +92,24 @@ static PetscErrorCode CheckNormal(TestLog *log) {
 
 /* Penalty Coulomb friction: mu = 0.1, p = 100 (limit 10), eps_t = 1000. The secondary node moves by -dx in
  * x, i.e. +dx along tau = (-1, 0). */
-static PetscErrorCode CheckPenaltyFriction(TestLog *log) {
-  TslContactLaw law;
-  TslContactInput in;
+static PetscErrorCode CheckPenaltyFriction(TestLog *log)
+{
+  TslContactLaw    law;
+  TslContactInput  in;
   TslContactOutput out;
-  PetscReal R[9];
+  PetscReal        R[9];
 
   PetscFunctionBeginUser;
   PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n = 1e4;
+  law.eps_n    = 1e4;
   law.friction = TSL_CONTACT_FRICTION_PENALTY;
-  law.mu = 0.1;
-  law.eps_t = 1e3;
-  law.eta = 1;
+  law.mu       = 0.1;
+  law.eps_t    = 1e3;
+  law.eta      = 1;
 
-  in = FlatInput(1, -0.01);
+  in         = FlatInput(1, -0.01);
   in.u[0][0] = -0.005;
-  in.dt = 0.5;
+  in.dt      = 0.5;
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.slip, 0.005, 1e-14, "stick: slip increment along tau");
   Check(log, (PetscReal)out.status, TSL_CONTACT_STICK, 0, "stick: status");
@@ -137,31 +141,32 @@ static PetscErrorCode CheckPenaltyFriction(TestLog *log) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckLagrangeFriction(TestLog *log) {
-  TslContactLaw law;
-  TslContactInput in;
+static PetscErrorCode CheckLagrangeFriction(TestLog *log)
+{
+  TslContactLaw    law;
+  TslContactInput  in;
   TslContactOutput out;
-  PetscReal R[9];
-  const PetscReal slips[] = {0.02, -0.013, 1e-6, 0.3};
+  PetscReal        R[9];
+  const PetscReal  slips[] = {0.02, -0.013, 1e-6, 0.3};
 
   PetscFunctionBeginUser;
   PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n = 1e4;
+  law.eps_n    = 1e4;
   law.friction = TSL_CONTACT_FRICTION_LAGRANGE;
-  law.mu = 0.1;
+  law.mu       = 0.1;
   law.slip_tol = 1e-9;
   for (PetscInt i = 0; i < 4; i++) {
-    in = FlatInput(1, -0.01);
-    in.dt = 0.25;
+    in         = FlatInput(1, -0.01);
+    in.dt      = 0.25;
     in.u[0][0] = -slips[i];
     PetscCall(TslContactElement(&law, &in, R, NULL, &out));
     /* exactly, not to a tolerance: the point of the mode */
     Check(log, out.dissipation_rate * in.dt, law.mu * out.pressure * PetscAbsReal(out.slip),
-          4 * PETSC_MACHINE_EPSILON * law.mu * out.pressure * PetscAbsReal(out.slip),
-          "Lagrange: dissipation = mu p |slip| (slip %g)", (double)slips[i]);
+          4 * PETSC_MACHINE_EPSILON * law.mu * out.pressure * PetscAbsReal(out.slip), "Lagrange: dissipation = mu p |slip| (slip %g)",
+          (double)slips[i]);
     Check(log, out.slip, slips[i], 1e-14, "Lagrange: slip %g", (double)slips[i]);
   }
-  in = FlatInput(1, -0.01);
+  in         = FlatInput(1, -0.01);
   in.u[0][0] = -0.5e-9;
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.shear, 0.1 * 100 * 0.5, 1e-6, "Lagrange: regularised below slip_tol (tT = mu p ds/tol)");
@@ -169,31 +174,32 @@ static PetscErrorCode CheckLagrangeFriction(TestLog *log) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckConduction(TestLog *log) {
-  const PetscReal p[2] = {100, 200}, k[2] = {20, 5}, d[2] = {0, 0.1}, kd[2] = {100, 10};
-  TslContactLaw law;
-  TslContactInput in;
+static PetscErrorCode CheckConduction(TestLog *log)
+{
+  const PetscReal  p[2] = {100, 200}, k[2] = {20, 5}, d[2] = {0, 0.1}, kd[2] = {100, 10};
+  TslContactLaw    law;
+  TslContactInput  in;
   TslContactOutput out;
-  PetscReal R[9], q3;
+  PetscReal        R[9], q3;
 
   PetscFunctionBeginUser;
   PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n = 1e4;
+  law.eps_n       = 1e4;
   law.conductance = TSL_CONTACT_CONDUCTANCE_PRESSURE;
-  law.k_n = 2;
-  law.k_arg = p;
-  law.k_value = k;
-  in = FlatInput(1.5, -0.01); /* xi = 0.25 */
-  in.u[0][2] = 5;
-  in.u[1][2] = 10;
-  in.u[2][2] = 30; /* theta_main = 0.75*10 + 0.25*30 = 15 */
+  law.k_n         = 2;
+  law.k_arg       = p;
+  law.k_value     = k;
+  in              = FlatInput(1.5, -0.01); /* xi = 0.25 */
+  in.u[0][2]      = 5;
+  in.u[1][2]      = 10;
+  in.u[2][2]      = 30; /* theta_main = 0.75*10 + 0.25*30 = 15 */
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.conductance, 20, 1e-10, "conduction: k(p=100) = 20 (spec)");
   Check(log, out.heat_flux, 200, 1e-9, "conduction: q = k (theta_main - theta_secondary)");
   Check(log, R[2], -200, 1e-9, "conduction: heat into the secondary node (R = -q A)");
   Check(log, R[5], 0.75 * 200, 1e-9, "conduction: out of m1 by N1");
   Check(log, R[2] + R[5] + R[8], 0, 1e-10, "conduction: heat balance across the interface");
-  q3 = out.heat_flux;
+  q3         = out.heat_flux;
   in.x[0][1] = -0.02; /* p = 200 */
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.conductance, 5, 1e-10, "conduction: k(p=200) = 5 (spec)");
@@ -203,9 +209,9 @@ static PetscErrorCode CheckConduction(TestLog *log) {
   Check(log, out.heat_flux, 0, 0, "conduction by pressure: none across an open gap");
 
   law.conductance = TSL_CONTACT_CONDUCTANCE_CLEARANCE;
-  law.k_arg = d;
-  law.k_value = kd;
-  in.x[0][1] = 0.05;
+  law.k_arg       = d;
+  law.k_value     = kd;
+  in.x[0][1]      = 0.05;
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.conductance, 55, 1e-9, "conduction by clearance: k(0.05)");
   in.x[0][1] = 0.2;
@@ -217,13 +223,14 @@ static PetscErrorCode CheckConduction(TestLog *log) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckRadiation(TestLog *log) {
-  const PetscReal dF[1] = {0}, F[1] = {1e-6};
-  const PetscReal sb = 5.670374419e-8;
-  TslContactLaw law;
-  TslContactInput in;
+static PetscErrorCode CheckRadiation(TestLog *log)
+{
+  const PetscReal  dF[1] = {0}, F[1] = {1e-6};
+  const PetscReal  sb = 5.670374419e-8;
+  TslContactLaw    law;
+  TslContactInput  in;
   TslContactOutput out;
-  PetscReal C, dC, R[9], tm = 100 + 273.16, ts = 50 + 273.16;
+  PetscReal        C, dC, R[9], tm = 100 + 273.16, ts = 50 + 273.16;
 
   PetscFunctionBeginUser;
   PetscCall(TslGapRadiationCoefficient(sb, 1, 0.5, 0.5, &C, &dC));
@@ -234,14 +241,14 @@ static PetscErrorCode CheckRadiation(TestLog *log) {
   Check(log, C, 1e-6, 1e-20, "radiation: spec constants give C = 1e-6");
 
   PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n = 1e4;
-  law.F_n = 1;
+  law.eps_n       = 1e4;
+  law.F_n         = 1;
   law.F_clearance = dF;
-  law.F_value = F;
-  law.sigma = 1;
-  law.theta_zero = -273.16;
-  in = FlatInput(1, -0.01);
-  in.u[0][2] = 50;
+  law.F_value     = F;
+  law.sigma       = 1;
+  law.theta_zero  = -273.16;
+  in              = FlatInput(1, -0.01);
+  in.u[0][2]      = 50;
   in.u[1][2] = in.u[2][2] = 100;
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.radiation_C, 1e-6, 1e-20, "radiation: kernel uses C = 1e-6");
@@ -255,7 +262,8 @@ static PetscErrorCode CheckRadiation(TestLog *log) {
     law.F_value     = F2;
     in.x[0][1]      = 0.5;
     PetscCall(TslContactElement(&law, &in, R, NULL, &out));
-    CheckRel(log, out.heat_flux, 1e-6 * (tm * tm * tm * tm - ts * ts * ts * ts), 1e-13, 0, "radiation: continues across an open gap within the table");
+    CheckRel(log, out.heat_flux, 1e-6 * (tm * tm * tm * tm - ts * ts * ts * ts), 1e-13, 0,
+             "radiation: continues across an open gap within the table");
     in.x[0][1] = 2.0;
     PetscCall(TslContactElement(&law, &in, R, NULL, &out));
     Check(log, out.heat_flux, 0, 0, "radiation: zero beyond the last tabulated clearance");
@@ -264,38 +272,38 @@ static PetscErrorCode CheckRadiation(TestLog *log) {
 }
 
 /* Frictional heating: eta = 0.5 of the dissipation becomes heat, f of it into the secondary surface. */
-static PetscErrorCode CheckHeatGeneration(TestLog *log) {
-  TslContactLaw law;
-  TslContactInput in;
+static PetscErrorCode CheckHeatGeneration(TestLog *log)
+{
+  TslContactLaw    law;
+  TslContactInput  in;
   TslContactOutput out;
-  PetscReal R[9];
-  const PetscReal fs[2] = {0.5, 0.8};
+  PetscReal        R[9];
+  const PetscReal  fs[2] = {0.5, 0.8};
 
   PetscFunctionBeginUser;
   PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n = 1e4;
+  law.eps_n    = 1e4;
   law.friction = TSL_CONTACT_FRICTION_LAGRANGE;
-  law.mu = 0.1;
-  law.eta = 0.5;
+  law.mu       = 0.1;
+  law.eta      = 0.5;
   for (PetscInt i = 0; i < 2; i++) {
-    law.f = fs[i];
-    in = FlatInput(1.2, -0.01);
-    in.dt = 0.1;
+    law.f      = fs[i];
+    in         = FlatInput(1.2, -0.01);
+    in.dt      = 0.1;
     in.u[0][0] = -0.04;
     PetscCall(TslContactElement(&law, &in, R, NULL, &out));
-    Check(log, out.heat_generation, 0.5 * out.dissipation_rate, 1e-12, "heat generation: r = eta D (f=%g)",
+    Check(log, out.heat_generation, 0.5 * out.dissipation_rate, 1e-12, "heat generation: r = eta D (f=%g)", (double)fs[i]);
+    Check(log, -(R[2] + R[5] + R[8]), law.eta * out.area * out.dissipation_rate, 1e-10, "heat generation: split sums to eta * A * D (f=%g)",
           (double)fs[i]);
-    Check(log, -(R[2] + R[5] + R[8]), law.eta * out.area * out.dissipation_rate, 1e-10,
-          "heat generation: split sums to eta * A * D (f=%g)", (double)fs[i]);
-    Check(log, -R[2], fs[i] * law.eta * out.area * out.dissipation_rate, 1e-10,
-          "heat generation: fraction f into the secondary node (f=%g)", (double)fs[i]);
-    Check(log, R[5] / R[8], (1 - out.xi) / out.xi, 1e-10, "heat generation: main share distributed by N_a (f=%g)",
+    Check(log, -R[2], fs[i] * law.eta * out.area * out.dissipation_rate, 1e-10, "heat generation: fraction f into the secondary node (f=%g)",
           (double)fs[i]);
+    Check(log, R[5] / R[8], (1 - out.xi) / out.xi, 1e-10, "heat generation: main share distributed by N_a (f=%g)", (double)fs[i]);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-int main(int argc, char **argv) {
+int main(int argc, char **argv)
+{
   TestLog log = {0, 0};
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));

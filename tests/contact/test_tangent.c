@@ -6,11 +6,12 @@
 
 typedef struct {
   TslContactInput in;
-  PetscReal x_prev[2], u_prev[3], x_next[2], u_next[3];
+  PetscReal       x_prev[2], u_prev[3], x_next[2], u_next[3];
 } Case;
 
 /* Address of unknown i of the element (node order s, m1, m2, [prev], [next]). */
-static PetscReal *Unknown(Case *c, PetscInt i) {
+static PetscReal *Unknown(Case *c, PetscInt i)
+{
   PetscInt node = i / 3, comp = i % 3;
 
   if (node < 3) return &c->in.u[node][comp];
@@ -18,21 +19,20 @@ static PetscReal *Unknown(Case *c, PetscInt i) {
   return &c->u_next[comp];
 }
 
-static PetscErrorCode CheckCase(TestLog *log, const char *name, const TslContactLaw *law, Case *c,
-                                TslContactStatus status) {
-  PetscReal K[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF], Kfd[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF];
-  PetscReal Rp[TSL_CONTACT_MAX_DOF], Rm[TSL_CONTACT_MAX_DOF], R0[TSL_CONTACT_MAX_DOF];
+static PetscErrorCode CheckCase(TestLog *log, const char *name, const TslContactLaw *law, Case *c, TslContactStatus status)
+{
+  PetscReal        K[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF], Kfd[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF];
+  PetscReal        Rp[TSL_CONTACT_MAX_DOF], Rm[TSL_CONTACT_MAX_DOF], R0[TSL_CONTACT_MAX_DOF];
   TslContactOutput out, outp, outm;
-  PetscInt nd;
-  const char *bname[2][2] = {{"uu", "u-theta"}, {"theta-u", "theta-theta"}};
+  PetscInt         nd;
+  const char      *bname[2][2] = {{"uu", "u-theta"}, {"theta-u", "theta-theta"}};
 
   PetscFunctionBeginUser;
   if (c->in.x_prev) c->in.u_prev = c->u_prev;
   if (c->in.x_next) c->in.u_next = c->u_next;
   PetscCall(TslContactElement(law, &c->in, R0, K, &out));
   nd = 3 * out.nnode;
-  Check(log, (PetscReal)out.status, status, 0, "%s: status (gap %g, p %g, tT %g)", name, (double)out.gap,
-        (double)out.pressure, (double)out.shear);
+  Check(log, (PetscReal)out.status, status, 0, "%s: status (gap %g, p %g, tT %g)", name, (double)out.gap, (double)out.pressure, (double)out.shear);
   for (PetscInt j = 0; j < nd; j++) {
     PetscReal *v = Unknown(c, j), v0 = *v, h = (j % 3 == 2) ? 1e-5 * PetscMax(1, PetscAbsReal(v0)) : 1e-7;
 
@@ -54,79 +54,80 @@ static PetscErrorCode CheckCase(TestLog *log, const char *name, const TslContact
           all = PetscMax(all, PetscAbsReal(Kfd[i * nd + j]));
           if ((i % 3 == 2) != bi || (j % 3 == 2) != bj) continue;
           scale = PetscMax(scale, PetscAbsReal(Kfd[i * nd + j]));
-          err = PetscMax(err, PetscAbsReal(K[i * nd + j] - Kfd[i * nd + j]));
+          err   = PetscMax(err, PetscAbsReal(K[i * nd + j] - Kfd[i * nd + j]));
         }
       /* an empty block (e.g. theta-u when nothing couples) must be empty in K too */
       if (scale <= 1e-12 * all)
         Check(log, err, 0, 1e-9 * all, "%s: %s block empty (|K| vs overall scale)", name, bname[bi][bj]);
       else
-        Check(log, err / scale, 0, 1e-6, "%s: %s block, max|K - K_fd| / max|K_fd| (scale %.3g)", name, bname[bi][bj],
-              (double)scale);
+        Check(log, err / scale, 0, 1e-6, "%s: %s block, max|K - K_fd| / max|K_fd| (scale %.3g)", name, bname[bi][bj], (double)scale);
     }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Inclined main segment (body below-right), secondary slightly displaced, non-trivial temperatures. */
-static PetscErrorCode CaseSetUp(Case *c, PetscReal gap) {
+static PetscErrorCode CaseSetUp(Case *c, PetscReal gap)
+{
   PetscReal xi;
 
   PetscFunctionBeginUser;
   const PetscReal x1[2] = {2, 0.3}, x2[2] = {0, 0}, xs[2] = {0.8, 0.12 + gap};
 
   memset(c, 0, sizeof(*c));
-  c->in = InputSetUp(xs, x1, x2);
+  c->in           = InputSetUp(xs, x1, x2);
   c->in.thickness = 1.5;
-  c->in.length = 0.4;
-  c->in.dt = 0.2;
-  c->in.u[0][0] = 0.01;
-  c->in.u[0][1] = -0.004;
-  c->in.u[1][0] = 0.002;
-  c->in.u[2][1] = 0.003;
-  c->in.u[0][2] = 40;
-  c->in.u[1][2] = 120;
-  c->in.u[2][2] = 90;
+  c->in.length    = 0.4;
+  c->in.dt        = 0.2;
+  c->in.u[0][0]   = 0.01;
+  c->in.u[0][1]   = -0.004;
+  c->in.u[1][0]   = 0.002;
+  c->in.u[2][1]   = 0.003;
+  c->in.u[0][2]   = 40;
+  c->in.u[1][2]   = 120;
+  c->in.u[2][2]   = 90;
   PetscCall(TslContactProject(&c->in, &xi, NULL, NULL));
   c->in.hist.xi_old = c->in.hist.xi_anchor = xi + 0.003;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-int main(int argc, char **argv) {
-  TestLog log = {0, 0};
-  TslContactLaw law;
-  Case c;
+int main(int argc, char **argv)
+{
+  TestLog         log = {0, 0};
+  TslContactLaw   law;
+  Case            c;
   const PetscReal kp[2] = {100, 400}, kv[2] = {20, 5}, kd[3] = {0, 0.05, 0.2}, kdv[3] = {50, 30, 4};
   const PetscReal Fd[2] = {0, 0.1}, Fv[2] = {1, 0.5};
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n = 2e4;
-  law.mu = 0.3;
-  law.eps_t = 5e3;
-  law.eta = 0.9;
-  law.f = 0.3;
+  law.eps_n      = 2e4;
+  law.mu         = 0.3;
+  law.eps_t      = 5e3;
+  law.eta        = 0.9;
+  law.f          = 0.3;
   law.theta_zero = -273.16;
 
   /* open: clearance conductance and radiation only */
-  law.conductance = TSL_CONTACT_CONDUCTANCE_CLEARANCE;
-  law.k_n = 3;
-  law.k_arg = kd;
-  law.k_value = kdv;
-  law.F_n = 2;
-  law.F_clearance = Fd;
-  law.F_value = Fv;
-  law.sigma = 5.67e-8;
-  law.eps_main = 0.8;
+  law.conductance   = TSL_CONTACT_CONDUCTANCE_CLEARANCE;
+  law.k_n           = 3;
+  law.k_arg         = kd;
+  law.k_value       = kdv;
+  law.F_n           = 2;
+  law.F_clearance   = Fd;
+  law.F_value       = Fv;
+  law.sigma         = 5.67e-8;
+  law.eps_main      = 0.8;
   law.eps_secondary = 0.6;
-  law.friction = TSL_CONTACT_FRICTION_PENALTY;
+  law.friction      = TSL_CONTACT_FRICTION_PENALTY;
   PetscCall(CaseSetUp(&c, 0.03));
   PetscCall(CheckCase(&log, "open, clearance conductance + radiation", &law, &c, TSL_CONTACT_OPEN));
 
   /* stick with pressure-dependent conductance */
   law.conductance = TSL_CONTACT_CONDUCTANCE_PRESSURE;
-  law.k_n = 2;
-  law.k_arg = kp;
-  law.k_value = kv;
-  law.F_n = 0;
+  law.k_n         = 2;
+  law.k_arg       = kp;
+  law.k_value     = kv;
+  law.F_n         = 0;
   PetscCall(CaseSetUp(&c, -0.01));
   c.in.hist.xi_anchor = c.in.hist.xi_old - 0.0015;
   PetscCall(CheckCase(&log, "stick, pressure conductance", &law, &c, TSL_CONTACT_STICK));
@@ -139,7 +140,7 @@ int main(int argc, char **argv) {
 
   /* axisymmetric slip the other way */
   PetscCall(CaseSetUp(&c, -0.012));
-  c.in.kin = TSL_KIN_AXISYMMETRIC;
+  c.in.kin            = TSL_KIN_AXISYMMETRIC;
   c.in.hist.xi_anchor = c.in.hist.xi_old - 0.03;
   PetscCall(CheckCase(&log, "axisymmetric slip, reversed", &law, &c, TSL_CONTACT_SLIP));
 
@@ -151,9 +152,9 @@ int main(int argc, char **argv) {
 
   /* augmented Lagrange normal, penalty stick */
   law.friction = TSL_CONTACT_FRICTION_PENALTY;
-  law.normal = TSL_CONTACT_NORMAL_AUGMENTED;
+  law.normal   = TSL_CONTACT_NORMAL_AUGMENTED;
   PetscCall(CaseSetUp(&c, 0.001));
-  c.in.hist.lambda = 150;
+  c.in.hist.lambda    = 150;
   c.in.hist.xi_anchor = c.in.hist.xi_old - 0.0005;
   PetscCall(CheckCase(&log, "augmented Lagrange, stick", &law, &c, TSL_CONTACT_STICK));
   law.normal = TSL_CONTACT_NORMAL_PENALTY;
@@ -162,31 +163,28 @@ int main(int argc, char **argv) {
   for (PetscInt end = 0; end < 2; end++) {
     PetscCall(CaseSetUp(&c, -0.01));
     c.in.smoothing = 0.2;
-    c.x_prev[0] = 3.0;
-    c.x_prev[1] = 0.9; /* previous segment m0 -> m1 turns up: a convex corner at m1 */
-    c.x_next[0] = -1.0;
-    c.x_next[1] = -0.2;
-    c.u_prev[0] = 0.001;
-    c.u_next[1] = -0.002;
-    c.in.x_prev = c.x_prev;
-    c.in.x_next = c.x_next;
-    c.in.u_prev = c.u_prev;
-    c.in.u_next = c.u_next;
+    c.x_prev[0]    = 3.0;
+    c.x_prev[1]    = 0.9; /* previous segment m0 -> m1 turns up: a convex corner at m1 */
+    c.x_next[0]    = -1.0;
+    c.x_next[1]    = -0.2;
+    c.u_prev[0]    = 0.001;
+    c.u_next[1]    = -0.002;
+    c.in.x_prev    = c.x_prev;
+    c.in.x_next    = c.x_next;
+    c.in.u_prev    = c.u_prev;
+    c.in.u_next    = c.u_next;
     /* put s over the zone, 0.01 inside the main body: xi ~ 0.08 (near m1) or 0.93 (near m2); the segment
      * x1 -> x2 runs along (-2, -0.3), so its outward normal is (-0.3, 2)/|.| */
     {
       PetscReal xi = end == 0 ? 0.08 : 0.93, n[2] = {-0.3 / PetscSqrtReal(4.09), 2 / PetscSqrtReal(4.09)}, xr;
 
-      for (PetscInt d = 0; d < 2; d++)
-        c.in.x[0][d] = (1 - xi) * c.in.x[1][d] + xi * c.in.x[2][d] - 0.01 * n[d] - c.in.u[0][d];
+      for (PetscInt d = 0; d < 2; d++) c.in.x[0][d] = (1 - xi) * c.in.x[1][d] + xi * c.in.x[2][d] - 0.01 * n[d] - c.in.u[0][d];
       PetscCall(TslContactProject(&c.in, &xr, NULL, NULL));
-      c.in.hist.xi_old = xr + (end == 0 ? 0.01 : -0.01);
+      c.in.hist.xi_old    = xr + (end == 0 ? 0.01 : -0.01);
       c.in.hist.xi_anchor = c.in.hist.xi_old;
-      Check(&log, (PetscReal)(end == 0 ? xr < 0.2 : xr > 0.8), 1, 0, "smoothed case %d: xi = %g in rounded zone",
-            (int)end, (double)xr);
+      Check(&log, (PetscReal)(end == 0 ? xr < 0.2 : xr > 0.8), 1, 0, "smoothed case %d: xi = %g in rounded zone", (int)end, (double)xr);
     }
-    PetscCall(CheckCase(&log, end == 0 ? "smoothed corner at m1, slip" : "smoothed corner at m2, slip", &law, &c,
-                        TSL_CONTACT_SLIP));
+    PetscCall(CheckCase(&log, end == 0 ? "smoothed corner at m1, slip" : "smoothed corner at m2, slip", &law, &c, TSL_CONTACT_SLIP));
   }
   PetscCall(PetscFinalize());
   return Summary(&log);

@@ -10,16 +10,17 @@
 
 static int nfail = 0;
 
-#define EXPECT(c)                                                                                                      \
-  do {                                                                                                                 \
-    if (!(c)) {                                                                                                        \
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "FAIL %s:%d: %s\n", __FILE__, __LINE__, #c));                             \
-      nfail++;                                                                                                         \
-    }                                                                                                                  \
+#define EXPECT(c)                                                                                                                                    \
+  do {                                                                                                                                               \
+    if (!(c)) {                                                                                                                                      \
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "FAIL %s:%d: %s\n", __FILE__, __LINE__, #c));                                                           \
+      nfail++;                                                                                                                                       \
+    }                                                                                                                                                \
   } while (0)
 #define NEAR(a, b) (PetscAbsReal((PetscReal)(a) - (PetscReal)(b)) <= 1e-12 * (1 + PetscAbsReal((PetscReal)(b))))
 
-static PetscErrorCode TestInteractions(const TslModel *m) {
+static PetscErrorCode TestInteractions(const TslModel *m)
+{
   const TslInteraction *c, *r;
 
   PetscFunctionBeginUser;
@@ -28,8 +29,8 @@ static PetscErrorCode TestInteractions(const TslModel *m) {
   EXPECT(TslModelFindInteraction(m, "NOPE") == -1);
   c = &m->interactions[0];
   EXPECT(!strcmp(c->name, "Conduct") && c->loc.file == 0 && c->loc.line == 39 && NEAR(c->thickness, 1));
-  EXPECT(c->behavior.given && c->behavior.enforcement == TSL_CONTACT_AUGMENTED_LAGRANGE &&
-         NEAR(c->behavior.penalty_stiffness, 1e7) && c->behavior.loc.line == 40);
+  EXPECT(c->behavior.given && c->behavior.enforcement == TSL_CONTACT_AUGMENTED_LAGRANGE && NEAR(c->behavior.penalty_stiffness, 1e7) &&
+         c->behavior.loc.line == 40);
   EXPECT(c->friction.given && NEAR(c->friction.mu, 0.1) && c->friction.lagrange && !c->friction.rough);
   EXPECT(NEAR(c->friction.slip_tolerance, 0.005) && NEAR(c->friction.stick_slope, 0) && c->friction.loc.line == 42);
   /* given as (5, 200), (20, 100): stored sorted by pressure */
@@ -37,30 +38,26 @@ static PetscErrorCode TestInteractions(const TslModel *m) {
   EXPECT(NEAR(c->conductance.abscissa[0], 100) && NEAR(c->conductance.value[0], 20));
   EXPECT(NEAR(c->conductance.abscissa[1], 200) && NEAR(c->conductance.value[1], 5));
   EXPECT(!c->radiation.given && c->radiation.n == 0 && !c->radiation.view_factor && !c->radiation.clearance);
-  EXPECT(c->heat_generation.given && NEAR(c->heat_generation.fraction, 0.5) &&
-         NEAR(c->heat_generation.weight_secondary, 0.25) && c->heat_generation.loc.line == 47);
+  EXPECT(c->heat_generation.given && NEAR(c->heat_generation.fraction, 0.5) && NEAR(c->heat_generation.weight_secondary, 0.25) &&
+         c->heat_generation.loc.line == 47);
 
   r = &m->interactions[1];
   EXPECT(!strcmp(r->name, "RADIATE") && r->loc.line == 49 && NEAR(r->thickness, 2));
-  EXPECT(r->behavior.given && r->behavior.enforcement == TSL_CONTACT_HARD_PENALTY &&
-         NEAR(r->behavior.penalty_stiffness, 0));
-  EXPECT(r->friction.given && NEAR(r->friction.mu, 0.2) && !r->friction.lagrange &&
-         NEAR(r->friction.slip_tolerance, 0.01));
+  EXPECT(r->behavior.given && r->behavior.enforcement == TSL_CONTACT_HARD_PENALTY && NEAR(r->behavior.penalty_stiffness, 0));
+  EXPECT(r->friction.given && NEAR(r->friction.mu, 0.2) && !r->friction.lagrange && NEAR(r->friction.slip_tolerance, 0.01));
   EXPECT(NEAR(r->friction.stick_slope, 1e5));
   EXPECT(!r->conductance.given && r->conductance.n == 0 && !r->conductance.value);
   EXPECT(r->radiation.given && NEAR(r->radiation.emissivity_main, 0.8) && NEAR(r->radiation.emissivity_secondary, 0.6));
   EXPECT(r->radiation.n == 3 && r->radiation.loc.line == 54);
-  EXPECT(NEAR(r->radiation.clearance[0], 0) && NEAR(r->radiation.clearance[1], 0.1) &&
-         NEAR(r->radiation.clearance[2], 0.2));
-  EXPECT(NEAR(r->radiation.view_factor[0], 1) && NEAR(r->radiation.view_factor[1], 0.5) &&
-         NEAR(r->radiation.view_factor[2], 0.25));
+  EXPECT(NEAR(r->radiation.clearance[0], 0) && NEAR(r->radiation.clearance[1], 0.1) && NEAR(r->radiation.clearance[2], 0.2));
+  EXPECT(NEAR(r->radiation.view_factor[0], 1) && NEAR(r->radiation.view_factor[1], 0.5) && NEAR(r->radiation.view_factor[2], 0.25));
   /* no *GAP HEAT GENERATION: the dialect's defaults */
-  EXPECT(!r->heat_generation.given && NEAR(r->heat_generation.fraction, 1) &&
-         NEAR(r->heat_generation.weight_secondary, 0.5));
+  EXPECT(!r->heat_generation.given && NEAR(r->heat_generation.fraction, 1) && NEAR(r->heat_generation.weight_secondary, 0.5));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode TestPairs(const TslModel *m) {
+static PetscErrorCode TestPairs(const TslModel *m)
+{
   const TslContactPair *p;
 
   PetscFunctionBeginUser;
@@ -84,16 +81,15 @@ static PetscErrorCode TestPairs(const TslModel *m) {
 
 #define SAME(a, b, n) ((n) == 0 || (!(a) && !(b)) || ((a) && (b) && !memcmp((a), (b), (size_t)(n) * sizeof(*(a)))))
 /* Interactions and pairs equal in content (pointers differ). */
-static PetscBool ContactEqual(const TslModel *x, const TslModel *y) {
+static PetscBool ContactEqual(const TslModel *x, const TslModel *y)
+{
   if (x->ninteraction != y->ninteraction || x->npair != y->npair) return PETSC_FALSE;
   if (!SAME(x->pairs, y->pairs, x->npair)) return PETSC_FALSE;
   for (PetscInt i = 0; i < x->ninteraction; i++) {
     TslInteraction a = x->interactions[i], b = y->interactions[i];
     if (a.conductance.n != b.conductance.n || a.radiation.n != b.radiation.n) return PETSC_FALSE;
-    if (!SAME(a.conductance.value, b.conductance.value, a.conductance.n) ||
-        !SAME(a.conductance.abscissa, b.conductance.abscissa, a.conductance.n) ||
-        !SAME(a.radiation.view_factor, b.radiation.view_factor, a.radiation.n) ||
-        !SAME(a.radiation.clearance, b.radiation.clearance, a.radiation.n))
+    if (!SAME(a.conductance.value, b.conductance.value, a.conductance.n) || !SAME(a.conductance.abscissa, b.conductance.abscissa, a.conductance.n) ||
+        !SAME(a.radiation.view_factor, b.radiation.view_factor, a.radiation.n) || !SAME(a.radiation.clearance, b.radiation.clearance, a.radiation.n))
       return PETSC_FALSE;
     /* the rest of the struct byte for byte, with the table pointers blanked */
     a.conductance.value = a.conductance.abscissa = a.radiation.view_factor = a.radiation.clearance = NULL;
@@ -103,10 +99,11 @@ static PetscBool ContactEqual(const TslModel *x, const TslModel *y) {
   return PETSC_TRUE;
 }
 
-static PetscErrorCode TestPackAndSubset(const TslModel *m) {
-  char *buf;
-  size_t len;
-  TslModel *u, *s;
+static PetscErrorCode TestPackAndSubset(const TslModel *m)
+{
+  char          *buf;
+  size_t         len;
+  TslModel      *u, *s;
   const PetscInt elems[] = {1}, nodes[] = {4, 5, 6, 7}; /* the slider only */
 
   PetscFunctionBeginUser;
@@ -129,7 +126,8 @@ static PetscErrorCode TestPackAndSubset(const TslModel *m) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-int main(int argc, char **argv) {
+int main(int argc, char **argv)
+{
   TslModel *m;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));

@@ -11,36 +11,40 @@
 
 static int nfail = 0;
 
-#define EXPECT(c)                                                                                                      \
-  do {                                                                                                                 \
-    if (!(c)) {                                                                                                        \
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "FAIL %s:%d: %s\n", __FILE__, __LINE__, #c));                             \
-      nfail++;                                                                                                         \
-    }                                                                                                                  \
+#define EXPECT(c)                                                                                                                                    \
+  do {                                                                                                                                               \
+    if (!(c)) {                                                                                                                                      \
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, "FAIL %s:%d: %s\n", __FILE__, __LINE__, #c));                                                           \
+      nfail++;                                                                                                                                       \
+    }                                                                                                                                                \
   } while (0)
 #define NEAR(a, b) (PetscAbsReal((PetscReal)(a) - (PetscReal)(b)) <= 1e-12 * (1 + PetscAbsReal((PetscReal)(b))))
 
-static PetscBool EndsWith(const char *s, const char *tail) {
+static PetscBool EndsWith(const char *s, const char *tail)
+{
   size_t n = strlen(s), m = strlen(tail);
   return (n >= m && !strcmp(s + n - m, tail)) ? PETSC_TRUE : PETSC_FALSE;
 }
 
-static PetscBool IdsAre(PetscInt n, const PetscInt *ids, PetscInt m, const PetscInt *want) {
+static PetscBool IdsAre(PetscInt n, const PetscInt *ids, PetscInt m, const PetscInt *want)
+{
   if (n != m) return PETSC_FALSE;
   for (PetscInt i = 0; i < n; i++)
     if (ids[i] != want[i]) return PETSC_FALSE;
   return PETSC_TRUE;
 }
 
-static PetscBool SetIs(const TslModel *m, PetscBool node, const char *name, PetscInt n, const PetscInt *want) {
-  PetscInt i = node ? TslModelFindNodeSet(m, name) : TslModelFindElementSet(m, name);
+static PetscBool SetIs(const TslModel *m, PetscBool node, const char *name, PetscInt n, const PetscInt *want)
+{
+  PetscInt      i = node ? TslModelFindNodeSet(m, name) : TslModelFindElementSet(m, name);
   const TslSet *s;
   if (i < 0) return PETSC_FALSE;
   s = node ? &m->nsets[i] : &m->elsets[i];
   return IdsAre(s->n, s->ids, n, want);
 }
 
-static PetscErrorCode TestMesh(const TslModel *m) {
+static PetscErrorCode TestMesh(const TslModel *m)
+{
   const PetscInt all[] = {1, 2, 3, 4, 5, 6}, left[] = {1, 4, 6}, bottom[] = {1, 2, 3}, corners[] = {1, 3, 4, 6};
   const PetscInt eall[] = {1, 2}, e1[] = {1}, conn1[] = {1, 2, 5, 4}, conn2[] = {2, 3, 6, 5};
 
@@ -76,16 +80,16 @@ static PetscErrorCode TestMesh(const TslModel *m) {
   EXPECT(m->nsurface == 2);
   {
     const TslSurface *s = &m->surfaces[TslModelFindSurface(m, "top")];
-    EXPECT(s->kind == TSL_SURFACE_ELEMENT && s->n == 2 && s->elem[0] == 1 && s->elem[1] == 2 && s->face[0] == 3 &&
-           s->face[1] == 3);
+    EXPECT(s->kind == TSL_SURFACE_ELEMENT && s->n == 2 && s->elem[0] == 1 && s->elem[1] == 2 && s->face[0] == 3 && s->face[1] == 3);
     s = &m->surfaces[TslModelFindSurface(m, "RIGHTN")];
     EXPECT(s->kind == TSL_SURFACE_NODE && s->n == 2 && s->elem[0] == 3 && s->elem[1] == 6 && !s->face);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode TestModelData(const TslModel *m) {
-  const TslMaterial *mat;
+static PetscErrorCode TestModelData(const TslModel *m)
+{
+  const TslMaterial  *mat;
   const TslAmplitude *a;
 
   PetscFunctionBeginUser;
@@ -116,27 +120,25 @@ static PetscErrorCode TestModelData(const TslModel *m) {
   EXPECT(m->nequation == 2);
   {
     const TslEquation *e = &m->equations[0];
-    EXPECT(e->n == 2 && e->node[0] == 5 && e->dof[0] == 2 && NEAR(e->coef[0], 1) && e->node[1] == 2 &&
-           NEAR(e->coef[1], -1) && !e->gdof);
+    EXPECT(e->n == 2 && e->node[0] == 5 && e->dof[0] == 2 && NEAR(e->coef[0], 1) && e->node[1] == 2 && NEAR(e->coef[1], -1) && !e->gdof);
     e = &m->equations[1]; /* triples continued over two lines */
-    EXPECT(e->n == 3 && e->node[0] == 6 && e->node[1] == 4 && e->node[2] == 1 && e->dof[2] == 11 &&
-           NEAR(e->coef[2], -0.5));
+    EXPECT(e->n == 3 && e->node[0] == 6 && e->node[1] == 4 && e->node[2] == 1 && e->dof[2] == 11 && NEAR(e->coef[2], -0.5));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscBool LoadIs(const TslLoad *l, TslLoadKind kind, const char *set, PetscInt id, PetscInt d0, PetscInt d1,
-                        PetscInt face, PetscReal value) {
-  if (l->kind != kind || l->dof_first != d0 || l->dof_last != d1 || l->face != face || !NEAR(l->value, value))
-    return PETSC_FALSE;
+static PetscBool LoadIs(const TslLoad *l, TslLoadKind kind, const char *set, PetscInt id, PetscInt d0, PetscInt d1, PetscInt face, PetscReal value)
+{
+  if (l->kind != kind || l->dof_first != d0 || l->dof_last != d1 || l->face != face || !NEAR(l->value, value)) return PETSC_FALSE;
   if (set) return strcmp(l->target.set, set) ? PETSC_FALSE : PETSC_TRUE;
   return (!l->target.set[0] && l->target.id == id) ? PETSC_TRUE : PETSC_FALSE;
 }
 
-static PetscErrorCode TestSteps(const TslModel *m) {
+static PetscErrorCode TestSteps(const TslModel *m)
+{
   const TslStep *s;
   const TslLoad *l;
-  PetscInt a1 = TslModelFindAmplitude(m, "A1"), sink = TslModelFindAmplitude(m, "SINK");
+  PetscInt       a1 = TslModelFindAmplitude(m, "A1"), sink = TslModelFindAmplitude(m, "SINK");
 
   PetscFunctionBeginUser;
   EXPECT(m->nstep == 3);
@@ -149,9 +151,8 @@ static PetscErrorCode TestSteps(const TslModel *m) {
   EXPECT(LoadIs(&l[0], TSL_LOAD_BOUNDARY, "LEFT", 0, 1, 2, 0, 0) && !l[0].op_new && l[0].amplitude == -1);
   EXPECT(LoadIs(&l[1], TSL_LOAD_BOUNDARY, "BOTTOM", 0, 2, 2, 0, 0.5));
   EXPECT(LoadIs(&l[2], TSL_LOAD_BOUNDARY, NULL, 1, 11, 11, 0, 100));
-  EXPECT(LoadIs(&l[3], TSL_LOAD_BOUNDARY, "LEFT", 0, 1, 2, 0, 0) && l[3].op_new &&
-         l[3].amplitude == a1);                                                 /* ENCASTRE in 2D */
-  EXPECT(LoadIs(&l[4], TSL_LOAD_BOUNDARY, NULL, 3, 1, 1, 0, 0) && l[4].op_new); /* XSYMM */
+  EXPECT(LoadIs(&l[3], TSL_LOAD_BOUNDARY, "LEFT", 0, 1, 2, 0, 0) && l[3].op_new && l[3].amplitude == a1); /* ENCASTRE in 2D */
+  EXPECT(LoadIs(&l[4], TSL_LOAD_BOUNDARY, NULL, 3, 1, 1, 0, 0) && l[4].op_new);                           /* XSYMM */
   EXPECT(LoadIs(&l[5], TSL_LOAD_CLOAD, NULL, 3, 2, 2, 0, -1000) && l[5].loc.line == 64);
   EXPECT(LoadIs(&l[6], TSL_LOAD_CFLUX, "CORNERS", 0, 11, 11, 0, 5));
   EXPECT(LoadIs(&l[7], TSL_LOAD_DLOAD, NULL, 1, 0, 0, 3, 10) && !l[7].target_is_surface);
@@ -159,10 +160,8 @@ static PetscErrorCode TestSteps(const TslModel *m) {
   EXPECT(LoadIs(&l[9], TSL_LOAD_DFLUX, "EALL", 0, 0, 0, 0, 3) && !l[9].target_is_surface && l[9].amplitude == a1);
   EXPECT(LoadIs(&l[10], TSL_LOAD_DFLUX, NULL, 2, 0, 0, 2, 4));
   EXPECT(LoadIs(&l[11], TSL_LOAD_DFLUX, "TOP", 0, 0, 0, 0, 7) && l[11].target_is_surface && l[11].amplitude == -1);
-  EXPECT(LoadIs(&l[12], TSL_LOAD_FILM, "E1", 0, 0, 0, 4, 15) && NEAR(l[12].sink, 20) && l[12].amplitude == sink &&
-         l[12].film_amplitude == a1);
-  EXPECT(LoadIs(&l[13], TSL_LOAD_FILM, "TOP", 0, 0, 0, 0, 25) && NEAR(l[13].sink, 30) && l[13].target_is_surface &&
-         l[13].film_amplitude == -1);
+  EXPECT(LoadIs(&l[12], TSL_LOAD_FILM, "E1", 0, 0, 0, 4, 15) && NEAR(l[12].sink, 20) && l[12].amplitude == sink && l[12].film_amplitude == a1);
+  EXPECT(LoadIs(&l[13], TSL_LOAD_FILM, "TOP", 0, 0, 0, 0, 25) && NEAR(l[13].sink, 30) && l[13].target_is_surface && l[13].film_amplitude == -1);
 
   EXPECT(s->nout == 4);
   EXPECT(s->out[0].node && !s->out[0].print && !s->out[0].set[0] && s->out[0].nvar == 4 && s->out[0].frequency == 2);
@@ -172,8 +171,7 @@ static PetscErrorCode TestSteps(const TslModel *m) {
   EXPECT(!s->out[3].node && s->out[3].print && s->out[3].frequency == 3);
 
   s = &m->steps[1];
-  EXPECT(!strcmp(s->name, "Step-2") && s->steady && s->amp_given && s->amp_default == TSL_AMP_RAMP &&
-         s->max_inc == 100 && !s->nlgeom);
+  EXPECT(!strcmp(s->name, "Step-2") && s->steady && s->amp_given && s->amp_default == TSL_AMP_RAMP && s->max_inc == 100 && !s->nlgeom);
   EXPECT(NEAR(s->dt0, 1) && NEAR(s->period, 1) && NEAR(s->dtmin, 1e-5) && NEAR(s->dtmax, 1));
   EXPECT(s->nout == 2 && s->out[0].node && s->out[0].frequency == 1 && !s->out[1].node);
   s = &m->steps[2];
@@ -184,34 +182,29 @@ static PetscErrorCode TestSteps(const TslModel *m) {
 
 /* Field-by-field equality of two models (pointers differ, contents must not). */
 #define SAME(a, b, n) ((n) == 0 || (!(a) && !(b)) || ((a) && (b) && !memcmp((a), (b), (size_t)(n) * sizeof(*(a)))))
-static PetscBool ModelsEqual(const TslModel *x, const TslModel *y) {
-  if (x->nfile != y->nfile || strcmp(x->heading, y->heading) || x->dim != y->dim || x->nnode != y->nnode ||
-      x->nelem != y->nelem)
-    return PETSC_FALSE;
+static PetscBool ModelsEqual(const TslModel *x, const TslModel *y)
+{
+  if (x->nfile != y->nfile || strcmp(x->heading, y->heading) || x->dim != y->dim || x->nnode != y->nnode || x->nelem != y->nelem) return PETSC_FALSE;
   for (PetscInt i = 0; i < x->nfile; i++)
     if (strcmp(x->files[i], y->files[i])) return PETSC_FALSE;
   if (!SAME(x->node_id, y->node_id, x->nnode) || !SAME(x->node_xyz, y->node_xyz, 3 * x->nnode)) return PETSC_FALSE;
-  if (!SAME(x->elem_id, y->elem_id, x->nelem) || !SAME(x->elem_type, y->elem_type, x->nelem) ||
-      !SAME(x->elem_ptr, y->elem_ptr, x->nelem + 1))
+  if (!SAME(x->elem_id, y->elem_id, x->nelem) || !SAME(x->elem_type, y->elem_type, x->nelem) || !SAME(x->elem_ptr, y->elem_ptr, x->nelem + 1))
     return PETSC_FALSE;
-  if (!SAME(x->elem_conn, y->elem_conn, x->elem_ptr[x->nelem]) || !SAME(x->elem_line, y->elem_line, 2 * x->nelem))
-    return PETSC_FALSE;
-  if (!!x->node_gnum != !!y->node_gnum || !SAME(x->node_gnum, y->node_gnum, x->nnode) ||
-      !SAME(x->node_nat, y->node_nat, x->nnode) || !SAME(x->elem_nat, y->elem_nat, x->nelem))
+  if (!SAME(x->elem_conn, y->elem_conn, x->elem_ptr[x->nelem]) || !SAME(x->elem_line, y->elem_line, 2 * x->nelem)) return PETSC_FALSE;
+  if (!!x->node_gnum != !!y->node_gnum || !SAME(x->node_gnum, y->node_gnum, x->nnode) || !SAME(x->node_nat, y->node_nat, x->nnode) ||
+      !SAME(x->elem_nat, y->elem_nat, x->nelem))
     return PETSC_FALSE;
   if (x->nnset != y->nnset || x->nelset != y->nelset || x->nsurface != y->nsurface) return PETSC_FALSE;
   for (PetscInt i = 0; i < x->nnset; i++)
-    if (strcmp(x->nsets[i].name, y->nsets[i].name) || x->nsets[i].n != y->nsets[i].n ||
-        !SAME(x->nsets[i].ids, y->nsets[i].ids, x->nsets[i].n))
+    if (strcmp(x->nsets[i].name, y->nsets[i].name) || x->nsets[i].n != y->nsets[i].n || !SAME(x->nsets[i].ids, y->nsets[i].ids, x->nsets[i].n))
       return PETSC_FALSE;
   for (PetscInt i = 0; i < x->nelset; i++)
-    if (strcmp(x->elsets[i].name, y->elsets[i].name) || x->elsets[i].n != y->elsets[i].n ||
-        !SAME(x->elsets[i].ids, y->elsets[i].ids, x->elsets[i].n))
+    if (strcmp(x->elsets[i].name, y->elsets[i].name) || x->elsets[i].n != y->elsets[i].n || !SAME(x->elsets[i].ids, y->elsets[i].ids, x->elsets[i].n))
       return PETSC_FALSE;
   for (PetscInt i = 0; i < x->nsurface; i++) {
     const TslSurface *a = &x->surfaces[i], *b = &y->surfaces[i];
-    if (strcmp(a->name, b->name) || a->kind != b->kind || a->n != b->n || !SAME(a->elem, b->elem, a->n) ||
-        !!a->face != !!b->face || !SAME(a->face, b->face, a->n))
+    if (strcmp(a->name, b->name) || a->kind != b->kind || a->n != b->n || !SAME(a->elem, b->elem, a->n) || !!a->face != !!b->face ||
+        !SAME(a->face, b->face, a->n))
       return PETSC_FALSE;
   }
   if (x->nmaterial != y->nmaterial || !SAME(x->materials, y->materials, x->nmaterial)) return PETSC_FALSE;
@@ -220,43 +213,35 @@ static PetscBool ModelsEqual(const TslModel *x, const TslModel *y) {
   if (x->namplitude != y->namplitude) return PETSC_FALSE;
   for (PetscInt i = 0; i < x->namplitude; i++) {
     const TslAmplitude *a = &x->amplitudes[i], *b = &y->amplitudes[i];
-    if (strcmp(a->name, b->name) || a->n != b->n || a->total_time != b->total_time || !SAME(a->t, b->t, a->n) ||
-        !SAME(a->a, b->a, a->n))
+    if (strcmp(a->name, b->name) || a->n != b->n || a->total_time != b->total_time || !SAME(a->t, b->t, a->n) || !SAME(a->a, b->a, a->n))
       return PETSC_FALSE;
   }
   if (x->nequation != y->nequation) return PETSC_FALSE;
   for (PetscInt i = 0; i < x->nequation; i++) {
     const TslEquation *a = &x->equations[i], *b = &y->equations[i];
-    if (a->n != b->n || !SAME(a->node, b->node, a->n) || !SAME(a->dof, b->dof, a->n) || !SAME(a->coef, b->coef, a->n))
-      return PETSC_FALSE;
+    if (a->n != b->n || !SAME(a->node, b->node, a->n) || !SAME(a->dof, b->dof, a->n) || !SAME(a->coef, b->coef, a->n)) return PETSC_FALSE;
     if (!!a->gdof != !!b->gdof || !SAME(a->gdof, b->gdof, a->n) || a->loc.line != b->loc.line) return PETSC_FALSE;
   }
-  if (x->has_absolute_zero != y->has_absolute_zero || x->absolute_zero != y->absolute_zero ||
-      x->stefan_boltzmann != y->stefan_boltzmann)
+  if (x->has_absolute_zero != y->has_absolute_zero || x->absolute_zero != y->absolute_zero || x->stefan_boltzmann != y->stefan_boltzmann)
     return PETSC_FALSE;
-  if (x->nnode_global != y->nnode_global || x->nelem_global != y->nelem_global || x->nnode_owned != y->nnode_owned)
-    return PETSC_FALSE;
+  if (x->nnode_global != y->nnode_global || x->nelem_global != y->nelem_global || x->nnode_owned != y->nnode_owned) return PETSC_FALSE;
   if (x->nstep != y->nstep) return PETSC_FALSE;
   for (PetscInt i = 0; i < x->nstep; i++) {
     const TslStep *a = &x->steps[i], *b = &y->steps[i];
-    if (strcmp(a->name, b->name) || a->coupled != b->coupled || a->steady != b->steady || a->dt0 != b->dt0 ||
-        a->period != b->period)
+    if (strcmp(a->name, b->name) || a->coupled != b->coupled || a->steady != b->steady || a->dt0 != b->dt0 || a->period != b->period)
       return PETSC_FALSE;
-    if (a->dtmin != b->dtmin || a->dtmax != b->dtmax || a->deltmx != b->deltmx || a->max_inc != b->max_inc ||
-        a->amp_default != b->amp_default)
+    if (a->dtmin != b->dtmin || a->dtmax != b->dtmax || a->deltmx != b->deltmx || a->max_inc != b->max_inc || a->amp_default != b->amp_default)
       return PETSC_FALSE;
-    if (a->nlgeom != b->nlgeom || a->direct != b->direct || a->amp_given != b->amp_given || a->loc.line != b->loc.line)
-      return PETSC_FALSE;
-    if (a->nload != b->nload || !SAME(a->loads, b->loads, a->nload) || a->nout != b->nout ||
-        !SAME(a->out, b->out, a->nout))
-      return PETSC_FALSE;
+    if (a->nlgeom != b->nlgeom || a->direct != b->direct || a->amp_given != b->amp_given || a->loc.line != b->loc.line) return PETSC_FALSE;
+    if (a->nload != b->nload || !SAME(a->loads, b->loads, a->nload) || a->nout != b->nout || !SAME(a->out, b->out, a->nout)) return PETSC_FALSE;
   }
   return PETSC_TRUE;
 }
 
-static PetscErrorCode TestPack(TslModel *m) {
-  char *buf, *buf2;
-  size_t len, len2;
+static PetscErrorCode TestPack(TslModel *m)
+{
+  char     *buf, *buf2;
+  size_t    len, len2;
   TslModel *u;
 
   PetscFunctionBeginUser;
@@ -279,8 +264,7 @@ static PetscErrorCode TestPack(TslModel *m) {
   PetscCall(TslModelPack(m, &buf, &len));
   PetscCall(TslModelUnpack(buf, len, &u));
   EXPECT(ModelsEqual(m, u));
-  EXPECT(u->node_gnum && u->node_gnum[5] == 15 && u->elem_nat[1] == 0 && u->equations[1].gdof[2] == 102 &&
-         !u->equations[0].gdof);
+  EXPECT(u->node_gnum && u->node_gnum[5] == 15 && u->elem_nat[1] == 0 && u->equations[1].gdof[2] == 102 && !u->equations[0].gdof);
   PetscCall(TslModelPack(u, &buf2, &len2));
   EXPECT(len2 == len);
   PetscCall(PetscFree(buf2));
@@ -289,10 +273,11 @@ static PetscErrorCode TestPack(TslModel *m) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode TestSubset(const TslModel *m) {
+static PetscErrorCode TestSubset(const TslModel *m)
+{
   const PetscInt elems[] = {1}, nodes[] = {5, 1, 2, 4}; /* element 2; nodes 6, 2, 3, 5 in that order */
   const PetscInt ids[] = {6, 2, 3, 5}, left[] = {6}, bottom[] = {2, 3}, corners[] = {3, 6}, eall[] = {2};
-  TslModel *s;
+  TslModel      *s;
 
   PetscFunctionBeginUser;
   PetscCall(TslModelSubset(m, 1, elems, 4, nodes, &s));
@@ -305,15 +290,13 @@ static PetscErrorCode TestSubset(const TslModel *m) {
          SetIs(s, PETSC_TRUE, "CORNERS", 2, corners));
   EXPECT(s->nelset == 2 && SetIs(s, PETSC_FALSE, "EALL", 1, eall) && SetIs(s, PETSC_FALSE, "E1", 0, NULL));
   {
-    const TslSurface *t = &s->surfaces[TslModelFindSurface(s, "TOP")],
-                     *r = &s->surfaces[TslModelFindSurface(s, "RIGHTN")];
+    const TslSurface *t = &s->surfaces[TslModelFindSurface(s, "TOP")], *r = &s->surfaces[TslModelFindSurface(s, "RIGHTN")];
     EXPECT(t->n == 1 && t->elem[0] == 2 && t->face[0] == 3);
     EXPECT(r->n == 2 && r->elem[0] == 3 && r->elem[1] == 6 && !r->face);
   }
   EXPECT(s->nequation == 2 && s->equations[1].gdof && s->equations[1].gdof[0] == 100);
   /* non-mesh data whole */
-  EXPECT(s->nmaterial == 1 && s->nstep == 3 && s->steps[0].nload == 14 && s->namplitude == 2 && s->ninit == 2 &&
-         s->nfile == 3);
+  EXPECT(s->nmaterial == 1 && s->nstep == 3 && s->steps[0].nload == 14 && s->namplitude == 2 && s->ninit == 2 && s->nfile == 3);
   EXPECT(!strcmp(s->steps[0].name, "heat up") && s->amplitudes[0].n == 5 && !strcmp(s->heading, m->heading));
   PetscCall(TslModelDestroy(&s));
 
@@ -328,7 +311,8 @@ static PetscErrorCode TestSubset(const TslModel *m) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-int main(int argc, char **argv) {
+int main(int argc, char **argv)
+{
   TslModel *m;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));

@@ -11,9 +11,10 @@ typedef struct {
 } TestLog;
 
 /* |value - expected| <= tol passes. */
-static inline void Check(TestLog *log, PetscReal value, PetscReal expected, PetscReal tol, const char *fmt, ...) {
-  char name[256];
-  va_list ap;
+static inline void Check(TestLog *log, PetscReal value, PetscReal expected, PetscReal tol, const char *fmt, ...)
+{
+  char      name[256];
+  va_list   ap;
   PetscBool ok = (PetscBool)(PetscAbsReal(value - expected) <= tol);
 
   va_start(ap, fmt);
@@ -24,7 +25,8 @@ static inline void Check(TestLog *log, PetscReal value, PetscReal expected, Pets
   printf("%s: %.10g (%.10g, %.1e) %s\n", name, (double)value, (double)expected, (double)tol, ok ? "PASS" : "FAIL");
 }
 
-static inline int Summary(const TestLog *log) {
+static inline int Summary(const TestLog *log)
+{
   printf("%d of %d checks failed\n", (int)log->failures, (int)log->checks);
   return log->failures ? 1 : 0;
 }

@@ -5,74 +5,69 @@
 
 typedef struct {
   const TslElementType *type;
-  TslElementMaterial mat;
-  PetscReal x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], u_old[TSL_MAX_ELEM_DOF], theta_init[TSL_MAX_ELEM_NODES];
-  TslElementInput in;
+  TslElementMaterial    mat;
+  PetscReal             x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], u_old[TSL_MAX_ELEM_DOF], theta_init[TSL_MAX_ELEM_NODES];
+  TslElementInput       in;
 } Case;
 
 static const PetscReal ALPHA = 1e-3, THETA0 = 20;
 
 /* Unit element (reference element mapped onto [0,1]^dim), shifted to r in [1,2] for axisymmetry;
  * distortion > 0 moves every node by a fixed pseudo-random amount of that size. */
-static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion) {
+static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
+{
   const TslGeometry *g = type->geom;
 
   c->type = type;
-  c->mat = (TslElementMaterial){
-      .E = 200e3, .nu = 0.3, .conductivity = 10, .density = 2, .specific_heat = 3, .alpha = ALPHA, .thickness = 0.5};
+  c->mat  = (TslElementMaterial){.E = 200e3, .nu = 0.3, .conductivity = 10, .density = 2, .specific_heat = 3, .alpha = ALPHA, .thickness = 0.5};
   for (PetscInt a = 0; a < g->nnode; a++) {
     for (PetscInt d = 0; d < 3; d++) {
-      c->x[3 * a + d] =
-          d < type->dim ? 0.5 * (g->node_xi[a][d] + 1) + distortion * PetscSinReal(3.1 * a + 1.3 * d + 0.7) : 0;
+      c->x[3 * a + d] = d < type->dim ? 0.5 * (g->node_xi[a][d] + 1) + distortion * PetscSinReal(3.1 * a + 1.3 * d + 0.7) : 0;
     }
     if (type->kin == TSL_KIN_AXISYMMETRIC) c->x[3 * a] += 1;
     c->theta_init[a] = THETA0;
-    for (PetscInt i = 0; i < type->ndof; i++)
-      c->u[type->ndof * a + i] = c->u_old[type->ndof * a + i] = i == type->dim ? THETA0 : 0;
+    for (PetscInt i = 0; i < type->ndof; i++) c->u[type->ndof * a + i] = c->u_old[type->ndof * a + i] = i == type->dim ? THETA0 : 0;
   }
-  c->in = (TslElementInput){.type = type,
-                            .mat = &c->mat,
-                            .x = c->x,
-                            .u = c->u,
-                            .u_old = c->u_old,
-                            .theta_init = c->theta_init,
-                            .dt = 0.1,
-                            .steady = PETSC_TRUE};
+  c->in = (TslElementInput){
+      .type = type, .mat = &c->mat, .x = c->x, .u = c->u, .u_old = c->u_old, .theta_init = c->theta_init, .dt = 0.1, .steady = PETSC_TRUE};
 }
 
-static PetscInt NDof(const Case *c) {
+static PetscInt NDof(const Case *c)
+{
   return c->type->geom->nnode * c->type->ndof;
 }
 
 /* Max |R| over the displacement (or temperature) rows. */
-static PetscReal MaxRow(const Case *c, const PetscReal R[], PetscBool theta_rows) {
+static PetscReal MaxRow(const Case *c, const PetscReal R[], PetscBool theta_rows)
+{
   PetscReal m = 0;
   for (PetscInt i = 0; i < NDof(c); i++)
     if ((i % c->type->ndof == c->type->dim) == theta_rows) m = PetscMax(m, PetscAbsReal(R[i]));
   return m;
 }
 
-static PetscErrorCode CheckRigidMotion(TestLog *log, Case *c) {
+static PetscErrorCode CheckRigidMotion(TestLog *log, Case *c)
+{
   const PetscInt dim = c->type->dim, ndof = c->type->ndof;
-  PetscReal R[TSL_MAX_ELEM_DOF];
-  PetscBool inv;
+  PetscReal      R[TSL_MAX_ELEM_DOF];
+  PetscBool      inv;
 
   PetscFunctionBeginUser;
   /* translation (axial only for axisymmetry: a radial shift strains the hoop direction) */
   for (PetscInt a = 0; a < c->type->geom->nnode; a++)
-    for (PetscInt i = 0; i < dim; i++)
-      c->u[ndof * a + i] = (c->type->kin == TSL_KIN_AXISYMMETRIC && i == 0) ? 0 : 0.01 * (i + 1);
+    for (PetscInt i = 0; i < dim; i++) c->u[ndof * a + i] = (c->type->kin == TSL_KIN_AXISYMMETRIC && i == 0) ? 0 : 0.01 * (i + 1);
   PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
   Check(log, MaxRow(c, R, PETSC_FALSE), 0, 1e-9, "%s rigid translation max|R_u|", c->type->name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckThermalPatch(TestLog *log, Case *c, PetscBool constrained) {
-  const TslElementType *t = c->type;
-  const PetscInt dim = t->dim, ndof = t->ndof;
-  const PetscReal E = c->mat.E, nu = c->mat.nu, dT = 15;
-  PetscReal R[TSL_MAX_ELEM_DOF], S[6], Eps[6], H[3], Sx[6] = {0}, Ex[6] = {0}, stretch = ALPHA * dT;
-  PetscBool inv;
+static PetscErrorCode CheckThermalPatch(TestLog *log, Case *c, PetscBool constrained)
+{
+  const TslElementType *t   = c->type;
+  const PetscInt        dim = t->dim, ndof = t->ndof;
+  const PetscReal       E = c->mat.E, nu = c->mat.nu, dT = 15;
+  PetscReal             R[TSL_MAX_ELEM_DOF], S[6], Eps[6], H[3], Sx[6] = {0}, Ex[6] = {0}, stretch = ALPHA * dT;
+  PetscBool             inv;
 
   PetscFunctionBeginUser;
   if (!constrained) {
@@ -92,21 +87,20 @@ static PetscErrorCode CheckThermalPatch(TestLog *log, Case *c, PetscBool constra
   PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
   PetscCall(TslElementOutput(&c->in, S, Eps, H));
   for (PetscInt r = 0; r < 6; r++) {
-    Check(log, S[r], Sx[r], 1e-9 * E * ALPHA * dT, "%s %s expansion S%" PetscInt_FMT, t->name,
-          constrained ? "constrained" : "free", r + 1);
-    Check(log, Eps[r], Ex[r], 1e-12, "%s %s expansion E%" PetscInt_FMT, t->name, constrained ? "constrained" : "free",
-          r + 1);
+    Check(log, S[r], Sx[r], 1e-9 * E * ALPHA * dT, "%s %s expansion S%" PetscInt_FMT, t->name, constrained ? "constrained" : "free", r + 1);
+    Check(log, Eps[r], Ex[r], 1e-12, "%s %s expansion E%" PetscInt_FMT, t->name, constrained ? "constrained" : "free", r + 1);
   }
   if (!constrained) Check(log, MaxRow(c, R, PETSC_FALSE), 0, 1e-9, "%s free expansion max|R_u|", t->name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* theta = g.x + 5 is reproduced exactly by isoparametric elements, so HFL = -k g on any shape. */
-static PetscErrorCode CheckLinearTemperature(TestLog *log, Case *c) {
-  const PetscInt dim = c->type->dim, ndof = c->type->ndof;
+static PetscErrorCode CheckLinearTemperature(TestLog *log, Case *c)
+{
+  const PetscInt  dim = c->type->dim, ndof = c->type->ndof;
   const PetscReal g[3] = {3, -2, 1.5};
-  PetscReal S[6], Eps[6], H[3], K[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF], R[TSL_MAX_ELEM_DOF], kone = 0, kthu = 0;
-  PetscBool inv;
+  PetscReal       S[6], Eps[6], H[3], K[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF], R[TSL_MAX_ELEM_DOF], kone = 0, kthu = 0;
+  PetscBool       inv;
 
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < c->type->geom->nnode; a++) {
@@ -115,8 +109,7 @@ static PetscErrorCode CheckLinearTemperature(TestLog *log, Case *c) {
   }
   PetscCall(TslElementOutput(&c->in, S, Eps, H));
   for (PetscInt d = 0; d < 3; d++)
-    Check(log, H[d], d < dim ? -c->mat.conductivity * g[d] : 0, 1e-10, "%s linear theta HFL%" PetscInt_FMT,
-          c->type->name, d + 1);
+    Check(log, H[d], d < dim ? -c->mat.conductivity * g[d] : 0, 1e-10, "%s linear theta HFL%" PetscInt_FMT, c->type->name, d + 1);
   /* steady: a uniform temperature conducts nothing, and the thermal rows do not see displacement */
   PetscCall(TslElementResidual(&c->in, R, K, &inv));
   for (PetscInt i = dim; i < NDof(c); i += ndof) {
@@ -132,7 +125,8 @@ static PetscErrorCode CheckLinearTemperature(TestLog *log, Case *c) {
 }
 
 /* Expected measure of the unit element: thickness 0.5 in plane, 2 pi * 1.5 for r in [1,2]. */
-static PetscReal UnitVolume(const Case *c) {
+static PetscReal UnitVolume(const Case *c)
+{
   switch (c->type->kin) {
   case TSL_KIN_PLANE_STRAIN:
   case TSL_KIN_PLANE_STRESS:
@@ -144,10 +138,11 @@ static PetscReal UnitVolume(const Case *c) {
   }
 }
 
-static PetscErrorCode CheckVolumeAndHeat(TestLog *log, Case *c) {
+static PetscErrorCode CheckVolumeAndHeat(TestLog *log, Case *c)
+{
   const PetscInt dim = c->type->dim, ndof = c->type->ndof, n = c->type->geom->nnode;
-  PetscReal vol[TSL_MAX_ELEM_NODES], V = 0, dQ, Rs[TSL_MAX_ELEM_DOF], Rt[TSL_MAX_ELEM_DOF], cap = 0;
-  PetscBool inv;
+  PetscReal      vol[TSL_MAX_ELEM_NODES], V = 0, dQ, Rs[TSL_MAX_ELEM_DOF], Rt[TSL_MAX_ELEM_DOF], cap = 0;
+  PetscBool      inv;
 
   PetscFunctionBeginUser;
   PetscCall(TslElementNodalVolume(&c->in, vol));
@@ -174,9 +169,10 @@ static PetscErrorCode CheckVolumeAndHeat(TestLog *log, Case *c) {
 
 /* The element residual (face == 0) or a film on one face alone (face > 0), so that the small film
  * Jacobian is not hidden behind the stiffness in a relative comparison. */
-static PetscErrorCode PartResidual(Case *c, PetscInt face, PetscReal R[], PetscReal K[]) {
-  const PetscInt nd = NDof(c);
-  PetscBool inv = PETSC_FALSE;
+static PetscErrorCode PartResidual(Case *c, PetscInt face, PetscReal R[], PetscReal K[])
+{
+  const PetscInt nd  = NDof(c);
+  PetscBool      inv = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   if (face == 0)
@@ -193,16 +189,16 @@ static PetscErrorCode PartResidual(Case *c, PetscInt face, PetscReal R[], PetscR
 
 /* K against central differences of R on a distorted element with a transient capacity term, block by
  * block (u-u, u-theta, theta-u, theta-theta), each relative to the largest entry of its block. */
-static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face) {
+static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face)
+{
   static const char *block_name[2][2] = {{"uu", "u-theta"}, {"theta-u", "theta-theta"}};
-  const PetscInt nd = NDof(c), ndof = c->type->ndof, dim = c->type->dim;
-  PetscReal K[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF], R[TSL_MAX_ELEM_DOF], Rp[TSL_MAX_ELEM_DOF], Rm[TSL_MAX_ELEM_DOF];
-  PetscReal kmax[2][2] = {{0}}, err[2][2] = {{0}};
+  const PetscInt     nd = NDof(c), ndof = c->type->ndof, dim = c->type->dim;
+  PetscReal          K[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF], R[TSL_MAX_ELEM_DOF], Rp[TSL_MAX_ELEM_DOF], Rm[TSL_MAX_ELEM_DOF];
+  PetscReal          kmax[2][2] = {{0}}, err[2][2] = {{0}};
 
   PetscFunctionBeginUser;
   c->in.steady = PETSC_FALSE;
-  for (PetscInt i = 0; i < nd; i++)
-    c->u[i] = (i % ndof == dim) ? THETA0 + 10 * PetscSinReal(1.1 * i + 0.3) : 0.01 * PetscCosReal(2.3 * i + 0.1);
+  for (PetscInt i = 0; i < nd; i++) c->u[i] = (i % ndof == dim) ? THETA0 + 10 * PetscSinReal(1.1 * i + 0.3) : 0.01 * PetscCosReal(2.3 * i + 0.1);
   PetscCall(PartResidual(c, face, R, K));
   for (PetscInt j = 0; j < nd; j++) {
     const PetscReal save = c->u[j], h = 1e-6 * PetscMax(1, PetscAbsReal(save));
@@ -213,7 +209,7 @@ static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face) {
     c->u[j] = save;
     for (PetscInt i = 0; i < nd; i++) {
       const PetscInt bi = i % ndof == dim, bj = j % ndof == dim;
-      err[bi][bj] = PetscMax(err[bi][bj], PetscAbsReal((Rp[i] - Rm[i]) / (2 * h) - K[i * nd + j]));
+      err[bi][bj]  = PetscMax(err[bi][bj], PetscAbsReal((Rp[i] - Rm[i]) / (2 * h) - K[i * nd + j]));
       kmax[bi][bj] = PetscMax(kmax[bi][bj], PetscAbsReal(K[i * nd + j]));
     }
   }
@@ -223,25 +219,23 @@ static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face) {
       /* blocks that are exactly zero (theta-u; all but theta-theta for a film) compare absolutely */
       const PetscReal scale = kmax[bi][bj] > 0 ? kmax[bi][bj] : 1;
       if (face > 0)
-        Check(log, err[bi][bj] / scale, 0, 1e-6,
-              "%s film on S%" PetscInt_FMT " tangent %s block vs central differences (relative)", c->type->name, face,
-              block_name[bi][bj]);
+        Check(log, err[bi][bj] / scale, 0, 1e-6, "%s film on S%" PetscInt_FMT " tangent %s block vs central differences (relative)", c->type->name,
+              face, block_name[bi][bj]);
       else
-        Check(log, err[bi][bj] / scale, 0, 1e-6, "%s tangent %s block vs central differences (relative)", c->type->name,
-              block_name[bi][bj]);
+        Check(log, err[bi][bj] / scale, 0, 1e-6, "%s tangent %s block vs central differences (relative)", c->type->name, block_name[bi][bj]);
     }
-  if (face > 0)
-    Check(log, kmax[1][1] > 0, 1, 0, "%s film on S%" PetscInt_FMT " has a theta-theta tangent", c->type->name, face);
+  if (face > 0) Check(log, kmax[1][1] > 0, 1, 0, "%s film on S%" PetscInt_FMT " has a theta-theta tangent", c->type->name, face);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Unit element: outward normal of face f is the direction from the element centre to the face centre,
  * and the face area is 1 times thickness or 2 pi r at the face centre. */
-static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c) {
-  const TslGeometry *g = c->type->geom;
-  const PetscInt dim = c->type->dim, ndof = c->type->ndof, nd = NDof(c);
-  const PetscReal p = 3, q = 5, h = 4, sink = 12, theta = 50;
-  PetscReal R[TSL_MAX_ELEM_DOF], heat, vol[TSL_MAX_ELEM_NODES], V = 0;
+static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c)
+{
+  const TslGeometry *g   = c->type->geom;
+  const PetscInt     dim = c->type->dim, ndof = c->type->ndof, nd = NDof(c);
+  const PetscReal    p = 3, q = 5, h = 4, sink = 12, theta = 50;
+  PetscReal          R[TSL_MAX_ELEM_DOF], heat, vol[TSL_MAX_ELEM_NODES], V = 0;
 
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < g->nnode; a++) c->u[ndof * a + dim] = theta;
@@ -260,8 +254,7 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c) {
     for (PetscInt a = 0; a < g->nnode; a++)
       for (PetscInt i = 0; i < dim; i++) force[i] -= R[ndof * a + i];
     for (PetscInt i = 0; i < dim; i++)
-      Check(log, force[i], -p * area * n[i], 1e-12, "%s S%" PetscInt_FMT " pressure force %" PetscInt_FMT,
-            c->type->name, f + 1, i + 1);
+      Check(log, force[i], -p * area * n[i], 1e-12, "%s S%" PetscInt_FMT " pressure force %" PetscInt_FMT, c->type->name, f + 1, i + 1);
 
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_FLUX, f + 1, q, 0, R, NULL, &heat));
@@ -288,7 +281,8 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckInverted(TestLog *log, Case *c) {
+static PetscErrorCode CheckInverted(TestLog *log, Case *c)
+{
   PetscReal R[TSL_MAX_ELEM_DOF];
   PetscBool inv;
 
@@ -308,9 +302,10 @@ static PetscErrorCode CheckInverted(TestLog *log, Case *c) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-int main(int argc, char **argv) {
+int main(int argc, char **argv)
+{
   TestLog log = {0, 0};
-  Case c;
+  Case    c;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   for (PetscInt t = 0; t < TslElementTypeCount(); t++) {

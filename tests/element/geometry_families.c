@@ -5,7 +5,8 @@
 
 #define MAX_FAMILIES 16
 
-static void AddFamily(const TslGeometry *g, const TslGeometry *list[], PetscInt *n) {
+static void AddFamily(const TslGeometry *g, const TslGeometry *list[], PetscInt *n)
+{
   for (PetscInt i = 0; i < *n; i++)
     if (list[i] == g) return;
   list[(*n)++] = g;
@@ -14,7 +15,8 @@ static void AddFamily(const TslGeometry *g, const TslGeometry *list[], PetscInt 
 
 /* A point inside the reference element: a fixed convex combination of the nodes, so it works for
  * any convex reference shape. */
-static void InteriorPoint(const TslGeometry *g, PetscInt k, PetscReal xi[3]) {
+static void InteriorPoint(const TslGeometry *g, PetscInt k, PetscReal xi[3])
+{
   PetscReal wsum = 0;
   for (PetscInt d = 0; d < 3; d++) xi[d] = 0;
   for (PetscInt a = 0; a < g->nnode; a++) {
@@ -25,10 +27,11 @@ static void InteriorPoint(const TslGeometry *g, PetscInt k, PetscReal xi[3]) {
   for (PetscInt d = 0; d < 3; d++) xi[d] /= wsum;
 }
 
-static void CheckShape(TestLog *log, const TslGeometry *g) {
-  const PetscInt n = g->nnode, dim = g->dim;
-  PetscReal N[TSL_MAX_ELEM_NODES], dN[TSL_MAX_ELEM_NODES * 3], Np[TSL_MAX_ELEM_NODES], Nm[TSL_MAX_ELEM_NODES];
-  PetscReal scratch[TSL_MAX_ELEM_NODES * 3], unity = 0, dsum = 0, kron = 0, fd = 0;
+static void CheckShape(TestLog *log, const TslGeometry *g)
+{
+  const PetscInt  n = g->nnode, dim = g->dim;
+  PetscReal       N[TSL_MAX_ELEM_NODES], dN[TSL_MAX_ELEM_NODES * 3], Np[TSL_MAX_ELEM_NODES], Nm[TSL_MAX_ELEM_NODES];
+  PetscReal       scratch[TSL_MAX_ELEM_NODES * 3], unity = 0, dsum = 0, kron = 0, fd = 0;
   const PetscReal h = 1e-6;
 
   for (PetscInt k = 0; k < 5; k++) {
@@ -60,13 +63,15 @@ static void CheckShape(TestLog *log, const TslGeometry *g) {
 }
 
 /* Integral of prod xi_d^p_d over [-1,1]^dim. */
-static PetscReal MonomialExact(PetscInt dim, const PetscInt p[]) {
+static PetscReal MonomialExact(PetscInt dim, const PetscInt p[])
+{
   PetscReal v = 1;
   for (PetscInt d = 0; d < dim; d++) v *= (p[d] % 2) ? 0 : 2.0 / (p[d] + 1);
   return v;
 }
 
-static PetscReal MonomialRule(const TslQuadrature *Q, PetscInt dim, const PetscInt p[]) {
+static PetscReal MonomialRule(const TslQuadrature *Q, PetscInt dim, const PetscInt p[])
+{
   PetscReal v = 0;
   for (PetscInt q = 0; q < Q->n; q++) {
     PetscReal m = Q->w[q];
@@ -76,10 +81,11 @@ static PetscReal MonomialRule(const TslQuadrature *Q, PetscInt dim, const PetscI
   return v;
 }
 
-static void CheckQuadrature(TestLog *log, const TslGeometry *g, const TslQuadrature *Q, const char *which) {
-  const PetscInt dim = g->dim;
-  PetscReal wsum = 0, err = 0;
-  PetscInt p[3] = {0, 0, 0}, top = 1;
+static void CheckQuadrature(TestLog *log, const TslGeometry *g, const TslQuadrature *Q, const char *which)
+{
+  const PetscInt dim  = g->dim;
+  PetscReal      wsum = 0, err = 0;
+  PetscInt       p[3] = {0, 0, 0}, top = 1;
 
   for (PetscInt q = 0; q < Q->n; q++) wsum += Q->w[q];
   Check(log, wsum, g->ref_volume, 1e-13, "%s %s quadrature weight sum", g->name, which);
@@ -93,26 +99,25 @@ static void CheckQuadrature(TestLog *log, const TslGeometry *g, const TslQuadrat
     for (PetscInt d = 0, r = m; d < dim; d++, r /= Q->degree + 1) p[d] = r % (Q->degree + 1);
     err = PetscMax(err, PetscAbsReal(MonomialRule(Q, dim, p) - MonomialExact(dim, p)));
   }
-  Check(log, err, 0, 1e-13, "%s %s quadrature exact to degree %" PetscInt_FMT " per coordinate", g->name, which,
-        Q->degree);
+  Check(log, err, 0, 1e-13, "%s %s quadrature exact to degree %" PetscInt_FMT " per coordinate", g->name, which, Q->degree);
   /* ... and the degree is not understated: the next even power is not integrated exactly */
   for (PetscInt d = 0; d < dim; d++) p[d] = 0;
   p[0] = Q->degree + 1 + (Q->degree + 1) % 2;
-  Check(log, PetscAbsReal(MonomialRule(Q, dim, p) - MonomialExact(dim, p)) > 1e-8, 1, 0,
-        "%s %s quadrature inexact for xi^%" PetscInt_FMT, g->name, which, p[0]);
+  Check(log, PetscAbsReal(MonomialRule(Q, dim, p) - MonomialExact(dim, p)) > 1e-8, 1, 0, "%s %s quadrature inexact for xi^%" PetscInt_FMT, g->name,
+        which, p[0]);
 }
 
 /* Normal of face f at the face's reference centre, mapped through the parent's reference nodes, must
  * point from the element centre towards the face centre (right-hand rule in 3D, body on the left in 2D). */
-static void CheckFaceNormals(TestLog *log, const TslGeometry *g) {
+static void CheckFaceNormals(TestLog *log, const TslGeometry *g)
+{
   PetscReal cen[3] = {0, 0, 0};
   for (PetscInt a = 0; a < g->nnode; a++)
     for (PetscInt d = 0; d < 3; d++) cen[d] += g->node_xi[a][d] / g->nnode;
   for (PetscInt f = 0; f < g->nface; f++) {
-    const TslGeometry *fg = g->face_geom[f];
-    PetscReal fxi[3] = {0, 0, 0}, N[TSL_MAX_FACE_NODES], dN[TSL_MAX_FACE_NODES * 3], T[2][3] = {{0}}, n[3],
-              c[3] = {0, 0, 0};
-    PetscReal nn, cc, cosine;
+    const TslGeometry *fg     = g->face_geom[f];
+    PetscReal          fxi[3] = {0, 0, 0}, N[TSL_MAX_FACE_NODES], dN[TSL_MAX_FACE_NODES * 3], T[2][3] = {{0}}, n[3], c[3] = {0, 0, 0};
+    PetscReal          nn, cc, cosine;
 
     for (PetscInt a = 0; a < fg->nnode; a++)
       for (PetscInt d = 0; d < 3; d++) fxi[d] += fg->node_xi[a][d] / fg->nnode;
@@ -131,17 +136,18 @@ static void CheckFaceNormals(TestLog *log, const TslGeometry *g) {
       n[1] = T[0][2] * T[1][0] - T[0][0] * T[1][2];
       n[2] = T[0][0] * T[1][1] - T[0][1] * T[1][0];
     }
-    nn = PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    cc = PetscSqrtReal(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+    nn     = PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    cc     = PetscSqrtReal(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
     cosine = (n[0] * c[0] + n[1] * c[1] + n[2] * c[2]) / (nn * cc);
     Check(log, cosine, 1, 1e-12, "%s face S%" PetscInt_FMT " normal . outward direction", g->name, f + 1);
   }
 }
 
-int main(int argc, char **argv) {
+int main(int argc, char **argv)
+{
   const TslGeometry *fam[MAX_FAMILIES];
-  PetscInt nfam = 0;
-  TestLog log = {0, 0};
+  PetscInt           nfam = 0;
+  TestLog            log  = {0, 0};
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   for (PetscInt t = 0; t < TslElementTypeCount(); t++) AddFamily(TslElementTypeGet(t)->geom, fam, &nfam);

@@ -6,14 +6,14 @@
 #include <thermoslide/output.h>
 
 typedef struct {
-  PetscInt nx, ny, N, M;       /* nodes per row / column, node and element totals */
-  PetscReal *xyz;              /* [N][3] */
-  PetscInt *type, *ptr, *conn; /* global connectivity in natural order (the test may hold it) */
+  PetscInt   nx, ny, N, M;      /* nodes per row / column, node and element totals */
+  PetscReal *xyz;               /* [N][3] */
+  PetscInt  *type, *ptr, *conn; /* global connectivity in natural order (the test may hold it) */
 } TestMesh;
 
 typedef struct {
-  PetscInt nnode, nelem;
-  PetscInt *node_nat, *node_id, *elem_nat, *elem_id, *type, *ptr, *conn;
+  PetscInt   nnode, nelem;
+  PetscInt  *node_nat, *node_id, *elem_nat, *elem_id, *type, *ptr, *conn;
   PetscReal *xyz;
 } TestLocal;
 
@@ -24,16 +24,18 @@ PetscErrorCode TestLocalDestroy(TestLocal *l);
 /* Writes the whole mesh of l through out. */
 PetscErrorCode TestSetMesh(TslOutput out, const TestMesh *m, const TestLocal *l);
 /* Values [n][ncomp] of a node (on_cells false) or element field for the items of l. */
-PetscErrorCode TestFieldValues(const TestLocal *l, PetscBool on_cells, PetscInt frame, PetscInt field, PetscInt ncomp,
-                               PetscReal **vals);
+PetscErrorCode TestFieldValues(const TestLocal *l, PetscBool on_cells, PetscInt frame, PetscInt field, PetscInt ncomp, PetscReal **vals);
 
-static inline PetscInt TestNodeId(PetscInt n) {
+static inline PetscInt TestNodeId(PetscInt n)
+{
   return 100 + 7 * n;
 }
-static inline PetscInt TestElemId(PetscInt e) {
+static inline PetscInt TestElemId(PetscInt e)
+{
   return 5000 + 3 * e;
 }
 /* Exact in binary: all values are integers plus 1/4 or 1/8. */
-static inline PetscReal TestValue(PetscInt frame, PetscInt field, PetscInt item, PetscInt comp) {
+static inline PetscReal TestValue(PetscInt frame, PetscInt field, PetscInt item, PetscInt comp)
+{
   return (PetscReal)(frame * 100000 + field * 10000 + 10 * item + comp) + (field % 2 ? 0.25 : -0.125);
 }

@@ -8,24 +8,26 @@
 #include <sys/stat.h>
 
 static int nfail = 0;
-#define EXPECT(cond, ...)                                                                                              \
-  do {                                                                                                                 \
-    if (!(cond)) {                                                                                                     \
-      nfail++;                                                                                                         \
-      printf("FAIL %s:%d: ", __FILE__, __LINE__);                                                                      \
-      printf(__VA_ARGS__);                                                                                             \
-      printf("\n");                                                                                                    \
-    }                                                                                                                  \
+#define EXPECT(cond, ...)                                                                                                                            \
+  do {                                                                                                                                               \
+    if (!(cond)) {                                                                                                                                   \
+      nfail++;                                                                                                                                       \
+      printf("FAIL %s:%d: ", __FILE__, __LINE__);                                                                                                    \
+      printf(__VA_ARGS__);                                                                                                                           \
+      printf("\n");                                                                                                                                  \
+    }                                                                                                                                                \
   } while (0)
 
 static const char *old_text = "previous good result\n";
 
-static void PathOf(const char *dir, const char *suffix, char path[PETSC_MAX_PATH_LEN]) {
+static void PathOf(const char *dir, const char *suffix, char path[PETSC_MAX_PATH_LEN])
+{
   snprintf(path, PETSC_MAX_PATH_LEN, "%s/abort%s", dir, suffix);
 }
 
-static void WriteOld(const char *dir, const char *suffix) {
-  char path[PETSC_MAX_PATH_LEN];
+static void WriteOld(const char *dir, const char *suffix)
+{
+  char  path[PETSC_MAX_PATH_LEN];
   FILE *fp;
   PathOf(dir, suffix, path);
   fp = fopen(path, "w");
@@ -33,8 +35,9 @@ static void WriteOld(const char *dir, const char *suffix) {
   if (fp) fputs(old_text, fp), fclose(fp);
 }
 
-static void ExpectOld(const char *dir, const char *suffix) {
-  char path[PETSC_MAX_PATH_LEN], buf[256] = "";
+static void ExpectOld(const char *dir, const char *suffix)
+{
+  char  path[PETSC_MAX_PATH_LEN], buf[256] = "";
   FILE *fp;
   PathOf(dir, suffix, path);
   fp = fopen(path, "r");
@@ -45,16 +48,18 @@ static void ExpectOld(const char *dir, const char *suffix) {
   EXPECT(!strcmp(buf, old_text), "%s was changed", path);
 }
 
-static void ExpectExists(const char *dir, const char *suffix, PetscBool exists) {
+static void ExpectExists(const char *dir, const char *suffix, PetscBool exists)
+{
   char path[PETSC_MAX_PATH_LEN];
   PathOf(dir, suffix, path);
   EXPECT((access(path, F_OK) == 0) == exists, "%s %s", path, exists ? "missing" : "still exists");
 }
 
 /* Rows must reach the .csv.part as they are appended, so that a crash leaves them readable. */
-static void ExpectLines(const char *dir, const char *suffix, int want) {
-  char path[PETSC_MAX_PATH_LEN];
-  int lines = 0, ch;
+static void ExpectLines(const char *dir, const char *suffix, int want)
+{
+  char  path[PETSC_MAX_PATH_LEN];
+  int   lines = 0, ch;
   FILE *fp;
   PathOf(dir, suffix, path);
   fp = fopen(path, "r");
@@ -65,17 +70,18 @@ static void ExpectLines(const char *dir, const char *suffix, int want) {
   EXPECT(lines == want, "%s has %d lines, expected %d", path, lines, want);
 }
 
-int main(int argc, char **argv) {
-  char dir[PETSC_MAX_PATH_LEN] = "out_abort", missing[PETSC_MAX_PATH_LEN];
-  PetscMPIInt rank, size;
-  TestMesh m;
-  TestLocal l;
-  TslOutput out;
-  TslHistory hist;
-  const char *cols[] = {"time", "heat"};
-  const PetscReal row[] = {1.0, 2.0};
-  PetscReal *v;
-  PetscErrorCode ierr;
+int main(int argc, char **argv)
+{
+  char            dir[PETSC_MAX_PATH_LEN] = "out_abort", missing[PETSC_MAX_PATH_LEN];
+  PetscMPIInt     rank, size;
+  TestMesh        m;
+  TestLocal       l;
+  TslOutput       out;
+  TslHistory      hist;
+  const char     *cols[] = {"time", "heat"};
+  const PetscReal row[]  = {1.0, 2.0};
+  PetscReal      *v;
+  PetscErrorCode  ierr;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCallMPI(MPI_Comm_rank(PETSC_COMM_WORLD, &rank));

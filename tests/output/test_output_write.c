@@ -11,9 +11,9 @@
 
 typedef struct {
   const char *name;
-  PetscInt field, ncomp;
-  PetscBool on_cells;
-  PetscInt first_frame; /* written from this frame on */
+  PetscInt    field, ncomp;
+  PetscBool   on_cells;
+  PetscInt    first_frame; /* written from this frame on */
 } FieldSpec;
 
 static const FieldSpec fields[] = {
@@ -25,28 +25,29 @@ static const FieldSpec fields[] = {
 #define NFIELD ((PetscInt)(sizeof(fields) / sizeof(fields[0])))
 #define NFRAME 2
 
-static PetscReal FrameTime(PetscInt f) {
+static PetscReal FrameTime(PetscInt f)
+{
   return 0.5 * f;
 }
 
 static int nfail = 0;
-#define EXPECT(cond, ...)                                                                                              \
-  do {                                                                                                                 \
-    if (!(cond)) {                                                                                                     \
-      if (nfail++ < 20) {                                                                                              \
-        printf("FAIL %s:%d: ", __FILE__, __LINE__);                                                                    \
-        printf(__VA_ARGS__);                                                                                           \
-        printf("\n");                                                                                                  \
-      }                                                                                                                \
-    }                                                                                                                  \
+#define EXPECT(cond, ...)                                                                                                                            \
+  do {                                                                                                                                               \
+    if (!(cond)) {                                                                                                                                   \
+      if (nfail++ < 20) {                                                                                                                            \
+        printf("FAIL %s:%d: ", __FILE__, __LINE__);                                                                                                  \
+        printf(__VA_ARGS__);                                                                                                                         \
+        printf("\n");                                                                                                                                \
+      }                                                                                                                                              \
+    }                                                                                                                                                \
   } while (0)
 
 /* Reads a whole dataset (test only: global size is fine here) after checking its shape. */
-static PetscErrorCode ReadAll(hid_t file, const char *path, hid_t memtype, int rank, hsize_t d0, hsize_t d1,
-                              void **buf) {
-  hid_t dset, space;
+static PetscErrorCode ReadAll(hid_t file, const char *path, hid_t memtype, int rank, hsize_t d0, hsize_t d1, void **buf)
+{
+  hid_t   dset, space;
   hsize_t dims[2] = {0, 0};
-  size_t esize;
+  size_t  esize;
 
   PetscFunctionBeginUser;
   *buf = NULL;
@@ -54,11 +55,10 @@ static PetscErrorCode ReadAll(hid_t file, const char *path, hid_t memtype, int r
   EXPECT(dset >= 0, "dataset %s missing", path);
   if (dset < 0) PetscFunctionReturn(PETSC_SUCCESS);
   space = H5Dget_space(dset);
-  EXPECT(H5Sget_simple_extent_ndims(space) == rank, "%s: rank %d, expected %d", path, H5Sget_simple_extent_ndims(space),
-         rank);
+  EXPECT(H5Sget_simple_extent_ndims(space) == rank, "%s: rank %d, expected %d", path, H5Sget_simple_extent_ndims(space), rank);
   H5Sget_simple_extent_dims(space, dims, NULL);
-  EXPECT(dims[0] == d0 && (rank == 1 || dims[1] == d1), "%s: dims %llu x %llu, expected %llu x %llu", path,
-         (unsigned long long)dims[0], (unsigned long long)dims[1], (unsigned long long)d0, (unsigned long long)d1);
+  EXPECT(dims[0] == d0 && (rank == 1 || dims[1] == d1), "%s: dims %llu x %llu, expected %llu x %llu", path, (unsigned long long)dims[0],
+         (unsigned long long)dims[1], (unsigned long long)d0, (unsigned long long)d1);
   if (dims[0] == d0 && (rank == 1 || dims[1] == d1)) {
     esize = H5Tget_size(memtype);
     PetscCall(PetscMalloc(esize * d0 * (rank == 2 ? d1 : 1) + 1, buf));
@@ -69,10 +69,11 @@ static PetscErrorCode ReadAll(hid_t file, const char *path, hid_t memtype, int r
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static void ExpectAttr(hid_t grp, const char *gname, const char *name, hid_t memtype, double expect) {
-  hid_t attr = H5Aopen(grp, name, H5P_DEFAULT);
-  double d = -1;
-  int64_t i = -1;
+static void ExpectAttr(hid_t grp, const char *gname, const char *name, hid_t memtype, double expect)
+{
+  hid_t   attr = H5Aopen(grp, name, H5P_DEFAULT);
+  double  d    = -1;
+  int64_t i    = -1;
 
   EXPECT(attr >= 0, "%s: attribute %s missing", gname, name);
   if (attr < 0) return;
@@ -84,11 +85,12 @@ static void ExpectAttr(hid_t grp, const char *gname, const char *name, hid_t mem
   H5Aclose(attr);
 }
 
-static PetscErrorCode CheckH5(const TestMesh *m, const char *path) {
-  hid_t file;
+static PetscErrorCode CheckH5(const TestMesh *m, const char *path)
+{
+  hid_t      file;
   PetscReal *xyz;
-  int64_t *ids, *topo;
-  PetscInt L = 0;
+  int64_t   *ids, *topo;
+  PetscInt   L = 0;
 
   PetscFunctionBeginUser;
   file = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -99,8 +101,7 @@ static PetscErrorCode CheckH5(const TestMesh *m, const char *path) {
   for (PetscInt k = 0; xyz && k < 3 * m->N; k++) EXPECT(xyz[k] == m->xyz[k], "coordinates[%d]", (int)k);
   PetscCall(PetscFree(xyz));
   PetscCall(ReadAll(file, "/mesh/node_ids", H5T_NATIVE_INT64, 1, m->N, 0, (void **)&ids));
-  for (PetscInt n = 0; ids && n < m->N; n++)
-    EXPECT(ids[n] == TestNodeId(n), "node_ids[%d] = %lld", (int)n, (long long)ids[n]);
+  for (PetscInt n = 0; ids && n < m->N; n++) EXPECT(ids[n] == TestNodeId(n), "node_ids[%d] = %lld", (int)n, (long long)ids[n]);
   PetscCall(PetscFree(ids));
   PetscCall(ReadAll(file, "/mesh/element_ids", H5T_NATIVE_INT64, 1, m->M, 0, (void **)&ids));
   for (PetscInt e = 0; ids && e < m->M; e++) EXPECT(ids[e] == TestElemId(e), "element_ids[%d]", (int)e);
@@ -109,17 +110,15 @@ static PetscErrorCode CheckH5(const TestMesh *m, const char *path) {
   for (PetscInt e = 0; e < m->M; e++) L += 1 + m->ptr[e + 1] - m->ptr[e];
   PetscCall(ReadAll(file, "/mesh/topology", H5T_NATIVE_INT64, 1, L, 0, (void **)&topo));
   for (PetscInt e = 0, r = 0; topo && e < m->M; e++) {
-    EXPECT(topo[r] == m->type[e], "topology record %d: type %lld, expected %d", (int)e, (long long)topo[r],
-           (int)m->type[e]);
+    EXPECT(topo[r] == m->type[e], "topology record %d: type %lld, expected %d", (int)e, (long long)topo[r], (int)m->type[e]);
     r++;
     for (PetscInt j = m->ptr[e]; j < m->ptr[e + 1]; j++, r++)
-      EXPECT(topo[r] == m->conn[j], "topology record %d: node %lld, expected %d", (int)e, (long long)topo[r],
-             (int)m->conn[j]);
+      EXPECT(topo[r] == m->conn[j], "topology record %d: node %lld, expected %d", (int)e, (long long)topo[r], (int)m->conn[j]);
   }
   PetscCall(PetscFree(topo));
 
   for (PetscInt f = 1; f <= NFRAME; f++) {
-    char gname[64];
+    char  gname[64];
     hid_t grp;
     snprintf(gname, sizeof(gname), "/frames/%06d", (int)f);
     grp = H5Gopen2(file, gname, H5P_DEFAULT);
@@ -131,9 +130,9 @@ static PetscErrorCode CheckH5(const TestMesh *m, const char *path) {
     H5Gclose(grp);
     for (PetscInt i = 0; i < NFIELD; i++) {
       const FieldSpec *s = &fields[i];
-      const PetscInt n = s->on_cells ? m->M : m->N;
-      char dname[128];
-      PetscReal *v;
+      const PetscInt   n = s->on_cells ? m->M : m->N;
+      char             dname[128];
+      PetscReal       *v;
       snprintf(dname, sizeof(dname), "%s/%s", gname, s->name);
       if (f < s->first_frame) {
         EXPECT(H5Lexists(file, dname, H5P_DEFAULT) == 0, "%s should not exist", dname);
@@ -142,8 +141,8 @@ static PetscErrorCode CheckH5(const TestMesh *m, const char *path) {
       PetscCall(ReadAll(file, dname, H5T_NATIVE_DOUBLE, 2, n, s->ncomp, (void **)&v));
       for (PetscInt k = 0; v && k < n; k++)
         for (PetscInt c = 0; c < s->ncomp; c++)
-          EXPECT(v[k * s->ncomp + c] == TestValue(f, s->field, k, c), "%s[%d][%d] = %g, expected %g", dname, (int)k,
-                 (int)c, v[k * s->ncomp + c], TestValue(f, s->field, k, c));
+          EXPECT(v[k * s->ncomp + c] == TestValue(f, s->field, k, c), "%s[%d][%d] = %g, expected %g", dname, (int)k, (int)c, v[k * s->ncomp + c],
+                 TestValue(f, s->field, k, c));
       PetscCall(PetscFree(v));
     }
   }
@@ -151,9 +150,10 @@ static PetscErrorCode CheckH5(const TestMesh *m, const char *path) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReadText(const char *path, char **text) {
+static PetscErrorCode ReadText(const char *path, char **text)
+{
   FILE *fp = fopen(path, "rb");
-  long len;
+  long  len;
 
   PetscFunctionBeginUser;
   *text = NULL;
@@ -168,7 +168,8 @@ static PetscErrorCode ReadText(const char *path, char **text) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckXmf(const char *dir, const char *job) {
+static PetscErrorCode CheckXmf(const char *dir, const char *job)
+{
   char path[PETSC_MAX_PATH_LEN], want[512], *text;
 
   PetscFunctionBeginUser;
@@ -197,8 +198,9 @@ static PetscErrorCode CheckXmf(const char *dir, const char *job) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckCsv(const char *dir, const char *job) {
-  char path[PETSC_MAX_PATH_LEN], *text;
+static PetscErrorCode CheckCsv(const char *dir, const char *job)
+{
+  char        path[PETSC_MAX_PATH_LEN], *text;
   const char *want = "time,increment,heat_in\n"
                      "5.0000000000e-01,1.0000000000e+00,-1.2345678901e-03\n"
                      "1.0000000000e+00,2.0000000000e+00,-2.4691357802e-03\n";
@@ -212,20 +214,22 @@ static PetscErrorCode CheckCsv(const char *dir, const char *job) {
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static void ExpectAbsent(const char *dir, const char *job, const char *suffix) {
+static void ExpectAbsent(const char *dir, const char *job, const char *suffix)
+{
   char path[PETSC_MAX_PATH_LEN];
   snprintf(path, sizeof(path), "%s/%s%s", dir, job, suffix);
   EXPECT(access(path, F_OK) != 0, "%s still exists", path);
 }
 
-int main(int argc, char **argv) {
-  char dir[PETSC_MAX_PATH_LEN] = ".", job[64] = "write", path[PETSC_MAX_PATH_LEN];
-  PetscInt nx = 7, ny = 5;
+int main(int argc, char **argv)
+{
+  char        dir[PETSC_MAX_PATH_LEN] = ".", job[64] = "write", path[PETSC_MAX_PATH_LEN];
+  PetscInt    nx = 7, ny = 5;
   PetscMPIInt rank, size;
-  TestMesh m;
-  TestLocal l;
-  TslOutput out;
-  TslHistory hist;
+  TestMesh    m;
+  TestLocal   l;
+  TslOutput   out;
+  TslHistory  hist;
   const char *cols[] = {"time", "increment", "heat_in"};
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
