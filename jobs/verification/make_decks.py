@@ -177,7 +177,7 @@ def loads_multistep():
           "*FILM, FILM AMPLITUDE=HRAMP\n BOTE, F1, 0.0, 10.0\n*END STEP\n")
 
 
-def sliding_blocks(series):
+def sliding_blocks(series, auglagr=False):
     """The spec's finite-sliding problems in plane strain (CPE4T): a block 2 x 0.25 (4 x 6 elements)
     pressed on a block 6 x 1.25 (12 x 2 elements) fixed at its bottom; total area 8, rho c = 1. The thin
     upper block passes the applied pressure on nearly uniformly (a few % spread), and the blocks' nodes
@@ -205,6 +205,8 @@ def sliding_blocks(series):
             "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n 1.0\n")
     if series == "conductance":
         text += "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
+        if auglagr:
+            text += "*SURFACE BEHAVIOR, AUGMENTED LAGRANGE\n"
     elif series == "radiation":
         text += ("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
                  "*SURFACE INTERACTION, NAME=IFACE\n*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 1.0\n")
@@ -235,7 +237,7 @@ def sliding_blocks(series):
                  "*STEP, NAME=SLIDE OFF, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.1\n"
                  "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, 2, 2\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, 1, 1, 5.0\n"
                  "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S3, 100.0\n*END STEP\n")
-    write("sliding_%s_cpe4t.inp" % series, text)
+    write("sliding_%s%s_cpe4t.inp" % (series, "_auglagr" if auglagr else ""), text)
 
 
 def contact_jacobian():
@@ -273,6 +275,7 @@ if __name__ == "__main__":
     contact_jacobian()
     for series in ("conductance", "radiation", "friction"):
         sliding_blocks(series)
+    sliding_blocks("conductance", auglagr=True)
     loads_multistep()
     for t in ("CPE4T", "CPS4T", "CAX4T", "C3D8T"):
         conduction_steady(t)

@@ -247,8 +247,8 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
     /* a node on a segment end may fall outside [0,1] by round-off: only a real departure re-pairs */
     if (TslContactProjectionSide(cn->out.xi_raw, 1e-6) != 0) loc[0]++;
     if (cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED) {
-      PetscReal c;
-      PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &cn->hist.lambda, &c));
+      PetscReal c, lambda = cn->hist.lambda; /* applied below only if the increment is solved again */
+      PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &lambda, &c));
       change = PetscMax(change, PetscAbsReal(c));
       scale  = PetscMax(scale, cn->out.pressure);
     }
@@ -260,7 +260,16 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
     PetscCall(TslProblemContactSearch(p, repattern));
     *again = PETSC_TRUE;
   }
-  if (gc[0] > p->augment_tol * PetscMax(gc[1], PETSC_SMALL)) *again = PETSC_TRUE;
+  /* multipliers change only when another solve follows, so that the accepted state is the one solved */
+  if (gc[0] > p->augment_tol * PetscMax(gc[1], PETSC_SMALL)) {
+    *again = PETSC_TRUE;
+    for (PetscInt i = 0; i < p->ncnode; i++) {
+      TslContactNode          *cn = &p->cnode[i];
+      const TslContactSurface *cs = &p->csurf[cn->pair];
+      PetscReal                c;
+      if (cn->seg >= 0 && cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED) PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &cn->hist.lambda, &c));
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

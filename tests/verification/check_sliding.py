@@ -20,6 +20,8 @@ conductance / radiation (5 steps):
         interface, every secondary node is open
 friction (3 steps): frictional dissipation 120 and heat absorbed 60 (eta = 0.5) within 0.1 %; after
   step 3 every node at 60 / (rho c area) = 60 / 8 = 7.5 within 0.1 %; energy balance every increment.
+With AUGMENTED LAGRANGE normal contact (job name *_auglagr_*) the penetration at the end of step 4
+must also be below 1 % of the penalty method's p / eps_n (eps_n = 10 E / 0.5).
 usage: check_sliding.py OUTDIR JOB conductance|radiation|friction
 """
 import sys
@@ -110,6 +112,17 @@ if series == "conductance":
                "%.4f in [%.4f, %.4f] (nominal 4)" % (ratio, lo, hi))
 else:
     check("step 4 / step 3 mean temperature drop across the interface", drops[4] / drops[3], 1.0, 1e-6, relative=True)
+
+if "auglagr" in job:
+    f4 = r.frame_of_step(4)
+    u = r.field("U", f4)
+    y0 = xyz[small, 1].min()
+    sec = [i for i in range(len(ids)) if small[i] and abs(xyz[i, 1] - y0) < 1e-9]
+    top = sorted([i for i in range(len(ids)) if large[i] and abs(xyz[i, 1] - y0) < 1e-9], key=lambda i: xyz[i, 0])
+    ym = np.interp([xyz[i, 0] + u[i, 0] for i in sec], [xyz[i, 0] + u[i, 0] for i in top], [y0 + u[i, 1] for i in top])
+    pen = max(0.0, float(np.max(ym - (y0 + u[sec, 1]))))
+    penalty_pen = 200.0 / (10 * 30.0e6 / 0.5)
+    check("step 4 penetration with augmented Lagrange (penalty alone: %.3g)" % penalty_pen, pen, 0.0, 0.01 * penalty_pen)
 
 nt = r.field("NT")[:, 0][small]
 check("step 5 small block isothermal: spread / mean", (nt.max() - nt.min()) / abs(nt.mean()), 0.0, 1e-6)
