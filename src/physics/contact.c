@@ -183,8 +183,9 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
       if (best >= 0 && !best_inside && ((best_xi < 0 && cs->prev[best] < 0) || (best_xi > 1 && cs->next[best] < 0))) best = -1;
       if (best != cn->seg) {
         (*changed)++;
-        if (best >= 0 && cn->seg >= 0 && TransferHistory(p, cs, xa, cn->seg, best, &cn->hist)) {
-        } else if (best >= 0) {
+        /* the history follows the node to a nearby segment; a new contact starts afresh */
+        PetscBool moved = (PetscBool)(best >= 0 && cn->seg >= 0 && TransferHistory(p, cs, xa, cn->seg, best, &cn->hist));
+        if (best >= 0 && !moved) {
           cn->hist.xi_old = cn->hist.xi_anchor = PetscMin(1, PetscMax(0, best_xi));
           cn->hist.lambda                      = 0;
         }
