@@ -23,6 +23,17 @@ static PetscErrorCode CheckFlat(TestLog *log)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Neighbouring segment end points (at rest) and the smoothing fraction of a corner test. */
+static void SetNeighbours(TslContactInput *in, const PetscReal *prev, const PetscReal *next, PetscReal s)
+{
+  static const PetscReal rest[3] = {0, 0, 0};
+  in->x_prev                     = prev;
+  in->u_prev                     = rest;
+  in->x_next                     = next;
+  in->u_next                     = rest;
+  in->smoothing                  = s;
+}
+
 static PetscErrorCode CheckInclined(TestLog *log)
 {
   const PetscReal x1[2] = {0, 0}, x2[2] = {1, 1}, xs[2] = {1, 0};
@@ -162,15 +173,8 @@ static PetscErrorCode CheckCorner(TestLog *log)
     PetscCall(TslContactProject(&a, &xa, NULL, NULL));
     PetscCall(TslContactProject(&b, &xb, NULL, NULL));
     Check(log, (PetscReal)(xa > 1 && xb < 0), 1, 0, "corner unsmoothed: dead zone (beyond both facets)");
-    a.x_prev    = v[1];
-    a.u_prev    = (PetscReal[3]){0};
-    a.x_next    = v[4];
-    a.u_next    = (PetscReal[3]){0};
-    b.x_prev    = v[2];
-    b.u_prev    = (PetscReal[3]){0};
-    b.x_next    = v[5];
-    b.u_next    = (PetscReal[3]){0};
-    a.smoothing = b.smoothing = s;
+    SetNeighbours(&a, v[1], v[4], s);
+    SetNeighbours(&b, v[2], v[5], s);
     PetscCall(TslContactProject(&a, &xa, NULL, NULL));
     PetscCall(TslContactProject(&b, &xb, NULL, NULL));
     Check(log, (PetscReal)((xa >= 0 && xa <= 1) || (xb >= 0 && xb <= 1)), 1, 0, "corner smoothed: projects onto a facet (xa=%g, xb=%g)", (double)xa,
@@ -196,15 +200,8 @@ static PetscErrorCode CheckCorner(TestLog *log)
     PetscReal       xa, xb, ga, gb, g;
     TslContactInput a = InputSetUp(p, v[2], v[3]), b = InputSetUp(p, v[3], v[4]);
 
-    a.x_prev    = v[1];
-    a.u_prev    = (PetscReal[3]){0};
-    a.x_next    = v[4];
-    a.u_next    = (PetscReal[3]){0};
-    b.x_prev    = v[2];
-    b.u_prev    = (PetscReal[3]){0};
-    b.x_next    = v[5];
-    b.u_next    = (PetscReal[3]){0};
-    a.smoothing = b.smoothing = s;
+    SetNeighbours(&a, v[1], v[4], s);
+    SetNeighbours(&b, v[2], v[5], s);
     PetscCall(TslContactProject(&a, &xa, &ga, NULL));
     PetscCall(TslContactProject(&b, &xb, &gb, NULL));
     if (xa >= 0 && xa <= 1)

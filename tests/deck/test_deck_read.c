@@ -9,16 +9,7 @@
 #error "TSL_DECK_DATA (the tests/deck/data directory) must be defined"
 #endif
 
-static int nfail = 0;
-
-#define EXPECT(c)                                                                                                                                    \
-  do {                                                                                                                                               \
-    if (!(c)) {                                                                                                                                      \
-      PetscCall(PetscPrintf(PETSC_COMM_SELF, "FAIL %s:%d: %s\n", __FILE__, __LINE__, #c));                                                           \
-      nfail++;                                                                                                                                       \
-    }                                                                                                                                                \
-  } while (0)
-#define NEAR(a, b) (PetscAbsReal((PetscReal)(a) - (PetscReal)(b)) <= 1e-12 * (1 + PetscAbsReal((PetscReal)(b))))
+#include "expect.h"
 
 static PetscBool EndsWith(const char *s, const char *tail)
 {
