@@ -63,6 +63,24 @@ static void JobName(const char *deck, char *job, size_t len)
   if (n > 4 && !strcasecmp(job + n - 4, ".inp")) job[n - 4] = 0;
 }
 
+/* mkdir -p: creates the directory and any missing parents; 0 or an errno. */
+static int MakeDirectories(const char *path)
+{
+  char   buf[PETSC_MAX_PATH_LEN];
+  size_t n = strlen(path);
+
+  if (n == 0 || n >= sizeof(buf)) return ENAMETOOLONG;
+  memcpy(buf, path, n + 1);
+  for (char *c = buf + 1; *c; c++) {
+    if (*c != '/') continue;
+    *c = 0;
+    if (mkdir(buf, 0777) && errno != EEXIST) return errno;
+    *c = '/';
+  }
+  if (mkdir(buf, 0777) && errno != EEXIST) return errno;
+  return 0;
+}
+
 static PetscErrorCode Run(const char *deck)
 {
   MPI_Comm       comm = PETSC_COMM_WORLD;
@@ -81,9 +99,12 @@ static PetscErrorCode Run(const char *deck)
   if (rank == 0) {
     ierr = TslDeckRead(deck, &global);
     if (!ierr) ierr = TslModelCheckSupports(global);
-    if (!ierr && mkdir(dir, 0777) && errno != EEXIST) {
-      fprintf(stderr, "thermoslide: error: cannot create the output directory %s: %s\n", dir, strerror(errno));
-      ierr = PETSC_ERR_FILE_OPEN;
+    if (!ierr) {
+      int e = MakeDirectories(dir);
+      if (e) {
+        fprintf(stderr, "thermoslide: error: cannot create the output directory %s: %s\n", dir, strerror(e));
+        ierr = PETSC_ERR_FILE_OPEN;
+      }
     }
     if (ierr) PetscCall(TslModelDestroy(&global));
   }
