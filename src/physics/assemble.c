@@ -222,6 +222,25 @@ static PetscErrorCode ConstraintRows(TslProblem p, AsmMode mode, const PetscScal
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemGetLocalSolution(TslProblem p, Vec *xl, const PetscScalar **xa)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCopy(p->X, p->Xl));
+  PetscCall(VecGhostUpdateBegin(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostGetLocalForm(p->Xl, xl));
+  PetscCall(VecGetArrayRead(*xl, xa));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemRestoreLocalSolution(TslProblem p, Vec *xl, const PetscScalar **xa)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecRestoreArrayRead(*xl, xa));
+  PetscCall(VecGhostRestoreLocalForm(p->Xl, xl));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Local forms of X (ghosts updated) and Xold. */
 static PetscErrorCode GetStates(TslProblem p, Vec X, Vec *xl, Vec *xol, const PetscScalar **xa, const PetscScalar **xoa)
 {

@@ -84,7 +84,7 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
     in.dt        = p->dt > 0 ? p->dt : 1.0;
     in.hist      = cn->hist;
     PetscCall(TslContactElement(&cs->law, &in, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
-    PetscCall(TslProblemInsert(p, mode, A, f, 3 * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
+    if (f || A) PetscCall(TslProblemInsert(p, mode, A, f, 3 * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
     if (mode == ASM_RESIDUAL)
       PetscCall(PetscInfo(NULL, "contact node %" PetscInt_FMT ": segment %" PetscInt_FMT " xi %g gap %g p %g slip %g shear %g q %g status %d\n",
                           p->m->node_id[cn->lnode], cn->seg, (double)cn->out.xi_raw, (double)cn->out.gap, (double)cn->out.pressure,
@@ -210,14 +210,9 @@ PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
   PetscFunctionBeginUser;
   *repattern = PETSC_FALSE;
   if (!p->ncsurf) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(VecCopy(p->X, p->Xl));
-  PetscCall(VecGhostUpdateBegin(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostGetLocalForm(p->Xl, &xl));
-  PetscCall(VecGetArrayRead(xl, &xa));
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
   PetscCall(Search(p, xa, &changed));
-  PetscCall(VecRestoreArrayRead(xl, &xa));
-  PetscCall(VecGhostRestoreLocalForm(p->Xl, &xl));
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
   PetscCall(MPIU_Allreduce(&changed, &g, 1, MPIU_INT, MPI_SUM, p->comm));
   if (g) {
     PetscCall(PetscInfo(NULL, "contact pairing changed for %" PetscInt_FMT " secondary nodes\n", g));
@@ -238,8 +233,12 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
   *again = *repattern = PETSC_FALSE;
   if (!p->ncsurf) PetscFunctionReturn(PETSC_SUCCESS);
   {
-    TslHeatBalance hb; /* evaluates every contact element at the converged state */
-    PetscCall(TslProblemHeatBalance(p, &hb));
+    /* the contact elements at the converged state (outputs only: no residual, no matrix) */
+    Vec                xl;
+    const PetscScalar *xa;
+    PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+    PetscCall(TslProblemContactAssemble(p, ASM_RAW, xa, NULL, NULL, NULL));
+    PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
   }
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode          *cn = &p->cnode[i];
@@ -268,7 +267,8 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
       TslContactNode          *cn = &p->cnode[i];
       const TslContactSurface *cs = &p->csurf[cn->pair];
       PetscReal                c;
-      if (cn->seg >= 0 && cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED) PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &cn->hist.lambda, &c));
+      if (cn->seg >= 0 && cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED)
+        PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &cn->hist.lambda, &c));
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -50,11 +50,7 @@ PetscErrorCode TslProblemElementField(TslProblem p, const char *name, PetscInt *
   PetscCheck(which >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "unknown element field %s", name);
   *ncomp = which == 2 ? 3 : 6;
   PetscCall(PetscCalloc1(m->nelem * *ncomp, vals));
-  PetscCall(VecCopy(p->X, p->Xl));
-  PetscCall(VecGhostUpdateBegin(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostGetLocalForm(p->Xl, &xl));
-  PetscCall(VecGetArrayRead(xl, &xa));
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
   for (PetscInt e = 0; e < m->nelem; e++) {
     PetscReal   S[6], E[6], H[3];
     TslElemData d;
@@ -63,7 +59,6 @@ PetscErrorCode TslProblemElementField(TslProblem p, const char *name, PetscInt *
     PetscCall(TslElementOutput(&d.in, S, E, H));
     for (PetscInt c = 0; c < *ncomp; c++) (*vals)[e * *ncomp + c] = which == 0 ? S[c] : which == 1 ? E[c] : H[c];
   }
-  PetscCall(VecRestoreArrayRead(xl, &xa));
-  PetscCall(VecGhostRestoreLocalForm(p->Xl, &xl));
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -107,6 +107,9 @@ typedef struct {
   PetscReal friction_heat; /* part of it converted to heat (eta) */
 } AsmHeat;
 
+/* Local form (owned + ghosts) of the current solution, ghosts updated; restore when done. */
+PetscErrorCode TslProblemGetLocalSolution(TslProblem p, Vec *xl, const PetscScalar **xa);
+PetscErrorCode TslProblemRestoreLocalSolution(TslProblem p, Vec *xl, const PetscScalar **xa);
 PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[],
                                 const PetscReal K[]);
 PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);

@@ -105,7 +105,9 @@ static void MarkFilm(const TslModel *g, const TslLoad *ld, char *film)
 PetscErrorCode TslModelCheckSupports(TslModel *g)
 {
   PetscInt  *parent, *first_elem, nn = g->nnode;
-  char      *fixed, *film;
+  char      *fixed, *film, *thermal;
+  PetscReal *gram;
+  PetscInt  *body, nbody = 0;
   PetscReal *centre, *size;
 
   PetscFunctionBeginUser;
@@ -148,6 +150,10 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
     for (PetscInt c = 0; c < 3; c++) size[r] = PetscMax(size[r], PetscAbsReal(g->node_xyz[3 * i + c] - centre[4 * r + c] / centre[4 * r + 3]));
   }
 
+  /* bodies numbered 0..nbody-1 through their root nodes; Gram matrices per body */
+  PetscCall(PetscMalloc1(nn, &body));
+  for (PetscInt i = 0; i < nn; i++) body[i] = (Find(parent, i) == i && first_elem[i] >= 0) ? nbody++ : -1;
+  PetscCall(PetscMalloc2(36 * nbody, &gram, nbody, &thermal));
   for (PetscInt s = 0; s < g->nstep; s++) {
     const TslStep *step     = &g->steps[s];
     PetscBool      clear_bc = PETSC_FALSE, clear_film = PETSC_FALSE;
@@ -163,38 +169,45 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
       if (ld->kind == TSL_LOAD_BOUNDARY) MarkTarget(g, &ld->target, ld->dof_first, ld->dof_last, fixed);
       if (ld->kind == TSL_LOAD_FILM) MarkFilm(g, ld, film);
     }
-    for (PetscInt r = 0; r < nn; r++) {
-      const TslElementType *type;
-      PetscReal             G[6][6], modes[6][3], x[3];
-      PetscInt              nm      = 0;
-      PetscBool             thermal = PETSC_FALSE;
-      if (Find(parent, r) != r || first_elem[r] < 0) continue;
-      type = TslElementTypeGet(g->elem_type[first_elem[r]]);
-      PetscCall(PetscArrayzero(&G[0][0], 36));
-      for (PetscInt i = 0; i < nn; i++) {
-        if (Find(parent, i) != r) continue;
-        if (fixed[4 * i + 3]) thermal = PETSC_TRUE;
-        for (PetscInt c = 0; c < 3; c++) x[c] = (g->node_xyz[3 * i + c] - centre[4 * r + c] / centre[4 * r + 3]) / (size[r] > 0 ? size[r] : 1);
-        nm = RigidModes(type->kin, x, modes);
-        for (PetscInt d = 0; d < 3; d++) {
-          if (!fixed[4 * i + d]) continue;
-          for (PetscInt a = 0; a < nm; a++)
-            for (PetscInt b = 0; b < nm; b++) G[a][b] += modes[a][d] * modes[b][d];
-        }
+    /* one pass over the nodes and elements: Gram matrix and thermal support of every body */
+    PetscCall(PetscArrayzero(gram, 36 * nbody));
+    PetscCall(PetscArrayzero(thermal, nbody));
+    for (PetscInt i = 0; i < nn; i++) {
+      PetscInt  r = Find(parent, i), nm;
+      PetscReal modes[6][3], x[3], *G;
+      if (first_elem[r] < 0) continue;
+      G = &gram[36 * body[r]];
+      if (fixed[4 * i + 3]) thermal[body[r]] = 1;
+      for (PetscInt c = 0; c < 3; c++) x[c] = (g->node_xyz[3 * i + c] - centre[4 * r + c] / centre[4 * r + 3]) / (size[r] > 0 ? size[r] : 1);
+      nm = RigidModes(TslElementTypeGet(g->elem_type[first_elem[r]])->kin, x, modes);
+      for (PetscInt d = 0; d < 3; d++) {
+        if (!fixed[4 * i + d]) continue;
+        for (PetscInt a = 0; a < nm; a++)
+          for (PetscInt b = 0; b < nm; b++) G[6 * a + b] += modes[a][d] * modes[b][d];
       }
-      for (PetscInt e = 0; e < g->nelem && !thermal; e++)
-        if (film[e] && Find(parent, TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]])) == r) thermal = PETSC_TRUE;
+    }
+    for (PetscInt e = 0; e < g->nelem; e++)
+      if (film[e]) thermal[body[Find(parent, TslModelNodeIndex(g, g->elem_conn[g->elem_ptr[e]]))]] = 1;
+    for (PetscInt r = 0; r < nn; r++) {
+      PetscReal modes[6][3], x[3] = {0, 0, 0}, G[6][6];
+      PetscInt  nm;
+      if (body[r] < 0) continue;
+      nm = RigidModes(TslElementTypeGet(g->elem_type[first_elem[r]])->kin, x, modes);
+      for (PetscInt a = 0; a < 6; a++)
+        for (PetscInt b = 0; b < 6; b++) G[a][b] = gram[36 * body[r] + 6 * a + b];
       PetscCheck(GramRank(nm, G) == nm, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                  "%s: step %" PetscInt_FMT ": the body containing node %" PetscInt_FMT
                  " is not fully supported (it can move as a rigid body, so the stiffness matrix is singular); add *BOUNDARY conditions",
                  TslLocString(g, step->loc, loc, sizeof(loc)), s + 1, g->node_id[r]);
-      PetscCheck(thermal || !step->steady, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+      PetscCheck(thermal[body[r]] || !step->steady, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                  "%s: step %" PetscInt_FMT ": in this steady-state step the temperature of the body containing node %" PetscInt_FMT
                  " is undetermined; prescribe a temperature (*BOUNDARY dof 11) or add a *FILM",
                  TslLocString(g, step->loc, loc, sizeof(loc)), s + 1, g->node_id[r]);
     }
   }
   PetscCall(PetscFree4(parent, first_elem, centre, size));
+  PetscCall(PetscFree2(gram, thermal));
+  PetscCall(PetscFree(body));
   PetscCall(PetscFree2(fixed, film));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
