@@ -43,13 +43,14 @@ PetscErrorCode TslOutputNodeField(TslOutput out, const char *name, PetscInt ncom
 PetscErrorCode TslOutputElementField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[]);
 PetscErrorCode TslOutputEndFrame(TslOutput out); /* flushes the .h5 and rewrites the .xmf.part */
 
-/* Moves the temporary files over <job>.h5 / <job>.xmf. Collective. */
-PetscErrorCode TslOutputFinalize(TslOutput out);
+/* Moves the temporary files over <job>.h5 / <job>.xmf, or <job>.<tag>.h5 / .xmf when tag is given (the
+ * results of a run that stopped, kept beside earlier ones). Collective. */
+PetscErrorCode TslOutputFinalize(TslOutput out, const char *tag);
 PetscErrorCode TslOutputDestroy(TslOutput *out);
 
 /* History: one CSV row per increment, written by rank 0; values must be the same on all ranks. */
 typedef struct _p_TslHistory *TslHistory;
 PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobname, PetscInt ncol, const char *const names[], TslHistory *hist);
 PetscErrorCode TslHistoryAppend(TslHistory hist, const PetscReal vals[]);
-PetscErrorCode TslHistoryFinalize(TslHistory hist);
+PetscErrorCode TslHistoryFinalize(TslHistory hist, const char *tag); /* as TslOutputFinalize */
 PetscErrorCode TslHistoryDestroy(TslHistory *hist);

@@ -48,6 +48,13 @@ PetscErrorCode TslProblemGetFieldIS(TslProblem prob, IS *is_u, IS *is_theta);
 PetscErrorCode TslProblemSetStep(TslProblem prob, PetscInt s);
 /* Time of the increment being solved: step time t (end of increment), increment dt, total time. */
 PetscErrorCode TslProblemSetTime(TslProblem prob, PetscReal step_time, PetscReal dt, PetscReal total_time);
+/* The step time of the first corner (tabular point) of an amplitude followed in this step that
+ * lies strictly after t and before t_end; t_end if there is none. Increments end there, so that a history
+ * with reversals is followed exactly (the slip of an increment is its path, not the chord). */
+PetscErrorCode TslProblemNextAmplitudeCorner(TslProblem prob, PetscReal t, PetscReal t_end, PetscReal *tb);
+/* The message of the last convergence-type failure decided by all ranks (a contact projection that did
+ * not converge, an injected failure): shown with the cutback it caused. */
+PetscErrorCode TslProblemGetFailureMessage(TslProblem prob, const char **msg);
 /* Writes the prescribed values at the current time into X (owned dofs) and updates ghosts. */
 PetscErrorCode TslProblemApplyPrescribed(TslProblem prob, Vec X);
 

@@ -13,8 +13,11 @@
 #pragma once
 #include <thermoslide/problem.h>
 
-/* Runs every step of the model. Output goes to dir/jobname.{h5,xmf,csv}. On failure to converge at the
- * minimum increment, the last converged state is saved and PETSC_ERR_NOT_CONVERGED is returned. */
+/* Runs every step of the model. Output goes to dir/jobname.{h5,xmf,csv}. Increments end on the corners of
+ * the amplitudes a step follows. Any failure is the same on all ranks (sys.h); after one, the last
+ * converged state is saved (as jobname.failed.* beside earlier results, nothing if no increment
+ * converged; docs/output.md) and the error is returned (PETSC_ERR_NOT_CONVERGED at the minimum
+ * increment). */
 PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobname);
 
 /* Calls a function that may fail on some ranks only, and turns its failure into an error on all ranks

@@ -5,10 +5,12 @@
 #include <thermoslide/mesh.h>
 #include <thermoslide/solve.h>
 #include <thermoslide/problem.h>
+#include <thermoslide/sys.h>
 #include <string.h>
 #include <strings.h>
 #include <sys/stat.h>
 #include <errno.h>
+#include <stdlib.h>
 
 static const char Usage[] = "usage: mpirun -n N thermoslide job.inp [-o DIR] [options]\n"
                             "\n"
@@ -32,21 +34,24 @@ static const char Usage[] = "usage: mpirun -n N thermoslide job.inp [-o DIR] [op
                             "a direct solve: -pc_type lu -pc_factor_mat_solver_type mumps. -snes_monitor, -ksp_monitor, -log_view work\n"
                             "as usual. See docs/ for the keyword reference, element table and outputs.\n";
 
-/* Prints the first report of an error once: user errors as a plain message, others with their origin.
- * A blank message is the follow-up of an error already reported by another rank. */
+/* Prints the first report of an error once, on rank 0 of the communicator it was raised on: user errors
+ * (deck, options, files) and convergence stops as a plain message, anything else as an internal error with
+ * its code, but never a stack trace or a source path (run with -info for the details). A blank message
+ * is the follow-up of an error already reported (see TslAgree in sys.h). */
 static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, const char *file, PetscErrorCode n, PetscErrorType p, const char *mess,
                                    void *ctx)
 {
   PetscMPIInt rank = 0;
 
-  (void)ctx;
+  (void)ctx, (void)line, (void)fun, (void)file;
   if (p != PETSC_ERROR_INITIAL || !mess || !strcmp(mess, " ")) return n;
   if (comm != PETSC_COMM_SELF) MPI_Comm_rank(comm, &rank);
   if (rank != 0) return n;
-  if (n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_NOT_CONVERGED)
+  if (n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_NOT_CONVERGED || n == PETSC_ERR_FILE_OPEN || n == PETSC_ERR_FILE_READ ||
+      n == PETSC_ERR_FILE_WRITE || n == PETSC_ERR_FILE_UNEXPECTED)
     fprintf(stderr, "thermoslide: error: %s\n", mess);
   else
-    fprintf(stderr, "thermoslide: error %d in %s() (%s:%d): %s\n", (int)n, fun, file, line, mess);
+    fprintf(stderr, "thermoslide: internal error (code %d): %s\n", (int)n, mess);
   fflush(stderr);
   return n;
 }
@@ -66,10 +71,12 @@ static void JobName(const char *deck, char *job, size_t len)
 /* mkdir -p: creates the directory and any missing parents; 0 or an errno. */
 static int MakeDirectories(const char *path)
 {
-  char   buf[PETSC_MAX_PATH_LEN];
-  size_t n = strlen(path);
+  char        buf[PETSC_MAX_PATH_LEN];
+  size_t      n = strlen(path);
+  struct stat st;
 
-  if (n == 0 || n >= sizeof(buf)) return ENAMETOOLONG;
+  if (n == 0) return ENOENT;
+  if (n >= sizeof(buf)) return ENAMETOOLONG;
   memcpy(buf, path, n + 1);
   for (char *c = buf + 1; *c; c++) {
     if (*c != '/') continue;
@@ -78,6 +85,8 @@ static int MakeDirectories(const char *path)
     *c = '/';
   }
   if (mkdir(buf, 0777) && errno != EEXIST) return errno;
+  if (stat(buf, &st)) return errno;
+  if (!S_ISDIR(st.st_mode)) return ENOTDIR;
   return 0;
 }
 
@@ -102,7 +111,10 @@ static PetscErrorCode Run(const char *deck)
     if (!ierr) {
       int e = MakeDirectories(dir);
       if (e) {
-        fprintf(stderr, "thermoslide: error: cannot create the output directory %s: %s\n", dir, strerror(e));
+        fprintf(stderr, "thermoslide: error: cannot create the output directory '%s': %s\n", dir,
+                e == ENOTDIR  ? "a file of that name is in the way"
+                : e == ENOENT ? "empty name"
+                              : strerror(e));
         ierr = PETSC_ERR_FILE_OPEN;
       }
     }
@@ -115,13 +127,49 @@ static PetscErrorCode Run(const char *deck)
   ierr = TslAnalysisRun(prob, dir, job);
   PetscCall(TslProblemDestroy(&prob));
   PetscCheck(!ierr, comm, ierr, " ");
+  PetscCall(TslOptionsCheckUnused(comm, PETSC_FALSE));
   PetscCall(PetscPrintf(comm, "thermoslide: completed\n"));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* True for an argument that names a deck: a non-option that is not the value of the option before it,
+ * or, wherever it stands, a name ending in .inp (so "-snes_monitor job.inp" cannot make PETSc take the
+ * deck for the monitor's output file and overwrite it). */
+static PetscBool IsDeck(int argc, char **argv, int i)
+{
+  size_t n = strlen(argv[i]);
+
+  const char *prev = i > 1 ? argv[i - 1] : "";
+
+  (void)argc;
+  if (argv[i][0] == '-') return PETSC_FALSE;
+  /* options whose value is a path */
+  if (!strcmp(prev, "-o") || !strcmp(prev, "-tsl_output_dir") || !strcmp(prev, "-options_file")) return PETSC_FALSE;
+  if (n > 4 && !strcasecmp(argv[i] + n - 4, ".inp")) return PETSC_TRUE;
+  return (PetscBool)(prev[0] != '-' || !strcmp(prev, "-help"));
+}
+
+/* After an error: do all ranks stop too? Failures are decided by all ranks together (sys.h), so they
+ * should; this is the safety net for one that was not. Waits up to 30 s for the others. */
+static PetscBool AllRanksStopped(void)
+{
+  MPI_Request req;
+  int         done = 0;
+  double      t0   = MPI_Wtime();
+
+  if (MPI_Ibarrier(PETSC_COMM_WORLD, &req)) return PETSC_FALSE;
+  while (!done && MPI_Wtime() - t0 < 30) {
+    if (MPI_Test(&req, &done, MPI_STATUS_IGNORE)) return PETSC_FALSE;
+    if (!done) (void)PetscSleep(0.01);
+  }
+  return (PetscBool)done;
 }
 
 int main(int argc, char **argv)
 {
   const char    *deck = NULL;
+  char           decks[2][PETSC_MAX_PATH_LEN], inp[PETSC_MAX_PATH_LEN];
+  int            ndeck = 0;
   PetscErrorCode ierr;
 
   for (int i = 1; i < argc; i++) {
@@ -130,16 +178,36 @@ int main(int argc, char **argv)
       return 0;
     }
   }
+  /* decks first, options after: PETSc then sees the options only */
+  {
+    char **sorted = (char **)malloc((size_t)argc * sizeof(char *));
+    int    n      = 1;
+    if (!sorted) return 1;
+    sorted[0] = argv[0];
+    for (int i = 1; i < argc; i++)
+      if (IsDeck(argc, argv, i)) {
+        if (ndeck < 2) snprintf(decks[ndeck], sizeof(decks[ndeck]), "%s", argv[i]);
+        ndeck++;
+        sorted[n++] = argv[i];
+      }
+    for (int i = 1; i < argc; i++)
+      if (!IsDeck(argc, argv, i)) sorted[n++] = argv[i];
+    memcpy(argv, sorted, (size_t)argc * sizeof(char *));
+    free(sorted);
+  }
   PetscCall(PetscInitialize(&argc, &argv, NULL, Usage));
   PetscCall(PetscPushErrorHandler(ErrorHandler, NULL));
-  /* the deck is the first argument that is neither an option nor an option's value */
-  for (int i = 1; i < argc; i++) {
-    if (argv[i][0] == '-') {
-      if (i + 1 < argc && argv[i + 1][0] != '-' && strcmp(argv[i], "-help")) i++;
-      continue;
-    }
-    deck = argv[i];
-    break;
+  if (ndeck > 1) {
+    PetscCall(PetscFPrintf(PETSC_COMM_WORLD, stderr, "thermoslide: error: more than one deck given (%s, %s): one job per run\n", decks[0], decks[1]));
+    PetscCall(PetscPopErrorHandler());
+    PetscCall(PetscFinalize());
+    return 2;
+  }
+  if (ndeck == 1) {
+    /* "job" for "job.inp", as CalculiX and Abaqus users type it */
+    struct stat st;
+    deck = decks[0];
+    if (stat(deck, &st) && errno == ENOENT && snprintf(inp, sizeof(inp), "%s.inp", deck) < (int)sizeof(inp) && !stat(inp, &st)) deck = inp;
   }
   if (!deck) {
     PetscBool help;
@@ -151,12 +219,7 @@ int main(int argc, char **argv)
   }
   ierr = Run(deck);
   PetscCall(PetscPopErrorHandler());
-  if (ierr && ierr != PETSC_ERR_USER_INPUT && ierr != PETSC_ERR_NOT_CONVERGED && ierr != PETSC_ERR_FILE_OPEN) {
-    /* an internal error may have hit one rank only: do not wait for the others */
-    PetscMPIInt size;
-    MPI_Comm_size(PETSC_COMM_WORLD, &size);
-    if (size > 1) MPI_Abort(PETSC_COMM_WORLD, 1);
-  }
+  if (ierr && !AllRanksStopped()) MPI_Abort(PETSC_COMM_WORLD, 1); /* a rank still busy elsewhere would never finish */
   PetscCall(PetscFinalize());
   return ierr ? 1 : 0;
 }

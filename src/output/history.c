@@ -23,6 +23,8 @@ PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobn
   PetscCallMPI(MPI_Comm_rank(comm, &h->rank));
   PetscCall(TslOutputPath(comm, dir, jobname, ".csv.part", h->part, sizeof(h->part)));
   PetscCall(TslOutputPath(comm, dir, jobname, ".csv", h->final, sizeof(h->final)));
+  PetscCall(PetscStrncpy(h->dir, dir ? dir : "", sizeof(h->dir)));
+  PetscCall(PetscStrncpy(h->job, jobname, sizeof(h->job)));
   if (h->rank == 0) {
     h->fp = fopen(h->part, "w");
     if (!h->fp)
@@ -60,12 +62,13 @@ PetscErrorCode TslHistoryAppend(TslHistory hist, const PetscReal vals[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslHistoryFinalize(TslHistory hist)
+PetscErrorCode TslHistoryFinalize(TslHistory hist, const char *tag)
 {
   int err = 0;
 
   PetscFunctionBeginUser;
   PetscCheck(!hist->finalized, hist->comm, PETSC_ERR_ORDER, "History %s already finalized", hist->final);
+  if (tag) PetscCall(TslOutputFinalPath(hist->comm, hist->dir, hist->job, tag, ".csv", hist->final, sizeof(hist->final)));
   if (hist->rank == 0) {
     if (fclose(hist->fp)) err = errno;
     hist->fp = NULL;

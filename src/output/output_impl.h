@@ -1,16 +1,16 @@
 /* Private to src/output/: the writer objects and the natural-order redistribution they share. */
 #pragma once
 #include <thermoslide/output.h>
+#include <thermoslide/sys.h>
 #include <hdf5.h>
 #include <stdint.h>
 #include <stdio.h>
 
-/* Checks an HDF5 return value (herr_t or hid_t: negative means failure) and raises a PETSc error
- * naming the call and the file, so that no HDF5 failure passes silently. */
-#define TslH5Check(comm, expr, path)                                                                                                                 \
-  do {                                                                                                                                               \
-    if ((expr) < 0) SETERRQ((comm), PETSC_ERR_LIB, "HDF5 call %s failed on %s", #expr, (path));                                                      \
-  } while (0)
+/* Checks an HDF5 return value (herr_t or hid_t: negative means failure) on every rank together: a call
+ * that failed on one rank only raises the same error naming the call and the file on all ranks, before
+ * any of them enters the next collective call (where the others would wait for it for ever). */
+#define TslH5Check(comm, expr, path) PetscCall(TslH5Agree((comm), (PetscBool)((expr) < 0), #expr, (path)))
+PetscErrorCode TslH5Agree(MPI_Comm comm, PetscBool failed, const char *call, const char *path);
 
 /* Moves per-item records from "each rank its own items, any natural indices" to "each rank one
  * contiguous block of natural indices" (PETSC_DECIDE layout: the first N % size ranks get one item
@@ -48,6 +48,9 @@ struct _p_TslOutput {
   MPI_Comm            comm;
   PetscMPIInt         rank;
   char                job[TSL_NAME_LEN];
+  char                dir[PETSC_MAX_PATH_LEN];
+  PetscInt            cur_step;                    /* step of the open frame */
+  TslInject           inject;                      /* testing aid: an output failure on one rank */
   char                h5_base[PETSC_MAX_PATH_LEN]; /* "<job>.h5", as the .xmf refers to it */
   char                h5_part[PETSC_MAX_PATH_LEN], h5_final[PETSC_MAX_PATH_LEN];
   char                xmf_part[PETSC_MAX_PATH_LEN], xmf_tmp[PETSC_MAX_PATH_LEN], xmf_final[PETSC_MAX_PATH_LEN];
@@ -77,5 +80,9 @@ struct _p_TslHistory {
   PetscInt    ncol;
   FILE       *fp; /* rank 0 only */
   char        part[PETSC_MAX_PATH_LEN], final[PETSC_MAX_PATH_LEN];
+  char        dir[PETSC_MAX_PATH_LEN], job[TSL_NAME_LEN];
   PetscBool   finalized;
 };
+
+/* The final name dir/job[.tag]suffix: tag (may be NULL) marks the results of a run that stopped. */
+PetscErrorCode TslOutputFinalPath(MPI_Comm comm, const char *dir, const char *job, const char *tag, const char *suffix, char buf[], size_t len);

@@ -33,6 +33,27 @@ PetscErrorCode TslOutputCheckName(MPI_Comm comm, const char *kind, const char *n
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslH5Agree(MPI_Comm comm, PetscBool failed, const char *call, const char *path)
+{
+  PetscBool any;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Allreduce(&failed, &any, 1, MPIU_BOOL, MPI_LOR, comm));
+  if (failed) PetscCall(PetscInfo(NULL, "HDF5 call failed: %s\n", call));
+  PetscCheck(!any, comm, PETSC_ERR_FILE_WRITE, "writing %s failed (HDF5 error; -info names the call)", path);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputFinalPath(MPI_Comm comm, const char *dir, const char *job, const char *tag, const char *suffix, char buf[], size_t len)
+{
+  char name[TSL_NAME_LEN + 32];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(name, sizeof(name), "%s%s%s", job, tag ? "." : "", tag ? tag : ""));
+  PetscCall(TslOutputPath(comm, dir, name, suffix, buf, len));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslOutputCheckRoot(MPI_Comm comm, int err, const char *action, const char *path)
 {
   PetscFunctionBeginUser;
@@ -51,7 +72,8 @@ PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobna
   PetscFunctionBeginUser;
   PetscCheck(out, comm, PETSC_ERR_ARG_NULL, "TslOutputCreate(): out is NULL");
   *out = NULL;
-  PetscCall(TslOutputCheckName(comm, "Job", jobname, "/:\"<>&'"));
+  /* ":" would split the "file.h5:/path" references of the .xmf; XML-special characters are escaped there */
+  PetscCall(TslOutputCheckName(comm, "Job", jobname, "/:"));
   PetscCall(PetscNew(&o));
   o->comm        = comm;
   o->file        = H5I_INVALID_HID;
@@ -59,6 +81,8 @@ PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobna
   o->frame_group = H5I_INVALID_HID;
   PetscCallMPI(MPI_Comm_rank(comm, &o->rank));
   PetscCall(PetscStrncpy(o->job, jobname, sizeof(o->job)));
+  PetscCall(PetscStrncpy(o->dir, dir ? dir : "", sizeof(o->dir)));
+  PetscCall(TslInjectSetFromOptions(comm, &o->inject));
   PetscCall(TslOutputPath(comm, NULL, jobname, ".h5", o->h5_base, sizeof(o->h5_base)));
   PetscCall(TslOutputPath(comm, dir, jobname, ".h5.part", o->h5_part, sizeof(o->h5_part)));
   PetscCall(TslOutputPath(comm, dir, jobname, ".h5", o->h5_final, sizeof(o->h5_final)));
@@ -71,6 +95,8 @@ PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobna
   TslH5Check(comm, H5Pset_fapl_mpio(fapl, comm, MPI_INFO_NULL), o->h5_part);
   /* Collective metadata avoids every rank reading the same metadata block at scale. */
   TslH5Check(comm, H5Pset_all_coll_metadata_ops(fapl, 1), o->h5_part);
+  /* closing the file closes whatever a failed write left open */
+  TslH5Check(comm, H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), o->h5_part);
   TslH5Check(comm, H5Pset_coll_metadata_write(fapl, 1), o->h5_part);
   /* A missing or read-only directory is a user error: report it as such, without HDF5's stack dump. */
   TslH5Check(comm, H5Eget_auto2(H5E_DEFAULT, &efunc, &edata), o->h5_part);
@@ -108,7 +134,9 @@ static PetscErrorCode WriteRows(TslOutput out, hid_t loc, const char *name, hid_
   PetscFunctionBeginUser;
   TslH5Check(out->comm, fspace = H5Screate_simple(rank, gdims, NULL), out->h5_part);
   TslH5Check(out->comm, dset = H5Dcreate2(loc, name, filetype, fspace, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), out->h5_part);
-  TslH5Check(out->comm, mspace = H5Screate_simple(rank, mdims, NULL), out->h5_part);
+  /* testing aid: a failure of a rank-local call on one rank (-tsl_debug_fail_kind output) */
+  TslH5Check(out->comm, mspace = TslInjectNow(&out->inject, TSL_INJECT_OUTPUT, out->cur_step) ? H5I_INVALID_HID : H5Screate_simple(rank, mdims, NULL),
+             out->h5_part);
   if (count) {
     TslH5Check(out->comm, H5Sselect_hyperslab(fspace, H5S_SELECT_SET, off, NULL, cnt, NULL), out->h5_part);
   } else {
@@ -242,6 +270,7 @@ PetscErrorCode TslOutputBeginFrame(TslOutput out, PetscInt step, PetscInt increm
   PetscCheck(out->mesh_set, out->comm, PETSC_ERR_ORDER, "TslOutputSetMesh() must come before the first frame");
   PetscCheck(!out->in_frame, out->comm, PETSC_ERR_ORDER, "TslOutputBeginFrame() while a frame is open");
   PetscCheck(!out->finalized, out->comm, PETSC_ERR_ORDER, "Output %s already finalized", out->h5_final);
+  out->cur_step = step;
   if (out->nframe == out->maxframe) {
     TslOutputFrameInfo *more;
     PetscInt            newmax = PetscMax(8, 2 * out->maxframe);
@@ -344,13 +373,18 @@ PetscErrorCode TslOutputEndFrame(TslOutput out)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslOutputFinalize(TslOutput out)
+PetscErrorCode TslOutputFinalize(TslOutput out, const char *tag)
 {
   int err = 0;
 
   PetscFunctionBeginUser;
   PetscCheck(!out->in_frame, out->comm, PETSC_ERR_ORDER, "TslOutputFinalize() inside a frame");
   PetscCheck(!out->finalized, out->comm, PETSC_ERR_ORDER, "Output %s already finalized", out->h5_final);
+  if (tag) {
+    PetscCall(TslOutputFinalPath(out->comm, NULL, out->job, tag, ".h5", out->h5_base, sizeof(out->h5_base)));
+    PetscCall(TslOutputFinalPath(out->comm, out->dir, out->job, tag, ".h5", out->h5_final, sizeof(out->h5_final)));
+    PetscCall(TslOutputFinalPath(out->comm, out->dir, out->job, tag, ".xmf", out->xmf_final, sizeof(out->xmf_final)));
+  }
   TslH5Check(out->comm, H5Fclose(out->file), out->h5_part);
   out->file = H5I_INVALID_HID;
   PetscCall(RewriteXmf(out));
@@ -372,9 +406,18 @@ PetscErrorCode TslOutputDestroy(TslOutput *out)
   PetscFunctionBeginUser;
   if (!out || !*out) PetscFunctionReturn(PETSC_SUCCESS);
   o = *out;
-  if (o->frame_group >= 0) TslH5Check(o->comm, H5Gclose(o->frame_group), o->h5_part);
-  if (o->file >= 0) TslH5Check(o->comm, H5Fclose(o->file), o->h5_part);
-  if (o->dxpl >= 0) TslH5Check(o->comm, H5Pclose(o->dxpl), o->h5_part);
+  {
+    /* best effort and quiet: after a failed write some of these may fail too, and the temporary files
+     * must go all the same */
+    H5E_auto2_t efunc;
+    void       *edata;
+    (void)H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
+    (void)H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    if (o->frame_group >= 0) (void)H5Gclose(o->frame_group);
+    if (o->file >= 0) (void)H5Fclose(o->file);
+    if (o->dxpl >= 0) (void)H5Pclose(o->dxpl);
+    (void)H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  }
   if (!o->finalized) {
     if (o->rank == 0) {
       (void)unlink(o->h5_part); /* any of them may never have been created */

@@ -21,19 +21,43 @@ static const char *AttributeType(PetscInt ncomp)
   }
 }
 
+/* Text in XML: the job name (from the deck's file name) may hold any of & < > " '. */
+static void PutXml(FILE *fp, const char *text)
+{
+  for (const char *c = text; *c; c++) {
+    switch (*c) {
+    case '&':
+      fputs("&amp;", fp);
+      break;
+    case '<':
+      fputs("&lt;", fp);
+      break;
+    case '>':
+      fputs("&gt;", fp);
+      break;
+    case '"':
+      fputs("&quot;", fp);
+      break;
+    case '\'':
+      fputs("&apos;", fp);
+      break;
+    default:
+      fputc(*c, fp);
+    }
+  }
+}
+
 static void WriteMesh(FILE *fp, TslOutput out)
 {
   fprintf(fp, "        <Topology TopologyType=\"Mixed\" NumberOfElements=\"%" PetscInt_FMT "\">\n", out->nelem_global);
-  fprintf(fp,
-          "          <DataItem Dimensions=\"%lld\" NumberType=\"Int\" Precision=\"8\" "
-          "Format=\"HDF\">%s:/mesh/topology</DataItem>\n",
-          (long long)out->topo_len, out->h5_base);
+  fprintf(fp, "          <DataItem Dimensions=\"%lld\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">", (long long)out->topo_len);
+  PutXml(fp, out->h5_base);
+  fprintf(fp, ":/mesh/topology</DataItem>\n");
   fprintf(fp, "        </Topology>\n");
   fprintf(fp, "        <Geometry GeometryType=\"XYZ\">\n");
-  fprintf(fp,
-          "          <DataItem Dimensions=\"%" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" "
-          "Format=\"HDF\">%s:/mesh/coordinates</DataItem>\n",
-          out->nnode_global, out->h5_base);
+  fprintf(fp, "          <DataItem Dimensions=\"%" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">", out->nnode_global);
+  PutXml(fp, out->h5_base);
+  fprintf(fp, ":/mesh/coordinates</DataItem>\n");
   fprintf(fp, "        </Geometry>\n");
 }
 
@@ -48,10 +72,12 @@ PetscErrorCode TslOutputWriteXmf(TslOutput out, const char *path, int *err)
     *err = errno;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  /* Names were checked for XML-special characters when they were given; nothing needs escaping. */
+  /* Field names were checked for XML-special characters when they were given; the job name is escaped. */
   fprintf(fp, "<?xml version=\"1.0\" ?>\n<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n");
   fprintf(fp, "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n  <Domain>\n");
-  fprintf(fp, "    <Grid Name=\"%s\" GridType=\"Collection\" CollectionType=\"Temporal\">\n", out->job);
+  fprintf(fp, "    <Grid Name=\"");
+  PutXml(fp, out->job);
+  fprintf(fp, "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n");
   for (PetscInt i = 0; i < out->nframe; i++) {
     const TslOutputFrameInfo *f = &out->frames[i];
     if (out->in_frame && i == out->nframe - 1) break; /* the open frame is not complete yet */
@@ -64,10 +90,10 @@ PetscErrorCode TslOutputWriteXmf(TslOutput out, const char *path, int *err)
       const TslOutputFieldInfo *a = &f->fields[j];
       fprintf(fp, "        <Attribute Name=\"%s\" AttributeType=\"%s\" Center=\"%s\">\n", a->name, AttributeType(a->ncomp),
               a->on_cells ? "Cell" : "Node");
-      fprintf(fp,
-              "          <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" "
-              "Precision=\"8\" Format=\"HDF\">%s:/frames/%06d/%s</DataItem>\n",
-              a->on_cells ? out->nelem_global : out->nnode_global, a->ncomp, out->h5_base, (int)(i + 1), a->name);
+      fprintf(fp, "          <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">",
+              a->on_cells ? out->nelem_global : out->nnode_global, a->ncomp);
+      PutXml(fp, out->h5_base);
+      fprintf(fp, ":/frames/%06d/%s</DataItem>\n", (int)(i + 1), a->name);
       fprintf(fp, "        </Attribute>\n");
     }
     fprintf(fp, "      </Grid>\n");

@@ -88,19 +88,16 @@ static PetscErrorCode FaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The element loop. xa, xoa: local forms of the current and old solution; f: local form of the residual. */
-static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScalar *xa, const PetscScalar *xoa, PetscScalar *f, Mat A, AsmHeat *heat,
-                                    PetscInt *bad_elem)
+/* The element loop. xa, xoa: local forms of the current and old solution; f: local form of the residual;
+ * R, K: work arrays of TSL_MAX_ELEM_DOF and its square. */
+static PetscErrorCode AssembleLoop(TslProblem p, AsmMode mode, const PetscScalar *xa, const PetscScalar *xoa, PetscScalar *f, Mat A, AsmHeat *heat,
+                                   PetscReal *R, PetscReal *K, PetscInt *bad_elem)
 {
   const TslModel *m      = p->m;
   PetscBool       need_k = (mode == ASM_JACOBIAN);
-  PetscReal      *R, *K;
   TslElemData     d;
 
   PetscFunctionBeginUser;
-  *bad_elem = -1;
-  if (heat) PetscCall(PetscMemzero(heat, sizeof(*heat)));
-  PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &K));
   for (PetscInt e = 0; e < m->nelem; e++) {
     PetscBool inverted = PETSC_FALSE;
     TslProblemGather(p, e, xa, xoa, &d);
@@ -141,7 +138,36 @@ static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScala
       if (heat && dof % p->ndof == p->dim) heat->flux_in -= v;
     }
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode Injected(TslInjectKind kind)
+{
+  PetscFunctionBeginUser;
+  SETERRQ(PETSC_COMM_SELF, kind == TSL_INJECT_CONVERGE ? PETSC_ERR_CONV_FAILED : PETSC_ERR_PLIB, "injected %s failure (-tsl_debug_fail_kind)",
+          kind == TSL_INJECT_CONVERGE ? "convergence" : "internal");
+}
+
+/* The element and contact loop, run rank by rank, with its outcome decided on all ranks (sys.h): a fatal
+ * failure on any rank is raised on all; a convergence-type one (e.g. a contact projection that does not
+ * converge at a wild Newton iterate) comes back as *fail on all ranks, with its message in p->fail_msg. */
+static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScalar *xa, const PetscScalar *xoa, PetscScalar *f, Mat A, AsmHeat *heat,
+                                    PetscInt *bad_elem, TslFailure *fail)
+{
+  PetscReal     *R, *K;
+  PetscErrorCode e;
+
+  PetscFunctionBeginUser;
+  *bad_elem = -1;
+  if (heat) PetscCall(PetscMemzero(heat, sizeof(*heat)));
+  PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &K));
+  PetscCall(TslCaptureBegin());
+  e = AssembleLoop(p, mode, xa, xoa, f, A, heat, R, K, bad_elem);
+  if (!e && mode == ASM_RESIDUAL && TslInjectNow(&p->inject, TSL_INJECT_CONVERGE, p->step + 1)) e = Injected(TSL_INJECT_CONVERGE);
+  if (!e && mode == ASM_RESIDUAL && TslInjectNow(&p->inject, TSL_INJECT_INTERNAL, p->step + 1)) e = Injected(TSL_INJECT_INTERNAL);
+  PetscCall(TslCaptureEnd());
   PetscCall(PetscFree2(R, K));
+  PetscCall(TslAgree(p->comm, e, fail, p->fail_msg));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -268,8 +294,8 @@ static PetscErrorCode RestoreStates(TslProblem p, Vec *xl, Vec *xol, const Petsc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Residual (constrained or raw) into F. */
-static PetscErrorCode Residual(TslProblem p, AsmMode mode, Vec X, Vec F, AsmHeat *heat)
+/* Residual (constrained or raw) into F; *fail: a convergence-type failure agreed by all ranks. */
+static PetscErrorCode Residual(TslProblem p, AsmMode mode, Vec X, Vec F, AsmHeat *heat, TslFailure *fail)
 {
   Vec                xl, xol, fl;
   const PetscScalar *xa, *xoa;
@@ -281,7 +307,7 @@ static PetscErrorCode Residual(TslProblem p, AsmMode mode, Vec X, Vec F, AsmHeat
   PetscCall(VecGhostGetLocalForm(p->Fl, &fl));
   PetscCall(VecZeroEntries(fl));
   PetscCall(VecGetArray(fl, &fa));
-  PetscCall(AssembleLocal(p, mode, xa, xoa, fa, NULL, heat, &bad));
+  PetscCall(AssembleLocal(p, mode, xa, xoa, fa, NULL, heat, &bad, fail));
   PetscCall(VecRestoreArray(fl, &fa));
   PetscCall(VecGhostRestoreLocalForm(p->Fl, &fl));
   PetscCall(CheckBadElement(p, bad));
@@ -299,9 +325,11 @@ static PetscErrorCode Residual(TslProblem p, AsmMode mode, Vec X, Vec F, AsmHeat
 
 PetscErrorCode TslProblemFormFunction(SNES snes, Vec X, Vec F, void *ctx)
 {
+  TslFailure fail;
+
   PetscFunctionBeginUser;
-  (void)snes;
-  PetscCall(Residual((TslProblem)ctx, ASM_RESIDUAL, X, F, NULL));
+  PetscCall(Residual((TslProblem)ctx, ASM_RESIDUAL, X, F, NULL, &fail));
+  if (fail) PetscCall(SNESSetFunctionDomainError(snes));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -311,17 +339,18 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   Vec                xl, xol;
   const PetscScalar *xa, *xoa;
   PetscInt           bad;
+  TslFailure         fail;
 
   PetscFunctionBeginUser;
-  (void)snes;
   PetscCall(MatZeroEntries(P));
   PetscCall(GetStates(p, X, &xl, &xol, &xa, &xoa));
-  PetscCall(AssembleLocal(p, ASM_JACOBIAN, xa, xoa, NULL, P, NULL, &bad));
+  PetscCall(AssembleLocal(p, ASM_JACOBIAN, xa, xoa, NULL, P, NULL, &bad, &fail));
   PetscCall(ConstraintRows(p, ASM_JACOBIAN, xa, NULL, P));
   PetscCall(RestoreStates(p, &xl, &xol, &xa, &xoa));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   PetscCall(CheckBadElement(p, bad));
+  if (fail) PetscCall(SNESSetJacobianDomainError(snes));
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
@@ -331,8 +360,9 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
 
 PetscErrorCode TslProblemPreallocate(TslProblem p)
 {
-  Mat      pre, J;
-  PetscInt n = p->nown * p->ndof, bad;
+  Mat        pre, J;
+  PetscInt   n = p->nown * p->ndof, bad;
+  TslFailure fail;
 
   PetscFunctionBeginUser;
   PetscCall(MatCreate(p->comm, &pre));
@@ -341,7 +371,7 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   PetscCall(MatSetBlockSize(pre, p->ndof));
   PetscCall(MatSetLocalToGlobalMapping(pre, p->l2g, p->l2g));
   PetscCall(MatSetUp(pre));
-  PetscCall(AssembleLocal(p, ASM_PATTERN, NULL, NULL, NULL, pre, NULL, &bad));
+  PetscCall(AssembleLocal(p, ASM_PATTERN, NULL, NULL, NULL, pre, NULL, &bad, &fail));
   PetscCall(ConstraintRows(p, ASM_PATTERN, NULL, NULL, pre));
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(pre, MAT_FINAL_ASSEMBLY));
@@ -365,9 +395,12 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
   AsmHeat            heat;
   const PetscScalar *r;
   PetscReal          loc[7] = {0, 0, 0, 0, 0, 0, 0}, g[7];
+  TslFailure         fail;
 
   PetscFunctionBeginUser;
-  PetscCall(Residual(p, ASM_RAW, p->X, p->Rraw, &heat));
+  PetscCall(Residual(p, ASM_RAW, p->X, p->Rraw, &heat, &fail));
+  /* the state was solved, so its contact projections exist: a failure here is not a cutback matter */
+  PetscCheck(!fail, p->comm, PETSC_ERR_PLIB, "%s", p->fail_msg);
   PetscCall(VecGetArrayRead(p->Rraw, &r));
   for (PetscInt n = 0; n < p->nown; n++) {
     PetscInt d = n * p->ndof + p->dim;

@@ -213,6 +213,8 @@ PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
   PetscCall(Search(p, xa, &changed));
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  if (p->pattern_stale) changed++;
+  p->pattern_stale = PETSC_FALSE;
   PetscCall(MPIU_Allreduce(&changed, &g, 1, MPIU_INT, MPI_SUM, p->comm));
   if (g) {
     PetscCall(PetscInfo(NULL, "contact pairing changed for %" PetscInt_FMT " secondary nodes\n", g));
@@ -291,15 +293,17 @@ PetscErrorCode TslProblemContactCommit(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A rejected increment: back to the state at its start. */
+/* A rejected increment: back to the state at its start. Pairing that changed during the attempt left the
+ * matrix pattern of the attempt, so the next search rebuilds it. */
 PetscErrorCode TslProblemContactRollback(TslProblem p)
 {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode *cn = &p->cnode[i];
-    cn->seg            = cn->seg_c;
-    cn->hist           = cn->hist_c;
-    cn->cslip          = cn->cslip_c;
+    if (cn->seg != cn->seg_c) p->pattern_stale = PETSC_TRUE;
+    cn->seg   = cn->seg_c;
+    cn->hist  = cn->hist_c;
+    cn->cslip = cn->cslip_c;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

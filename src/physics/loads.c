@@ -170,6 +170,32 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The amplitudes that some load or boundary condition follows in this step, on any rank: increments end
+ * on their corners (TslProblemNextAmplitudeCorner). */
+static PetscErrorCode MarkActiveAmplitudes(TslProblem p)
+{
+  PetscInt   na = p->m->namplitude;
+  PetscBool *loc;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(na, &loc));
+  for (PetscInt d = 0; d < p->nn * p->ndof; d++) {
+    if (p->bc[d].active && p->bc[d].amp >= 0) loc[p->bc[d].amp] = PETSC_TRUE;
+    if (p->nload[d].active && p->nload[d].amp >= 0) loc[p->nload[d].amp] = PETSC_TRUE;
+  }
+  for (PetscInt i = 0; i < p->nface; i++) {
+    const TslFaceRecord *r = &p->face[i];
+    if (r->value.active && r->value.amp >= 0) loc[r->value.amp] = PETSC_TRUE;
+    if (r->sink.active && r->sink.amp >= 0) loc[r->sink.amp] = PETSC_TRUE;
+    if (r->film_amp >= 0) loc[r->film_amp] = PETSC_TRUE;
+  }
+  PetscCall(PetscFree(p->amp_active));
+  PetscCall(PetscMalloc1(na, &p->amp_active));
+  if (na) PetscCall(MPIU_Allreduce(loc, p->amp_active, (PetscMPIInt)na, MPIU_BOOL, MPI_LOR, p->comm));
+  PetscCall(PetscFree(loc));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
 {
   TslModel          *m                      = p->m;
@@ -257,7 +283,28 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
                m->node_id[d / p->ndof]);
   }
   PetscCall(CompactFaces(p));
+  PetscCall(MarkActiveAmplitudes(p));
+  p->step_start_ttot = p->ttot;
   PetscCall(TslProblemPreallocate(p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemNextAmplitudeCorner(TslProblem p, PetscReal t, PetscReal t_end, PetscReal *tb)
+{
+  PetscReal eps = 1e-12 * PetscMax(p->period, PETSC_SMALL);
+
+  PetscFunctionBeginUser;
+  *tb = t_end;
+  for (PetscInt k = 0; k < p->m->namplitude; k++) {
+    const TslAmplitude *a = &p->m->amplitudes[k];
+    PetscReal           shift;
+    if (!p->amp_active[k]) continue;
+    shift = a->total_time ? p->step_start_ttot : 0; /* amplitude time - step time */
+    for (PetscInt i = 0; i < a->n; i++) {
+      PetscReal ts = a->t[i] - shift;
+      if (ts > t + eps && ts < *tb) *tb = ts;
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -153,6 +153,22 @@ static PetscErrorCode SetUpEquations(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The part of the set-up that involves this rank only. */
+static PetscErrorCode SetUpLocal(TslProblem p)
+{
+  const TslModel *local = p->m;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < local->elem_ptr[local->nelem]; k++) {
+    p->elem_lnode[k] = TslModelNodeIndex(local, local->elem_conn[k]);
+    PetscCheck(p->elem_lnode[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "element node %" PetscInt_FMT " missing on this rank", local->elem_conn[k]);
+  }
+  PetscCall(SetUpMaterials(p));
+  PetscCall(SetUpInitialTemperature(p));
+  PetscCall(SetUpEquations(p));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemCreate(MPI_Comm comm, TslModel *local, TslProblem *prob)
 {
   TslProblem p;
@@ -167,14 +183,18 @@ PetscErrorCode TslProblemCreate(MPI_Comm comm, TslModel *local, TslProblem *prob
   p->nown = local->nnode_owned;
   p->step = -1;
   PetscCall(PetscMalloc1(local->elem_ptr[local->nelem], &p->elem_lnode));
-  for (PetscInt k = 0; k < local->elem_ptr[local->nelem]; k++) {
-    p->elem_lnode[k] = TslModelNodeIndex(local, local->elem_conn[k]);
-    PetscCheck(p->elem_lnode[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "element node %" PetscInt_FMT " missing on this rank", local->elem_conn[k]);
+  PetscCall(TslInjectSetFromOptions(comm, &p->inject));
+  {
+    /* checks that can fail on one rank come before the first collective call, and all ranks agree on
+     * their outcome */
+    PetscErrorCode e;
+    TslFailure     fail;
+    PetscCall(TslCaptureBegin());
+    e = SetUpLocal(p);
+    PetscCall(TslCaptureEnd());
+    PetscCall(TslAgree(comm, e, &fail, NULL));
+    PetscCheck(!fail, comm, PETSC_ERR_PLIB, "problem set-up failed");
   }
-  /* checks that can fail on one rank come before the first collective call */
-  PetscCall(SetUpMaterials(p));
-  PetscCall(SetUpInitialTemperature(p));
-  PetscCall(SetUpEquations(p));
   PetscCall(SetUpVectors(p));
   PetscCall(PetscCalloc2(p->nn * p->ndof, &p->bc, p->nn * p->ndof, &p->nload));
   PetscCall(PetscCalloc1(local->nelem + 1, &p->face_start));
@@ -200,6 +220,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(ISDestroy(&p->is_u));
   PetscCall(ISDestroy(&p->is_theta));
   PetscCall(PetscFree(p->elem_lnode));
+  PetscCall(PetscFree(p->amp_active));
   PetscCall(PetscFree(p->emat));
   PetscCall(PetscFree(p->theta_init));
   PetscCall(PetscFree2(p->bc, p->nload));
@@ -213,6 +234,13 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(TslModelDestroy(&p->m));
   PetscCall(PetscFree(p));
   *prob = NULL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemGetFailureMessage(TslProblem p, const char **msg)
+{
+  PetscFunctionBeginUser;
+  *msg = p->fail_msg;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

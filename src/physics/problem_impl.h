@@ -2,6 +2,7 @@
 #pragma once
 #include <thermoslide/problem.h>
 #include <thermoslide/contact.h>
+#include <thermoslide/sys.h>
 #include <string.h>
 
 /* One contact pair on this rank: the law and the main surface (all its nodes are local here when the
@@ -69,6 +70,8 @@ struct _p_TslProblem {
   PetscBool     steady;
   TslAmpDefault amp_default;
   PetscReal     period, t, dt, ttot;
+  PetscReal     step_start_ttot; /* total time at the start of the step */
+  PetscBool    *amp_active;      /* [namplitude] followed by some load of the step (any rank) */
 
   TslHistoryValue *bc;    /* [nn*ndof] prescribed values (owned and ghost dofs) */
   TslHistoryValue *nload; /* [nn*ndof] nodal loads (CLOAD, CFLUX), owned dofs only */
@@ -81,6 +84,11 @@ struct _p_TslProblem {
   TslContactSurface *csurf;
   TslContactNode    *cnode;
   PetscReal          augment_tol;
+  PetscBool          pattern_stale; /* a rollback changed the pairing: the matrix pattern is the failed attempt's */
+
+  /* failures decided by all ranks (sys.h) */
+  TslInject inject;
+  char      fail_msg[TSL_FAIL_MSG_LEN]; /* the last convergence-type failure */
 
   /* equations: dep[d] = index into m->equations if local dof d is eliminated, else -1 */
   PetscInt  *dep;

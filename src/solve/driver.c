@@ -1,6 +1,7 @@
 /* Step procedures: increments with cutback and DELTMX control, Newton through SNES, output. */
 #include <thermoslide/solve.h>
 #include <thermoslide/output.h>
+#include <thermoslide/sys.h>
 #include <petscsnes.h>
 #include <string.h>
 
@@ -46,6 +47,8 @@ typedef struct {
   PetscReal  dissipated, absorbed;  /* frictional dissipation and the heat made of it, since the start */
   PetscInt   max_contact_its;
   PetscReal  done_time, done_step_time, done_dt;
+  PetscBool  trial;     /* X holds an unconverged trial state (Xold the last converged one) */
+  PetscBool  in_output; /* inside a frame: a failure there leaves the output unusable */
 } Driver;
 
 /* Default solver choices, entered only where the user gave none. */
@@ -148,22 +151,26 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(PCFieldSplitSetIS(pc, "u", is_u));
   PetscCall(SNESSetFromOptions(d->snes));
 
-  d->rtol     = 1e-9;
-  d->atol_rel = 1e-8;
-  d->cutback  = 0.25;
-  d->growth   = 1.5;
-  d->easy_its = 5;
+  d->rtol               = 1e-9;
+  d->atol_rel           = 1e-8;
+  d->cutback            = 0.25;
+  d->growth             = 1.5;
+  d->easy_its           = 5;
+  d->max_contact_its    = 8;
+  d->debug_diverge_step = 0;
   PetscOptionsBegin(d->comm, NULL, "thermoslide increment control", NULL);
-  PetscCall(PetscOptionsReal("-tsl_rtol", "per-field Newton residual reduction", NULL, d->rtol, &d->rtol, NULL));
-  PetscCall(PetscOptionsReal("-tsl_atol_rel", "per-field residual floor relative to the job's largest", NULL, d->atol_rel, &d->atol_rel, NULL));
-  PetscCall(PetscOptionsReal("-tsl_cutback", "increment factor after a failed increment", NULL, d->cutback, &d->cutback, NULL));
-  PetscCall(PetscOptionsReal("-tsl_growth", "increment factor after an easy increment", NULL, d->growth, &d->growth, NULL));
-  PetscCall(PetscOptionsInt("-tsl_easy_its", "Newton iterations that count as easy", NULL, d->easy_its, &d->easy_its, NULL));
-  d->max_contact_its = 8;
-  PetscCall(PetscOptionsInt("-tsl_contact_max_its", "solves of one increment while contact pairing or multipliers change", NULL, d->max_contact_its,
-                            &d->max_contact_its, NULL));
-  PetscCall(PetscOptionsInt("-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", NULL,
-                            d->debug_diverge_step, &d->debug_diverge_step, NULL));
+  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_rtol", "per-field Newton residual reduction", 0, PETSC_TRUE, 1, PETSC_TRUE, &d->rtol));
+  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_atol_rel", "per-field residual floor relative to the job's largest", 0, PETSC_TRUE, 1,
+                           PETSC_TRUE, &d->atol_rel));
+  PetscCall(
+      TslOptionsReal(PetscOptionsObject, "-tsl_cutback", "increment factor after a failed increment", 0, PETSC_TRUE, 1, PETSC_TRUE, &d->cutback));
+  PetscCall(
+      TslOptionsReal(PetscOptionsObject, "-tsl_growth", "increment factor after an easy increment", 1, PETSC_FALSE, 100, PETSC_FALSE, &d->growth));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_easy_its", "Newton iterations that count as easy", 0, 1000, &d->easy_its));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_contact_max_its", "solves of one increment while contact pairing or multipliers change", 1, 1000,
+                          &d->max_contact_its));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", 0,
+                          PETSC_MAX_INT, &d->debug_diverge_step));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -219,6 +226,7 @@ static PetscErrorCode SetOutputRequests(Driver *d, const TslStep *step)
 static PetscErrorCode WriteFrame(Driver *d, PetscInt step, PetscInt inc, PetscReal time)
 {
   PetscFunctionBeginUser;
+  d->in_output = PETSC_TRUE;
   PetscCall(TslOutputBeginFrame(d->out, step, inc, time));
   for (PetscInt i = 0; i < NFIELD_NODE; i++) {
     PetscInt   nc;
@@ -237,6 +245,7 @@ static PetscErrorCode WriteFrame(Driver *d, PetscInt step, PetscInt inc, PetscRe
     PetscCall(PetscFree(v));
   }
   PetscCall(TslOutputEndFrame(d->out));
+  d->in_output  = PETSC_FALSE;
   d->frame_step = step;
   d->frame_inc  = inc;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -321,6 +330,44 @@ static PetscErrorCode SolveIncrement(Driver *d, Vec X, SNESConvergedReason *reas
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Console and history line of an accepted increment. */
+static PetscErrorCode Accept(Driver *d, PetscInt s, PetscInt inc, PetscReal t, PetscReal h, PetscReal total, PetscInt its, PetscInt lits)
+{
+  TslHeatBalance hb;
+  PetscReal      row[NHISTORY];
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemHeatBalance(d->prob, &hb));
+  PetscCall(TslProblemContactCommit(d->prob));
+  d->dissipated += hb.dissipation * h;
+  d->absorbed += hb.friction_heat * h;
+  PetscCall(PetscPrintf(d->comm,
+                        "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": time %.6g  dt %.4g  newton %" PetscInt_FMT "  linear %" PetscInt_FMT
+                        "  heat in %.6g  film out %.6g  balance %.3g\n",
+                        s + 1, inc, (double)total, (double)h, its, lits, (double)hb.heat_in, (double)hb.film_out, (double)hb.balance));
+  row[0]  = (PetscReal)(s + 1);
+  row[1]  = (PetscReal)inc;
+  row[2]  = total;
+  row[3]  = t;
+  row[4]  = h;
+  row[5]  = (PetscReal)its;
+  row[6]  = hb.heat_in;
+  row[7]  = hb.film_out;
+  row[8]  = hb.reaction_heat;
+  row[9]  = hb.stored_rate;
+  row[10] = hb.interface_heat;
+  row[11] = hb.dissipation;
+  row[12] = d->dissipated;
+  row[13] = d->absorbed;
+  row[14] = hb.balance;
+  PetscCall(TslHistoryAppend(d->hist, row));
+  d->done_step = s + 1, d->done_inc = inc, d->done_time = total, d->done_step_time = t, d->done_dt = h;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Increments of one step. dt is the controller's increment; each increment h = dt cut short at the step
+ * end and at the next corner of an amplitude the step follows (so a slide reversal is never straddled).
+ * A failed increment is retried from the last converged state with h * cutback. */
 static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
 {
   const TslModel *m;
@@ -347,16 +394,20 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   while (t < step->period - eps) {
     SNESConvergedReason reason;
     PetscInt            its, lits;
-    PetscReal           dtheta = 0;
-    PetscBool           accept;
+    PetscReal           dtheta = 0, h, t_end;
+    PetscBool           accept, last;
+    const char         *why;
 
-    if (t + dt > step->period - eps) dt = step->period - t;
+    PetscCall(TslProblemNextAmplitudeCorner(d->prob, t, step->period, &t_end));
+    h    = PetscMin(dt, t_end - t);
+    last = (PetscBool)(t + h >= step->period - eps);
     PetscCheck(inc < step->max_inc, d->comm, PETSC_ERR_NOT_CONVERGED,
                "step %" PetscInt_FMT ": the maximum number of increments (INC=%" PetscInt_FMT ") was reached at step time %g", s + 1, step->max_inc,
                (double)t);
     attempts++;
     PetscCall(VecCopy(X, Xold));
-    PetscCall(TslProblemSetTime(d->prob, t + dt, dt, *total_time + dt));
+    d->trial = PETSC_TRUE;
+    PetscCall(TslProblemSetTime(d->prob, t + h, h, *total_time + h));
     PetscCall(TslProblemApplyPrescribed(d->prob, X));
     PetscCall(SolveIncrement(d, X, &reason, &its, &lits));
     if (s + 1 == d->debug_diverge_step) reason = SNES_DIVERGED_FUNCTION_DOMAIN;
@@ -369,59 +420,92 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscReal f = reason > 0 ? PetscMax(d->cutback, 0.85 * step->deltmx / dtheta) : d->cutback;
       PetscCall(VecCopy(Xold, X));
       PetscCall(TslProblemContactRollback(d->prob));
-      PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": %s; cutback dt %g -> %g\n", s + 1, inc + 1,
-                            reason > 0 ? "temperature change exceeds DELTMX" : SNESConvergedReasons[reason], (double)dt, (double)(dt * f)));
+      d->trial = PETSC_FALSE;
+      PetscCall(TslProblemGetFailureMessage(d->prob, &why));
+      if (reason > 0)
+        why = "temperature change exceeds DELTMX";
+      else if (reason != SNES_DIVERGED_FUNCTION_DOMAIN && reason != SNES_DIVERGED_JACOBIAN_DOMAIN)
+        why = SNESConvergedReasons[reason];
+      else if (!why[0])
+        why = "diverged";
+      PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": %s; cutback dt %g -> %g\n", s + 1, inc + 1, why,
+                            (double)h, (double)(h * f)));
       PetscCheck(!step->direct, d->comm, PETSC_ERR_NOT_CONVERGED,
-                 "step %" PetscInt_FMT ": increment %" PetscInt_FMT " did not converge (%s) and DIRECT forbids a cutback", s + 1, inc + 1,
-                 SNESConvergedReasons[reason]);
-      dt *= f;
+                 "step %" PetscInt_FMT ": increment %" PetscInt_FMT " did not converge (%s) and DIRECT forbids a cutback", s + 1, inc + 1, why);
+      dt = h * f;
       PetscCheck(dt >= step->dtmin * (1 - 1e-12), d->comm, PETSC_ERR_NOT_CONVERGED,
                  "step %" PetscInt_FMT ": the increment fell below the minimum %g at step time %g; the last converged state (step time %g) is saved",
                  s + 1, (double)step->dtmin, (double)t, (double)t);
       continue;
     }
-    {
-      TslHeatBalance hb;
-      PetscReal      row[NHISTORY];
-      PetscBool      last = (PetscBool)(t + dt >= step->period - eps);
-      t += dt;
-      *total_time += dt;
-      inc++;
-      PetscCall(TslProblemHeatBalance(d->prob, &hb));
-      PetscCall(TslProblemContactCommit(d->prob));
-      d->dissipated += hb.dissipation * dt;
-      d->absorbed += hb.friction_heat * dt;
-      PetscCall(PetscPrintf(d->comm,
-                            "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": time %.6g  dt %.4g  newton %" PetscInt_FMT
-                            "  linear %" PetscInt_FMT "  heat in %.6g  film out %.6g  balance %.3g\n",
-                            s + 1, inc, (double)*total_time, (double)dt, its, lits, (double)hb.heat_in, (double)hb.film_out, (double)hb.balance));
-      row[0]  = (PetscReal)(s + 1);
-      row[1]  = (PetscReal)inc;
-      row[2]  = *total_time;
-      row[3]  = t;
-      row[4]  = dt;
-      row[5]  = (PetscReal)its;
-      row[6]  = hb.heat_in;
-      row[7]  = hb.film_out;
-      row[8]  = hb.reaction_heat;
-      row[9]  = hb.stored_rate;
-      row[10] = hb.interface_heat;
-      row[11] = hb.dissipation;
-      row[12] = d->dissipated;
-      row[13] = d->absorbed;
-      row[14] = hb.balance;
-      PetscCall(TslHistoryAppend(d->hist, row));
-      d->done_step = s + 1, d->done_inc = inc, d->done_time = *total_time, d->done_step_time = t, d->done_dt = dt;
-      if (last || inc % d->frequency == 0) PetscCall(WriteFrame(d, s + 1, inc, *total_time));
-      if (!step->direct) {
-        PetscReal f = its <= d->easy_its ? d->growth : 1.0;
-        if (!step->steady && step->deltmx > 0 && dtheta > 0) f = PetscMin(f, 0.85 * step->deltmx / dtheta);
-        dt = PetscMin(step->dtmax, dt * PetscMax(f, d->cutback));
-      }
+    t = last ? step->period : t + h;
+    *total_time += h;
+    inc++;
+    d->trial = PETSC_FALSE;
+    PetscCall(Accept(d, s, inc, t, h, *total_time, its, lits));
+    if (last || inc % d->frequency == 0) PetscCall(WriteFrame(d, s + 1, inc, *total_time));
+    if (!step->direct) {
+      /* the controller grows from the increment it asked for, not from one cut short at a corner */
+      PetscReal f = its <= d->easy_its ? d->growth : 1.0;
+      if (!step->steady && step->deltmx > 0 && dtheta > 0) f = PetscMin(f, 0.85 * step->deltmx / dtheta);
+      dt = PetscMin(step->dtmax, dt * PetscMax(f, d->cutback));
     }
   }
   PetscCall(PrintTables(d, step));
   PetscCall(PetscInfo(NULL, "step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %" PetscInt_FMT " attempts\n", s + 1, inc, attempts));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After a failure (the same on all ranks): back to the last converged state, and its frame written if the
+ * output frequency skipped it. */
+static PetscErrorCode SaveLastConverged(Driver *d)
+{
+  TslHeatBalance hb;
+  Vec            X, Xold;
+
+  PetscFunctionBeginUser;
+  if (d->trial) {
+    PetscCall(TslProblemGetSolution(d->prob, &X));
+    PetscCall(TslProblemGetOldSolution(d->prob, &Xold));
+    PetscCall(VecCopy(Xold, X));
+    PetscCall(TslProblemContactRollback(d->prob));
+    d->trial = PETSC_FALSE;
+  }
+  if (d->done_inc > 0 && (d->frame_step != d->done_step || d->frame_inc != d->done_inc)) {
+    PetscCall(TslProblemSetTime(d->prob, d->done_step_time, d->done_dt, d->done_time));
+    PetscCall(TslProblemHeatBalance(d->prob, &hb)); /* contact outputs at that state */
+    PetscCall(WriteFrame(d, d->done_step, d->done_inc, d->done_time));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Where the results of a run go. A complete run replaces earlier results. A run that stopped keeps what
+ * it converged: under the usual names if there were no earlier results, else beside them as
+ * <job>.failed.{h5,xmf,csv} so that a good earlier result is never lost. A run that converged nothing
+ * leaves everything as it was. */
+static PetscErrorCode Finish(Driver *d, PetscErrorCode ierr, const char *dir, const char *jobname)
+{
+  PetscBool earlier = PETSC_FALSE;
+  char      path[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBeginUser;
+  if (!ierr) {
+    PetscCall(TslOutputFinalize(d->out, NULL));
+    PetscCall(TslHistoryFinalize(d->hist, NULL));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/%s.h5", dir, jobname));
+  PetscCall(PetscTestFile(path, 'r', &earlier));
+  PetscCallMPI(MPI_Bcast(&earlier, 1, MPIU_BOOL, 0, d->comm));
+  if (d->frame_inc == 0) {
+    PetscCall(PetscPrintf(d->comm, "no increment converged: nothing was written%s%s\n", earlier ? "; the earlier results stay in " : "",
+                          earlier ? path : ""));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(TslOutputFinalize(d->out, earlier ? "failed" : NULL));
+  PetscCall(TslHistoryFinalize(d->hist, earlier ? "failed" : NULL));
+  PetscCall(PetscPrintf(d->comm, "results up to step %" PetscInt_FMT " increment %" PetscInt_FMT " are saved in %s/%s%s.h5%s%s\n", d->frame_step,
+                        d->frame_inc, dir, jobname, earlier ? ".failed" : "", earlier ? "; the earlier results stay in " : "", earlier ? path : ""));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -442,22 +526,15 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
     PetscCall(PetscObjectGetComm((PetscObject)X, &d.comm));
   }
   PetscCall(SetUpSolver(&d));
+  PetscCall(TslOptionsCheckUnused(d.comm, PETSC_TRUE)); /* every -tsl_ option has been read by now */
   PetscCall(SetUpOutput(&d, dir, jobname));
+  /* every failure inside a step is decided by all ranks together (sys.h), so all ranks stop here alike */
   for (PetscInt s = 0; s < m->nstep && !ierr; s++) ierr = RunStep(&d, s, &total);
-  /* a result that ends at the last converged increment is still a result: keep it */
-  if (ierr == PETSC_ERR_NOT_CONVERGED && d.done_inc > 0 && (d.frame_step != d.done_step || d.frame_inc != d.done_inc)) {
-    TslHeatBalance hb;
-    PetscCall(TslProblemSetTime(prob, d.done_step_time, d.done_dt, d.done_time));
-    PetscCall(TslProblemHeatBalance(prob, &hb));
-    PetscCall(WriteFrame(&d, d.done_step, d.done_inc, d.done_time));
+  if (ierr && !d.in_output) {
+    PetscErrorCode e = SaveLastConverged(&d);
+    if (e) d.in_output = PETSC_TRUE; /* could not even write the last state: keep nothing of this run */
   }
-  if (!ierr || ierr == PETSC_ERR_NOT_CONVERGED) {
-    PetscCall(TslOutputFinalize(d.out));
-    PetscCall(TslHistoryFinalize(d.hist));
-    if (ierr)
-      PetscCall(PetscPrintf(d.comm, "results up to step %" PetscInt_FMT " increment %" PetscInt_FMT " are saved in %s/%s.h5\n", d.frame_step,
-                            d.frame_inc, dir, jobname));
-  }
+  if (!d.in_output) PetscCall(Finish(&d, ierr, dir, jobname));
   PetscCall(TslOutputDestroy(&d.out));
   PetscCall(TslHistoryDestroy(&d.hist));
   PetscCall(SNESDestroy(&d.snes));

@@ -269,9 +269,9 @@ int main(int argc, char **argv)
       EXPECT(access(path, F_OK) == 0, "%s missing after EndFrame", path);
     }
   }
-  PetscCall(TslOutputFinalize(out));
+  PetscCall(TslOutputFinalize(out, NULL));
   PetscCall(TslOutputDestroy(&out));
-  PetscCall(TslHistoryFinalize(hist));
+  PetscCall(TslHistoryFinalize(hist, NULL));
   PetscCall(TslHistoryDestroy(&hist));
   EXPECT(!out && !hist, "Destroy did not null the handles");
 

@@ -1,0 +1,54 @@
+/* thermoslide system layer: failures decided by all ranks together.
+ *
+ * A piece of work that runs rank by rank (element and contact evaluation, a file operation) may fail on
+ * some ranks only. If the failing rank simply returned, the others would wait for it for ever in their
+ * next collective call. So such work runs under TslCaptureBegin/End, which collects its outcome without
+ * printing, and TslAgree then decides on all ranks at once:
+ *   - nothing failed anywhere: TSL_FAIL_NONE;
+ *   - a convergence-type failure (PETSC_ERR_CONV_FAILED, PETSC_ERR_NOT_CONVERGED, PETSC_ERR_FP) and nothing
+ *     worse: TSL_FAIL_CONVERGENCE on every rank, with the first failing rank's message in msg; the caller
+ *     turns it into a failed increment (cutback);
+ *   - anything else: the same error is raised on every rank with the first failing rank's message, which
+ *     the job log prints once.
+ */
+#pragma once
+#include <thermoslide/compat.h>
+
+typedef enum { TSL_FAIL_NONE = 0, TSL_FAIL_CONVERGENCE = 1, TSL_FAIL_FATAL = 2 } TslFailure;
+
+#define TSL_FAIL_MSG_LEN 1024
+
+/* Start collecting errors quietly (no message printed); every Begin needs its End. */
+PetscErrorCode TslCaptureBegin(void);
+PetscErrorCode TslCaptureEnd(void);
+
+/* Collective. local: this rank's outcome (the error code of the captured work, 0 if none). Raises the
+ * agreed error on all ranks for a fatal failure; otherwise sets *kind and, for a convergence failure,
+ * msg (may be NULL; TSL_FAIL_MSG_LEN characters) to "rank R: <message>". */
+PetscErrorCode TslAgree(MPI_Comm comm, PetscErrorCode local, TslFailure *kind, char msg[]);
+
+/* Test aid: a failure injected on one rank, to prove that no failure on one rank hangs the others.
+ * Options: -tsl_debug_fail_kind converge|internal|output -tsl_debug_fail_rank R -tsl_debug_fail_step S
+ * [-tsl_debug_fail_count N]. Each object that injects keeps its own copy (no global state). */
+typedef enum { TSL_INJECT_NONE, TSL_INJECT_CONVERGE, TSL_INJECT_INTERNAL, TSL_INJECT_OUTPUT } TslInjectKind;
+typedef struct {
+  PetscBool     mine; /* this rank injects */
+  TslInjectKind kind;
+  PetscInt      step, count;
+} TslInject;
+
+PetscErrorCode TslInjectSetFromOptions(MPI_Comm comm, TslInject *inj);
+/* PETSC_TRUE when the calling rank should fail now with `kind` in `step` (1-based); counts down. */
+PetscBool TslInjectNow(TslInject *inj, TslInjectKind kind, PetscInt step);
+
+/* Options with a range, inside PetscOptionsBegin/End (pass PetscOptionsObject). A value that is not a
+ * number, or lies outside [lo, hi], is a user error naming the option and the range; never a PETSc trace,
+ * a silent clamp or an endless loop. open_lo / open_hi exclude the bound itself. */
+PetscErrorCode TslOptionsReal(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscReal lo, PetscBool open_lo, PetscReal hi,
+                              PetscBool open_hi, PetscReal *value);
+PetscErrorCode TslOptionsInt(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscInt lo, PetscInt hi, PetscInt *value);
+
+/* Options given but not read. fail: a -tsl_ option nobody read is a user error (a misspelt option of ours
+ * must not silently leave a default in place); otherwise each unused option is a warning in the log
+ * (PETSc's own start-up and finalize-time options excepted). Collective. */
+PetscErrorCode TslOptionsCheckUnused(MPI_Comm comm, PetscBool fail);
