@@ -105,15 +105,7 @@ static PetscErrorCode CheckMaterialsAndSections(TslModel *m)
   PetscInt   bad = -1;
 
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < m->nmaterial; i++) {
-    const TslMaterial *mat = &m->materials[i];
-    if (mat->has_elastic) {
-      CHECK(mat->E > 0, mat->loc, "material %s: Young's modulus must be positive (got %g)", mat->name, (double)mat->E);
-      CHECK(mat->nu > -1 && mat->nu < 0.5, mat->loc, "material %s: Poisson's ratio must lie in (-1, 0.5) (got %g)", mat->name, (double)mat->nu);
-    }
-    if (mat->has_conductivity)
-      CHECK(mat->conductivity > 0, mat->loc, "material %s: conductivity must be positive (got %g)", mat->name, (double)mat->conductivity);
-  }
+  /* the property values are range-checked where they are read (deck.c, the Properties table) */
   for (PetscInt s = 0; s < m->nsection; s++) {
     TslSection *sec = &m->sections[s];
     CHECK(TslModelFindElementSet(m, sec->elset) >= 0, sec->loc, "undefined element set %s", sec->elset);
