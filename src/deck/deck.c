@@ -134,7 +134,9 @@ static PetscErrorCode DeckReal(Deck *d, const char *s, const char *what, PetscRe
   for (size_t i = 0; i <= n; i++) tmp[i] = (s[i] == 'd' || s[i] == 'D') ? 'e' : s[i];
   errno = 0;
   *x    = (PetscReal)strtod(tmp, &end);
-  USER_CHECK(end != tmp && *end == 0 && errno != ERANGE && !PetscIsInfOrNanReal(*x), LOC_FMT "expected a number for %s, got '%s'", DLOC(d), what, s);
+  /* ERANGE on underflow (1e-400) gives a correctly rounded tiny number: only overflow is an error */
+  USER_CHECK(end != tmp && *end == 0 && !(errno == ERANGE && PetscAbsReal(*x) > 1) && !PetscIsInfOrNanReal(*x),
+             LOC_FMT "expected a number for %s, got '%s'", DLOC(d), what, s);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -176,6 +178,24 @@ static PetscErrorCode FieldInt(Deck *d, PetscInt i, const char *what, PetscInt *
   PetscFunctionBeginUser;
   USER_CHECK(i < d->nfield, LOC_FMT "missing value for %s", DLOC(d), what);
   PetscCall(DeckInt(d, d->field[i], what, x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A node or element id: a positive integer in the dialect. Elsewhere a negative id means "no target"
+ * (TslTarget), so a node -1 would silently be no node at all. */
+static PetscErrorCode DeckId(Deck *d, const char *s, const char *what, PetscInt *x)
+{
+  PetscFunctionBeginUser;
+  PetscCall(DeckInt(d, s, what, x));
+  USER_CHECK(*x >= 1, LOC_FMT "%s must be a positive integer, got '%s'", DLOC(d), what, s);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode FieldId(Deck *d, PetscInt i, const char *what, PetscInt *x)
+{
+  PetscFunctionBeginUser;
+  USER_CHECK(i < d->nfield, LOC_FMT "missing value for %s", DLOC(d), what);
+  PetscCall(DeckId(d, d->field[i], what, x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -635,7 +655,7 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
     USER_CHECK(d->nfield >= 2 && d->nfield <= 4, LOC_FMT "*NODE data line needs: id, x[, y[, z]]", DLOC(d));
-    PetscCall(FieldInt(d, 0, "the node id", &id));
+    PetscCall(FieldId(d, 0, "the node id", &id));
     PetscCall(TslDeckGrow(&m->node_id, sizeof(PetscInt), m->nnode));
     PetscCall(TslDeckGrow(&m->node_xyz, 3 * sizeof(PetscReal), m->nnode));
     PetscCall(TslDeckGrow(&d->node_line, 2 * sizeof(PetscInt), m->nnode));
@@ -682,7 +702,7 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     if (!got) break;
     USER_CHECK(d->nfield == 1 + nn, LOC_FMT "element has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT, DLOC(d), d->nfield - 1, et->name,
                nn);
-    PetscCall(FieldInt(d, 0, "the element id", &id));
+    PetscCall(FieldId(d, 0, "the element id", &id));
     PetscCall(TslDeckGrow(&m->elem_id, sizeof(PetscInt), m->nelem));
     PetscCall(TslDeckGrow(&m->elem_type, sizeof(PetscInt), m->nelem));
     PetscCall(TslDeckGrow(&m->elem_line, 2 * sizeof(PetscInt), m->nelem));
@@ -690,7 +710,7 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     k = m->elem_ptr[m->nelem];
     for (PetscInt j = 0; j < nn; j++) {
       PetscCall(TslDeckGrow(&m->elem_conn, sizeof(PetscInt), k));
-      PetscCall(FieldInt(d, 1 + j, "a node id", &m->elem_conn[k]));
+      PetscCall(FieldId(d, 1 + j, "a node id", &m->elem_conn[k]));
       /* a node given twice collapses the element (a quad into a triangle...): its Jacobian is singular at
        * the collapsed corner, and no element type here has the special treatment that would need */
       for (PetscInt i = m->elem_ptr[m->nelem]; i < k; i++)
@@ -729,11 +749,21 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
     if (gen) {
       PetscInt first, last, inc = 1;
       USER_CHECK(d->nfield >= 2 && d->nfield <= 3, LOC_FMT "GENERATE data line needs: first, last[, increment]", DLOC(d));
-      PetscCall(FieldInt(d, 0, "the first id", &first));
-      PetscCall(FieldInt(d, 1, "the last id", &last));
+      PetscCall(FieldId(d, 0, "the first id", &first));
+      PetscCall(FieldId(d, 1, "the last id", &last));
       if (d->nfield > 2) PetscCall(FieldInt(d, 2, "the increment", &inc));
       USER_CHECK(inc > 0 && first <= last, LOC_FMT "GENERATE needs first <= last and a positive increment", DLOC(d));
-      for (PetscInt id = first; id <= last; id += inc) PetscCall(SetAppend(&(*sets)[iset], id));
+      /* ids must exist by the end of the read: a range wider than the ids defined so far (or than a
+       * million before any exist) is a typo, and would otherwise exhaust the memory before saying so */
+      {
+        PetscInt defined = node ? m->nnode : m->nelem, count = (last - first) / inc + 1;
+        USER_CHECK(count <= PetscMax(defined, 1000000),
+                   LOC_FMT "GENERATE gives %" PetscInt_FMT " ids, more than the %" PetscInt_FMT " %ss defined so far", DLOC(d), count, defined, kind);
+      }
+      for (PetscInt id = first; id <= last; id += inc) {
+        PetscCall(SetAppend(&(*sets)[iset], id));
+        if (id > last - inc) break; /* id + inc would pass last, or overflow near the largest id */
+      }
       continue;
     }
     for (PetscInt i = 0; i < d->nfield; i++) {
@@ -741,7 +771,7 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
       PetscInt    id, src = -1;
       if (!f[0]) continue;
       if (IsInteger(f)) {
-        PetscCall(DeckInt(d, f, "an id", &id));
+        PetscCall(DeckId(d, f, "an id", &id));
         PetscCall(SetAppend(&(*sets)[iset], id));
         continue;
       }
@@ -811,7 +841,7 @@ static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw)
       if (d->nfield == 2) PetscCall(FieldReal(d, 1, "the weight", &w));
     }
     if (IsInteger(t)) {
-      PetscCall(DeckInt(d, t, "an id", &id));
+      PetscCall(DeckId(d, t, "an id", &id));
       PetscCall(SurfaceAppend(s, id, face));
     } else {
       PetscInt src = s->kind == TSL_SURFACE_ELEMENT ? TslModelFindElementSet(m, t) : TslModelFindNodeSet(m, t);
@@ -974,7 +1004,7 @@ static PetscErrorCode ParseTarget(Deck *d, const char *f, TslTarget *t)
   t->set[0] = 0;
   t->id     = -1;
   if (IsInteger(f))
-    PetscCall(DeckInt(d, f, "an id", &t->id));
+    PetscCall(DeckId(d, f, "an id", &t->id));
   else
     PetscCall(CopyName(d, d->loc, t->set, f));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -1069,7 +1099,7 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
   (void)kw;
   for (;;) {
     TslEquation *e;
-    PetscInt     n, k = 0;
+    PetscInt     n;
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
     USER_CHECK(d->nfield == 1, LOC_FMT "*EQUATION: expected the number of terms alone on this line", DLOC(d));
@@ -1077,19 +1107,22 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
     USER_CHECK(n >= 1, LOC_FMT "*EQUATION needs at least one term", DLOC(d));
     PetscCall(TslDeckGrow(&m->equations, sizeof(TslEquation), m->nequation));
     e      = &m->equations[m->nequation++];
-    e->n   = n;
     e->loc = d->loc;
-    PetscCall(PetscMalloc1(n, &e->node));
-    PetscCall(PetscMalloc1(n, &e->dof));
-    PetscCall(PetscMalloc1(n, &e->coef));
-    while (k < n) {
+    /* the terms are stored as they are read (e->n counts them), not allocated from n: n is the deck's
+     * word, and a mutated 1000000000 must give the message below, not an allocation failure */
+    while (e->n < n) {
       PetscCall(DataLine(d, 0, &got));
-      USER_CHECK(got, LOC_FMT "*EQUATION with %" PetscInt_FMT " terms has only %" PetscInt_FMT, TSL_LOC_ARGS(m, e->loc), n, k);
-      USER_CHECK(d->nfield % 3 == 0 && k + d->nfield / 3 <= n,
+      USER_CHECK(got, LOC_FMT "*EQUATION with %" PetscInt_FMT " terms has only %" PetscInt_FMT, TSL_LOC_ARGS(m, e->loc), n, e->n);
+      USER_CHECK(d->nfield % 3 == 0 && e->n + d->nfield / 3 <= n,
                  LOC_FMT "*EQUATION terms are (node, dof, coefficient) triples, %" PetscInt_FMT " in all", DLOC(d), n);
-      for (PetscInt i = 0; i < d->nfield; i += 3, k++) {
+      for (PetscInt i = 0; i < d->nfield; i += 3) {
+        PetscInt k = e->n;
         USER_CHECK(IsInteger(d->field[i]), LOC_FMT "*EQUATION with a node set (%s) is not supported yet; give node ids", DLOC(d), d->field[i]);
-        PetscCall(FieldInt(d, i, "a node id", &e->node[k]));
+        PetscCall(TslDeckGrow(&e->node, sizeof(PetscInt), k));
+        PetscCall(TslDeckGrow(&e->dof, sizeof(PetscInt), k));
+        PetscCall(TslDeckGrow(&e->coef, sizeof(PetscReal), k));
+        e->n++;
+        PetscCall(FieldId(d, i, "a node id", &e->node[k]));
         PetscCall(FieldInt(d, i + 1, "a degree of freedom", &e->dof[k]));
         USER_CHECK(ValidDof(d, e->dof[k]), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)", DLOC(d), e->dof[k],
                    m->dim ? m->dim : 3);

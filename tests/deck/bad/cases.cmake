@@ -72,3 +72,9 @@ tsl_deck_bad(comments_only comments_only.inp "error: comments_only.inp:0: the de
 tsl_deck_bad(nul_byte nul_byte.inp "error: nul_byte.inp:5: a NUL byte: this is not a text file")
 tsl_deck_bad(deck_directory a_directory "error: a_directory:0: cannot open input deck: is a directory")
 tsl_deck_bad(include_directory include_directory.inp "error: include_directory.inp:20: cannot open include file a_directory: is a directory")
+# Counts and ids from the deck: never an allocation from a count, an endless loop, or id -1 taken for "no target"
+tsl_deck_bad(equation_huge_count equation_huge_count.inp "error: equation_huge_count.inp:21: *EQUATION with 1000000000 terms has only 2")
+tsl_deck_bad(generate_huge generate_huge.inp "error: generate_huge.inp:21: GENERATE gives 2000000000 ids, more than the 4 nodes defined so far")
+tsl_deck_bad(generate_near_max generate_near_max.inp "error: generate_near_max.inp:20: node set TOPID contains undefined node 2147483640")
+tsl_deck_bad(node_id_negative node_id_negative.inp "error: node_id_negative.inp:5: the node id must be a positive integer, got '-4'")
+tsl_deck_bad(boundary_node_zero boundary_node_zero.inp "error: boundary_node_zero.inp:24: an id must be a positive integer, got '0'")
