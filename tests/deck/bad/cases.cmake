@@ -78,3 +78,4 @@ tsl_deck_bad(generate_huge generate_huge.inp "error: generate_huge.inp:21: GENER
 tsl_deck_bad(generate_near_max generate_near_max.inp "error: generate_near_max.inp:20: node set TOPID contains undefined node 2147483640")
 tsl_deck_bad(node_id_negative node_id_negative.inp "error: node_id_negative.inp:5: the node id must be a positive integer, got '-4'")
 tsl_deck_bad(boundary_node_zero boundary_node_zero.inp "error: boundary_node_zero.inp:24: an id must be a positive integer, got '0'")
+tsl_deck_bad(collapsed_coordinates collapsed_coordinates.inp "error: collapsed_coordinates.inp:9: element 1: nodes 2 and 3 are at the same place (a collapsed element; not supported)")
