@@ -563,10 +563,9 @@ static PetscErrorCode ParamInt(Deck *d, const char *key, PetscInt *x)
 /* Placement: where in the deck a keyword may appear, as in the dialect (Abaqus "model data" / "history
  * data", CalculiX "model definition" / "step"). Bit flags: the model data is everything before the
  * first *STEP, the history data what lies inside *STEP ... *END STEP; between an *END STEP and the
- * next *STEP only *STEP itself (and ignored keywords) may come. */
+ * next *STEP only *STEP itself may come (*INCLUDE is followed wherever it is, below the table). */
 typedef enum { AT_MODEL = 1, AT_STEP = 2, AT_BETWEEN = 4 } DeckPlacement;
 #define AT_BOTH (AT_MODEL | AT_STEP)
-#define AT_ANY  (AT_MODEL | AT_STEP | AT_BETWEEN)
 
 /* Block: a sub-option fills the block its opening keyword started (material properties follow *MATERIAL,
  * interface laws follow *SURFACE INTERACTION); any other keyword closes the block. */
@@ -901,27 +900,26 @@ typedef struct {
   PetscBool         isotropic; /* TYPE= may be given, only ISOTROPIC is supported */
 } DeckProperty;
 
-#define PROP_VAL(what, field, lo, hi, range)                                                                                                         \
-  {                                                                                                                                                  \
-    what, offsetof(TslMaterial, field), lo, hi, range                                                                                                \
-  }
 static const DeckProperty Properties[] = {
-    [PROP_ELASTIC]      = {2,
-                           {PROP_VAL("Young's modulus", E, 0, PETSC_MAX_REAL, "must be positive"),
-                            PROP_VAL("Poisson's ratio", nu, -1, 0.5, "must lie in (-1, 0.5)")},
-                           offsetof(TslMaterial, has_elastic),
-                           PETSC_TRUE},
-    [PROP_CONDUCTIVITY] = {1,
-                           {PROP_VAL("the conductivity", conductivity, 0, PETSC_MAX_REAL, "must be positive")},
-                           offsetof(TslMaterial, has_conductivity),
-                           PETSC_TRUE},
-    [PROP_DENSITY] = {1, {PROP_VAL("the density", density, 0, PETSC_MAX_REAL, "must be positive")}, offsetof(TslMaterial, has_density), PETSC_FALSE},
+    [PROP_ELASTIC]       = {2,
+                            {{"Young's modulus", offsetof(TslMaterial, E), 0, PETSC_MAX_REAL, "must be positive"},
+                             {"Poisson's ratio", offsetof(TslMaterial, nu), -1, 0.5, "must lie in (-1, 0.5)"}},
+                            offsetof(TslMaterial, has_elastic),
+                            PETSC_TRUE},
+    [PROP_CONDUCTIVITY]  = {1,
+                            {{"the conductivity", offsetof(TslMaterial, conductivity), 0, PETSC_MAX_REAL, "must be positive"}},
+                            offsetof(TslMaterial, has_conductivity),
+                            PETSC_TRUE},
+    [PROP_DENSITY]       = {1,
+                            {{"the density", offsetof(TslMaterial, density), 0, PETSC_MAX_REAL, "must be positive"}},
+                            offsetof(TslMaterial, has_density),
+                            PETSC_FALSE},
     [PROP_SPECIFIC_HEAT] = {1,
-                            {PROP_VAL("the specific heat", specific_heat, 0, PETSC_MAX_REAL, "must be positive")},
+                            {{"the specific heat", offsetof(TslMaterial, specific_heat), 0, PETSC_MAX_REAL, "must be positive"}},
                             offsetof(TslMaterial, has_specific_heat),
                             PETSC_FALSE},
     [PROP_EXPANSION]     = {1,
-                            {PROP_VAL("the expansion coefficient", alpha, -PETSC_MAX_REAL, PETSC_MAX_REAL, "")},
+                            {{"the expansion coefficient", offsetof(TslMaterial, alpha), -PETSC_MAX_REAL, PETSC_MAX_REAL, ""}},
                             offsetof(TslMaterial, has_expansion),
                             PETSC_TRUE},
 };
