@@ -23,6 +23,34 @@ static PetscBool DofValid(const TslModel *m, PetscInt dof)
   return ((dof >= 1 && dof <= Dim(m)) || dof == 11) ? PETSC_TRUE : PETSC_FALSE;
 }
 
+/* Two nodes of one element at the same place collapse it just as a node given twice does (which the
+ * reader rejects at the element's line): the Jacobian is singular at that corner, yet the Gauss points
+ * may not see it, so the solve would run on a wrong element. "Same place": closer than 1e-10 of the
+ * element's size. Needs the node index and every node defined. */
+static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
+{
+  PetscInt  n    = m->elem_ptr[e + 1] - m->elem_ptr[e], idx[27];
+  PetscReal size = 0;
+
+  PetscFunctionBeginUser;
+  if (n > 27) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt a = 0; a < n; a++) {
+    idx[a] = TslModelNodeIndex(m, m->elem_conn[m->elem_ptr[e] + a]);
+    if (idx[a] < 0) PetscFunctionReturn(PETSC_SUCCESS); /* reported as an undefined node */
+  }
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt c = 0; c < 3; c++) size = PetscMax(size, PetscAbsReal(m->node_xyz[3 * idx[a] + c] - m->node_xyz[3 * idx[0] + c]));
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt b = a + 1; b < n; b++) {
+      PetscReal dist = 0;
+      for (PetscInt c = 0; c < 3; c++) dist = PetscMax(dist, PetscAbsReal(m->node_xyz[3 * idx[a] + c] - m->node_xyz[3 * idx[b] + c]));
+      CHECK(dist > 1e-10 * size, ElemLoc(m, e),
+            "element %" PetscInt_FMT ": nodes %" PetscInt_FMT " and %" PetscInt_FMT " are at the same place (a collapsed element; not supported)",
+            m->elem_id[e], m->elem_conn[m->elem_ptr[e] + a], m->elem_conn[m->elem_ptr[e] + b]);
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckMesh(TslModel *m)
 {
   PetscFunctionBeginUser;
@@ -48,6 +76,7 @@ static PetscErrorCode CheckMesh(TslModel *m)
       CHECK(TslModelNodeIndex(m, m->elem_conn[j]) >= 0, ElemLoc(m, e), "element %" PetscInt_FMT " references undefined node %" PetscInt_FMT,
             m->elem_id[e], m->elem_conn[j]);
   }
+  for (PetscInt e = 0; e < m->nelem; e++) PetscCall(CheckCollapsed(m, e));
   for (PetscInt s = 0; s < m->nnset; s++)
     for (PetscInt k = 0; k < m->nsets[s].n; k++)
       CHECK(TslModelNodeIndex(m, m->nsets[s].ids[k]) >= 0, m->nsets[s].loc, "node set %s contains undefined node %" PetscInt_FMT, m->nsets[s].name,
@@ -105,15 +134,7 @@ static PetscErrorCode CheckMaterialsAndSections(TslModel *m)
   PetscInt   bad = -1;
 
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < m->nmaterial; i++) {
-    const TslMaterial *mat = &m->materials[i];
-    if (mat->has_elastic) {
-      CHECK(mat->E > 0, mat->loc, "material %s: Young's modulus must be positive (got %g)", mat->name, (double)mat->E);
-      CHECK(mat->nu > -1 && mat->nu < 0.5, mat->loc, "material %s: Poisson's ratio must lie in (-1, 0.5) (got %g)", mat->name, (double)mat->nu);
-    }
-    if (mat->has_conductivity)
-      CHECK(mat->conductivity > 0, mat->loc, "material %s: conductivity must be positive (got %g)", mat->name, (double)mat->conductivity);
-  }
+  /* the property values are range-checked where they are read (deck.c, the Properties table) */
   for (PetscInt s = 0; s < m->nsection; s++) {
     TslSection *sec = &m->sections[s];
     CHECK(TslModelFindElementSet(m, sec->elset) >= 0, sec->loc, "undefined element set %s", sec->elset);

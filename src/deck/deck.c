@@ -17,7 +17,9 @@
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <stddef.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #define DECK_MAX_DEPTH 16
 #define DECK_MAX_PARAM 32
@@ -56,11 +58,17 @@ typedef struct {
   TslLoc   kwloc;
 
   /* state */
-  PetscInt  step;        /* index of the open step or -1 */
-  PetscInt  material;    /* material the property keywords apply to, or -1 */
-  PetscInt  interaction; /* surface interaction the interface-law keywords apply to, or -1 */
-  PetscInt  out_frequency;
-  PetscInt *node_line; /* [2*nnode] (file, line) of each node, for duplicate messages */
+  PetscInt  step;                /* index of the open step or -1 */
+  PetscInt  material;            /* material the property keywords apply to, or -1 */
+  PetscInt  interaction;         /* surface interaction the interface-law keywords apply to, or -1 */
+  PetscInt  out_frequency;       /* *OUTPUT, FREQUENCY= in the open step */
+  PetscInt  out_frequency_model; /* *OUTPUT, FREQUENCY= in the model data: each step's default */
+  PetscInt *node_line;           /* [2*nnode] (file, line) of each node, for duplicate messages */
+  PetscInt  nkeyword;            /* keyword lines read */
+
+  /* *BOUNDARY in the model data: applies from the first step on (TslDeckRead hands it to that step) */
+  PetscInt nmload;
+  TslLoad *mload;
 } Deck;
 
 #define LOC_FMT            TSL_LOC_FMT
@@ -126,7 +134,9 @@ static PetscErrorCode DeckReal(Deck *d, const char *s, const char *what, PetscRe
   for (size_t i = 0; i <= n; i++) tmp[i] = (s[i] == 'd' || s[i] == 'D') ? 'e' : s[i];
   errno = 0;
   *x    = (PetscReal)strtod(tmp, &end);
-  USER_CHECK(end != tmp && *end == 0 && errno != ERANGE && !PetscIsInfOrNanReal(*x), LOC_FMT "expected a number for %s, got '%s'", DLOC(d), what, s);
+  /* ERANGE on underflow (1e-400) gives a correctly rounded tiny number: only overflow is an error */
+  USER_CHECK(end != tmp && *end == 0 && !(errno == ERANGE && PetscAbsReal(*x) > 1) && !PetscIsInfOrNanReal(*x),
+             LOC_FMT "expected a number for %s, got '%s'", DLOC(d), what, s);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -171,6 +181,24 @@ static PetscErrorCode FieldInt(Deck *d, PetscInt i, const char *what, PetscInt *
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A node or element id: a positive integer in the dialect. Elsewhere a negative id means "no target"
+ * (TslTarget), so a node -1 would silently be no node at all. */
+static PetscErrorCode DeckId(Deck *d, const char *s, const char *what, PetscInt *x)
+{
+  PetscFunctionBeginUser;
+  PetscCall(DeckInt(d, s, what, x));
+  USER_CHECK(*x >= 1, LOC_FMT "%s must be a positive integer, got '%s'", DLOC(d), what, s);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode FieldId(Deck *d, PetscInt i, const char *what, PetscInt *x)
+{
+  PetscFunctionBeginUser;
+  USER_CHECK(i < d->nfield, LOC_FMT "missing value for %s", DLOC(d), what);
+  PetscCall(DeckId(d, d->field[i], what, x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CopyName(Deck *d, TslLoc loc, char dst[TSL_NAME_LEN], const char *src)
 {
   PetscFunctionBeginUser;
@@ -181,18 +209,32 @@ static PetscErrorCode CopyName(Deck *d, TslLoc loc, char dst[TSL_NAME_LEN], cons
 
 /* ---- files and raw lines --------------------------------------------------------------------- */
 
+/* Why path cannot be read as a deck, or NULL: fopen() opens a directory on Linux and ftell() then
+ * gives a nonsense length, so the file's type is looked at first. */
+static const char *DeckFileProblem(const char *path)
+{
+  struct stat st;
+
+  if (stat(path, &st)) return strerror(errno);
+  if (S_ISDIR(st.st_mode)) return "is a directory";
+  if (!S_ISREG(st.st_mode)) return "is not a regular file";
+  return NULL;
+}
+
 static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include)
 {
-  FILE      *fp;
-  long       len;
-  char      *text;
-  DeckFrame *f;
+  FILE       *fp;
+  long        len;
+  char       *text, *nul;
+  const char *problem = DeckFileProblem(path);
+  DeckFrame  *f;
 
   PetscFunctionBeginUser;
-  fp = fopen(path, "rb");
+  fp = problem ? NULL : fopen(path, "rb");
   if (!fp) {
-    if (include) USER_ERR(LOC_FMT "cannot open include file '%s': %s", KLOC(d), path, strerror(errno));
-    USER_ERR("%s:0: cannot open input deck: %s", path, strerror(errno));
+    if (!problem) problem = strerror(errno); /* unreadable */
+    if (include) USER_ERR(LOC_FMT "cannot open include file %s: %s", KLOC(d), path, problem);
+    USER_ERR("%s:0: cannot open input deck: %s", path, problem);
   }
   USER_CHECK(d->depth < DECK_MAX_DEPTH, LOC_FMT "*INCLUDE nested deeper than %d levels", KLOC(d), DECK_MAX_DEPTH);
   if (fseek(fp, 0, SEEK_END) || (len = ftell(fp)) < 0 || fseek(fp, 0, SEEK_SET)) {
@@ -208,12 +250,20 @@ static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include)
   }
   fclose(fp);
   text[len] = 0;
+  /* the reader works on C strings: a NUL byte would silently end its line (and hide the rest of it) */
+  nul = memchr(text, 0, (size_t)len);
+  if (nul) {
+    PetscInt line = 1;
+    for (const char *c = text; c < nul; c++) line += *c == '\n';
+    USER_ERR("%s:%" PetscInt_FMT ": a NUL byte: this is not a text file", path, line);
+  }
 
   PetscCall(TslDeckGrow(&d->m->files, sizeof(char *), d->m->nfile));
   PetscCall(PetscStrallocpy(path, &d->m->files[d->m->nfile]));
   f       = &d->frame[d->depth++];
   f->text = text;
-  f->pos  = 0;
+  /* a UTF-8 byte-order mark (editors on Windows write one) is no part of the first line */
+  f->pos  = (len >= 3 && !memcmp(text, "\xEF\xBB\xBF", 3)) ? 3 : 0;
   f->len  = (size_t)len;
   f->file = d->m->nfile++;
   f->line = 0;
@@ -510,14 +560,24 @@ static PetscErrorCode ParamInt(Deck *d, const char *key, PetscInt *x)
 
 /* ---- keyword table --------------------------------------------------------------------------- */
 
-typedef enum { CTX_MODEL, CTX_STEP, CTX_ANY, CTX_MATERIAL, CTX_INTERACTION } DeckContext;
+/* Placement: where in the deck a keyword may appear, as in the dialect (Abaqus "model data" / "history
+ * data", CalculiX "model definition" / "step"). Bit flags: the model data is everything before the
+ * first *STEP, the history data what lies inside *STEP ... *END STEP; between an *END STEP and the
+ * next *STEP only *STEP itself may come (*INCLUDE is followed wherever it is, below the table). */
+typedef enum { AT_MODEL = 1, AT_STEP = 2, AT_BETWEEN = 4 } DeckPlacement;
+#define AT_BOTH (AT_MODEL | AT_STEP)
+
+/* Block: a sub-option fills the block its opening keyword started (material properties follow *MATERIAL,
+ * interface laws follow *SURFACE INTERACTION); any other keyword closes the block. */
+typedef enum { IN_NONE, IN_MATERIAL, IN_INTERACTION } DeckBlock;
 
 typedef struct DeckKeyword DeckKeyword;
 typedef PetscErrorCode (*DeckLoadLine)(Deck *, TslLoad *);
 struct DeckKeyword {
-  const char *name;
-  DeckContext where;
-  const char *params; /* '|'-separated known parameters; NULL: ignored keyword */
+  const char   *name;
+  DeckPlacement placement;
+  DeckBlock     block;
+  const char   *params; /* '|'-separated known parameters; NULL: ignored keyword */
   PetscErrorCode (*handler)(Deck *, const DeckKeyword *);
   PetscInt     kind; /* load kind, or output request flags */
   DeckLoadLine line; /* load data-line parser */
@@ -594,7 +654,7 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
     USER_CHECK(d->nfield >= 2 && d->nfield <= 4, LOC_FMT "*NODE data line needs: id, x[, y[, z]]", DLOC(d));
-    PetscCall(FieldInt(d, 0, "the node id", &id));
+    PetscCall(FieldId(d, 0, "the node id", &id));
     PetscCall(TslDeckGrow(&m->node_id, sizeof(PetscInt), m->nnode));
     PetscCall(TslDeckGrow(&m->node_xyz, 3 * sizeof(PetscReal), m->nnode));
     PetscCall(TslDeckGrow(&d->node_line, 2 * sizeof(PetscInt), m->nnode));
@@ -641,7 +701,7 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     if (!got) break;
     USER_CHECK(d->nfield == 1 + nn, LOC_FMT "element has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT, DLOC(d), d->nfield - 1, et->name,
                nn);
-    PetscCall(FieldInt(d, 0, "the element id", &id));
+    PetscCall(FieldId(d, 0, "the element id", &id));
     PetscCall(TslDeckGrow(&m->elem_id, sizeof(PetscInt), m->nelem));
     PetscCall(TslDeckGrow(&m->elem_type, sizeof(PetscInt), m->nelem));
     PetscCall(TslDeckGrow(&m->elem_line, 2 * sizeof(PetscInt), m->nelem));
@@ -649,7 +709,14 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     k = m->elem_ptr[m->nelem];
     for (PetscInt j = 0; j < nn; j++) {
       PetscCall(TslDeckGrow(&m->elem_conn, sizeof(PetscInt), k));
-      PetscCall(FieldInt(d, 1 + j, "a node id", &m->elem_conn[k++]));
+      PetscCall(FieldId(d, 1 + j, "a node id", &m->elem_conn[k]));
+      /* a node given twice collapses the element (a quad into a triangle...): its Jacobian is singular at
+       * the collapsed corner, and no element type here has the special treatment that would need */
+      for (PetscInt i = m->elem_ptr[m->nelem]; i < k; i++)
+        USER_CHECK(m->elem_conn[i] != m->elem_conn[k],
+                   LOC_FMT "element %" PetscInt_FMT " repeats node %" PetscInt_FMT ": collapsed (degenerate) %s elements are not supported", DLOC(d),
+                   id, m->elem_conn[k], et->name);
+      k++;
     }
     m->elem_id[m->nelem]           = id;
     m->elem_type[m->nelem]         = type;
@@ -681,11 +748,21 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
     if (gen) {
       PetscInt first, last, inc = 1;
       USER_CHECK(d->nfield >= 2 && d->nfield <= 3, LOC_FMT "GENERATE data line needs: first, last[, increment]", DLOC(d));
-      PetscCall(FieldInt(d, 0, "the first id", &first));
-      PetscCall(FieldInt(d, 1, "the last id", &last));
+      PetscCall(FieldId(d, 0, "the first id", &first));
+      PetscCall(FieldId(d, 1, "the last id", &last));
       if (d->nfield > 2) PetscCall(FieldInt(d, 2, "the increment", &inc));
       USER_CHECK(inc > 0 && first <= last, LOC_FMT "GENERATE needs first <= last and a positive increment", DLOC(d));
-      for (PetscInt id = first; id <= last; id += inc) PetscCall(SetAppend(&(*sets)[iset], id));
+      /* ids must exist by the end of the read: a range wider than the ids defined so far (or than a
+       * million before any exist) is a typo, and would otherwise exhaust the memory before saying so */
+      {
+        PetscInt defined = node ? m->nnode : m->nelem, count = (last - first) / inc + 1;
+        USER_CHECK(count <= PetscMax(defined, 1000000),
+                   LOC_FMT "GENERATE gives %" PetscInt_FMT " ids, more than the %" PetscInt_FMT " %ss defined so far", DLOC(d), count, defined, kind);
+      }
+      for (PetscInt id = first; id <= last; id += inc) {
+        PetscCall(SetAppend(&(*sets)[iset], id));
+        if (id > last - inc) break; /* id + inc would pass last, or overflow near the largest id */
+      }
       continue;
     }
     for (PetscInt i = 0; i < d->nfield; i++) {
@@ -693,7 +770,7 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
       PetscInt    id, src = -1;
       if (!f[0]) continue;
       if (IsInteger(f)) {
-        PetscCall(DeckInt(d, f, "an id", &id));
+        PetscCall(DeckId(d, f, "an id", &id));
         PetscCall(SetAppend(&(*sets)[iset], id));
         continue;
       }
@@ -763,7 +840,7 @@ static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw)
       if (d->nfield == 2) PetscCall(FieldReal(d, 1, "the weight", &w));
     }
     if (IsInteger(t)) {
-      PetscCall(DeckInt(d, t, "an id", &id));
+      PetscCall(DeckId(d, t, "an id", &id));
       PetscCall(SurfaceAppend(s, id, face));
     } else {
       PetscInt src = s->kind == TSL_SURFACE_ELEMENT ? TslModelFindElementSet(m, t) : TslModelFindNodeSet(m, t);
@@ -793,28 +870,6 @@ static PetscErrorCode KwMaterial(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The one data line of a material property with nval values and an optional temperature column. */
-static PetscErrorCode PropertyLine(Deck *d, PetscInt nval, const char *what[], PetscReal val[])
-{
-  PetscBool got;
-  char      kwname[64];
-
-  PetscFunctionBeginUser;
-  PetscCall(PetscStrncpy(kwname, d->kw, sizeof(kwname)));
-  PetscCall(DataLine(d, 0, &got));
-  USER_CHECK(got, LOC_FMT "*%s needs a data line", KLOC(d), kwname);
-  USER_CHECK(d->nfield <= nval + 1, LOC_FMT "*%s data line has %" PetscInt_FMT " values, expected %" PetscInt_FMT " (and an optional temperature)",
-             DLOC(d), kwname, d->nfield, nval);
-  for (PetscInt i = 0; i < nval; i++) PetscCall(FieldReal(d, i, what[i], &val[i]));
-  if (d->nfield > nval) { /* a temperature column: accepted when it is the only row */
-    PetscReal t;
-    PetscCall(FieldReal(d, nval, "the temperature", &t));
-  }
-  PetscCall(DataLine(d, 0, &got));
-  USER_CHECK(!got, LOC_FMT "temperature-dependent *%s data (more than one data line) is not supported yet", DLOC(d), kwname);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 static PetscErrorCode CheckIsotropic(Deck *d)
 {
   char        buf[32];
@@ -825,50 +880,89 @@ static PetscErrorCode CheckIsotropic(Deck *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* kind: 0 elastic, 1 conductivity, 2 density, 3 specific heat, 4 expansion */
-static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
+/* Material properties, one row per keyword (the keyword table's kind indexes it): the values of its
+ * data line, where they go in TslMaterial, and the open interval each must lie in. The ranges are the
+ * physical ones (a negative density gives temperatures of the wrong sign, not an error, further on), so
+ * they are checked here, at the data line. */
+enum { PROP_ELASTIC, PROP_CONDUCTIVITY, PROP_DENSITY, PROP_SPECIFIC_HEAT, PROP_EXPANSION };
+
+typedef struct {
+  const char *what;   /* the value, for messages */
+  size_t      offset; /* offsetof(TslMaterial, value) */
+  PetscReal   lo, hi; /* open interval */
+  const char *range;  /* the interval as the user reads it */
+} DeckPropertyValue;
+
+typedef struct {
+  PetscInt          nval;
+  DeckPropertyValue val[2];
+  size_t            has;       /* offsetof(TslMaterial, has_...) */
+  PetscBool         isotropic; /* TYPE= may be given, only ISOTROPIC is supported */
+} DeckProperty;
+
+static const DeckProperty Properties[] = {
+    [PROP_ELASTIC]       = {2,
+                            {{"Young's modulus", offsetof(TslMaterial, E), 0, PETSC_MAX_REAL, "must be positive"},
+                             {"Poisson's ratio", offsetof(TslMaterial, nu), -1, 0.5, "must lie in (-1, 0.5)"}},
+                            offsetof(TslMaterial, has_elastic),
+                            PETSC_TRUE},
+    [PROP_CONDUCTIVITY]  = {1,
+                            {{"the conductivity", offsetof(TslMaterial, conductivity), 0, PETSC_MAX_REAL, "must be positive"}},
+                            offsetof(TslMaterial, has_conductivity),
+                            PETSC_TRUE},
+    [PROP_DENSITY]       = {1,
+                            {{"the density", offsetof(TslMaterial, density), 0, PETSC_MAX_REAL, "must be positive"}},
+                            offsetof(TslMaterial, has_density),
+                            PETSC_FALSE},
+    [PROP_SPECIFIC_HEAT] = {1,
+                            {{"the specific heat", offsetof(TslMaterial, specific_heat), 0, PETSC_MAX_REAL, "must be positive"}},
+                            offsetof(TslMaterial, has_specific_heat),
+                            PETSC_FALSE},
+    [PROP_EXPANSION]     = {1,
+                            {{"the expansion coefficient", offsetof(TslMaterial, alpha), -PETSC_MAX_REAL, PETSC_MAX_REAL, ""}},
+                            offsetof(TslMaterial, has_expansion),
+                            PETSC_TRUE},
+};
+
+/* The one data line of a material property: its values, each checked against its range, and an
+ * optional temperature column. */
+static PetscErrorCode PropertyLine(Deck *d, const DeckProperty *p, const char *material, PetscReal val[])
 {
-  TslMaterial *mat = &d->m->materials[d->material];
-  PetscReal    v[2];
+  PetscBool got;
+  char      kwname[64];
 
   PetscFunctionBeginUser;
-  switch (kw->kind) {
-  case 0: {
-    const char *what[] = {"Young's modulus", "Poisson's ratio"};
-    PetscCall(CheckIsotropic(d));
-    PetscCall(PropertyLine(d, 2, what, v));
-    mat->E           = v[0];
-    mat->nu          = v[1];
-    mat->has_elastic = PETSC_TRUE;
-  } break;
-  case 1: {
-    const char *what[] = {"the conductivity"};
-    PetscCall(CheckIsotropic(d));
-    PetscCall(PropertyLine(d, 1, what, v));
-    mat->conductivity     = v[0];
-    mat->has_conductivity = PETSC_TRUE;
-  } break;
-  case 2: {
-    const char *what[] = {"the density"};
-    PetscCall(PropertyLine(d, 1, what, v));
-    mat->density     = v[0];
-    mat->has_density = PETSC_TRUE;
-  } break;
-  case 3: {
-    const char *what[] = {"the specific heat"};
-    PetscCall(PropertyLine(d, 1, what, v));
-    mat->specific_heat     = v[0];
-    mat->has_specific_heat = PETSC_TRUE;
-  } break;
-  default: {
-    const char *what[] = {"the expansion coefficient"};
-    PetscCall(CheckIsotropic(d));
-    PetscCall(ParamReal(d, "ZERO", &mat->alpha_zero, NULL));
-    PetscCall(PropertyLine(d, 1, what, v));
-    mat->alpha         = v[0];
-    mat->has_expansion = PETSC_TRUE;
-  } break;
+  PetscCall(PetscStrncpy(kwname, d->kw, sizeof(kwname)));
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(got, LOC_FMT "*%s needs a data line", KLOC(d), kwname);
+  USER_CHECK(d->nfield <= p->nval + 1, LOC_FMT "*%s data line has %" PetscInt_FMT " values, expected %" PetscInt_FMT " (and an optional temperature)",
+             DLOC(d), kwname, d->nfield, p->nval);
+  for (PetscInt i = 0; i < p->nval; i++) {
+    const DeckPropertyValue *pv = &p->val[i];
+    PetscCall(FieldReal(d, i, pv->what, &val[i]));
+    USER_CHECK(val[i] > pv->lo && val[i] < pv->hi, LOC_FMT "material %s: %s %s (got %g)", DLOC(d), material, pv->what, pv->range, (double)val[i]);
   }
+  if (d->nfield > p->nval) { /* a temperature column: accepted when it is the only row */
+    PetscReal t;
+    PetscCall(FieldReal(d, p->nval, "the temperature", &t));
+  }
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(!got, LOC_FMT "temperature-dependent *%s data (more than one data line) is not supported yet", DLOC(d), kwname);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
+{
+  TslMaterial        *mat = &d->m->materials[d->material];
+  const DeckProperty *p   = &Properties[kw->kind];
+  PetscReal           v[2];
+
+  PetscFunctionBeginUser;
+  if (p->isotropic) PetscCall(CheckIsotropic(d));
+  if (kw->kind == PROP_EXPANSION) PetscCall(ParamReal(d, "ZERO", &mat->alpha_zero, NULL));
+  PetscCall(PropertyLine(d, p, mat->name, v));
+  for (PetscInt i = 0; i < p->nval; i++) *(PetscReal *)((char *)mat + p->val[i].offset) = v[i];
+  *(PetscBool *)((char *)mat + p->has) = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -908,7 +1002,7 @@ static PetscErrorCode ParseTarget(Deck *d, const char *f, TslTarget *t)
   t->set[0] = 0;
   t->id     = -1;
   if (IsInteger(f))
-    PetscCall(DeckInt(d, f, "an id", &t->id));
+    PetscCall(DeckId(d, f, "an id", &t->id));
   else
     PetscCall(CopyName(d, d->loc, t->set, f));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -1003,7 +1097,7 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
   (void)kw;
   for (;;) {
     TslEquation *e;
-    PetscInt     n, k = 0;
+    PetscInt     n;
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
     USER_CHECK(d->nfield == 1, LOC_FMT "*EQUATION: expected the number of terms alone on this line", DLOC(d));
@@ -1011,19 +1105,22 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
     USER_CHECK(n >= 1, LOC_FMT "*EQUATION needs at least one term", DLOC(d));
     PetscCall(TslDeckGrow(&m->equations, sizeof(TslEquation), m->nequation));
     e      = &m->equations[m->nequation++];
-    e->n   = n;
     e->loc = d->loc;
-    PetscCall(PetscMalloc1(n, &e->node));
-    PetscCall(PetscMalloc1(n, &e->dof));
-    PetscCall(PetscMalloc1(n, &e->coef));
-    while (k < n) {
+    /* the terms are stored as they are read (e->n counts them), not allocated from n: n is the deck's
+     * word, and a mutated 1000000000 must give the message below, not an allocation failure */
+    while (e->n < n) {
       PetscCall(DataLine(d, 0, &got));
-      USER_CHECK(got, LOC_FMT "*EQUATION with %" PetscInt_FMT " terms has only %" PetscInt_FMT, TSL_LOC_ARGS(m, e->loc), n, k);
-      USER_CHECK(d->nfield % 3 == 0 && k + d->nfield / 3 <= n,
+      USER_CHECK(got, LOC_FMT "*EQUATION with %" PetscInt_FMT " terms has only %" PetscInt_FMT, TSL_LOC_ARGS(m, e->loc), n, e->n);
+      USER_CHECK(d->nfield % 3 == 0 && e->n + d->nfield / 3 <= n,
                  LOC_FMT "*EQUATION terms are (node, dof, coefficient) triples, %" PetscInt_FMT " in all", DLOC(d), n);
-      for (PetscInt i = 0; i < d->nfield; i += 3, k++) {
+      for (PetscInt i = 0; i < d->nfield; i += 3) {
+        PetscInt k = e->n;
         USER_CHECK(IsInteger(d->field[i]), LOC_FMT "*EQUATION with a node set (%s) is not supported yet; give node ids", DLOC(d), d->field[i]);
-        PetscCall(FieldInt(d, i, "a node id", &e->node[k]));
+        PetscCall(TslDeckGrow(&e->node, sizeof(PetscInt), k));
+        PetscCall(TslDeckGrow(&e->dof, sizeof(PetscInt), k));
+        PetscCall(TslDeckGrow(&e->coef, sizeof(PetscReal), k));
+        e->n++;
+        PetscCall(FieldId(d, i, "a node id", &e->node[k]));
         PetscCall(FieldInt(d, i + 1, "a degree of freedom", &e->dof[k]));
         USER_CHECK(ValidDof(d, e->dof[k]), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)", DLOC(d), e->dof[k],
                    m->dim ? m->dim : 3);
@@ -1036,7 +1133,7 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
 
 /* ---- contact --------------------------------------------------------------------------------
  * *SURFACE INTERACTION opens a block, like *MATERIAL: the interface-law keywords that follow it
- * (CTX_INTERACTION) fill it until any other keyword. Values are range-checked in TslModelCheck. */
+ * (block IN_INTERACTION) fill it until any other keyword. Values are range-checked in TslModelCheck. */
 
 static PetscErrorCode KwSurfaceInteraction(Deck *d, const DeckKeyword *kw)
 {
@@ -1282,7 +1379,8 @@ static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw)
   proto.small_sliding = Param(d, "SMALL SLIDING") ? PETSC_TRUE : PETSC_FALSE;
   proto.smooth        = 0.2;
   PetscCall(ParamReal(d, "SMOOTH", &proto.smooth, NULL));
-  USER_CHECK(proto.smooth >= 0 && proto.smooth <= 0.5, LOC_FMT "*CONTACT PAIR: SMOOTH must lie in [0, 0.5] (got %g)", KLOC(d), (double)proto.smooth);
+  /* the contact kinematics smooth a fraction s < 1/2 of each segment at either end (s = 1/2 would leave no straight part) */
+  USER_CHECK(proto.smooth >= 0 && proto.smooth < 0.5, LOC_FMT "*CONTACT PAIR: SMOOTH must lie in [0, 0.5) (got %g)", KLOC(d), (double)proto.smooth);
   if (adjust) {
     USER_CHECK(adjust[0], LOC_FMT "*CONTACT PAIR: ADJUST= needs a distance or a node set", KLOC(d));
     proto.adjust_given = PETSC_TRUE;
@@ -1341,7 +1439,7 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
   s->dt0 = s->period = s->dtmax = 1.0;
   s->dtmin                      = 1e-5;
   d->step                       = m->nstep++;
-  d->out_frequency              = 1;
+  d->out_frequency              = d->out_frequency_model;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1511,6 +1609,7 @@ static PetscErrorCode LineFilm(Deck *d, TslLoad *l)
   PetscCall(LoadFace(d, l, 'F', sfilm, PETSC_FALSE));
   PetscCall(FieldReal(d, 2, "the sink temperature", &l->sink));
   PetscCall(FieldReal(d, 3, "the film coefficient", &l->value));
+  USER_CHECK(l->value >= 0, LOC_FMT "the film coefficient must not be negative (got %g)", DLOC(d), (double)l->value);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1526,9 +1625,27 @@ static PetscErrorCode AmplitudeParam(Deck *d, const char *key, PetscInt *index)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A load keyword in the model data (only *BOUNDARY may be there) holds dofs at zero from the first step
+ * on: the dialect allows only homogeneous conditions there (CalculiX: "inhomogeneous conditions can be
+ * defined between a *STEP card and an *END STEP card only"; Abaqus likewise), and nothing that needs a
+ * step (an amplitude, OP=NEW, FIXED at the step's start values). */
+static PetscErrorCode ModelLoadCheck(Deck *d, const char *op)
+{
+  static const char *history_only[] = {"AMPLITUDE", "FIXED"};
+
+  PetscFunctionBeginUser;
+  USER_CHECK(!op || strcmp(op, "NEW"), LOC_FMT "*%s, OP=NEW in the model data: OP=NEW removes earlier conditions, so it belongs in a step", KLOC(d),
+             d->kw);
+  for (size_t i = 0; i < sizeof(history_only) / sizeof(history_only[0]); i++)
+    USER_CHECK(!Param(d, history_only[i]), LOC_FMT "*%s, %s is history data: give this *%s inside a step", KLOC(d), d->kw, history_only[i], d->kw);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
 {
-  TslStep    *s = &d->m->steps[d->step];
+  PetscBool   model = d->step < 0 ? PETSC_TRUE : PETSC_FALSE; /* placement: model data (before the first *STEP) */
+  TslLoad   **loads = model ? &d->mload : &d->m->steps[d->step].loads;
+  PetscInt   *nload = model ? &d->nmload : &d->m->steps[d->step].nload;
   char        buf[16];
   const char *op = ParamUpper(d, "OP", buf, sizeof(buf));
   PetscInt    amp, famp, nline = 0;
@@ -1536,6 +1653,7 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
 
   PetscFunctionBeginUser;
   USER_CHECK(!op || !strcmp(op, "NEW") || !strcmp(op, "MOD"), LOC_FMT "OP=%s: expected NEW or MOD", KLOC(d), op);
+  if (model) PetscCall(ModelLoadCheck(d, op));
   PetscCall(AmplitudeParam(d, "AMPLITUDE", &amp));
   PetscCall(AmplitudeParam(d, "FILM AMPLITUDE", &famp));
   for (;;) {
@@ -1552,8 +1670,11 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
     USER_CHECK(d->nfield >= 2, LOC_FMT "*%s data line is too short", DLOC(d), d->kw);
     PetscCall(ParseTarget(d, d->field[0], &l.target));
     PetscCall(kw->line(d, &l));
-    PetscCall(TslDeckGrow(&s->loads, sizeof(TslLoad), s->nload));
-    s->loads[s->nload++] = l;
+    USER_CHECK(!model || l.value == 0,
+               LOC_FMT "*%s in the model data holds dofs at zero; a nonzero value (%g) needs a step: give this line inside *STEP ... *END STEP",
+               DLOC(d), d->kw, (double)l.value);
+    PetscCall(TslDeckGrow(loads, sizeof(TslLoad), *nload));
+    (*loads)[(*nload)++] = l;
     nline++;
   }
   /* "*CLOAD, OP=NEW" alone removes every earlier load of its kind: keep it as a load without target */
@@ -1566,8 +1687,8 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
     l.film_amplitude = -1;
     l.op_new         = PETSC_TRUE;
     l.loc            = d->kwloc;
-    PetscCall(TslDeckGrow(&s->loads, sizeof(TslLoad), s->nload));
-    s->loads[s->nload++] = l;
+    PetscCall(TslDeckGrow(loads, sizeof(TslLoad), *nload));
+    (*loads)[(*nload)++] = l;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -1578,9 +1699,11 @@ static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
 {
   PetscFunctionBeginUser;
   (void)kw;
-  d->out_frequency = 1;
-  PetscCall(ParamInt(d, "FREQUENCY", &d->out_frequency));
-  USER_CHECK(d->out_frequency >= 0, LOC_FMT "FREQUENCY must not be negative", KLOC(d));
+  PetscInt *freq = d->step >= 0 ? &d->out_frequency : &d->out_frequency_model; /* model data: every step's default */
+
+  *freq = 1;
+  PetscCall(ParamInt(d, "FREQUENCY", freq));
+  USER_CHECK(*freq >= 0, LOC_FMT "FREQUENCY must not be negative", KLOC(d));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1632,57 +1755,59 @@ static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
 
 #define LOAD_PARAMS "OP|AMPLITUDE"
 static const DeckKeyword Keywords[] = {
-    {"HEADING", CTX_MODEL, "", KwHeading, 0, NULL},
-    {"NODE", CTX_MODEL, "NSET", KwNode, 0, NULL},
-    {"ELEMENT", CTX_MODEL, "TYPE|ELSET", KwElement, 0, NULL},
-    {"NSET", CTX_MODEL, "NSET|GENERATE", KwSet, 0, NULL},
-    {"ELSET", CTX_MODEL, "ELSET|GENERATE", KwSet, 1, NULL},
-    {"SURFACE", CTX_MODEL, "NAME|TYPE", KwSurface, 0, NULL},
-    {"MATERIAL", CTX_MODEL, "NAME", KwMaterial, 0, NULL},
-    {"ELASTIC", CTX_MATERIAL, "TYPE", KwProperty, 0, NULL},
-    {"CONDUCTIVITY", CTX_MATERIAL, "TYPE", KwProperty, 1, NULL},
-    {"DENSITY", CTX_MATERIAL, "", KwProperty, 2, NULL},
-    {"SPECIFIC HEAT", CTX_MATERIAL, "", KwProperty, 3, NULL},
-    {"EXPANSION", CTX_MATERIAL, "TYPE|ZERO", KwProperty, 4, NULL},
-    {"SOLID SECTION", CTX_MODEL, "ELSET|MATERIAL", KwSolidSection, 0, NULL},
-    {"INITIAL CONDITIONS", CTX_MODEL, "TYPE", KwInitial, 0, NULL},
-    {"AMPLITUDE", CTX_MODEL, "NAME|TIME|DEFINITION", KwAmplitude, 0, NULL},
-    {"PHYSICAL CONSTANTS", CTX_MODEL, "ABSOLUTE ZERO|STEFAN BOLTZMANN", KwPhysical, 0, NULL},
-    {"EQUATION", CTX_ANY, "", KwEquation, 0, NULL},
-    {"SURFACE INTERACTION", CTX_MODEL, "NAME", KwSurfaceInteraction, 0, NULL},
-    {"SURFACE BEHAVIOR", CTX_INTERACTION, "PRESSURE-OVERCLOSURE|PENALTY|AUGMENTED LAGRANGE|DIRECT|NO SEPARATION", KwSurfaceBehavior, 0, NULL},
-    {"FRICTION", CTX_INTERACTION, "LAGRANGE|ROUGH|SLIP TOLERANCE", KwFriction, 0, NULL},
-    {"GAP CONDUCTANCE", CTX_INTERACTION, "PRESSURE|DEPENDENCIES|USER", KwGapConductance, 0, NULL},
-    {"GAP RADIATION", CTX_INTERACTION, "", KwGapRadiation, 0, NULL},
-    {"GAP HEAT GENERATION", CTX_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
-    {"CONTACT PAIR", CTX_MODEL, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED", KwContactPair, 0, NULL},
-    {"STEP", CTX_MODEL, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
-    {"END STEP", CTX_STEP, "", KwEndStep, 0, NULL},
-    {"COUPLED TEMPERATURE-DISPLACEMENT", CTX_STEP, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
-    {"BOUNDARY", CTX_STEP, LOAD_PARAMS "|FIXED", KwLoad, TSL_LOAD_BOUNDARY, LineBoundary},
-    {"CLOAD", CTX_STEP, LOAD_PARAMS, KwLoad, TSL_LOAD_CLOAD, LineConcentrated},
-    {"CFLUX", CTX_STEP, LOAD_PARAMS, KwLoad, TSL_LOAD_CFLUX, LineConcentrated},
-    {"DLOAD", CTX_STEP, LOAD_PARAMS, KwLoad, TSL_LOAD_DLOAD, LineDload},
-    {"DFLUX", CTX_STEP, LOAD_PARAMS, KwLoad, TSL_LOAD_DFLUX, LineDflux},
-    {"DSFLUX", CTX_STEP, LOAD_PARAMS, KwLoad, TSL_LOAD_DFLUX, LineDsflux},
-    {"FILM", CTX_STEP, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
-    {"SFILM", CTX_STEP, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
-    {"OUTPUT", CTX_STEP, "FIELD|HISTORY|FREQUENCY", KwOutput, 0, NULL},
-    {"NODE OUTPUT", CTX_STEP, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
-    {"NODE FILE", CTX_STEP, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
-    {"ELEMENT OUTPUT", CTX_STEP, "ELSET|FREQUENCY", KwOutputRequest, 0, NULL},
-    {"EL FILE", CTX_STEP, "ELSET|FREQUENCY", KwOutputRequest, 0, NULL},
-    {"NODE PRINT", CTX_STEP, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE | OUT_PRINT, NULL},
-    {"EL PRINT", CTX_STEP, "ELSET|FREQUENCY", KwOutputRequest, OUT_PRINT, NULL},
-    {"PREPRINT", CTX_ANY, NULL, KwIgnored, 0, NULL},
-    {"FILE FORMAT", CTX_ANY, NULL, KwIgnored, 0, NULL},
-    {"MONITOR", CTX_ANY, NULL, KwIgnored, 0, NULL},
-    {"RESTART", CTX_ANY, NULL, KwIgnored, 0, NULL},
-    {"CONTACT PRINT", CTX_ANY, NULL, KwIgnored, 0, NULL},
-    {"CONTACT FILE", CTX_ANY, NULL, KwIgnored, 0, NULL},
-    {"ENERGY PRINT", CTX_ANY, NULL, KwIgnored, 0, NULL},
-    {"CONTACT CONTROLS", CTX_ANY, NULL, KwIgnored, 0, NULL},
-    {"CONTACT OUTPUT", CTX_ANY, NULL, KwIgnored, 0, NULL},
+    {"HEADING", AT_MODEL, IN_NONE, "", KwHeading, 0, NULL},
+    {"NODE", AT_MODEL, IN_NONE, "NSET", KwNode, 0, NULL},
+    {"ELEMENT", AT_MODEL, IN_NONE, "TYPE|ELSET", KwElement, 0, NULL},
+    {"NSET", AT_MODEL, IN_NONE, "NSET|GENERATE", KwSet, 0, NULL},
+    {"ELSET", AT_MODEL, IN_NONE, "ELSET|GENERATE", KwSet, 1, NULL},
+    {"SURFACE", AT_MODEL, IN_NONE, "NAME|TYPE", KwSurface, 0, NULL},
+    {"MATERIAL", AT_MODEL, IN_NONE, "NAME", KwMaterial, 0, NULL},
+    {"ELASTIC", AT_MODEL, IN_MATERIAL, "TYPE", KwProperty, PROP_ELASTIC, NULL},
+    {"CONDUCTIVITY", AT_MODEL, IN_MATERIAL, "TYPE", KwProperty, PROP_CONDUCTIVITY, NULL},
+    {"DENSITY", AT_MODEL, IN_MATERIAL, "", KwProperty, PROP_DENSITY, NULL},
+    {"SPECIFIC HEAT", AT_MODEL, IN_MATERIAL, "", KwProperty, PROP_SPECIFIC_HEAT, NULL},
+    {"EXPANSION", AT_MODEL, IN_MATERIAL, "TYPE|ZERO", KwProperty, PROP_EXPANSION, NULL},
+    {"SOLID SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL", KwSolidSection, 0, NULL},
+    {"INITIAL CONDITIONS", AT_MODEL, IN_NONE, "TYPE", KwInitial, 0, NULL},
+    {"AMPLITUDE", AT_BOTH, IN_NONE, "NAME|TIME|DEFINITION", KwAmplitude, 0, NULL},
+    {"PHYSICAL CONSTANTS", AT_MODEL, IN_NONE, "ABSOLUTE ZERO|STEFAN BOLTZMANN", KwPhysical, 0, NULL},
+    {"EQUATION", AT_MODEL, IN_NONE, "", KwEquation, 0, NULL},
+    {"SURFACE INTERACTION", AT_MODEL, IN_NONE, "NAME", KwSurfaceInteraction, 0, NULL},
+    {"SURFACE BEHAVIOR", AT_MODEL, IN_INTERACTION, "PRESSURE-OVERCLOSURE|PENALTY|AUGMENTED LAGRANGE|DIRECT|NO SEPARATION", KwSurfaceBehavior, 0,
+     NULL},
+    {"FRICTION", AT_MODEL, IN_INTERACTION, "LAGRANGE|ROUGH|SLIP TOLERANCE", KwFriction, 0, NULL},
+    {"GAP CONDUCTANCE", AT_MODEL, IN_INTERACTION, "PRESSURE|DEPENDENCIES|USER", KwGapConductance, 0, NULL},
+    {"GAP RADIATION", AT_MODEL, IN_INTERACTION, "", KwGapRadiation, 0, NULL},
+    {"GAP HEAT GENERATION", AT_MODEL, IN_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
+    {"CONTACT PAIR", AT_MODEL, IN_NONE, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED", KwContactPair, 0, NULL},
+    {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
+    {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
+    {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
+    {"BOUNDARY", AT_BOTH, IN_NONE, LOAD_PARAMS "|FIXED", KwLoad, TSL_LOAD_BOUNDARY, LineBoundary},
+    {"CLOAD", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_CLOAD, LineConcentrated},
+    {"CFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_CFLUX, LineConcentrated},
+    {"DLOAD", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DLOAD, LineDload},
+    {"DFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DFLUX, LineDflux},
+    {"DSFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DFLUX, LineDsflux},
+    {"FILM", AT_STEP, IN_NONE, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
+    {"SFILM", AT_STEP, IN_NONE, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
+    {"OUTPUT", AT_BOTH, IN_NONE, "FIELD|HISTORY|FREQUENCY", KwOutput, 0, NULL},
+    {"NODE OUTPUT", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
+    {"NODE FILE", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
+    {"ELEMENT OUTPUT", AT_STEP, IN_NONE, "ELSET|FREQUENCY", KwOutputRequest, 0, NULL},
+    {"EL FILE", AT_STEP, IN_NONE, "ELSET|FREQUENCY", KwOutputRequest, 0, NULL},
+    {"NODE PRINT", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE | OUT_PRINT, NULL},
+    {"EL PRINT", AT_STEP, IN_NONE, "ELSET|FREQUENCY", KwOutputRequest, OUT_PRINT, NULL},
+    /* ignored (a warning names them); placed as the dialect places them, so a misplaced one still tells */
+    {"PREPRINT", AT_MODEL, IN_NONE, NULL, KwIgnored, 0, NULL},
+    {"FILE FORMAT", AT_BOTH, IN_NONE, NULL, KwIgnored, 0, NULL},
+    {"MONITOR", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
+    {"RESTART", AT_BOTH, IN_NONE, NULL, KwIgnored, 0, NULL},
+    {"CONTACT PRINT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
+    {"CONTACT FILE", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
+    {"ENERGY PRINT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
+    {"CONTACT CONTROLS", AT_BOTH, IN_NONE, NULL, KwIgnored, 0, NULL},
+    {"CONTACT OUTPUT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
 };
 
 static PetscBool ParamKnown(const char *list, const char *key)
@@ -1698,6 +1823,46 @@ static PetscBool ParamKnown(const char *list, const char *key)
   return PETSC_FALSE;
 }
 
+/* Where the reader is now: inside a step, before the first one (model data) or between steps. */
+static DeckPlacement DeckPosition(const Deck *d)
+{
+  return d->step >= 0 ? AT_STEP : (d->m->nstep == 0 ? AT_MODEL : AT_BETWEEN);
+}
+
+/* The placement column as the user reads it: what the dialect calls the keyword and where it goes. */
+static const struct {
+  PetscInt    placement;
+  const char *kind, *belongs;
+} PlacementText[] = {
+    {AT_MODEL, "model data", "before the first *STEP"},
+    {AT_STEP, "history data", "inside a step (*STEP ... *END STEP)"},
+    {AT_BOTH, "model or history data", "before the first *STEP or inside a step"},
+    {AT_MODEL | AT_BETWEEN, "the start of a step", "outside any other step"},
+};
+
+static PetscErrorCode CheckPlacement(Deck *d, const DeckKeyword *kw)
+{
+  DeckPlacement  at   = DeckPosition(d);
+  const TslStep *s    = d->m->nstep ? &d->m->steps[at == AT_STEP ? d->step : 0] : NULL;
+  const char    *kind = "", *belongs = "";
+  char           here[PETSC_MAX_PATH_LEN + 64];
+
+  PetscFunctionBeginUser;
+  if (kw->placement & at) PetscFunctionReturn(PETSC_SUCCESS);
+  USER_CHECK(kw->handler != KwEndStep, LOC_FMT "*END STEP without *STEP", KLOC(d));
+  for (size_t i = 0; i < sizeof(PlacementText) / sizeof(PlacementText[0]); i++)
+    if (PlacementText[i].placement == (PetscInt)kw->placement) kind = PlacementText[i].kind, belongs = PlacementText[i].belongs;
+  if (at == AT_STEP)
+    PetscCall(PetscSNPrintf(here, sizeof(here), "here it is inside the step that starts at %s:%" PetscInt_FMT "; missing *END STEP?",
+                            TslDeckFileName(d->m, s->loc.file), s->loc.line));
+  else if (at == AT_BETWEEN)
+    PetscCall(PetscSNPrintf(here, sizeof(here), "here it comes after the first step, which starts at %s:%" PetscInt_FMT,
+                            TslDeckFileName(d->m, s->loc.file), s->loc.line));
+  else
+    PetscCall(PetscSNPrintf(here, sizeof(here), "here it comes before the first *STEP"));
+  USER_ERR(LOC_FMT "*%s is %s: it belongs %s (%s)", KLOC(d), d->kw, kind, belongs, here);
+}
+
 static PetscErrorCode DeckKeywordLine(Deck *d)
 {
   const DeckKeyword *kw = NULL;
@@ -1706,27 +1871,13 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
   for (size_t i = 0; i < sizeof(Keywords) / sizeof(Keywords[0]); i++)
     if (!strcmp(Keywords[i].name, d->kw)) kw = &Keywords[i];
   USER_CHECK(kw, LOC_FMT "unsupported keyword *%s", KLOC(d), d->kw);
-  if (kw->where != CTX_MATERIAL && kw->handler != KwIgnored) d->material = -1;
-  if (kw->where != CTX_INTERACTION && kw->handler != KwIgnored) d->interaction = -1;
-  switch (kw->where) {
-  case CTX_MODEL:
-    USER_CHECK(d->step < 0, LOC_FMT "*%s is model data and cannot appear inside a step (missing *END STEP for the *STEP at %s:%" PetscInt_FMT "?)",
-               KLOC(d), d->kw, TslDeckFileName(d->m, d->m->steps[d->step].loc.file), d->m->steps[d->step].loc.line);
-    break;
-  case CTX_STEP:
-    if (kw->handler == KwEndStep) USER_CHECK(d->step >= 0, LOC_FMT "*END STEP without *STEP", KLOC(d));
-    USER_CHECK(d->step >= 0, LOC_FMT "*%s is only allowed inside a step (*STEP ... *END STEP)", KLOC(d), d->kw);
-    break;
-  case CTX_MATERIAL:
-    USER_CHECK(d->step < 0 && d->material >= 0, LOC_FMT "*%s must follow *MATERIAL (material properties outside a material)", KLOC(d), d->kw);
-    break;
-  case CTX_INTERACTION:
-    USER_CHECK(d->step < 0 && d->interaction >= 0,
-               LOC_FMT "*%s must follow *SURFACE INTERACTION (interface properties outside a surface interaction)", KLOC(d), d->kw);
-    break;
-  case CTX_ANY:
-    break;
-  }
+  PetscCall(CheckPlacement(d, kw));
+  if (kw->block != IN_MATERIAL && kw->handler != KwIgnored) d->material = -1;
+  if (kw->block != IN_INTERACTION && kw->handler != KwIgnored) d->interaction = -1;
+  USER_CHECK(kw->block != IN_MATERIAL || d->material >= 0, LOC_FMT "*%s must follow *MATERIAL (material properties outside a material)", KLOC(d),
+             d->kw);
+  USER_CHECK(kw->block != IN_INTERACTION || d->interaction >= 0,
+             LOC_FMT "*%s must follow *SURFACE INTERACTION (interface properties outside a surface interaction)", KLOC(d), d->kw);
   if (kw->params)
     for (PetscInt i = 0; i < d->nparam; i++)
       if (!ParamKnown(kw->params, d->pkey[i]))
@@ -1751,11 +1902,36 @@ static PetscErrorCode DeckParse(Deck *d, const char *path)
     }
     PetscCall(KeywordLine(d, s));
     PetscCall(DeckKeywordLine(d));
+    d->nkeyword++;
   }
+  USER_CHECK(d->nkeyword > 0, "%s:0: the deck is empty (no keyword lines)", path);
   if (d->step >= 0) {
     TslLoc l = d->m->steps[d->step].loc;
     USER_ERR(LOC_FMT "missing *END STEP: the deck ends inside this step", TSL_LOC_ARGS(d->m, l));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The model-data *BOUNDARY conditions become the first step's first loads, so that they apply from
+ * that step on and later steps modify them like any other (OP=MOD), with nothing new downstream.
+ * A *BOUNDARY, OP=NEW in the first step removes them, as in Abaqus: then they are dropped here. */
+static PetscErrorCode DeckModelLoads(Deck *d)
+{
+  TslStep *s;
+
+  PetscFunctionBeginUser;
+  if (!d->nmload || !d->m->nstep) PetscFunctionReturn(PETSC_SUCCESS); /* no step: TslModelCheck says so */
+  s = &d->m->steps[0];
+  for (PetscInt i = 0; i < s->nload; i++)
+    if (s->loads[i].kind == TSL_LOAD_BOUNDARY && s->loads[i].op_new) {
+      PetscCall(PetscInfo(NULL, "*BOUNDARY, OP=NEW at %s:%" PetscInt_FMT " removes the %" PetscInt_FMT " model-data boundary condition(s)\n",
+                          TslDeckFileName(d->m, s->loads[i].loc.file), s->loads[i].loc.line, d->nmload));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+  for (PetscInt i = 0; i < d->nmload; i++) PetscCall(TslDeckGrow(&s->loads, sizeof(TslLoad), s->nload + i));
+  if (s->nload) memmove(s->loads + d->nmload, s->loads, (size_t)s->nload * sizeof(TslLoad));
+  memcpy(s->loads, d->mload, (size_t)d->nmload * sizeof(TslLoad));
+  s->nload += d->nmload;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1794,6 +1970,7 @@ static PetscErrorCode DeckFree(Deck *d)
   PetscCall(PetscFree(d->kwbuf));
   PetscCall(PetscFree(d->field));
   PetscCall(PetscFree(d->node_line));
+  PetscCall(PetscFree(d->mload));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1805,12 +1982,14 @@ PetscErrorCode TslDeckRead(const char *path, TslModel **model)
   PetscFunctionBeginUser;
   *model = NULL;
   PetscCall(PetscMemzero(&d, sizeof(d)));
-  d.step        = -1;
-  d.material    = -1;
-  d.interaction = -1;
+  d.step                = -1;
+  d.material            = -1;
+  d.interaction         = -1;
+  d.out_frequency_model = 1;
   PetscCall(TslModelCreate(&d.m));
   /* On a user error the partial model and the reader's buffers are freed before the error goes up. */
   ierr = DeckParse(&d, path);
+  if (!ierr) ierr = DeckModelLoads(&d);
   if (!ierr) ierr = DeckCheckDuplicateNodes(&d);
   if (!ierr) ierr = TslModelCheck(d.m);
   PetscCall(DeckFree(&d));

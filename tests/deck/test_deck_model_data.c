@@ -1,0 +1,54 @@
+/* Placement of model data and history data: a *BOUNDARY before the first *STEP (model data) becomes the
+ * first step's first loads, so it applies from step 1 on and persists like any other (OP=MOD); an
+ * OP=NEW *BOUNDARY in the first step removes it, as in Abaqus. Also *AMPLITUDE in a step and *OUTPUT
+ * in the model data (the steps' default frequency), both placements the dialect allows. */
+#include <thermoslide/model.h>
+#include <string.h>
+
+#ifndef TSL_DECK_DATA
+#error "TSL_DECK_DATA (the tests/deck/data directory) must be defined"
+#endif
+
+#include "expect.h"
+
+static PetscErrorCode TestModelBoundary(void)
+{
+  TslModel      *m;
+  const TslStep *s;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslDeckRead(TSL_DECK_DATA "/model_boundary.inp", &m));
+  EXPECT(m->nstep == 2);
+  s = &m->steps[0];
+  EXPECT(s->nload == 3);
+  /* the model-data lines come first, with their own deck lines, value zero, step-default amplitude */
+  EXPECT(s->loads[0].kind == TSL_LOAD_BOUNDARY && !strcmp(s->loads[0].target.set, "BOTTOM") && s->loads[0].dof_first == 1 &&
+         s->loads[0].dof_last == 2 && s->loads[0].value == 0 && s->loads[0].loc.line == 14 && !s->loads[0].op_new && s->loads[0].amplitude == -1);
+  EXPECT(s->loads[1].kind == TSL_LOAD_BOUNDARY && !s->loads[1].target.set[0] && s->loads[1].target.id == 1 && s->loads[1].dof_first == 11 &&
+         s->loads[1].value == 0 && s->loads[1].loc.line == 15);
+  /* then the step's own *BOUNDARY, which modifies / adds to them (OP=MOD) */
+  EXPECT(s->loads[2].kind == TSL_LOAD_BOUNDARY && !strcmp(s->loads[2].target.set, "TOP") && s->loads[2].value == 20 && !s->loads[2].op_new);
+  /* *OUTPUT in the model data sets every step's default frequency */
+  EXPECT(s->nout == 1 && s->out[0].frequency == 3);
+  EXPECT(m->steps[1].nout == 1 && m->steps[1].out[0].frequency == 3);
+  /* the second step redefines nothing: the conditions carry over in the solver (loads.c, OP=MOD) */
+  EXPECT(m->steps[1].nload == 0);
+  /* *AMPLITUDE inside a step is allowed (CalculiX: step or model definition) */
+  EXPECT(m->namplitude == 2 && TslModelFindAmplitude(m, "LATE") == 1);
+  PetscCall(TslModelDestroy(&m));
+
+  PetscCall(TslDeckRead(TSL_DECK_DATA "/model_boundary_opnew.inp", &m));
+  s = &m->steps[0];
+  EXPECT(s->nload == 1 && s->loads[0].op_new && !strcmp(s->loads[0].target.set, "TOP"));
+  PetscCall(TslModelDestroy(&m));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  PetscCall(TestModelBoundary());
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s: %d failed check(s)\n", nfail ? "FAILED" : "PASSED", nfail));
+  PetscCall(PetscFinalize());
+  return nfail ? 1 : 0;
+}
