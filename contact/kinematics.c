@@ -102,8 +102,14 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
   }
   PetscCheck(converged, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Contact projection did not converge (xi = %g)", (double)x);
   *xi_raw = x;
-  if (x < 0 || x > 1) {
-    *xi = DConst(x < 0 ? 0 : 1); /* clamped: the projection no longer moves with the unknowns */
+  /* Slightly beyond a segment end the element keeps the extended segment (xi outside [0, 1], with its
+   * derivatives) until the caller re-pairs the node after convergence. Clamping there instead froze xi:
+   * a node sitting on a main node (blocks meshed node on node) then switched, from one Newton iterate to
+   * the next, between a stuck element with the full stick stiffness (xi = +1e-7) and one without any
+   * tangential stiffness (xi = -1e-7), and Newton cycled between two residuals (issue 8, item 8). Beyond
+   * the search range the projection is a constant: the caller re-pairs, precision does not matter. */
+  if (x <= -1 || x >= 2) {
+    *xi = DConst(x);
   } else {
     /* implicit function theorem at F(xi, u) = 0: dxi/du = -F_u / F_xi */
     F   = ProjectionFunction(geo, DVar(x, TSL_DUAL_XI));

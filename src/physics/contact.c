@@ -356,7 +356,13 @@ static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscRe
   if (it->friction.given && it->friction.mu > 0) {
     law->mu       = it->friction.mu;
     law->friction = it->friction.lagrange ? TSL_CONTACT_FRICTION_LAGRANGE : TSL_CONTACT_FRICTION_PENALTY;
-    law->eps_t    = it->friction.stick_slope > 0 ? it->friction.stick_slope : law->eps_n;
+    /* stick stiffness: CalculiX's stick slope when given, otherwise the dialect's automatic penalty that
+     * allows an elastic slip of SLIP TOLERANCE (0.005) times the facet size. The normal penalty used to
+     * be the default: six orders stiffer, its stick limit (3e-8 for the two-block decks) sat at the
+     * Poisson mismatch of two pressed blocks, and Newton cycled between slipping one way and the other
+     * (issue 8, item 8). */
+    law->eps_t        = it->friction.stick_slope;
+    law->elastic_slip = it->friction.stick_slope > 0 ? 0 : it->friction.slip_tolerance * seg_length;
     /* LAGRANGE: sign(slip) is regularised over a slip far below any slip that heats (1e-4 of a segment):
      * sharper makes Newton oscillate at sticking nodes, and every finite slip still dissipates mu p |ds| */
     law->slip_tol = 1e-4 * seg_length;
