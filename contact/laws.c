@@ -98,8 +98,9 @@ typedef struct {
 } FrictionState;
 
 /* Coulomb friction. PENALTY: elastic predictor tT* = eps_t L (xi - xi_anchor), return mapping onto
- * |tT| <= mu pN; the plastic slip (tT* - tT)/eps_t dissipates. LAGRANGE: no elastic slip; tT = mu pN sign(ds)
- * with sign(ds) replaced by ds/slip_tol for |ds| < slip_tol, so tT ds = mu pN |ds| exactly once |ds| >= slip_tol
+ * |tT| <= mu pN; the plastic slip (tT* - tT)/eps_t dissipates. LAGRANGE: tT = mu pN sign(e), e = L (xi - xi_anchor)
+ * the slip from an anchor that trails the node by slip_tol, sign(e) replaced by e/slip_tol for |e| < slip_tol;
+ * the dissipation is tT ds over the whole increment slip ds, so tT ds = mu pN |ds| exactly while the node slips
  * (all relative motion becomes heat, as the spec's frictional-heating tests require). */
 static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *in, TslDual pN, TslDual xi, TslDual L, TslDual ds, FrictionState *fs)
 {
@@ -135,14 +136,26 @@ static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *
       fs->D         = DMul(fs->tT, slip);
     }
   } else {
+    /* the regularised sign is measured from the anchor, which trails the node by slip_tol while it slips:
+     * a node that slipped in the last increment starts the next one on the slip branch (tT = mu pN, no
+     * tangential stiffness) instead of at ds = 0 in the middle of the steep ramp, whose tangent
+     * mu pN / slip_tol made the first Newton step predict a shear hundreds of times mu pN (tilting the
+     * block, opening the contact: issue 8, item 7). A node starting to slip (anchor = xi_old) sees
+     * e = ds, as before. */
     PetscReal tol = law->slip_tol;
+    TslDual   e   = DMul(L, DAddC(xi, -in->hist.xi_anchor));
     TslDual   sgn;
 
     PetscCheck(tol > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Lagrange friction needs slip_tol > 0");
-    if (PetscAbsReal(ds.v) >= tol) {
-      sgn = DConst(ds.v > 0 ? 1 : -1);
+    if (PetscAbsReal(e.v) >= tol) {
+      PetscReal s = e.v > 0 ? 1 : -1;
+
+      sgn = DConst(s);
+      /* just beyond the ramp, so that round-off in the next increment's e does not fall back onto it */
+      fs->anchor = xi.v - s * tol * (1 + 1e-6) / L.v;
     } else {
-      sgn        = DScale(1 / tol, ds);
+      sgn        = DScale(1 / tol, e);
+      fs->anchor = in->hist.xi_anchor;
       fs->status = TSL_CONTACT_STICK;
     }
     fs->tT        = DMul(DScale(law->mu, pN), sgn);
