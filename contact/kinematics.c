@@ -67,15 +67,20 @@ static TslDual ProjectionFunction(const TslContactGeom *geo, TslDual xi)
 PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, PetscReal *xi_raw)
 {
   PetscReal e[2] = {geo->x2[0].v - geo->x1[0].v, geo->x2[1].v - geo->x1[1].v}, L2 = e[0] * e[0] + e[1] * e[1];
-  PetscReal x, tol;
+  PetscReal x, tol, r[2];
   TslDual   F;
   PetscBool converged = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCheck(L2 > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Contact segment of zero length");
   /* start from the projection on the straight segment: exact when no smoothing is active */
-  x   = ((geo->xs[0].v - geo->x1[0].v) * e[0] + (geo->xs[1].v - geo->x1[1].v) * e[1]) / L2;
-  tol = 1e-13;
+  r[0] = geo->xs[0].v - geo->x1[0].v;
+  r[1] = geo->xs[1].v - geo->x1[1].v;
+  x    = (r[0] * e[0] + r[1] * e[1]) / L2;
+  /* xi is dimensionless, but its round-off is that of F / F_xi ~ eps (|x_s - x_1| + L) / L: a tolerance
+   * a thousand times that floor, so that Newton stops as soon as it is exact to working precision,
+   * whatever the length unit and the distance of the node */
+  tol = 1e3 * PETSC_MACHINE_EPSILON * (1 + PetscSqrtReal((r[0] * r[0] + r[1] * r[1]) / L2));
   for (PetscInt it = 0; it < 50; it++) {
     PetscReal dx;
 
@@ -97,8 +102,14 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
   }
   PetscCheck(converged, PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "Contact projection did not converge (xi = %g)", (double)x);
   *xi_raw = x;
-  if (x < 0 || x > 1) {
-    *xi = DConst(x < 0 ? 0 : 1); /* clamped: the projection no longer moves with the unknowns */
+  /* Slightly beyond a segment end the element keeps the extended segment (xi outside [0, 1], with its
+   * derivatives) until the caller re-pairs the node after convergence. Clamping there instead froze xi:
+   * a node sitting on a main node (blocks meshed node on node) then switched, from one Newton iterate to
+   * the next, between a stuck element with the full stick stiffness (xi = +1e-7) and one without any
+   * tangential stiffness (xi = -1e-7), and Newton cycled between two residuals (issue 8, item 8). Beyond
+   * the search range the projection is a constant: the caller re-pairs, precision does not matter. */
+  if (x <= -1 || x >= 2) {
+    *xi = DConst(x);
   } else {
     /* implicit function theorem at F(xi, u) = 0: dxi/du = -F_u / F_xi */
     F   = ProjectionFunction(geo, DVar(x, TSL_DUAL_XI));
@@ -108,9 +119,13 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static void SetPoint(const PetscReal X[], const PetscReal U[], PetscInt node, PetscBool seed, TslDual x[2])
+/* Current position relative to the reference position O of the segment's first node: (X - O) + U. A
+ * constant shift leaves every derivative unchanged, and the differences of nearby points (gap, slip,
+ * projection) no longer lose digits to the size of the coordinates: a model far from the origin (or in
+ * a small length unit) gives the same contact state as the same model at the origin. */
+static void SetPoint(const PetscReal X[], const PetscReal U[], const PetscReal O[], PetscInt node, PetscBool seed, TslDual x[2])
 {
-  for (PetscInt d = 0; d < 2; d++) x[d] = DVar(X[d] + U[d], seed ? 3 * node + d : -1);
+  for (PetscInt d = 0; d < 2; d++) x[d] = DVar((X[d] - O[d]) + U[d], seed ? 3 * node + d : -1);
 }
 
 PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, TslContactGeom *geo, PetscInt *nnode)
@@ -122,13 +137,13 @@ PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, Ts
              (double)in->smoothing);
   PetscCheck(!in->x_prev == !in->u_prev && !in->x_next == !in->u_next, PETSC_COMM_SELF, PETSC_ERR_ARG_NULL,
              "Neighbour node needs both reference coordinates and unknowns");
-  SetPoint(in->x[0], in->u[0], 0, seed, geo->xs);
-  SetPoint(in->x[1], in->u[1], 1, seed, geo->x1);
-  SetPoint(in->x[2], in->u[2], 2, seed, geo->x2);
+  SetPoint(in->x[0], in->u[0], in->x[1], 0, seed, geo->xs);
+  SetPoint(in->x[1], in->u[1], in->x[1], 1, seed, geo->x1);
+  SetPoint(in->x[2], in->u[2], in->x[1], 2, seed, geo->x2);
   geo->has_prev = (PetscBool)(in->x_prev != NULL);
   geo->has_next = (PetscBool)(in->x_next != NULL);
-  if (geo->has_prev) SetPoint(in->x_prev, in->u_prev, k++, seed, geo->x0);
-  if (geo->has_next) SetPoint(in->x_next, in->u_next, k++, seed, geo->x3);
+  if (geo->has_prev) SetPoint(in->x_prev, in->u_prev, in->x[1], k++, seed, geo->x0);
+  if (geo->has_next) SetPoint(in->x_next, in->u_next, in->x[1], k++, seed, geo->x3);
   geo->s = in->smoothing;
   if (nnode) *nnode = k;
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -78,11 +78,14 @@ PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHi
 /* Contact pressure: penalty pN = eps_n <-g>, augmented pN = <lambda + eps_n (-g)>. Exactly touching
  * (argument 0) takes the closed branch: zero pressure but the penalty stiffness, so bodies that start
  * in contact are held from the first Newton iteration. */
-static TslDual NormalPressure(const TslContactLaw *law, const TslContactHistory *h, TslDual g)
+/* *closed: touching or pressed, with "touching" up to the round-off of the gap (1e-12 of the segment
+ * length L), so that node-on-node meshes whose coordinates differ in the last digit still start closed. */
+static TslDual NormalPressure(const TslContactLaw *law, const TslContactHistory *h, TslDual g, PetscReal L, PetscBool *closed)
 {
   TslDual a = DScale(-law->eps_n, g);
 
   if (law->normal == TSL_CONTACT_NORMAL_AUGMENTED) a = DAddC(a, h->lambda);
+  *closed = (PetscBool)(a.v >= -1e-12 * law->eps_n * L);
   return a.v >= 0 ? a : DConst(0);
 }
 
@@ -95,8 +98,9 @@ typedef struct {
 } FrictionState;
 
 /* Coulomb friction. PENALTY: elastic predictor tT* = eps_t L (xi - xi_anchor), return mapping onto
- * |tT| <= mu pN; the plastic slip (tT* - tT)/eps_t dissipates. LAGRANGE: no elastic slip; tT = mu pN sign(ds)
- * with sign(ds) replaced by ds/slip_tol for |ds| < slip_tol, so tT ds = mu pN |ds| exactly once |ds| >= slip_tol
+ * |tT| <= mu pN; the plastic slip (tT* - tT)/eps_t dissipates. LAGRANGE: tT = mu pN sign(e), e = L (xi - xi_anchor)
+ * the slip from an anchor that trails the node by slip_tol, sign(e) replaced by e/slip_tol for |e| < slip_tol;
+ * the dissipation is tT ds over the whole increment slip ds, so tT ds = mu pN |ds| exactly while the node slips
  * (all relative motion becomes heat, as the spec's frictional-heating tests require). */
 static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *in, TslDual pN, TslDual xi, TslDual L, TslDual ds, FrictionState *fs)
 {
@@ -108,32 +112,50 @@ static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *
   fs->status    = pN.v > 0 ? TSL_CONTACT_SLIP : TSL_CONTACT_OPEN;
   if (pN.v <= 0 || law->friction == TSL_CONTACT_FRICTION_NONE || law->mu == 0) PetscFunctionReturn(PETSC_SUCCESS);
   if (law->friction == TSL_CONTACT_FRICTION_PENALTY) {
-    TslDual   trial = DMul(DScale(law->eps_t, L), DAddC(xi, -in->hist.xi_anchor));
+    /* elastic slip e from the anchor; stick stiffness eps_t, or mu pN / e_max (automatic: the stick limit is
+     * an elastic slip of e_max whatever the pressure, the dialect's SLIP TOLERANCE) */
+    TslDual   e     = DMul(L, DAddC(xi, -in->hist.xi_anchor));
+    TslDual   eps_t = law->elastic_slip > 0 ? DScale(law->mu / law->elastic_slip, pN) : DConst(law->eps_t);
+    TslDual   trial = DMul(eps_t, e);
     TslDual   limit = DScale(law->mu, pN);
-    PetscReal sgn   = trial.v >= 0 ? 1 : -1;
+    PetscReal sgn   = e.v >= 0 ? 1 : -1;
 
-    PetscCheck(law->eps_t > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Penalty friction needs eps_t > 0");
+    PetscCheck(law->eps_t > 0 || law->elastic_slip > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
+               "Penalty friction needs eps_t > 0 or elastic_slip > 0");
     if (PetscAbsReal(trial.v) <= limit.v) {
       fs->tT     = trial;
       fs->anchor = in->hist.xi_anchor;
       fs->status = TSL_CONTACT_STICK;
     } else {
-      TslDual slip = DScale(1 / law->eps_t, DSub(trial, DScale(sgn, limit)));
+      /* plastic slip: e minus the elastic part tT / eps_t (= sgn e_max in the automatic form) */
+      TslDual slip = law->elastic_slip > 0 ? DAddC(e, -sgn * law->elastic_slip) : DScale(1 / law->eps_t, DSub(trial, DScale(sgn, limit)));
 
       fs->tT        = DScale(sgn, limit);
       fs->slip_diss = slip.v;
-      fs->anchor    = xi.v - fs->tT.v / (law->eps_t * L.v);
+      fs->anchor    = xi.v - (e.v - slip.v) / L.v;
       fs->D         = DMul(fs->tT, slip);
     }
   } else {
+    /* the regularised sign is measured from the anchor, which trails the node by slip_tol while it slips:
+     * a node that slipped in the last increment starts the next one on the slip branch (tT = mu pN, no
+     * tangential stiffness) instead of at ds = 0 in the middle of the steep ramp, whose tangent
+     * mu pN / slip_tol made the first Newton step predict a shear hundreds of times mu pN (tilting the
+     * block, opening the contact: issue 8, item 7). A node starting to slip (anchor = xi_old) sees
+     * e = ds, as before. */
     PetscReal tol = law->slip_tol;
+    TslDual   e   = DMul(L, DAddC(xi, -in->hist.xi_anchor));
     TslDual   sgn;
 
     PetscCheck(tol > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Lagrange friction needs slip_tol > 0");
-    if (PetscAbsReal(ds.v) >= tol) {
-      sgn = DConst(ds.v > 0 ? 1 : -1);
+    if (PetscAbsReal(e.v) >= tol) {
+      PetscReal s = e.v > 0 ? 1 : -1;
+
+      sgn = DConst(s);
+      /* just beyond the ramp, so that round-off in the next increment's e does not fall back onto it */
+      fs->anchor = xi.v - s * tol * (1 + 1e-6) / L.v;
     } else {
-      sgn        = DScale(1 / tol, ds);
+      sgn        = DScale(1 / tol, e);
+      fs->anchor = in->hist.xi_anchor;
       fs->status = TSL_CONTACT_STICK;
     }
     fs->tT        = DMul(DScale(law->mu, pN), sgn);
@@ -147,14 +169,19 @@ static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *
 }
 
 /* Gap conductance k: by pressure (only while in contact) or by clearance d = <g> (zero beyond the last
- * tabulated clearance, as the dialect specifies). */
-static PetscErrorCode Conductance(const TslContactLaw *law, TslDual pN, TslDual g, TslDual *k)
+ * tabulated clearance, as the dialect specifies). "In contact" is the closed branch of the normal law,
+ * exact touching included: there the pressure is zero and k is the table's value at p = 0 (its first
+ * value, the table extends flat below its first point). Requiring p > 0 left bodies that start exactly
+ * touching without any conductance at the first Newton iteration, and in a steady step a body held
+ * only through the interface then had no determined temperature: a singular thermal block, and every
+ * cutback diverged (issue 8, item 2). */
+static PetscErrorCode Conductance(const TslContactLaw *law, TslDual pN, PetscBool closed, TslDual g, TslDual *k)
 {
   PetscReal v, dv;
 
   PetscFunctionBeginUser;
   *k = DConst(0);
-  if (law->conductance == TSL_CONTACT_CONDUCTANCE_PRESSURE && pN.v > 0) {
+  if (law->conductance == TSL_CONTACT_CONDUCTANCE_PRESSURE && closed) {
     PetscCall(TslTableEvaluate(law->k_n, law->k_arg, law->k_value, pN.v, &v, &dv));
     *k = DChain(pN, v, dv);
   } else if (law->conductance == TSL_CONTACT_CONDUCTANCE_CLEARANCE) {
@@ -193,6 +220,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   TslDual        xi, n[2], tau[2], r[2], g, L, pN, ds, traction[2], k, C, q, theta_s, theta_m, N[2], heat;
   TslDual        Rd[TSL_CONTACT_MAX_DOF];
   FrictionState  fs;
+  PetscBool      closed;
 
   PetscFunctionBeginUser;
   PetscCheck(in->length > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Tributary length must be positive");
@@ -217,14 +245,14 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   N[1] = xi;
 
   /* mechanical laws */
-  pN = NormalPressure(law, &in->hist, g);
+  pN = NormalPressure(law, &in->hist, g, L.v, &closed);
   PetscCall(Friction(law, in, pN, xi, L, ds, &fs));
   for (PetscInt d = 0; d < 2; d++) traction[d] = DSub(DMul(pN, n[d]), DMul(fs.tT, tau[d]));
 
   /* thermal laws */
   theta_s = DVar(in->u[0][2], 2);
   theta_m = DAdd(DMul(N[0], DVar(in->u[1][2], 5)), DMul(N[1], DVar(in->u[2][2], 8)));
-  PetscCall(Conductance(law, pN, g, &k));
+  PetscCall(Conductance(law, pN, closed, g, &k));
   PetscCall(RadiationConstant(law, g, &C));
   q = DMul(k, DSub(theta_m, theta_s));
   if (C.v != 0) q = DAdd(q, DMul(C, DSub(DPow4(DAddC(theta_m, -law->theta_zero)), DPow4(DAddC(theta_s, -law->theta_zero)))));

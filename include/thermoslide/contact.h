@@ -54,7 +54,7 @@ typedef enum {
 
 typedef enum {
   TSL_CONTACT_CONDUCTANCE_NONE = 0,
-  TSL_CONTACT_CONDUCTANCE_PRESSURE, /* k(pN), heat conducted only while pN > 0 */
+  TSL_CONTACT_CONDUCTANCE_PRESSURE, /* k(pN), heat conducted only while closed (touching: k(0)) */
   TSL_CONTACT_CONDUCTANCE_CLEARANCE /* k(d), d = <g>; k = 0 for d beyond the last table clearance (Abaqus rule) */
 } TslContactConductanceKind;
 
@@ -63,9 +63,12 @@ typedef struct {
   PetscReal              eps_n; /* normal penalty stiffness (force/length^3: pressure per penetration) */
 
   TslContactFrictionMethod friction;
-  PetscReal                mu;       /* Coulomb coefficient */
-  PetscReal                eps_t;    /* tangential penalty stiffness (pressure per slip length), PENALTY mode */
-  PetscReal                slip_tol; /* LAGRANGE mode: |ds| below which sign(ds) is regularised (length) */
+  PetscReal                mu;           /* Coulomb coefficient */
+  PetscReal                eps_t;        /* tangential penalty stiffness (pressure per slip length), PENALTY mode */
+  PetscReal                elastic_slip; /* PENALTY mode: > 0 replaces eps_t by mu pN / elastic_slip, so that a node
+                                            sticks while its elastic slip is at most elastic_slip (a length; the
+                                            dialect's SLIP TOLERANCE times the facet size) */
+  PetscReal slip_tol;                    /* LAGRANGE mode: |ds| below which sign(ds) is regularised (length) */
 
   /* gap conductance table: k_value[i] at k_arg[i] (pressure or clearance, increasing) */
   TslContactConductanceKind conductance;
@@ -130,7 +133,8 @@ typedef struct {
 /* Closest-point (normal) projection of the current secondary position onto the current, smoothed
  * segment: solves (x_s - x_m(xi)) . tau(xi) = 0 for xi by Newton, where tau, n are the smoothed unit
  * tangent and normal. Outputs: *xi unclamped (outside [0,1] when the node is beyond a segment end), *g gap
- * at the clamped projection, n[2] normal there (any output may be NULL). Thermal unknowns are ignored. */
+ * at that projection (on the extended segment), n[2] normal there (any output may be NULL). Thermal
+ * unknowns are ignored. */
 PetscErrorCode TslContactProject(const TslContactInput *in, PetscReal *xi, PetscReal *g, PetscReal n[]);
 
 /* Which side of the segment an (unclamped) projection lies: -1 before m1 (xi < -tol), +1 beyond m2
@@ -156,7 +160,7 @@ PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1
  * ------------------------------------------------------------------------------------------------- */
 typedef struct {
   PetscInt         nnode;            /* 3 + (x_prev != NULL) + (x_next != NULL); R and K have 3*nnode rows */
-  PetscReal        xi;               /* clamped projection used */
+  PetscReal        xi;               /* projection used (= xi_raw unless beyond [-1, 2]) */
   PetscReal        xi_raw;           /* unclamped projection (see TslContactProjectionSide) */
   PetscInt         side;             /* TslContactProjectionSide(xi_raw, 0) */
   PetscReal        normal[2];        /* unit normal used (outward from main) */
@@ -183,8 +187,9 @@ typedef struct {
  *   R_s  = -A (pN n - tT tau),             R_a  = +A N_a (pN n - tT tau),        a = m1, m2
  *   Rth_s = -A (q + f eta D),              Rth_a = +A N_a (q - (1 - f) eta D)
  * with N_1 = 1 - xi, N_2 = xi, q = k (theta_m - theta_s) + C [(theta_m - theta_Z)^4 - (theta_s - theta_Z)^4],
- * theta_m = N_a theta_a, D the dissipation rate per area. The projection is clamped to [0,1]; when
- * out->side != 0 the caller must re-pair or drop the node (see TslContactProjectionSide). */
+ * theta_m = N_a theta_a, D the dissipation rate per area. Beyond a segment end the element works on the
+ * extended segment (xi outside [0,1], frozen only beyond [-1,2]); when out->side != 0 the caller must
+ * re-pair or drop the node after convergence (see TslContactProjectionSide). */
 PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
 
 /* After an increment converged: xi_old = out->xi, xi_anchor = out->xi_anchor (lambda is left to

@@ -4,6 +4,7 @@
 Each deck is a plain Abaqus/CalculiX keyword file; this script only saves typing node and element lines.
 """
 import os
+import re
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -240,6 +241,51 @@ def sliding_blocks(series, auglagr=False):
     write("sliding_%s%s_cpe4t.inp" % (series, "_auglagr" if auglagr else ""), text)
 
 
+def friction_cycle(law):
+    """Issue 8, items 7 and 8: the friction series' two blocks (sliding_blocks) with a pressure of 75 on
+    the top of the small block, mu = 0.2, slid +1.25, -2.5, +1.25 over 4 s (slip path 5): dissipation
+    mu p A path = 0.2 * 75 * 2 * 5 = 150, half of it (eta = 0.5) heats the blocks to 75 / (rho c area 8)
+    = 9.375 after the equilibration step. law: "lagrange" (*FRICTION, LAGRANGE) or "penalty" (plain
+    *FRICTION: the default penalty stick, whose elastic slip withholds a little heat)."""
+    sliding_blocks("friction")
+    with open(os.path.join(HERE, "sliding_friction_cpe4t.inp")) as f:
+        text = f.read()
+    head = text[:text.index("*STEP")]
+    head = head.replace("friction series", "friction cycle, %s friction, pressure 75, slip path 5" % law)
+    head = head.replace("*FRICTION, LAGRANGE\n 0.1\n", "*FRICTION%s\n 0.2\n" % (", LAGRANGE" if law == "lagrange" else ""))
+    head = head.replace("*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n",
+                        "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 3.0, -1.0, 4.0, 0.0\n")
+    # the top face is driven in x node by node and free in y (no constraint equations): the block may
+    # tilt, which is what made Newton's first iterate of each increment open the contact (item 7)
+    head = re.sub(r"\*EQUATION\n 2\n[^\n]*\n", "", head)
+    head += ("*STEP, NAME=PRESS, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.5, 1.0\n"
+             "*BOUNDARY\n BASE, 1, 2\n TOPFACE, 1, 1\n*DLOAD\n PRESSED, P3, 75.0\n*END STEP\n"
+             "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.02, 4.0, 1e-5, 0.05\n"
+             "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, 1, 1, 1.25\n*END STEP\n" +
+             "*STEP, NAME=EQUILIBRATE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 20.0, 1e-5, 2.0\n*END STEP\n")
+    write("sliding_friction_cycle_%s_cpe4t.inp" % law, head)
+
+
+def steady_touching():
+    """Issue 8, item 2: the conductance series' blocks, exactly touching (shared interface coordinate), in
+    a steady first step: pressure 100 and flux 100 on the top of the small block, film h = 10 (sink 0) on
+    the centre of the large block's bottom, pressure-dependent conductance (20 at p <= 100, 5 at 200).
+    At steady state the flux in (100 * area 2 = 200) crosses the interface and leaves through the film.
+    A second steady step doubles the pressure."""
+    sliding_blocks("conductance")
+    with open(os.path.join(HERE, "sliding_conductance_cpe4t.inp")) as f:
+        text = f.read()
+    head = text[:text.index("*STEP")]
+    head = head.replace("conductance series", "conductance series, steady first step from exact touching")
+    head = head[:head.index("*AMPLITUDE")] + "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n"
+    head += ("*STEP, NAME=STEADY\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
+             "*BOUNDARY\n BASE, 1, 2\n TOPFACE, 1, 1\n*DLOAD\n PRESSED, P3, 100.0\n*DFLUX\n PRESSED, S3, 100.0\n"
+             "*FILM\n FILMED, F1, 0.0, 10.0\n*END STEP\n"
+             "*STEP, NAME=DOUBLE PRESSURE\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
+             "*DLOAD\n PRESSED, P3, 200.0\n*END STEP\n")
+    write("contact_steady_touching_cpe4t.inp", head)
+
+
 def contact_jacobian():
     """A block (1 element) on a block (2 x 1 elements) with every interface law active, in three steps
     that put the contact in stick, slip and open states: for -snes_test_jacobian. Materials scaled so
@@ -276,6 +322,9 @@ if __name__ == "__main__":
     for series in ("conductance", "radiation", "friction"):
         sliding_blocks(series)
     sliding_blocks("conductance", auglagr=True)
+    friction_cycle("lagrange")
+    friction_cycle("penalty")
+    steady_touching()
     loads_multistep()
     for t in ("CPE4T", "CPS4T", "CAX4T", "C3D8T"):
         conduction_steady(t)

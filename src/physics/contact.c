@@ -19,6 +19,12 @@
  */
 #include "problem_impl.h"
 
+/* Projection parameters are dimensionless (fractions of a segment), so these hold in any length unit and
+ * anywhere in space: a node within TSL_CONTACT_XI_TOL of a segment end counts as on the segment when
+ * pairing; only a departure beyond TSL_CONTACT_DEPART_TOL after convergence re-pairs it. */
+#define TSL_CONTACT_XI_TOL     1e-9
+#define TSL_CONTACT_DEPART_TOL 1e-6
+
 /* Local nodes of a contact element in kernel order: s, m1, m2, [m0], [m3]. */
 static PetscInt ElementNodes(TslProblem p, const TslContactNode *cn, PetscInt nodes[TSL_CONTACT_MAX_NODES])
 {
@@ -167,15 +173,17 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
         PetscReal        t[2] = {b[0] - a[0], b[1] - a[1]}, L2 = t[0] * t[0] + t[1] * t[1], xi, xc, q[2], dist, gap;
         PetscBool        inside;
         if (L2 <= 0) continue;
-        xi     = ((y[0] - a[0]) * t[0] + (y[1] - a[1]) * t[1]) / L2;
-        inside = (PetscBool)(xi >= 0 && xi <= 1);
+        xi = ((y[0] - a[0]) * t[0] + (y[1] - a[1]) * t[1]) / L2;
+        /* tolerances relative to the segment: a node on a segment end stays "inside" whatever the
+         * round-off of coordinates far from the origin, and equal distances are a tie (first wins) */
+        inside = (PetscBool)(xi >= -TSL_CONTACT_XI_TOL && xi <= 1 + TSL_CONTACT_XI_TOL);
         xc     = PetscMin(1, PetscMax(0, xi));
         q[0] = a[0] + xc * t[0] - y[0], q[1] = a[1] + xc * t[1] - y[1];
         dist = PetscSqrtReal(q[0] * q[0] + q[1] * q[1]);
         /* outward normal (t_y, -t_x)/L: body of the main surface on the left of the segment */
         gap = ((y[0] - a[0] - xc * t[0]) * t[1] - (y[1] - a[1] - xc * t[1]) * t[0]) / PetscSqrtReal(L2);
         if (gap < -cs->search_radius) continue; /* behind the surface: another body, not a contact */
-        if ((inside && !best_inside) || (inside == best_inside && dist < best_d)) {
+        if ((inside && !best_inside) || (inside == best_inside && dist < best_d - TSL_CONTACT_XI_TOL * PetscSqrtReal(L2))) {
           best = cand[c], best_d = dist, best_xi = xi, best_inside = inside;
         }
       }
@@ -247,7 +255,7 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
     const TslContactSurface *cs = &p->csurf[cn->pair];
     if (cn->seg < 0) continue;
     /* a node on a segment end may fall outside [0,1] by round-off: only a real departure re-pairs */
-    if (TslContactProjectionSide(cn->out.xi_raw, 1e-6) != 0) loc[0]++;
+    if (TslContactProjectionSide(cn->out.xi_raw, TSL_CONTACT_DEPART_TOL) != 0) loc[0]++;
     if (cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED) {
       PetscReal c, lambda = cn->hist.lambda; /* applied below only if the increment is solved again */
       PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &lambda, &c));
@@ -263,7 +271,9 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
     *again = PETSC_TRUE;
   }
   /* multipliers change only when another solve follows, so that the accepted state is the one solved */
-  if (gc[0] > p->augment_tol * PetscMax(gc[1], PETSC_SMALL)) {
+  /* relative to the largest pressure only (no absolute floor: pressures may be 1e-7 in kN/mm^2); with no
+   * pressure anywhere the multipliers are already zero after one update and the change is exactly 0 */
+  if (gc[0] > p->augment_tol * gc[1]) {
     *again = PETSC_TRUE;
     for (PetscInt i = 0; i < p->ncnode; i++) {
       TslContactNode          *cn = &p->cnode[i];
@@ -350,7 +360,13 @@ static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscRe
   if (it->friction.given && it->friction.mu > 0) {
     law->mu       = it->friction.mu;
     law->friction = it->friction.lagrange ? TSL_CONTACT_FRICTION_LAGRANGE : TSL_CONTACT_FRICTION_PENALTY;
-    law->eps_t    = it->friction.stick_slope > 0 ? it->friction.stick_slope : law->eps_n;
+    /* stick stiffness: CalculiX's stick slope when given, otherwise the dialect's automatic penalty that
+     * allows an elastic slip of SLIP TOLERANCE (0.005) times the facet size. The normal penalty used to
+     * be the default: six orders stiffer, its stick limit (3e-8 for the two-block decks) sat at the
+     * Poisson mismatch of two pressed blocks, and Newton cycled between slipping one way and the other
+     * (issue 8, item 8). */
+    law->eps_t        = it->friction.stick_slope;
+    law->elastic_slip = it->friction.stick_slope > 0 ? 0 : it->friction.slip_tolerance * seg_length;
     /* LAGRANGE: sign(slip) is regularised over a slip far below any slip that heats (1e-4 of a segment):
      * sharper makes Newton oscillate at sticking nodes, and every finite slip still dissipates mu p |ds| */
     law->slip_tol = 1e-4 * seg_length;

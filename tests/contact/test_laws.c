@@ -141,6 +141,45 @@ static PetscErrorCode CheckPenaltyFriction(TestLog *log)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Automatic penalty friction (the default of plain *FRICTION): mu = 0.1, p = 100, allowed elastic slip
+ * 0.01, so the stick stiffness is mu p / 0.01 = 1000 as above, but it follows the pressure. */
+static PetscErrorCode CheckAutomaticPenaltyFriction(TestLog *log)
+{
+  TslContactLaw    law;
+  TslContactInput  in;
+  TslContactOutput out;
+  PetscReal        R[9];
+
+  PetscFunctionBeginUser;
+  PetscCall(TslContactLawSetDefaults(&law));
+  law.eps_n        = 1e4;
+  law.friction     = TSL_CONTACT_FRICTION_PENALTY;
+  law.mu           = 0.1;
+  law.elastic_slip = 0.01;
+  law.eta          = 1;
+
+  in         = FlatInput(1, -0.01);
+  in.u[0][0] = -0.005;
+  in.dt      = 0.5;
+  PetscCall(TslContactElement(&law, &in, R, NULL, &out));
+  Check(log, (PetscReal)out.status, TSL_CONTACT_STICK, 0, "automatic: stick below the elastic slip");
+  Check(log, out.shear, 5, 1e-10, "automatic: tT = mu p slip / elastic slip");
+  in         = FlatInput(1, -0.02); /* twice the pressure: twice the stick stiffness, same elastic limit */
+  in.u[0][0] = -0.005;
+  in.dt      = 0.5;
+  PetscCall(TslContactElement(&law, &in, R, NULL, &out));
+  Check(log, out.shear, 10, 1e-10, "automatic: stick stiffness follows the pressure");
+  in         = FlatInput(1, -0.01);
+  in.u[0][0] = -0.02;
+  in.dt      = 0.5;
+  PetscCall(TslContactElement(&law, &in, R, NULL, &out));
+  Check(log, (PetscReal)out.status, TSL_CONTACT_SLIP, 0, "automatic: slip beyond the elastic slip");
+  Check(log, out.shear, 10, 1e-10, "automatic slip: tT = mu p");
+  Check(log, out.slip_dissipative, 0.01, 1e-12, "automatic slip: plastic slip = slip - elastic slip");
+  Check(log, out.xi_anchor, out.xi - 0.01 / 2, 1e-14, "automatic slip: anchor at the elastic limit");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckLagrangeFriction(TestLog *log)
 {
   TslContactLaw    law;
@@ -310,6 +349,7 @@ int main(int argc, char **argv)
   PetscCall(CheckTable(&log));
   PetscCall(CheckNormal(&log));
   PetscCall(CheckPenaltyFriction(&log));
+  PetscCall(CheckAutomaticPenaltyFriction(&log));
   PetscCall(CheckLagrangeFriction(&log));
   PetscCall(CheckConduction(&log));
   PetscCall(CheckRadiation(&log));

@@ -144,6 +144,18 @@ int main(int argc, char **argv)
   c.in.hist.xi_anchor = c.in.hist.xi_old - 0.03;
   PetscCall(CheckCase(&log, "axisymmetric slip, reversed", &law, &c, TSL_CONTACT_SLIP));
 
+  /* automatic penalty friction (plain *FRICTION): stick stiffness mu pN / elastic slip, stick and slip */
+  law.eps_t        = 0;
+  law.elastic_slip = 0.004;
+  PetscCall(CaseSetUp(&c, -0.01));
+  c.in.hist.xi_anchor = c.in.hist.xi_old - 0.0015;
+  PetscCall(CheckCase(&log, "automatic penalty, stick", &law, &c, TSL_CONTACT_STICK));
+  PetscCall(CaseSetUp(&c, -0.01));
+  c.in.hist.xi_anchor = c.in.hist.xi_old + 0.02;
+  PetscCall(CheckCase(&log, "automatic penalty, slip + heating", &law, &c, TSL_CONTACT_SLIP));
+  law.eps_t        = 5e3;
+  law.elastic_slip = 0;
+
   /* Lagrange friction, all motion dissipated */
   law.friction = TSL_CONTACT_FRICTION_LAGRANGE;
   law.slip_tol = 1e-10;
