@@ -436,7 +436,10 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
 
   PetscFunctionBeginUser;
   p->augment_tol = 1e-3;
-  PetscCall(PetscOptionsGetReal(NULL, NULL, "-tsl_contact_augment_tol", &p->augment_tol, NULL));
+  PetscOptionsBegin(p->comm, NULL, "thermoslide contact", NULL);
+  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_contact_augment_tol", "augmented Lagrange: multiplier change that ends the augmentations", 0,
+                           PETSC_TRUE, 1, PETSC_FALSE, &p->augment_tol));
+  PetscOptionsEnd();
   p->ncsurf = m->npair;
   PetscCall(PetscCalloc1(m->npair, &p->csurf));
   for (PetscInt k = 0; k < m->npair; k++) n += m->pairs[k].nsec;
