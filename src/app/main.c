@@ -97,13 +97,18 @@ static PetscErrorCode Run(const char *deck)
   TslModel      *global = NULL, *local = NULL;
   TslProblem     prob;
   char           dir[PETSC_MAX_PATH_LEN] = ".", job[256];
-  PetscBool      set;
+  PetscBool      set, alt_set;
   PetscErrorCode ierr = PETSC_SUCCESS;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(PetscOptionsGetString(NULL, NULL, "-o", dir, sizeof(dir), &set));
-  if (!set) PetscCall(PetscOptionsGetString(NULL, NULL, "-tsl_output_dir", dir, sizeof(dir), NULL));
+  {
+    /* both spellings are read (so neither is "unknown"); -o wins */
+    char alt[PETSC_MAX_PATH_LEN] = "";
+    PetscCall(PetscOptionsGetString(NULL, NULL, "-tsl_output_dir", alt, sizeof(alt), &alt_set));
+    if (!set && alt_set) PetscCall(PetscStrncpy(dir, alt, sizeof(dir)));
+  }
   JobName(deck, job, sizeof(job));
   if (rank == 0) {
     ierr = TslDeckRead(deck, &global);
