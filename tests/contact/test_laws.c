@@ -90,6 +90,30 @@ static PetscErrorCode CheckNormal(TestLog *log)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Penalty Coulomb friction, mu = 0.1, eps_n = 1e4, all dissipation to heat: a constant stick stiffness
+ * eps_t, or the automatic one mu p / elastic_slip when elastic_slip > 0. */
+static PetscErrorCode PenaltyFrictionLaw(PetscReal eps_t, PetscReal elastic_slip, TslContactLaw *law)
+{
+  PetscFunctionBeginUser;
+  PetscCall(TslContactLawSetDefaults(law));
+  law->eps_n        = 1e4;
+  law->friction     = TSL_CONTACT_FRICTION_PENALTY;
+  law->mu           = 0.1;
+  law->eps_t        = eps_t;
+  law->elastic_slip = elastic_slip;
+  law->eta          = 1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A flat contact with gap g whose secondary node has moved by -dx in x (+dx along tau), over dt = 0.5. */
+static TslContactInput MovedInput(PetscReal g, PetscReal dx)
+{
+  TslContactInput in = FlatInput(1, g);
+  in.u[0][0]         = -dx;
+  in.dt              = 0.5;
+  return in;
+}
+
 /* Penalty Coulomb friction: mu = 0.1, p = 100 (limit 10), eps_t = 1000. The secondary node moves by -dx in
  * x, i.e. +dx along tau = (-1, 0). */
 static PetscErrorCode CheckPenaltyFriction(TestLog *log)
@@ -100,16 +124,8 @@ static PetscErrorCode CheckPenaltyFriction(TestLog *log)
   PetscReal        R[9];
 
   PetscFunctionBeginUser;
-  PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n    = 1e4;
-  law.friction = TSL_CONTACT_FRICTION_PENALTY;
-  law.mu       = 0.1;
-  law.eps_t    = 1e3;
-  law.eta      = 1;
-
-  in         = FlatInput(1, -0.01);
-  in.u[0][0] = -0.005;
-  in.dt      = 0.5;
+  PetscCall(PenaltyFrictionLaw(1e3, 0, &law));
+  in = MovedInput(-0.01, 0.005);
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.slip, 0.005, 1e-14, "stick: slip increment along tau");
   Check(log, (PetscReal)out.status, TSL_CONTACT_STICK, 0, "stick: status");
@@ -151,27 +167,15 @@ static PetscErrorCode CheckAutomaticPenaltyFriction(TestLog *log)
   PetscReal        R[9];
 
   PetscFunctionBeginUser;
-  PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n        = 1e4;
-  law.friction     = TSL_CONTACT_FRICTION_PENALTY;
-  law.mu           = 0.1;
-  law.elastic_slip = 0.01;
-  law.eta          = 1;
-
-  in         = FlatInput(1, -0.01);
-  in.u[0][0] = -0.005;
-  in.dt      = 0.5;
+  PetscCall(PenaltyFrictionLaw(0, 0.01, &law));
+  in = MovedInput(-0.01, 0.005);
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, (PetscReal)out.status, TSL_CONTACT_STICK, 0, "automatic: stick below the elastic slip");
   Check(log, out.shear, 5, 1e-10, "automatic: tT = mu p slip / elastic slip");
-  in         = FlatInput(1, -0.02); /* twice the pressure: twice the stick stiffness, same elastic limit */
-  in.u[0][0] = -0.005;
-  in.dt      = 0.5;
+  in = MovedInput(-0.02, 0.005); /* twice the pressure: twice the stick stiffness, same elastic limit */
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.shear, 10, 1e-10, "automatic: stick stiffness follows the pressure");
-  in         = FlatInput(1, -0.01);
-  in.u[0][0] = -0.02;
-  in.dt      = 0.5;
+  in = MovedInput(-0.01, 0.02);
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, (PetscReal)out.status, TSL_CONTACT_SLIP, 0, "automatic: slip beyond the elastic slip");
   Check(log, out.shear, 10, 1e-10, "automatic slip: tT = mu p");
