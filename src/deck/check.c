@@ -121,10 +121,10 @@ static PetscErrorCode CheckMaterial(TslModel *m, const TslMaterial *mat, const T
 
   PetscFunctionBeginUser;
   (void)TslLocString(m, sec->loc, where, sizeof(where));
-  CHECK(mat->has_elastic, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *ELASTIC", mat->name, where);
-  CHECK(mat->has_conductivity, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *CONDUCTIVITY", mat->name, where);
-  CHECK(mat->has_density, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *DENSITY", mat->name, where);
-  CHECK(mat->has_specific_heat, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *SPECIFIC HEAT", mat->name, where);
+  CHECK(mat->prop[TSL_PROP_ELASTIC].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *ELASTIC", mat->name, where);
+  CHECK(mat->prop[TSL_PROP_CONDUCTIVITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *CONDUCTIVITY", mat->name, where);
+  CHECK(mat->prop[TSL_PROP_DENSITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *DENSITY", mat->name, where);
+  CHECK(mat->prop[TSL_PROP_SPECIFIC_HEAT].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *SPECIFIC HEAT", mat->name, where);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -4,7 +4,7 @@
  * so that the outward normal follows the right-hand rule (3D) or so that the body lies on the left of
  * the edge (2D), which is what the face-load kernels assume.
  */
-#include <thermoslide/element.h>
+#include "element_impl.h"
 #include <ctype.h>
 #include <string.h>
 
@@ -119,11 +119,41 @@ static const TslGeometry GeomHex8 = {
 
 /* ---- deck types -------------------------------------------------------------------------------- */
 
+/* The kinematics of a row and what follows from it: kinematics, model dimension, unknowns per node and
+ * their dialect dof numbers. */
+#define PLANE_STRAIN                                                                                                                                 \
+  TSL_KIN_PLANE_STRAIN, 2, 3,                                                                                                                        \
+  {                                                                                                                                                  \
+    1, 2, 11                                                                                                                                         \
+  }
+#define PLANE_STRESS                                                                                                                                 \
+  TSL_KIN_PLANE_STRESS, 2, 3,                                                                                                                        \
+  {                                                                                                                                                  \
+    1, 2, 11                                                                                                                                         \
+  }
+#define AXISYMMETRIC                                                                                                                                 \
+  TSL_KIN_AXISYMMETRIC, 2, 3,                                                                                                                        \
+  {                                                                                                                                                  \
+    1, 2, 11                                                                                                                                         \
+  }
+#define SOLID                                                                                                                                        \
+  TSL_KIN_SOLID3D, 3, 4,                                                                                                                             \
+  {                                                                                                                                                  \
+    1, 2, 3, 11                                                                                                                                      \
+  }
+
 static const TslElementType Catalogue[] = {
-    {"CPE4T", &GeomQuad4, TSL_KIN_PLANE_STRAIN, 2, 3, PETSC_FALSE, PETSC_FALSE, "4-node plane strain, coupled temperature-displacement"},
-    {"CPS4T", &GeomQuad4, TSL_KIN_PLANE_STRESS, 2, 3, PETSC_FALSE, PETSC_FALSE, "4-node plane stress, coupled temperature-displacement"},
-    {"CAX4T", &GeomQuad4, TSL_KIN_AXISYMMETRIC, 2, 3, PETSC_FALSE, PETSC_FALSE, "4-node axisymmetric, coupled temperature-displacement"},
-    {"C3D8T", &GeomHex8, TSL_KIN_SOLID3D, 3, 4, PETSC_FALSE, PETSC_FALSE, "8-node brick, coupled temperature-displacement"},
+    {"CPE4T", &GeomQuad4, &TslFormFull, PLANE_STRAIN, "4-node plane strain"},
+    {"CPE4RT", &GeomQuad4, &TslFormReduced, PLANE_STRAIN, "4-node plane strain, reduced integration, hourglass control"},
+    {"CPE4RHT", &GeomQuad4, &TslFormReducedHybrid, PLANE_STRAIN, "4-node plane strain, reduced integration, hourglass control, hybrid"},
+    {"CPS4T", &GeomQuad4, &TslFormFull, PLANE_STRESS, "4-node plane stress"},
+    {"CPS4RT", &GeomQuad4, &TslFormReduced, PLANE_STRESS, "4-node plane stress, reduced integration, hourglass control"},
+    {"CAX4T", &GeomQuad4, &TslFormFull, AXISYMMETRIC, "4-node axisymmetric"},
+    {"CAX4RT", &GeomQuad4, &TslFormReduced, AXISYMMETRIC, "4-node axisymmetric, reduced integration, hourglass control"},
+    {"CAX4RHT", &GeomQuad4, &TslFormReducedHybrid, AXISYMMETRIC, "4-node axisymmetric, reduced integration, hourglass control, hybrid"},
+    {"C3D8T", &GeomHex8, &TslFormFull, SOLID, "8-node brick"},
+    {"C3D8RT", &GeomHex8, &TslFormReduced, SOLID, "8-node brick, reduced integration, hourglass control"},
+    {"C3D8RHT", &GeomHex8, &TslFormReducedHybrid, SOLID, "8-node brick, reduced integration, hourglass control, hybrid"},
 };
 
 PetscInt TslElementTypeCount(void)

@@ -5,12 +5,35 @@
 
 typedef struct {
   const TslElementType *type;
-  TslElementMaterial    mat;
+  TslMaterial           mat;
+  TslElementSection     sec;
   PetscReal             x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], u_old[TSL_MAX_ELEM_DOF], theta_init[TSL_MAX_ELEM_NODES];
-  TslElementInput       in;
+  TslElementInput       in, in_old;
+  PetscReal             shift; /* capacity rate factor (backward Euler 1/dt; 0 steady) */
+  PetscReal             E, nu, k, rho, c;
 } Case;
 
 static const PetscReal ALPHA = 1e-3, THETA0 = 20;
+
+static void Constant(TslPropertyTable *t, PetscReal v0, PetscReal v1)
+{
+  t->n           = 1;
+  t->value[0][0] = v0, t->value[0][1] = v1;
+}
+
+/* Every property linear in temperature between 0 and 40 (the tangent checks' temperatures lie inside). */
+static void TemperatureDependent(Case *c)
+{
+  const PetscReal f[TSL_NPROP][2] = {{0.7, 0.9}, {0.5, 0.8}, {1, 1}, {0.6, 0.7}, {0.5, 0.75}};
+  for (PetscInt k = 0; k < TSL_NPROP; k++) {
+    TslPropertyTable *t = &c->mat.prop[k];
+    t->n                = 2;
+    t->theta[0] = 0, t->theta[1] = 40;
+    t->value[1][0] = t->value[0][0] * f[k][1];
+    t->value[1][1] = t->value[0][1] * (k == TSL_PROP_ELASTIC ? 1.2 : 1);
+    t->value[0][0] *= f[k][0];
+  }
+}
 
 /* Unit element (reference element mapped onto [0,1]^dim), shifted to r in [1,2] for axisymmetry;
  * distortion > 0 moves every node by a fixed pseudo-random amount of that size. */
@@ -19,7 +42,14 @@ static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
   const TslGeometry *g = type->geom;
 
   c->type = type;
-  c->mat  = (TslElementMaterial){.E = 200e3, .nu = 0.3, .conductivity = 10, .density = 2, .specific_heat = 3, .alpha = ALPHA, .thickness = 0.5};
+  c->E = 200e3, c->nu = 0.3, c->k = 10, c->rho = 2, c->c = 3;
+  PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(&c->mat, sizeof(c->mat)));
+  Constant(&c->mat.prop[TSL_PROP_ELASTIC], c->E, c->nu);
+  Constant(&c->mat.prop[TSL_PROP_CONDUCTIVITY], c->k, 0);
+  Constant(&c->mat.prop[TSL_PROP_DENSITY], c->rho, 0);
+  Constant(&c->mat.prop[TSL_PROP_SPECIFIC_HEAT], c->c, 0);
+  Constant(&c->mat.prop[TSL_PROP_EXPANSION], ALPHA, 0);
+  c->sec = (TslElementSection){&c->mat, 0.5};
   for (PetscInt a = 0; a < g->nnode; a++) {
     for (PetscInt d = 0; d < 3; d++) {
       c->x[3 * a + d] = d < type->dim ? 0.5 * (g->node_xi[a][d] + 1) + distortion * PetscSinReal(3.1 * a + 1.3 * d + 0.7) : 0;
@@ -28,8 +58,42 @@ static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
     c->theta_init[a] = THETA0;
     for (PetscInt i = 0; i < type->ndof; i++) c->u[type->ndof * a + i] = c->u_old[type->ndof * a + i] = i == type->dim ? THETA0 : 0;
   }
-  c->in = (TslElementInput){
-      .type = type, .mat = &c->mat, .x = c->x, .u = c->u, .u_old = c->u_old, .theta_init = c->theta_init, .dt = 0.1, .steady = PETSC_TRUE};
+  c->in       = (TslElementInput){.type = type, .sec = &c->sec, .x = c->x, .u = c->u, .theta_init = c->theta_init};
+  c->in_old   = c->in;
+  c->in_old.u = c->u_old;
+  c->shift    = 0;
+}
+
+/* What the implicit solver assembles for an element: internal force and heat flow, plus
+ * shift (Q - Q_old) with the lumped heat content. */
+static PetscErrorCode Residual(Case *c, PetscReal R[], PetscReal K[], PetscBool *inv)
+{
+  const PetscInt ndof = c->type->ndof, n = c->type->geom->nnode, nd = n * ndof;
+  PetscReal      Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES];
+
+  PetscFunctionBeginUser;
+  PetscCall(TslElementInternal(&c->in, R, K, inv));
+  if (*inv || c->shift == 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(TslElementLumped(&c->in, Q, C, NULL));
+  PetscCall(TslElementLumped(&c->in_old, Qo, NULL, NULL));
+  for (PetscInt a = 0; a < n; a++) {
+    const PetscInt row = ndof * a + ndof - 1;
+    R[row] += c->shift * (Q[a] - Qo[a]);
+    if (K) K[row * nd + row] += c->shift * C[a];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* S, E, HFL of the element. */
+static PetscErrorCode Output(Case *c, PetscReal S[6], PetscReal E[6], PetscReal H[3])
+{
+  TslElementResult res;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslElementOutput(&c->in, &res));
+  for (PetscInt r = 0; r < 6; r++) S[r] = res.S[r], E[r] = res.E[r];
+  for (PetscInt d = 0; d < 3; d++) H[d] = res.HFL[d];
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscInt NDof(const Case *c)
@@ -56,7 +120,7 @@ static PetscErrorCode CheckRigidMotion(TestLog *log, Case *c)
   /* translation (axial only for axisymmetry: a radial shift strains the hoop direction) */
   for (PetscInt a = 0; a < c->type->geom->nnode; a++)
     for (PetscInt i = 0; i < dim; i++) c->u[ndof * a + i] = (c->type->kin == TSL_KIN_AXISYMMETRIC && i == 0) ? 0 : 0.01 * (i + 1);
-  PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
+  PetscCall(Residual(c, R, NULL, &inv));
   Check(log, MaxRow(c, R, PETSC_FALSE), 0, 1e-9, "%s rigid translation max|R_u|", c->type->name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -65,7 +129,7 @@ static PetscErrorCode CheckThermalPatch(TestLog *log, Case *c, PetscBool constra
 {
   const TslElementType *t   = c->type;
   const PetscInt        dim = t->dim, ndof = t->ndof;
-  const PetscReal       E = c->mat.E, nu = c->mat.nu, dT = 15;
+  const PetscReal       E = c->E, nu = c->nu, dT = 15;
   PetscReal             R[TSL_MAX_ELEM_DOF], S[6], Eps[6], H[3], Sx[6] = {0}, Ex[6] = {0}, stretch = ALPHA * dT;
   PetscBool             inv;
 
@@ -84,8 +148,8 @@ static PetscErrorCode CheckThermalPatch(TestLog *log, Case *c, PetscBool constra
     for (PetscInt i = 0; i < dim; i++) c->u[ndof * a + i] = constrained ? 0 : stretch * c->x[3 * a + i];
     c->u[ndof * a + dim] = THETA0 + dT;
   }
-  PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
-  PetscCall(TslElementOutput(&c->in, S, Eps, H));
+  PetscCall(Residual(c, R, NULL, &inv));
+  PetscCall(Output(c, S, Eps, H));
   for (PetscInt r = 0; r < 6; r++) {
     Check(log, S[r], Sx[r], 1e-9 * E * ALPHA * dT, "%s %s expansion S%" PetscInt_FMT, t->name, constrained ? "constrained" : "free", r + 1);
     Check(log, Eps[r], Ex[r], 1e-12, "%s %s expansion E%" PetscInt_FMT, t->name, constrained ? "constrained" : "free", r + 1);
@@ -107,11 +171,10 @@ static PetscErrorCode CheckLinearTemperature(TestLog *log, Case *c)
     c->u[ndof * a + dim] = 5;
     for (PetscInt d = 0; d < dim; d++) c->u[ndof * a + dim] += g[d] * c->x[3 * a + d];
   }
-  PetscCall(TslElementOutput(&c->in, S, Eps, H));
-  for (PetscInt d = 0; d < 3; d++)
-    Check(log, H[d], d < dim ? -c->mat.conductivity * g[d] : 0, 1e-10, "%s linear theta HFL%" PetscInt_FMT, c->type->name, d + 1);
+  PetscCall(Output(c, S, Eps, H));
+  for (PetscInt d = 0; d < 3; d++) Check(log, H[d], d < dim ? -c->k * g[d] : 0, 1e-10, "%s linear theta HFL%" PetscInt_FMT, c->type->name, d + 1);
   /* steady: a uniform temperature conducts nothing, and the thermal rows do not see displacement */
-  PetscCall(TslElementResidual(&c->in, R, K, &inv));
+  PetscCall(Residual(c, R, K, &inv));
   for (PetscInt i = dim; i < NDof(c); i += ndof) {
     PetscReal s = 0;
     for (PetscInt j = dim; j < NDof(c); j += ndof) s += K[i * NDof(c) + j];
@@ -130,7 +193,7 @@ static PetscReal UnitVolume(const Case *c)
   switch (c->type->kin) {
   case TSL_KIN_PLANE_STRAIN:
   case TSL_KIN_PLANE_STRESS:
-    return c->mat.thickness > 0 ? c->mat.thickness : 1;
+    return c->sec.thickness > 0 ? c->sec.thickness : 1;
   case TSL_KIN_AXISYMMETRIC:
     return 2 * PETSC_PI * 1.5;
   default:
@@ -148,21 +211,29 @@ static PetscErrorCode CheckVolumeAndHeat(TestLog *log, Case *c)
   PetscCall(TslElementNodalVolume(&c->in, vol));
   for (PetscInt a = 0; a < n; a++) V += vol[a];
   Check(log, V, UnitVolume(c), 1e-12, "%s element volume", c->type->name);
-  c->mat.thickness = 0;
+  c->sec.thickness = 0;
   PetscCall(TslElementNodalVolume(&c->in, vol));
   V = 0;
   for (PetscInt a = 0; a < n; a++) V += vol[a];
   Check(log, V, UnitVolume(c), 1e-12, "%s element volume with thickness 0 (taken as 1)", c->type->name);
-  c->mat.thickness = 0.5;
+  c->sec.thickness = 0.5;
   /* stored heat: rho c V dtheta, and the capacity part of the residual is that over dt */
   for (PetscInt a = 0; a < n; a++) c->u[ndof * a + dim] = c->u_old[ndof * a + dim] + 2;
-  PetscCall(TslElementHeatChange(&c->in, &dQ));
-  Check(log, dQ, c->mat.density * c->mat.specific_heat * UnitVolume(c) * 2, 1e-9, "%s heat change", c->type->name);
-  PetscCall(TslElementResidual(&c->in, Rs, NULL, &inv));
-  c->in.steady = PETSC_FALSE;
-  PetscCall(TslElementResidual(&c->in, Rt, NULL, &inv));
-  c->in.steady = PETSC_TRUE;
-  for (PetscInt i = dim; i < NDof(c); i += ndof) cap += (Rt[i] - Rs[i]) * c->in.dt;
+  {
+    PetscReal Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], M[TSL_MAX_ELEM_NODES], mass = 0;
+    PetscCall(TslElementLumped(&c->in, Q, NULL, M));
+    PetscCall(TslElementLumped(&c->in_old, Qo, NULL, NULL));
+    dQ = 0;
+    for (PetscInt a = 0; a < n; a++) dQ += Q[a] - Qo[a], mass += M[a];
+    Check(log, mass, c->rho * UnitVolume(c), 1e-9, "%s lumped mass", c->type->name);
+  }
+  for (PetscInt a = 0; a < n; a++) Check(log, vol[a] > 0, 1, 0, "%s lumped weight of node %" PetscInt_FMT " positive", c->type->name, a + 1);
+  Check(log, dQ, c->rho * c->c * UnitVolume(c) * 2, 1e-9, "%s heat change", c->type->name);
+  PetscCall(Residual(c, Rs, NULL, &inv));
+  c->shift = 10;
+  PetscCall(Residual(c, Rt, NULL, &inv));
+  c->shift = 0;
+  for (PetscInt i = dim; i < NDof(c); i += ndof) cap += (Rt[i] - Rs[i]) / 10;
   Check(log, cap, dQ, 1e-9, "%s capacity residual * dt = heat change", c->type->name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -176,7 +247,7 @@ static PetscErrorCode PartResidual(Case *c, PetscInt face, PetscReal R[], PetscR
 
   PetscFunctionBeginUser;
   if (face == 0)
-    PetscCall(TslElementResidual(&c->in, R, K, &inv));
+    PetscCall(Residual(c, R, K, &inv));
   else {
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     if (K)
@@ -197,7 +268,7 @@ static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face)
   PetscReal          kmax[2][2] = {{0}}, err[2][2] = {{0}};
 
   PetscFunctionBeginUser;
-  c->in.steady = PETSC_FALSE;
+  c->shift = 10;
   for (PetscInt i = 0; i < nd; i++) c->u[i] = (i % ndof == dim) ? THETA0 + 10 * PetscSinReal(1.1 * i + 0.3) : 0.01 * PetscCosReal(2.3 * i + 0.1);
   PetscCall(PartResidual(c, face, R, K));
   for (PetscInt j = 0; j < nd; j++) {
@@ -213,7 +284,7 @@ static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face)
       kmax[bi][bj] = PetscMax(kmax[bi][bj], PetscAbsReal(K[i * nd + j]));
     }
   }
-  c->in.steady = PETSC_TRUE;
+  c->shift = 0;
   for (PetscInt bi = 0; bi < 2; bi++)
     for (PetscInt bj = 0; bj < 2; bj++) {
       /* blocks that are exactly zero (theta-u; all but theta-theta for a film) compare absolutely */
@@ -247,7 +318,7 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c)
       for (PetscInt d = 0; d < 3; d++) fc[d] += c->x[3 * g->face_node[f][a] + d] / g->face_nnode[f];
     for (PetscInt d = 0; d < 3; d++) n[d] = fc[d] - cen[d], nn += n[d] * n[d];
     for (PetscInt d = 0; d < 3; d++) n[d] /= PetscSqrtReal(nn);
-    area = c->type->kin == TSL_KIN_AXISYMMETRIC ? 2 * PETSC_PI * fc[0] : (dim == 2 ? c->mat.thickness : 1);
+    area = c->type->kin == TSL_KIN_AXISYMMETRIC ? 2 * PETSC_PI * fc[0] : (dim == 2 ? c->sec.thickness : 1);
 
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_PRESSURE, f + 1, p, 0, R, NULL, NULL));
@@ -289,14 +360,14 @@ static PetscErrorCode CheckInverted(TestLog *log, Case *c)
   PetscFunctionBeginUser;
   /* mirror in the second coordinate: clockwise / left-handed numbering */
   for (PetscInt a = 0; a < c->type->geom->nnode; a++) c->x[3 * a + 1] *= -1;
-  PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
+  PetscCall(Residual(c, R, NULL, &inv));
   Check(log, inv, PETSC_TRUE, 0, "%s mirrored element reported inverted", c->type->name);
   for (PetscInt a = 0; a < c->type->geom->nnode; a++) c->x[3 * a + 1] *= -1;
-  PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
+  PetscCall(Residual(c, R, NULL, &inv));
   Check(log, inv, PETSC_FALSE, 0, "%s unit element not inverted", c->type->name);
   if (c->type->kin == TSL_KIN_AXISYMMETRIC) {
     for (PetscInt a = 0; a < c->type->geom->nnode; a++) c->x[3 * a] -= 1.5; /* r in [-0.5, 0.5] */
-    PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
+    PetscCall(Residual(c, R, NULL, &inv));
     Check(log, inv, PETSC_TRUE, 0, "%s element across the axis reported invalid", c->type->name);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -329,6 +400,10 @@ int main(int argc, char **argv)
       CaseSetUp(&c, type, 0.08);
       PetscCall(CheckTangent(&log, &c, f));
     }
+    CaseSetUp(&c, type, 0.08);
+    TemperatureDependent(&c);
+    printf("(temperature-dependent properties)\n");
+    PetscCall(CheckTangent(&log, &c, 0));
     CaseSetUp(&c, type, 0);
     PetscCall(CheckInverted(&log, &c));
   }
