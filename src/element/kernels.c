@@ -385,18 +385,17 @@ static void FacePointEvaluate(const TslElementInput *in, PetscInt face, const Ts
   fp->dA = PetscSqrtReal(fp->ndA[0] * fp->ndA[0] + fp->ndA[1] * fp->ndA[1] + fp->ndA[2] * fp->ndA[2]);
 }
 
-/* Body heat source, R_theta(a) -= int N_a q dV; returns int q dV. */
+/* Body heat source, lumped like the capacity (R_theta(a) -= q V_a, positive weights for every family);
+ * returns int q dV. */
 static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
 {
-  const TslGeometry *g    = in->type->geom;
-  const PetscInt     ndof = in->type->ndof, th = ndof - 1;
-  PetscReal          heat = 0;
-  TslElementPoint    p;
+  const PetscInt ndof = in->type->ndof, th = ndof - 1;
+  PetscReal      heat = 0, vol[TSL_MAX_ELEM_NODES];
 
-  for (PetscInt i = 0; i < g->full.n; i++) {
-    (void)TslElementPointEvaluate(in->type, in->sec, in->x, g->full.xi[i], g->full.w[i], &p);
-    for (PetscInt a = 0; a < g->nnode; a++) R[ndof * a + th] -= p.N[a] * q * p.dV;
-    heat += q * p.dV;
+  if (!in->type->form->nodal_volume(in, vol)) return 0;
+  for (PetscInt a = 0; a < in->type->geom->nnode; a++) {
+    R[ndof * a + th] -= q * vol[a];
+    heat += q * vol[a];
   }
   return heat;
 }
@@ -406,7 +405,7 @@ static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
  *   flux q into the body:                       R_theta(a) -= int N_a q dA,            heat = int q dA
  *   film h, sink:                               R_theta(a) += int N_a h (theta - sink) dA,
  *                                               K_ab       += int h N_a N_b dA,        heat = -int h (theta - sink) dA
- *   body flux q per volume:                     R_theta(a) -= int N_a q dV,            heat = int q dV
+ *   body flux q per volume:                     R_theta(a) -= q V_a (lumped),          heat = int q dV
  * The points are the formulation's face rule (the face family's own rule, or the linear sub-faces of a
  * modified element, whose nodal weights are all positive). */
 PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],

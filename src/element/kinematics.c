@@ -56,6 +56,14 @@ PetscBool TslElementTypeSameKinematics(const TslElementType *a, const TslElement
   return a->kin == b->kin ? PETSC_TRUE : PETSC_FALSE;
 }
 
+PetscBool TslElementTypeSameModel(const TslElementType *a, const TslElementType *b)
+{
+  if (a->ndof != b->ndof || KinematicsTable[a->kin].revolve != KinematicsTable[b->kin].revolve) return PETSC_FALSE;
+  for (PetscInt i = 0; i < a->ndof; i++)
+    if (a->node_dof[i] != b->node_dof[i]) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
 PetscInt TslElementTypeRigidModes(const TslElementType *t, const PetscReal x[3], PetscReal modes[6][3])
 {
   for (PetscInt m = 0; m < 6; m++)

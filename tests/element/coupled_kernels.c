@@ -35,7 +35,16 @@ static void TemperatureDependent(Case *c)
   }
 }
 
-/* Unit element (reference element mapped onto [0,1]^dim), shifted to r in [1,2] for axisymmetry;
+/* Reference coordinate d of node a mapped onto [0, 1]: the [-1, 1] directions are halved, the simplex
+ * directions kept. */
+static PetscReal UnitCoordinate(const TslGeometry *g, PetscInt a, PetscInt d)
+{
+  PetscReal lo = 0;
+  for (PetscInt b = 0; b < g->nnode; b++) lo = PetscMin(lo, g->node_xi[b][d]);
+  return lo < 0 ? 0.5 * (g->node_xi[a][d] + 1) : g->node_xi[a][d];
+}
+
+/* Unit element (reference element mapped onto [0,1] in every direction), shifted to r in [1,2] for axisymmetry;
  * distortion > 0 moves every node by a fixed pseudo-random amount of that size. */
 static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
 {
@@ -51,9 +60,7 @@ static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
   Constant(&c->mat.prop[TSL_PROP_EXPANSION], ALPHA, 0);
   c->sec = (TslElementSection){&c->mat, 0.5};
   for (PetscInt a = 0; a < g->nnode; a++) {
-    for (PetscInt d = 0; d < 3; d++) {
-      c->x[3 * a + d] = d < type->dim ? 0.5 * (g->node_xi[a][d] + 1) + distortion * PetscSinReal(3.1 * a + 1.3 * d + 0.7) : 0;
-    }
+    for (PetscInt d = 0; d < 3; d++) c->x[3 * a + d] = d < type->dim ? UnitCoordinate(g, a, d) + distortion * PetscSinReal(3.1 * a + 1.3 * d + 0.7) : 0;
     if (type->kin == TSL_KIN_AXISYMMETRIC) c->x[3 * a] += 1;
     c->theta_init[a] = THETA0;
     for (PetscInt i = 0; i < type->ndof; i++) c->u[type->ndof * a + i] = c->u_old[type->ndof * a + i] = i == type->dim ? THETA0 : 0;
@@ -187,17 +194,49 @@ static PetscErrorCode CheckLinearTemperature(TestLog *log, Case *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Expected measure of the unit element: thickness 0.5 in plane, 2 pi * 1.5 for r in [1,2]. */
+/* Expected volume of the undistorted unit element: its area (or volume) times the thickness 0.5 in plane,
+ * or 2 pi r_c with r_c the centroid radius (the mean of the corners for these shapes). */
 static PetscReal UnitVolume(const Case *c)
 {
+  const TslGeometry *g = c->type->geom;
+  PetscReal          V = g->ref_volume, rc = 0;
+
+  for (PetscInt d = 0; d < g->dim; d++) {
+    PetscReal lo = 0;
+    for (PetscInt b = 0; b < g->nnode; b++) lo = PetscMin(lo, g->node_xi[b][d]);
+    if (lo < 0) V *= 0.5;
+  }
+  for (PetscInt a = 0; a < g->ncorner; a++) rc += c->x[3 * a] / g->ncorner;
   switch (c->type->kin) {
   case TSL_KIN_PLANE_STRAIN:
   case TSL_KIN_PLANE_STRESS:
-    return c->sec.thickness > 0 ? c->sec.thickness : 1;
+    return V * (c->sec.thickness > 0 ? c->sec.thickness : 1);
   case TSL_KIN_AXISYMMETRIC:
-    return 2 * PETSC_PI * 1.5;
+    return V * 2 * PETSC_PI * rc;
   default:
-    return 1;
+    return V;
+  }
+}
+
+/* Outward area vector of a flat face from its corners (2D: the edge times thickness or 2 pi r at its
+ * middle; 3D: half the sum of the corners' cross products). */
+static void FaceAreaVector(const Case *c, PetscInt f, PetscReal A[3])
+{
+  const TslGeometry *g = c->type->geom, *fg = g->face_geom[f];
+  const PetscInt    *fn = g->face_node[f], nc = fg->ncorner;
+
+  for (PetscInt d = 0; d < 3; d++) A[d] = 0;
+  if (c->type->dim == 2) {
+    const PetscReal *p = &c->x[3 * fn[0]], *q = &c->x[3 * fn[1]];
+    const PetscReal  m = c->type->kin == TSL_KIN_AXISYMMETRIC ? 2 * PETSC_PI * 0.5 * (p[0] + q[0]) : c->sec.thickness;
+    A[0] = (q[1] - p[1]) * m, A[1] = -(q[0] - p[0]) * m;
+    return;
+  }
+  for (PetscInt i = 0; i < nc; i++) {
+    const PetscReal *p = &c->x[3 * fn[i]], *q = &c->x[3 * fn[(i + 1) % nc]];
+    A[0] += 0.5 * (p[1] * q[2] - p[2] * q[1]);
+    A[1] += 0.5 * (p[2] * q[0] - p[0] * q[2]);
+    A[2] += 0.5 * (p[0] * q[1] - p[1] * q[0]);
   }
 }
 
@@ -311,21 +350,15 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c)
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < g->nnode; a++) c->u[ndof * a + dim] = theta;
   for (PetscInt f = 0; f < g->nface; f++) {
-    PetscReal cen[3] = {0, 0, 0}, fc[3] = {0, 0, 0}, n[3], nn = 0, area, force[3] = {0, 0, 0}, sumt = 0;
-    for (PetscInt a = 0; a < g->nnode; a++)
-      for (PetscInt d = 0; d < 3; d++) cen[d] += c->x[3 * a + d] / g->nnode;
-    for (PetscInt a = 0; a < g->face_nnode[f]; a++)
-      for (PetscInt d = 0; d < 3; d++) fc[d] += c->x[3 * g->face_node[f][a] + d] / g->face_nnode[f];
-    for (PetscInt d = 0; d < 3; d++) n[d] = fc[d] - cen[d], nn += n[d] * n[d];
-    for (PetscInt d = 0; d < 3; d++) n[d] /= PetscSqrtReal(nn);
-    area = c->type->kin == TSL_KIN_AXISYMMETRIC ? 2 * PETSC_PI * fc[0] : (dim == 2 ? c->sec.thickness : 1);
-
+    PetscReal Avec[3], area, force[3] = {0, 0, 0}, sumt = 0;
+    FaceAreaVector(c, f, Avec);
+    area = PetscSqrtReal(Avec[0] * Avec[0] + Avec[1] * Avec[1] + Avec[2] * Avec[2]);
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_PRESSURE, f + 1, p, 0, R, NULL, NULL));
     for (PetscInt a = 0; a < g->nnode; a++)
       for (PetscInt i = 0; i < dim; i++) force[i] -= R[ndof * a + i];
     for (PetscInt i = 0; i < dim; i++)
-      Check(log, force[i], -p * area * n[i], 1e-12, "%s S%" PetscInt_FMT " pressure force %" PetscInt_FMT, c->type->name, f + 1, i + 1);
+      Check(log, force[i], -p * Avec[i], 1e-12, "%s S%" PetscInt_FMT " pressure force %" PetscInt_FMT, c->type->name, f + 1, i + 1);
 
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_FLUX, f + 1, q, 0, R, NULL, &heat));
@@ -349,6 +382,60 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c)
     Check(log, R[ndof * a + dim], -q * vol[a], 1e-12, "%s body flux on node %" PetscInt_FMT, c->type->name, a + 1);
   }
   Check(log, heat, q * V, 1e-12, "%s body flux heat", c->type->name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Second-order types under a linear temperature theta = THETA0 + g.x (free expansion): the stress-free
+ * displacement is quadratic, u_i = s [(g.x) x_i - g_i |x|^2 / 2] with s = alpha (3D, plane stress) or
+ * (1 + nu) alpha (plane strain, in-plane); axisymmetric with g along z only (u_r = s g z r,
+ * u_z = s g (z^2 - r^2) / 2). The element must reproduce it exactly: no force, no in-plane stress. */
+static PetscErrorCode CheckQuadraticExpansion(TestLog *log, Case *c)
+{
+  const TslElementType *t   = c->type;
+  const PetscInt        dim = t->dim, ndof = t->ndof;
+  PetscReal             g[3] = {0.4, -0.3, 0.2}, R[TSL_MAX_ELEM_DOF], S[6], Eps[6], H[3], s = ALPHA, smax = 0;
+  PetscBool             inv;
+
+  PetscFunctionBeginUser;
+  if (t->kin == TSL_KIN_AXISYMMETRIC) g[0] = 0;
+  if (t->kin == TSL_KIN_PLANE_STRAIN) s *= 1 + c->nu;
+  for (PetscInt a = 0; a < t->geom->nnode; a++) {
+    const PetscReal *x = &c->x[3 * a];
+    PetscReal        gx = 0, xx = 0;
+    for (PetscInt d = 0; d < dim; d++) gx += g[d] * x[d], xx += x[d] * x[d];
+    for (PetscInt i = 0; i < dim; i++) c->u[ndof * a + i] = s * (gx * x[i] - 0.5 * g[i] * xx);
+    c->u[ndof * a + ndof - 1] = THETA0 + gx;
+  }
+  PetscCall(Residual(c, R, NULL, &inv));
+  PetscCall(Output(c, S, Eps, H));
+  for (PetscInt r = 0; r < 6; r++)
+    if (!(t->kin == TSL_KIN_PLANE_STRAIN && r == 2)) smax = PetscMax(smax, PetscAbsReal(S[r]));
+  Check(log, MaxRow(c, R, PETSC_FALSE) / (c->E * ALPHA), 0, 1e-10, "%s quadratic free expansion under linear theta max|R_u| / (E alpha)", t->name);
+  Check(log, smax / (c->E * ALPHA), 0, 1e-10, "%s quadratic free expansion max|S| / (E alpha)", t->name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A uniform pressure must push every node of the face inward (positive nodal forces), which contact and
+ * lumped loads rely on; the plain tet10 face would give zero corner forces. */
+static PetscErrorCode CheckPositivePressure(TestLog *log, Case *c)
+{
+  const TslGeometry *g = c->type->geom;
+  const PetscInt     dim = c->type->dim, ndof = c->type->ndof, nd = NDof(c);
+  PetscReal          R[TSL_MAX_ELEM_DOF];
+
+  PetscFunctionBeginUser;
+  for (PetscInt f = 0; f < g->nface; f++) {
+    PetscReal A[3], worst = PETSC_MAX_REAL;
+    FaceAreaVector(c, f, A);
+    for (PetscInt i = 0; i < nd; i++) R[i] = 0;
+    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_PRESSURE, f + 1, 1.0, 0, R, NULL, NULL));
+    for (PetscInt k = 0; k < g->face_nnode[f]; k++) {
+      PetscReal fn = 0;
+      for (PetscInt i = 0; i < dim; i++) fn += R[ndof * g->face_node[f][k] + i] * A[i];
+      worst = PetscMin(worst, fn);
+    }
+    Check(log, worst > 0, 1, 0, "%s S%" PetscInt_FMT " uniform pressure pushes every face node inward", c->type->name, f + 1);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -404,6 +491,12 @@ int main(int argc, char **argv)
     TemperatureDependent(&c);
     printf("(temperature-dependent properties)\n");
     PetscCall(CheckTangent(&log, &c, 0));
+    CaseSetUp(&c, type, 0);
+    PetscCall(CheckPositivePressure(&log, &c));
+    if (type->geom->order == 2) {
+      CaseSetUp(&c, type, 0);
+      PetscCall(CheckQuadraticExpansion(&log, &c));
+    }
     CaseSetUp(&c, type, 0);
     PetscCall(CheckInverted(&log, &c));
   }

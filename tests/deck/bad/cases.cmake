@@ -80,3 +80,6 @@ tsl_deck_bad(generate_near_max generate_near_max.inp "error: generate_near_max.i
 tsl_deck_bad(node_id_negative node_id_negative.inp "error: node_id_negative.inp:5: the node id must be a positive integer, got '-4'")
 tsl_deck_bad(boundary_node_zero boundary_node_zero.inp "error: boundary_node_zero.inp:24: an id must be a positive integer, got '0'")
 tsl_deck_bad(collapsed_coordinates collapsed_coordinates.inp "error: collapsed_coordinates.inp:9: element 1: nodes 2 and 3 are at the same place (a collapsed element; not supported)")
+tsl_deck_bad(mixed_kinematics mixed_kinematics.inp "error: mixed_kinematics.inp:12: element 2 (CPS4T, plane stress) shares node 2 with element 1 (CPE4T, plane strain) at mixed_kinematics.inp:10: one body, one kinematics")
+tsl_deck_bad(mixed_axisymmetric mixed_axisymmetric.inp "error: mixed_axisymmetric.inp:14: element 2 (CAX4T, axisymmetric) cannot be in one model with element 1 (CPE4T, plane strain) at mixed_axisymmetric.inp:12")
+tsl_deck_bad(wrong_node_count_quadratic wrong_node_count_quadratic.inp "error: wrong_node_count_quadratic.inp:7: element has 4 nodes but type CPE8T needs 8")
