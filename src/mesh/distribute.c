@@ -268,7 +268,11 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
   PetscFunctionBeginUser;
   PetscCall(TslModelIndex(g));
   PetscCall(PrepareContactPairs(g));
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-tsl_partition", method, sizeof(method), NULL));
+  /* rank 0 alone partitions, so the options block is its own (-help lists it) */
+  PetscOptionsBegin(PETSC_COMM_SELF, NULL, "thermoslide mesh partition", NULL);
+  PetscCall(PetscOptionsString("-tsl_partition", "element partition: metis, or slabs by element centroid axis_x|axis_y|axis_z", NULL, method, method,
+                               sizeof(method), NULL));
+  PetscOptionsEnd();
   PetscCheck(g->nelem >= size, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "the model has %" PetscInt_FMT " elements, fewer than the %d ranks", g->nelem,
              (int)size);
   PetscCall(PetscMalloc4(g->nelem, &epart, g->nnode, &owner, g->nnode, &gnum, g->nnode, &node_nat));
