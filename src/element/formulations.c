@@ -152,7 +152,7 @@ static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMat
 {
   const TslElementType *t   = in->type;
   const TslGeometry    *g   = t->geom;
-  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, n = g->nnode, nd = n * ndof;
+  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof;
   const PetscReal       xi0[3] = {0, 0, 0};
   TslElementPoint       p;
   PetscReal             gamma[4][TSL_MAX_ELEM_NODES], bb = 0, kappa, dkappa, mu, dmu;
@@ -188,16 +188,18 @@ static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMat
   dkappa  = TSL_HOURGLASS_SCALE * dmu * p.dV * bb;
   *energy = 0;
   for (PetscInt k = 0; k < nh; k++)
-    for (PetscInt i = 0; i < dim; i++) {
-      PetscReal qk = 0;
+    for (PetscInt i = 0; i < nu; i++) {
+      /* a twist unknown is an angle: its hourglass displacement is r phi (r at the centre) */
+      const PetscReal s  = i < dim ? 1 : p.x[0] * p.x[0];
+      PetscReal       qk = 0;
       for (PetscInt a = 0; a < n; a++) qk += gamma[k][a] * in->u[ndof * a + i];
-      *energy += 0.5 * kappa * qk * qk;
+      *energy += 0.5 * s * kappa * qk * qk;
       for (PetscInt a = 0; a < n; a++) {
-        R[ndof * a + i] += kappa * gamma[k][a] * qk;
+        R[ndof * a + i] += s * kappa * gamma[k][a] * qk;
         if (!K) continue;
         for (PetscInt b = 0; b < n; b++) {
-          K[(ndof * a + i) * nd + ndof * b + i] += kappa * gamma[k][a] * gamma[k][b];
-          K[(ndof * a + i) * nd + ndof * b + th] += dkappa * gamma[k][a] * qk * p.N[b];
+          K[(ndof * a + i) * nd + ndof * b + i] += s * kappa * gamma[k][a] * gamma[k][b];
+          K[(ndof * a + i) * nd + ndof * b + th] += s * dkappa * gamma[k][a] * qk * p.N[b];
         }
       }
     }
