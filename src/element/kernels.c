@@ -145,7 +145,7 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
   const TslQuadrature  *quad = t->form->quadrature(g);
   const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof, ncol = n * nu;
   const PetscBool       hybrid      = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
-  PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0}, vol_avg = 0;
+  PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
   MechPoint             mq;
 
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
@@ -175,9 +175,8 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
           hy->dg0[b][k] += P[k] * 3 * mq.deps_th * mq.p.N[b] * mq.p.dV;
           for (PetscInt l = 0; l < hy->np; l++) hy->dH[b][k][l] -= P[k] * P[l] * dkb / (kb * kb) * mq.p.N[b] * mq.p.dV;
         }
-        P_avg[k] += P[k] * mq.p.dV;
+        P_avg[k] += P[k] / quad->n;
       }
-      vol_avg += mq.p.dV;
     } else {
       TslElementElasticity(t, &mq.mp, D, dD);
       for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r] - VoigtM[r] * mq.eps_th;
@@ -196,7 +195,7 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
       for (PetscInt r = 0; r < 6; r++) {
         res->E[r] += mq.eps[r] / quad->n;
         if (hybrid)
-          sdev_avg[r] += sig[r] * mq.p.dV;
+          sdev_avg[r] += sig[r] / quad->n;
         else
           res->S[r] += sig[r] / quad->n;
       }
@@ -244,8 +243,8 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
         for (PetscInt k = 0; k < np; k++) R[ndof * a + i] += hy->G[nu * a + i][k] * hy->p[k];
     if (res) {
       PetscReal pm = 0, vol_energy = 0;
-      for (PetscInt k = 0; k < np; k++) pm += hy->p[k] * P_avg[k] / vol_avg;
-      for (PetscInt r = 0; r < 6; r++) res->S[r] = sdev_avg[r] / vol_avg + VoigtM[r] * pm;
+      for (PetscInt k = 0; k < np; k++) pm += hy->p[k] * P_avg[k];
+      for (PetscInt r = 0; r < 6; r++) res->S[r] = sdev_avg[r] + VoigtM[r] * pm; /* point averages, as for the other formulations */
       /* volumetric energy: 1/2 p_hat^T H p_hat */
       for (PetscInt k = 0; k < np; k++)
         for (PetscInt l = 0; l < np; l++) vol_energy += 0.5 * hy->p[k] * hy->H[k][l] * hy->p[l];

@@ -243,9 +243,20 @@ static PetscErrorCode Locking(TestLog *log)
     }
     printf("  %-8s %-47s %17.4f %13.4f %19.4f\n", t->name, TslElementTypeFormulationName(t), (double)(r[0].deflection / r[0].reference),
            (double)(r[1].deflection / r[1].reference), (double)(r[2].deflection / r[2].reference));
-    if (t->form->pressure) {
+    if (t->form->pressure && t->form->hourglass) {
+      /* one mechanical point: two layers miss the in-element bending share (1/n^2 of the energy) whatever
+       * the volumetric treatment, so the absolute accuracy is asked of four layers; the ratio below, on
+       * two layers, is what isolates volumetric locking */
+      const Beam b4 = {{8, 4, 1}, 0.4999, PETSC_TRUE, PETSC_FALSE};
+      BeamResult r4;
+      PetscCall(Cantilever(t, &b4, PETSC_FALSE, &r4));
+      printf("  %-8s 8 x 4 cells, nu=0.4999: tip/beam %.4f\n", t->name, (double)(r4.deflection / r4.reference));
+      Check(log, r4.deflection / r4.reference, 1, 0.10, "%s (hybrid, one point) 8 x 4 cells nu=0.4999 tip deflection / beam", t->name);
+    } else if (t->form->pressure) {
       const PetscReal tol = t->geom->order > 1 ? 0.05 : 0.10;
       Check(log, r[1].deflection / r[1].reference, 1, tol, "%s (hybrid) nu=0.4999 tip deflection / beam", t->name);
+    }
+    if (t->form->pressure) {
       Check(log, (r[1].deflection / r[1].reference) / (r[0].deflection / r[0].reference), 1, 0.10,
             "%s (hybrid) tip/beam nu=0.4999 over tip/beam nu=0.3 (no volumetric locking)", t->name);
     }
@@ -264,6 +275,7 @@ static PetscErrorCode Hourglass(TestLog *log)
     const TslElementType *t = TslElementTypeGet(ti);
 
     if (!t->form->hourglass) continue;
+    if (t->kin == TSL_KIN_AXISYMMETRIC_TWIST) continue; /* the same in-plane hourglass control as CAX4RT; the twist part is checked in element_coupled_kernels */
     for (PetscInt fine = 0; fine < 2; fine++) {
       const Beam b = {{fine ? 16 : 6, fine ? 4 : 2, fine ? 2 : 1}, 0.3, PETSC_FALSE, PETSC_FALSE};
       BeamResult r;

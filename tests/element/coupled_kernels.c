@@ -451,6 +451,25 @@ static PetscErrorCode CheckPositivePressure(TestLog *log, Case *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Uniform torsion of a twist element: phi = c z (u_theta = c r z) is an equilibrium state without body
+ * force, with gamma_z-theta = c r and nothing else: S23 = mu c r averaged over the points (the centroid
+ * radius for these symmetric rules), every other stress zero. */
+static PetscErrorCode CheckTorsion(TestLog *log, Case *c)
+{
+  const TslElementType *t = c->type;
+  const PetscInt        ndof = t->ndof;
+  const PetscReal       cz = 0.01, mu = c->E / (2 * (1 + c->nu));
+  PetscReal             S[6], Eps[6], H[3], rbar = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < t->geom->nnode; a++) c->u[ndof * a + 2] = cz * c->x[3 * a + 1];
+  for (PetscInt a = 0; a < t->geom->ncorner; a++) rbar += c->x[3 * a] / t->geom->ncorner;
+  PetscCall(Output(c, S, Eps, H));
+  for (PetscInt r = 0; r < 6; r++)
+    Check(log, S[r], r == 5 ? mu * cz * rbar : 0, 1e-9 * mu * cz * rbar, "%s uniform torsion S%" PetscInt_FMT, t->name, r + 1);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckInverted(TestLog *log, Case *c)
 {
   PetscReal R[TSL_MAX_ELEM_DOF];
@@ -503,6 +522,10 @@ int main(int argc, char **argv)
     TemperatureDependent(&c);
     printf("(temperature-dependent properties)\n");
     PetscCall(CheckTangent(&log, &c, 0));
+    if (type->kin == TSL_KIN_AXISYMMETRIC_TWIST) {
+      CaseSetUp(&c, type, 0);
+      PetscCall(CheckTorsion(&log, &c));
+    }
     CaseSetUp(&c, type, 0);
     PetscCall(CheckPositivePressure(&log, &c));
     if (type->geom->order == 2) {
