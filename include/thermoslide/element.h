@@ -63,7 +63,15 @@ typedef struct TslGeometry {
   PetscInt                  sub_node[TSL_MAX_SUB][TSL_MAX_SUB_NODES];
 } TslGeometry;
 
-typedef enum { TSL_KIN_PLANE_STRAIN = 0, TSL_KIN_PLANE_STRESS, TSL_KIN_AXISYMMETRIC, TSL_KIN_AXISYMMETRIC_TWIST, TSL_KIN_SOLID3D, TSL_NKIN } TslKinematics;
+typedef enum {
+  TSL_KIN_PLANE_STRAIN = 0,
+  TSL_KIN_PLANE_STRESS,
+  TSL_KIN_GENERALIZED_PLANE_STRAIN,
+  TSL_KIN_AXISYMMETRIC,
+  TSL_KIN_AXISYMMETRIC_TWIST,
+  TSL_KIN_SOLID3D,
+  TSL_NKIN
+} TslKinematics;
 
 #define TSL_MAX_NODE_DOF 4
 
@@ -83,7 +91,9 @@ typedef struct {
   TslKinematics kin;
   PetscInt      dim;                        /* spatial dimension of the model (2 or 3) */
   PetscInt      ndof;                       /* unknowns per node */
-  PetscInt      node_dof[TSL_MAX_NODE_DOF]; /* the dialect's dof number of each nodal unknown: 1..3, 11 */
+  PetscInt      node_dof[TSL_MAX_NODE_DOF]; /* the dialect's dof number of each nodal unknown: 1..3, 5, 11; 0 unused */
+  PetscInt      nextra;                     /* extra nodes at the end of the element's node list (CPEG: the reference node) */
+  PetscInt      extra_dof[TSL_MAX_NODE_DOF]; /* the dialect's dofs of the extra node's slots (CPEG: 3, 4, 5), 0 unused */
   const char   *description;                /* for docs and -help */
 } TslElementType;
 
@@ -121,7 +131,9 @@ typedef struct {
  * solver's business, src/solve/):
  *   x[nnode*3]        reference coordinates (z = 0 in 2D)
  *   u[nnode*ndof]     current nodal unknowns, node-major in the type's node_dof order (theta last)
- *   theta_init[nnode] initial temperatures (the thermal strain's reference) */
+ *   theta_init[nnode] initial temperatures (the thermal strain's reference)
+ * nnode counts the type's extra nodes too (geom->nnode + nextra; CPEG: the reference node last, whose
+ * slots carry extra_dof); element vectors have nd = nnode * ndof entries. */
 typedef struct {
   const TslElementType    *type;
   const TslElementSection *sec;
@@ -133,6 +145,11 @@ typedef struct {
  * may be NULL). No capacity and no inertia: those come from TslElementLumped. *inverted is set when the
  * map is not valid at some point (R, K then undefined). */
 PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted);
+/* Nodes of the element's vectors: the family's nodes and the type's extra nodes. */
+static inline PetscInt TslElementTypeNodes(const TslElementType *t)
+{
+  return t->geom->nnode + t->nextra;
+}
 
 /* Lumped nodal quantities of the element at its current temperatures:
  *   Q[a] heat content  rho V_a e(theta_a)  (material.h: e = int c dtheta)

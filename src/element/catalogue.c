@@ -10,13 +10,15 @@
 /* ---- deck types -------------------------------------------------------------------------------- */
 
 /* The kinematics of a row and what follows from it: kinematics, model dimension, unknowns per node and
- * their dialect dof numbers. */
+ * their dialect dof numbers (0: a slot the kinematics does not use, held at zero), the extra nodes and their
+ * dofs (generalized plane strain: the section's reference node, dofs 3, 4, 5). */
 // clang-format off
-#define PLANE_STRAIN TSL_KIN_PLANE_STRAIN, 2, 3, {1, 2, 11}
-#define PLANE_STRESS TSL_KIN_PLANE_STRESS, 2, 3, {1, 2, 11}
-#define AXISYMMETRIC TSL_KIN_AXISYMMETRIC, 2, 3, {1, 2, 11}
-#define AXITWIST     TSL_KIN_AXISYMMETRIC_TWIST, 2, 4, {1, 2, 5, 11}
-#define SOLID        TSL_KIN_SOLID3D, 3, 4, {1, 2, 3, 11}
+#define PLANE_STRAIN TSL_KIN_PLANE_STRAIN, 2, 3, {1, 2, 11}, 0, {0}
+#define PLANE_STRESS TSL_KIN_PLANE_STRESS, 2, 3, {1, 2, 11}, 0, {0}
+#define GENPLANE     TSL_KIN_GENERALIZED_PLANE_STRAIN, 2, 4, {1, 2, 0, 11}, 1, {3, 4, 5, 0}
+#define AXISYMMETRIC TSL_KIN_AXISYMMETRIC, 2, 3, {1, 2, 11}, 0, {0}
+#define AXITWIST     TSL_KIN_AXISYMMETRIC_TWIST, 2, 4, {1, 2, 5, 11}, 0, {0}
+#define SOLID        TSL_KIN_SOLID3D, 3, 4, {1, 2, 3, 11}, 0, {0}
 
 static const TslElementType Catalogue[] = {
     {"CPE3T",   &TslGeomTri3,   &TslFormFull,           PLANE_STRAIN, "3-node plane strain"},
@@ -27,6 +29,12 @@ static const TslElementType Catalogue[] = {
     {"CPE6MHT", &TslGeomTri6,   &TslFormModifiedHybrid, PLANE_STRAIN, "6-node modified second-order plane strain, hybrid"},
     {"CPE8T",   &TslGeomQuad8,  &TslFormFull,           PLANE_STRAIN, "8-node plane strain"},
     {"CPE8HT",  &TslGeomQuad8,  &TslFormHybrid,         PLANE_STRAIN, "8-node plane strain, hybrid"},
+    {"CPEG4T",   &TslGeomQuad4, &TslFormFull,           GENPLANE,     "4-node generalized plane strain"},
+    {"CPEG4RT",  &TslGeomQuad4, &TslFormReduced,        GENPLANE,     "4-node generalized plane strain, reduced integration, hourglass control"},
+    {"CPEG4RHT", &TslGeomQuad4, &TslFormReducedHybrid,  GENPLANE,     "4-node generalized plane strain, reduced integration, hourglass control, hybrid"},
+    {"CPEG6MT",  &TslGeomTri6,  &TslFormModified,       GENPLANE,     "6-node modified second-order generalized plane strain"},
+    {"CPEG6MHT", &TslGeomTri6,  &TslFormModifiedHybrid, GENPLANE,     "6-node modified second-order generalized plane strain, hybrid"},
+    {"CPEG8T",   &TslGeomQuad8, &TslFormFull,           GENPLANE,     "8-node generalized plane strain"},
     {"CPS3T",   &TslGeomTri3,   &TslFormFull,           PLANE_STRESS, "3-node plane stress"},
     {"CPS4T",   &TslGeomQuad4,  &TslFormFull,           PLANE_STRESS, "4-node plane stress"},
     {"CPS4RT",  &TslGeomQuad4,  &TslFormReduced,        PLANE_STRESS, "4-node plane stress, reduced integration, hourglass control"},

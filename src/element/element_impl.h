@@ -17,6 +17,7 @@ struct TslKinematicsRow {
   PetscBool   revolve;     /* dV = 2 pi r dA */
   PetscBool   thickness;   /* dV = t dA (plane elements) */
   PetscBool   twist;       /* a third displacement unknown, the twist phi about the axis (u_theta = r phi) */
+  PetscBool   reference;   /* eps_33 from the reference node (generalized plane strain) */
   PetscInt (*rigid_modes)(const PetscReal x[3], PetscReal modes[6][3]);
 };
 
@@ -38,7 +39,8 @@ PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementSe
                                   TslElementPoint *p);
 
 /* Voigt strain-displacement matrix B[6][nnode*dim] (engineering shear) at a point. */
-void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p, PetscReal B[6][TSL_MAX_ELEM_NODES * 3]);
+void TslElementStrainMatrix(const TslElementType *type, const TslElementSection *sec, const PetscReal x[], const TslElementPoint *p,
+                            PetscReal B[6][TSL_MAX_ELEM_NODES * 3]);
 
 /* Elasticity of the kinematics at a material point: D[6][6] (plane stress: condensed so that
  * sigma_33 = 0) and its derivative dD in theta (NULL: not wanted). */

@@ -154,7 +154,8 @@ static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMat
 {
   const TslElementType *t   = in->type;
   const TslGeometry    *g   = t->geom;
-  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof;
+  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = TslElementTypeNodes(t) * ndof;
+  const PetscBool       twist = TslKinematicsRowGet(t->kin)->twist;
   const PetscReal       xi0[3] = {0, 0, 0};
   TslElementPoint       p;
   PetscReal             gamma[4][TSL_MAX_ELEM_NODES], bb = 0, kappa, dkappa, mu, dmu;
@@ -196,6 +197,7 @@ static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMat
       /* a twist unknown is an angle: its hourglass displacement is r phi (r at the centre) */
       const PetscReal s  = i < dim ? 1 : p.x[0] * p.x[0];
       PetscReal       qk = 0;
+      if (i >= dim && !twist) continue; /* an unused slot (generalized plane strain) */
       for (PetscInt a = 0; a < n; a++) qk += gamma[k][a] * in->u[ndof * a + i];
       *energy += 0.5 * s * kappa * qk * qk;
       for (PetscInt a = 0; a < n; a++) {

@@ -32,7 +32,7 @@ static PetscBool Conduction(const TslElementInput *in, PetscReal R[], PetscReal 
 {
   const TslElementType *t   = in->type;
   const TslGeometry    *g   = t->geom;
-  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, n = g->nnode, nd = n * ndof;
+  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, n = g->nnode, nd = TslElementTypeNodes(t) * ndof;
   TslElementPoint       p;
 
   for (PetscInt q = 0; q < g->full.n; q++) {
@@ -70,11 +70,11 @@ typedef struct {
 static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi[], PetscReal w, MechPoint *mq)
 {
   const TslElementType *t   = in->type;
-  const PetscInt        ndof = t->ndof, nu = ndof - 1, n = t->geom->nnode;
+  const PetscInt        ndof = t->ndof, nu = ndof - 1, n = TslElementTypeNodes(t);
   PetscReal             theta;
 
   if (!TslElementPointEvaluate(t, in->sec, in->x, xi, w, &mq->p)) return PETSC_FALSE;
-  TslElementStrainMatrix(t, &mq->p, mq->B);
+  TslElementStrainMatrix(t, in->sec, in->x, &mq->p, mq->B);
   for (PetscInt r = 0; r < 6; r++) {
     mq->eps[r] = 0;
     for (PetscInt a = 0; a < n; a++)
@@ -143,7 +143,7 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
   const TslElementType *t    = in->type;
   const TslGeometry    *g    = t->geom;
   const TslQuadrature  *quad = t->form->quadrature(g);
-  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof, ncol = n * nu;
+  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
   const PetscBool       hybrid      = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
   PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
   MechPoint             mq;
@@ -188,7 +188,7 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
         dsig[r] += dD[r][s] * emech[s] - (hybrid ? 0 : D[r][s] * VoigtM[s] * mq.deps_th);
       }
     }
-    for (PetscInt a = 0; a < n; a++)
+    for (PetscInt a = 0; a < nv; a++)
       for (PetscInt i = 0; i < nu; i++)
         for (PetscInt r = 0; r < 6; r++) R[ndof * a + i] += mq.B[r][nu * a + i] * sig[r] * mq.p.dV;
     if (res) {
@@ -210,18 +210,18 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
         DB[r][c] = 0;
         for (PetscInt s = 0; s < 6; s++) DB[r][c] += D[r][s] * mq.B[s][c];
       }
-    for (PetscInt a = 0; a < n; a++)
+    for (PetscInt a = 0; a < nv; a++)
       for (PetscInt i = 0; i < nu; i++) {
         const PetscInt row = ndof * a + i;
         PetscReal      Bds = 0;
         for (PetscInt r = 0; r < 6; r++) Bds += mq.B[r][nu * a + i] * dsig[r];
-        for (PetscInt b = 0; b < n; b++) {
+        for (PetscInt b = 0; b < nv; b++) {
           for (PetscInt j = 0; j < nu; j++) {
             PetscReal kij = 0;
             for (PetscInt r = 0; r < 6; r++) kij += mq.B[r][nu * a + i] * DB[r][nu * b + j];
             K[row * nd + ndof * b + j] += kij * mq.p.dV;
           }
-          K[row * nd + ndof * b + th] += Bds * mq.p.N[b] * mq.p.dV;
+          if (b < n) K[row * nd + ndof * b + th] += Bds * mq.p.N[b] * mq.p.dV;
         }
       }
   }
@@ -231,14 +231,14 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
     SmallInverse(np, hy->H, Hi);
     for (PetscInt k = 0; k < np; k++) {
       rhs[k] = -hy->g0[k];
-      for (PetscInt a = 0; a < n; a++)
+      for (PetscInt a = 0; a < nv; a++)
         for (PetscInt i = 0; i < nu; i++) rhs[k] += hy->G[nu * a + i][k] * in->u[ndof * a + i];
     }
     for (PetscInt k = 0; k < np; k++) {
       hy->p[k] = 0;
       for (PetscInt l = 0; l < np; l++) hy->p[k] += Hi[k][l] * rhs[l];
     }
-    for (PetscInt a = 0; a < n; a++)
+    for (PetscInt a = 0; a < nv; a++)
       for (PetscInt i = 0; i < nu; i++)
         for (PetscInt k = 0; k < np; k++) R[ndof * a + i] += hy->G[nu * a + i][k] * hy->p[k];
     if (res) {
@@ -257,16 +257,16 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
           GHi[c][k] = 0;
           for (PetscInt l = 0; l < np; l++) GHi[c][k] += hy->G[c][l] * Hi[l][k];
         }
-      for (PetscInt a = 0; a < n; a++)
+      for (PetscInt a = 0; a < nv; a++)
         for (PetscInt i = 0; i < nu; i++) {
           const PetscInt row = ndof * a + i, c = nu * a + i;
-          for (PetscInt b = 0; b < n; b++) {
+          for (PetscInt b = 0; b < nv; b++) {
             for (PetscInt j = 0; j < nu; j++) {
               PetscReal kij = 0;
               for (PetscInt k = 0; k < np; k++) kij += GHi[c][k] * hy->G[nu * b + j][k];
               K[row * nd + ndof * b + j] += kij;
             }
-            {
+            if (b < n) {
               PetscReal kth = 0;
               for (PetscInt k = 0; k < np; k++) {
                 PetscReal dHp = 0;
@@ -299,7 +299,7 @@ static PetscErrorCode Hourglass(const TslElementInput *in, PetscReal R[], PetscR
 
 PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted)
 {
-  const PetscInt nd = in->type->geom->nnode * in->type->ndof;
+  const PetscInt nd = TslElementTypeNodes(in->type) * in->type->ndof;
   Hybrid         hy;
   PetscReal      ehg;
 
@@ -411,7 +411,7 @@ PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kin
                                   PetscReal K[], PetscReal *heat)
 {
   const TslGeometry *g    = in->type->geom;
-  const PetscInt     ndof = in->type->ndof, dim = in->type->dim, th = ndof - 1, nd = g->nnode * ndof;
+  const PetscInt     ndof = in->type->ndof, dim = in->type->dim, th = ndof - 1, nd = TslElementTypeNodes(in->type) * ndof;
   PetscReal          total = 0;
   TslFaceRule        rule;
 
@@ -474,7 +474,7 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(res, sizeof(*res)));
-  for (PetscInt i = 0; i < g->nnode * ndof; i++) R[i] = 0;
+  for (PetscInt i = 0; i < TslElementTypeNodes(t) * ndof; i++) R[i] = 0;
   PetscCheck(Mechanics(in, R, NULL, &hy, res), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
   if (TslKinematicsRowGet(t->kin)->free_normal) {
     const TslQuadrature *quad = t->form->quadrature(g);

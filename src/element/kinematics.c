@@ -43,13 +43,14 @@ static PetscInt RigidSolid(const PetscReal x[3], PetscReal modes[6][3])
   return 6;
 }
 
-/* columns: name, hoop, free_normal, revolve, thickness, twist, rigid modes */
+/* columns: name, hoop, free_normal, revolve, thickness, twist, reference, rigid modes */
 static const struct TslKinematicsRow KinematicsTable[TSL_NKIN] = {
-    [TSL_KIN_PLANE_STRAIN]       = {"plane strain", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, RigidPlane},
-    [TSL_KIN_PLANE_STRESS]       = {"plane stress", PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, RigidPlane},
-    [TSL_KIN_AXISYMMETRIC]       = {"axisymmetric", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, RigidAxisymmetric},
-    [TSL_KIN_AXISYMMETRIC_TWIST] = {"axisymmetric with twist", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, RigidTwist},
-    [TSL_KIN_SOLID3D]            = {"3D", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidSolid},
+    [TSL_KIN_PLANE_STRAIN]             = {"plane strain", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, RigidPlane},
+    [TSL_KIN_PLANE_STRESS]             = {"plane stress", PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, RigidPlane},
+    [TSL_KIN_GENERALIZED_PLANE_STRAIN] = {"generalized plane strain", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, RigidPlane},
+    [TSL_KIN_AXISYMMETRIC]             = {"axisymmetric", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidAxisymmetric},
+    [TSL_KIN_AXISYMMETRIC_TWIST]       = {"axisymmetric with twist", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, RigidTwist},
+    [TSL_KIN_SOLID3D]                  = {"3D", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidSolid},
 };
 
 const struct TslKinematicsRow *TslKinematicsRowGet(TslKinematics kin)
@@ -154,15 +155,16 @@ PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementSe
   return PETSC_TRUE;
 }
 
-void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p, PetscReal B[6][TSL_MAX_ELEM_NODES * 3])
+void TslElementStrainMatrix(const TslElementType *type, const TslElementSection *sec, const PetscReal x[], const TslElementPoint *p,
+                            PetscReal B[6][TSL_MAX_ELEM_NODES * 3])
 {
-  const PetscInt                 dim = type->dim, nu = type->ndof - 1, n = type->geom->nnode;
+  const PetscInt                 dim = type->dim, nu = type->ndof - 1, n = type->geom->nnode, nv = TslElementTypeNodes(type);
   const struct TslKinematicsRow *info = TslKinematicsRowGet(type->kin);
   /* Voigt row -> (i, j) of the symmetric gradient; for the 3D shear rows both orders contribute */
   static const PetscInt vi[6] = {0, 1, 2, 0, 0, 1}, vj[6] = {0, 1, 2, 1, 2, 2};
 
   for (PetscInt r = 0; r < 6; r++)
-    for (PetscInt c = 0; c < n * nu; c++) B[r][c] = 0;
+    for (PetscInt c = 0; c < nv * nu; c++) B[r][c] = 0;
   for (PetscInt a = 0; a < n; a++) {
     for (PetscInt r = 0; r < 6; r++) {
       const PetscInt i = vi[r], j = vj[r];
@@ -177,6 +179,16 @@ void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p
       B[4][nu * a + 2] = p->x[0] * p->dNdx[a][0];
       B[5][nu * a + 2] = p->x[0] * p->dNdx[a][1];
     }
+  }
+  if (info->reference) {
+    /* generalized plane strain: the bounding planes move apart by U3 and turn by UR1, UR2 (the reference
+     * node's dofs 3, 4, 5, at (X0, Y0)); over the thickness t,
+     * eps_33 = (U3 + UR1 (y - Y0) - UR2 (x - X0)) / t */
+    const PetscReal  t  = sec->thickness > 0 ? sec->thickness : 1.0;
+    const PetscReal *x0 = &x[3 * n];
+    B[2][nu * n + 0]    = 1 / t;
+    B[2][nu * n + 1]    = (p->x[1] - x0[1]) / t;
+    B[2][nu * n + 2]    = -(p->x[0] - x0[0]) / t;
   }
 }
 

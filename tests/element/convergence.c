@@ -227,9 +227,10 @@ int main(int argc, char **argv)
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   for (PetscInt ti = 0; ti < TslElementTypeCount(); ti++) {
-    /* the twist rows share their families and in-plane terms with the axisymmetric rows; their twist
-     * terms are checked by element_coupled_kernels (tangent, rigid twist, uniform torsion) */
-    if (TslElementTypeGet(ti)->kin == TSL_KIN_AXISYMMETRIC_TWIST) continue;
+    /* the twist rows share their families and in-plane terms with the axisymmetric rows, the generalized
+     * plane strain rows theirs with the plane strain rows; their own terms are checked by
+     * element_coupled_kernels (tangent, rigid twist, uniform torsion, uniform out-of-plane strain) */
+    if (TslElementTypeGet(ti)->kin == TSL_KIN_AXISYMMETRIC_TWIST || TslElementTypeGet(ti)->nextra) continue;
     const TslElementType *t         = TslElementTypeGet(ti);
     const TslGeometry    *g         = t->geom;
     const PetscBool       quadratic = (PetscBool)(g->order > 1);

@@ -35,6 +35,12 @@ static void TemperatureDependent(Case *c)
   }
 }
 
+/* eps_33 = 0: plane strain, and generalized plane strain with its reference node at rest */
+static PetscBool PlaneStrainLike(const TslElementType *t)
+{
+  return t->kin == TSL_KIN_PLANE_STRAIN || t->kin == TSL_KIN_GENERALIZED_PLANE_STRAIN;
+}
+
 static PetscBool IsAxi(const TslElementType *t)
 {
   return t->kin == TSL_KIN_AXISYMMETRIC || t->kin == TSL_KIN_AXISYMMETRIC_TWIST;
@@ -70,6 +76,12 @@ static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
     c->theta_init[a] = THETA0;
     for (PetscInt i = 0; i < type->ndof; i++) c->u[type->ndof * a + i] = c->u_old[type->ndof * a + i] = i == type->ndof - 1 ? THETA0 : 0;
   }
+  /* extra nodes (the reference node of generalized plane strain): away from the element, at rest */
+  for (PetscInt a = g->nnode; a < TslElementTypeNodes(type); a++) {
+    c->x[3 * a] = 0.3, c->x[3 * a + 1] = -0.2, c->x[3 * a + 2] = 0;
+    c->theta_init[a] = THETA0;
+    for (PetscInt i = 0; i < type->ndof; i++) c->u[type->ndof * a + i] = c->u_old[type->ndof * a + i] = 0;
+  }
   c->in       = (TslElementInput){.type = type, .sec = &c->sec, .x = c->x, .u = c->u, .theta_init = c->theta_init};
   c->in_old   = c->in;
   c->in_old.u = c->u_old;
@@ -80,7 +92,7 @@ static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
  * shift (Q - Q_old) with the lumped heat content. */
 static PetscErrorCode Residual(Case *c, PetscReal R[], PetscReal K[], PetscBool *inv)
 {
-  const PetscInt ndof = c->type->ndof, n = c->type->geom->nnode, nd = n * ndof;
+  const PetscInt ndof = c->type->ndof, n = c->type->geom->nnode, nd = TslElementTypeNodes(c->type) * ndof;
   PetscReal      Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES];
 
   PetscFunctionBeginUser;
@@ -110,14 +122,15 @@ static PetscErrorCode Output(Case *c, PetscReal S[6], PetscReal E[6], PetscReal 
 
 static PetscInt NDof(const Case *c)
 {
-  return c->type->geom->nnode * c->type->ndof;
+  return TslElementTypeNodes(c->type) * c->type->ndof;
 }
 
-/* Max |R| over the displacement (or temperature) rows. */
+/* Max |R| over the rows of the family's nodes (an extra node's rows carry the out-of-plane force of
+ * generalized plane strain, a reaction when its dofs are held). */
 static PetscReal MaxRow(const Case *c, const PetscReal R[], PetscBool theta_rows)
 {
   PetscReal m = 0;
-  for (PetscInt i = 0; i < NDof(c); i++)
+  for (PetscInt i = 0; i < c->type->geom->nnode * c->type->ndof; i++)
     if ((i % c->type->ndof == c->type->ndof - 1) == theta_rows) m = PetscMax(m, PetscAbsReal(R[i]));
   return m;
 }
@@ -155,8 +168,8 @@ static PetscErrorCode CheckThermalPatch(TestLog *log, Case *c, PetscBool constra
   if (!constrained) {
     /* free expansion; plane strain keeps eps_33 = 0, so it expands (1 + nu) alpha dT in-plane and
      * carries sigma_33 = -E alpha dT */
-    if (t->kin == TSL_KIN_PLANE_STRAIN) stretch *= 1 + nu, Sx[2] = -E * ALPHA * dT;
-    for (PetscInt i = 0; i < 3; i++) Ex[i] = (i < dim || t->kin != TSL_KIN_PLANE_STRAIN) ? stretch : 0;
+    if (PlaneStrainLike(t)) stretch *= 1 + nu, Sx[2] = -E * ALPHA * dT;
+    for (PetscInt i = 0; i < 3; i++) Ex[i] = (i < dim || !PlaneStrainLike(t)) ? stretch : 0;
   } else {
     const PetscReal s = t->kin == TSL_KIN_PLANE_STRESS ? -E * ALPHA * dT / (1 - nu) : -E * ALPHA * dT / (1 - 2 * nu);
     for (PetscInt i = 0; i < 3; i++) Sx[i] = (t->kin == TSL_KIN_PLANE_STRESS && i == 2) ? 0 : s;
@@ -220,6 +233,7 @@ static PetscReal UnitVolume(const Case *c)
   for (PetscInt a = 0; a < g->ncorner; a++) rc += c->x[3 * a] / g->ncorner;
   switch (c->type->kin) {
   case TSL_KIN_PLANE_STRAIN:
+  case TSL_KIN_GENERALIZED_PLANE_STRAIN:
   case TSL_KIN_PLANE_STRESS:
     return V * (c->sec.thickness > 0 ? c->sec.thickness : 1);
   case TSL_KIN_AXISYMMETRIC:
@@ -410,7 +424,7 @@ static PetscErrorCode CheckQuadraticExpansion(TestLog *log, Case *c)
 
   PetscFunctionBeginUser;
   if (IsAxi(t)) g[0] = 0;
-  if (t->kin == TSL_KIN_PLANE_STRAIN) s *= 1 + c->nu;
+  if (PlaneStrainLike(t)) s *= 1 + c->nu;
   for (PetscInt a = 0; a < t->geom->nnode; a++) {
     const PetscReal *x = &c->x[3 * a];
     PetscReal        gx = 0, xx = 0;
@@ -421,7 +435,7 @@ static PetscErrorCode CheckQuadraticExpansion(TestLog *log, Case *c)
   PetscCall(Residual(c, R, NULL, &inv));
   PetscCall(Output(c, S, Eps, H));
   for (PetscInt r = 0; r < 6; r++)
-    if (!(t->kin == TSL_KIN_PLANE_STRAIN && r == 2)) smax = PetscMax(smax, PetscAbsReal(S[r]));
+    if (!(PlaneStrainLike(t) && r == 2)) smax = PetscMax(smax, PetscAbsReal(S[r]));
   Check(log, MaxRow(c, R, PETSC_FALSE) / (c->E * ALPHA), 0, 1e-10, "%s quadratic free expansion under linear theta max|R_u| / (E alpha)", t->name);
   Check(log, smax / (c->E * ALPHA), 0, 1e-10, "%s quadratic free expansion max|S| / (E alpha)", t->name);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -467,6 +481,32 @@ static PetscErrorCode CheckTorsion(TestLog *log, Case *c)
   PetscCall(Output(c, S, Eps, H));
   for (PetscInt r = 0; r < 6; r++)
     Check(log, S[r], r == 5 ? mu * cz * rbar : 0, 1e-9 * mu * cz * rbar, "%s uniform torsion S%" PetscInt_FMT, t->name, r + 1);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Generalized plane strain: the reference node's U3 = e t (t the thickness) strains every point by
+ * eps_33 = e with the in-plane displacements held: S11 = S22 = lambda e, S33 = (lambda + 2 mu) e, E33 = e;
+ * turning the bounding planes by UR1 = w instead gives eps_33 = w (y - Y0) / t at the points (their
+ * average: the centroid's y for these symmetric rules). */
+static PetscErrorCode CheckReferenceNode(TestLog *log, Case *c)
+{
+  const TslElementType *t = c->type;
+  const PetscInt        ndof = t->ndof, r = t->geom->nnode;
+  const PetscReal       e = 1e-3, w = 2e-3, th = c->sec.thickness, lambda = c->E * c->nu / ((1 + c->nu) * (1 - 2 * c->nu)), mu = c->E / (2 * (1 + c->nu));
+  PetscReal             S[6], Eps[6], H[3], yc = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < t->geom->nnode; a++) c->u[ndof * a + ndof - 1] = THETA0 + 0 * c->theta_init[a];
+  c->u[ndof * r + 0] = e * th;
+  PetscCall(Output(c, S, Eps, H));
+  Check(log, Eps[2], e, 1e-12, "%s reference node U3: E33", t->name);
+  Check(log, S[0], lambda * e, 1e-9 * c->E * e, "%s reference node U3: S11", t->name);
+  Check(log, S[2], (lambda + 2 * mu) * e, 1e-9 * c->E * e, "%s reference node U3: S33", t->name);
+  c->u[ndof * r + 0] = 0;
+  c->u[ndof * r + 1] = w;
+  for (PetscInt a = 0; a < t->geom->ncorner; a++) yc += c->x[3 * a + 1] / t->geom->ncorner;
+  PetscCall(Output(c, S, Eps, H));
+  Check(log, Eps[2], w * (yc - c->x[3 * r + 1]) / th, 1e-12, "%s reference node UR1: E33 at the centroid's lever arm", t->name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -525,6 +565,10 @@ int main(int argc, char **argv)
     if (type->kin == TSL_KIN_AXISYMMETRIC_TWIST) {
       CaseSetUp(&c, type, 0);
       PetscCall(CheckTorsion(&log, &c));
+    }
+    if (type->nextra) {
+      CaseSetUp(&c, type, 0);
+      PetscCall(CheckReferenceNode(&log, &c));
     }
     CaseSetUp(&c, type, 0);
     PetscCall(CheckPositivePressure(&log, &c));
