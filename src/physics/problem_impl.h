@@ -8,13 +8,14 @@
 /* One contact pair on this rank: the law and the main surface (all its nodes are local here when the
  * rank owns secondary nodes of the pair; active is false otherwise). */
 typedef struct {
-  TslContactLaw law;
-  PetscBool     active;
-  PetscInt      nmain;
-  PetscInt     *main_lnode;  /* [2*nmain] local nodes of each segment, main body on the left */
-  PetscInt     *prev, *next; /* [nmain] neighbouring segments, -1 at the ends */
-  PetscReal     smooth, thickness, search_radius;
-  TslKinematics kin;
+  TslContactLaw      law;
+  PetscBool          active;
+  PetscInt           nmain, nper; /* main faces, nodes per face */
+  TslContactFaceKind face;        /* family of the main faces */
+  PetscInt          *main_lnode;  /* [nper*nmain] local nodes of each face in face order, main body on the left */
+  PetscInt          *prev, *next; /* [nmain] neighbouring faces, -1 at the ends */
+  PetscReal          smooth, thickness, search_radius;
+  TslKinematics      kin;
 } TslContactSurface;
 
 /* A secondary node owned by this rank: its pairing and history (current and committed). */
