@@ -19,22 +19,30 @@
 #define TSL_MAX_FACE_NODES 9
 #define TSL_MAX_QP         27
 #define TSL_MAX_ELEM_DOF   (TSL_MAX_ELEM_NODES * 4)
+#define TSL_MAX_SUB        8 /* linear sub-elements of a second-order family (tet10: 8 tet4) */
+#define TSL_MAX_SUB_NODES  4
 
 typedef struct {
   PetscInt  n;
   PetscReal xi[TSL_MAX_QP][3];
   PetscReal w[TSL_MAX_QP];
-  PetscInt  degree; /* polynomial degree integrated exactly (per coordinate for tensor-product rules) */
+  PetscInt  degree; /* polynomial degree integrated exactly: per coordinate for the tensor-product rules of
+                       line, quad and hex; total degree for triangles, tetrahedra and wedges */
 } TslQuadrature;
 
-/* A geometry family: reference element, shape functions, faces. Faces are numbered as in the
- * dialect (S1..S6), face_node[] lists the element-local node positions of each face in an order
- * whose outward normal follows the right-hand rule (3D) or whose edge direction keeps the body on
- * the left (2D, counter-clockwise elements). */
+/* A geometry family: reference element, shape functions, faces. Node numbering is the dialect's
+ * (corners first, then midside nodes). Faces are numbered as in the dialect (S1..S6), face_node[]
+ * lists the element-local node positions of each face in an order whose outward normal follows the
+ * right-hand rule (3D) or whose edge direction keeps the body on the left (2D, counter-clockwise
+ * elements); a quadratic face lists its corners first, then its midside nodes in the face family's
+ * own order. Reference elements: [-1,1]^dim (line, quad, hex), the unit simplex (tri, tet: node 1
+ * at the origin) and the unit triangle times [-1,1] (wedge). The families live in geometry.c. */
 typedef struct TslGeometry {
   const char               *name; /* "quad4", "hex8", ... */
   PetscInt                  dim;  /* parametric dimension */
   PetscInt                  nnode;
+  PetscInt                  ncorner; /* vertex nodes; they come first */
+  PetscInt                  order;   /* 1 (linear) or 2 (quadratic) */
   PetscInt                  nface;
   PetscInt                  face_nnode[TSL_MAX_FACES];
   PetscInt                  face_node[TSL_MAX_FACES][TSL_MAX_FACE_NODES];
@@ -44,6 +52,13 @@ typedef struct TslGeometry {
   PetscReal     ref_volume;                                           /* measure of the reference element */
   TslQuadrature full, reduced;
   PetscInt      xdmf_type; /* XDMF mixed-topology cell type id */
+  /* Linear subdivision of a second-order family (line3: 2 line2, tri6: 4 tri3, tet10: 8 tet4; nsub = 0
+   * otherwise). The "modified" types lump capacity and face loads on it, where the quadratic shape
+   * functions would give zero or negative corner weights. sub_node[s][] are element-local node
+   * positions, ordered so that a sub-element has a positive Jacobian when its parent has. */
+  PetscInt                  nsub;
+  const struct TslGeometry *sub_geom;
+  PetscInt                  sub_node[TSL_MAX_SUB][TSL_MAX_SUB_NODES];
 } TslGeometry;
 
 typedef enum {

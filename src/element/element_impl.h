@@ -2,6 +2,11 @@
 #pragma once
 #include <thermoslide/element.h>
 
+/* The geometry families (geometry.c), referenced by the catalogue rows and by each other (faces,
+ * sub-elements). */
+extern const TslGeometry TslGeomLine2, TslGeomLine3, TslGeomTri3, TslGeomTri6, TslGeomQuad4, TslGeomQuad8, TslGeomTet4, TslGeomWedge6, TslGeomHex8,
+    TslGeomTet10;
+
 /* What distinguishes one kinematic assumption from another, in one place (kinematics.c). The kernels
  * only read these flags, so a new element type is a catalogue row, and a new kinematics a table row. */
 typedef struct {

@@ -1,0 +1,410 @@
+/* The geometry families of the element catalogue: shape functions, quadrature, faces and the linear
+ * subdivision of the second-order families.
+ *
+ * Node numbering is the Abaqus/CalculiX one (Abaqus Analysis User's Guide, "Solid (continuum)
+ * elements", node ordering and face numbering figures):
+ *   line3   1, 2 ends, 3 middle (the face of a quad8: S1 = element nodes 1, 2, 5)
+ *   tri6    midsides 4 (1-2), 5 (2-3), 6 (3-1)
+ *   quad8   midsides 5 (1-2), 6 (2-3), 7 (3-4), 8 (4-1)
+ *   tet10   midsides 5 (1-2), 6 (2-3), 7 (3-1), 8 (1-4), 9 (2-4), 10 (3-4)
+ *   wedge6  1-3 bottom triangle (zeta = -1), 4-6 top (zeta = +1), 1-2-3 counter-clockwise seen from the top
+ * The dialect lists the 3D faces with an inward right-hand normal (C3D8 S1 = 1-2-3-4, C3D4 S1 = 1-2-3,
+ * C3D6 S3 = 1-4-5-2); face_node[] holds the same node sets in the reversed (outward) order, which is
+ * what the face-load kernels assume. 2D faces keep the dialect's order (body on the left).
+ *
+ * Quadrature: Gauss-Legendre on lines and their tensor products; on triangles and tetrahedra the
+ * centroid rule (degree 1) and the symmetric interior degree-2 rules of Hammer, Marlowe & Stroud
+ * (1956): triangle points (2/3, 1/6, 1/6) in barycentric coordinates with weight 1/6 each, tetrahedron
+ * points (a, b, b, b), a = (5 + 3 sqrt 5)/20, b = (5 - sqrt 5)/20, weight 1/24 each. All weights are
+ * positive and all points inside the element; tests/element/test_geometry.c checks the degrees.
+ */
+#include "element_impl.h"
+
+/* ---- shape functions ------------------------------------------------------------------------ */
+
+static void ShapeLine2(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  N[0]  = 0.5 * (1 - xi[0]);
+  N[1]  = 0.5 * (1 + xi[0]);
+  dN[0] = -0.5;
+  dN[1] = 0.5;
+}
+
+/* Node order (end, end, middle), node_xi = -1, 1, 0. */
+static void ShapeLine3(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  const PetscReal s = xi[0];
+
+  N[0]  = 0.5 * s * (s - 1);
+  N[1]  = 0.5 * s * (s + 1);
+  N[2]  = 1 - s * s;
+  dN[0] = s - 0.5;
+  dN[1] = s + 0.5;
+  dN[2] = -2 * s;
+}
+
+/* Barycentric coordinates of the unit simplex of dimension dim, L_0 = 1 - sum_j xi_j and L_a = xi_{a-1},
+ * and their (constant) gradients dL[a][j] = dL_a/dxi_j. */
+static void Barycentric(PetscInt dim, const PetscReal xi[], PetscReal L[4], PetscReal dL[4][3])
+{
+  L[0] = 1;
+  for (PetscInt j = 0; j < dim; j++) {
+    L[0] -= xi[j];
+    dL[0][j] = -1;
+  }
+  for (PetscInt a = 1; a <= dim; a++) {
+    L[a] = xi[a - 1];
+    for (PetscInt j = 0; j < dim; j++) dL[a][j] = (j == a - 1) ? 1 : 0;
+  }
+}
+
+/* Linear simplex: N_a = L_a. */
+static void ShapeSimplex1(PetscInt dim, const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  PetscReal L[4], dL[4][3];
+
+  Barycentric(dim, xi, L, dL);
+  for (PetscInt a = 0; a <= dim; a++) {
+    N[a] = L[a];
+    for (PetscInt j = 0; j < dim; j++) dN[dim * a + j] = dL[a][j];
+  }
+}
+
+/* Quadratic simplex: corners N_a = L_a (2 L_a - 1), the midside node of edge (a, b) N = 4 L_a L_b.
+ * edge[] lists the corner pairs of the midside nodes in node order (they follow the corners). */
+static void ShapeSimplex2(PetscInt dim, PetscInt nedge, const PetscInt edge[][2], const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  PetscReal L[4], dL[4][3];
+
+  Barycentric(dim, xi, L, dL);
+  for (PetscInt a = 0; a <= dim; a++) {
+    N[a] = L[a] * (2 * L[a] - 1);
+    for (PetscInt j = 0; j < dim; j++) dN[dim * a + j] = (4 * L[a] - 1) * dL[a][j];
+  }
+  for (PetscInt e = 0; e < nedge; e++) {
+    const PetscInt a = edge[e][0], b = edge[e][1], m = dim + 1 + e;
+    N[m] = 4 * L[a] * L[b];
+    for (PetscInt j = 0; j < dim; j++) dN[dim * m + j] = 4 * (L[b] * dL[a][j] + L[a] * dL[b][j]);
+  }
+}
+
+static const PetscInt Tri6Edges[3][2]  = {{0, 1}, {1, 2}, {2, 0}};
+static const PetscInt Tet10Edges[6][2] = {{0, 1}, {1, 2}, {2, 0}, {0, 3}, {1, 3}, {2, 3}};
+
+static void ShapeTri3(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  ShapeSimplex1(2, xi, N, dN);
+}
+
+static void ShapeTri6(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  ShapeSimplex2(2, 3, Tri6Edges, xi, N, dN);
+}
+
+static void ShapeTet4(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  ShapeSimplex1(3, xi, N, dN);
+}
+
+static void ShapeTet10(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  ShapeSimplex2(3, 6, Tet10Edges, xi, N, dN);
+}
+
+static void ShapeQuad4(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  static const PetscReal s[4] = {-1, 1, 1, -1}, t[4] = {-1, -1, 1, 1};
+  for (int a = 0; a < 4; a++) {
+    N[a]          = 0.25 * (1 + s[a] * xi[0]) * (1 + t[a] * xi[1]);
+    dN[2 * a + 0] = 0.25 * s[a] * (1 + t[a] * xi[1]);
+    dN[2 * a + 1] = 0.25 * t[a] * (1 + s[a] * xi[0]);
+  }
+}
+
+/* Serendipity quad8: corners N = (1 + s xi)(1 + t eta)(s xi + t eta - 1)/4; midsides on eta = +-1
+ * (s = 0) N = (1 - xi^2)(1 + t eta)/2, on xi = +-1 (t = 0) N = (1 + s xi)(1 - eta^2)/2. */
+static void ShapeQuad8(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  static const PetscReal s[8] = {-1, 1, 1, -1, 0, 1, 0, -1}, t[8] = {-1, -1, 1, 1, -1, 0, 1, 0};
+  const PetscReal        x = xi[0], y = xi[1];
+
+  for (int a = 0; a < 4; a++) {
+    const PetscReal fs = 1 + s[a] * x, ft = 1 + t[a] * y, g = s[a] * x + t[a] * y - 1;
+    N[a]          = 0.25 * fs * ft * g;
+    dN[2 * a + 0] = 0.25 * s[a] * ft * (g + fs);
+    dN[2 * a + 1] = 0.25 * t[a] * fs * (g + ft);
+  }
+  for (int a = 4; a < 8; a++) {
+    if (s[a] == 0) {
+      N[a]          = 0.5 * (1 - x * x) * (1 + t[a] * y);
+      dN[2 * a + 0] = -x * (1 + t[a] * y);
+      dN[2 * a + 1] = 0.5 * t[a] * (1 - x * x);
+    } else {
+      N[a]          = 0.5 * (1 + s[a] * x) * (1 - y * y);
+      dN[2 * a + 0] = 0.5 * s[a] * (1 - y * y);
+      dN[2 * a + 1] = -y * (1 + s[a] * x);
+    }
+  }
+}
+
+/* Wedge: triangle barycentrics in (xi, eta) times the linear interpolation in zeta. */
+static void ShapeWedge6(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  PetscReal L[4], dL[4][3];
+
+  Barycentric(2, xi, L, dL);
+  for (int a = 0; a < 6; a++) {
+    const PetscInt  c  = a % 3;
+    const PetscReal sz = a < 3 ? -1 : 1, fz = 0.5 * (1 + sz * xi[2]);
+    N[a]          = L[c] * fz;
+    dN[3 * a + 0] = dL[c][0] * fz;
+    dN[3 * a + 1] = dL[c][1] * fz;
+    dN[3 * a + 2] = 0.5 * sz * L[c];
+  }
+}
+
+static void ShapeHex8(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  static const PetscReal s[8] = {-1, 1, 1, -1, -1, 1, 1, -1}, t[8] = {-1, -1, 1, 1, -1, -1, 1, 1}, r[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
+  for (int a = 0; a < 8; a++) {
+    const PetscReal fs = 1 + s[a] * xi[0], ft = 1 + t[a] * xi[1], fr = 1 + r[a] * xi[2];
+    N[a]          = 0.125 * fs * ft * fr;
+    dN[3 * a + 0] = 0.125 * s[a] * ft * fr;
+    dN[3 * a + 1] = 0.125 * t[a] * fs * fr;
+    dN[3 * a + 2] = 0.125 * r[a] * fs * ft;
+  }
+}
+
+/* ---- quadrature ------------------------------------------------------------------------------ */
+
+#define G2  0.57735026918962576451 /* 1/sqrt(3): 2-point Gauss */
+#define G3  0.77459666924148337704 /* sqrt(3/5): 3-point Gauss, weights 5/9, 8/9, 5/9 */
+#define W3E (5.0 / 9.0)
+#define W3C (8.0 / 9.0)
+#define T1  (1.0 / 6.0) /* triangle degree-2 rule: barycentrics (2/3, 1/6, 1/6) */
+#define T2  (2.0 / 3.0)
+#define TA  0.58541019662496845446 /* tetrahedron degree-2 rule: (5 + 3 sqrt 5)/20 */
+#define TB  0.13819660112501051518 /*                             (5 - sqrt 5)/20 */
+
+/* clang-format off */
+#define QUAD_LINE_1 {.n = 1, .xi = {{0, 0, 0}}, .w = {2}, .degree = 1}
+#define QUAD_LINE_2 {.n = 2, .xi = {{-G2, 0, 0}, {G2, 0, 0}}, .w = {1, 1}, .degree = 3}
+#define QUAD_LINE_3 {.n = 3, .xi = {{-G3, 0, 0}, {0, 0, 0}, {G3, 0, 0}}, .w = {W3E, W3C, W3E}, .degree = 5}
+
+#define QUAD_QUAD_1 {.n = 1, .xi = {{0, 0, 0}}, .w = {4}, .degree = 1}
+#define QUAD_QUAD_4 {.n = 4, .xi = {{-G2, -G2, 0}, {G2, -G2, 0}, {G2, G2, 0}, {-G2, G2, 0}}, .w = {1, 1, 1, 1}, .degree = 3}
+#define QUAD_QUAD_9 \
+  {.n = 9, \
+   .xi = {{-G3, -G3, 0}, {0, -G3, 0}, {G3, -G3, 0}, {-G3, 0, 0}, {0, 0, 0}, {G3, 0, 0}, {-G3, G3, 0}, {0, G3, 0}, {G3, G3, 0}}, \
+   .w = {W3E * W3E, W3C * W3E, W3E * W3E, W3E * W3C, W3C * W3C, W3E * W3C, W3E * W3E, W3C * W3E, W3E * W3E}, .degree = 5}
+
+#define QUAD_HEX_1 {.n = 1, .xi = {{0, 0, 0}}, .w = {8}, .degree = 1}
+#define QUAD_HEX_8 \
+  {.n = 8, \
+   .xi = {{-G2, -G2, -G2}, {G2, -G2, -G2}, {G2, G2, -G2}, {-G2, G2, -G2}, {-G2, -G2, G2}, {G2, -G2, G2}, {G2, G2, G2}, {-G2, G2, G2}}, \
+   .w = {1, 1, 1, 1, 1, 1, 1, 1}, .degree = 3}
+
+#define QUAD_TRI_1 {.n = 1, .xi = {{1.0 / 3, 1.0 / 3, 0}}, .w = {0.5}, .degree = 1}
+#define QUAD_TRI_3 {.n = 3, .xi = {{T1, T1, 0}, {T2, T1, 0}, {T1, T2, 0}}, .w = {T1, T1, T1}, .degree = 2}
+
+#define QUAD_TET_1 {.n = 1, .xi = {{0.25, 0.25, 0.25}}, .w = {1.0 / 6}, .degree = 1}
+#define QUAD_TET_4 \
+  {.n = 4, .xi = {{TB, TB, TB}, {TA, TB, TB}, {TB, TA, TB}, {TB, TB, TA}}, .w = {1.0 / 24, 1.0 / 24, 1.0 / 24, 1.0 / 24}, .degree = 2}
+
+/* wedge: triangle rule times Gauss in zeta (6 points, total degree 2) or centroid (degree 1) */
+#define QUAD_WEDGE_1 {.n = 1, .xi = {{1.0 / 3, 1.0 / 3, 0}}, .w = {1}, .degree = 1}
+#define QUAD_WEDGE_6 \
+  {.n = 6, .xi = {{T1, T1, -G2}, {T2, T1, -G2}, {T1, T2, -G2}, {T1, T1, G2}, {T2, T1, G2}, {T1, T2, G2}}, \
+   .w = {T1, T1, T1, T1, T1, T1}, .degree = 2}
+/* clang-format on */
+
+/* ---- geometry families ----------------------------------------------------------------------- */
+
+const TslGeometry TslGeomLine2 = {
+    .name       = "line2",
+    .dim        = 1,
+    .nnode      = 2,
+    .ncorner    = 2,
+    .order      = 1,
+    .nface      = 0,
+    .shape      = ShapeLine2,
+    .node_xi    = {{-1, 0, 0}, {1, 0, 0}},
+    .ref_volume = 2,
+    .full       = QUAD_LINE_2,
+    .reduced    = QUAD_LINE_1,
+    .xdmf_type  = 2, /* Polyline: only a face family, never written as a cell (see the writer) */
+};
+
+const TslGeometry TslGeomLine3 = {
+    .name       = "line3",
+    .dim        = 1,
+    .nnode      = 3,
+    .ncorner    = 2,
+    .order      = 2,
+    .nface      = 0,
+    .shape      = ShapeLine3,
+    .node_xi    = {{-1, 0, 0}, {1, 0, 0}, {0, 0, 0}},
+    .ref_volume = 2,
+    .full       = QUAD_LINE_3,
+    .reduced    = QUAD_LINE_2,
+    .xdmf_type  = 34, /* Edge_3 */
+    .nsub       = 2,
+    .sub_geom   = &TslGeomLine2,
+    .sub_node   = {{0, 2}, {2, 1}},
+};
+
+const TslGeometry TslGeomTri3 = {
+    .name       = "tri3",
+    .dim        = 2,
+    .nnode      = 3,
+    .ncorner    = 3,
+    .order      = 1,
+    .nface      = 3,
+    .face_nnode = {2, 2, 2},
+    .face_node  = {{0, 1}, {1, 2}, {2, 0}},
+    .face_geom  = {&TslGeomLine2, &TslGeomLine2, &TslGeomLine2},
+    .shape      = ShapeTri3,
+    .node_xi    = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}},
+    .ref_volume = 0.5,
+    .full       = QUAD_TRI_1,
+    .reduced    = QUAD_TRI_1,
+    .xdmf_type  = 4,
+};
+
+/* Sub-triangles: the three corner triangles and the middle one, all counter-clockwise. */
+const TslGeometry TslGeomTri6 = {
+    .name       = "tri6",
+    .dim        = 2,
+    .nnode      = 6,
+    .ncorner    = 3,
+    .order      = 2,
+    .nface      = 3,
+    .face_nnode = {3, 3, 3},
+    .face_node  = {{0, 1, 3}, {1, 2, 4}, {2, 0, 5}},
+    .face_geom  = {&TslGeomLine3, &TslGeomLine3, &TslGeomLine3},
+    .shape      = ShapeTri6,
+    .node_xi    = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 0, 0}, {0.5, 0.5, 0}, {0, 0.5, 0}},
+    .ref_volume = 0.5,
+    .full       = QUAD_TRI_3,
+    .reduced    = QUAD_TRI_1,
+    .xdmf_type  = 36, /* Triangle_6 */
+    .nsub       = 4,
+    .sub_geom   = &TslGeomTri3,
+    .sub_node   = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}},
+};
+
+const TslGeometry TslGeomQuad4 = {
+    .name       = "quad4",
+    .dim        = 2,
+    .nnode      = 4,
+    .ncorner    = 4,
+    .order      = 1,
+    .nface      = 4,
+    .face_nnode = {2, 2, 2, 2},
+    .face_node  = {{0, 1}, {1, 2}, {2, 3}, {3, 0}},
+    .face_geom  = {&TslGeomLine2, &TslGeomLine2, &TslGeomLine2, &TslGeomLine2},
+    .shape      = ShapeQuad4,
+    .node_xi    = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}},
+    .ref_volume = 4,
+    .full       = QUAD_QUAD_4,
+    .reduced    = QUAD_QUAD_1,
+    .xdmf_type  = 5,
+};
+
+const TslGeometry TslGeomQuad8 = {
+    .name       = "quad8",
+    .dim        = 2,
+    .nnode      = 8,
+    .ncorner    = 4,
+    .order      = 2,
+    .nface      = 4,
+    .face_nnode = {3, 3, 3, 3},
+    .face_node  = {{0, 1, 4}, {1, 2, 5}, {2, 3, 6}, {3, 0, 7}},
+    .face_geom  = {&TslGeomLine3, &TslGeomLine3, &TslGeomLine3, &TslGeomLine3},
+    .shape      = ShapeQuad8,
+    .node_xi    = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}, {-1, 0, 0}},
+    .ref_volume = 4,
+    .full       = QUAD_QUAD_9,
+    .reduced    = QUAD_QUAD_4,
+    .xdmf_type  = 37, /* Quadrilateral_8 */
+};
+
+/* Faces (outward): S1 1-3-2, S2 1-2-4, S3 2-3-4, S4 3-1-4. */
+const TslGeometry TslGeomTet4 = {
+    .name       = "tet4",
+    .dim        = 3,
+    .nnode      = 4,
+    .ncorner    = 4,
+    .order      = 1,
+    .nface      = 4,
+    .face_nnode = {3, 3, 3, 3},
+    .face_node  = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}},
+    .face_geom  = {&TslGeomTri3, &TslGeomTri3, &TslGeomTri3, &TslGeomTri3},
+    .shape      = ShapeTet4,
+    .node_xi    = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+    .ref_volume = 1.0 / 6,
+    .full       = QUAD_TET_1,
+    .reduced    = QUAD_TET_1,
+    .xdmf_type  = 6,
+};
+
+/* Faces as tet4, each followed by its midsides on the face edges (c0-c1), (c1-c2), (c2-c0).
+ * Sub-tetrahedra: the four corner tetrahedra (the parent shrunk by 1/2 about each corner) and the
+ * inner octahedron cut along its diagonal 5-10 (midsides of edges 1-2 and 3-4) into four. */
+const TslGeometry TslGeomTet10 = {
+    .name       = "tet10",
+    .dim        = 3,
+    .nnode      = 10,
+    .ncorner    = 4,
+    .order      = 2,
+    .nface      = 4,
+    .face_nnode = {6, 6, 6, 6},
+    .face_node  = {{0, 2, 1, 6, 5, 4}, {0, 1, 3, 4, 8, 7}, {1, 2, 3, 5, 9, 8}, {2, 0, 3, 6, 7, 9}},
+    .face_geom  = {&TslGeomTri6, &TslGeomTri6, &TslGeomTri6, &TslGeomTri6},
+    .shape      = ShapeTet10,
+    .node_xi    = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.5, 0, 0}, {0.5, 0.5, 0}, {0, 0.5, 0}, {0, 0, 0.5}, {0.5, 0, 0.5}, {0, 0.5, 0.5}},
+    .ref_volume = 1.0 / 6,
+    .full       = QUAD_TET_4,
+    .reduced    = QUAD_TET_1,
+    .xdmf_type  = 38, /* Tetrahedron_10 */
+    .nsub       = 8,
+    .sub_geom   = &TslGeomTet4,
+    .sub_node   = {{0, 4, 6, 7}, {4, 1, 5, 8}, {6, 5, 2, 9}, {7, 8, 9, 3}, {4, 5, 6, 9}, {4, 6, 7, 9}, {4, 7, 8, 9}, {4, 8, 5, 9}},
+};
+
+/* Faces (outward): S1 1-3-2, S2 4-5-6, S3 1-2-5-4, S4 2-3-6-5, S5 3-1-4-6. */
+const TslGeometry TslGeomWedge6 = {
+    .name       = "wedge6",
+    .dim        = 3,
+    .nnode      = 6,
+    .ncorner    = 6,
+    .order      = 1,
+    .nface      = 5,
+    .face_nnode = {3, 3, 4, 4, 4},
+    .face_node  = {{0, 2, 1}, {3, 4, 5}, {0, 1, 4, 3}, {1, 2, 5, 4}, {2, 0, 3, 5}},
+    .face_geom  = {&TslGeomTri3, &TslGeomTri3, &TslGeomQuad4, &TslGeomQuad4, &TslGeomQuad4},
+    .shape      = ShapeWedge6,
+    .node_xi    = {{0, 0, -1}, {1, 0, -1}, {0, 1, -1}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}},
+    .ref_volume = 1,
+    .full       = QUAD_WEDGE_6,
+    .reduced    = QUAD_WEDGE_1,
+    .xdmf_type  = 8,
+};
+
+const TslGeometry TslGeomHex8 = {
+    .name       = "hex8",
+    .dim        = 3,
+    .nnode      = 8,
+    .ncorner    = 8,
+    .order      = 1,
+    .nface      = 6,
+    .face_nnode = {4, 4, 4, 4, 4, 4},
+    .face_node  = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}},
+    .face_geom  = {&TslGeomQuad4, &TslGeomQuad4, &TslGeomQuad4, &TslGeomQuad4, &TslGeomQuad4, &TslGeomQuad4},
+    .shape      = ShapeHex8,
+    .node_xi    = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}},
+    .ref_volume = 8,
+    .full       = QUAD_HEX_8,
+    .reduced    = QUAD_HEX_1,
+    .xdmf_type  = 9,
+};
