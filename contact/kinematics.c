@@ -9,12 +9,12 @@ void TslContactFacePointDual(const TslContactFace *face, const TslDual x[][2], T
 {
   PetscReal N[TSL_CONTACT_MAX_FACE_NODES], dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES];
 
-  face->shape(xi.v, N, dN, d2N);
+  TslContactFaceShape(face, xi.v, N, dN, d2N);
   for (PetscInt d = 0; d < 2; d++) {
     p[d] = x[0][d];
     t[d] = DConst(0);
   }
-  for (PetscInt a = 1; a < face->nnode; a++) {
+  for (PetscInt a = 1; a < face->geom->nnode; a++) {
     TslDual Na = DChain(xi, N[a], dN[a]), dNa = DChain(xi, dN[a], d2N[a]);
 
     for (PetscInt d = 0; d < 2; d++) {
@@ -59,7 +59,7 @@ static void NeighbourNormal(const TslContactGeom *geo, const TslDual nb[][2], Pe
   const TslContactFace *face = geo->face;
   TslDual               p[2], tc[2], tb[2], xb = DConst(before ? 1 : 0);
 
-  if (face->order > 1) {
+  if (face->geom->order > 1) {
     TslDual rho;
 
     TslContactFacePointDual(face, geo->seg, DConst(before ? 0 : 1), p, tc);
@@ -189,7 +189,7 @@ PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, Ts
              "Neighbour node needs both reference coordinates and unknowns");
   geo->face = TslContactFaceGet(in->face);
   PetscCheck(geo->face, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown contact face family %d", (int)in->face);
-  nper = geo->face->nnode;
+  nper = geo->face->geom->nnode;
   SetPoint(in->x[0], in->u[0], O, k++, seed, geo->xs);
   for (PetscInt a = 0; a < nper; a++) SetPoint(in->x[1 + a], in->u[1 + a], O, k++, seed, geo->seg[a]);
   geo->has_prev = (PetscBool)(in->x_prev != NULL);

@@ -226,7 +226,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   PetscCheck(in->length > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Tributary length must be positive");
   PetscCall(TslContactGeomSetUp(in, PETSC_TRUE, &geo, &nnode));
   ndof = 3 * nnode;
-  nper = geo.face->nnode;
+  nper = geo.face->geom->nnode;
   if (in->kin == TSL_KIN_AXISYMMETRIC)
     area = in->length * 2 * PETSC_PI * in->x[0][0];
   else
@@ -240,7 +240,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   TslContactFacePointDual(geo.face, geo.seg, xi, xm, t);
   L  = DSqrt(DDot(t, t));
   ds = DMul(L, DAddC(xi, -in->hist.xi_old));
-  geo.face->shape(xi.v, Nv, dNv, d2Nv);
+  TslContactFaceShape(geo.face, xi.v, Nv, dNv, d2Nv);
   for (PetscInt a = 0; a < nper; a++) N[a] = DChain(xi, Nv[a], dNv[a]);
 
   /* mechanical laws */

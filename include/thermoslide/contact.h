@@ -37,12 +37,9 @@
  * Face families of contact surfaces
  * ------------------------------------------------------------------------------------------------- */
 
-/* One row per face family (contact/face.c). The kernels are written for any row: a new family is a row.
- * The rows mirror the element catalogue's face geometries (same names, same node order: ends first, then
- * the midside node) but are parametrised on the segment parameter 0 <= xi <= 1 of the contact kernels and
- * carry second derivatives, which the exact tangent of a curved segment needs.
- * TODO: take N and dN from TslGeometry (TslGeomLine2/TslGeomLine3, xi = (1 + zeta)/2) once the geometry
- * families are in the catalogue; this table then keeps only what TslGeometry lacks (d2N, hull). */
+/* One row per face family (contact/face.c): the element catalogue's face geometry (its shape functions,
+ * node count and order; node order: ends first, then the midside node) and what contact adds to it. The
+ * kernels are written for any row: a new family is a row. */
 typedef enum {
   TSL_CONTACT_FACE_LINE2 = 0, /* 2-node line: the default of a zeroed TslContactInput */
   TSL_CONTACT_FACE_LINE3,     /* 3-node line (end, end, middle) */
@@ -50,17 +47,16 @@ typedef enum {
 } TslContactFaceKind;
 
 typedef struct {
-  const char *name;    /* the geometry family's name in the element catalogue: "line2", "line3" */
-  PetscInt    nnode;   /* nodes per face */
-  PetscInt    ncorner; /* end nodes (first in the node order): neighbouring faces share them */
-  PetscInt    order;   /* polynomial degree of the face map (1: straight, the chord projection is exact) */
-  /* N, dN/dxi, d2N/dxi2 of the face nodes at xi (any real xi: the face extends beyond its ends) */
-  void (*shape)(PetscReal xi, PetscReal N[], PetscReal dN[], PetscReal d2N[]);
-  PetscInt  nq; /* Gauss rule on [0, 1] for face integrals (exact for N_a |t| when |t| is a polynomial) */
-  PetscReal q_xi[5], q_w[5];
+  const TslGeometry *geom; /* the catalogue's face family ("line2", "line3"): name, nnode, ncorner, order, shape */
+  PetscInt           nq;   /* Gauss rule on [0, 1] for face integrals (exact for N_a |t| when |t| is a polynomial) */
+  PetscReal          q_xi[5], q_w[5];
   /* control points of the face's Bernstein form, hull[i][a]: the face lies in their convex hull */
   PetscReal hull[TSL_CONTACT_MAX_FACE_NODES][TSL_CONTACT_MAX_FACE_NODES];
 } TslContactFace;
+
+/* N, dN/dxi and d2N/dxi2 of the face's nodes on the segment parameter xi = (1 + zeta)/2 (zeta the
+ * geometry's own coordinate on [-1, 1]); any real xi: the face extends beyond its ends. */
+void TslContactFaceShape(const TslContactFace *face, PetscReal xi, PetscReal N[], PetscReal dN[], PetscReal d2N[]);
 
 /* The row of a family (NULL when out of range), and the family with a catalogue geometry name
  * (case-insensitive; -1 when contact does not support that face family). */

@@ -173,7 +173,7 @@ static PetscErrorCode ContactFace(const TslModel *g, const TslContactPair *c, Pe
   PetscFunctionBeginUser;
   *nf     = FaceNodes(g, e, f, nodes);
   *family = fg ? TslContactFaceFind(fg->name) : -1;
-  PetscCheck(*family >= 0 && TslContactFaceGet((TslContactFaceKind)*family)->nnode == *nf, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+  PetscCheck(*family >= 0 && TslContactFaceGet((TslContactFaceKind)*family)->geom->nnode == *nf, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
              "%s: contact on %s faces (%" PetscInt_FMT " nodes) is not supported yet", TslLocString(g, c->loc, loc, sizeof(loc)),
              fg ? fg->name : "unknown", *nf);
   PetscCheck(*nf <= TSL_CONTACT_MAX_FACE_NODES, PETSC_COMM_SELF, PETSC_ERR_PLIB, "contact face with too many nodes");
@@ -209,7 +209,7 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
     c->main_face    = TSL_CONTACT_FACE_LINE2;
     c->main_element = main->n ? main->elem[0] : -1;
     if (main->n) PetscCall(ContactFace(g, c, TslModelElementIndex(g, main->elem[0]), main->face[0], nodes, &nf, x, &c->main_face));
-    c->nper = TslContactFaceGet((TslContactFaceKind)c->main_face)->nnode;
+    c->nper = TslContactFaceGet((TslContactFaceKind)c->main_face)->geom->nnode;
     PetscCall(PetscMalloc1(c->nper * c->nmain, &c->main_node));
     PetscCall(PetscMalloc1(c->nmain, &c->main_prev));
     PetscCall(PetscMalloc1(c->nmain, &c->main_next));
@@ -217,8 +217,8 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
       PetscCall(ContactFace(g, c, TslModelElementIndex(g, main->elem[i]), main->face[i], nodes, &nf, x, &family));
       PetscCheck(family == c->main_face, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                  "%s: the main surface %s mixes %s and %s faces: contact needs one face family per main surface",
-                 TslLocString(g, c->loc, loc, sizeof(loc)), c->main, TslContactFaceGet((TslContactFaceKind)c->main_face)->name,
-                 TslContactFaceGet((TslContactFaceKind)family)->name);
+                 TslLocString(g, c->loc, loc, sizeof(loc)), c->main, TslContactFaceGet((TslContactFaceKind)c->main_face)->geom->name,
+                 TslContactFaceGet((TslContactFaceKind)family)->geom->name);
       for (PetscInt a = 0; a < nf; a++) c->main_node[c->nper * i + a] = nodes[a];
       c->main_prev[i] = c->main_next[i] = -1;
       PetscCall(TslContactFaceIntegrate((TslContactFaceKind)family, x, w, &L));

@@ -511,7 +511,7 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
     TslContactSurface    *cs   = &p->csurf[k];
     const TslContactFace *face = TslContactFaceGet((TslContactFaceKind)pair->main_face);
 
-    PetscCheck(face && face->nnode == pair->nper, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    PetscCheck(face && face->geom->nnode == pair->nper, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "contact pair %" PetscInt_FMT ": face family %" PetscInt_FMT " does not have %" PetscInt_FMT " nodes", k + 1, pair->main_face,
                pair->nper);
     cs->kin       = (TslKinematics)pair->kin;

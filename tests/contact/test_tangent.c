@@ -15,7 +15,7 @@ typedef struct {
 /* Address of unknown i of the element (node order s, the segment's nodes, [previous], [next]). */
 static PetscReal *Unknown(Case *c, PetscInt i)
 {
-  PetscInt node = i / 3, comp = i % 3, nper = TslContactFaceGet(c->in.face)->nnode;
+  PetscInt node = i / 3, comp = i % 3, nper = TslContactFaceGet(c->in.face)->geom->nnode;
 
   if (node <= nper) return &c->in.u[node][comp];
   node -= 1 + nper;
@@ -126,7 +126,7 @@ static PetscErrorCode CheckAll(TestLog *log, TslContactFaceKind face)
   const PetscReal kp[2] = {100, 400}, kv[2] = {20, 5}, kd[3] = {0, 0.05, 0.2}, kdv[3] = {50, 30, 4};
   const PetscReal Fd[2] = {0, 0.1}, Fv[2] = {1, 0.5};
   char            name[128];
-  const char     *fam = TslContactFaceGet(face)->name;
+  const char     *fam = TslContactFaceGet(face)->geom->name;
 
   PetscFunctionBeginUser;
   PetscCall(TslContactLawSetDefaults(&law));
@@ -244,7 +244,7 @@ static PetscErrorCode CheckAll(TestLog *log, TslContactFaceKind face)
     }
     {
       TslContactOutput out;
-      PetscInt         nper = TslContactFaceGet(face)->nnode;
+      PetscInt         nper = TslContactFaceGet(face)->geom->nnode;
 
       PetscCall(TslContactElement(&law, &c.in, NULL, NULL, &out));
       Check(log, (PetscReal)out.nnode, 1 + nper + 2 * (nper - 1), 0, "%s: smoothed case %d: element nodes (s, segment, both neighbours)", fam,
