@@ -64,7 +64,7 @@ static PetscErrorCode FaceGet(TslContactFaceKind kind, const TslContactFace **f)
 }
 
 /* Position, tangent and its derivative, all relative to the first node (x = x_1 + sum_{a>1} N_a (x_a - x_1),
- * as sum N_a = 1): a straight face gives x_1 + xi (x_2 - x_1) and x_2 - x_1 exactly. */
+ * as sum N_a = 1): the tangent of a straight face is exactly x_2 - x_1. */
 static void Evaluate(const TslContactFace *f, const PetscReal x[], PetscReal xi, PetscReal p[2], PetscReal t[2], PetscReal dt[2])
 {
   PetscReal N[TSL_CONTACT_MAX_FACE_NODES], dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES];

@@ -2,9 +2,10 @@
  * node, history transfer. Formulas in docs/contact.md ("Projection" and "Smoothing"). */
 #include "contact_impl.h"
 
-/* x_m = x_1 + sum_{a>1} N_a (x_a - x_1) (sum N_a = 1) and t = sum_{a>1} dN_a (x_a - x_1): for a straight
- * segment exactly x_1 + xi (x_2 - x_1) and x_2 - x_1. N_a and dN_a carry their xi-derivatives (dN_a,
- * d2N_a), so that t, the normal and the projection are differentiated through the curvature. */
+/* x_m = x_1 + sum_{a>1} N_a (x_a - x_1) (sum N_a = 1) and t = sum_{a>1} dN_a (x_a - x_1): differences of
+ * nearby nodes, no cancellation between large coordinates, and the tangent of a straight segment is
+ * exactly x_2 - x_1. N_a and dN_a carry their xi-derivatives (dN_a, d2N_a), so that t, the normal and the
+ * projection are differentiated through the curvature. */
 void TslContactFacePointDual(const TslContactFace *face, const TslDual x[][2], TslDual xi, TslDual p[2], TslDual t[2])
 {
   PetscReal N[TSL_CONTACT_MAX_FACE_NODES], dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES];

@@ -464,6 +464,13 @@ static PetscErrorCode ReportPartition(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Young's modulus of local element e: the only place contact reads a material. (With temperature
+ * tables for materials: the first *ELASTIC row, the value the mesh code used to take.) */
+static PetscReal ElementModulus(TslProblem p, PetscInt e)
+{
+  return p->emat[e].E;
+}
+
 /* Collective. The default normal penalty of each pair, 10 E / (mean main face length), E the Young's
  * modulus of the element of the pair's first main face. Only the rank that holds that element knows its
  * material: the others contribute -1 to a maximum over the ranks (E > 0 is checked at set-up). */
@@ -477,12 +484,14 @@ static PetscErrorCode DefaultPenalties(TslProblem p, PetscReal penalty[])
   PetscCall(PetscMalloc2(m->npair, &E, m->npair, &Eall));
   for (PetscInt k = 0; k < m->npair; k++) {
     PetscInt e = m->pairs[k].main_element >= 0 ? TslModelElementIndex(m, m->pairs[k].main_element) : -1;
-    E[k]       = e >= 0 ? p->emat[e].E : -1;
+    E[k]       = e >= 0 ? ElementModulus(p, e) : -1;
   }
   PetscCall(MPIU_Allreduce(E, Eall, (PetscMPIInt)m->npair, MPIU_REAL, MPIU_MAX, p->comm));
   for (PetscInt k = 0; k < m->npair; k++) {
     const TslContactPair *pair = &m->pairs[k];
     penalty[k]                 = pair->mean_length > 0 ? 10.0 * PetscMax(Eall[k], 0) / pair->mean_length : 0;
+    PetscCall(PetscInfo(NULL, "contact pair %" PetscInt_FMT ": default normal penalty %g = 10 E / mean main face length (E %g, length %g)\n", k + 1,
+                        (double)penalty[k], (double)Eall[k], (double)pair->mean_length));
   }
   PetscCall(PetscFree2(E, Eall));
   PetscFunctionReturn(PETSC_SUCCESS);
