@@ -6,13 +6,15 @@
  *
  * Kernels work on plain arrays: no MPI, no PETSc objects, so they can be unit-tested alone.
  *
- * Nodal unknowns are interleaved per node: (u_1, ..., u_dim, theta) with ndof = dim + 1.
+ * Nodal unknowns are interleaved per node in the order of the type's node_dof[] (displacements, then
+ * theta last), ndof of them.
  * Voigt order for stress/strain output: 11, 22, 33, 12, 13, 23 (engineering shear strain).
  * For axisymmetric elements x = r, y = z; 11 = rr, 22 = zz, 33 = hoop, 12 = rz; integrals include 2*pi*r,
  * so forces and heat are totals around the circumference.
  */
 #pragma once
 #include <thermoslide/compat.h>
+#include <thermoslide/material.h>
 
 #define TSL_MAX_ELEM_NODES 27
 #define TSL_MAX_FACES      6
@@ -61,53 +63,81 @@ typedef struct TslGeometry {
   PetscInt                  sub_node[TSL_MAX_SUB][TSL_MAX_SUB_NODES];
 } TslGeometry;
 
-typedef enum {
-  TSL_KIN_PLANE_STRAIN = 0,
-  TSL_KIN_PLANE_STRESS,
-  TSL_KIN_AXISYMMETRIC,
-  TSL_KIN_SOLID3D,
-} TslKinematics;
+typedef enum { TSL_KIN_PLANE_STRAIN = 0, TSL_KIN_PLANE_STRESS, TSL_KIN_AXISYMMETRIC, TSL_KIN_SOLID3D, TSL_NKIN } TslKinematics;
 
+#define TSL_MAX_NODE_DOF 4
+
+/* Rows of the kinematics and formulation tables (element_impl.h): opaque outside src/element/. */
+typedef struct TslKinematicsRow TslKinematicsRow;
+typedef struct TslFormulation   TslFormulation;
+
+/* One deck type: a geometry family, a kinematics (plane strain, plane stress, axisymmetric, 3D: the
+ * strain, the measure dV and the rigid modes) and a formulation (integration, hourglass control, hybrid
+ * pressure, lumping: the operations). The row owns no behaviour of its own; everything a caller needs
+ * goes through the functions below, so nothing outside src/element/ tests for a type or a kinematics. */
 typedef struct {
-  const char        *name; /* deck type name, upper case */
-  const TslGeometry *geom;
-  TslKinematics      kin;
-  PetscInt           dim;         /* spatial dimension of the model (2 or 3) */
-  PetscInt           ndof;        /* unknowns per node: dim displacements + temperature */
-  PetscBool          reduced;     /* reduced integration (with hourglass control) */
-  PetscBool          hybrid;      /* hybrid pressure formulation */
-  const char        *description; /* for docs and -help */
+  const char           *name; /* deck type name, upper case */
+  const TslGeometry    *geom;
+  const TslFormulation *form;
+  /* the kinematics and what follows from it (one macro per kinematics in catalogue.c fills these) */
+  TslKinematics kin;
+  PetscInt      dim;                        /* spatial dimension of the model (2 or 3) */
+  PetscInt      ndof;                       /* unknowns per node */
+  PetscInt      node_dof[TSL_MAX_NODE_DOF]; /* the dialect's dof number of each nodal unknown: 1..3, 11 */
+  const char   *description;                /* for docs and -help */
 } TslElementType;
 
 /* Catalogue lookups. TslElementTypeFind is case-insensitive and returns -1 for an unknown name. */
 PetscInt              TslElementTypeCount(void);
 const TslElementType *TslElementTypeGet(PetscInt index);
 PetscInt              TslElementTypeFind(const char *name);
+/* Position of the temperature among a node's unknowns (the last one). */
+static inline PetscInt TslElementTypeThetaSlot(const TslElementType *t)
+{
+  return t->ndof - 1;
+}
+/* Short names of the type's formulation and kinematics (docs, messages). */
+const char *TslElementTypeFormulationName(const TslElementType *t);
+const char *TslElementTypeKinematicsName(const TslElementType *t);
+/* Do two types share their kinematics (may they form one body)? May they be in one model (the same
+ * nodal unknowns and the same measure: no axisymmetric body beside a planar one)? */
+PetscBool TslElementTypeSameKinematics(const TslElementType *a, const TslElementType *b);
+PetscBool TslElementTypeSameModel(const TslElementType *a, const TslElementType *b);
+/* Rigid-body modes the kinematics admits at point x (relative to a body centre): modes[m][3]
+ * displacement components; returns their number (3 plane, 1 axisymmetric, 6 in 3D). */
+PetscInt TslElementTypeRigidModes(const TslElementType *t, const PetscReal x[3], PetscReal modes[6][3]);
 
-/* Material data an element needs (from *MATERIAL and *SOLID SECTION). */
+/* Section data an element needs: its material (property tables, material.h) and the out-of-plane
+ * thickness of plane elements (1 when not given; ignored otherwise). */
 typedef struct {
-  PetscReal E, nu, conductivity, density, specific_heat, alpha;
-  PetscReal thickness; /* plane elements; ignored otherwise */
-} TslElementMaterial;
+  const TslMaterial *mat;
+  PetscReal          thickness;
+} TslElementSection;
 
-/* Everything a coupled kernel needs for one element.
- *   x[nnode*3]      reference coordinates (z = 0 in 2D)
- *   u[nnode*ndof]   current nodal unknowns (displacements, theta)
- *   u_old[...]      unknowns at the start of the increment (for the heat-capacity term)
- *   theta_init[nnode] initial temperatures (thermal strain is alpha*(theta - theta_init))
- *   dt              increment; steady = PETSC_TRUE drops the capacity term */
+/* Everything a kernel needs for one element: no time step, no old state (time discretisation is the
+ * solver's business, src/solve/):
+ *   x[nnode*3]        reference coordinates (z = 0 in 2D)
+ *   u[nnode*ndof]     current nodal unknowns, node-major in the type's node_dof order (theta last)
+ *   theta_init[nnode] initial temperatures (the thermal strain's reference) */
 typedef struct {
-  const TslElementType     *type;
-  const TslElementMaterial *mat;
-  const PetscReal          *x, *u, *u_old, *theta_init;
-  PetscReal                 dt;
-  PetscBool                 steady;
+  const TslElementType    *type;
+  const TslElementSection *sec;
+  const PetscReal         *x, *u, *theta_init;
 } TslElementInput;
 
-/* Residual R (internal forces and heat: conduction + capacity) and consistent tangent K = dR/du
- * (row-major, nd x nd with nd = nnode*ndof); K may be NULL. *inverted is set when any integration
- * point has a non-positive Jacobian determinant (R and K are then undefined). */
-PetscErrorCode TslElementResidual(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted);
+/* Internal force and heat flow: R_u = int B^T sigma dV (+ hourglass forces), R_theta = int grad N . q
+ * dV with q = k grad theta, and the consistent tangent K = dR/du (row-major, nd x nd, nd = nnode*ndof;
+ * may be NULL). No capacity and no inertia: those come from TslElementLumped. *inverted is set when the
+ * map is not valid at some point (R, K then undefined). */
+PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted);
+
+/* Lumped nodal quantities of the element at its current temperatures:
+ *   Q[a] heat content  rho V_a e(theta_a)  (material.h: e = int c dtheta)
+ *   C[a] dQ/dtheta_a = rho V_a c(theta_a)
+ *   M[a] mass rho V_a
+ * with V_a the row's lumped nodal volume (row sums; sub-elements for the modified types). Any of the
+ * arrays may be NULL. The heat stored in an increment is sum_a Q(theta_a) - Q(theta_old_a). */
+PetscErrorCode TslElementLumped(const TslElementInput *in, PetscReal Q[], PetscReal C[], PetscReal M[]);
 
 typedef enum {
   TSL_FACE_PRESSURE = 0, /* value: pressure (force/area, positive pushing into the body) */
@@ -123,12 +153,16 @@ typedef enum {
 PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],
                                   PetscReal K[], PetscReal *heat);
 
-/* Heat stored per element between u_old and u (lumped capacity): sum rho c V_a (theta_a - theta_old_a). */
-PetscErrorCode TslElementHeatChange(const TslElementInput *in, PetscReal *dQ);
+/* Element results: integration-point averages of stress S (Voigt 11 22 33 12 13 23), total strain E
+ * (engineering shear) and heat flux HFL = -k grad theta; strain energy and the hourglass-control energy
+ * of the element (zero for fully integrated types). */
+typedef struct {
+  PetscReal S[6], E[6], HFL[3];
+  PetscReal strain_energy, hourglass_energy;
+} TslElementResult;
 
-/* Integration-point averages of stress S[6], strain E[6] (total strain) and heat flux HFL[3] (-k grad theta). */
-PetscErrorCode TslElementOutput(const TslElementInput *in, PetscReal S[6], PetscReal E[6], PetscReal HFL[3]);
+PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res);
 
-/* Lumped nodal volume (with thickness or 2*pi*r) of each node of the element: the heat-capacity
+/* Lumped nodal volume (with thickness or 2*pi*r) of each node of the element: the capacity and mass
  * weights, exposed for tests. */
 PetscErrorCode TslElementNodalVolume(const TslElementInput *in, PetscReal vol[]);

@@ -43,16 +43,26 @@ typedef struct {
   TslLoc         loc;
 } TslSurface;
 
+/* Material properties, each a table in temperature: *ELASTIC (E, nu), *CONDUCTIVITY (k), *DENSITY (rho),
+ * *SPECIFIC HEAT (c), *EXPANSION (alpha). A table with one row is a constant; with several rows the value
+ * is linear in temperature between rows (ascending) and constant beyond the ends, as in the dialect.
+ * Evaluation is in the material module (include/thermoslide/material.h). A fixed capacity keeps the model
+ * a flat, packable struct. */
+#define TSL_MAX_TABLE_ROWS 64
+typedef enum { TSL_PROP_ELASTIC = 0, TSL_PROP_CONDUCTIVITY, TSL_PROP_DENSITY, TSL_PROP_SPECIFIC_HEAT, TSL_PROP_EXPANSION, TSL_NPROP } TslProperty;
+
 typedef struct {
-  char      name[TSL_NAME_LEN];
-  PetscBool has_elastic, has_conductivity, has_density, has_specific_heat, has_expansion;
-  PetscReal E, nu;         /* *ELASTIC (isotropic) */
-  PetscReal conductivity;  /* *CONDUCTIVITY (isotropic) */
-  PetscReal density;       /* *DENSITY */
-  PetscReal specific_heat; /* *SPECIFIC HEAT */
-  PetscReal alpha;         /* *EXPANSION (isotropic) */
-  PetscReal alpha_zero;    /* *EXPANSION, ZERO= (reference temperature of alpha; default 0) */
-  TslLoc    loc;
+  PetscInt  n;                            /* rows; 0: the property was not given */
+  PetscReal value[TSL_MAX_TABLE_ROWS][2]; /* the values of each row (E and nu for *ELASTIC) */
+  PetscReal theta[TSL_MAX_TABLE_ROWS];    /* temperature of each row (ascending; unused when n == 1) */
+  TslLoc    loc;                          /* the keyword line */
+} TslPropertyTable;
+
+typedef struct {
+  char             name[TSL_NAME_LEN];
+  TslPropertyTable prop[TSL_NPROP];
+  PetscReal        alpha_zero; /* *EXPANSION, ZERO= (reference temperature of alpha; default 0) */
+  TslLoc           loc;
 } TslMaterial;
 
 typedef struct {

@@ -1,7 +1,8 @@
 /* thermoslide discrete problem: the coupled u-theta unknowns of a distributed mesh, the loads and
  * constraints active in the current step, and the assembly of residual and Jacobian.
  *
- * Unknowns are node-interleaved blocks (u_1..u_dim, theta), block size ndof = dim + 1, numbered
+ * Unknowns are node-interleaved blocks in the order of the element rows' node_dof (displacements, theta
+ * last), block size ndof (the rows say how many: dim + 1 for the continuum types), numbered
  * contiguously per rank (owned nodes); the local form of the ghosted vectors holds owned nodes first,
  * then ghosts, in the local model's node order.
  *
@@ -48,6 +49,10 @@ PetscErrorCode TslProblemGetFieldIS(TslProblem prob, IS *is_u, IS *is_theta);
 PetscErrorCode TslProblemSetStep(TslProblem prob, PetscInt s);
 /* Time of the increment being solved: step time t (end of increment), increment dt, total time. */
 PetscErrorCode TslProblemSetTime(TslProblem prob, PetscReal step_time, PetscReal dt, PetscReal total_time);
+/* The capacity term's time discretisation, chosen by the solver (src/solve/): the residual gets
+ * shift (Q(theta) - Q(theta_old)) per node and the Jacobian shift dQ/dtheta, with Q the lumped heat
+ * content (element.h). Backward Euler: shift = 1/dt; steady state: 0. The kernels know nothing of it. */
+PetscErrorCode TslProblemSetCapacityRate(TslProblem prob, PetscReal shift);
 /* The step time of the first corner (tabular point) of an amplitude followed in this step that
  * lies strictly after t and before t_end; t_end if there is none. Increments end there, so that a history
  * with reversals is followed exactly (the slip of an increment is its path, not the chord). */
@@ -66,8 +71,17 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
  * Arrays are allocated by the callee and freed with PetscFree: node fields [nnode_owned][ncomp],
  * element fields [nelem][ncomp]. */
 PetscErrorCode TslProblemHeatBalance(TslProblem prob, TslHeatBalance *hb);
-PetscErrorCode TslProblemNodeField(TslProblem prob, const char *name, PetscInt *ncomp, PetscReal **vals);
-PetscErrorCode TslProblemElementField(TslProblem prob, const char *name, PetscInt *ncomp, PetscReal **vals);
+
+/* Output fields, one table row each (fields.c): nodal U, NT, RF, RFL, CPRESS, CSLIP, CSTATUS, HFLA and
+ * element S, E, HFL, ELSE (strain energy), ELASE (hourglass-control energy). TslFieldFind returns -1 for
+ * an unknown name. TslProblemField allocates vals (free with PetscFree): [owned nodes][ncomp] or
+ * [local elements][ncomp]. */
+typedef enum { TSL_FIELD_NODE = 0, TSL_FIELD_ELEMENT = 1 } TslFieldKind;
+PetscInt TslFieldCount(void);
+PetscInt TslFieldFind(const char *name);
+/* deflt: written without an *OUTPUT request (0 no, 1 yes, 2 when the model has contact pairs) */
+const char    *TslFieldName(PetscInt i, TslFieldKind *kind, PetscInt *deflt);
+PetscErrorCode TslProblemField(TslProblem prob, PetscInt i, PetscInt *ncomp, PetscReal **vals);
 /* Contact (collective). Search: pairs secondary nodes at the current solution, rebuilding the matrix
  * pattern when pairing changed (then *repattern: hand the new matrix to the solver). Update: after a
  * converged solve, re-pairs nodes that left their segment and updates augmented-Lagrange multipliers;

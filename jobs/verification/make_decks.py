@@ -178,31 +178,103 @@ def loads_multistep():
           "*FILM, FILM AMPLITUDE=HRAMP\n BOTE, F1, 0.0, 10.0\n*END STEP\n")
 
 
-def sliding_blocks(series, auglagr=False):
-    """The spec's finite-sliding problems in plane strain (CPE4T): a block 2 x 0.25 (4 x 6 elements)
-    pressed on a block 6 x 1.25 (12 x 2 elements) fixed at its bottom; total area 8, rho c = 1. The thin
-    upper block passes the applied pressure on nearly uniformly (a few % spread), and the blocks' nodes
-    meet along the interface at the start; both have 24 elements, so slabs along y put them on different
-    ranks.
+# Element families of the 2D deck types (the digits of the type name) and what the generated meshes need:
+# faces of the bottom and top edge of a grid cell. Triangles split each cell along its (n1, n3) diagonal
+# into A = (n1, n2, n3) (bottom edge S1) and B = (n1, n3, n4) (top edge S2).
+FAMILIES_2D = {"3": ("tri", 1), "4": ("quad", 1), "6": ("tri", 2), "8": ("quad", 2)}
+
+
+def family_of(typ):
+    """(shape, order, kinematics) of a 2D type name: CPE4RT -> ("quad", 1, "PE")."""
+    m = re.match(r"C(PE|PS|AX)(\d)", typ.upper())
+    shape, order = FAMILIES_2D[m.group(2)]
+    return shape, order, m.group(1)
+
+
+def mesh2d(nx, ny, x0, x1, y0, y1, shape, order, nid0=0, eid0=0):
+    """A structured nx x ny grid of cells as quads or triangles of order 1 or 2 (Abaqus node order).
+    Returns nodes [(id, x, y)], elems [(id, n...)], and per cell row j the bottom and top elements:
+    rows[j] = ([bottom-edge elements], [top-edge elements]) with the faces given by faces()."""
+    step = order
+    NX, NY = nx * step, ny * step
+    nid = lambda i, j: nid0 + 1 + i + j * (NX + 1)
+    used, elems, rows = set(), [], []
+    e = eid0
+    for j in range(ny):
+        bottom, top = [], []
+        for i in range(nx):
+            I, J = i * step, j * step
+            c1, c2, c3, c4 = nid(I, J), nid(I + step, J), nid(I + step, J + step), nid(I, J + step)
+            if order == 1:
+                mids = {}
+            else:
+                mids = {"b": nid(I + 1, J), "r": nid(I + 2, J + 1), "t": nid(I + 1, J + 2), "l": nid(I, J + 1), "c": nid(I + 1, J + 1)}
+            if shape == "quad":
+                conn = [c1, c2, c3, c4] + ([mids["b"], mids["r"], mids["t"], mids["l"]] if order == 2 else [])
+                e += 1
+                elems.append((e,) + tuple(conn))
+                bottom.append(e), top.append(e)
+            else:
+                a = [c1, c2, c3] + ([mids["b"], mids["r"], mids["c"]] if order == 2 else [])
+                b = [c1, c3, c4] + ([mids["c"], mids["t"], mids["l"]] if order == 2 else [])
+                elems.append((e + 1,) + tuple(a))
+                elems.append((e + 2,) + tuple(b))
+                bottom.append(e + 1), top.append(e + 2)
+                e += 2
+        rows.append((bottom, top))
+    for el in elems:
+        used.update(el[1:])
+    nodes = [(nid(i, j), x0 + (x1 - x0) * i / NX, y0 + (y1 - y0) * j / NY) for j in range(NY + 1) for i in range(NX + 1) if nid(i, j) in used]
+    return nodes, elems, rows
+
+
+def faces(shape):
+    """Face numbers of the bottom and top edges of a cell's elements."""
+    return ("1", "3") if shape == "quad" else ("1", "2")
+
+
+# Axisymmetric variant: the planar picture turned by 90 degrees about the point (0, R_AXI): r = R_AXI - y,
+# z = x (a proper rotation, so elements keep their orientation). The large block becomes an outer ring
+# r in [1.25, 2.5] fixed on its outside, the small block an inner ring r in [1, 1.25] pressed outward
+# and slid axially. Volume pi (16 R - 10.75) = 29.25 pi for R = 2.5 (docs/verification.md).
+R_AXI = 2.5
+
+
+def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
+    """The spec's finite-sliding problems: a block 2 x 0.25 (4 x 6 cells) pressed on a block 6 x 1.25
+    (12 x 2 cells) fixed at its bottom; total area 8, rho c = 1. The thin upper block passes the applied
+    pressure on nearly uniformly (a few % spread), and the blocks' nodes meet along the interface at the
+    start; both have 24 cells, so slabs along y put them on different ranks.
     series: conductance (pressure-dependent gap conductance, 5 steps), radiation (gap radiation,
-    5 steps), friction (Lagrange friction and frictional heating, 3 steps)."""
-    bnodes, belems = grid2d(12, 2, 0.0, 6.0, 0.0, 1.25)
-    tnodes, telems = grid2d(4, 6, 2.0, 4.0, 1.25, 1.5)
-    tnodes = [(n + 1000, x, y) for n, x, y in tnodes]
-    telems = [(e[0] + 1000,) + tuple(v + 1000 for v in e[1:]) for e in telems]
+    5 steps), friction (Lagrange friction and frictional heating, 3 steps).
+    typ: any 2D type of the catalogue (CPE*, CPS*, CAX*): triangles split each cell, second-order
+    types get midside nodes, axisymmetric types the rings described at R_AXI (slide along z, press
+    along r; the applied pressure scaled by r_interface / r_face so that the interface sees 100; the
+    friction series' radial force 211.6, of which the inner ring's hoop stiffness takes about 5 %, so
+    that the interface carries about 200 as in the planar decks)."""
+    typ = typ.upper()
+    shape, order, kin = family_of(typ)
+    axi = kin == "AX"
+    bnodes, belems, brows = mesh2d(12, 2, 0.0, 6.0, 0.0, 1.25, shape, order)
+    tnodes, telems, trows = mesh2d(4, 6, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000)
+    fb, ft = faces(shape)
     base = [n[0] for n in bnodes if abs(n[2]) < 1e-12]
     topface = [n[0] for n in tnodes if abs(n[2] - 1.5) < 1e-12]
-    main_elems = [e[0] for e in belems if e[0] > 12]                   # top row of the large block
-    sec_elems = [e[0] for e in telems if e[0] <= 1004]                 # bottom row of the small block
-    pressed = [e[0] for e in telems if e[0] > 1020]                    # top row of the small block
-    filmed = [6, 7]                                                    # centre of the large block's bottom
-    text = ("*HEADING\n Finite sliding between coupled temperature-displacement CPE4T blocks: %s series\n" % series +
-            fmt_nodes(bnodes) + "*NODE, NSET=ALL\n" + "".join(" %d, %.10g, %.10g\n" % n for n in tnodes) +
-            "*ELEMENT, TYPE=CPE4T, ELSET=LARGE\n" + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
-            "*ELEMENT, TYPE=CPE4T, ELSET=SMALL\n" + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
+    main_elems = brows[-1][1]   # top row of the large block
+    sec_elems = trows[0][0]     # bottom row of the small block
+    pressed = trows[-1][1]      # top row of the small block
+    filmed = [brows[0][0][k] for k in (5, 6)]  # centre of the large block's bottom
+    place = (lambda x, y: (R_AXI - y, x)) if axi else (lambda x, y: (x, y))
+    slide, press = ("2", "1") if axi else ("1", "2")
+    pscale = (R_AXI - 1.25) / (R_AXI - 1.5) if axi else 1.0
+    fmt = lambda nodes: "".join(" %d, %.10g, %.10g\n" % ((n[0],) + place(n[1], n[2])) for n in nodes)
+    text = ("*HEADING\n Finite sliding between coupled temperature-displacement %s blocks: %s series\n" % (typ, series) +
+            "*NODE, NSET=ALL\n" + fmt(bnodes) + "*NODE, NSET=ALL\n" + fmt(tnodes) +
+            "*ELEMENT, TYPE=%s, ELSET=LARGE\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
+            "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
             nset("BASE", base) + nset("TOPFACE", topface) + elset("MAINE", main_elems) + elset("SECE", sec_elems) +
             elset("PRESSED", pressed) + elset("FILMED", filmed) +
-            "*SURFACE, NAME=MAIN, TYPE=ELEMENT\n MAINE, S3\n*SURFACE, NAME=SECONDARY, TYPE=ELEMENT\n SECE, S1\n" + MAT +
+            "*SURFACE, NAME=MAIN, TYPE=ELEMENT\n MAINE, S%s\n*SURFACE, NAME=SECONDARY, TYPE=ELEMENT\n SECE, S%s\n" % (ft, fb) + MAT +
             "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n 1.0\n")
     if series == "conductance":
         text += "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
@@ -221,24 +293,27 @@ def sliding_blocks(series, auglagr=False):
         ref = topface[0]
         text += "".join("*EQUATION\n 2\n %d, %d, 1.0, %d, %d, -1.0\n" % (n, d, ref, d) for n in topface[1:] for d in (1, 2))
         text += ("*STEP, NAME=PRESS, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.5, 1.0\n"
-                 "*BOUNDARY\n BASE, 1, 2\n %d, 1, 1\n*CLOAD\n %d, 2, -200.0\n*END STEP\n" % (ref, ref) +
+                 "*BOUNDARY\n BASE, 1, 2\n %d, %s, %s\n*CLOAD\n %d, %s, %s\n*END STEP\n" % (ref, slide, slide, ref, press, "211.6" if axi else "-200.0") +
                  "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.025, 3.0, 1e-5, 0.025\n"
-                 "*BOUNDARY, AMPLITUDE=SLIDE\n %d, 1, 1, 1.5\n*END STEP\n" % ref +
+                 "*BOUNDARY, AMPLITUDE=SLIDE\n %d, %s, %s, 1.5\n*END STEP\n" % (ref, slide, slide) +
                  "*STEP, NAME=EQUILIBRATE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 20.0, 1e-5, 2.0\n*END STEP\n")
     else:
+        p1, p2 = "%.10g" % (100.0 * pscale), "%.10g" % (200.0 * pscale)
         text += ("*AMPLITUDE, NAME=OFF\n 0.0, 0.0, 1.0, 1.0\n*AMPLITUDE, NAME=FLUXDOWN\n 0.0, 1.0, 0.1, 0.0\n"
                  "*STEP, NAME=HEAT, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 1.0, 1e-5, 0.1\n"
-                 "*BOUNDARY\n BASE, 1, 2\n TOPFACE, 1, 1\n*DLOAD\n PRESSED, P3, 100.0\n*DFLUX\n PRESSED, S3, 100.0\n"
-                 "*FILM\n FILMED, F1, 0.0, 10.0\n*END STEP\n"
+                 "*BOUNDARY\n BASE, 1, 2\n TOPFACE, %s, %s\n*DLOAD\n PRESSED, P%s, %s\n*DFLUX\n PRESSED, S%s, 100.0\n" % (slide, slide, ft, p1, ft) +
+                 "*FILM\n FILMED, F%s, 0.0, 10.0\n*END STEP\n" % fb +
                  "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.05\n"
-                 "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, 1, 1, 1.5\n*END STEP\n"
+                 "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, %s, %s, 1.5\n*END STEP\n" % (slide, slide) +
                  "*STEP, NAME=STEADY\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n*END STEP\n"
                  "*STEP, NAME=DOUBLE PRESSURE\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
-                 "*DLOAD\n PRESSED, P3, 200.0\n*END STEP\n"
+                 "*DLOAD\n PRESSED, P%s, %s\n*END STEP\n" % (ft, p2) +
                  "*STEP, NAME=SLIDE OFF, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.1\n"
-                 "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, 2, 2\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, 1, 1, 5.0\n"
-                 "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S3, 100.0\n*END STEP\n")
-    write("sliding_%s%s_cpe4t.inp" % (series, "_auglagr" if auglagr else ""), text)
+                 "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, %s, %s, 5.0\n" % (press, press, slide, slide) +
+                 "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S%s, 100.0\n*END STEP\n" % ft)
+    name = "sliding_%s%s_%s.inp" % (series, "_auglagr" if auglagr else "", typ.lower())
+    with open(os.path.join(outdir or HERE, name), "w") as f:
+        f.write(text)
 
 
 def friction_cycle(law):
@@ -318,6 +393,11 @@ def contact_jacobian():
 
 
 if __name__ == "__main__":
+    import sys
+    if len(sys.argv) == 5 and sys.argv[1] == "--sliding":
+        # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR
+        sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4])
+        sys.exit(0)
     contact_jacobian()
     for series in ("conductance", "radiation", "friction"):
         sliding_blocks(series)

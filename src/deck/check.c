@@ -51,6 +51,49 @@ static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* One kinematics per body, one set of nodal unknowns per model: elements that share a node must have the
+ * same kinematics (a plane-stress element glued to a plane-strain one, or an axisymmetric one to a planar
+ * one, has no meaning), and every element must carry the same unknowns per node (the dof layout is the
+ * rows'). The first element that breaks either rule is named with the element it conflicts with. */
+static PetscErrorCode CheckKinematics(TslModel *m)
+{
+  PetscInt *first;
+
+  PetscFunctionBeginUser;
+  if (m->nelem == 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscMalloc1(m->nnode, &first));
+  for (PetscInt i = 0; i < m->nnode; i++) first[i] = -1;
+  for (PetscInt e = 0; e < m->nelem; e++) {
+    const TslElementType *a = TslElementTypeGet(m->elem_type[e]), *t0 = TslElementTypeGet(m->elem_type[0]);
+    char                  where[PETSC_MAX_PATH_LEN];
+    PetscBool             same = TslElementTypeSameModel(a, t0);
+    if (!same) PetscCall(PetscFree(first));
+    CHECK(same, ElemLoc(m, e), "element %" PetscInt_FMT " (%s, %s) cannot be in one model with element %" PetscInt_FMT " (%s, %s) at %s", m->elem_id[e], a->name,
+          TslElementTypeKinematicsName(a), m->elem_id[0], t0->name, TslElementTypeKinematicsName(t0), TslLocString(m, ElemLoc(m, 0), where, sizeof(where)));
+    for (PetscInt j = m->elem_ptr[e]; j < m->elem_ptr[e + 1]; j++) {
+      PetscInt              n = TslModelNodeIndex(m, m->elem_conn[j]);
+      const TslElementType *b;
+      if (n < 0) continue;
+      if (first[n] < 0) {
+        first[n] = e;
+        continue;
+      }
+      b = TslElementTypeGet(m->elem_type[first[n]]);
+      if (TslElementTypeSameKinematics(a, b)) continue;
+      {
+        PetscInt other = first[n];
+        PetscCall(PetscFree(first));
+        CHECK(PETSC_FALSE, ElemLoc(m, e),
+              "element %" PetscInt_FMT " (%s, %s) shares node %" PetscInt_FMT " with element %" PetscInt_FMT " (%s, %s) at %s: one body, one kinematics",
+              m->elem_id[e], a->name, TslElementTypeKinematicsName(a), m->elem_conn[j], m->elem_id[other], b->name, TslElementTypeKinematicsName(b),
+              TslLocString(m, ElemLoc(m, other), where, sizeof(where)));
+      }
+    }
+  }
+  PetscCall(PetscFree(first));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckMesh(TslModel *m)
 {
   PetscFunctionBeginUser;
@@ -77,6 +120,7 @@ static PetscErrorCode CheckMesh(TslModel *m)
             m->elem_id[e], m->elem_conn[j]);
   }
   for (PetscInt e = 0; e < m->nelem; e++) PetscCall(CheckCollapsed(m, e));
+  PetscCall(CheckKinematics(m));
   for (PetscInt s = 0; s < m->nnset; s++)
     for (PetscInt k = 0; k < m->nsets[s].n; k++)
       CHECK(TslModelNodeIndex(m, m->nsets[s].ids[k]) >= 0, m->nsets[s].loc, "node set %s contains undefined node %" PetscInt_FMT, m->nsets[s].name,
@@ -121,10 +165,10 @@ static PetscErrorCode CheckMaterial(TslModel *m, const TslMaterial *mat, const T
 
   PetscFunctionBeginUser;
   (void)TslLocString(m, sec->loc, where, sizeof(where));
-  CHECK(mat->has_elastic, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *ELASTIC", mat->name, where);
-  CHECK(mat->has_conductivity, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *CONDUCTIVITY", mat->name, where);
-  CHECK(mat->has_density, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *DENSITY", mat->name, where);
-  CHECK(mat->has_specific_heat, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *SPECIFIC HEAT", mat->name, where);
+  CHECK(mat->prop[TSL_PROP_ELASTIC].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *ELASTIC", mat->name, where);
+  CHECK(mat->prop[TSL_PROP_CONDUCTIVITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *CONDUCTIVITY", mat->name, where);
+  CHECK(mat->prop[TSL_PROP_DENSITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *DENSITY", mat->name, where);
+  CHECK(mat->prop[TSL_PROP_SPECIFIC_HEAT].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *SPECIFIC HEAT", mat->name, where);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -884,11 +884,12 @@ static PetscErrorCode CheckIsotropic(Deck *d)
  * data line, where they go in TslMaterial, and the open interval each must lie in. The ranges are the
  * physical ones (a negative density gives temperatures of the wrong sign, not an error, further on), so
  * they are checked here, at the data line. */
-enum { PROP_ELASTIC, PROP_CONDUCTIVITY, PROP_DENSITY, PROP_SPECIFIC_HEAT, PROP_EXPANSION };
-
+/* Material properties, one row per keyword (the keyword table's kind is a TslProperty): the values of a
+ * data line and the open interval each must lie in. The ranges are the physical ones (a negative density
+ * gives temperatures of the wrong sign, not an error, further on), so they are checked here, at the data
+ * line. */
 typedef struct {
   const char *what;   /* the value, for messages */
-  size_t      offset; /* offsetof(TslMaterial, value) */
   PetscReal   lo, hi; /* open interval */
   const char *range;  /* the interval as the user reads it */
 } DeckPropertyValue;
@@ -896,58 +897,57 @@ typedef struct {
 typedef struct {
   PetscInt          nval;
   DeckPropertyValue val[2];
-  size_t            has;       /* offsetof(TslMaterial, has_...) */
   PetscBool         isotropic; /* TYPE= may be given, only ISOTROPIC is supported */
 } DeckProperty;
 
-static const DeckProperty Properties[] = {
-    [PROP_ELASTIC]       = {2,
-                            {{"Young's modulus", offsetof(TslMaterial, E), 0, PETSC_MAX_REAL, "must be positive"},
-                             {"Poisson's ratio", offsetof(TslMaterial, nu), -1, 0.5, "must lie in (-1, 0.5)"}},
-                            offsetof(TslMaterial, has_elastic),
-                            PETSC_TRUE},
-    [PROP_CONDUCTIVITY]  = {1,
-                            {{"the conductivity", offsetof(TslMaterial, conductivity), 0, PETSC_MAX_REAL, "must be positive"}},
-                            offsetof(TslMaterial, has_conductivity),
-                            PETSC_TRUE},
-    [PROP_DENSITY]       = {1,
-                            {{"the density", offsetof(TslMaterial, density), 0, PETSC_MAX_REAL, "must be positive"}},
-                            offsetof(TslMaterial, has_density),
-                            PETSC_FALSE},
-    [PROP_SPECIFIC_HEAT] = {1,
-                            {{"the specific heat", offsetof(TslMaterial, specific_heat), 0, PETSC_MAX_REAL, "must be positive"}},
-                            offsetof(TslMaterial, has_specific_heat),
-                            PETSC_FALSE},
-    [PROP_EXPANSION]     = {1,
-                            {{"the expansion coefficient", offsetof(TslMaterial, alpha), -PETSC_MAX_REAL, PETSC_MAX_REAL, ""}},
-                            offsetof(TslMaterial, has_expansion),
-                            PETSC_TRUE},
+static const DeckProperty Properties[TSL_NPROP] = {
+    [TSL_PROP_ELASTIC]       = {2,
+                                {{"Young's modulus", 0, PETSC_MAX_REAL, "must be positive"}, {"Poisson's ratio", -1, 0.5, "must lie in (-1, 0.5)"}},
+                                PETSC_TRUE},
+    [TSL_PROP_CONDUCTIVITY]  = {1, {{"the conductivity", 0, PETSC_MAX_REAL, "must be positive"}}, PETSC_TRUE},
+    [TSL_PROP_DENSITY]       = {1, {{"the density", 0, PETSC_MAX_REAL, "must be positive"}}, PETSC_FALSE},
+    [TSL_PROP_SPECIFIC_HEAT] = {1, {{"the specific heat", 0, PETSC_MAX_REAL, "must be positive"}}, PETSC_FALSE},
+    [TSL_PROP_EXPANSION]     = {1, {{"the expansion coefficient", -PETSC_MAX_REAL, PETSC_MAX_REAL, ""}}, PETSC_TRUE},
 };
 
-/* The one data line of a material property: its values, each checked against its range, and an
- * optional temperature column. */
-static PetscErrorCode PropertyLine(Deck *d, const DeckProperty *p, const char *material, PetscReal val[])
+/* The data lines of a material property: one line (a constant; a temperature column is then ignored) or
+ * several, each with its temperature, strictly ascending (a table in temperature). */
+static PetscErrorCode PropertyLines(Deck *d, const DeckProperty *p, const char *material, TslPropertyTable *tab)
 {
-  PetscBool got;
+  PetscBool got, has_theta, first_has_theta = PETSC_FALSE;
   char      kwname[64];
 
   PetscFunctionBeginUser;
   PetscCall(PetscStrncpy(kwname, d->kw, sizeof(kwname)));
-  PetscCall(DataLine(d, 0, &got));
-  USER_CHECK(got, LOC_FMT "*%s needs a data line", KLOC(d), kwname);
-  USER_CHECK(d->nfield <= p->nval + 1, LOC_FMT "*%s data line has %" PetscInt_FMT " values, expected %" PetscInt_FMT " (and an optional temperature)",
-             DLOC(d), kwname, d->nfield, p->nval);
-  for (PetscInt i = 0; i < p->nval; i++) {
-    const DeckPropertyValue *pv = &p->val[i];
-    PetscCall(FieldReal(d, i, pv->what, &val[i]));
-    USER_CHECK(val[i] > pv->lo && val[i] < pv->hi, LOC_FMT "material %s: %s %s (got %g)", DLOC(d), material, pv->what, pv->range, (double)val[i]);
+  tab->n   = 0;
+  tab->loc = d->kwloc;
+  while (PETSC_TRUE) {
+    PetscInt r = tab->n;
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    USER_CHECK(r < TSL_MAX_TABLE_ROWS, LOC_FMT "*%s: at most %d temperature points", DLOC(d), kwname, TSL_MAX_TABLE_ROWS);
+    USER_CHECK(d->nfield <= p->nval + 1,
+               LOC_FMT "*%s data line has %" PetscInt_FMT " values, expected %" PetscInt_FMT " (and an optional temperature)", DLOC(d), kwname,
+               d->nfield, p->nval);
+    for (PetscInt i = 0; i < p->nval; i++) {
+      const DeckPropertyValue *pv = &p->val[i];
+      PetscCall(FieldReal(d, i, pv->what, &tab->value[r][i]));
+      USER_CHECK(tab->value[r][i] > pv->lo && tab->value[r][i] < pv->hi, LOC_FMT "material %s: %s %s (got %g)", DLOC(d), material, pv->what,
+                 pv->range, (double)tab->value[r][i]);
+    }
+    has_theta     = d->nfield > p->nval && d->field[p->nval][0];
+    tab->theta[r] = 0;
+    if (has_theta) {
+      PetscCall(FieldReal(d, p->nval, "the temperature", &tab->theta[r]));
+    }
+    if (r == 0) first_has_theta = has_theta;
+    USER_CHECK(r == 0 || (has_theta && first_has_theta), LOC_FMT "*%s: a temperature-dependent table needs the temperature on every data line",
+               DLOC(d), kwname);
+    USER_CHECK(r == 0 || tab->theta[r] > tab->theta[r - 1], LOC_FMT "*%s: temperatures must ascend (%g after %g)", DLOC(d), kwname,
+               (double)tab->theta[r], (double)tab->theta[r - 1]);
+    tab->n++;
   }
-  if (d->nfield > p->nval) { /* a temperature column: accepted when it is the only row */
-    PetscReal t;
-    PetscCall(FieldReal(d, p->nval, "the temperature", &t));
-  }
-  PetscCall(DataLine(d, 0, &got));
-  USER_CHECK(!got, LOC_FMT "temperature-dependent *%s data (more than one data line) is not supported yet", DLOC(d), kwname);
+  USER_CHECK(tab->n > 0, LOC_FMT "*%s needs a data line", KLOC(d), kwname);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -955,14 +955,11 @@ static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
 {
   TslMaterial        *mat = &d->m->materials[d->material];
   const DeckProperty *p   = &Properties[kw->kind];
-  PetscReal           v[2];
 
   PetscFunctionBeginUser;
   if (p->isotropic) PetscCall(CheckIsotropic(d));
-  if (kw->kind == PROP_EXPANSION) PetscCall(ParamReal(d, "ZERO", &mat->alpha_zero, NULL));
-  PetscCall(PropertyLine(d, p, mat->name, v));
-  for (PetscInt i = 0; i < p->nval; i++) *(PetscReal *)((char *)mat + p->val[i].offset) = v[i];
-  *(PetscBool *)((char *)mat + p->has) = PETSC_TRUE;
+  if (kw->kind == TSL_PROP_EXPANSION) PetscCall(ParamReal(d, "ZERO", &mat->alpha_zero, NULL));
+  PetscCall(PropertyLines(d, p, mat->name, &mat->prop[kw->kind]));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1762,11 +1759,11 @@ static const DeckKeyword Keywords[] = {
     {"ELSET", AT_MODEL, IN_NONE, "ELSET|GENERATE", KwSet, 1, NULL},
     {"SURFACE", AT_MODEL, IN_NONE, "NAME|TYPE", KwSurface, 0, NULL},
     {"MATERIAL", AT_MODEL, IN_NONE, "NAME", KwMaterial, 0, NULL},
-    {"ELASTIC", AT_MODEL, IN_MATERIAL, "TYPE", KwProperty, PROP_ELASTIC, NULL},
-    {"CONDUCTIVITY", AT_MODEL, IN_MATERIAL, "TYPE", KwProperty, PROP_CONDUCTIVITY, NULL},
-    {"DENSITY", AT_MODEL, IN_MATERIAL, "", KwProperty, PROP_DENSITY, NULL},
-    {"SPECIFIC HEAT", AT_MODEL, IN_MATERIAL, "", KwProperty, PROP_SPECIFIC_HEAT, NULL},
-    {"EXPANSION", AT_MODEL, IN_MATERIAL, "TYPE|ZERO", KwProperty, PROP_EXPANSION, NULL},
+    {"ELASTIC", AT_MODEL, IN_MATERIAL, "TYPE", KwProperty, TSL_PROP_ELASTIC, NULL},
+    {"CONDUCTIVITY", AT_MODEL, IN_MATERIAL, "TYPE", KwProperty, TSL_PROP_CONDUCTIVITY, NULL},
+    {"DENSITY", AT_MODEL, IN_MATERIAL, "", KwProperty, TSL_PROP_DENSITY, NULL},
+    {"SPECIFIC HEAT", AT_MODEL, IN_MATERIAL, "", KwProperty, TSL_PROP_SPECIFIC_HEAT, NULL},
+    {"EXPANSION", AT_MODEL, IN_MATERIAL, "TYPE|ZERO", KwProperty, TSL_PROP_EXPANSION, NULL},
     {"SOLID SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL", KwSolidSection, 0, NULL},
     {"INITIAL CONDITIONS", AT_MODEL, IN_NONE, "TYPE", KwInitial, 0, NULL},
     {"AMPLITUDE", AT_BOTH, IN_NONE, "NAME|TIME|DEFINITION", KwAmplitude, 0, NULL},

@@ -9,12 +9,42 @@
 
 /* ---- deck types -------------------------------------------------------------------------------- */
 
+/* The kinematics of a row and what follows from it: kinematics, model dimension, unknowns per node and
+ * their dialect dof numbers. */
+// clang-format off
+#define PLANE_STRAIN TSL_KIN_PLANE_STRAIN, 2, 3, {1, 2, 11}
+#define PLANE_STRESS TSL_KIN_PLANE_STRESS, 2, 3, {1, 2, 11}
+#define AXISYMMETRIC TSL_KIN_AXISYMMETRIC, 2, 3, {1, 2, 11}
+#define SOLID        TSL_KIN_SOLID3D, 3, 4, {1, 2, 3, 11}
+
 static const TslElementType Catalogue[] = {
-    {"CPE4T", &TslGeomQuad4, TSL_KIN_PLANE_STRAIN, 2, 3, PETSC_FALSE, PETSC_FALSE, "4-node plane strain, coupled temperature-displacement"},
-    {"CPS4T", &TslGeomQuad4, TSL_KIN_PLANE_STRESS, 2, 3, PETSC_FALSE, PETSC_FALSE, "4-node plane stress, coupled temperature-displacement"},
-    {"CAX4T", &TslGeomQuad4, TSL_KIN_AXISYMMETRIC, 2, 3, PETSC_FALSE, PETSC_FALSE, "4-node axisymmetric, coupled temperature-displacement"},
-    {"C3D8T", &TslGeomHex8, TSL_KIN_SOLID3D, 3, 4, PETSC_FALSE, PETSC_FALSE, "8-node brick, coupled temperature-displacement"},
+    {"CPE3T",   &TslGeomTri3,   &TslFormFull,           PLANE_STRAIN, "3-node plane strain"},
+    {"CPE4T",   &TslGeomQuad4,  &TslFormFull,           PLANE_STRAIN, "4-node plane strain"},
+    {"CPE4RT",  &TslGeomQuad4,  &TslFormReduced,        PLANE_STRAIN, "4-node plane strain, reduced integration, hourglass control"},
+    {"CPE4RHT", &TslGeomQuad4,  &TslFormReducedHybrid,  PLANE_STRAIN, "4-node plane strain, reduced integration, hourglass control, hybrid"},
+    {"CPE6MT",  &TslGeomTri6,   &TslFormModified,       PLANE_STRAIN, "6-node modified second-order plane strain"},
+    {"CPE6MHT", &TslGeomTri6,   &TslFormModifiedHybrid, PLANE_STRAIN, "6-node modified second-order plane strain, hybrid"},
+    {"CPE8T",   &TslGeomQuad8,  &TslFormFull,           PLANE_STRAIN, "8-node plane strain"},
+    {"CPE8HT",  &TslGeomQuad8,  &TslFormHybrid,         PLANE_STRAIN, "8-node plane strain, hybrid"},
+    {"CPS3T",   &TslGeomTri3,   &TslFormFull,           PLANE_STRESS, "3-node plane stress"},
+    {"CPS4T",   &TslGeomQuad4,  &TslFormFull,           PLANE_STRESS, "4-node plane stress"},
+    {"CPS4RT",  &TslGeomQuad4,  &TslFormReduced,        PLANE_STRESS, "4-node plane stress, reduced integration, hourglass control"},
+    {"CPS6MT",  &TslGeomTri6,   &TslFormModified,       PLANE_STRESS, "6-node modified second-order plane stress"},
+    {"CAX3T",   &TslGeomTri3,   &TslFormFull,           AXISYMMETRIC, "3-node axisymmetric"},
+    {"CAX4T",   &TslGeomQuad4,  &TslFormFull,           AXISYMMETRIC, "4-node axisymmetric"},
+    {"CAX4RT",  &TslGeomQuad4,  &TslFormReduced,        AXISYMMETRIC, "4-node axisymmetric, reduced integration, hourglass control"},
+    {"CAX4RHT", &TslGeomQuad4,  &TslFormReducedHybrid,  AXISYMMETRIC, "4-node axisymmetric, reduced integration, hourglass control, hybrid"},
+    {"CAX6MT",  &TslGeomTri6,   &TslFormModified,       AXISYMMETRIC, "6-node modified second-order axisymmetric"},
+    {"CAX6MHT", &TslGeomTri6,   &TslFormModifiedHybrid, AXISYMMETRIC, "6-node modified second-order axisymmetric, hybrid"},
+    {"CAX8T",   &TslGeomQuad8,  &TslFormFull,           AXISYMMETRIC, "8-node axisymmetric"},
+    {"C3D4T",   &TslGeomTet4,   &TslFormFull,           SOLID,        "4-node tetrahedron"},
+    {"C3D6T",   &TslGeomWedge6, &TslFormFull,           SOLID,        "6-node triangular prism"},
+    {"C3D8T",   &TslGeomHex8,   &TslFormFull,           SOLID,        "8-node brick"},
+    {"C3D8RT",  &TslGeomHex8,   &TslFormReduced,        SOLID,        "8-node brick, reduced integration, hourglass control"},
+    {"C3D8RHT", &TslGeomHex8,   &TslFormReducedHybrid,  SOLID,        "8-node brick, reduced integration, hourglass control, hybrid"},
+    {"C3D10MT", &TslGeomTet10,  &TslFormModified,       SOLID,        "10-node modified second-order tetrahedron"},
 };
+// clang-format on
 
 PetscInt TslElementTypeCount(void)
 {

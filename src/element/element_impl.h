@@ -1,4 +1,5 @@
-/* Private to src/element/: integration-point geometry and the kinematics table shared by the kernels. */
+/* Private to src/element/: the kinematics and formulation tables and the integration-point helpers
+ * shared by the kernels. */
 #pragma once
 #include <thermoslide/element.h>
 
@@ -8,33 +9,68 @@ extern const TslGeometry TslGeomLine2, TslGeomLine3, TslGeomTri3, TslGeomTri6, T
     TslGeomTet10;
 
 /* What distinguishes one kinematic assumption from another, in one place (kinematics.c). The kernels
- * only read these flags, so a new element type is a catalogue row, and a new kinematics a table row. */
-typedef struct {
-  PetscBool hoop;        /* eps_33 = u_r / r (axisymmetric) */
-  PetscBool free_normal; /* sigma_33 = 0 (plane stress): eps_33 is condensed out of D */
-  PetscBool revolve;     /* dV = 2 pi r dA */
-  PetscBool thickness;   /* dV = t dA (plane elements) */
-} TslKinematicsInfo;
+ * only read this row, so a new element type is a catalogue row, and a new kinematics a table row. */
+struct TslKinematicsRow {
+  const char *name;
+  PetscBool   hoop;        /* eps_33 = u_r / r (axisymmetric) */
+  PetscBool   free_normal; /* sigma_33 = 0 (plane stress): eps_33 is condensed out of D */
+  PetscBool   revolve;     /* dV = 2 pi r dA */
+  PetscBool   thickness;   /* dV = t dA (plane elements) */
+  PetscInt (*rigid_modes)(const PetscReal x[3], PetscReal modes[6][3]);
+};
 
-const TslKinematicsInfo *TslKinematicsInfoGet(TslKinematics kin);
+const struct TslKinematicsRow *TslKinematicsRowGet(TslKinematics kin);
 
 /* One integration point of an element in its reference configuration. */
 typedef struct {
   PetscReal N[TSL_MAX_ELEM_NODES];
   PetscReal dNdx[TSL_MAX_ELEM_NODES][3]; /* spatial gradients; third component 0 in 2D */
   PetscReal x[3];                        /* position (x[0] = r for axisymmetric) */
+  PetscReal xi[3];                       /* reference coordinates */
   PetscReal detJ;
   PetscReal dV; /* weight * detJ * (thickness or 2 pi r or 1) */
 } TslElementPoint;
 
 /* Evaluates the point at reference coordinates xi with quadrature weight w. Returns PETSC_FALSE when
  * the map is not valid there (detJ <= 0, or r <= 0 for axisymmetric elements). */
-PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementMaterial *mat, const PetscReal x[], const PetscReal xi[], PetscReal w,
+PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementSection *sec, const PetscReal x[], const PetscReal xi[], PetscReal w,
                                   TslElementPoint *p);
 
 /* Voigt strain-displacement matrix B[6][nnode*dim] (engineering shear) at a point. */
 void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p, PetscReal B[6][TSL_MAX_ELEM_NODES * 3]);
 
-/* Effective elasticity D[6][6] for the kinematics (plane stress: condensed so that sigma_33 = 0) and the
- * thermal stress per unit temperature rise beta = D m alpha (m = normal-components indicator). */
-void TslElementElasticity(TslKinematics kin, const TslElementMaterial *mat, PetscReal D[6][6], PetscReal beta[6]);
+/* Elasticity of the kinematics at a material point: D[6][6] (plane stress: condensed so that
+ * sigma_33 = 0) and its derivative dD in theta (NULL: not wanted). */
+void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp, PetscReal D[6][6], PetscReal dD[6][6]);
+
+/* Formulation: how the strain terms are integrated and what is added to them. Function pointers where
+ * behaviour differs; the generic kernel (kernels.c) calls them.
+ *   quadrature   the integration points of the mechanical terms (conduction always uses the full rule)
+ *   pressure     number of independent pressure terms of a hybrid formulation at a point, and their
+ *                values P[] (NULL: displacement formulation)
+ *   hourglass    stabilisation added to a reduced-integration element (NULL: none); adds to R and K
+ *                (may be NULL) and returns the stabilisation energy
+ *   nodal_volume the lumping weights V_a (capacity and mass)
+ *   face_rule    the points used for a face integral: the face family's own rule, or the sub-faces of
+ *                a modified element (positive nodal weights) */
+typedef struct {
+  PetscInt  n;
+  PetscReal N[TSL_MAX_QP * 4][TSL_MAX_FACE_NODES]; /* face shape values at each point */
+  PetscReal dN[TSL_MAX_QP * 4][TSL_MAX_FACE_NODES][2];
+  PetscReal w[TSL_MAX_QP * 4];
+} TslFaceRule;
+
+struct TslFormulation {
+  const char *name;
+  const TslQuadrature *(*quadrature)(const TslGeometry *g);
+  PetscInt (*pressure)(const TslGeometry *g, const TslElementPoint *p, PetscReal P[]);
+  PetscErrorCode (*hourglass)(const TslElementInput *in, const TslMaterialPoint *mp, PetscReal R[], PetscReal K[], PetscReal *energy);
+  PetscBool (*nodal_volume)(const TslElementInput *in, PetscReal vol[]);
+  void (*face_rule)(const TslGeometry *g, PetscInt face, TslFaceRule *rule);
+};
+
+/* Hybrid pressure spaces are at most linear: 1 + dim terms. */
+#define TSL_MAX_PRESSURE 4
+
+/* The formulations (formulations.c). */
+extern const TslFormulation TslFormFull, TslFormReduced, TslFormHybrid, TslFormReducedHybrid, TslFormModified, TslFormModifiedHybrid;

@@ -1,119 +1,346 @@
-/* Coupled temperature-displacement element kernels (small strain, linear, isotropic).
+/* Coupled temperature-displacement element kernels (small strain, isotropic, temperature-dependent
+ * properties), one generic code path for every catalogue row. The row's formulation (element_impl.h)
+ * supplies the mechanical integration points, the hybrid pressure space, the hourglass control, the
+ * lumping weights and the face rule; the kinematics row supplies the strain and the measure.
  *
- * Unknowns are interleaved per node, (u_1..u_dim, theta), element vectors node-major: a*ndof + i.
- * All volume integrals use the family's full quadrature; reduced/hybrid formulations are not here.
+ * Unknowns per node in the type's node_dof order (displacements, theta last); element vectors
+ * node-major: a*ndof + i. No time discretisation here: capacity and mass are returned separately
+ * (TslElementLumped) and combined by the solver.
  */
 #include "element_impl.h"
 
-/* Nodal capacity weights V_a = int N_a dV (row-sum lumping). Lumping rather than the consistent
- * capacity matrix keeps backward Euler monotone after a sudden change of flux (no undershoot below
- * the initial temperature next to the loaded face), and makes the stored heat a nodal sum that the
- * global heat balance can close exactly. Returns PETSC_FALSE for an invalid (inverted) element. */
-static PetscBool NodalVolume(const TslElementInput *in, PetscReal vol[])
-{
-  const TslGeometry *g = in->type->geom;
-  TslElementPoint    p;
+static const PetscReal VoigtM[6] = {1, 1, 1, 0, 0, 0};
 
-  for (PetscInt a = 0; a < g->nnode; a++) vol[a] = 0;
+static PetscReal NodalTheta(const TslElementInput *in, const PetscReal *N, const PetscReal *u)
+{
+  const PetscInt ndof = in->type->ndof, th = ndof - 1;
+  PetscReal      theta = 0;
+  for (PetscInt a = 0; a < in->type->geom->nnode; a++) theta += N[a] * u[ndof * a + th];
+  return theta;
+}
+
+static PetscReal PointInitialTheta(const TslElementInput *in, const TslElementPoint *p)
+{
+  PetscReal theta = 0;
+  for (PetscInt a = 0; a < in->type->geom->nnode; a++) theta += p->N[a] * in->theta_init[a];
+  return theta;
+}
+
+/* Conduction with the family's full rule: R_theta(a) = int k grad N_a . grad theta dV;
+ * K = int k grad N_a . grad N_b + dk/dtheta (grad N_a . grad theta) N_b dV. */
+static PetscBool Conduction(const TslElementInput *in, PetscReal R[], PetscReal K[])
+{
+  const TslElementType *t   = in->type;
+  const TslGeometry    *g   = t->geom;
+  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, n = g->nnode, nd = n * ndof;
+  TslElementPoint       p;
+
   for (PetscInt q = 0; q < g->full.n; q++) {
-    if (!TslElementPointEvaluate(in->type, in->mat, in->x, g->full.xi[q], g->full.w[q], &p)) return PETSC_FALSE;
-    for (PetscInt a = 0; a < g->nnode; a++) vol[a] += p.N[a] * p.dV;
+    PetscReal        grad[3] = {0, 0, 0}, theta;
+    TslMaterialPoint mp;
+
+    if (!TslElementPointEvaluate(t, in->sec, in->x, g->full.xi[q], g->full.w[q], &p)) return PETSC_FALSE;
+    theta = NodalTheta(in, p.N, in->u);
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt d = 0; d < dim; d++) grad[d] += p.dNdx[a][d] * in->u[ndof * a + th];
+    TslMaterialEval(in->sec->mat, theta, &mp);
+    for (PetscInt a = 0; a < n; a++) {
+      PetscReal ga = 0;
+      for (PetscInt d = 0; d < dim; d++) ga += p.dNdx[a][d] * grad[d];
+      R[ndof * a + th] += mp.k * ga * p.dV;
+      if (!K) continue;
+      for (PetscInt b = 0; b < n; b++) {
+        PetscReal kab = 0;
+        for (PetscInt d = 0; d < dim; d++) kab += p.dNdx[a][d] * p.dNdx[b][d];
+        K[(ndof * a + th) * nd + ndof * b + th] += (mp.k * kab + mp.dk * ga * p.N[b]) * p.dV;
+      }
+    }
   }
   return PETSC_TRUE;
 }
 
-/* Strain (Voigt, engineering shear) and theta - theta_init at a point. */
-static void PointStrain(const TslElementInput *in, const TslElementPoint *p, PetscReal B[6][TSL_MAX_ELEM_NODES * 3], PetscReal eps[6],
-                        PetscReal *dtheta)
-{
-  const PetscInt dim = in->type->dim, ndof = in->type->ndof, n = in->type->geom->nnode;
+/* State of the mechanical terms at one point. */
+typedef struct {
+  TslElementPoint  p;
+  TslMaterialPoint mp;
+  PetscReal        B[6][TSL_MAX_ELEM_NODES * 3];
+  PetscReal        eps[6], eps_th, deps_th; /* total strain, thermal strain (per normal component) and d/dtheta */
+} MechPoint;
 
-  TslElementStrainMatrix(in->type, p, B);
-  *dtheta = 0;
-  for (PetscInt r = 0; r < 6; r++) eps[r] = 0;
-  for (PetscInt a = 0; a < n; a++) {
-    *dtheta += p->N[a] * (in->u[ndof * a + dim] - in->theta_init[a]);
-    for (PetscInt i = 0; i < dim; i++)
-      for (PetscInt r = 0; r < 6; r++) eps[r] += B[r][dim * a + i] * in->u[ndof * a + i];
-  }
-}
-
-/* Weak form, per integration point with dV = w detJ (t | 2 pi r | 1):
- *   R_u(a)     = int B_a^T sigma dV,          sigma = D (eps(u) - m alpha (theta - theta_init))
- *   R_theta(a) = int k grad N_a . grad theta dV + C_a (theta_a - theta_old_a) / dt,  C_a = rho c V_a
- * Tangent: K_uu = int B^T D B dV, K_u_theta = -int B^T beta N dV (beta = D m alpha), K_theta_u = 0,
- *          K_theta_theta = int k grad N grad N^T dV + diag(C_a / dt). The capacity is dropped when steady. */
-PetscErrorCode TslElementResidual(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted)
+static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi[], PetscReal w, MechPoint *mq)
 {
   const TslElementType *t   = in->type;
-  const TslGeometry    *g   = t->geom;
-  const PetscInt        dim = t->dim, ndof = t->ndof, n = g->nnode, nd = n * ndof;
-  const PetscReal       k = in->mat->conductivity;
-  PetscReal             D[6][6], beta[6], B[6][TSL_MAX_ELEM_NODES * 3], vol[TSL_MAX_ELEM_NODES];
-  TslElementPoint       p;
+  const PetscInt        dim = t->dim, ndof = t->ndof, n = t->geom->nnode;
+  PetscReal             theta;
 
-  PetscFunctionBeginUser;
-  PetscCheck(in->steady || in->dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Transient element residual needs dt > 0, got %g", (double)in->dt);
-  *inverted = PETSC_FALSE;
-  TslElementElasticity(t->kin, in->mat, D, beta);
-  for (PetscInt i = 0; i < nd; i++) R[i] = 0;
-  for (PetscInt a = 0; a < n; a++) vol[a] = 0;
-  if (K)
-    for (PetscInt i = 0; i < nd * nd; i++) K[i] = 0;
-  for (PetscInt q = 0; q < g->full.n; q++) {
-    PetscReal eps[6], sig[6], dtheta, grad[3] = {0, 0, 0}, DB[6][TSL_MAX_ELEM_NODES * 3];
+  if (!TslElementPointEvaluate(t, in->sec, in->x, xi, w, &mq->p)) return PETSC_FALSE;
+  TslElementStrainMatrix(t, &mq->p, mq->B);
+  for (PetscInt r = 0; r < 6; r++) {
+    mq->eps[r] = 0;
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < dim; i++) mq->eps[r] += mq->B[r][dim * a + i] * in->u[ndof * a + i];
+  }
+  theta = NodalTheta(in, mq->p.N, in->u);
+  TslMaterialEval(in->sec->mat, theta, &mq->mp);
+  mq->eps_th = TslMaterialThermalStrain(in->sec->mat, theta, PointInitialTheta(in, &mq->p), &mq->deps_th);
+  return PETSC_TRUE;
+}
 
-    if (!TslElementPointEvaluate(t, in->mat, in->x, g->full.xi[q], g->full.w[q], &p)) {
-      *inverted = PETSC_TRUE;
-      PetscFunctionReturn(PETSC_SUCCESS);
+/* Deviatoric elasticity 2 mu (I - m m^T / 3) in Voigt form (engineering shear) and the bulk modulus. */
+static void Deviatoric(PetscReal mu, PetscReal Dd[6][6])
+{
+  for (PetscInt i = 0; i < 6; i++)
+    for (PetscInt j = 0; j < 6; j++) Dd[i][j] = i < 3 && j < 3 ? 2 * mu * ((i == j) - 1.0 / 3) : (i == j ? mu : 0);
+}
+
+/* Hybrid condensation data, summed over the points: G = int B^T m P^T dV, H = int P P^T / K dV,
+ * g0 = int P 3 eps_th dV, and their derivatives in each nodal temperature. */
+typedef struct {
+  PetscInt  np;
+  PetscReal G[TSL_MAX_ELEM_NODES * 3][TSL_MAX_PRESSURE];
+  PetscReal H[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], g0[TSL_MAX_PRESSURE];
+  PetscReal dH[TSL_MAX_ELEM_NODES][TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], dg0[TSL_MAX_ELEM_NODES][TSL_MAX_PRESSURE];
+  PetscReal p[TSL_MAX_PRESSURE]; /* condensed pressure coefficients (mean stress, tension positive) */
+} Hybrid;
+
+/* Small dense solve by Gauss elimination with partial pivoting (n <= TSL_MAX_PRESSURE), in place. */
+static void SmallInverse(PetscInt n, PetscReal A[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], PetscReal Ai[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE])
+{
+  PetscReal M[TSL_MAX_PRESSURE][2 * TSL_MAX_PRESSURE];
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt j = 0; j < 2 * n; j++) M[i][j] = j < n ? A[i][j] : (j - n == i);
+  for (PetscInt c = 0; c < n; c++) {
+    PetscInt piv = c;
+    for (PetscInt i = c + 1; i < n; i++)
+      if (PetscAbsReal(M[i][c]) > PetscAbsReal(M[piv][c])) piv = i;
+    for (PetscInt j = 0; j < 2 * n; j++) {
+      PetscReal tmp = M[c][j];
+      M[c][j] = M[piv][j], M[piv][j] = tmp;
     }
-    PointStrain(in, &p, B, eps, &dtheta);
+    for (PetscInt i = 0; i < n; i++) {
+      PetscReal f;
+      if (i == c) continue;
+      f = M[i][c] / M[c][c];
+      for (PetscInt j = 0; j < 2 * n; j++) M[i][j] -= f * M[c][j];
+    }
+  }
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt j = 0; j < n; j++) Ai[i][j] = M[i][n + j] / M[i][i];
+}
+
+/* Mechanical terms over the formulation's points. Displacement formulation:
+ *   sigma = D (eps - eps_th m),  R_u = int B^T sigma dV,
+ *   K_uu = int B^T D B dV,  K_u_theta_b = int B^T (dD (eps - eps_th m) - D m deps_th) N_b dV.
+ * Hybrid (independent pressure p = P^T p_hat, condensed): sigma = 2 mu dev(eps) + p m with
+ *   int P (tr eps - 3 eps_th - p / K) dV = 0, i.e. H p_hat = G^T u - g0, so
+ *   R_u = int B^T 2 mu dev(eps) dV + G p_hat,  K_uu = K_dev + G H^-1 G^T,
+ *   d p_hat / d theta_b = H^-1 (-dg0_b - dH_b p_hat). The thermal strain is volumetric, so it enters
+ *   only through the pressure equation. Nearly incompressible material does not lock: the volumetric
+ *   constraint is imposed on the pressure space only (one term per linear element, 1 + dim per
+ *   quadratic one). If res is given, stresses, strains and the strain energy are averaged into it. */
+static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K[], Hybrid *hy, TslElementResult *res)
+{
+  const TslElementType *t    = in->type;
+  const TslGeometry    *g    = t->geom;
+  const TslQuadrature  *quad = t->form->quadrature(g);
+  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, n = g->nnode, nd = n * ndof, nu = n * dim;
+  const PetscBool       hybrid      = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
+  PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0}, vol_avg = 0;
+  MechPoint             mq;
+
+  if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
+  for (PetscInt q = 0; q < quad->n; q++) {
+    PetscReal D[6][6], dD[6][6], emech[6], sig[6], dsig[6], P[TSL_MAX_PRESSURE];
+    PetscReal DB[6][TSL_MAX_ELEM_NODES * 3];
+
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], &mq)) return PETSC_FALSE;
+    if (hybrid) {
+      const PetscReal nuv = mq.mp.nu, E = mq.mp.E, mu = E / (2 * (1 + nuv)), kb = E / (3 * (1 - 2 * nuv));
+      const PetscReal dmu = mq.mp.dE / (2 * (1 + nuv)) - mq.mp.dnu * E / (2 * (1 + nuv) * (1 + nuv));
+      const PetscReal dkb = mq.mp.dE / (3 * (1 - 2 * nuv)) + mq.mp.dnu * 2 * E / (3 * (1 - 2 * nuv) * (1 - 2 * nuv));
+      PetscReal       Bm[TSL_MAX_ELEM_NODES * 3];
+      hy->np = t->form->pressure(g, &mq.p, P);
+      Deviatoric(mu, D);
+      Deviatoric(dmu, dD);
+      for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r]; /* the deviatoric part ignores the volumetric eps_th */
+      for (PetscInt c = 0; c < nu; c++) {
+        Bm[c] = 0;
+        for (PetscInt r = 0; r < 3; r++) Bm[c] += mq.B[r][c];
+      }
+      for (PetscInt k = 0; k < hy->np; k++) {
+        for (PetscInt c = 0; c < nu; c++) hy->G[c][k] += Bm[c] * P[k] * mq.p.dV;
+        hy->g0[k] += P[k] * 3 * mq.eps_th * mq.p.dV;
+        for (PetscInt l = 0; l < hy->np; l++) hy->H[k][l] += P[k] * P[l] / kb * mq.p.dV;
+        for (PetscInt b = 0; b < n; b++) {
+          hy->dg0[b][k] += P[k] * 3 * mq.deps_th * mq.p.N[b] * mq.p.dV;
+          for (PetscInt l = 0; l < hy->np; l++) hy->dH[b][k][l] -= P[k] * P[l] * dkb / (kb * kb) * mq.p.N[b] * mq.p.dV;
+        }
+        P_avg[k] += P[k] * mq.p.dV;
+      }
+      vol_avg += mq.p.dV;
+    } else {
+      TslElementElasticity(t, &mq.mp, D, dD);
+      for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r] - VoigtM[r] * mq.eps_th;
+    }
     for (PetscInt r = 0; r < 6; r++) {
-      sig[r] = -beta[r] * dtheta;
-      for (PetscInt s = 0; s < 6; s++) sig[r] += D[r][s] * eps[s];
+      sig[r] = dsig[r] = 0;
+      for (PetscInt s = 0; s < 6; s++) {
+        sig[r] += D[r][s] * emech[s];
+        dsig[r] += dD[r][s] * emech[s] - (hybrid ? 0 : D[r][s] * VoigtM[s] * mq.deps_th);
+      }
     }
-    for (PetscInt a = 0; a < n; a++) {
-      vol[a] += p.N[a] * p.dV; /* the same V_a as NodalVolume() */
-      for (PetscInt d = 0; d < dim; d++) grad[d] += p.dNdx[a][d] * in->u[ndof * a + dim];
-    }
-    for (PetscInt a = 0; a < n; a++) {
+    for (PetscInt a = 0; a < n; a++)
       for (PetscInt i = 0; i < dim; i++)
-        for (PetscInt r = 0; r < 6; r++) R[ndof * a + i] += B[r][dim * a + i] * sig[r] * p.dV;
-      for (PetscInt d = 0; d < dim; d++) R[ndof * a + dim] += k * p.dNdx[a][d] * grad[d] * p.dV;
+        for (PetscInt r = 0; r < 6; r++) R[ndof * a + i] += mq.B[r][dim * a + i] * sig[r] * mq.p.dV;
+    if (res) {
+      for (PetscInt r = 0; r < 6; r++) {
+        res->E[r] += mq.eps[r] / quad->n;
+        if (hybrid)
+          sdev_avg[r] += sig[r] * mq.p.dV;
+        else
+          res->S[r] += sig[r] / quad->n;
+      }
+      if (!hybrid)
+        for (PetscInt r = 0; r < 6; r++) res->strain_energy += 0.5 * sig[r] * emech[r] * mq.p.dV;
+      else
+        for (PetscInt r = 0; r < 6; r++) res->strain_energy += 0.5 * sig[r] * mq.eps[r] * mq.p.dV;
     }
     if (!K) continue;
     for (PetscInt r = 0; r < 6; r++)
-      for (PetscInt c = 0; c < n * dim; c++) {
+      for (PetscInt c = 0; c < nu; c++) {
         DB[r][c] = 0;
-        for (PetscInt s = 0; s < 6; s++) DB[r][c] += D[r][s] * B[s][c];
+        for (PetscInt s = 0; s < 6; s++) DB[r][c] += D[r][s] * mq.B[s][c];
       }
-    for (PetscInt a = 0; a < n; a++) {
+    for (PetscInt a = 0; a < n; a++)
       for (PetscInt i = 0; i < dim; i++) {
-        const PetscInt row   = ndof * a + i;
-        PetscReal      Bbeta = 0;
-        for (PetscInt r = 0; r < 6; r++) Bbeta += B[r][dim * a + i] * beta[r];
+        const PetscInt row = ndof * a + i;
+        PetscReal      Bds = 0;
+        for (PetscInt r = 0; r < 6; r++) Bds += mq.B[r][dim * a + i] * dsig[r];
         for (PetscInt b = 0; b < n; b++) {
           for (PetscInt j = 0; j < dim; j++) {
             PetscReal kij = 0;
-            for (PetscInt r = 0; r < 6; r++) kij += B[r][dim * a + i] * DB[r][dim * b + j];
-            K[row * nd + ndof * b + j] += kij * p.dV;
+            for (PetscInt r = 0; r < 6; r++) kij += mq.B[r][dim * a + i] * DB[r][dim * b + j];
+            K[row * nd + ndof * b + j] += kij * mq.p.dV;
           }
-          K[row * nd + ndof * b + dim] -= Bbeta * p.N[b] * p.dV;
+          K[row * nd + ndof * b + th] += Bds * mq.p.N[b] * mq.p.dV;
         }
       }
-      for (PetscInt b = 0; b < n; b++) {
-        PetscReal kab = 0;
-        for (PetscInt d = 0; d < dim; d++) kab += p.dNdx[a][d] * p.dNdx[b][d];
-        K[(ndof * a + dim) * nd + ndof * b + dim] += k * kab * p.dV;
-      }
+  }
+  if (hybrid) {
+    PetscReal      Hi[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], rhs[TSL_MAX_PRESSURE];
+    const PetscInt np = hy->np;
+    SmallInverse(np, hy->H, Hi);
+    for (PetscInt k = 0; k < np; k++) {
+      rhs[k] = -hy->g0[k];
+      for (PetscInt a = 0; a < n; a++)
+        for (PetscInt i = 0; i < dim; i++) rhs[k] += hy->G[dim * a + i][k] * in->u[ndof * a + i];
+    }
+    for (PetscInt k = 0; k < np; k++) {
+      hy->p[k] = 0;
+      for (PetscInt l = 0; l < np; l++) hy->p[k] += Hi[k][l] * rhs[l];
+    }
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < dim; i++)
+        for (PetscInt k = 0; k < np; k++) R[ndof * a + i] += hy->G[dim * a + i][k] * hy->p[k];
+    if (res) {
+      PetscReal pm = 0, vol_energy = 0;
+      for (PetscInt k = 0; k < np; k++) pm += hy->p[k] * P_avg[k] / vol_avg;
+      for (PetscInt r = 0; r < 6; r++) res->S[r] = sdev_avg[r] / vol_avg + VoigtM[r] * pm;
+      /* volumetric energy: 1/2 p_hat^T H p_hat */
+      for (PetscInt k = 0; k < np; k++)
+        for (PetscInt l = 0; l < np; l++) vol_energy += 0.5 * hy->p[k] * hy->H[k][l] * hy->p[l];
+      res->strain_energy += vol_energy;
+    }
+    if (K) {
+      PetscReal GHi[TSL_MAX_ELEM_NODES * 3][TSL_MAX_PRESSURE];
+      for (PetscInt c = 0; c < nu; c++)
+        for (PetscInt k = 0; k < np; k++) {
+          GHi[c][k] = 0;
+          for (PetscInt l = 0; l < np; l++) GHi[c][k] += hy->G[c][l] * Hi[l][k];
+        }
+      for (PetscInt a = 0; a < n; a++)
+        for (PetscInt i = 0; i < dim; i++) {
+          const PetscInt row = ndof * a + i, c = dim * a + i;
+          for (PetscInt b = 0; b < n; b++) {
+            for (PetscInt j = 0; j < dim; j++) {
+              PetscReal kij = 0;
+              for (PetscInt k = 0; k < np; k++) kij += GHi[c][k] * hy->G[dim * b + j][k];
+              K[row * nd + ndof * b + j] += kij;
+            }
+            {
+              PetscReal kth = 0;
+              for (PetscInt k = 0; k < np; k++) {
+                PetscReal dHp = 0;
+                for (PetscInt l = 0; l < np; l++) dHp += hy->dH[b][k][l] * hy->p[l];
+                kth += GHi[c][k] * (-hy->dg0[b][k] - dHp);
+              }
+              K[row * nd + ndof * b + th] += kth;
+            }
+          }
+        }
     }
   }
-  if (in->steady) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt a = 0; a < n; a++) {
-    const PetscReal c   = in->mat->density * in->mat->specific_heat * vol[a] / in->dt;
-    const PetscInt  row = ndof * a + dim;
-    R[row] += c * (in->u[row] - in->u_old[row]);
-    if (K) K[row * nd + row] += c;
+  return PETSC_TRUE;
+}
+
+/* The stabilisation of a reduced-integration element is evaluated with the material at the element
+ * centre (the single mechanical point). */
+static PetscErrorCode Hourglass(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscReal *energy)
+{
+  const TslQuadrature *quad = in->type->form->quadrature(in->type->geom);
+  MechPoint            mq;
+
+  PetscFunctionBeginUser;
+  *energy = 0;
+  if (!in->type->form->hourglass) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCheck(MechPointEvaluate(in, quad->xi[0], quad->w[0], &mq), PETSC_COMM_SELF, PETSC_ERR_PLIB, "hourglass control of an inverted element");
+  PetscCall(in->type->form->hourglass(in, &mq.mp, R, K, energy));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted)
+{
+  const PetscInt nd = in->type->geom->nnode * in->type->ndof;
+  Hybrid         hy;
+  PetscReal      ehg;
+
+  PetscFunctionBeginUser;
+  *inverted = PETSC_FALSE;
+  for (PetscInt i = 0; i < nd; i++) R[i] = 0;
+  if (K)
+    for (PetscInt i = 0; i < nd * nd; i++) K[i] = 0;
+  if (!Conduction(in, R, K) || !Mechanics(in, R, K, &hy, NULL)) {
+    *inverted = PETSC_TRUE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(Hourglass(in, R, K, &ehg));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslElementNodalVolume(const TslElementInput *in, PetscReal vol[])
+{
+  PetscFunctionBeginUser;
+  PetscCheck(in->type->form->nodal_volume(in, vol), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", in->type->name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Lumped capacity and mass at the nodal temperatures: Q_a = rho V_a e(theta_a), C_a = dQ_a/dtheta_a,
+ * M_a = rho V_a. The density is taken at the node's temperature too. */
+PetscErrorCode TslElementLumped(const TslElementInput *in, PetscReal Q[], PetscReal C[], PetscReal M[])
+{
+  const PetscInt ndof = in->type->ndof, th = ndof - 1;
+  PetscReal      vol[TSL_MAX_ELEM_NODES];
+
+  PetscFunctionBeginUser;
+  PetscCall(TslElementNodalVolume(in, vol));
+  for (PetscInt a = 0; a < in->type->geom->nnode; a++) {
+    const PetscReal  theta = in->u[ndof * a + th];
+    TslMaterialPoint mp;
+    PetscReal        c, e = TslMaterialHeatContent(in->sec->mat, theta, &c);
+    TslMaterialEval(in->sec->mat, theta, &mp);
+    if (Q) Q[a] = mp.rho * vol[a] * e;
+    if (C) C[a] = mp.rho * vol[a] * c;
+    if (M) M[a] = mp.rho * vol[a];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -127,20 +354,20 @@ typedef struct {
   PetscReal dA;
 } FacePoint;
 
-static void FacePointEvaluate(const TslElementInput *in, PetscInt face, PetscInt q, FacePoint *fp)
+static void FacePointEvaluate(const TslElementInput *in, PetscInt face, const TslFaceRule *rule, PetscInt q, FacePoint *fp)
 {
-  const TslGeometry       *g = in->type->geom, *fg = g->face_geom[face];
-  const TslKinematicsInfo *info = TslKinematicsInfoGet(in->type->kin);
-  const PetscInt           fn = g->face_nnode[face], fdim      = fg->dim;
-  PetscReal                dN[TSL_MAX_FACE_NODES * 3], T[2][3] = {{0}};
+  const TslGeometry             *g = in->type->geom, *fg = g->face_geom[face];
+  const struct TslKinematicsRow *info = TslKinematicsRowGet(in->type->kin);
+  const PetscInt                 fn = g->face_nnode[face], fdim = fg->dim;
+  PetscReal                      T[2][3] = {{0}}, scale = rule->w[q];
 
-  fg->shape(fg->full.xi[q], fp->N, dN);
   for (PetscInt d = 0; d < 3; d++) fp->x[d] = 0;
   for (PetscInt f = 0; f < fn; f++) {
     const PetscReal *xa = &in->x[3 * g->face_node[face][f]];
+    fp->N[f]            = rule->N[q][f];
     for (PetscInt d = 0; d < 3; d++) {
       fp->x[d] += fp->N[f] * xa[d];
-      for (PetscInt j = 0; j < fdim; j++) T[j][d] += dN[fdim * f + j] * xa[d];
+      for (PetscInt j = 0; j < fdim; j++) T[j][d] += rule->dN[q][f][j] * xa[d];
     }
   }
   if (fdim == 1) {
@@ -152,27 +379,23 @@ static void FacePointEvaluate(const TslElementInput *in, PetscInt face, PetscInt
     fp->ndA[1] = T[0][2] * T[1][0] - T[0][0] * T[1][2];
     fp->ndA[2] = T[0][0] * T[1][1] - T[0][1] * T[1][0];
   }
-  {
-    PetscReal scale = fg->full.w[q];
-    if (info->thickness) scale *= in->mat->thickness > 0 ? in->mat->thickness : 1.0;
-    if (info->revolve) scale *= 2 * PETSC_PI * fp->x[0];
-    for (PetscInt d = 0; d < 3; d++) fp->ndA[d] *= scale;
-    fp->dA = PetscSqrtReal(fp->ndA[0] * fp->ndA[0] + fp->ndA[1] * fp->ndA[1] + fp->ndA[2] * fp->ndA[2]);
-  }
+  if (info->thickness) scale *= in->sec->thickness > 0 ? in->sec->thickness : 1.0;
+  if (info->revolve) scale *= 2 * PETSC_PI * fp->x[0];
+  for (PetscInt d = 0; d < 3; d++) fp->ndA[d] *= scale;
+  fp->dA = PetscSqrtReal(fp->ndA[0] * fp->ndA[0] + fp->ndA[1] * fp->ndA[1] + fp->ndA[2] * fp->ndA[2]);
 }
 
-/* Body heat source, R_theta(a) -= int N_a q dV; returns int q dV. */
+/* Body heat source, lumped like the capacity (R_theta(a) -= q V_a, positive weights for every family);
+ * returns int q dV. */
 static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
 {
-  const TslGeometry *g    = in->type->geom;
-  const PetscInt     ndof = in->type->ndof, dim = in->type->dim;
-  PetscReal          heat = 0;
-  TslElementPoint    p;
+  const PetscInt ndof = in->type->ndof, th = ndof - 1;
+  PetscReal      heat = 0, vol[TSL_MAX_ELEM_NODES];
 
-  for (PetscInt i = 0; i < g->full.n; i++) {
-    (void)TslElementPointEvaluate(in->type, in->mat, in->x, g->full.xi[i], g->full.w[i], &p);
-    for (PetscInt a = 0; a < g->nnode; a++) R[ndof * a + dim] -= p.N[a] * q * p.dV;
-    heat += q * p.dV;
+  if (!in->type->form->nodal_volume(in, vol)) return 0;
+  for (PetscInt a = 0; a < in->type->geom->nnode; a++) {
+    R[ndof * a + th] -= q * vol[a];
+    heat += q * vol[a];
   }
   return heat;
 }
@@ -182,13 +405,16 @@ static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
  *   flux q into the body:                       R_theta(a) -= int N_a q dA,            heat = int q dA
  *   film h, sink:                               R_theta(a) += int N_a h (theta - sink) dA,
  *                                               K_ab       += int h N_a N_b dA,        heat = -int h (theta - sink) dA
- *   body flux q per volume:                     R_theta(a) -= int N_a q dV,            heat = int q dV */
+ *   body flux q per volume:                     R_theta(a) -= q V_a (lumped),          heat = int q dV
+ * The points are the formulation's face rule (the face family's own rule, or the linear sub-faces of a
+ * modified element, whose nodal weights are all positive). */
 PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],
                                   PetscReal K[], PetscReal *heat)
 {
   const TslGeometry *g    = in->type->geom;
-  const PetscInt     ndof = in->type->ndof, dim = in->type->dim, nd = g->nnode * ndof;
+  const PetscInt     ndof = in->type->ndof, dim = in->type->dim, th = ndof - 1, nd = g->nnode * ndof;
   PetscReal          total = 0;
+  TslFaceRule        rule;
 
   PetscFunctionBeginUser;
   if (kind == TSL_BODY_FLUX) {
@@ -199,29 +425,30 @@ PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kin
   PetscCheck(face >= 1 && face <= g->nface, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
              "Face S%" PetscInt_FMT " out of range 1..%" PetscInt_FMT " for %s", face, g->nface, in->type->name);
   face--;
-  for (PetscInt q = 0; q < g->face_geom[face]->full.n; q++) {
+  in->type->form->face_rule(g, face, &rule);
+  for (PetscInt q = 0; q < rule.n; q++) {
     const PetscInt *node = g->face_node[face];
     const PetscInt  fn   = g->face_nnode[face];
     FacePoint       fp;
     PetscReal       theta = 0;
 
-    FacePointEvaluate(in, face, q, &fp);
+    FacePointEvaluate(in, face, &rule, q, &fp);
     switch (kind) {
     case TSL_FACE_PRESSURE:
       for (PetscInt f = 0; f < fn; f++)
         for (PetscInt i = 0; i < dim; i++) R[ndof * node[f] + i] += fp.N[f] * value * fp.ndA[i];
       break;
     case TSL_FACE_FLUX:
-      for (PetscInt f = 0; f < fn; f++) R[ndof * node[f] + dim] -= fp.N[f] * value * fp.dA;
+      for (PetscInt f = 0; f < fn; f++) R[ndof * node[f] + th] -= fp.N[f] * value * fp.dA;
       total += value * fp.dA;
       break;
     case TSL_FACE_FILM:
-      for (PetscInt f = 0; f < fn; f++) theta += fp.N[f] * in->u[ndof * node[f] + dim];
+      for (PetscInt f = 0; f < fn; f++) theta += fp.N[f] * in->u[ndof * node[f] + th];
       for (PetscInt f = 0; f < fn; f++) {
-        const PetscInt row = ndof * node[f] + dim;
+        const PetscInt row = ndof * node[f] + th;
         R[row] += fp.N[f] * value * (theta - value2) * fp.dA;
         if (K)
-          for (PetscInt e = 0; e < fn; e++) K[row * nd + ndof * node[e] + dim] += value * fp.N[f] * fp.N[e] * fp.dA;
+          for (PetscInt e = 0; e < fn; e++) K[row * nd + ndof * node[e] + th] += value * fp.N[f] * fp.N[e] * fp.dA;
       }
       total -= value * (theta - value2) * fp.dA;
       break;
@@ -233,62 +460,42 @@ PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kin
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* dQ = sum_a C_a (theta_a - theta_old_a), the same lumped capacity as in the residual, so that
- * heat in - heat out - stored closes to solver tolerance. */
-PetscErrorCode TslElementHeatChange(const TslElementInput *in, PetscReal *dQ)
-{
-  const PetscInt ndof = in->type->ndof, dim = in->type->dim;
-  PetscReal      vol[TSL_MAX_ELEM_NODES];
-
-  PetscFunctionBeginUser;
-  PetscCheck(NodalVolume(in, vol), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", in->type->name);
-  *dQ = 0;
-  for (PetscInt a = 0; a < in->type->geom->nnode; a++)
-    *dQ += in->mat->density * in->mat->specific_heat * vol[a] * (in->u[ndof * a + dim] - in->u_old[ndof * a + dim]);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Arithmetic means over the full-quadrature points of sigma = D (eps - m alpha dT), eps, and -k grad theta.
- * Plane stress reports the out-of-plane strain that makes sigma_33 = 0 with the full isotropic D:
- *   eps_33 = alpha dT - lambda (eps_11 + eps_22 - 2 alpha dT) / (lambda + 2 mu). */
-PetscErrorCode TslElementOutput(const TslElementInput *in, PetscReal S[6], PetscReal E[6], PetscReal HFL[3])
+/* Averages over the mechanical points of sigma and eps, over the full rule of -k grad theta; the strain
+ * energy int 1/2 sigma : eps_mech dV and the hourglass energy. Plane stress reports the out-of-plane
+ * strain that makes sigma_33 = 0 with the full isotropic D:
+ *   eps_33 = eps_th - lambda (eps_11 + eps_22 - 2 eps_th) / (lambda + 2 mu). */
+PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res)
 {
   const TslElementType *t   = in->type;
   const TslGeometry    *g   = t->geom;
-  const PetscInt        dim = t->dim, ndof = t->ndof, nq = g->full.n;
-  const PetscReal       nu = in->mat->nu, alpha = in->mat->alpha;
-  PetscReal             D[6][6], beta[6], B[6][TSL_MAX_ELEM_NODES * 3];
+  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1;
+  PetscReal             R[TSL_MAX_ELEM_DOF];
+  Hybrid                hy;
   TslElementPoint       p;
 
   PetscFunctionBeginUser;
-  TslElementElasticity(t->kin, in->mat, D, beta);
-  for (PetscInt r = 0; r < 6; r++) S[r] = E[r] = 0;
-  for (PetscInt d = 0; d < 3; d++) HFL[d] = 0;
-  for (PetscInt q = 0; q < nq; q++) {
-    PetscReal eps[6], dtheta;
-
-    PetscCheck(TslElementPointEvaluate(t, in->mat, in->x, g->full.xi[q], g->full.w[q], &p), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
-               "Inverted %s element", t->name);
-    PointStrain(in, &p, B, eps, &dtheta);
-    for (PetscInt r = 0; r < 6; r++) {
-      PetscReal s = -beta[r] * dtheta;
-      for (PetscInt c = 0; c < 6; c++) s += D[r][c] * eps[c];
-      S[r] += s / nq;
+  PetscCall(PetscMemzero(res, sizeof(*res)));
+  for (PetscInt i = 0; i < g->nnode * ndof; i++) R[i] = 0;
+  PetscCheck(Mechanics(in, R, NULL, &hy, res), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
+  if (TslKinematicsRowGet(t->kin)->free_normal) {
+    const TslQuadrature *quad = t->form->quadrature(g);
+    res->E[2]                 = 0;
+    for (PetscInt q = 0; q < quad->n; q++) {
+      MechPoint mq;
+      PetscReal ratio;
+      (void)MechPointEvaluate(in, quad->xi[q], quad->w[q], &mq);
+      ratio = mq.mp.nu / (1 - mq.mp.nu); /* lambda / (lambda + 2 mu) */
+      res->E[2] += (mq.eps_th - ratio * (mq.eps[0] + mq.eps[1] - 2 * mq.eps_th)) / quad->n;
     }
-    if (TslKinematicsInfoGet(t->kin)->free_normal) {
-      const PetscReal ratio = nu / (1 - nu); /* lambda / (lambda + 2 mu) */
-      eps[2]                = alpha * dtheta - ratio * (eps[0] + eps[1] - 2 * alpha * dtheta);
-    }
-    for (PetscInt r = 0; r < 6; r++) E[r] += eps[r] / nq;
-    for (PetscInt a = 0; a < g->nnode; a++)
-      for (PetscInt d = 0; d < dim; d++) HFL[d] -= in->mat->conductivity * p.dNdx[a][d] * in->u[ndof * a + dim] / nq;
   }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode TslElementNodalVolume(const TslElementInput *in, PetscReal vol[])
-{
-  PetscFunctionBeginUser;
-  PetscCheck(NodalVolume(in, vol), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", in->type->name);
+  for (PetscInt q = 0; q < g->full.n; q++) {
+    TslMaterialPoint mp;
+    PetscCheck(TslElementPointEvaluate(t, in->sec, in->x, g->full.xi[q], g->full.w[q], &p), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+               "Inverted %s element", t->name);
+    TslMaterialEval(in->sec->mat, NodalTheta(in, p.N, in->u), &mp);
+    for (PetscInt a = 0; a < g->nnode; a++)
+      for (PetscInt d = 0; d < dim; d++) res->HFL[d] -= mp.k * p.dNdx[a][d] * in->u[ndof * a + th] / g->full.n;
+  }
+  PetscCall(Hourglass(in, R, NULL, &res->hourglass_energy));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

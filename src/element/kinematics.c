@@ -3,23 +3,72 @@
  * Every kinematic assumption is expressed in the full 3D Voigt space (11, 22, 33, 12, 13, 23) so that
  * the kernels have one code path:
  *   plane strain   eps_33 = 0 (row of B is zero), full isotropic D, so sigma_33 = nu (s11 + s22) - E alpha dT
- *   plane stress   sigma_33 = 0 by static condensation of D (D_ps), thermal stress D_ps alpha [1,1,0]
+ *   plane stress   sigma_33 = 0 by static condensation of D (D_ps), thermal stress D_ps eps_th [1,1,0]
  *   axisymmetric   x = r, y = z, eps_33 = u_r / r (hoop), dV = 2 pi r dA
  *   3D             all six components
  */
 #include "element_impl.h"
 
-/* columns: hoop, free_normal, revolve, thickness */
-static const TslKinematicsInfo KinematicsTable[] = {
-    [TSL_KIN_PLANE_STRAIN] = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE},
-    [TSL_KIN_PLANE_STRESS] = {PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE},
-    [TSL_KIN_AXISYMMETRIC] = {PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE},
-    [TSL_KIN_SOLID3D]      = {PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE},
+static PetscInt RigidPlane(const PetscReal x[3], PetscReal modes[6][3])
+{
+  modes[0][0] = 1, modes[1][1] = 1;
+  modes[2][0] = -x[1], modes[2][1] = x[0];
+  return 3;
+}
+
+/* a radial shift strains the hoop direction: only the axial translation is rigid */
+static PetscInt RigidAxisymmetric(const PetscReal x[3], PetscReal modes[6][3])
+{
+  (void)x;
+  modes[0][1] = 1;
+  return 1;
+}
+
+static PetscInt RigidSolid(const PetscReal x[3], PetscReal modes[6][3])
+{
+  for (PetscInt i = 0; i < 3; i++) modes[i][i] = 1;
+  modes[3][1] = -x[2], modes[3][2] = x[1];
+  modes[4][0] = x[2], modes[4][2] = -x[0];
+  modes[5][0] = -x[1], modes[5][1] = x[0];
+  return 6;
+}
+
+/* columns: name, hoop, free_normal, revolve, thickness, rigid modes */
+static const struct TslKinematicsRow KinematicsTable[TSL_NKIN] = {
+    [TSL_KIN_PLANE_STRAIN] = {"plane strain", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, RigidPlane},
+    [TSL_KIN_PLANE_STRESS] = {"plane stress", PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, RigidPlane},
+    [TSL_KIN_AXISYMMETRIC] = {"axisymmetric", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, RigidAxisymmetric},
+    [TSL_KIN_SOLID3D]      = {"3D", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidSolid},
 };
 
-const TslKinematicsInfo *TslKinematicsInfoGet(TslKinematics kin)
+const struct TslKinematicsRow *TslKinematicsRowGet(TslKinematics kin)
 {
   return &KinematicsTable[kin];
+}
+
+const char *TslElementTypeKinematicsName(const TslElementType *t)
+{
+  return KinematicsTable[t->kin].name;
+}
+
+PetscBool TslElementTypeSameKinematics(const TslElementType *a, const TslElementType *b)
+{
+  return a->kin == b->kin ? PETSC_TRUE : PETSC_FALSE;
+}
+
+PetscBool TslElementTypeSameModel(const TslElementType *a, const TslElementType *b)
+{
+  if (a->ndof != b->ndof || KinematicsTable[a->kin].revolve != KinematicsTable[b->kin].revolve) return PETSC_FALSE;
+  for (PetscInt i = 0; i < a->ndof; i++)
+    if (a->node_dof[i] != b->node_dof[i]) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
+PetscInt TslElementTypeRigidModes(const TslElementType *t, const PetscReal x[3], PetscReal modes[6][3])
+{
+  for (PetscInt m = 0; m < 6; m++)
+    for (PetscInt c = 0; c < 3; c++) modes[m][c] = 0;
+  return KinematicsTable[t->kin].rigid_modes(x, modes);
 }
 
 /* Inverse of the dim x dim Jacobian J[i][j] = dx_i/dxi_j; returns det J. */
@@ -48,16 +97,16 @@ static PetscReal InvertJacobian(PetscInt dim, const PetscReal J[3][3], PetscReal
   return det;
 }
 
-PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementMaterial *mat, const PetscReal x[], const PetscReal xi[], PetscReal w,
+PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementSection *sec, const PetscReal x[], const PetscReal xi[], PetscReal w,
                                   TslElementPoint *p)
 {
-  const TslGeometry       *g    = type->geom;
-  const TslKinematicsInfo *info = TslKinematicsInfoGet(type->kin);
-  const PetscInt           dim = g->dim, n                     = g->nnode;
-  PetscReal                dN[TSL_MAX_ELEM_NODES * 3], J[3][3] = {{0}}, Ji[3][3] = {{0}};
+  const TslGeometry             *g    = type->geom;
+  const struct TslKinematicsRow *info = TslKinematicsRowGet(type->kin);
+  const PetscInt                 dim = g->dim, n                     = g->nnode;
+  PetscReal                      dN[TSL_MAX_ELEM_NODES * 3], J[3][3] = {{0}}, Ji[3][3] = {{0}};
 
   g->shape(xi, p->N, dN);
-  for (PetscInt d = 0; d < 3; d++) p->x[d] = 0;
+  for (PetscInt d = 0; d < 3; d++) p->x[d] = 0, p->xi[d] = d < dim ? xi[d] : 0;
   for (PetscInt a = 0; a < n; a++) {
     for (PetscInt d = 0; d < 3; d++) p->x[d] += p->N[a] * x[3 * a + d];
     for (PetscInt i = 0; i < dim; i++)
@@ -71,7 +120,7 @@ PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementMa
       for (PetscInt j = 0; j < dim; j++) p->dNdx[a][i] += dN[dim * a + j] * Ji[j][i];
   }
   p->dV = w * p->detJ;
-  if (info->thickness) p->dV *= mat->thickness > 0 ? mat->thickness : 1.0;
+  if (info->thickness) p->dV *= sec->thickness > 0 ? sec->thickness : 1.0;
   if (info->revolve) {
     if (!(p->x[0] > 0)) return PETSC_FALSE;
     p->dV *= 2 * PETSC_PI * p->x[0];
@@ -81,8 +130,8 @@ PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementMa
 
 void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p, PetscReal B[6][TSL_MAX_ELEM_NODES * 3])
 {
-  const PetscInt           dim = type->dim, n = type->geom->nnode;
-  const TslKinematicsInfo *info = TslKinematicsInfoGet(type->kin);
+  const PetscInt                 dim = type->dim, n = type->geom->nnode;
+  const struct TslKinematicsRow *info = TslKinematicsRowGet(type->kin);
   /* Voigt row -> (i, j) of the symmetric gradient; for the 3D shear rows both orders contribute */
   static const PetscInt vi[6] = {0, 1, 2, 0, 0, 1}, vj[6] = {0, 1, 2, 1, 2, 2};
 
@@ -99,25 +148,44 @@ void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p
   }
 }
 
-void TslElementElasticity(TslKinematics kin, const TslElementMaterial *mat, PetscReal D[6][6], PetscReal beta[6])
+/* Isotropic D in (lambda, mu): lambda m m^T + mu diag(2, 2, 2, 1, 1, 1). Linear in (lambda, mu), so the
+ * same function gives dD from (dlambda, dmu) before the plane-stress condensation. */
+static void Isotropic(PetscReal lambda, PetscReal mu, PetscReal D[6][6])
 {
-  const PetscReal E = mat->E, nu = mat->nu;
-  const PetscReal lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
-  const PetscReal m[6] = {1, 1, 1, 0, 0, 0};
-
   for (PetscInt i = 0; i < 6; i++)
     for (PetscInt j = 0; j < 6; j++) D[i][j] = (i < 3 && j < 3 ? lambda : 0) + (i == j ? (i < 3 ? 2 * mu : mu) : 0);
-  if (TslKinematicsInfoGet(kin)->free_normal) {
-    /* sigma_33 = 0: eliminate eps_33 = -(D_3j eps_j) / D_33, giving D_ps on the remaining rows */
-    const PetscReal d33 = D[2][2];
-    PetscReal       c[6];
-    for (PetscInt j = 0; j < 6; j++) c[j] = D[2][j];
+}
+
+void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp, PetscReal D[6][6], PetscReal dD[6][6])
+{
+  const PetscReal E = mp->E, nu = mp->nu, a = (1 + nu) * (1 - 2 * nu);
+  const PetscReal lambda = E * nu / a, mu = E / (2 * (1 + nu));
+  /* d lambda / d nu = E (1 + 2 nu^2) / a^2, d mu / d nu = -E / (2 (1 + nu)^2) */
+  const PetscReal dlambda = mp->dE * nu / a + mp->dnu * E * (1 + 2 * nu * nu) / (a * a);
+  const PetscReal dmu     = mp->dE / (2 * (1 + nu)) - mp->dnu * E / (2 * (1 + nu) * (1 + nu));
+  PetscReal       D0[6][6], dD0[6][6];
+
+  Isotropic(lambda, mu, D0);
+  Isotropic(dlambda, dmu, dD0);
+  if (TslKinematicsRowGet(type->kin)->free_normal) {
+    /* sigma_33 = 0: eliminate eps_33 = -(D_3j eps_j) / D_33, D_ps = D - c c^T / d33 with c = D[:, 2];
+     * its derivative dD - (dc c^T + c dc^T) / d33 + c c^T dd33 / d33^2 */
+    const PetscReal d33 = D0[2][2], dd33 = dD0[2][2];
     for (PetscInt i = 0; i < 6; i++)
-      for (PetscInt j = 0; j < 6; j++) D[i][j] -= c[i] * c[j] / d33;
-    for (PetscInt j = 0; j < 6; j++) D[2][j] = D[j][2] = 0;
+      for (PetscInt j = 0; j < 6; j++) {
+        const PetscReal ci = D0[i][2], cj = D0[j][2], dci = dD0[i][2], dcj = dD0[j][2];
+        D[i][j] = D0[i][j] - ci * cj / d33;
+        if (dD) dD[i][j] = dD0[i][j] - (dci * cj + ci * dcj) / d33 + ci * cj * dd33 / (d33 * d33);
+      }
+    for (PetscInt j = 0; j < 6; j++) {
+      D[2][j] = D[j][2] = 0;
+      if (dD) dD[2][j] = dD[j][2] = 0;
+    }
+    return;
   }
-  for (PetscInt i = 0; i < 6; i++) {
-    beta[i] = 0;
-    for (PetscInt j = 0; j < 6; j++) beta[i] += D[i][j] * m[j] * mat->alpha;
-  }
+  for (PetscInt i = 0; i < 6; i++)
+    for (PetscInt j = 0; j < 6; j++) {
+      D[i][j] = D0[i][j];
+      if (dD) dD[i][j] = dD0[i][j];
+    }
 }

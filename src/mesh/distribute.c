@@ -66,9 +66,14 @@ static PetscErrorCode PartitionAxis(const TslModel *g, PetscInt axis, PetscInt n
 }
 
 /* Local dof offset of a dialect dof number. */
-static PetscInt DofOffset(PetscInt dim, PetscInt dof)
+/* Slot of a dialect dof among a node's unknowns: the element rows say which unknowns a node has (all
+ * rows of a model share them; the deck check rejects a mix). -1 if the model has no such dof. */
+static PetscInt DofSlot(const TslModel *g, PetscInt dof)
 {
-  return dof == 11 ? dim : dof - 1;
+  const TslElementType *t = TslElementTypeGet(g->elem_type[0]);
+  for (PetscInt i = 0; i < t->ndof; i++)
+    if (t->node_dof[i] == dof) return i;
+  return -1;
 }
 
 /* Builds the part of rank r: its elements, nodes (owned, then ghosts), numbering arrays. */
@@ -278,12 +283,16 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
 {
   PetscInt *epart, *owner, *gnum, *node_nat, *elem_nat, *node_by_id, *elem_by_id, *count, *offset, *mark, nused = 0;
   char      method[32] = "metis";
-  PetscInt  ndof       = g->dim + 1;
+  PetscInt  ndof       = g->nelem ? TslElementTypeGet(g->elem_type[0])->ndof : g->dim + 1;
 
   PetscFunctionBeginUser;
   PetscCall(TslModelIndex(g));
   PetscCall(PrepareContactPairs(g));
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-tsl_partition", method, sizeof(method), NULL));
+  /* rank 0 alone partitions, so the options block is its own (-help lists it) */
+  PetscOptionsBegin(PETSC_COMM_SELF, NULL, "thermoslide mesh partition", NULL);
+  PetscCall(PetscOptionsString("-tsl_partition", "element partition: metis, or slabs by element centroid axis_x|axis_y|axis_z", NULL, method, method,
+                               sizeof(method), NULL));
+  PetscOptionsEnd();
   PetscCheck(g->nelem >= size, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "the model has %" PetscInt_FMT " elements, fewer than the %d ranks", g->nelem,
              (int)size);
   PetscCall(PetscMalloc4(g->nelem, &epart, g->nnode, &owner, g->nnode, &gnum, g->nnode, &node_nat));
@@ -350,7 +359,9 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
       PetscInt p = TslModelNodeIndex(g, eq->node[t]);
       PetscCheck(p >= 0 && owner[p] >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                  "%s: *EQUATION node %" PetscInt_FMT " does not belong to any element", TslLocString(g, eq->loc, loc, sizeof(loc)), eq->node[t]);
-      eq->gdof[t] = gnum[p] * ndof + DofOffset(g->dim, eq->dof[t]);
+      PetscCheck(DofSlot(g, eq->dof[t]) >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: *EQUATION dof %" PetscInt_FMT " does not exist for %s elements",
+                 TslLocString(g, eq->loc, loc, sizeof(loc)), eq->dof[t], TslElementTypeGet(g->elem_type[0])->name);
+      eq->gdof[t] = gnum[p] * ndof + DofSlot(g, eq->dof[t]);
     }
   }
 

@@ -23,15 +23,33 @@ void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const Pet
       d->uo[a * p->ndof + i] = xoa ? PetscRealPart(xoa[l * p->ndof + i]) : 0;
     }
     d->ti[a] = p->theta_init[l];
+    if (!xa) d->u[a * p->ndof + p->ndof - 1] = d->ti[a];
+    if (!xoa) d->uo[a * p->ndof + p->ndof - 1] = d->ti[a];
   }
   d->in.type       = TslElementTypeGet(m->elem_type[e]);
-  d->in.mat        = &p->emat[e];
+  d->in.sec        = &p->esec[e];
   d->in.x          = d->x;
   d->in.u          = d->u;
-  d->in.u_old      = d->uo;
   d->in.theta_init = d->ti;
-  d->in.dt         = p->dt > 0 ? p->dt : 1.0;
-  d->in.steady     = p->steady;
+  d->in_old        = d->in;
+  d->in_old.u      = d->uo;
+}
+
+/* The one element loop: gathers each local element's data (current and old state; NULL arrays read as
+ * the initial state) and hands it to the visitor. Every per-element computation (assembly, checks,
+ * heat balance, output fields) goes through here. */
+PetscErrorCode TslProblemElementLoop(TslProblem p, const PetscScalar *xa, const PetscScalar *xoa, TslElementVisitor visit, void *ctx)
+{
+  TslElemData d;
+
+  PetscFunctionBeginUser;
+  for (PetscInt e = 0; e < p->m->nelem; e++) {
+    PetscBool stop = PETSC_FALSE;
+    TslProblemGather(p, e, xa, xoa, &d);
+    PetscCall(visit(p, e, &d, ctx, &stop));
+    if (stop) break;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Adds weight * (row r of R, K) to local row `row`. */
@@ -79,8 +97,8 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
 static PetscErrorCode FaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscReal *value, PetscReal *sink)
 {
   PetscFunctionBeginUser;
-  *value = TslProblemEvalHistory(p, &r->value);
-  *sink  = TslProblemEvalHistory(p, &r->sink);
+  *value = TslProblemEvalLoadValue(p, &r->value);
+  *sink  = TslProblemEvalLoadValue(p, &r->sink);
   if (r->film_amp >= 0) {
     const TslAmplitude *a = &p->m->amplitudes[r->film_amp];
     *value *= TslAmplitudeEval(a, a->total_time ? p->ttot : p->t);
@@ -88,54 +106,89 @@ static PetscErrorCode FaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The element loop. xa, xoa: local forms of the current and old solution; f: local form of the residual;
- * R, K: work arrays of TSL_MAX_ELEM_DOF and its square. */
+/* Capacity term of the time discretisation chosen by the solver: R_theta(a) += shift (Q_a - Q_old_a),
+ * K += shift C_a (backward Euler: shift = 1/dt; steady state: 0, skipped). */
+static PetscErrorCode AddCapacity(TslProblem p, const TslElemData *d, PetscReal R[], PetscReal K[])
+{
+  PetscReal Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES];
+  PetscInt  th = p->ndof - 1;
+
+  PetscFunctionBeginUser;
+  if (p->shift == 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(TslElementLumped(&d->in, Q, K ? C : NULL, NULL));
+  PetscCall(TslElementLumped(&d->in_old, Qo, NULL, NULL));
+  for (PetscInt a = 0; a < d->n; a++) {
+    const PetscInt row = p->ndof * a + th;
+    R[row] += p->shift * (Q[a] - Qo[a]);
+    if (K) K[row * d->nd + row] += p->shift * C[a];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+typedef struct {
+  AsmMode      mode;
+  Mat          A;
+  PetscScalar *f;
+  AsmHeat     *heat;
+  PetscReal   *R, *K;
+  PetscInt    *bad_elem;
+} AsmCtx;
+
+static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+{
+  AsmCtx    *c      = (AsmCtx *)ctx;
+  PetscBool  need_k = (c->mode == ASM_JACOBIAN), inverted = PETSC_FALSE;
+  PetscReal *R = c->R, *K = need_k ? c->K : NULL;
+
+  PetscFunctionBeginUser;
+  (void)stop;
+  if (c->mode == ASM_PATTERN) {
+    PetscCall(TslProblemInsert(p, c->mode, c->A, c->f, d->nd, d->ld, NULL, NULL));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(TslElementInternal(&d->in, R, K, &inverted));
+  if (inverted) {
+    if (*c->bad_elem < 0) *c->bad_elem = e;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(AddCapacity(p, d, R, K));
+  PetscCall(TslProblemInsert(p, c->mode, c->A, c->f, d->nd, d->ld, R, K));
+  for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
+    const TslFaceRecord *r = &p->face[i];
+    PetscReal            value, sink, h = 0;
+    PetscCall(FaceLoadValue(p, r, &value, &sink));
+    PetscCall(PetscArrayzero(R, d->nd));
+    if (K) PetscCall(PetscArrayzero(K, d->nd * d->nd));
+    PetscCall(TslElementFaceLoad(&d->in, r->kind, r->face, value, sink, R, K, &h));
+    PetscCall(TslProblemInsert(p, c->mode, c->A, c->f, d->nd, d->ld, R, K));
+    if (c->heat) {
+      if (r->kind == TSL_FACE_FILM)
+        c->heat->film += h;
+      else if (r->kind != TSL_FACE_PRESSURE)
+        c->heat->flux_in += h;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The element, contact and nodal-load contributions. xa, xoa: local forms of the current and old
+ * solution; f: local form of the residual; R, K: work arrays of TSL_MAX_ELEM_DOF and its square. */
 static PetscErrorCode AssembleLoop(TslProblem p, AsmMode mode, const PetscScalar *xa, const PetscScalar *xoa, PetscScalar *f, Mat A, AsmHeat *heat,
                                    PetscReal *R, PetscReal *K, PetscInt *bad_elem)
 {
-  const TslModel *m      = p->m;
-  PetscBool       need_k = (mode == ASM_JACOBIAN);
-  TslElemData     d;
+  AsmCtx ctx = {mode, A, f, heat, R, K, bad_elem};
 
   PetscFunctionBeginUser;
-  for (PetscInt e = 0; e < m->nelem; e++) {
-    PetscBool inverted = PETSC_FALSE;
-    TslProblemGather(p, e, xa, xoa, &d);
-    if (mode == ASM_PATTERN) {
-      PetscCall(TslProblemInsert(p, mode, A, f, d.nd, d.ld, NULL, NULL));
-      continue;
-    }
-    PetscCall(TslElementResidual(&d.in, R, need_k ? K : NULL, &inverted));
-    if (inverted) {
-      if (*bad_elem < 0) *bad_elem = e;
-      continue;
-    }
-    PetscCall(TslProblemInsert(p, mode, A, f, d.nd, d.ld, R, need_k ? K : NULL));
-    for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
-      const TslFaceRecord *r = &p->face[i];
-      PetscReal            value, sink, h = 0;
-      PetscCall(FaceLoadValue(p, r, &value, &sink));
-      PetscCall(PetscArrayzero(R, d.nd));
-      if (need_k) PetscCall(PetscArrayzero(K, d.nd * d.nd));
-      PetscCall(TslElementFaceLoad(&d.in, r->kind, r->face, value, sink, R, need_k ? K : NULL, &h));
-      PetscCall(TslProblemInsert(p, mode, A, f, d.nd, d.ld, R, need_k ? K : NULL));
-      if (heat) {
-        if (r->kind == TSL_FACE_FILM)
-          heat->film += h;
-        else if (r->kind != TSL_FACE_PRESSURE)
-          heat->flux_in += h;
-      }
-    }
-  }
+  PetscCall(TslProblemElementLoop(p, xa, xoa, AssembleElement, &ctx));
   PetscCall(TslProblemContactAssemble(p, mode, xa, f, A, heat));
   /* nodal loads (owned dofs only): residual = internal - external */
   if (mode == ASM_RESIDUAL || mode == ASM_RAW) {
     for (PetscInt dof = 0; dof < p->nown * p->ndof; dof++) {
       PetscReal v;
       if (!p->nload[dof].active) continue;
-      v = -TslProblemEvalHistory(p, &p->nload[dof]);
+      v = -TslProblemEvalLoadValue(p, &p->nload[dof]);
       PetscCall(TslProblemInsert(p, mode, A, f, 1, &dof, &v, NULL));
-      if (heat && dof % p->ndof == p->dim) heat->flux_in -= v;
+      if (heat && dof % p->ndof == p->ndof - 1) heat->flux_in -= v;
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -188,34 +241,45 @@ static PetscErrorCode CheckBadElement(TslProblem p, PetscInt bad)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+typedef struct {
+  PetscReal *R, *K, sum[4];
+  PetscInt   bad;
+} CheckCtx;
+
+static PetscErrorCode CheckElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+{
+  CheckCtx *c        = (CheckCtx *)ctx;
+  PetscBool inverted = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslElementInternal(&d->in, c->R, c->K, &inverted));
+  if (inverted) {
+    c->bad = e;
+    *stop  = PETSC_TRUE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  for (PetscInt r = 0; r < d->nd; r++) {
+    PetscInt f = (r % p->ndof) == p->ndof - 1;
+    c->sum[f] += PetscAbsReal(c->K[r * d->nd + r]);
+    c->sum[2 + f] += 1;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Checks every element's geometry, and measures the mean diagonal of the element matrices per field:
  * constraint rows are scaled by it, so that they look like the rows around them to the AMG smoothers
  * (rows of 1 next to rows of E*thickness slow BoomerAMG down badly in parallel). */
 PetscErrorCode TslProblemCheckElements(TslProblem p)
 {
-  PetscReal  *R, *K, sum[4] = {0, 0, 0, 0}, g[4];
-  PetscInt    bad = -1;
-  TslElemData d;
+  CheckCtx  c = {NULL, NULL, {0, 0, 0, 0}, -1};
+  PetscReal g[4];
 
   PetscFunctionBeginUser;
-  PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &K));
-  for (PetscInt e = 0; e < p->m->nelem && bad < 0; e++) {
-    PetscBool inverted = PETSC_FALSE;
-    TslProblemGather(p, e, NULL, NULL, &d);
-    d.in.steady = PETSC_TRUE;
-    PetscCall(TslElementResidual(&d.in, R, K, &inverted));
-    if (inverted)
-      bad = e;
-    else
-      for (PetscInt r = 0; r < d.nd; r++) {
-        PetscInt f = (r % p->ndof) == p->dim;
-        sum[f] += PetscAbsReal(K[r * d.nd + r]);
-        sum[2 + f] += 1;
-      }
-  }
-  PetscCall(PetscFree2(R, K));
-  PetscCall(CheckBadElement(p, bad));
-  PetscCall(MPIU_Allreduce(sum, g, 4, MPIU_REAL, MPIU_SUM, p->comm));
+  PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &c.R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &c.K));
+  PetscCall(TslProblemElementLoop(p, NULL, NULL, CheckElement, &c));
+  PetscCall(PetscFree2(c.R, c.K));
+  PetscCall(CheckBadElement(p, c.bad));
+  PetscCall(MPIU_Allreduce(c.sum, g, 4, MPIU_REAL, MPIU_SUM, p->comm));
   for (PetscInt f = 0; f < 2; f++) p->row_scale[f] = (g[2 + f] > 0 && g[f] > 0) ? g[f] / g[2 + f] : 1.0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -227,10 +291,10 @@ static PetscErrorCode ConstraintRows(TslProblem p, AsmMode mode, const PetscScal
   PetscFunctionBeginUser;
   for (PetscInt d = 0; d < p->nown * p->ndof; d++) {
     PetscInt  q = p->dep[d];
-    PetscReal s = p->row_scale[(d % p->ndof) == p->dim];
+    PetscReal s = p->row_scale[(d % p->ndof) == p->ndof - 1];
     if (p->bc[d].active) {
       if (mode == ASM_RESIDUAL)
-        F[d] = s * (xa[d] - TslProblemEvalHistory(p, &p->bc[d]));
+        F[d] = s * (xa[d] - TslProblemEvalLoadValue(p, &p->bc[d]));
       else
         PetscCall(MatSetValuesLocal(A, 1, &d, 1, &d, &s, ADD_VALUES));
     } else if (q >= 0) {
@@ -390,6 +454,20 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Heat stored over the increment by one element: sum_a Q(theta_a) - Q(theta_old_a), the same lumped
+ * content as in the residual, so that heat in - heat out - stored closes to solver tolerance. */
+static PetscErrorCode StoredHeat(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+{
+  PetscReal *sum = (PetscReal *)ctx, Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES];
+
+  PetscFunctionBeginUser;
+  (void)p, (void)e, (void)stop;
+  PetscCall(TslElementLumped(&d->in, Q, NULL, NULL));
+  PetscCall(TslElementLumped(&d->in_old, Qo, NULL, NULL));
+  for (PetscInt a = 0; a < d->n; a++) *sum += Q[a] - Qo[a];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
 {
   AsmHeat            heat;
@@ -403,7 +481,7 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
   PetscCheck(!fail, p->comm, PETSC_ERR_PLIB, "%s", p->fail_msg);
   PetscCall(VecGetArrayRead(p->Rraw, &r));
   for (PetscInt n = 0; n < p->nown; n++) {
-    PetscInt d = n * p->ndof + p->dim;
+    PetscInt d = n * p->ndof + p->ndof - 1;
     if (p->bc[d].active) loc[2] += PetscRealPart(r[d]);
   }
   PetscCall(VecRestoreArrayRead(p->Rraw, &r));
@@ -412,19 +490,13 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
   loc[4] = heat.interface;
   loc[5] = heat.dissipation;
   loc[6] = heat.friction_heat;
-  if (!p->steady) {
+  if (p->shift != 0) {
     Vec                xl, xol;
     const PetscScalar *xa, *xoa;
-    TslElemData        d;
     PetscCall(GetStates(p, p->X, &xl, &xol, &xa, &xoa));
-    for (PetscInt e = 0; e < p->m->nelem; e++) {
-      PetscReal dq;
-      TslProblemGather(p, e, xa, xoa, &d);
-      PetscCall(TslElementHeatChange(&d.in, &dq));
-      loc[3] += dq;
-    }
+    PetscCall(TslProblemElementLoop(p, xa, xoa, StoredHeat, &loc[3]));
     PetscCall(RestoreStates(p, &xl, &xol, &xa, &xoa));
-    loc[3] /= (p->dt > 0 ? p->dt : 1.0);
+    loc[3] *= p->shift;
   }
   PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_SUM, p->comm));
   hb->heat_in        = g[0];

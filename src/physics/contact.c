@@ -464,11 +464,11 @@ static PetscErrorCode ReportPartition(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Young's modulus of local element e: the only place contact reads a material. (With temperature
- * tables for materials: the first *ELASTIC row, the value the mesh code used to take.) */
+/* Young's modulus of local element e: the only place contact reads a material. Materials are tables
+ * in temperature: the first *ELASTIC row, the value the mesh code used to take. */
 static PetscReal ElementModulus(TslProblem p, PetscInt e)
 {
-  return p->emat[e].E;
+  return p->esec[e].mat->prop[TSL_PROP_ELASTIC].value[0][0];
 }
 
 /* Collective. The default normal penalty of each pair, 10 E / (mean main face length), E the Young's

@@ -1,64 +1,132 @@
-/* Output fields of the current state: nodal (owned nodes) and element values. */
+/* Output fields of the current state, one table row per field: nodal (owned nodes) and element values. */
 #include "problem_impl.h"
 #include <string.h>
 
-/* Node fields: U (3 comps, z = 0 in 2D), NT, RF (3), RFL, and the contact fields CPRESS, CSLIP,
- * CSTATUS, HFLA (see contact.c). RF/RFL are the unconstrained residual at
- * prescribed dofs, as computed by the last TslProblemHeatBalance; zero elsewhere. */
-PetscErrorCode TslProblemNodeField(TslProblem p, const char *name, PetscInt *ncomp, PetscReal **vals)
+/* U: displacements (3 comps, zero-padded in 2D); NT: temperature. */
+static PetscErrorCode NodeSolution(TslProblem p, PetscInt which, PetscInt ncomp, PetscReal vals[])
 {
   const PetscScalar *x;
-  PetscBool          is_u = !strcmp(name, "U"), is_nt = !strcmp(name, "NT"), is_rf = !strcmp(name, "RF"), is_rfl = !strcmp(name, "RFL");
-  Vec                src = (is_rf || is_rfl) ? p->Rraw : p->X;
 
   PetscFunctionBeginUser;
-  if (!strcmp(name, "CPRESS") || !strcmp(name, "CSLIP") || !strcmp(name, "CSTATUS") || !strcmp(name, "HFLA")) {
-    *ncomp = 1;
-    PetscCall(PetscCalloc1(p->nown, vals));
-    PetscCall(TslProblemContactNodeField(p, name, *vals));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  PetscCheck(is_u || is_nt || is_rf || is_rfl, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "unknown node field %s", name);
-  *ncomp = (is_u || is_rf) ? 3 : 1;
-  PetscCall(PetscCalloc1(p->nown * *ncomp, vals));
-  PetscCall(VecGetArrayRead(src, &x));
+  PetscCall(VecGetArrayRead(p->X, &x));
   for (PetscInt n = 0; n < p->nown; n++) {
-    PetscInt d = n * p->ndof;
-    if (is_u) {
-      for (PetscInt c = 0; c < p->dim; c++) (*vals)[3 * n + c] = PetscRealPart(x[d + c]);
-    } else if (is_nt) {
-      (*vals)[n] = PetscRealPart(x[d + p->dim]);
-    } else if (is_rf) {
-      for (PetscInt c = 0; c < p->dim; c++) (*vals)[3 * n + c] = p->bc[d + c].active ? PetscRealPart(x[d + c]) : 0;
-    } else {
-      (*vals)[n] = p->bc[d + p->dim].active ? PetscRealPart(x[d + p->dim]) : 0;
-    }
+    const PetscScalar *xn = x + n * p->ndof;
+    if (which == 0)
+      for (PetscInt c = 0; c < p->nu; c++) vals[ncomp * n + c] = PetscRealPart(xn[c]);
+    else
+      vals[n] = PetscRealPart(xn[p->ndof - 1]);
   }
-  PetscCall(VecRestoreArrayRead(src, &x));
+  PetscCall(VecRestoreArrayRead(p->X, &x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Element fields: S and E (6 comps, Voigt 11 22 33 12 13 23), HFL (3): integration-point averages. */
-PetscErrorCode TslProblemElementField(TslProblem p, const char *name, PetscInt *ncomp, PetscReal **vals)
+/* RF / RFL: the unconstrained residual at prescribed dofs, as computed by the last
+ * TslProblemHeatBalance; zero elsewhere. */
+static PetscErrorCode NodeReaction(TslProblem p, PetscInt which, PetscInt ncomp, PetscReal vals[])
 {
-  const TslModel    *m = p->m;
-  Vec                xl;
-  const PetscScalar *xa;
-  PetscInt           which = !strcmp(name, "S") ? 0 : !strcmp(name, "E") ? 1 : !strcmp(name, "HFL") ? 2 : -1;
+  const PetscScalar *r;
 
   PetscFunctionBeginUser;
-  PetscCheck(which >= 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "unknown element field %s", name);
-  *ncomp = which == 2 ? 3 : 6;
-  PetscCall(PetscCalloc1(m->nelem * *ncomp, vals));
-  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
-  for (PetscInt e = 0; e < m->nelem; e++) {
-    PetscReal   S[6], E[6], H[3];
-    TslElemData d;
-    TslProblemGather(p, e, xa, xa, &d);
-    d.in.steady = PETSC_TRUE;
-    PetscCall(TslElementOutput(&d.in, S, E, H));
-    for (PetscInt c = 0; c < *ncomp; c++) (*vals)[e * *ncomp + c] = which == 0 ? S[c] : which == 1 ? E[c] : H[c];
+  PetscCall(VecGetArrayRead(p->Rraw, &r));
+  for (PetscInt n = 0; n < p->nown; n++) {
+    const PetscInt d = n * p->ndof;
+    if (which == 0)
+      for (PetscInt c = 0; c < p->nu; c++) vals[ncomp * n + c] = p->bc[d + c].active ? PetscRealPart(r[d + c]) : 0;
+    else
+      vals[n] = p->bc[d + p->ndof - 1].active ? PetscRealPart(r[d + p->ndof - 1]) : 0;
   }
+  PetscCall(VecRestoreArrayRead(p->Rraw, &r));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode NodeContact(TslProblem p, PetscInt which, PetscInt ncomp, PetscReal vals[])
+{
+  static const char *const name[] = {"CPRESS", "CSLIP", "CSTATUS", "HFLA"};
+
+  PetscFunctionBeginUser;
+  (void)ncomp;
+  PetscCall(TslProblemContactNodeField(p, name[which], vals));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+typedef struct {
+  PetscReal *vals;
+  PetscInt   which, ncomp;
+} ElementFieldCtx;
+
+static PetscErrorCode ElementResult(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+{
+  ElementFieldCtx *c = (ElementFieldCtx *)ctx;
+  TslElementResult res;
+  const PetscReal *src;
+
+  PetscFunctionBeginUser;
+  (void)p, (void)stop;
+  PetscCall(TslElementOutput(&d->in, &res));
+  src = c->which == 0 ? res.S : c->which == 1 ? res.E : c->which == 2 ? res.HFL : c->which == 3 ? &res.strain_energy : &res.hourglass_energy;
+  for (PetscInt k = 0; k < c->ncomp; k++) c->vals[e * c->ncomp + k] = src[k];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* S and E (Voigt 11 22 33 12 13 23), HFL (3): integration-point averages; ELSE, ELASE: the element's
+ * strain energy and the energy of its hourglass control. */
+static PetscErrorCode ElementValues(TslProblem p, PetscInt which, PetscInt ncomp, PetscReal vals[])
+{
+  Vec                xl;
+  const PetscScalar *xa;
+  ElementFieldCtx    ctx = {vals, which, ncomp};
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  PetscCall(TslProblemElementLoop(p, xa, xa, ElementResult, &ctx));
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+typedef struct {
+  const char  *name;
+  TslFieldKind kind;
+  PetscInt     deflt; /* written without an *OUTPUT request: 0 no, 1 yes, 2 when the model has contact */
+  PetscInt     ncomp, which;
+  PetscErrorCode (*eval)(TslProblem, PetscInt which, PetscInt ncomp, PetscReal vals[]);
+} FieldRow;
+
+static const FieldRow Fields[] = {
+    {"U", TSL_FIELD_NODE, 1, 3, 0, NodeSolution},         {"NT", TSL_FIELD_NODE, 1, 1, 1, NodeSolution},
+    {"RF", TSL_FIELD_NODE, 1, 3, 0, NodeReaction},        {"RFL", TSL_FIELD_NODE, 1, 1, 1, NodeReaction},
+    {"CPRESS", TSL_FIELD_NODE, 2, 1, 0, NodeContact},     {"CSLIP", TSL_FIELD_NODE, 2, 1, 1, NodeContact},
+    {"CSTATUS", TSL_FIELD_NODE, 2, 1, 2, NodeContact},    {"HFLA", TSL_FIELD_NODE, 2, 1, 3, NodeContact},
+    {"S", TSL_FIELD_ELEMENT, 1, 6, 0, ElementValues},     {"E", TSL_FIELD_ELEMENT, 1, 6, 1, ElementValues},
+    {"HFL", TSL_FIELD_ELEMENT, 1, 3, 2, ElementValues},   {"ELSE", TSL_FIELD_ELEMENT, 0, 1, 3, ElementValues},
+    {"ELASE", TSL_FIELD_ELEMENT, 0, 1, 4, ElementValues},
+};
+
+PetscInt TslFieldCount(void)
+{
+  return (PetscInt)(sizeof(Fields) / sizeof(Fields[0]));
+}
+
+PetscInt TslFieldFind(const char *name)
+{
+  for (PetscInt i = 0; i < TslFieldCount(); i++)
+    if (!strcmp(Fields[i].name, name)) return i;
+  return -1;
+}
+
+const char *TslFieldName(PetscInt i, TslFieldKind *kind, PetscInt *deflt)
+{
+  if (kind) *kind = Fields[i].kind;
+  if (deflt) *deflt = Fields[i].deflt;
+  return Fields[i].name;
+}
+
+PetscErrorCode TslProblemField(TslProblem p, PetscInt i, PetscInt *ncomp, PetscReal **vals)
+{
+  const FieldRow *f = &Fields[i];
+
+  PetscFunctionBeginUser;
+  *ncomp = f->ncomp;
+  PetscCall(PetscCalloc1((f->kind == TSL_FIELD_NODE ? p->nown : p->m->nelem) * f->ncomp, vals));
+  PetscCall(f->eval(p, f->which, f->ncomp, *vals));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -12,7 +12,7 @@
  */
 #include "problem_impl.h"
 
-PetscReal TslProblemEvalHistory(TslProblem p, const TslHistoryValue *h)
+PetscReal TslProblemEvalLoadValue(TslProblem p, const TslLoadValue *h)
 {
   if (!h->active) return 0;
   if (h->amp >= 0) {
@@ -24,19 +24,19 @@ PetscReal TslProblemEvalHistory(TslProblem p, const TslHistoryValue *h)
 }
 
 /* At a step change: the value reached becomes a constant, unless it follows a total-time amplitude. */
-static void Freeze(TslProblem p, TslHistoryValue *h)
+static void Freeze(TslProblem p, TslLoadValue *h)
 {
   PetscReal v;
 
   if (!h->active) return;
   if (h->amp >= 0 && p->m->amplitudes[h->amp].total_time) return;
-  v     = TslProblemEvalHistory(p, h);
+  v     = TslProblemEvalLoadValue(p, h);
   h->v0 = h->v1 = v;
   h->amp        = TSL_AMP_HOLD;
 }
 
 /* Starts a new value from the current one. */
-static void Redefine(TslHistoryValue *h, PetscReal start, PetscReal value, PetscInt amp)
+static void Redefine(TslLoadValue *h, PetscReal start, PetscReal value, PetscInt amp)
 {
   h->v0     = h->active ? h->v1 : start;
   h->v1     = value;
@@ -158,11 +158,11 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
     r->kind = kind;
     r->seq  = p->face_seq++;
     if (kind == TSL_FACE_FILM) {
-      r->value    = (TslHistoryValue){PETSC_TRUE, ld->value, ld->value, TSL_AMP_HOLD};
-      r->sink     = (TslHistoryValue){PETSC_TRUE, ld->sink, ld->sink, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_HOLD};
+      r->value    = (TslLoadValue){PETSC_TRUE, ld->value, ld->value, TSL_AMP_HOLD};
+      r->sink     = (TslLoadValue){PETSC_TRUE, ld->sink, ld->sink, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_HOLD};
       r->film_amp = ld->film_amplitude;
     } else {
-      r->value    = (TslHistoryValue){PETSC_TRUE, 0, ld->value, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT};
+      r->value    = (TslLoadValue){PETSC_TRUE, 0, ld->value, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT};
       r->film_amp = -1;
     }
   }
@@ -228,7 +228,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
   for (PetscInt i = 0; i < step->nload; i++)
     if (step->loads[i].op_new) clear[step->loads[i].kind] = PETSC_TRUE;
   for (PetscInt d = 0; d < nd; d++) {
-    PetscBool theta = (d % p->ndof) == p->dim;
+    PetscBool theta = (d % p->ndof) == p->ndof - 1;
     if (clear[TSL_LOAD_BOUNDARY]) p->bc[d].active = PETSC_FALSE;
     if ((clear[TSL_LOAD_CLOAD] && !theta) || (clear[TSL_LOAD_CFLUX] && theta)) p->nload[d].active = PETSC_FALSE;
   }
@@ -259,10 +259,10 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
       PetscCall(TargetNodes(p, &ld->target, &n, &nodes));
       for (PetscInt j = 0; j < n; j++)
         for (PetscInt dof = ld->dof_first; dof <= ld->dof_last; dof++) {
-          PetscInt c = dof == 11 ? p->dim : dof - 1, d = nodes[j] * p->ndof + c;
-          if (c < 0 || c >= p->ndof) continue;
+          PetscInt c = TslProblemDofSlot(p, dof), d = nodes[j] * p->ndof + c;
+          if (c < 0) continue; /* a dof the model's elements do not have (e.g. 3 in 2D): ignored as in the dialect */
           if (ld->kind == TSL_LOAD_BOUNDARY && ld->fixed)
-            p->bc[d] = (TslHistoryValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD};
+            p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD};
           else if (ld->kind == TSL_LOAD_BOUNDARY)
             Redefine(&p->bc[d], PetscRealPart(x[d]), ld->value, amp);
           else if (nodes[j] < p->nown)
@@ -324,7 +324,7 @@ PetscErrorCode TslProblemApplyPrescribed(TslProblem p, Vec X)
   PetscFunctionBeginUser;
   PetscCall(VecGetArray(X, &x));
   for (PetscInt d = 0; d < p->nown * p->ndof; d++)
-    if (p->bc[d].active) x[d] = TslProblemEvalHistory(p, &p->bc[d]);
+    if (p->bc[d].active) x[d] = TslProblemEvalLoadValue(p, &p->bc[d]);
   PetscCall(VecRestoreArray(X, &x));
   PetscCall(VecGhostUpdateBegin(X, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostUpdateEnd(X, INSERT_VALUES, SCATTER_FORWARD));

@@ -2,29 +2,56 @@
 #include "problem_impl.h"
 #include <string.h>
 
-static PetscErrorCode SetUpMaterials(TslProblem p)
+static PetscErrorCode SetUpSections(TslProblem p)
 {
   TslModel *m = p->m;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscCalloc1(m->nelem, &p->emat));
-  for (PetscInt e = 0; e < m->nelem; e++) p->emat[e].E = -1; /* marks "no section" */
+  PetscCall(PetscCalloc1(m->nelem, &p->esec));
   for (PetscInt s = 0; s < m->nsection; s++) {
-    const TslSection  *sec = &m->sections[s];
-    const TslMaterial *mat = &m->materials[sec->material_index];
-    PetscInt           k   = TslModelFindElementSet(m, sec->elset);
-    TslElementMaterial em  = {
-         mat->E, mat->nu, mat->conductivity, mat->density, mat->specific_heat, mat->alpha, sec->thickness > 0 ? sec->thickness : 1.0};
+    const TslSection *sec = &m->sections[s];
+    PetscInt          k   = TslModelFindElementSet(m, sec->elset);
 
     if (k < 0) continue; /* the set has no element on this rank */
     for (PetscInt i = 0; i < m->elsets[k].n; i++) {
       PetscInt e = TslModelElementIndex(m, m->elsets[k].ids[i]);
-      if (e >= 0) p->emat[e] = em;
+      if (e >= 0) p->esec[e] = (TslElementSection){&m->materials[sec->material_index], sec->thickness > 0 ? sec->thickness : 1.0};
     }
   }
   for (PetscInt e = 0; e < m->nelem; e++)
-    PetscCheck(p->emat[e].E > 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "element %" PetscInt_FMT " has no *SOLID SECTION", m->elem_id[e]);
+    PetscCheck(p->esec[e].mat, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "element %" PetscInt_FMT " has no *SOLID SECTION", m->elem_id[e]);
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The dof layout from the element rows: every row of the model must have the same nodal unknowns (the
+ * deck check rejects a mix), so the first element of any rank gives it; ranks without elements take it
+ * from the others. */
+static PetscErrorCode SetUpLayout(TslProblem p)
+{
+  PetscInt mine[1 + TSL_MAX_NODE_DOF] = {0}, all[1 + TSL_MAX_NODE_DOF];
+
+  PetscFunctionBeginUser;
+  if (p->m->nelem > 0) {
+    const TslElementType *t = TslElementTypeGet(p->m->elem_type[0]);
+    mine[0]                 = t->ndof;
+    for (PetscInt i = 0; i < t->ndof; i++) mine[1 + i] = t->node_dof[i];
+  }
+  PetscCall(MPIU_Allreduce(mine, all, 1 + TSL_MAX_NODE_DOF, MPIU_INT, MPI_MAX, p->comm));
+  PetscCheck(all[0] > 1, p->comm, PETSC_ERR_USER_INPUT, "the model has no elements");
+  p->ndof = all[0];
+  p->nu   = 0;
+  for (PetscInt i = 0; i < p->ndof; i++) {
+    p->node_dof[i] = all[1 + i];
+    if (all[1 + i] >= 1 && all[1 + i] <= 3) p->nu++;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscInt TslProblemDofSlot(TslProblem p, PetscInt dof)
+{
+  for (PetscInt i = 0; i < p->ndof; i++)
+    if (p->node_dof[i] == dof) return i;
+  return -1;
 }
 
 static PetscErrorCode SetUpInitialTemperature(TslProblem p)
@@ -75,20 +102,20 @@ static PetscErrorCode SetUpVectors(TslProblem p)
   PetscCall(VecGhostGetLocalForm(p->X, &xl));
   PetscCall(VecGetArray(xl, &x));
   for (PetscInt n = 0; n < p->nn; n++) {
-    for (PetscInt c = 0; c < p->dim; c++) x[n * p->ndof + c] = 0;
-    x[n * p->ndof + p->dim] = p->theta_init[n];
+    for (PetscInt c = 0; c < p->ndof - 1; c++) x[n * p->ndof + c] = 0;
+    x[n * p->ndof + p->ndof - 1] = p->theta_init[n];
   }
   PetscCall(VecRestoreArray(xl, &x));
   PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
   PetscCall(VecCopy(p->X, p->Xold));
 
   /* field index sets over owned dofs */
-  PetscCall(PetscMalloc1(p->nown * p->dim, &idx));
+  PetscCall(PetscMalloc1(p->nown * p->nu, &idx));
   for (PetscInt n = 0; n < p->nown; n++)
-    for (PetscInt c = 0; c < p->dim; c++) idx[n * p->dim + c] = p->rstart + n * p->ndof + c;
-  PetscCall(ISCreateGeneral(p->comm, p->nown * p->dim, idx, PETSC_OWN_POINTER, &p->is_u));
-  PetscCall(ISSetBlockSize(p->is_u, p->dim));
-  PetscCall(ISCreateStride(p->comm, p->nown, p->rstart + p->dim, p->ndof, &p->is_theta));
+    for (PetscInt c = 0; c < p->nu; c++) idx[n * p->nu + c] = p->rstart + n * p->ndof + c;
+  PetscCall(ISCreateGeneral(p->comm, p->nown * p->nu, idx, PETSC_OWN_POINTER, &p->is_u));
+  PetscCall(ISSetBlockSize(p->is_u, p->nu));
+  PetscCall(ISCreateStride(p->comm, p->nown, p->rstart + p->ndof - 1, p->ndof, &p->is_theta));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -163,7 +190,7 @@ static PetscErrorCode SetUpLocal(TslProblem p)
     p->elem_lnode[k] = TslModelNodeIndex(local, local->elem_conn[k]);
     PetscCheck(p->elem_lnode[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "element node %" PetscInt_FMT " missing on this rank", local->elem_conn[k]);
   }
-  PetscCall(SetUpMaterials(p));
+  PetscCall(SetUpSections(p));
   PetscCall(SetUpInitialTemperature(p));
   PetscCall(SetUpEquations(p));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -178,12 +205,12 @@ PetscErrorCode TslProblemCreate(MPI_Comm comm, TslModel *local, TslProblem *prob
   p->comm = comm;
   p->m    = local;
   p->dim  = local->dim;
-  p->ndof = local->dim + 1;
   p->nn   = local->nnode;
   p->nown = local->nnode_owned;
   p->step = -1;
   PetscCall(PetscMalloc1(local->elem_ptr[local->nelem], &p->elem_lnode));
   PetscCall(TslInjectSetFromOptions(comm, &p->inject));
+  PetscCall(SetUpLayout(p));
   {
     /* checks that can fail on one rank come before the first collective call, and all ranks agree on
      * their outcome */
@@ -221,7 +248,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(ISDestroy(&p->is_theta));
   PetscCall(PetscFree(p->elem_lnode));
   PetscCall(PetscFree(p->amp_active));
-  PetscCall(PetscFree(p->emat));
+  PetscCall(PetscFree(p->esec));
   PetscCall(PetscFree(p->theta_init));
   PetscCall(PetscFree2(p->bc, p->nload));
   PetscCall(PetscFree(p->face));
@@ -234,6 +261,13 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(TslModelDestroy(&p->m));
   PetscCall(PetscFree(p));
   *prob = NULL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemSetCapacityRate(TslProblem p, PetscReal shift)
+{
+  PetscFunctionBeginUser;
+  p->shift = shift;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -283,14 +317,15 @@ PetscErrorCode TslProblemGetFieldIS(TslProblem p, IS *is_u, IS *is_theta)
 PetscErrorCode TslProblemMaxTemperatureChange(TslProblem p, PetscReal *dtheta)
 {
   const PetscScalar *x, *xo;
-  PetscReal          d = 0;
+  PetscReal          d  = 0;
+  const PetscInt     th = p->ndof - 1;
 
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(p->X, &x));
   PetscCall(VecGetArrayRead(p->Xold, &xo));
   /* prescribed temperatures are excluded: their jumps are the user's, not the increment's */
   for (PetscInt n = 0; n < p->nown; n++)
-    if (!p->bc[n * p->ndof + p->dim].active) d = PetscMax(d, PetscAbsScalar(x[n * p->ndof + p->dim] - xo[n * p->ndof + p->dim]));
+    if (!p->bc[n * p->ndof + th].active) d = PetscMax(d, PetscAbsScalar(x[n * p->ndof + th] - xo[n * p->ndof + th]));
   PetscCall(VecRestoreArrayRead(p->X, &x));
   PetscCall(VecRestoreArrayRead(p->Xold, &xo));
   PetscCall(MPIU_Allreduce(&d, dtheta, 1, MPIU_REAL, MPIU_MAX, p->comm));
@@ -305,8 +340,8 @@ PetscErrorCode TslProblemResidualNorms(TslProblem p, Vec F, PetscReal *norm_u, P
   PetscFunctionBeginUser;
   PetscCall(VecGetArrayRead(F, &f));
   for (PetscInt n = 0; n < p->nown; n++) {
-    for (PetscInt c = 0; c < p->dim; c++) s[0] += PetscSqr(PetscRealPart(f[n * p->ndof + c]));
-    s[1] += PetscSqr(PetscRealPart(f[n * p->ndof + p->dim]));
+    for (PetscInt c = 0; c < p->ndof - 1; c++) s[0] += PetscSqr(PetscRealPart(f[n * p->ndof + c]));
+    s[1] += PetscSqr(PetscRealPart(f[n * p->ndof + p->ndof - 1]));
   }
   PetscCall(VecRestoreArrayRead(F, &f));
   PetscCall(MPIU_Allreduce(s, g, 2, MPIU_REAL, MPIU_SUM, p->comm));

@@ -32,19 +32,19 @@ typedef struct {
 #define TSL_AMP_DEFAULT (-1) /* the step's default: RAMP or STEP */
 #define TSL_AMP_HOLD    (-2) /* carried over from an earlier step: constant */
 
-/* A value that follows the step's loading history: v(t) = amplitude or ramp from v0 to v1. */
+/* A load value (prescribed value, load magnitude) that follows the step's loading history: v(t) = amplitude or ramp from v0 to v1. */
 typedef struct {
   PetscBool active;
   PetscReal v0, v1;
   PetscInt  amp;
-} TslHistoryValue;
+} TslLoadValue;
 
 /* A distributed (face or body) load on one local element. */
 typedef struct {
   PetscInt        elem, face; /* local element, face 1..6 (0: body) */
   TslFaceLoadKind kind;
-  TslHistoryValue value;    /* pressure, flux or film coefficient */
-  TslHistoryValue sink;     /* film sink temperature */
+  TslLoadValue value;    /* pressure, flux or film coefficient */
+  TslLoadValue sink;     /* film sink temperature */
   PetscInt        film_amp; /* amplitude scaling the film coefficient, or -1 */
   PetscInt        seq;      /* order of definition (later replaces earlier) */
 } TslFaceRecord;
@@ -52,7 +52,10 @@ typedef struct {
 struct _p_TslProblem {
   MPI_Comm  comm;
   TslModel *m;
-  PetscInt  dim, ndof, nn, nown; /* local nodes, owned nodes */
+  PetscInt  dim, nn, nown; /* local nodes, owned nodes */
+  /* dof layout, from the element rows: ndof unknowns per node, the dialect's number of each
+   * (node_dof[], theta last), nu of them displacements */
+  PetscInt ndof, nu, node_dof[TSL_MAX_NODE_DOF];
   PetscInt  rstart;              /* first owned global dof */
 
   Vec                    X, Xold, Xl, Fl; /* Xl, Fl: ghosted work vectors */
@@ -62,7 +65,7 @@ struct _p_TslProblem {
   IS                     is_u, is_theta;
 
   PetscInt           *elem_lnode;   /* local node of each element node (model elem_ptr layout) */
-  TslElementMaterial *emat;         /* [nelem] */
+  TslElementSection  *esec;         /* [nelem] material and thickness of each element */
   PetscReal          *theta_init;   /* [nn] */
   PetscReal           row_scale[2]; /* constraint-row scale for displacement and temperature dofs */
 
@@ -71,11 +74,12 @@ struct _p_TslProblem {
   PetscBool     steady;
   TslAmpDefault amp_default;
   PetscReal     period, t, dt, ttot;
+  PetscReal     shift; /* capacity rate factor chosen by the solver: 1/dt (backward Euler) or 0 (steady) */
   PetscReal     step_start_ttot; /* total time at the start of the step */
   PetscBool    *amp_active;      /* [namplitude] followed by some load of the step (any rank) */
 
-  TslHistoryValue *bc;    /* [nn*ndof] prescribed values (owned and ghost dofs) */
-  TslHistoryValue *nload; /* [nn*ndof] nodal loads (CLOAD, CFLUX), owned dofs only */
+  TslLoadValue *bc;    /* [nn*ndof] prescribed values (owned and ghost dofs) */
+  TslLoadValue *nload; /* [nn*ndof] nodal loads (CLOAD, CFLUX), owned dofs only */
   PetscInt         nface, face_seq;
   TslFaceRecord   *face;       /* sorted by element */
   PetscInt        *face_start; /* [nelem+1] CSR over face[] */
@@ -96,15 +100,20 @@ struct _p_TslProblem {
   PetscInt **eq_ldof; /* [nequation][n] local dof of each term */
 };
 
-/* Element data gathered from the local (ghosted) arrays; xa / xoa may be NULL (zeros). */
+/* Element data gathered from the local (ghosted) arrays; xa / xoa may be NULL (the initial state:
+ * zero displacement, initial temperature). in: the current state, in_old: the state at the start of the
+ * increment (same element, other unknowns). */
 typedef struct {
   PetscInt        n, nd;
   PetscInt        ld[TSL_MAX_ELEM_DOF];
   PetscReal       x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], uo[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES];
-  TslElementInput in;
+  TslElementInput in, in_old;
 } TslElemData;
 
 void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const PetscScalar *xoa, TslElemData *d);
+/* A per-element computation: set *stop to end the loop early. */
+typedef PetscErrorCode (*TslElementVisitor)(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop);
+PetscErrorCode TslProblemElementLoop(TslProblem p, const PetscScalar *xa, const PetscScalar *xoa, TslElementVisitor visit, void *ctx);
 typedef enum { ASM_RESIDUAL, ASM_JACOBIAN, ASM_PATTERN, ASM_RAW } AsmMode;
 
 /* Heat totals gathered during an assembly (this rank's share, per unit time). */
@@ -125,7 +134,9 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
 PetscErrorCode TslProblemContactSetUp(TslProblem p);
 PetscErrorCode TslProblemContactDestroy(TslProblem p);
 PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[]);
-PetscReal      TslProblemEvalHistory(TslProblem p, const TslHistoryValue *h);
+PetscReal      TslProblemEvalLoadValue(TslProblem p, const TslLoadValue *h);
+/* The slot of dialect dof number dof (1..6, 11) among a node's unknowns, -1 when the model has no such dof. */
+PetscInt       TslProblemDofSlot(TslProblem p, PetscInt dof);
 PetscErrorCode TslProblemLocalNode(TslProblem p, PetscInt gnum, PetscInt *lnode);
 PetscErrorCode TslProblemPreallocate(TslProblem p);
 PetscErrorCode TslProblemCheckElements(TslProblem p);

@@ -21,27 +21,6 @@ static void Union(PetscInt *parent, PetscInt a, PetscInt b)
   if (a != b) parent[PetscMax(a, b)] = PetscMin(a, b);
 }
 
-/* Rigid-body modes of a kinematics at a point x (relative to the body centre): modes[m][3]. */
-static PetscInt RigidModes(TslKinematics kin, const PetscReal x[3], PetscReal modes[6][3])
-{
-  PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(&modes[0][0], 18));
-  switch (kin) {
-  case TSL_KIN_AXISYMMETRIC:
-    modes[0][1] = 1;
-    return 1;
-  case TSL_KIN_SOLID3D:
-    for (PetscInt i = 0; i < 3; i++) modes[i][i] = 1;
-    modes[3][1] = -x[2], modes[3][2] = x[1];
-    modes[4][0] = x[2], modes[4][2] = -x[0];
-    modes[5][0] = -x[1], modes[5][1] = x[0];
-    return 6;
-  default:
-    modes[0][0] = 1, modes[1][1] = 1;
-    modes[2][0] = -x[1], modes[2][1] = x[0];
-    return 3;
-  }
-}
-
 /* Rank of a small symmetric positive semi-definite matrix by pivoted elimination. */
 static PetscInt GramRank(PetscInt n, PetscReal G[6][6])
 {
@@ -179,7 +158,7 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
       G = &gram[36 * body[r]];
       if (fixed[4 * i + 3]) thermal[body[r]] = 1;
       for (PetscInt c = 0; c < 3; c++) x[c] = (g->node_xyz[3 * i + c] - centre[4 * r + c] / centre[4 * r + 3]) / (size[r] > 0 ? size[r] : 1);
-      nm = RigidModes(TslElementTypeGet(g->elem_type[first_elem[r]])->kin, x, modes);
+      nm = TslElementTypeRigidModes(TslElementTypeGet(g->elem_type[first_elem[r]]), x, modes);
       for (PetscInt d = 0; d < 3; d++) {
         if (!fixed[4 * i + d]) continue;
         for (PetscInt a = 0; a < nm; a++)
@@ -192,7 +171,7 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
       PetscReal modes[6][3], x[3] = {0, 0, 0}, G[6][6];
       PetscInt  nm;
       if (body[r] < 0) continue;
-      nm = RigidModes(TslElementTypeGet(g->elem_type[first_elem[r]])->kin, x, modes);
+      nm = TslElementTypeRigidModes(TslElementTypeGet(g->elem_type[first_elem[r]]), x, modes);
       for (PetscInt a = 0; a < 6; a++)
         for (PetscInt b = 0; b < 6; b++) G[a][b] = gram[36 * body[r] + 6 * a + b];
       PetscCheck(GramRank(nm, G) == nm, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,

@@ -5,12 +5,8 @@
 #include <petscsnes.h>
 #include <string.h>
 
-#define NFIELD_NODE       8
-#define MAX_DEFAULTS      32
-#define NFIELD_ELEM       3
-#define NFIELD_NODE_BASIC 4 /* the contact fields follow */
-static const char *const NodeFields[NFIELD_NODE] = {"U", "NT", "RF", "RFL", "CPRESS", "CSLIP", "CSTATUS", "HFLA"};
-static const char *const ElemFields[NFIELD_ELEM] = {"S", "E", "HFL"};
+#define MAX_DEFAULTS 32
+#define MAX_FIELDS   32
 
 static const char *const HistoryColumns[] = {"step",
                                              "increment",
@@ -41,7 +37,7 @@ typedef struct {
   PetscInt   debug_diverge_step;   /* test hook: every increment of this step is declared diverged */
   PetscReal  scale_u, scale_theta; /* largest initial residuals seen in the job */
   PetscReal  r0_u, r0_theta;       /* initial residuals of the current solve */
-  PetscBool  node_on[NFIELD_NODE], elem_on[NFIELD_ELEM];
+  PetscBool  field_on[MAX_FIELDS]; /* rows of the problem's field table written in frames */
   PetscInt   frequency;
   PetscInt   frame_step, frame_inc; /* last frame written */
   PetscInt   done_step, done_inc;   /* last converged increment */
@@ -198,8 +194,11 @@ static PetscErrorCode SetUpOutput(Driver *d, const char *dir, const char *jobnam
                              m->elem_id, xtype, m->elem_ptr, conn));
   PetscCall(PetscFree2(xtype, conn));
   PetscCall(TslHistoryCreate(d->comm, dir, jobname, NHISTORY, HistoryColumns, &d->hist));
-  for (PetscInt i = 0; i < NFIELD_NODE; i++) d->node_on[i] = (PetscBool)(i < NFIELD_NODE_BASIC || m->npair > 0);
-  for (PetscInt i = 0; i < NFIELD_ELEM; i++) d->elem_on[i] = PETSC_TRUE;
+  for (PetscInt i = 0; i < TslFieldCount(); i++) {
+    PetscInt deflt;
+    (void)TslFieldName(i, NULL, &deflt);
+    d->field_on[i] = (PetscBool)(deflt == 1 || (deflt == 2 && m->npair > 0));
+  }
   d->frequency = 1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -213,21 +212,30 @@ static PetscErrorCode SetOutputRequests(Driver *d, const TslStep *step)
   for (PetscInt r = 0; r < step->nout; r++)
     if (!step->out[r].print) any = PETSC_TRUE;
   if (!any) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt i = 0; i < NFIELD_NODE; i++) d->node_on[i] = PETSC_FALSE;
-  for (PetscInt i = 0; i < NFIELD_ELEM; i++) d->elem_on[i] = PETSC_FALSE;
+  for (PetscInt i = 0; i < TslFieldCount(); i++) d->field_on[i] = PETSC_FALSE;
   for (PetscInt r = 0; r < step->nout; r++) {
     const TslOutputRequest *req = &step->out[r];
     if (req->print) continue;
     d->frequency = PetscMax(1, req->frequency);
     for (PetscInt v = 0; v < req->nvar; v++) {
-      PetscBool found = PETSC_FALSE;
-      for (PetscInt i = 0; i < NFIELD_NODE; i++)
-        if (!strcmp(req->var[v], NodeFields[i])) d->node_on[i] = found = PETSC_TRUE;
-      for (PetscInt i = 0; i < NFIELD_ELEM; i++)
-        if (!strcmp(req->var[v], ElemFields[i])) d->elem_on[i] = found = PETSC_TRUE;
-      if (!found) PetscCall(PetscPrintf(d->comm, "warning: output variable %s is not available; ignored\n", req->var[v]));
+      PetscInt i = TslFieldFind(req->var[v]);
+      if (i >= 0)
+        d->field_on[i] = PETSC_TRUE;
+      else
+        PetscCall(PetscPrintf(d->comm, "warning: output variable %s is not available; ignored\n", req->var[v]));
     }
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The increment's time and its time discretisation: the kernels return heat content and capacity, and
+ * the implicit procedures are backward Euler in the capacity term (rate = (Q - Q_old) / dt), or steady
+ * state (no capacity term at all). */
+static PetscErrorCode SetIncrement(Driver *d, const TslStep *step, PetscReal step_time, PetscReal h, PetscReal total_time)
+{
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemSetTime(d->prob, step_time, h, total_time));
+  PetscCall(TslProblemSetCapacityRate(d->prob, step->steady || !(h > 0) ? 0.0 : 1.0 / h));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -236,20 +244,17 @@ static PetscErrorCode WriteFrame(Driver *d, PetscInt step, PetscInt inc, PetscRe
   PetscFunctionBeginUser;
   d->in_output = PETSC_TRUE;
   PetscCall(TslOutputBeginFrame(d->out, step, inc, time));
-  for (PetscInt i = 0; i < NFIELD_NODE; i++) {
-    PetscInt   nc;
-    PetscReal *v;
-    if (!d->node_on[i]) continue;
-    PetscCall(TslProblemNodeField(d->prob, NodeFields[i], &nc, &v));
-    PetscCall(TslOutputNodeField(d->out, NodeFields[i], nc, v));
-    PetscCall(PetscFree(v));
-  }
-  for (PetscInt i = 0; i < NFIELD_ELEM; i++) {
-    PetscInt   nc;
-    PetscReal *v;
-    if (!d->elem_on[i]) continue;
-    PetscCall(TslProblemElementField(d->prob, ElemFields[i], &nc, &v));
-    PetscCall(TslOutputElementField(d->out, ElemFields[i], nc, v));
+  for (PetscInt i = 0; i < TslFieldCount(); i++) {
+    PetscInt     nc;
+    PetscReal   *v;
+    TslFieldKind kind;
+    const char  *name = TslFieldName(i, &kind, NULL);
+    if (!d->field_on[i]) continue;
+    PetscCall(TslProblemField(d->prob, i, &nc, &v));
+    if (kind == TSL_FIELD_NODE)
+      PetscCall(TslOutputNodeField(d->out, name, nc, v));
+    else
+      PetscCall(TslOutputElementField(d->out, name, nc, v));
     PetscCall(PetscFree(v));
   }
   PetscCall(TslOutputEndFrame(d->out));
@@ -276,16 +281,15 @@ static PetscErrorCode PrintTables(Driver *d, const TslStep *step)
     set = k < 0 ? NULL : req->node ? &m->nsets[k] : &m->elsets[k];
     PetscCall(PetscPrintf(d->comm, "%s print, step %s, set %s:\n", req->node ? "node" : "element", step->name, req->set));
     for (PetscInt v = 0; v < req->nvar; v++) {
-      PetscInt       nc;
-      PetscReal     *vals;
-      PetscErrorCode ierr;
-      PetscCall(PetscPushErrorHandler(PetscReturnErrorHandler, NULL));
-      ierr = req->node ? TslProblemNodeField(d->prob, req->var[v], &nc, &vals) : TslProblemElementField(d->prob, req->var[v], &nc, &vals);
-      PetscCall(PetscPopErrorHandler());
-      if (ierr) {
+      PetscInt     nc, f = TslFieldFind(req->var[v]);
+      PetscReal   *vals;
+      TslFieldKind kind = TSL_FIELD_NODE;
+      if (f >= 0) (void)TslFieldName(f, &kind, NULL);
+      if (f < 0 || (kind == TSL_FIELD_NODE) != req->node) {
         PetscCall(PetscPrintf(d->comm, "  %s: not available\n", req->var[v]));
         continue;
       }
+      PetscCall(TslProblemField(d->prob, f, &nc, &vals));
       for (PetscInt i = 0; set && i < set->n; i++) {
         if (req->node) {
           n = TslModelNodeIndex(m, set->ids[i]);
@@ -415,7 +419,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     attempts++;
     PetscCall(VecCopy(X, Xold));
     d->trial = PETSC_TRUE;
-    PetscCall(TslProblemSetTime(d->prob, t + h, h, *total_time + h));
+    PetscCall(SetIncrement(d, step, t + h, h, *total_time + h));
     PetscCall(TslProblemApplyPrescribed(d->prob, X));
     PetscCall(SolveIncrement(d, X, &reason, &its, &lits));
     if (s + 1 == d->debug_diverge_step) reason = SNES_DIVERGED_FUNCTION_DOMAIN;
@@ -480,7 +484,9 @@ static PetscErrorCode SaveLastConverged(Driver *d)
     d->trial = PETSC_FALSE;
   }
   if (d->done_inc > 0 && (d->frame_step != d->done_step || d->frame_inc != d->done_inc)) {
-    PetscCall(TslProblemSetTime(d->prob, d->done_step_time, d->done_dt, d->done_time));
+    const TslModel *m;
+    PetscCall(TslProblemGetModel(d->prob, &m));
+    PetscCall(SetIncrement(d, &m->steps[d->done_step - 1], d->done_step_time, d->done_dt, d->done_time));
     PetscCall(TslProblemHeatBalance(d->prob, &hb)); /* contact outputs at that state */
     PetscCall(WriteFrame(d, d->done_step, d->done_inc, d->done_time));
   }

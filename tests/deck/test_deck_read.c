@@ -86,9 +86,11 @@ static PetscErrorCode TestModelData(const TslModel *m)
   PetscFunctionBeginUser;
   EXPECT(m->nmaterial == 1 && TslModelFindMaterial(m, "STEEL") == 0);
   mat = &m->materials[0];
-  EXPECT(mat->has_elastic && mat->has_conductivity && mat->has_density && mat->has_specific_heat && mat->has_expansion);
-  EXPECT(NEAR(mat->E, 210e3) && NEAR(mat->nu, 0.3) && NEAR(mat->conductivity, 50) && NEAR(mat->density, 7.8e-9));
-  EXPECT(NEAR(mat->specific_heat, 4.6e8) && NEAR(mat->alpha, 1.2e-5) && NEAR(mat->alpha_zero, 20));
+  for (PetscInt k = 0; k < TSL_NPROP; k++) EXPECT(mat->prop[k].n == 1);
+  EXPECT(NEAR(mat->prop[TSL_PROP_ELASTIC].value[0][0], 210e3) && NEAR(mat->prop[TSL_PROP_ELASTIC].value[0][1], 0.3));
+  EXPECT(NEAR(mat->prop[TSL_PROP_CONDUCTIVITY].value[0][0], 50) && NEAR(mat->prop[TSL_PROP_DENSITY].value[0][0], 7.8e-9));
+  EXPECT(NEAR(mat->prop[TSL_PROP_SPECIFIC_HEAT].value[0][0], 4.6e8) && NEAR(mat->prop[TSL_PROP_EXPANSION].value[0][0], 1.2e-5) &&
+         NEAR(mat->alpha_zero, 20));
   EXPECT(mat->loc.file == 0 && mat->loc.line == 24);
   EXPECT(m->nsection == 1 && m->sections[0].material_index == 0 && NEAR(m->sections[0].thickness, 2.5));
   EXPECT(!strcmp(m->sections[0].elset, "EALL"));

@@ -5,31 +5,102 @@
 
 typedef struct {
   const TslElementType *type;
-  TslElementMaterial    mat;
+  TslMaterial           mat;
+  TslElementSection     sec;
   PetscReal             x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], u_old[TSL_MAX_ELEM_DOF], theta_init[TSL_MAX_ELEM_NODES];
-  TslElementInput       in;
+  TslElementInput       in, in_old;
+  PetscReal             shift; /* capacity rate factor (backward Euler 1/dt; 0 steady) */
+  PetscReal             E, nu, k, rho, c;
 } Case;
 
 static const PetscReal ALPHA = 1e-3, THETA0 = 20;
 
-/* Unit element (reference element mapped onto [0,1]^dim), shifted to r in [1,2] for axisymmetry;
+static void Constant(TslPropertyTable *t, PetscReal v0, PetscReal v1)
+{
+  t->n           = 1;
+  t->value[0][0] = v0, t->value[0][1] = v1;
+}
+
+/* Every property linear in temperature between 0 and 40 (the tangent checks' temperatures lie inside). */
+static void TemperatureDependent(Case *c)
+{
+  const PetscReal f[TSL_NPROP][2] = {{0.7, 0.9}, {0.5, 0.8}, {1, 1}, {0.6, 0.7}, {0.5, 0.75}};
+  for (PetscInt k = 0; k < TSL_NPROP; k++) {
+    TslPropertyTable *t = &c->mat.prop[k];
+    t->n                = 2;
+    t->theta[0] = 0, t->theta[1] = 40;
+    t->value[1][0] = t->value[0][0] * f[k][1];
+    t->value[1][1] = t->value[0][1] * (k == TSL_PROP_ELASTIC ? 1.2 : 1);
+    t->value[0][0] *= f[k][0];
+  }
+}
+
+/* Reference coordinate d of node a mapped onto [0, 1]: the [-1, 1] directions are halved, the simplex
+ * directions kept. */
+static PetscReal UnitCoordinate(const TslGeometry *g, PetscInt a, PetscInt d)
+{
+  PetscReal lo = 0;
+  for (PetscInt b = 0; b < g->nnode; b++) lo = PetscMin(lo, g->node_xi[b][d]);
+  return lo < 0 ? 0.5 * (g->node_xi[a][d] + 1) : g->node_xi[a][d];
+}
+
+/* Unit element (reference element mapped onto [0,1] in every direction), shifted to r in [1,2] for axisymmetry;
  * distortion > 0 moves every node by a fixed pseudo-random amount of that size. */
 static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
 {
   const TslGeometry *g = type->geom;
 
   c->type = type;
-  c->mat  = (TslElementMaterial){.E = 200e3, .nu = 0.3, .conductivity = 10, .density = 2, .specific_heat = 3, .alpha = ALPHA, .thickness = 0.5};
+  c->E = 200e3, c->nu = 0.3, c->k = 10, c->rho = 2, c->c = 3;
+  PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(&c->mat, sizeof(c->mat)));
+  Constant(&c->mat.prop[TSL_PROP_ELASTIC], c->E, c->nu);
+  Constant(&c->mat.prop[TSL_PROP_CONDUCTIVITY], c->k, 0);
+  Constant(&c->mat.prop[TSL_PROP_DENSITY], c->rho, 0);
+  Constant(&c->mat.prop[TSL_PROP_SPECIFIC_HEAT], c->c, 0);
+  Constant(&c->mat.prop[TSL_PROP_EXPANSION], ALPHA, 0);
+  c->sec = (TslElementSection){&c->mat, 0.5};
   for (PetscInt a = 0; a < g->nnode; a++) {
-    for (PetscInt d = 0; d < 3; d++) {
-      c->x[3 * a + d] = d < type->dim ? 0.5 * (g->node_xi[a][d] + 1) + distortion * PetscSinReal(3.1 * a + 1.3 * d + 0.7) : 0;
-    }
+    for (PetscInt d = 0; d < 3; d++) c->x[3 * a + d] = d < type->dim ? UnitCoordinate(g, a, d) + distortion * PetscSinReal(3.1 * a + 1.3 * d + 0.7) : 0;
     if (type->kin == TSL_KIN_AXISYMMETRIC) c->x[3 * a] += 1;
     c->theta_init[a] = THETA0;
     for (PetscInt i = 0; i < type->ndof; i++) c->u[type->ndof * a + i] = c->u_old[type->ndof * a + i] = i == type->dim ? THETA0 : 0;
   }
-  c->in = (TslElementInput){
-      .type = type, .mat = &c->mat, .x = c->x, .u = c->u, .u_old = c->u_old, .theta_init = c->theta_init, .dt = 0.1, .steady = PETSC_TRUE};
+  c->in       = (TslElementInput){.type = type, .sec = &c->sec, .x = c->x, .u = c->u, .theta_init = c->theta_init};
+  c->in_old   = c->in;
+  c->in_old.u = c->u_old;
+  c->shift    = 0;
+}
+
+/* What the implicit solver assembles for an element: internal force and heat flow, plus
+ * shift (Q - Q_old) with the lumped heat content. */
+static PetscErrorCode Residual(Case *c, PetscReal R[], PetscReal K[], PetscBool *inv)
+{
+  const PetscInt ndof = c->type->ndof, n = c->type->geom->nnode, nd = n * ndof;
+  PetscReal      Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES];
+
+  PetscFunctionBeginUser;
+  PetscCall(TslElementInternal(&c->in, R, K, inv));
+  if (*inv || c->shift == 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(TslElementLumped(&c->in, Q, C, NULL));
+  PetscCall(TslElementLumped(&c->in_old, Qo, NULL, NULL));
+  for (PetscInt a = 0; a < n; a++) {
+    const PetscInt row = ndof * a + ndof - 1;
+    R[row] += c->shift * (Q[a] - Qo[a]);
+    if (K) K[row * nd + row] += c->shift * C[a];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* S, E, HFL of the element. */
+static PetscErrorCode Output(Case *c, PetscReal S[6], PetscReal E[6], PetscReal H[3])
+{
+  TslElementResult res;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslElementOutput(&c->in, &res));
+  for (PetscInt r = 0; r < 6; r++) S[r] = res.S[r], E[r] = res.E[r];
+  for (PetscInt d = 0; d < 3; d++) H[d] = res.HFL[d];
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscInt NDof(const Case *c)
@@ -56,7 +127,7 @@ static PetscErrorCode CheckRigidMotion(TestLog *log, Case *c)
   /* translation (axial only for axisymmetry: a radial shift strains the hoop direction) */
   for (PetscInt a = 0; a < c->type->geom->nnode; a++)
     for (PetscInt i = 0; i < dim; i++) c->u[ndof * a + i] = (c->type->kin == TSL_KIN_AXISYMMETRIC && i == 0) ? 0 : 0.01 * (i + 1);
-  PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
+  PetscCall(Residual(c, R, NULL, &inv));
   Check(log, MaxRow(c, R, PETSC_FALSE), 0, 1e-9, "%s rigid translation max|R_u|", c->type->name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -65,7 +136,7 @@ static PetscErrorCode CheckThermalPatch(TestLog *log, Case *c, PetscBool constra
 {
   const TslElementType *t   = c->type;
   const PetscInt        dim = t->dim, ndof = t->ndof;
-  const PetscReal       E = c->mat.E, nu = c->mat.nu, dT = 15;
+  const PetscReal       E = c->E, nu = c->nu, dT = 15;
   PetscReal             R[TSL_MAX_ELEM_DOF], S[6], Eps[6], H[3], Sx[6] = {0}, Ex[6] = {0}, stretch = ALPHA * dT;
   PetscBool             inv;
 
@@ -84,8 +155,8 @@ static PetscErrorCode CheckThermalPatch(TestLog *log, Case *c, PetscBool constra
     for (PetscInt i = 0; i < dim; i++) c->u[ndof * a + i] = constrained ? 0 : stretch * c->x[3 * a + i];
     c->u[ndof * a + dim] = THETA0 + dT;
   }
-  PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
-  PetscCall(TslElementOutput(&c->in, S, Eps, H));
+  PetscCall(Residual(c, R, NULL, &inv));
+  PetscCall(Output(c, S, Eps, H));
   for (PetscInt r = 0; r < 6; r++) {
     Check(log, S[r], Sx[r], 1e-9 * E * ALPHA * dT, "%s %s expansion S%" PetscInt_FMT, t->name, constrained ? "constrained" : "free", r + 1);
     Check(log, Eps[r], Ex[r], 1e-12, "%s %s expansion E%" PetscInt_FMT, t->name, constrained ? "constrained" : "free", r + 1);
@@ -107,11 +178,10 @@ static PetscErrorCode CheckLinearTemperature(TestLog *log, Case *c)
     c->u[ndof * a + dim] = 5;
     for (PetscInt d = 0; d < dim; d++) c->u[ndof * a + dim] += g[d] * c->x[3 * a + d];
   }
-  PetscCall(TslElementOutput(&c->in, S, Eps, H));
-  for (PetscInt d = 0; d < 3; d++)
-    Check(log, H[d], d < dim ? -c->mat.conductivity * g[d] : 0, 1e-10, "%s linear theta HFL%" PetscInt_FMT, c->type->name, d + 1);
+  PetscCall(Output(c, S, Eps, H));
+  for (PetscInt d = 0; d < 3; d++) Check(log, H[d], d < dim ? -c->k * g[d] : 0, 1e-10, "%s linear theta HFL%" PetscInt_FMT, c->type->name, d + 1);
   /* steady: a uniform temperature conducts nothing, and the thermal rows do not see displacement */
-  PetscCall(TslElementResidual(&c->in, R, K, &inv));
+  PetscCall(Residual(c, R, K, &inv));
   for (PetscInt i = dim; i < NDof(c); i += ndof) {
     PetscReal s = 0;
     for (PetscInt j = dim; j < NDof(c); j += ndof) s += K[i * NDof(c) + j];
@@ -124,17 +194,49 @@ static PetscErrorCode CheckLinearTemperature(TestLog *log, Case *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Expected measure of the unit element: thickness 0.5 in plane, 2 pi * 1.5 for r in [1,2]. */
+/* Expected volume of the undistorted unit element: its area (or volume) times the thickness 0.5 in plane,
+ * or 2 pi r_c with r_c the centroid radius (the mean of the corners for these shapes). */
 static PetscReal UnitVolume(const Case *c)
 {
+  const TslGeometry *g = c->type->geom;
+  PetscReal          V = g->ref_volume, rc = 0;
+
+  for (PetscInt d = 0; d < g->dim; d++) {
+    PetscReal lo = 0;
+    for (PetscInt b = 0; b < g->nnode; b++) lo = PetscMin(lo, g->node_xi[b][d]);
+    if (lo < 0) V *= 0.5;
+  }
+  for (PetscInt a = 0; a < g->ncorner; a++) rc += c->x[3 * a] / g->ncorner;
   switch (c->type->kin) {
   case TSL_KIN_PLANE_STRAIN:
   case TSL_KIN_PLANE_STRESS:
-    return c->mat.thickness > 0 ? c->mat.thickness : 1;
+    return V * (c->sec.thickness > 0 ? c->sec.thickness : 1);
   case TSL_KIN_AXISYMMETRIC:
-    return 2 * PETSC_PI * 1.5;
+    return V * 2 * PETSC_PI * rc;
   default:
-    return 1;
+    return V;
+  }
+}
+
+/* Outward area vector of a flat face from its corners (2D: the edge times thickness or 2 pi r at its
+ * middle; 3D: half the sum of the corners' cross products). */
+static void FaceAreaVector(const Case *c, PetscInt f, PetscReal A[3])
+{
+  const TslGeometry *g = c->type->geom, *fg = g->face_geom[f];
+  const PetscInt    *fn = g->face_node[f], nc = fg->ncorner;
+
+  for (PetscInt d = 0; d < 3; d++) A[d] = 0;
+  if (c->type->dim == 2) {
+    const PetscReal *p = &c->x[3 * fn[0]], *q = &c->x[3 * fn[1]];
+    const PetscReal  m = c->type->kin == TSL_KIN_AXISYMMETRIC ? 2 * PETSC_PI * 0.5 * (p[0] + q[0]) : c->sec.thickness;
+    A[0] = (q[1] - p[1]) * m, A[1] = -(q[0] - p[0]) * m;
+    return;
+  }
+  for (PetscInt i = 0; i < nc; i++) {
+    const PetscReal *p = &c->x[3 * fn[i]], *q = &c->x[3 * fn[(i + 1) % nc]];
+    A[0] += 0.5 * (p[1] * q[2] - p[2] * q[1]);
+    A[1] += 0.5 * (p[2] * q[0] - p[0] * q[2]);
+    A[2] += 0.5 * (p[0] * q[1] - p[1] * q[0]);
   }
 }
 
@@ -148,21 +250,29 @@ static PetscErrorCode CheckVolumeAndHeat(TestLog *log, Case *c)
   PetscCall(TslElementNodalVolume(&c->in, vol));
   for (PetscInt a = 0; a < n; a++) V += vol[a];
   Check(log, V, UnitVolume(c), 1e-12, "%s element volume", c->type->name);
-  c->mat.thickness = 0;
+  c->sec.thickness = 0;
   PetscCall(TslElementNodalVolume(&c->in, vol));
   V = 0;
   for (PetscInt a = 0; a < n; a++) V += vol[a];
   Check(log, V, UnitVolume(c), 1e-12, "%s element volume with thickness 0 (taken as 1)", c->type->name);
-  c->mat.thickness = 0.5;
+  c->sec.thickness = 0.5;
   /* stored heat: rho c V dtheta, and the capacity part of the residual is that over dt */
   for (PetscInt a = 0; a < n; a++) c->u[ndof * a + dim] = c->u_old[ndof * a + dim] + 2;
-  PetscCall(TslElementHeatChange(&c->in, &dQ));
-  Check(log, dQ, c->mat.density * c->mat.specific_heat * UnitVolume(c) * 2, 1e-9, "%s heat change", c->type->name);
-  PetscCall(TslElementResidual(&c->in, Rs, NULL, &inv));
-  c->in.steady = PETSC_FALSE;
-  PetscCall(TslElementResidual(&c->in, Rt, NULL, &inv));
-  c->in.steady = PETSC_TRUE;
-  for (PetscInt i = dim; i < NDof(c); i += ndof) cap += (Rt[i] - Rs[i]) * c->in.dt;
+  {
+    PetscReal Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], M[TSL_MAX_ELEM_NODES], mass = 0;
+    PetscCall(TslElementLumped(&c->in, Q, NULL, M));
+    PetscCall(TslElementLumped(&c->in_old, Qo, NULL, NULL));
+    dQ = 0;
+    for (PetscInt a = 0; a < n; a++) dQ += Q[a] - Qo[a], mass += M[a];
+    Check(log, mass, c->rho * UnitVolume(c), 1e-9, "%s lumped mass", c->type->name);
+  }
+  for (PetscInt a = 0; a < n; a++) Check(log, vol[a] > 0, 1, 0, "%s lumped weight of node %" PetscInt_FMT " positive", c->type->name, a + 1);
+  Check(log, dQ, c->rho * c->c * UnitVolume(c) * 2, 1e-9, "%s heat change", c->type->name);
+  PetscCall(Residual(c, Rs, NULL, &inv));
+  c->shift = 10;
+  PetscCall(Residual(c, Rt, NULL, &inv));
+  c->shift = 0;
+  for (PetscInt i = dim; i < NDof(c); i += ndof) cap += (Rt[i] - Rs[i]) / 10;
   Check(log, cap, dQ, 1e-9, "%s capacity residual * dt = heat change", c->type->name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -176,7 +286,7 @@ static PetscErrorCode PartResidual(Case *c, PetscInt face, PetscReal R[], PetscR
 
   PetscFunctionBeginUser;
   if (face == 0)
-    PetscCall(TslElementResidual(&c->in, R, K, &inv));
+    PetscCall(Residual(c, R, K, &inv));
   else {
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     if (K)
@@ -197,7 +307,7 @@ static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face)
   PetscReal          kmax[2][2] = {{0}}, err[2][2] = {{0}};
 
   PetscFunctionBeginUser;
-  c->in.steady = PETSC_FALSE;
+  c->shift = 10;
   for (PetscInt i = 0; i < nd; i++) c->u[i] = (i % ndof == dim) ? THETA0 + 10 * PetscSinReal(1.1 * i + 0.3) : 0.01 * PetscCosReal(2.3 * i + 0.1);
   PetscCall(PartResidual(c, face, R, K));
   for (PetscInt j = 0; j < nd; j++) {
@@ -213,7 +323,7 @@ static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face)
       kmax[bi][bj] = PetscMax(kmax[bi][bj], PetscAbsReal(K[i * nd + j]));
     }
   }
-  c->in.steady = PETSC_TRUE;
+  c->shift = 0;
   for (PetscInt bi = 0; bi < 2; bi++)
     for (PetscInt bj = 0; bj < 2; bj++) {
       /* blocks that are exactly zero (theta-u; all but theta-theta for a film) compare absolutely */
@@ -240,21 +350,15 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c)
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < g->nnode; a++) c->u[ndof * a + dim] = theta;
   for (PetscInt f = 0; f < g->nface; f++) {
-    PetscReal cen[3] = {0, 0, 0}, fc[3] = {0, 0, 0}, n[3], nn = 0, area, force[3] = {0, 0, 0}, sumt = 0;
-    for (PetscInt a = 0; a < g->nnode; a++)
-      for (PetscInt d = 0; d < 3; d++) cen[d] += c->x[3 * a + d] / g->nnode;
-    for (PetscInt a = 0; a < g->face_nnode[f]; a++)
-      for (PetscInt d = 0; d < 3; d++) fc[d] += c->x[3 * g->face_node[f][a] + d] / g->face_nnode[f];
-    for (PetscInt d = 0; d < 3; d++) n[d] = fc[d] - cen[d], nn += n[d] * n[d];
-    for (PetscInt d = 0; d < 3; d++) n[d] /= PetscSqrtReal(nn);
-    area = c->type->kin == TSL_KIN_AXISYMMETRIC ? 2 * PETSC_PI * fc[0] : (dim == 2 ? c->mat.thickness : 1);
-
+    PetscReal Avec[3], area, force[3] = {0, 0, 0}, sumt = 0;
+    FaceAreaVector(c, f, Avec);
+    area = PetscSqrtReal(Avec[0] * Avec[0] + Avec[1] * Avec[1] + Avec[2] * Avec[2]);
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_PRESSURE, f + 1, p, 0, R, NULL, NULL));
     for (PetscInt a = 0; a < g->nnode; a++)
       for (PetscInt i = 0; i < dim; i++) force[i] -= R[ndof * a + i];
     for (PetscInt i = 0; i < dim; i++)
-      Check(log, force[i], -p * area * n[i], 1e-12, "%s S%" PetscInt_FMT " pressure force %" PetscInt_FMT, c->type->name, f + 1, i + 1);
+      Check(log, force[i], -p * Avec[i], 1e-12, "%s S%" PetscInt_FMT " pressure force %" PetscInt_FMT, c->type->name, f + 1, i + 1);
 
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_FLUX, f + 1, q, 0, R, NULL, &heat));
@@ -281,6 +385,60 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Second-order types under a linear temperature theta = THETA0 + g.x (free expansion): the stress-free
+ * displacement is quadratic, u_i = s [(g.x) x_i - g_i |x|^2 / 2] with s = alpha (3D, plane stress) or
+ * (1 + nu) alpha (plane strain, in-plane); axisymmetric with g along z only (u_r = s g z r,
+ * u_z = s g (z^2 - r^2) / 2). The element must reproduce it exactly: no force, no in-plane stress. */
+static PetscErrorCode CheckQuadraticExpansion(TestLog *log, Case *c)
+{
+  const TslElementType *t   = c->type;
+  const PetscInt        dim = t->dim, ndof = t->ndof;
+  PetscReal             g[3] = {0.4, -0.3, 0.2}, R[TSL_MAX_ELEM_DOF], S[6], Eps[6], H[3], s = ALPHA, smax = 0;
+  PetscBool             inv;
+
+  PetscFunctionBeginUser;
+  if (t->kin == TSL_KIN_AXISYMMETRIC) g[0] = 0;
+  if (t->kin == TSL_KIN_PLANE_STRAIN) s *= 1 + c->nu;
+  for (PetscInt a = 0; a < t->geom->nnode; a++) {
+    const PetscReal *x = &c->x[3 * a];
+    PetscReal        gx = 0, xx = 0;
+    for (PetscInt d = 0; d < dim; d++) gx += g[d] * x[d], xx += x[d] * x[d];
+    for (PetscInt i = 0; i < dim; i++) c->u[ndof * a + i] = s * (gx * x[i] - 0.5 * g[i] * xx);
+    c->u[ndof * a + ndof - 1] = THETA0 + gx;
+  }
+  PetscCall(Residual(c, R, NULL, &inv));
+  PetscCall(Output(c, S, Eps, H));
+  for (PetscInt r = 0; r < 6; r++)
+    if (!(t->kin == TSL_KIN_PLANE_STRAIN && r == 2)) smax = PetscMax(smax, PetscAbsReal(S[r]));
+  Check(log, MaxRow(c, R, PETSC_FALSE) / (c->E * ALPHA), 0, 1e-10, "%s quadratic free expansion under linear theta max|R_u| / (E alpha)", t->name);
+  Check(log, smax / (c->E * ALPHA), 0, 1e-10, "%s quadratic free expansion max|S| / (E alpha)", t->name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A uniform pressure must push every node of the face inward (positive nodal forces), which contact and
+ * lumped loads rely on; the plain tet10 face would give zero corner forces. */
+static PetscErrorCode CheckPositivePressure(TestLog *log, Case *c)
+{
+  const TslGeometry *g = c->type->geom;
+  const PetscInt     dim = c->type->dim, ndof = c->type->ndof, nd = NDof(c);
+  PetscReal          R[TSL_MAX_ELEM_DOF];
+
+  PetscFunctionBeginUser;
+  for (PetscInt f = 0; f < g->nface; f++) {
+    PetscReal A[3], worst = PETSC_MAX_REAL;
+    FaceAreaVector(c, f, A);
+    for (PetscInt i = 0; i < nd; i++) R[i] = 0;
+    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_PRESSURE, f + 1, 1.0, 0, R, NULL, NULL));
+    for (PetscInt k = 0; k < g->face_nnode[f]; k++) {
+      PetscReal fn = 0;
+      for (PetscInt i = 0; i < dim; i++) fn += R[ndof * g->face_node[f][k] + i] * A[i];
+      worst = PetscMin(worst, fn);
+    }
+    Check(log, worst > 0, 1, 0, "%s S%" PetscInt_FMT " uniform pressure pushes every face node inward", c->type->name, f + 1);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckInverted(TestLog *log, Case *c)
 {
   PetscReal R[TSL_MAX_ELEM_DOF];
@@ -289,14 +447,14 @@ static PetscErrorCode CheckInverted(TestLog *log, Case *c)
   PetscFunctionBeginUser;
   /* mirror in the second coordinate: clockwise / left-handed numbering */
   for (PetscInt a = 0; a < c->type->geom->nnode; a++) c->x[3 * a + 1] *= -1;
-  PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
+  PetscCall(Residual(c, R, NULL, &inv));
   Check(log, inv, PETSC_TRUE, 0, "%s mirrored element reported inverted", c->type->name);
   for (PetscInt a = 0; a < c->type->geom->nnode; a++) c->x[3 * a + 1] *= -1;
-  PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
+  PetscCall(Residual(c, R, NULL, &inv));
   Check(log, inv, PETSC_FALSE, 0, "%s unit element not inverted", c->type->name);
   if (c->type->kin == TSL_KIN_AXISYMMETRIC) {
     for (PetscInt a = 0; a < c->type->geom->nnode; a++) c->x[3 * a] -= 1.5; /* r in [-0.5, 0.5] */
-    PetscCall(TslElementResidual(&c->in, R, NULL, &inv));
+    PetscCall(Residual(c, R, NULL, &inv));
     Check(log, inv, PETSC_TRUE, 0, "%s element across the axis reported invalid", c->type->name);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -328,6 +486,16 @@ int main(int argc, char **argv)
     for (PetscInt f = 0; f <= type->geom->nface; f++) {
       CaseSetUp(&c, type, 0.08);
       PetscCall(CheckTangent(&log, &c, f));
+    }
+    CaseSetUp(&c, type, 0.08);
+    TemperatureDependent(&c);
+    printf("(temperature-dependent properties)\n");
+    PetscCall(CheckTangent(&log, &c, 0));
+    CaseSetUp(&c, type, 0);
+    PetscCall(CheckPositivePressure(&log, &c));
+    if (type->geom->order == 2) {
+      CaseSetUp(&c, type, 0);
+      PetscCall(CheckQuadraticExpansion(&log, &c));
     }
     CaseSetUp(&c, type, 0);
     PetscCall(CheckInverted(&log, &c));

@@ -20,6 +20,15 @@ conductance / radiation (5 steps):
         interface, every secondary node is open
 friction (3 steps): frictional dissipation 120 and heat absorbed 60 (eta = 0.5) within 0.1 %; after
   step 3 every node at 60 / (rho c area) = 60 / 8 = 7.5 within 0.1 %; energy balance every increment.
+
+Any 2D type (make_decks.py --sliding TYPE SERIES): triangles and second-order meshes of the same blocks.
+Axisymmetric types (job name *_cax*): the rings of make_decks.py (r = 2.5 - y, z = x); the results are
+turned back into the planar picture (x = z, y = 2.5 - r) so that every check reads the same. Friction on
+rings: the inner ring's hoop stiffness takes part of the applied radial force, so the interface force N
+is measured (the base's axial reaction while slipping = mu N) and the checks are dissipation = mu N x
+slip path 6 (0.1 %), absorbed = eta x dissipation, final temperature = absorbed / (rho c V) with the
+ring volume V = pi (16 x 2.5 - 10.75) = 29.25 pi (0.1 %); the applied force 211.6 makes N about 200,
+so the dissipation is 120 within 1 %.
 With AUGMENTED LAGRANGE normal contact (job name *_auglagr_*) the penetration at the end of step 4
 must also be below 1 % of the penalty method's p / eps_n (eps_n = 10 E / 0.5).
 usage: check_sliding.py OUTDIR JOB conductance|radiation|friction
@@ -36,6 +45,19 @@ r = Result(outdir, job)
 ids, xyz, h = r.node_ids, r.xyz, r.history
 small = ids > 1000
 large = ~small
+axi = "_cax" in job
+R_AXI = 2.5
+if axi:
+    # back to the planar picture: x = z, y = R - r; U and RF likewise (u_x = u_z, u_y = -u_r)
+    xyz = np.column_stack([xyz[:, 1], R_AXI - xyz[:, 0], xyz[:, 2]])
+    field_raw = r.field
+
+    def turned(name, index=-1):
+        v = field_raw(name, index)
+        if name in ("U", "RF"):
+            v = np.column_stack([v[:, 1], -v[:, 0], v[:, 2]])
+        return v
+    r.field = turned
 
 
 def last_row(step):
@@ -44,6 +66,22 @@ def last_row(step):
 
 balance_scale = max(abs(h["heat_in"]).max(), abs(h["friction_dissipation_rate"]).max(), 1e-300)
 check("worst energy balance residual over all increments", abs(h["balance_residual"]).max(), 0.0, 1e-6 * balance_scale)
+
+if series == "friction" and axi:
+    # the axial reaction of the base while the ring slips (first half of step 2) is the friction force
+    frames = [i for i, f in enumerate(r.frames) if int(r.h5["/frames/" + f].attrs["step"]) == 2]
+    fr = [abs(r.field("RF", i)[:, 0][large].sum()) for i in frames[len(frames) // 6: len(frames) // 3]]
+    friction = float(np.mean(fr))
+    print("friction force while slipping %.6g (spread %.2g), interface force N = %.6g" % (friction, (max(fr) - min(fr)) / friction, friction / 0.1))
+    volume = np.pi * (16 * R_AXI - 10.75)
+    dis = h["friction_dissipation_total"][-1]
+    check("total frictional dissipation = friction force x slip path 6", dis, friction * 6.0, 1e-3, relative=True)
+    check("total frictional dissipation (N about 200: 120)", dis, 120.0, 1e-2, relative=True)
+    check("heat absorbed by the rings (eta = 0.5)", h["friction_heat_total"][-1], 0.5 * dis, 1e-3, relative=True)
+    nt = r.field("NT")[:, 0]
+    check("final temperature, coldest node (absorbed / 29.25 pi)", nt.min(), 0.5 * dis / volume, 1e-3, relative=True)
+    check("final temperature, hottest node (absorbed / 29.25 pi)", nt.max(), 0.5 * dis / volume, 1e-3, relative=True)
+    finish()
 
 if series == "friction":
     check("total frictional dissipation", h["friction_dissipation_total"][-1], 120.0, 1e-3, relative=True)

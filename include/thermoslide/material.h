@@ -1,0 +1,37 @@
+/* thermoslide materials: the properties of a TslMaterial (model.h) evaluated at a temperature.
+ *
+ * Each property is a table in temperature (one row: a constant); between rows it is linear and beyond
+ * the ends constant, as in the dialect. Evaluation returns the values and their derivatives in theta,
+ * so element kernels get exact tangents of temperature-dependent properties. Plain functions on plain
+ * data: no MPI, no PETSc objects.
+ *
+ * Definitions the kernels rely on (Abaqus Analysis User's Guide, "Thermal expansion"; "Specific heat"):
+ *   thermal strain   eps_th(theta) = alpha(theta) (theta - theta_0) - alpha(theta_I) (theta_I - theta_0)
+ *                    with theta_0 = ZERO= and theta_I the initial temperature of the point;
+ *   heat content     e(theta) = int_0^theta c(s) ds per unit mass (exact for the piecewise linear c),
+ *                    so the heat stored between two states is rho (e(theta) - e(theta_old)) whatever the
+ *                    temperature dependence, and a heat balance closes exactly.
+ */
+#pragma once
+#include <thermoslide/model.h>
+
+/* Properties at one temperature and their derivatives d/dtheta. */
+typedef struct {
+  PetscReal E, nu, k, rho, c, alpha;
+  PetscReal dE, dnu, dk, dc, dalpha;
+} TslMaterialPoint;
+
+/* Value (and derivative, may be NULL) of column col of a property table at theta. */
+PetscReal TslPropertyEval(const TslPropertyTable *tab, PetscInt col, PetscReal theta, PetscReal *dvalue);
+
+void TslMaterialEval(const TslMaterial *mat, PetscReal theta, TslMaterialPoint *mp);
+
+/* Heat content per unit mass e(theta) = int_0^theta c ds and de/dtheta = c(theta). */
+PetscReal TslMaterialHeatContent(const TslMaterial *mat, PetscReal theta, PetscReal *c);
+
+/* Thermal strain (isotropic, per normal component) at theta for a point whose initial temperature is
+ * theta_init, and its derivative in theta. */
+PetscReal TslMaterialThermalStrain(const TslMaterial *mat, PetscReal theta, PetscReal theta_init, PetscReal *deps);
+
+/* True when any property varies with temperature (the kernels then add the property-derivative terms). */
+PetscBool TslMaterialIsTemperatureDependent(const TslMaterial *mat);

@@ -1,0 +1,218 @@
+/* The formulation table: what distinguishes full, reduced (R), hybrid (H) and modified (M) elements.
+ *
+ *   full       the family's full rule for every term; lumping by row sums (linear families) or HRZ
+ *              (quadratic families, whose row sums are negative at the corners)
+ *   reduced    one mechanical point (the family's reduced rule) with stiffness-based hourglass control;
+ *              conduction keeps the full rule, so there is no thermal hourglass mode
+ *   hybrid     an independent pressure, constant (linear families) or linear (quadratic families),
+ *              condensed in the element (kernels.c)
+ *   modified   second-order triangles and tetrahedra that behave well in contact: capacity, mass and 3D
+ *              face loads are lumped over the linear sub-elements (tri6 -> 4 tri3, tet10 -> 8 tet4), so
+ *              every nodal weight is positive (the plain tet10 face gives zero corner forces under a
+ *              uniform pressure and negative corner capacities)
+ */
+#include "element_impl.h"
+
+/* Hourglass stiffness scale s: kappa = s mu V sum_a |b_a|^2 (see Hourglass below). 0.1 keeps the
+ * hourglass energy of a coarse bending mesh well under 1 % of the strain energy while suppressing the
+ * modes (tests/element); the dialect's *HOURGLASS STIFFNESS is not read yet. */
+#define TSL_HOURGLASS_SCALE 0.1
+
+static const TslQuadrature *FullRule(const TslGeometry *g)
+{
+  return &g->full;
+}
+
+static const TslQuadrature *ReducedRule(const TslGeometry *g)
+{
+  return &g->reduced;
+}
+
+/* Pressure space of a hybrid element: constant for linear families, 1 + xi (complete linear in the
+ * reference coordinates) for quadratic ones. */
+static PetscInt PressureBasis(const TslGeometry *g, const TslElementPoint *p, PetscReal P[])
+{
+  P[0] = 1;
+  if (g->order < 2) return 1;
+  for (PetscInt d = 0; d < g->dim; d++) P[1 + d] = p->xi[d];
+  return 1 + g->dim;
+}
+
+/* Lumping weights V_a = int N_a dV (row sums): positive for linear families. */
+static PetscBool RowSum(const TslElementInput *in, PetscReal vol[])
+{
+  const TslGeometry *g = in->type->geom;
+  TslElementPoint    p;
+
+  for (PetscInt a = 0; a < g->nnode; a++) vol[a] = 0;
+  for (PetscInt q = 0; q < g->full.n; q++) {
+    if (!TslElementPointEvaluate(in->type, in->sec, in->x, g->full.xi[q], g->full.w[q], &p)) return PETSC_FALSE;
+    for (PetscInt a = 0; a < g->nnode; a++) vol[a] += p.N[a] * p.dV;
+  }
+  return PETSC_TRUE;
+}
+
+/* HRZ lumping (Hinton, Rock and Zienkiewicz 1976): V_a = V int N_a^2 dV / sum_b int N_b^2 dV; positive
+ * for every family, exact total volume. Row sums when the family is linear. */
+static PetscBool Lump(const TslElementInput *in, PetscReal vol[])
+{
+  const TslGeometry *g = in->type->geom;
+  TslElementPoint    p;
+  PetscReal          V = 0, sum = 0;
+
+  if (g->order < 2) return RowSum(in, vol);
+  for (PetscInt a = 0; a < g->nnode; a++) vol[a] = 0;
+  for (PetscInt q = 0; q < g->full.n; q++) {
+    if (!TslElementPointEvaluate(in->type, in->sec, in->x, g->full.xi[q], g->full.w[q], &p)) return PETSC_FALSE;
+    V += p.dV;
+    for (PetscInt a = 0; a < g->nnode; a++) vol[a] += p.N[a] * p.N[a] * p.dV;
+  }
+  for (PetscInt a = 0; a < g->nnode; a++) sum += vol[a];
+  for (PetscInt a = 0; a < g->nnode; a++) vol[a] *= V / sum;
+  return PETSC_TRUE;
+}
+
+/* Row sums over the linear sub-elements: each sub-element's nodal volumes go to the parent's nodes. The
+ * sub-element is evaluated as a linear element of the same kinematics on its own nodes' coordinates. */
+static PetscBool SubElementLump(const TslElementInput *in, PetscReal vol[])
+{
+  const TslGeometry *g = in->type->geom, *sg = g->sub_geom;
+  TslElementType     sub = *in->type;
+  PetscReal          xs[4 * 3];
+  TslElementPoint    p;
+
+  if (!g->nsub) return Lump(in, vol);
+  sub.geom = sg;
+  for (PetscInt a = 0; a < g->nnode; a++) vol[a] = 0;
+  for (PetscInt s = 0; s < g->nsub; s++) {
+    for (PetscInt c = 0; c < sg->nnode; c++)
+      for (PetscInt d = 0; d < 3; d++) xs[3 * c + d] = in->x[3 * g->sub_node[s][c] + d];
+    for (PetscInt q = 0; q < sg->full.n; q++) {
+      if (!TslElementPointEvaluate(&sub, in->sec, xs, sg->full.xi[q], sg->full.w[q], &p)) return PETSC_FALSE;
+      for (PetscInt c = 0; c < sg->nnode; c++) vol[g->sub_node[s][c]] += p.N[c] * p.dV;
+    }
+  }
+  return PETSC_TRUE;
+}
+
+/* The face family's own rule. */
+static void FaceRuleOwn(const TslGeometry *g, PetscInt face, TslFaceRule *rule)
+{
+  const TslGeometry *fg = g->face_geom[face];
+  PetscReal          dN[TSL_MAX_FACE_NODES * 3];
+
+  rule->n = fg->full.n;
+  for (PetscInt q = 0; q < fg->full.n; q++) {
+    fg->shape(fg->full.xi[q], rule->N[q], dN);
+    for (PetscInt f = 0; f < fg->nnode; f++)
+      for (PetscInt j = 0; j < fg->dim; j++) rule->dN[q][f][j] = dN[fg->dim * f + j];
+    rule->w[q] = fg->full.w[q];
+  }
+}
+
+/* The linear sub-faces of a quadratic 3D face (tri6 -> 4 tri3): composite linear shape functions, so
+ * the nodal weights of a uniform load are all positive. 2D faces (line3) keep their own rule, whose
+ * weights (1/6, 2/3, 1/6) already are. */
+static void FaceRuleSub(const TslGeometry *g, PetscInt face, TslFaceRule *rule)
+{
+  const TslGeometry *fg = g->face_geom[face], *sg = fg->sub_geom;
+  PetscReal          N[TSL_MAX_FACE_NODES], dN[TSL_MAX_FACE_NODES * 3];
+
+  if (!fg->nsub || fg->dim < 2) {
+    FaceRuleOwn(g, face, rule);
+    return;
+  }
+  rule->n = 0;
+  for (PetscInt s = 0; s < fg->nsub; s++)
+    for (PetscInt q = 0; q < sg->full.n; q++) {
+      PetscInt k = rule->n++;
+      sg->shape(sg->full.xi[q], N, dN);
+      for (PetscInt f = 0; f < fg->nnode; f++) {
+        rule->N[k][f] = 0;
+        for (PetscInt j = 0; j < 2; j++) rule->dN[k][f][j] = 0;
+      }
+      for (PetscInt c = 0; c < sg->nnode; c++) {
+        const PetscInt f = fg->sub_node[s][c];
+        rule->N[k][f]    = N[c];
+        for (PetscInt j = 0; j < sg->dim; j++) rule->dN[k][f][j] = dN[sg->dim * c + j];
+      }
+      rule->w[k] = sg->full.w[q];
+    }
+}
+
+/* Hourglass control of the one-point quad4 and hex8 (Flanagan and Belytschko 1981, stiffness form).
+ * The hourglass base vectors h^k are the nodal values of the products of reference coordinates that
+ * the one-point rule cannot see (xi eta in 2D; xi eta, eta zeta, zeta xi, xi eta zeta in 3D);
+ *   gamma^k_a = h^k_a - (sum_b h^k_b x_b) . b_a,   b_a = grad N_a at the centre,
+ * are orthogonal to every linear field, so rigid motion and uniform strain (the patch test) produce no
+ * hourglass force. With q^k_i = sum_a gamma^k_a u_ia:
+ *   f_ia = kappa sum_k gamma^k_a q^k_i,  energy = kappa/2 sum_k,i (q^k_i)^2,  kappa = s mu V sum_a |b_a|^2,
+ * mu taken at the centre temperature (its derivative enters the temperature columns of the tangent). */
+static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMaterialPoint *mp, PetscReal R[], PetscReal K[], PetscReal *energy)
+{
+  const TslElementType *t   = in->type;
+  const TslGeometry    *g   = t->geom;
+  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, n = g->nnode, nd = n * ndof;
+  const PetscReal       xi0[3] = {0, 0, 0};
+  TslElementPoint       p;
+  PetscReal             gamma[4][TSL_MAX_ELEM_NODES], bb = 0, kappa, dkappa, mu, dmu;
+  PetscInt              nh = 0;
+
+  PetscFunctionBeginUser;
+  PetscCheck(TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "hourglass control of an inverted element");
+  /* base vectors: products of two or more reference coordinates at the nodes */
+  for (PetscInt mask = 3; mask < (1 << g->dim); mask++) {
+    PetscInt bits = 0;
+    for (PetscInt d = 0; d < g->dim; d++) bits += (mask >> d) & 1;
+    if (bits < 2) continue;
+    for (PetscInt a = 0; a < n; a++) {
+      gamma[nh][a] = 1;
+      for (PetscInt d = 0; d < g->dim; d++)
+        if ((mask >> d) & 1) gamma[nh][a] *= g->node_xi[a][d];
+    }
+    nh++;
+  }
+  for (PetscInt k = 0; k < nh; k++) {
+    PetscReal hx[3] = {0, 0, 0};
+    for (PetscInt b = 0; b < n; b++)
+      for (PetscInt d = 0; d < dim; d++) hx[d] += gamma[k][b] * in->x[3 * b + d];
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt d = 0; d < dim; d++) gamma[k][a] -= hx[d] * p.dNdx[a][d];
+  }
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt d = 0; d < dim; d++) bb += p.dNdx[a][d] * p.dNdx[a][d];
+  mu      = mp->E / (2 * (1 + mp->nu));
+  dmu     = mp->dE / (2 * (1 + mp->nu)) - mp->dnu * mp->E / (2 * (1 + mp->nu) * (1 + mp->nu));
+  kappa   = TSL_HOURGLASS_SCALE * mu * p.dV * bb;
+  dkappa  = TSL_HOURGLASS_SCALE * dmu * p.dV * bb;
+  *energy = 0;
+  for (PetscInt k = 0; k < nh; k++)
+    for (PetscInt i = 0; i < dim; i++) {
+      PetscReal qk = 0;
+      for (PetscInt a = 0; a < n; a++) qk += gamma[k][a] * in->u[ndof * a + i];
+      *energy += 0.5 * kappa * qk * qk;
+      for (PetscInt a = 0; a < n; a++) {
+        R[ndof * a + i] += kappa * gamma[k][a] * qk;
+        if (!K) continue;
+        for (PetscInt b = 0; b < n; b++) {
+          K[(ndof * a + i) * nd + ndof * b + i] += kappa * gamma[k][a] * gamma[k][b];
+          K[(ndof * a + i) * nd + ndof * b + th] += dkappa * gamma[k][a] * qk * p.N[b];
+        }
+      }
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+const TslFormulation TslFormFull          = {"full integration", FullRule, NULL, NULL, Lump, FaceRuleOwn};
+const TslFormulation TslFormReduced       = {"reduced integration, hourglass control", ReducedRule, NULL, HourglassStiffness, Lump, FaceRuleOwn};
+const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn};
+const TslFormulation TslFormReducedHybrid = {
+    "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn};
+const TslFormulation TslFormModified       = {"modified second order", FullRule, NULL, NULL, SubElementLump, FaceRuleSub};
+const TslFormulation TslFormModifiedHybrid = {"modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub};
+
+const char *TslElementTypeFormulationName(const TslElementType *t)
+{
+  return t->form->name;
+}
