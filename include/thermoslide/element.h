@@ -63,7 +63,7 @@ typedef struct TslGeometry {
   PetscInt                  sub_node[TSL_MAX_SUB][TSL_MAX_SUB_NODES];
 } TslGeometry;
 
-typedef enum { TSL_KIN_PLANE_STRAIN = 0, TSL_KIN_PLANE_STRESS, TSL_KIN_AXISYMMETRIC, TSL_KIN_SOLID3D, TSL_NKIN } TslKinematics;
+typedef enum { TSL_KIN_PLANE_STRAIN = 0, TSL_KIN_PLANE_STRESS, TSL_KIN_AXISYMMETRIC, TSL_KIN_AXISYMMETRIC_TWIST, TSL_KIN_SOLID3D, TSL_NKIN } TslKinematics;
 
 #define TSL_MAX_NODE_DOF 4
 
@@ -103,6 +103,9 @@ const char *TslElementTypeKinematicsName(const TslElementType *t);
  * nodal unknowns and the same measure: no axisymmetric body beside a planar one)? */
 PetscBool TslElementTypeSameKinematics(const TslElementType *a, const TslElementType *b);
 PetscBool TslElementTypeSameModel(const TslElementType *a, const TslElementType *b);
+/* Does the type carry dialect dof number dof at its nodes? The list of its dofs ("1, 2, 11") in buf. */
+PetscBool   TslElementTypeHasDof(const TslElementType *t, PetscInt dof);
+const char *TslElementTypeDofList(const TslElementType *t, char *buf, size_t len);
 /* Rigid-body modes the kinematics admits at point x (relative to a body centre): modes[m][3]
  * displacement components; returns their number (3 plane, 1 axisymmetric, 6 in 3D). */
 PetscInt TslElementTypeRigidModes(const TslElementType *t, const PetscReal x[3], PetscReal modes[6][3]);

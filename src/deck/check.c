@@ -18,9 +18,17 @@ static PetscInt Dim(const TslModel *m)
   return m->dim ? m->dim : 3;
 }
 
+/* A dof the model's elements carry (every row of a model carries the same ones). */
 static PetscBool DofValid(const TslModel *m, PetscInt dof)
 {
+  if (m->nelem > 0 && m->elem_type[0] >= 0) return TslElementTypeHasDof(TslElementTypeGet(m->elem_type[0]), dof);
   return ((dof >= 1 && dof <= Dim(m)) || dof == 11) ? PETSC_TRUE : PETSC_FALSE;
+}
+
+static const char *DofList(const TslModel *m, char *buf, size_t len)
+{
+  if (m->nelem > 0 && m->elem_type[0] >= 0) return TslElementTypeDofList(TslElementTypeGet(m->elem_type[0]), buf, len);
+  return "1..3, 11";
 }
 
 /* Two nodes of one element at the same place collapse it just as a node given twice does (which the
@@ -222,8 +230,12 @@ static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l)
   case TSL_LOAD_CLOAD:
   case TSL_LOAD_CFLUX:
     PetscCall(CheckNodeTarget(m, &l->target, l->loc));
-    CHECK(DofValid(m, l->dof_first) && DofValid(m, l->dof_last), l->loc, "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)",
-          DofValid(m, l->dof_first) ? l->dof_last : l->dof_first, Dim(m));
+    {
+      char buf[64];
+      for (PetscInt dof = l->dof_first; dof <= l->dof_last; dof++)
+        CHECK(DofValid(m, dof) || (dof > 3 && dof < 11 && dof != l->dof_first && dof != l->dof_last), l->loc,
+              "bad degree of freedom %" PetscInt_FMT " (valid: %s)", dof, DofList(m, buf, sizeof(buf)));
+    }
     break;
   default:
     if (l->target_is_surface) {

@@ -1079,10 +1079,18 @@ static PetscErrorCode KwPhysical(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A dof the model's elements carry (the element rows say which; before any element, any of the
+ * dialect's 1..6 and 11). */
 static PetscBool ValidDof(const Deck *d, PetscInt dof)
 {
-  PetscInt dim = d->m->dim ? d->m->dim : 3;
-  return ((dof >= 1 && dof <= dim) || dof == 11) ? PETSC_TRUE : PETSC_FALSE;
+  if (d->m->nelem > 0) return TslElementTypeHasDof(TslElementTypeGet(d->m->elem_type[0]), dof);
+  return ((dof >= 1 && dof <= 6) || dof == 11) ? PETSC_TRUE : PETSC_FALSE;
+}
+
+static const char *ValidDofList(const Deck *d, char *buf, size_t len)
+{
+  if (d->m->nelem > 0) return TslElementTypeDofList(TslElementTypeGet(d->m->elem_type[0]), buf, len);
+  return "1..6, 11";
 }
 
 static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
@@ -1484,9 +1492,10 @@ static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw)
 
 static PetscErrorCode CheckDof(Deck *d, PetscInt dof)
 {
+  char buf[64];
+
   PetscFunctionBeginUser;
-  USER_CHECK(ValidDof(d, dof), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)", DLOC(d), dof,
-             d->m->dim ? d->m->dim : 3);
+  USER_CHECK(ValidDof(d, dof), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: %s)", DLOC(d), dof, ValidDofList(d, buf, sizeof(buf)));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

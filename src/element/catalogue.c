@@ -15,6 +15,7 @@
 #define PLANE_STRAIN TSL_KIN_PLANE_STRAIN, 2, 3, {1, 2, 11}
 #define PLANE_STRESS TSL_KIN_PLANE_STRESS, 2, 3, {1, 2, 11}
 #define AXISYMMETRIC TSL_KIN_AXISYMMETRIC, 2, 3, {1, 2, 11}
+#define AXITWIST     TSL_KIN_AXISYMMETRIC_TWIST, 2, 4, {1, 2, 5, 11}
 #define SOLID        TSL_KIN_SOLID3D, 3, 4, {1, 2, 3, 11}
 
 static const TslElementType Catalogue[] = {
@@ -37,6 +38,12 @@ static const TslElementType Catalogue[] = {
     {"CAX6MT",  &TslGeomTri6,   &TslFormModified,       AXISYMMETRIC, "6-node modified second-order axisymmetric"},
     {"CAX6MHT", &TslGeomTri6,   &TslFormModifiedHybrid, AXISYMMETRIC, "6-node modified second-order axisymmetric, hybrid"},
     {"CAX8T",   &TslGeomQuad8,  &TslFormFull,           AXISYMMETRIC, "8-node axisymmetric"},
+    {"CGAX4T",   &TslGeomQuad4, &TslFormFull,           AXITWIST,     "4-node axisymmetric with twist"},
+    {"CGAX4RT",  &TslGeomQuad4, &TslFormReduced,        AXITWIST,     "4-node axisymmetric with twist, reduced integration, hourglass control"},
+    {"CGAX4RHT", &TslGeomQuad4, &TslFormReducedHybrid,  AXITWIST,     "4-node axisymmetric with twist, reduced integration, hourglass control, hybrid"},
+    {"CGAX6MT",  &TslGeomTri6,  &TslFormModified,       AXITWIST,     "6-node modified second-order axisymmetric with twist"},
+    {"CGAX6MHT", &TslGeomTri6,  &TslFormModifiedHybrid, AXITWIST,     "6-node modified second-order axisymmetric with twist, hybrid"},
+    {"CGAX8T",   &TslGeomQuad8, &TslFormFull,           AXITWIST,     "8-node axisymmetric with twist"},
     {"C3D4T",   &TslGeomTet4,   &TslFormFull,           SOLID,        "4-node tetrahedron"},
     {"C3D6T",   &TslGeomWedge6, &TslFormFull,           SOLID,        "6-node triangular prism"},
     {"C3D8T",   &TslGeomHex8,   &TslFormFull,           SOLID,        "8-node brick"},

@@ -16,6 +16,7 @@ struct TslKinematicsRow {
   PetscBool   free_normal; /* sigma_33 = 0 (plane stress): eps_33 is condensed out of D */
   PetscBool   revolve;     /* dV = 2 pi r dA */
   PetscBool   thickness;   /* dV = t dA (plane elements) */
+  PetscBool   twist;       /* a third displacement unknown, the twist phi about the axis (u_theta = r phi) */
   PetscInt (*rigid_modes)(const PetscReal x[3], PetscReal modes[6][3]);
 };
 

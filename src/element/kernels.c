@@ -70,7 +70,7 @@ typedef struct {
 static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi[], PetscReal w, MechPoint *mq)
 {
   const TslElementType *t   = in->type;
-  const PetscInt        dim = t->dim, ndof = t->ndof, n = t->geom->nnode;
+  const PetscInt        ndof = t->ndof, nu = ndof - 1, n = t->geom->nnode;
   PetscReal             theta;
 
   if (!TslElementPointEvaluate(t, in->sec, in->x, xi, w, &mq->p)) return PETSC_FALSE;
@@ -78,7 +78,7 @@ static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi
   for (PetscInt r = 0; r < 6; r++) {
     mq->eps[r] = 0;
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt i = 0; i < dim; i++) mq->eps[r] += mq->B[r][dim * a + i] * in->u[ndof * a + i];
+      for (PetscInt i = 0; i < nu; i++) mq->eps[r] += mq->B[r][nu * a + i] * in->u[ndof * a + i];
   }
   theta = NodalTheta(in, mq->p.N, in->u);
   TslMaterialEval(in->sec->mat, theta, &mq->mp);
@@ -143,9 +143,9 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
   const TslElementType *t    = in->type;
   const TslGeometry    *g    = t->geom;
   const TslQuadrature  *quad = t->form->quadrature(g);
-  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, n = g->nnode, nd = n * ndof, nu = n * dim;
+  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof, ncol = n * nu;
   const PetscBool       hybrid      = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
-  PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0}, vol_avg = 0;
+  PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
   MechPoint             mq;
 
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
@@ -163,21 +163,20 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
       Deviatoric(mu, D);
       Deviatoric(dmu, dD);
       for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r]; /* the deviatoric part ignores the volumetric eps_th */
-      for (PetscInt c = 0; c < nu; c++) {
+      for (PetscInt c = 0; c < ncol; c++) {
         Bm[c] = 0;
         for (PetscInt r = 0; r < 3; r++) Bm[c] += mq.B[r][c];
       }
       for (PetscInt k = 0; k < hy->np; k++) {
-        for (PetscInt c = 0; c < nu; c++) hy->G[c][k] += Bm[c] * P[k] * mq.p.dV;
+        for (PetscInt c = 0; c < ncol; c++) hy->G[c][k] += Bm[c] * P[k] * mq.p.dV;
         hy->g0[k] += P[k] * 3 * mq.eps_th * mq.p.dV;
         for (PetscInt l = 0; l < hy->np; l++) hy->H[k][l] += P[k] * P[l] / kb * mq.p.dV;
         for (PetscInt b = 0; b < n; b++) {
           hy->dg0[b][k] += P[k] * 3 * mq.deps_th * mq.p.N[b] * mq.p.dV;
           for (PetscInt l = 0; l < hy->np; l++) hy->dH[b][k][l] -= P[k] * P[l] * dkb / (kb * kb) * mq.p.N[b] * mq.p.dV;
         }
-        P_avg[k] += P[k] * mq.p.dV;
+        P_avg[k] += P[k] / quad->n;
       }
-      vol_avg += mq.p.dV;
     } else {
       TslElementElasticity(t, &mq.mp, D, dD);
       for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r] - VoigtM[r] * mq.eps_th;
@@ -190,13 +189,13 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
       }
     }
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt i = 0; i < dim; i++)
-        for (PetscInt r = 0; r < 6; r++) R[ndof * a + i] += mq.B[r][dim * a + i] * sig[r] * mq.p.dV;
+      for (PetscInt i = 0; i < nu; i++)
+        for (PetscInt r = 0; r < 6; r++) R[ndof * a + i] += mq.B[r][nu * a + i] * sig[r] * mq.p.dV;
     if (res) {
       for (PetscInt r = 0; r < 6; r++) {
         res->E[r] += mq.eps[r] / quad->n;
         if (hybrid)
-          sdev_avg[r] += sig[r] * mq.p.dV;
+          sdev_avg[r] += sig[r] / quad->n;
         else
           res->S[r] += sig[r] / quad->n;
       }
@@ -207,19 +206,19 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
     }
     if (!K) continue;
     for (PetscInt r = 0; r < 6; r++)
-      for (PetscInt c = 0; c < nu; c++) {
+      for (PetscInt c = 0; c < ncol; c++) {
         DB[r][c] = 0;
         for (PetscInt s = 0; s < 6; s++) DB[r][c] += D[r][s] * mq.B[s][c];
       }
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt i = 0; i < dim; i++) {
+      for (PetscInt i = 0; i < nu; i++) {
         const PetscInt row = ndof * a + i;
         PetscReal      Bds = 0;
-        for (PetscInt r = 0; r < 6; r++) Bds += mq.B[r][dim * a + i] * dsig[r];
+        for (PetscInt r = 0; r < 6; r++) Bds += mq.B[r][nu * a + i] * dsig[r];
         for (PetscInt b = 0; b < n; b++) {
-          for (PetscInt j = 0; j < dim; j++) {
+          for (PetscInt j = 0; j < nu; j++) {
             PetscReal kij = 0;
-            for (PetscInt r = 0; r < 6; r++) kij += mq.B[r][dim * a + i] * DB[r][dim * b + j];
+            for (PetscInt r = 0; r < 6; r++) kij += mq.B[r][nu * a + i] * DB[r][nu * b + j];
             K[row * nd + ndof * b + j] += kij * mq.p.dV;
           }
           K[row * nd + ndof * b + th] += Bds * mq.p.N[b] * mq.p.dV;
@@ -233,19 +232,19 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
     for (PetscInt k = 0; k < np; k++) {
       rhs[k] = -hy->g0[k];
       for (PetscInt a = 0; a < n; a++)
-        for (PetscInt i = 0; i < dim; i++) rhs[k] += hy->G[dim * a + i][k] * in->u[ndof * a + i];
+        for (PetscInt i = 0; i < nu; i++) rhs[k] += hy->G[nu * a + i][k] * in->u[ndof * a + i];
     }
     for (PetscInt k = 0; k < np; k++) {
       hy->p[k] = 0;
       for (PetscInt l = 0; l < np; l++) hy->p[k] += Hi[k][l] * rhs[l];
     }
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt i = 0; i < dim; i++)
-        for (PetscInt k = 0; k < np; k++) R[ndof * a + i] += hy->G[dim * a + i][k] * hy->p[k];
+      for (PetscInt i = 0; i < nu; i++)
+        for (PetscInt k = 0; k < np; k++) R[ndof * a + i] += hy->G[nu * a + i][k] * hy->p[k];
     if (res) {
       PetscReal pm = 0, vol_energy = 0;
-      for (PetscInt k = 0; k < np; k++) pm += hy->p[k] * P_avg[k] / vol_avg;
-      for (PetscInt r = 0; r < 6; r++) res->S[r] = sdev_avg[r] / vol_avg + VoigtM[r] * pm;
+      for (PetscInt k = 0; k < np; k++) pm += hy->p[k] * P_avg[k];
+      for (PetscInt r = 0; r < 6; r++) res->S[r] = sdev_avg[r] + VoigtM[r] * pm; /* point averages, as for the other formulations */
       /* volumetric energy: 1/2 p_hat^T H p_hat */
       for (PetscInt k = 0; k < np; k++)
         for (PetscInt l = 0; l < np; l++) vol_energy += 0.5 * hy->p[k] * hy->H[k][l] * hy->p[l];
@@ -253,18 +252,18 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
     }
     if (K) {
       PetscReal GHi[TSL_MAX_ELEM_NODES * 3][TSL_MAX_PRESSURE];
-      for (PetscInt c = 0; c < nu; c++)
+      for (PetscInt c = 0; c < ncol; c++)
         for (PetscInt k = 0; k < np; k++) {
           GHi[c][k] = 0;
           for (PetscInt l = 0; l < np; l++) GHi[c][k] += hy->G[c][l] * Hi[l][k];
         }
       for (PetscInt a = 0; a < n; a++)
-        for (PetscInt i = 0; i < dim; i++) {
-          const PetscInt row = ndof * a + i, c = dim * a + i;
+        for (PetscInt i = 0; i < nu; i++) {
+          const PetscInt row = ndof * a + i, c = nu * a + i;
           for (PetscInt b = 0; b < n; b++) {
-            for (PetscInt j = 0; j < dim; j++) {
+            for (PetscInt j = 0; j < nu; j++) {
               PetscReal kij = 0;
-              for (PetscInt k = 0; k < np; k++) kij += GHi[c][k] * hy->G[dim * b + j][k];
+              for (PetscInt k = 0; k < np; k++) kij += GHi[c][k] * hy->G[nu * b + j][k];
               K[row * nd + ndof * b + j] += kij;
             }
             {

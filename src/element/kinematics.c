@@ -8,12 +8,22 @@
  *   3D             all six components
  */
 #include "element_impl.h"
+#include <stdio.h>
 
 static PetscInt RigidPlane(const PetscReal x[3], PetscReal modes[6][3])
 {
   modes[0][0] = 1, modes[1][1] = 1;
   modes[2][0] = -x[1], modes[2][1] = x[0];
   return 3;
+}
+
+/* twist: the axial translation and the rigid rotation about the axis (phi = 1) */
+static PetscInt RigidTwist(const PetscReal x[3], PetscReal modes[6][3])
+{
+  (void)x;
+  modes[0][1] = 1;
+  modes[1][2] = 1;
+  return 2;
 }
 
 /* a radial shift strains the hoop direction: only the axial translation is rigid */
@@ -33,12 +43,13 @@ static PetscInt RigidSolid(const PetscReal x[3], PetscReal modes[6][3])
   return 6;
 }
 
-/* columns: name, hoop, free_normal, revolve, thickness, rigid modes */
+/* columns: name, hoop, free_normal, revolve, thickness, twist, rigid modes */
 static const struct TslKinematicsRow KinematicsTable[TSL_NKIN] = {
-    [TSL_KIN_PLANE_STRAIN] = {"plane strain", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, RigidPlane},
-    [TSL_KIN_PLANE_STRESS] = {"plane stress", PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, RigidPlane},
-    [TSL_KIN_AXISYMMETRIC] = {"axisymmetric", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, RigidAxisymmetric},
-    [TSL_KIN_SOLID3D]      = {"3D", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidSolid},
+    [TSL_KIN_PLANE_STRAIN]       = {"plane strain", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, RigidPlane},
+    [TSL_KIN_PLANE_STRESS]       = {"plane stress", PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, RigidPlane},
+    [TSL_KIN_AXISYMMETRIC]       = {"axisymmetric", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, RigidAxisymmetric},
+    [TSL_KIN_AXISYMMETRIC_TWIST] = {"axisymmetric with twist", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, RigidTwist},
+    [TSL_KIN_SOLID3D]            = {"3D", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidSolid},
 };
 
 const struct TslKinematicsRow *TslKinematicsRowGet(TslKinematics kin)
@@ -62,6 +73,21 @@ PetscBool TslElementTypeSameModel(const TslElementType *a, const TslElementType 
   for (PetscInt i = 0; i < a->ndof; i++)
     if (a->node_dof[i] != b->node_dof[i]) return PETSC_FALSE;
   return PETSC_TRUE;
+}
+
+PetscBool TslElementTypeHasDof(const TslElementType *t, PetscInt dof)
+{
+  for (PetscInt i = 0; i < t->ndof; i++)
+    if (t->node_dof[i] == dof) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
+const char *TslElementTypeDofList(const TslElementType *t, char *buf, size_t len)
+{
+  size_t k = 0;
+  buf[0]   = 0;
+  for (PetscInt i = 0; i < t->ndof && k + 8 < len; i++) k += (size_t)snprintf(buf + k, len - k, "%s%d", i ? ", " : "", (int)t->node_dof[i]);
+  return buf;
 }
 
 PetscInt TslElementTypeRigidModes(const TslElementType *t, const PetscReal x[3], PetscReal modes[6][3])
@@ -130,21 +156,27 @@ PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementSe
 
 void TslElementStrainMatrix(const TslElementType *type, const TslElementPoint *p, PetscReal B[6][TSL_MAX_ELEM_NODES * 3])
 {
-  const PetscInt                 dim = type->dim, n = type->geom->nnode;
+  const PetscInt                 dim = type->dim, nu = type->ndof - 1, n = type->geom->nnode;
   const struct TslKinematicsRow *info = TslKinematicsRowGet(type->kin);
   /* Voigt row -> (i, j) of the symmetric gradient; for the 3D shear rows both orders contribute */
   static const PetscInt vi[6] = {0, 1, 2, 0, 0, 1}, vj[6] = {0, 1, 2, 1, 2, 2};
 
   for (PetscInt r = 0; r < 6; r++)
-    for (PetscInt c = 0; c < n * dim; c++) B[r][c] = 0;
+    for (PetscInt c = 0; c < n * nu; c++) B[r][c] = 0;
   for (PetscInt a = 0; a < n; a++) {
     for (PetscInt r = 0; r < 6; r++) {
       const PetscInt i = vi[r], j = vj[r];
       if (i >= dim || j >= dim) continue;
-      B[r][dim * a + i] += p->dNdx[a][j];
-      if (i != j) B[r][dim * a + j] += p->dNdx[a][i];
+      B[r][nu * a + i] += p->dNdx[a][j];
+      if (i != j) B[r][nu * a + j] += p->dNdx[a][i];
     }
-    if (info->hoop) B[2][dim * a + 0] = p->N[a] / p->x[0];
+    if (info->hoop) B[2][nu * a + 0] = p->N[a] / p->x[0];
+    if (info->twist) {
+      /* the twist phi (dof 5, radians) is the third unknown: u_theta = r phi, so
+       * gamma_r-theta = r dphi/dr (Voigt 13) and gamma_z-theta = r dphi/dz (Voigt 23) */
+      B[4][nu * a + 2] = p->x[0] * p->dNdx[a][0];
+      B[5][nu * a + 2] = p->x[0] * p->dNdx[a][1];
+    }
   }
 }
 

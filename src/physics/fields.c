@@ -21,7 +21,7 @@ static PetscErrorCode NodeSolution(TslProblem p, PetscInt which, PetscInt ncomp,
 }
 
 /* RF / RFL: the unconstrained residual at prescribed dofs, as computed by the last
- * TslProblemHeatBalance; zero elsewhere. */
+ * TslProblemHeatBalance; zero elsewhere (with twist, RF3 is the torque about the axis). */
 static PetscErrorCode NodeReaction(TslProblem p, PetscInt which, PetscInt ncomp, PetscReal vals[])
 {
   const PetscScalar *r;

@@ -47,17 +47,19 @@ static PetscInt GramRank(PetscInt n, PetscReal G[6][6])
 }
 
 /* Nodes (positions) of a node target. */
+/* Marks the prescribed slots of a node target; slots are those of the model's nodal unknowns (the rows'
+ * node_dof: displacement-like unknowns first, the temperature last). */
 static void MarkTarget(const TslModel *g, const TslTarget *t, PetscInt dof_first, PetscInt dof_last, char *fixed)
 {
+  const TslElementType *t0 = TslElementTypeGet(g->elem_type[0]);
   PetscInt n = 1, k = t->set[0] ? TslModelFindNodeSet(g, t->set) : -1;
   if (k >= 0) n = g->nsets[k].n;
   for (PetscInt i = 0; i < n; i++) {
     PetscInt p = TslModelNodeIndex(g, k >= 0 ? g->nsets[k].ids[i] : t->id);
     if (p < 0) continue;
-    for (PetscInt d = dof_first; d <= dof_last; d++) {
-      PetscInt c = d == 11 ? 3 : d - 1;
-      if (c >= 0 && c < 4) fixed[4 * p + c] = 1;
-    }
+    for (PetscInt d = dof_first; d <= dof_last; d++)
+      for (PetscInt c = 0; c < t0->ndof; c++)
+        if (t0->node_dof[c] == d) fixed[TSL_MAX_NODE_DOF * p + c] = 1;
   }
 }
 
@@ -86,13 +88,15 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
   PetscInt  *parent, *first_elem, nn = g->nnode;
   char      *fixed, *film, *thermal;
   PetscReal *gram;
-  PetscInt  *body, nbody = 0;
+  PetscInt  *body, nbody = 0, th;
   PetscReal *centre, *size;
 
   PetscFunctionBeginUser;
+  if (g->nelem == 0) PetscFunctionReturn(PETSC_SUCCESS);
+  th = TslElementTypeGet(g->elem_type[0])->ndof - 1; /* the temperature's slot; the others are displacements */
   PetscCall(TslModelIndex(g));
   PetscCall(PetscMalloc4(nn, &parent, nn, &first_elem, 4 * nn, &centre, nn, &size));
-  PetscCall(PetscCalloc2(4 * nn, &fixed, g->nelem, &film));
+  PetscCall(PetscCalloc2(TSL_MAX_NODE_DOF * nn, &fixed, g->nelem, &film));
   for (PetscInt i = 0; i < nn; i++) parent[i] = i, first_elem[i] = -1;
   for (PetscInt e = 0; e < g->nelem; e++)
     for (PetscInt k = g->elem_ptr[e] + 1; k < g->elem_ptr[e + 1]; k++)
@@ -141,7 +145,7 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
       if (step->loads[i].kind == TSL_LOAD_BOUNDARY && step->loads[i].op_new) clear_bc = PETSC_TRUE;
       if (step->loads[i].kind == TSL_LOAD_FILM && step->loads[i].op_new) clear_film = PETSC_TRUE;
     }
-    if (clear_bc) PetscCall(PetscArrayzero(fixed, 4 * nn));
+    if (clear_bc) PetscCall(PetscArrayzero(fixed, TSL_MAX_NODE_DOF * nn));
     if (clear_film) PetscCall(PetscArrayzero(film, g->nelem));
     for (PetscInt i = 0; i < step->nload; i++) {
       const TslLoad *ld = &step->loads[i];
@@ -156,11 +160,11 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
       PetscReal modes[6][3], x[3], *G;
       if (first_elem[r] < 0) continue;
       G = &gram[36 * body[r]];
-      if (fixed[4 * i + 3]) thermal[body[r]] = 1;
+      if (fixed[TSL_MAX_NODE_DOF * i + th]) thermal[body[r]] = 1;
       for (PetscInt c = 0; c < 3; c++) x[c] = (g->node_xyz[3 * i + c] - centre[4 * r + c] / centre[4 * r + 3]) / (size[r] > 0 ? size[r] : 1);
       nm = TslElementTypeRigidModes(TslElementTypeGet(g->elem_type[first_elem[r]]), x, modes);
-      for (PetscInt d = 0; d < 3; d++) {
-        if (!fixed[4 * i + d]) continue;
+      for (PetscInt d = 0; d < th; d++) {
+        if (!fixed[TSL_MAX_NODE_DOF * i + d]) continue;
         for (PetscInt a = 0; a < nm; a++)
           for (PetscInt b = 0; b < nm; b++) G[6 * a + b] += modes[a][d] * modes[b][d];
       }

@@ -25,6 +25,34 @@ static inline void Check(TestLog *log, PetscReal value, PetscReal expected, Pets
   printf("%s: %.10g (%.10g, %.1e) %s\n", name, (double)value, (double)expected, (double)tol, ok ? "PASS" : "FAIL");
 }
 
+/* One-sided checks (rates, ratios, bounds): name: value (>= bound) PASS/FAIL. */
+static inline void CheckBoundV(TestLog *log, PetscReal value, PetscReal bound, PetscBool lower, const char *fmt, va_list ap)
+{
+  char      name[256];
+  PetscBool ok = (PetscBool)(lower ? value >= bound : value <= bound);
+
+  vsnprintf(name, sizeof(name), fmt, ap);
+  log->checks++;
+  if (!ok) log->failures++;
+  printf("%s: %.6g (%s %.6g) %s\n", name, (double)value, lower ? ">=" : "<=", (double)bound, ok ? "PASS" : "FAIL");
+}
+
+static inline void CheckAtLeast(TestLog *log, PetscReal value, PetscReal bound, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  CheckBoundV(log, value, bound, PETSC_TRUE, fmt, ap);
+  va_end(ap);
+}
+
+static inline void CheckAtMost(TestLog *log, PetscReal value, PetscReal bound, const char *fmt, ...)
+{
+  va_list ap;
+  va_start(ap, fmt);
+  CheckBoundV(log, value, bound, PETSC_FALSE, fmt, ap);
+  va_end(ap);
+}
+
 static inline int Summary(const TestLog *log)
 {
   printf("%d of %d checks failed\n", (int)log->failures, (int)log->checks);

@@ -35,6 +35,11 @@ static void TemperatureDependent(Case *c)
   }
 }
 
+static PetscBool IsAxi(const TslElementType *t)
+{
+  return t->kin == TSL_KIN_AXISYMMETRIC || t->kin == TSL_KIN_AXISYMMETRIC_TWIST;
+}
+
 /* Reference coordinate d of node a mapped onto [0, 1]: the [-1, 1] directions are halved, the simplex
  * directions kept. */
 static PetscReal UnitCoordinate(const TslGeometry *g, PetscInt a, PetscInt d)
@@ -61,9 +66,9 @@ static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
   c->sec = (TslElementSection){&c->mat, 0.5};
   for (PetscInt a = 0; a < g->nnode; a++) {
     for (PetscInt d = 0; d < 3; d++) c->x[3 * a + d] = d < type->dim ? UnitCoordinate(g, a, d) + distortion * PetscSinReal(3.1 * a + 1.3 * d + 0.7) : 0;
-    if (type->kin == TSL_KIN_AXISYMMETRIC) c->x[3 * a] += 1;
+    if (IsAxi(type)) c->x[3 * a] += 1;
     c->theta_init[a] = THETA0;
-    for (PetscInt i = 0; i < type->ndof; i++) c->u[type->ndof * a + i] = c->u_old[type->ndof * a + i] = i == type->dim ? THETA0 : 0;
+    for (PetscInt i = 0; i < type->ndof; i++) c->u[type->ndof * a + i] = c->u_old[type->ndof * a + i] = i == type->ndof - 1 ? THETA0 : 0;
   }
   c->in       = (TslElementInput){.type = type, .sec = &c->sec, .x = c->x, .u = c->u, .theta_init = c->theta_init};
   c->in_old   = c->in;
@@ -113,7 +118,7 @@ static PetscReal MaxRow(const Case *c, const PetscReal R[], PetscBool theta_rows
 {
   PetscReal m = 0;
   for (PetscInt i = 0; i < NDof(c); i++)
-    if ((i % c->type->ndof == c->type->dim) == theta_rows) m = PetscMax(m, PetscAbsReal(R[i]));
+    if ((i % c->type->ndof == c->type->ndof - 1) == theta_rows) m = PetscMax(m, PetscAbsReal(R[i]));
   return m;
 }
 
@@ -126,9 +131,15 @@ static PetscErrorCode CheckRigidMotion(TestLog *log, Case *c)
   PetscFunctionBeginUser;
   /* translation (axial only for axisymmetry: a radial shift strains the hoop direction) */
   for (PetscInt a = 0; a < c->type->geom->nnode; a++)
-    for (PetscInt i = 0; i < dim; i++) c->u[ndof * a + i] = (c->type->kin == TSL_KIN_AXISYMMETRIC && i == 0) ? 0 : 0.01 * (i + 1);
+    for (PetscInt i = 0; i < dim; i++) c->u[ndof * a + i] = (IsAxi(c->type) && i == 0) ? 0 : 0.01 * (i + 1);
   PetscCall(Residual(c, R, NULL, &inv));
   Check(log, MaxRow(c, R, PETSC_FALSE), 0, 1e-9, "%s rigid translation max|R_u|", c->type->name);
+  if (c->type->kin == TSL_KIN_AXISYMMETRIC_TWIST) {
+    /* a rigid rotation about the axis: the same twist phi at every node */
+    for (PetscInt a = 0; a < c->type->geom->nnode; a++) c->u[ndof * a + dim] = 0.02;
+    PetscCall(Residual(c, R, NULL, &inv));
+    Check(log, MaxRow(c, R, PETSC_FALSE), 0, 1e-9, "%s rigid twist max|R_u|", c->type->name);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -153,7 +164,7 @@ static PetscErrorCode CheckThermalPatch(TestLog *log, Case *c, PetscBool constra
   }
   for (PetscInt a = 0; a < t->geom->nnode; a++) {
     for (PetscInt i = 0; i < dim; i++) c->u[ndof * a + i] = constrained ? 0 : stretch * c->x[3 * a + i];
-    c->u[ndof * a + dim] = THETA0 + dT;
+    c->u[ndof * a + ndof - 1] = THETA0 + dT;
   }
   PetscCall(Residual(c, R, NULL, &inv));
   PetscCall(Output(c, S, Eps, H));
@@ -175,19 +186,19 @@ static PetscErrorCode CheckLinearTemperature(TestLog *log, Case *c)
 
   PetscFunctionBeginUser;
   for (PetscInt a = 0; a < c->type->geom->nnode; a++) {
-    c->u[ndof * a + dim] = 5;
-    for (PetscInt d = 0; d < dim; d++) c->u[ndof * a + dim] += g[d] * c->x[3 * a + d];
+    c->u[ndof * a + ndof - 1] = 5;
+    for (PetscInt d = 0; d < dim; d++) c->u[ndof * a + ndof - 1] += g[d] * c->x[3 * a + d];
   }
   PetscCall(Output(c, S, Eps, H));
   for (PetscInt d = 0; d < 3; d++) Check(log, H[d], d < dim ? -c->k * g[d] : 0, 1e-10, "%s linear theta HFL%" PetscInt_FMT, c->type->name, d + 1);
   /* steady: a uniform temperature conducts nothing, and the thermal rows do not see displacement */
   PetscCall(Residual(c, R, K, &inv));
-  for (PetscInt i = dim; i < NDof(c); i += ndof) {
+  for (PetscInt i = ndof - 1; i < NDof(c); i += ndof) {
     PetscReal s = 0;
-    for (PetscInt j = dim; j < NDof(c); j += ndof) s += K[i * NDof(c) + j];
+    for (PetscInt j = ndof - 1; j < NDof(c); j += ndof) s += K[i * NDof(c) + j];
     kone = PetscMax(kone, PetscAbsReal(s));
     for (PetscInt j = 0; j < NDof(c); j++)
-      if (j % ndof != dim) kthu = PetscMax(kthu, PetscAbsReal(K[i * NDof(c) + j]));
+      if (j % ndof != ndof - 1) kthu = PetscMax(kthu, PetscAbsReal(K[i * NDof(c) + j]));
   }
   Check(log, kone, 0, 1e-10, "%s steady max|K_tt . 1|", c->type->name);
   Check(log, kthu, 0, 0, "%s max|K_theta_u|", c->type->name);
@@ -212,6 +223,7 @@ static PetscReal UnitVolume(const Case *c)
   case TSL_KIN_PLANE_STRESS:
     return V * (c->sec.thickness > 0 ? c->sec.thickness : 1);
   case TSL_KIN_AXISYMMETRIC:
+  case TSL_KIN_AXISYMMETRIC_TWIST:
     return V * 2 * PETSC_PI * rc;
   default:
     return V;
@@ -228,7 +240,7 @@ static void FaceAreaVector(const Case *c, PetscInt f, PetscReal A[3])
   for (PetscInt d = 0; d < 3; d++) A[d] = 0;
   if (c->type->dim == 2) {
     const PetscReal *p = &c->x[3 * fn[0]], *q = &c->x[3 * fn[1]];
-    const PetscReal  m = c->type->kin == TSL_KIN_AXISYMMETRIC ? 2 * PETSC_PI * 0.5 * (p[0] + q[0]) : c->sec.thickness;
+    const PetscReal  m = IsAxi(c->type) ? 2 * PETSC_PI * 0.5 * (p[0] + q[0]) : c->sec.thickness;
     A[0] = (q[1] - p[1]) * m, A[1] = -(q[0] - p[0]) * m;
     return;
   }
@@ -242,7 +254,7 @@ static void FaceAreaVector(const Case *c, PetscInt f, PetscReal A[3])
 
 static PetscErrorCode CheckVolumeAndHeat(TestLog *log, Case *c)
 {
-  const PetscInt dim = c->type->dim, ndof = c->type->ndof, n = c->type->geom->nnode;
+  const PetscInt ndof = c->type->ndof, n = c->type->geom->nnode;
   PetscReal      vol[TSL_MAX_ELEM_NODES], V = 0, dQ, Rs[TSL_MAX_ELEM_DOF], Rt[TSL_MAX_ELEM_DOF], cap = 0;
   PetscBool      inv;
 
@@ -257,7 +269,7 @@ static PetscErrorCode CheckVolumeAndHeat(TestLog *log, Case *c)
   Check(log, V, UnitVolume(c), 1e-12, "%s element volume with thickness 0 (taken as 1)", c->type->name);
   c->sec.thickness = 0.5;
   /* stored heat: rho c V dtheta, and the capacity part of the residual is that over dt */
-  for (PetscInt a = 0; a < n; a++) c->u[ndof * a + dim] = c->u_old[ndof * a + dim] + 2;
+  for (PetscInt a = 0; a < n; a++) c->u[ndof * a + ndof - 1] = c->u_old[ndof * a + ndof - 1] + 2;
   {
     PetscReal Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], M[TSL_MAX_ELEM_NODES], mass = 0;
     PetscCall(TslElementLumped(&c->in, Q, NULL, M));
@@ -272,7 +284,7 @@ static PetscErrorCode CheckVolumeAndHeat(TestLog *log, Case *c)
   c->shift = 10;
   PetscCall(Residual(c, Rt, NULL, &inv));
   c->shift = 0;
-  for (PetscInt i = dim; i < NDof(c); i += ndof) cap += (Rt[i] - Rs[i]) / 10;
+  for (PetscInt i = ndof - 1; i < NDof(c); i += ndof) cap += (Rt[i] - Rs[i]) / 10;
   Check(log, cap, dQ, 1e-9, "%s capacity residual * dt = heat change", c->type->name);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -302,13 +314,13 @@ static PetscErrorCode PartResidual(Case *c, PetscInt face, PetscReal R[], PetscR
 static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face)
 {
   static const char *block_name[2][2] = {{"uu", "u-theta"}, {"theta-u", "theta-theta"}};
-  const PetscInt     nd = NDof(c), ndof = c->type->ndof, dim = c->type->dim;
+  const PetscInt     nd = NDof(c), ndof = c->type->ndof;
   PetscReal          K[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF], R[TSL_MAX_ELEM_DOF], Rp[TSL_MAX_ELEM_DOF], Rm[TSL_MAX_ELEM_DOF];
   PetscReal          kmax[2][2] = {{0}}, err[2][2] = {{0}};
 
   PetscFunctionBeginUser;
   c->shift = 10;
-  for (PetscInt i = 0; i < nd; i++) c->u[i] = (i % ndof == dim) ? THETA0 + 10 * PetscSinReal(1.1 * i + 0.3) : 0.01 * PetscCosReal(2.3 * i + 0.1);
+  for (PetscInt i = 0; i < nd; i++) c->u[i] = (i % ndof == ndof - 1) ? THETA0 + 10 * PetscSinReal(1.1 * i + 0.3) : 0.01 * PetscCosReal(2.3 * i + 0.1);
   PetscCall(PartResidual(c, face, R, K));
   for (PetscInt j = 0; j < nd; j++) {
     const PetscReal save = c->u[j], h = 1e-6 * PetscMax(1, PetscAbsReal(save));
@@ -318,7 +330,7 @@ static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face)
     PetscCall(PartResidual(c, face, Rm, NULL));
     c->u[j] = save;
     for (PetscInt i = 0; i < nd; i++) {
-      const PetscInt bi = i % ndof == dim, bj = j % ndof == dim;
+      const PetscInt bi = i % ndof == ndof - 1, bj = j % ndof == ndof - 1;
       err[bi][bj]  = PetscMax(err[bi][bj], PetscAbsReal((Rp[i] - Rm[i]) / (2 * h) - K[i * nd + j]));
       kmax[bi][bj] = PetscMax(kmax[bi][bj], PetscAbsReal(K[i * nd + j]));
     }
@@ -348,7 +360,7 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c)
   PetscReal          R[TSL_MAX_ELEM_DOF], heat, vol[TSL_MAX_ELEM_NODES], V = 0;
 
   PetscFunctionBeginUser;
-  for (PetscInt a = 0; a < g->nnode; a++) c->u[ndof * a + dim] = theta;
+  for (PetscInt a = 0; a < g->nnode; a++) c->u[ndof * a + ndof - 1] = theta;
   for (PetscInt f = 0; f < g->nface; f++) {
     PetscReal Avec[3], area, force[3] = {0, 0, 0}, sumt = 0;
     FaceAreaVector(c, f, Avec);
@@ -363,14 +375,14 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c)
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_FLUX, f + 1, q, 0, R, NULL, &heat));
     sumt = 0;
-    for (PetscInt i = dim; i < nd; i += ndof) sumt += R[i];
+    for (PetscInt i = ndof - 1; i < nd; i += ndof) sumt += R[i];
     Check(log, heat, q * area, 1e-12, "%s S%" PetscInt_FMT " flux heat", c->type->name, f + 1);
     Check(log, sumt, -q * area, 1e-12, "%s S%" PetscInt_FMT " flux residual sum", c->type->name, f + 1);
 
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_FILM, f + 1, h, sink, R, NULL, &heat));
     sumt = 0;
-    for (PetscInt i = dim; i < nd; i += ndof) sumt += R[i];
+    for (PetscInt i = ndof - 1; i < nd; i += ndof) sumt += R[i];
     Check(log, heat, -h * (theta - sink) * area, 1e-10, "%s S%" PetscInt_FMT " film heat", c->type->name, f + 1);
     Check(log, sumt, h * (theta - sink) * area, 1e-10, "%s S%" PetscInt_FMT " film residual sum", c->type->name, f + 1);
   }
@@ -379,7 +391,7 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c)
   PetscCall(TslElementNodalVolume(&c->in, vol));
   for (PetscInt a = 0; a < g->nnode; a++) {
     V += vol[a];
-    Check(log, R[ndof * a + dim], -q * vol[a], 1e-12, "%s body flux on node %" PetscInt_FMT, c->type->name, a + 1);
+    Check(log, R[ndof * a + ndof - 1], -q * vol[a], 1e-12, "%s body flux on node %" PetscInt_FMT, c->type->name, a + 1);
   }
   Check(log, heat, q * V, 1e-12, "%s body flux heat", c->type->name);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -397,7 +409,7 @@ static PetscErrorCode CheckQuadraticExpansion(TestLog *log, Case *c)
   PetscBool             inv;
 
   PetscFunctionBeginUser;
-  if (t->kin == TSL_KIN_AXISYMMETRIC) g[0] = 0;
+  if (IsAxi(t)) g[0] = 0;
   if (t->kin == TSL_KIN_PLANE_STRAIN) s *= 1 + c->nu;
   for (PetscInt a = 0; a < t->geom->nnode; a++) {
     const PetscReal *x = &c->x[3 * a];
@@ -439,6 +451,25 @@ static PetscErrorCode CheckPositivePressure(TestLog *log, Case *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Uniform torsion of a twist element: phi = c z (u_theta = c r z) is an equilibrium state without body
+ * force, with gamma_z-theta = c r and nothing else: S23 = mu c r averaged over the points (the centroid
+ * radius for these symmetric rules), every other stress zero. */
+static PetscErrorCode CheckTorsion(TestLog *log, Case *c)
+{
+  const TslElementType *t = c->type;
+  const PetscInt        ndof = t->ndof;
+  const PetscReal       cz = 0.01, mu = c->E / (2 * (1 + c->nu));
+  PetscReal             S[6], Eps[6], H[3], rbar = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < t->geom->nnode; a++) c->u[ndof * a + 2] = cz * c->x[3 * a + 1];
+  for (PetscInt a = 0; a < t->geom->ncorner; a++) rbar += c->x[3 * a] / t->geom->ncorner;
+  PetscCall(Output(c, S, Eps, H));
+  for (PetscInt r = 0; r < 6; r++)
+    Check(log, S[r], r == 5 ? mu * cz * rbar : 0, 1e-9 * mu * cz * rbar, "%s uniform torsion S%" PetscInt_FMT, t->name, r + 1);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckInverted(TestLog *log, Case *c)
 {
   PetscReal R[TSL_MAX_ELEM_DOF];
@@ -452,7 +483,7 @@ static PetscErrorCode CheckInverted(TestLog *log, Case *c)
   for (PetscInt a = 0; a < c->type->geom->nnode; a++) c->x[3 * a + 1] *= -1;
   PetscCall(Residual(c, R, NULL, &inv));
   Check(log, inv, PETSC_FALSE, 0, "%s unit element not inverted", c->type->name);
-  if (c->type->kin == TSL_KIN_AXISYMMETRIC) {
+  if (IsAxi(c->type)) {
     for (PetscInt a = 0; a < c->type->geom->nnode; a++) c->x[3 * a] -= 1.5; /* r in [-0.5, 0.5] */
     PetscCall(Residual(c, R, NULL, &inv));
     Check(log, inv, PETSC_TRUE, 0, "%s element across the axis reported invalid", c->type->name);
@@ -491,6 +522,10 @@ int main(int argc, char **argv)
     TemperatureDependent(&c);
     printf("(temperature-dependent properties)\n");
     PetscCall(CheckTangent(&log, &c, 0));
+    if (type->kin == TSL_KIN_AXISYMMETRIC_TWIST) {
+      CaseSetUp(&c, type, 0);
+      PetscCall(CheckTorsion(&log, &c));
+    }
     CaseSetUp(&c, type, 0);
     PetscCall(CheckPositivePressure(&log, &c));
     if (type->geom->order == 2) {

@@ -1,6 +1,6 @@
 # Bad-input decks: tsl_deck_bad(name deck expected-output). Tests run in this directory, so file names print as given.
 tsl_deck_bad(missing_file missing_file.inp "error: missing_file.inp:0: cannot open input deck")
-tsl_deck_bad(bad_dof bad_dof.inp "error: bad_dof.inp:23: bad degree of freedom 7 (valid: 1..2, 11)")
+tsl_deck_bad(bad_dof bad_dof.inp "error: bad_dof.inp:23: bad degree of freedom 7 (valid: 1, 2, 11)")
 tsl_deck_bad(bad_poisson bad_poisson.inp "error: bad_poisson.inp:10: material STEEL: Poisson's ratio must lie in (-1, 0.5) (got 0.5)")
 tsl_deck_bad(cflux_dof cflux_dof.inp "error: cflux_dof.inp:24: bad degree of freedom 2 for *CFLUX (must be 11)")
 tsl_deck_bad(duplicate_element duplicate_element.inp "error: duplicate_element.inp:8: duplicate element id 1 (first defined at duplicate_element.inp:7)")

@@ -1,0 +1,82 @@
+/* Structured meshes of one catalogue type on a box, assembled straight from the element kernels into a
+ * SeqAIJ matrix and solved by LU: the multi-element tests of the formulations (convergence on a
+ * manufactured solution, locking, hourglass control). Serial, PETSC_COMM_SELF only; no deck, no mesh
+ * module.
+ *
+ * The box is cut into ncell[d] cells per direction; a cell is one element of a quad/hex family, two
+ * triangles or two prisms, or six tetrahedra (the Kuhn split along the cell diagonal, the same in every
+ * cell, hence conforming). Every node of an element is placed through the affine map of its reference
+ * coordinates node_xi[] onto the cell, so the catalogue's own node numbering (corners, then midside
+ * nodes) is used and a second-order family gets its midside nodes on the fine lattice of half cells.
+ * Unknowns are node-major, ndof per node in the type's order (displacements, theta last). */
+#pragma once
+#include "check.h"
+#include "element_impl.h"
+#include <petscksp.h>
+
+#define GRID_MAX_QP 512 /* up to 8 Gauss points per direction in 3D */
+
+/* A quadrature of any order on a family's reference element: Gauss-Legendre per direction, collapsed
+ * (Duffy) onto the simplex directions of triangles, tetrahedra and prisms. npd points per direction. */
+typedef struct {
+  PetscInt  n;
+  PetscReal xi[GRID_MAX_QP][3], w[GRID_MAX_QP];
+} GridRule;
+
+/* The section points at the grid's own material: a Grid is set up in place and never copied. */
+typedef struct {
+  const TslElementType *type;
+  TslMaterial           mat;
+  TslElementSection     sec;
+  PetscInt              ncell[3];
+  PetscReal             lo[3], hi[3];
+  PetscInt              nnode, nelem, nen, ndof;
+  PetscReal            *x;          /* [nnode*3] */
+  PetscReal            *theta_init; /* [nnode] */
+  PetscInt             *conn;       /* [nelem*nen] in the catalogue's node order */
+} Grid;
+
+typedef struct {
+  PetscBool   factored; /* the LU factorisation succeeded (no zero pivot) */
+  const char *failure;  /* PETSc's reason when it did not */
+  PetscReal   residual; /* max |F - R(u)| over the free rows after the step, relative to before it */
+} GridSolveInfo;
+
+/* Gauss-Legendre points and weights on [-1, 1], n <= 8 here. */
+void GridGauss(PetscInt n, PetscReal x[], PetscReal w[]);
+/* Number of leading reference directions that span a unit simplex (0 quad/hex/line, 2 tri/wedge, 3 tet). */
+PetscInt GridSimplexDims(const TslGeometry *g);
+void     GridRuleCreate(const TslGeometry *g, PetscInt npd, GridRule *rule);
+
+/* Mesh of [lo, hi] (2D types: the first two directions) with ncell[d] cells per direction. Material:
+ * GridSetMaterial. Free with GridDestroy. */
+PetscErrorCode GridCreate(const TslElementType *type, const PetscInt ncell[], const PetscReal lo[], const PetscReal hi[], Grid *grid);
+void           GridSetMaterial(Grid *grid, PetscReal E, PetscReal nu, PetscReal k, PetscReal alpha, PetscReal theta_init, PetscReal thickness);
+PetscErrorCode GridDestroy(Grid *grid);
+
+/* The kernel input of element e with global unknowns u (NULL: zero): fills xe[nen*3], ue[nen*ndof],
+ * th0[nen] and points in at them. */
+void GridElementInput(const Grid *grid, PetscInt e, const PetscReal u[], PetscReal xe[], PetscReal ue[], PetscReal th0[], TslElementInput *in);
+
+/* Smallest det J over the nodes and the full-rule points of every element, and the number of points
+ * where the map is not valid (TslElementPointEvaluate false). */
+PetscErrorCode GridMinJacobian(const Grid *grid, PetscReal *min_detJ, PetscInt *invalid);
+
+/* Is node a on the plane x_d = value? */
+PetscBool GridOnPlane(const Grid *grid, PetscInt a, PetscInt d, PetscReal value);
+
+/* w[a] += int_S N_a dA over the element faces lying on the plane x_d = value (dA with the thickness
+ * or 2 pi r of the kinematics): the consistent nodal weights of a uniform traction there. */
+PetscErrorCode GridFaceWeights(const Grid *grid, PetscInt d, PetscReal value, PetscReal w[]);
+
+/* Internal force and heat flow R(u) and (K not NULL) the tangent, assembled from TslElementInternal. */
+PetscErrorCode GridCreateMatrix(const Grid *grid, Mat *K);
+PetscErrorCode GridAssemble(const Grid *grid, const PetscReal u[], PetscReal R[], Mat K);
+
+/* One Newton step for R(u) = F from u, which holds the prescribed values on the rows fix[]: the rows of
+ * fix[] are replaced by identity rows (row elimination, zero increment), the rest solved by LU
+ * (KSPPREONLY + PCLU). Exact for the linear problems of the tests; info->residual shows it. */
+PetscErrorCode GridSolve(const Grid *grid, const PetscReal F[], PetscInt nfix, const PetscInt fix[], PetscReal u[], GridSolveInfo *info);
+
+/* Sums over the elements of TslElementOutput's strain and hourglass energies. */
+PetscErrorCode GridEnergies(const Grid *grid, const PetscReal u[], PetscReal *strain, PetscReal *hourglass);
