@@ -212,6 +212,16 @@ static PetscErrorCode RadiationConstant(const TslContactLaw *law, TslDual g, Tsl
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Contact area of the secondary node: its tributary length times the thickness (plane), or times 2 pi r
+ * at its reference radius for both axisymmetric kinematics (a twist model's phi plays no part in contact,
+ * which acts in the r-z plane). The one place the kernel looks at the kinematics. */
+static PetscReal NodeArea(const TslContactInput *in)
+{
+  PetscBool revolve = (PetscBool)(in->kin == TSL_KIN_AXISYMMETRIC || in->kin == TSL_KIN_AXISYMMETRIC_TWIST);
+
+  return revolve ? in->length * 2 * PETSC_PI * in->x[0][0] : in->length * in->thickness;
+}
+
 PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out)
 {
   TslContactGeom geo;
@@ -227,10 +237,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   PetscCall(TslContactGeomSetUp(in, PETSC_TRUE, &geo, &nnode));
   ndof = 3 * nnode;
   nper = geo.face->geom->nnode;
-  if (in->kin == TSL_KIN_AXISYMMETRIC)
-    area = in->length * 2 * PETSC_PI * in->x[0][0];
-  else
-    area = in->length * in->thickness;
+  area = NodeArea(in);
 
   /* kinematics: projection, normal, gap, slip increment along the segment's metric |t| at xi */
   PetscCall(TslContactProjectDual(&geo, &xi, &xi_raw));

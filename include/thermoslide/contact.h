@@ -9,7 +9,8 @@
  * Conventions (as include/thermoslide/element.h):
  *   - nodal unknowns interleaved per node, (u_x, u_y, theta); residual = internal - external;
  *     K = dR/du, row-major;
- *   - axisymmetric: x = r, y = z, forces and heat are totals around the circumference (2 pi r);
+ *   - axisymmetric (with or without twist): x = r, y = z, forces and heat are totals around the
+ *     circumference (2 pi r); contact acts in the r-z plane (a twist model's phi is not involved);
  *   - plane: forces and heat are per the given thickness.
  *   - A main segment is one element face of the main surface, its nodes in the face's own order (ends
  *     first, then the midside node: (m1, m2) for line2, (m1, m2, m3) for line3), main body on the left of
@@ -178,7 +179,7 @@ typedef enum { TSL_CONTACT_OPEN = 0, TSL_CONTACT_STICK, TSL_CONTACT_SLIP } TslCo
  * s, m1, m2, m0, m3; for line3 s, m1, m2, m3 (midside), then p1, p3 of the previous and n2, n3 of the next
  * segment. The neighbours are of the same family as the segment. */
 typedef struct {
-  TslKinematics      kin;                                  /* TSL_KIN_PLANE_STRAIN, TSL_KIN_PLANE_STRESS or TSL_KIN_AXISYMMETRIC */
+  TslKinematics      kin;                                  /* plane strain or stress, axisymmetric (with or without twist) */
   TslContactFaceKind face;                                 /* family of the main segments (0 = line2) */
   PetscReal          thickness;                            /* plane models (length); ignored for axisymmetry */
   PetscReal          length;                               /* tributary length of the secondary node on its own surface (reference) */

@@ -44,24 +44,25 @@ static PetscInt ElementNodes(TslProblem p, const TslContactNode *cn, PetscInt no
   return n;
 }
 
-/* Reference coordinates (2) and current unknowns (u_x, u_y, theta) of a local node. */
-static void NodeData(TslProblem p, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[3])
+/* Reference coordinates (2) and current unknowns (u_x, u_y, theta) of a local node, the unknowns taken
+ * from their slots among the node's (cs->slot: a twist model has phi before theta). */
+static void NodeData(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[3])
 {
   for (PetscInt c = 0; c < 2; c++) x[c] = p->m->node_xyz[3 * l + c];
-  for (PetscInt c = 0; c < 3; c++) u[c] = xa ? PetscRealPart(xa[l * p->ndof + c]) : 0;
+  for (PetscInt c = 0; c < 3; c++) u[c] = xa ? PetscRealPart(xa[l * p->ndof + cs->slot[c]]) : 0;
 }
 
-static void CurrentPosition(TslProblem p, const PetscScalar *xa, PetscInt l, PetscReal y[2])
+static void CurrentPosition(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal y[2])
 {
   PetscReal x[2], u[3];
-  NodeData(p, xa, l, x, u);
+  NodeData(p, cs, xa, l, x, u);
   y[0] = x[0] + u[0], y[1] = x[1] + u[1];
 }
 
 /* Current coordinates x[2*a + d] of the nodes of main face seg. */
 static void FacePosition(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt seg, PetscReal x[])
 {
-  for (PetscInt a = 0; a < cs->nper; a++) CurrentPosition(p, xa, cs->main_lnode[cs->nper * seg + a], &x[2 * a]);
+  for (PetscInt a = 0; a < cs->nper; a++) CurrentPosition(p, cs, xa, cs->main_lnode[cs->nper * seg + a], &x[2 * a]);
 }
 
 /* The metric |dx/dxi| of main face seg at its start (xi = 0) or end (xi = 1), current configuration. */
@@ -93,7 +94,7 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
     cs = &p->csurf[cn->pair];
     n  = ElementNodes(p, cn, nodes);
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt c = 0; c < 3; c++) ld[3 * a + c] = nodes[a] * p->ndof + c;
+      for (PetscInt c = 0; c < 3; c++) ld[3 * a + c] = nodes[a] * p->ndof + cs->slot[c];
     if (mode == ASM_PATTERN) {
       PetscCall(TslProblemInsert(p, mode, A, f, 3 * n, ld, NULL, NULL));
       continue;
@@ -105,13 +106,13 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
     in.length    = cn->length;
     {
       PetscInt k = 0;
-      for (PetscInt a = 0; a <= cs->nper; a++) NodeData(p, xa, nodes[k++], in.x[a], in.u[a]);
+      for (PetscInt a = 0; a <= cs->nper; a++) NodeData(p, cs, xa, nodes[k++], in.x[a], in.u[a]);
       if (cs->smooth > 0 && cs->prev[cn->seg] >= 0) {
-        for (PetscInt j = 0; j < cs->nper - 1; j++) NodeData(p, xa, nodes[k++], &xp[2 * j], &up[3 * j]);
+        for (PetscInt j = 0; j < cs->nper - 1; j++) NodeData(p, cs, xa, nodes[k++], &xp[2 * j], &up[3 * j]);
         in.x_prev = xp, in.u_prev = up;
       }
       if (cs->smooth > 0 && cs->next[cn->seg] >= 0) {
-        for (PetscInt j = 0; j < cs->nper - 1; j++) NodeData(p, xa, nodes[k++], &xn[2 * j], &un[3 * j]);
+        for (PetscInt j = 0; j < cs->nper - 1; j++) NodeData(p, cs, xa, nodes[k++], &xn[2 * j], &un[3 * j]);
         in.x_next = xn, in.u_next = un;
       }
     }
@@ -191,7 +192,7 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
       PetscBool       best_inside = PETSC_FALSE;
 
       if (cn->pair != k) continue;
-      CurrentPosition(p, xa, cn->lnode, y);
+      CurrentPosition(p, cs, xa, cn->lnode, y);
       PetscCall(TslContactBinGridQuery(grid, y, cs->search_radius, cap, cand, &ncand, NULL));
       if (ncand > cap) {
         cap = ncand;
@@ -519,6 +520,7 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
     const TslContactPair *pair = &m->pairs[k];
     TslContactSurface    *cs   = &p->csurf[k];
     const TslContactFace *face = TslContactFaceGet((TslContactFaceKind)pair->main_face);
+    char                  loc[PETSC_MAX_PATH_LEN + 32];
 
     PetscCheck(face && face->geom->nnode == pair->nper, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "contact pair %" PetscInt_FMT ": face family %" PetscInt_FMT " does not have %" PetscInt_FMT " nodes", k + 1, pair->main_face,
@@ -543,6 +545,16 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
       }
     }
     PetscCall(SetUpLaw(p, pair, pair->mean_length, penalty[k], &cs->law));
+    /* the kernels see (u_x, u_y, theta) per node; a twist model has phi (dof 5) among them too, which
+     * frictionless contact does not involve, and friction would need the circumferential slip */
+    cs->slot[0] = TslProblemDofSlot(p, 1);
+    cs->slot[1] = TslProblemDofSlot(p, 2);
+    cs->slot[2] = TslProblemDofSlot(p, 11);
+    PetscCheck(cs->slot[0] >= 0 && cs->slot[1] >= 0 && cs->slot[2] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "contact needs the displacements 1, 2 and the temperature 11 among the nodal unknowns");
+    PetscCheck(TslProblemDofSlot(p, 5) < 0 || cs->law.mu == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "%s: friction with twist elements (CGAX): circumferential slip is not supported yet (frictionless contact is)",
+               TslLocString(m, pair->loc, loc, sizeof(loc)));
     /* candidates within one mean segment length, or the largest tabulated clearance */
     cs->search_radius = pair->mean_length;
     if (cs->law.conductance == TSL_CONTACT_CONDUCTANCE_CLEARANCE) cs->search_radius = PetscMax(cs->search_radius, cs->law.k_arg[cs->law.k_n - 1]);

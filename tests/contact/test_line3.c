@@ -290,6 +290,9 @@ static PetscErrorCode CheckWeights(TestLog *log)
       PetscCall(TslContactElement(&law, &in, NULL, NULL, &out));
       CheckRel(log, out.area, 2 * PETSC_PI * 2.5 * expect[a], 1e-14, 0, "line3 axisymmetric: area of node %d = int N_a 2 pi r ds", (int)a + 1);
       total += out.area;
+      in.kin = TSL_KIN_AXISYMMETRIC_TWIST; /* the twist rows (CGAX) revolve too */
+      PetscCall(TslContactElement(&law, &in, NULL, NULL, &out));
+      CheckRel(log, out.area, 2 * PETSC_PI * 2.5 * expect[a], 1e-14, 0, "line3 axisymmetric with twist: area of node %d", (int)a + 1);
     }
     /* the lateral area of the cone frustum: pi (r1 + r2) L */
     CheckRel(log, total, PETSC_PI * 4 * 2.5, 1e-14, 0, "line3 axisymmetric: total = pi (r1 + r2) L");

@@ -1,12 +1,14 @@
 #!/usr/bin/python3
 """Writes the decks of contact on quadratic (line3) faces in this folder (run once; the decks are committed).
 
-  contact_line3_uniform_{cpe8t,cax8t}.inp
+  contact_line3_uniform_{cpe8t,cax8t,cgax8t}.inp
       Two blocks of one material stacked with matched meshes (8-node elements, so the interface is made of
       line3 faces), a uniform pressure and a uniform heat flux on the top, steady state. The exact solution
       (uniform uniaxial stress, temperature linear through each block with a jump at the interface) lies in
       the element space, so with consistent contact weights (1/6, 2/3, 1/6 of a face) every secondary node,
-      corner or midside, carries the applied pressure and flux.
+      corner or midside, carries the applied pressure and flux. CGAX8T: the same with the twist rows
+      (twist held), whose contact must revolve like CAX8T's; contact_twist_friction_cgax8t.inp adds
+      *FRICTION, which is refused (circumferential slip not supported yet).
   contact_line3_jacobian_cpe8t.inp, contact_line3_friction_cpe8t.inp
       jobs/verification/contact_jacobian_cpe4t.inp and sliding_friction_cpe4t.inp with every CPE4T made a
       CPE8T (a midside node in the middle of each edge; node sets gain the midsides of their edges), so the
@@ -44,11 +46,12 @@ def lines(ids, per=8):
     return "\n".join(" " + ", ".join(str(x) for x in ids[k:k + per]) for k in range(0, len(ids), per))
 
 
-def uniform(etype, x0):
+def uniform(etype, x0, friction=False):
     nx, W = 3, 2.0
     low_n, low_e, low_g = quad8_block(nx, 2, x0, x0 + W, 0.0, 1.0, 1, 1)
     up_n, up_e, up_g = quad8_block(nx, 1, x0, x0 + W, 1.0, 1.5, 1001, 101)
     plane = etype.startswith("CP")
+    twist = etype.startswith("CGAX")
     out = ["*HEADING",
            " Uniform pressure (100) and heat flux (10) through two stacked %s blocks: contact on line3 faces" % etype,
            "*NODE, NSET=ALL"]
@@ -60,6 +63,8 @@ def uniform(etype, x0):
     out += ["*NSET, NSET=BASE", lines(low_g[i, 0] for i in range(2 * nx + 1))]
     if plane:  # symmetry plane x = 0: removes the rigid x motion of both blocks, leaves the Poisson expansion free
         out += ["*NSET, NSET=LEFT", lines([n for (i, j), n in sorted(low_g.items()) if i == 0] + [n for (i, j), n in sorted(up_g.items()) if i == 0])]
+    if twist:  # the upper ring's rigid twist, which frictionless contact leaves free
+        out += ["*NSET, NSET=UPTOP", lines(up_g[i, 2] for i in range(2 * nx + 1))]
     out += ["*ELSET, ELSET=LOWTOP", lines(e for e, c in low_e[nx:]),
             "*ELSET, ELSET=BODY", lines([e for e, c in low_e] + [e for e, c in up_e]),
             "*SURFACE, NAME=MAIN, TYPE=ELEMENT", " LOWTOP, S3",
@@ -67,15 +72,18 @@ def uniform(etype, x0):
             "*MATERIAL, NAME=STEEL", "*ELASTIC", " 200000.0, 0.3", "*CONDUCTIVITY", " 50.0", "*DENSITY", " 1.0",
             "*SPECIFIC HEAT", " 1.0",
             "*SOLID SECTION, ELSET=BODY, MATERIAL=STEEL", " 1.0",
-            "*SURFACE INTERACTION, NAME=IFACE", "*GAP CONDUCTANCE, PRESSURE", " 20.0, 100.0", " 5.0, 200.0",
+            "*SURFACE INTERACTION, NAME=IFACE"] + (["*FRICTION", " 0.1"] if friction else []) + [
+            "*GAP CONDUCTANCE, PRESSURE", " 20.0, 100.0", " 5.0, 200.0",
             "*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.2", " SECONDARY, MAIN",
             "*INITIAL CONDITIONS, TYPE=TEMPERATURE", " ALL, 0.0",
             "*STEP, NAME=PRESS AND HEAT", "*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE",
             "*BOUNDARY", " BASE, 2, 2", " BASE, 11, 11, 0.0"]
     if plane:
         out.append(" LEFT, 1, 1")
+    if twist:
+        out += [" BASE, 5, 5", " UPTOP, 5, 5"]
     out += ["*DLOAD", " UPPER, P3, 100.0", "*DFLUX", " UPPER, S3, 10.0", "*END STEP", ""]
-    name = "contact_line3_uniform_%s.inp" % etype.lower()
+    name = "contact_%s_%s.inp" % ("twist_friction" if friction else "line3_uniform", etype.lower())
     open(os.path.join(HERE, name), "w").write("\n".join(out))
 
 
@@ -149,6 +157,8 @@ def to_quad8(src, dst, heading):
 
 uniform("CPE8T", 0.0)
 uniform("CAX8T", 0.5)
+uniform("CGAX8T", 0.5)  # twist rows: contact acts in the r-z plane, the same answer as CAX8T
+uniform("CGAX8T", 0.5, friction=True)  # refused: circumferential slip is not supported yet
 to_quad8("contact_jacobian_cpe4t.inp", "contact_line3_jacobian_cpe8t.inp",
          "Contact Jacobian check on line3 faces (jobs/verification/contact_jacobian_cpe4t.inp with CPE8T): stick, slip, open")
 to_quad8("sliding_friction_cpe4t.inp", "contact_line3_friction_cpe8t.inp",
