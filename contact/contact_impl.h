@@ -109,15 +109,23 @@ static inline TslDual DDot(const TslDual a[2], const TslDual b[2])
   return DAdd(DMul(a[0], b[0]), DMul(a[1], b[1]));
 }
 
-/* Geometry of one element in dual numbers (current coordinates of all nodes present). */
+/* Geometry of one element in dual numbers (current coordinates of all nodes present, relative to the
+ * reference position of m1). The neighbouring segments are stored whole, in their face order, the node
+ * they share with this segment being a copy of ours (prev[1] = seg[0], next[0] = seg[1]). */
 typedef struct {
-  TslDual   xs[2], x1[2], x2[2], x0[2], x3[2];
-  PetscBool has_prev, has_next;
-  PetscReal s; /* smoothing fraction */
+  const TslContactFace *face;
+  TslDual               xs[2];
+  TslDual               seg[TSL_CONTACT_MAX_FACE_NODES][2], prev[TSL_CONTACT_MAX_FACE_NODES][2], next[TSL_CONTACT_MAX_FACE_NODES][2];
+  PetscBool             has_prev, has_next;
+  PetscReal             s; /* smoothing fraction */
 } TslContactGeom;
 
-/* Smoothed unit normal n and tangent tau = (-n_y, n_x) at dual parameter xi (kinematics.c). */
-void TslContactNormalDual(const TslContactGeom *geo, TslDual xi, TslDual n[2], TslDual tau[2]);
+/* Position x_m and tangent t = dx_m/dxi of a segment (face nodes x[nnode][2]) at dual parameter xi. */
+void TslContactFacePointDual(const TslContactFace *face, const TslDual x[][2], TslDual xi, TslDual p[2], TslDual t[2]);
+
+/* Position x_m (may be NULL), smoothed unit normal n and tangent tau = (-n_y, n_x) of the segment at dual
+ * parameter xi (kinematics.c). */
+void TslContactSurfaceDual(const TslContactGeom *geo, TslDual xi, TslDual x[2], TslDual n[2], TslDual tau[2]);
 
 /* Solves the projection: returns xi as a dual carrying dxi/du (zero when clamped), and the unclamped value. */
 PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, PetscReal *xi_raw);

@@ -1,15 +1,43 @@
-/* Node-to-segment kinematics: smoothed normals, projection of the secondary node, history transfer.
- * Formulas in docs/contact.md ("Projection" and "Smoothing"). */
+/* Node-to-segment kinematics: the segment's curve and its smoothed normals, projection of the secondary
+ * node, history transfer. Formulas in docs/contact.md ("Projection" and "Smoothing"). */
 #include "contact_impl.h"
 
-/* Unit outward normal (body on the left of a -> b): n = (e_y, -e_x), e = (b - a)/|b - a|. */
-static void SegmentNormal(const TslDual a[2], const TslDual b[2], TslDual n[2])
+/* x_m = x_1 + sum_{a>1} N_a (x_a - x_1) (sum N_a = 1) and t = sum_{a>1} dN_a (x_a - x_1): differences of
+ * nearby nodes, no cancellation between large coordinates, and the tangent of a straight segment is
+ * exactly x_2 - x_1. N_a and dN_a carry their xi-derivatives (dN_a, d2N_a), so that t, the normal and the
+ * projection are differentiated through the curvature. */
+void TslContactFacePointDual(const TslContactFace *face, const TslDual x[][2], TslDual xi, TslDual p[2], TslDual t[2])
 {
-  TslDual dx = DSub(b[0], a[0]), dy = DSub(b[1], a[1]);
-  TslDual L = DSqrt(DAdd(DMul(dx, dx), DMul(dy, dy)));
+  PetscReal N[TSL_CONTACT_MAX_FACE_NODES], dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES];
 
-  n[0] = DDiv(dy, L);
-  n[1] = DScale(-1, DDiv(dx, L));
+  TslContactFaceShape(face, xi.v, N, dN, d2N);
+  for (PetscInt d = 0; d < 2; d++) {
+    p[d] = x[0][d];
+    t[d] = DConst(0);
+  }
+  for (PetscInt a = 1; a < face->geom->nnode; a++) {
+    TslDual Na = DChain(xi, N[a], dN[a]), dNa = DChain(xi, dN[a], d2N[a]);
+
+    for (PetscInt d = 0; d < 2; d++) {
+      TslDual e = DSub(x[a][d], x[0][d]);
+      p[d]      = DAdd(p[d], DMul(Na, e));
+      t[d]      = DAdd(t[d], DMul(dNa, e));
+    }
+  }
+}
+
+static TslDual Norm(const TslDual t[2])
+{
+  return DSqrt(DAdd(DMul(t[0], t[0]), DMul(t[1], t[1])));
+}
+
+/* Unit outward normal of a tangent (body on the left): n = (t_y, -t_x)/|t|. */
+static void NormalOfTangent(const TslDual t[2], TslDual n[2])
+{
+  TslDual L = Norm(t);
+
+  n[0] = DDiv(t[1], L);
+  n[1] = DScale(-1, DDiv(t[0], L));
 }
 
 /* Weight of the neighbour's normal at distance t (in units of s, t = 1 at the node, 0 at the end of the
@@ -22,26 +50,51 @@ static TslDual BlendWeight(TslDual t)
   return DScale(0.5, DMul(DMul(t, t), DAddC(DScale(-2, t), 3)));
 }
 
-void TslContactNormalDual(const TslContactGeom *geo, TslDual xi, TslDual n[2], TslDual tau[2])
+/* Normal of the neighbouring segment nb[] at the point as far from the shared node as xi is on this one:
+ * its parameter is extended beyond the node (xb = 1 + rho xi before m1, rho (xi - 1) after m2, rho the
+ * ratio of the two metrics |t| at the node), so that at the node both segments' blended normals agree in
+ * value and in their derivative along the arc, also when the segments are curved. A straight neighbour
+ * has the same normal everywhere. */
+static void NeighbourNormal(const TslContactGeom *geo, const TslDual nb[][2], PetscBool before, TslDual xi, TslDual n[2])
+{
+  const TslContactFace *face = geo->face;
+  TslDual               p[2], tc[2], tb[2], xb = DConst(before ? 1 : 0);
+
+  if (face->geom->order > 1) {
+    TslDual rho;
+
+    TslContactFacePointDual(face, geo->seg, DConst(before ? 0 : 1), p, tc);
+    TslContactFacePointDual(face, nb, xb, p, tb);
+    rho = DDiv(Norm(tc), Norm(tb));
+    xb  = before ? DAddC(DMul(rho, xi), 1) : DMul(rho, DAddC(xi, -1));
+  }
+  TslContactFacePointDual(face, nb, xb, p, tb);
+  NormalOfTangent(tb, n);
+}
+
+void TslContactSurfaceDual(const TslContactGeom *geo, TslDual xi, TslDual x[2], TslDual n[2], TslDual tau[2])
 {
   const PetscReal s = geo->s;
-  TslDual         nc[2];
+  TslDual         p[2], t[2], nc[2];
 
-  SegmentNormal(geo->x1, geo->x2, nc);
+  TslContactFacePointDual(geo->face, geo->seg, xi, p, t);
+  NormalOfTangent(t, nc);
+  if (x) {
+    x[0] = p[0];
+    x[1] = p[1];
+  }
   n[0] = nc[0];
   n[1] = nc[1];
   if (s > 0 && ((geo->has_prev && xi.v < s) || (geo->has_next && xi.v > 1 - s))) {
     PetscBool near_start = (PetscBool)(geo->has_prev && xi.v < s);
-    TslDual   nb[2], t, w, m[2], len;
+    TslDual   nb[2], w, m[2], len, tt;
 
-    if (near_start) {
-      SegmentNormal(geo->x0, geo->x1, nb);
-      t = DAddC(DScale(-1 / s, xi), 1); /* 1 - xi/s */
-    } else {
-      SegmentNormal(geo->x2, geo->x3, nb);
-      t = DAddC(DScale(1 / s, xi), 1 - 1 / s); /* 1 - (1 - xi)/s */
-    }
-    w = BlendWeight(t);
+    NeighbourNormal(geo, near_start ? geo->prev : geo->next, near_start, xi, nb);
+    if (near_start)
+      tt = DAddC(DScale(-1 / s, xi), 1); /* 1 - xi/s */
+    else
+      tt = DAddC(DScale(1 / s, xi), 1 - 1 / s); /* 1 - (1 - xi)/s */
+    w = BlendWeight(tt);
     for (PetscInt d = 0; d < 2; d++) m[d] = DAdd(nc[d], DMul(w, DSub(nb[d], nc[d])));
     len  = DSqrt(DDot(m, m));
     n[0] = DDiv(m[0], len);
@@ -54,28 +107,25 @@ void TslContactNormalDual(const TslContactGeom *geo, TslDual xi, TslDual n[2], T
 /* F(xi) = (x_s - x_m(xi)) . tau(xi); zero at the normal projection. */
 static TslDual ProjectionFunction(const TslContactGeom *geo, TslDual xi)
 {
-  TslDual n[2], tau[2], r[2];
+  TslDual xm[2], n[2], tau[2], r[2];
 
-  TslContactNormalDual(geo, xi, n, tau);
-  for (PetscInt d = 0; d < 2; d++) {
-    TslDual xm = DAdd(geo->x1[d], DMul(xi, DSub(geo->x2[d], geo->x1[d])));
-    r[d]       = DSub(geo->xs[d], xm);
-  }
+  TslContactSurfaceDual(geo, xi, xm, n, tau);
+  for (PetscInt d = 0; d < 2; d++) r[d] = DSub(geo->xs[d], xm[d]);
   return DDot(r, tau);
 }
 
 PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, PetscReal *xi_raw)
 {
-  PetscReal e[2] = {geo->x2[0].v - geo->x1[0].v, geo->x2[1].v - geo->x1[1].v}, L2 = e[0] * e[0] + e[1] * e[1];
+  PetscReal e[2] = {geo->seg[1][0].v - geo->seg[0][0].v, geo->seg[1][1].v - geo->seg[0][1].v}, L2 = e[0] * e[0] + e[1] * e[1];
   PetscReal x, tol, r[2];
   TslDual   F;
   PetscBool converged = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCheck(L2 > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Contact segment of zero length");
-  /* start from the projection on the straight segment: exact when no smoothing is active */
-  r[0] = geo->xs[0].v - geo->x1[0].v;
-  r[1] = geo->xs[1].v - geo->x1[1].v;
+  /* start from the projection on the chord m1 -> m2: exact for a straight segment without smoothing */
+  r[0] = geo->xs[0].v - geo->seg[0][0].v;
+  r[1] = geo->xs[1].v - geo->seg[0][1].v;
   x    = (r[0] * e[0] + r[1] * e[1]) / L2;
   /* xi is dimensionless, but its round-off is that of F / F_xi ~ eps (|x_s - x_1| + L) / L: a tolerance
    * a thousand times that floor, so that Newton stops as soon as it is exact to working precision,
@@ -130,20 +180,43 @@ static void SetPoint(const PetscReal X[], const PetscReal U[], const PetscReal O
 
 PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, TslContactGeom *geo, PetscInt *nnode)
 {
-  PetscInt k = 3;
+  const PetscReal *O = in->x[1];
+  PetscInt         k = 0, nper;
 
   PetscFunctionBeginUser;
   PetscCheck(in->smoothing >= 0 && in->smoothing < 0.5, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Contact smoothing fraction %g outside [0, 0.5)",
              (double)in->smoothing);
   PetscCheck(!in->x_prev == !in->u_prev && !in->x_next == !in->u_next, PETSC_COMM_SELF, PETSC_ERR_ARG_NULL,
              "Neighbour node needs both reference coordinates and unknowns");
-  SetPoint(in->x[0], in->u[0], in->x[1], 0, seed, geo->xs);
-  SetPoint(in->x[1], in->u[1], in->x[1], 1, seed, geo->x1);
-  SetPoint(in->x[2], in->u[2], in->x[1], 2, seed, geo->x2);
+  geo->face = TslContactFaceGet(in->face);
+  PetscCheck(geo->face, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown contact face family %d", (int)in->face);
+  nper = geo->face->geom->nnode;
+  SetPoint(in->x[0], in->u[0], O, k++, seed, geo->xs);
+  for (PetscInt a = 0; a < nper; a++) SetPoint(in->x[1 + a], in->u[1 + a], O, k++, seed, geo->seg[a]);
   geo->has_prev = (PetscBool)(in->x_prev != NULL);
   geo->has_next = (PetscBool)(in->x_next != NULL);
-  if (geo->has_prev) SetPoint(in->x_prev, in->u_prev, in->x[1], k++, seed, geo->x0);
-  if (geo->has_next) SetPoint(in->x_next, in->u_next, in->x[1], k++, seed, geo->x3);
+  /* a neighbour shares one end with this segment: the previous one its end (node 1) with m1, the next one
+   * its start (node 0) with m2; its other nodes come in face order */
+  if (geo->has_prev)
+    for (PetscInt a = 0, j = 0; a < nper; a++) {
+      if (a == 1) {
+        geo->prev[a][0] = geo->seg[0][0];
+        geo->prev[a][1] = geo->seg[0][1];
+      } else {
+        SetPoint(&in->x_prev[2 * j], &in->u_prev[3 * j], O, k++, seed, geo->prev[a]);
+        j++;
+      }
+    }
+  if (geo->has_next)
+    for (PetscInt a = 0, j = 0; a < nper; a++) {
+      if (a == 0) {
+        geo->next[a][0] = geo->seg[1][0];
+        geo->next[a][1] = geo->seg[1][1];
+      } else {
+        SetPoint(&in->x_next[2 * j], &in->u_next[3 * j], O, k++, seed, geo->next[a]);
+        j++;
+      }
+    }
   geo->s = in->smoothing;
   if (nnode) *nnode = k;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -152,19 +225,34 @@ PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, Ts
 PetscErrorCode TslContactProject(const TslContactInput *in, PetscReal *xi, PetscReal *g, PetscReal n[])
 {
   TslContactGeom geo;
-  TslDual        x, nn[2], tau[2], r[2];
+  TslDual        x, xm[2], nn[2], tau[2], r[2];
   PetscReal      raw;
 
   PetscFunctionBeginUser;
   PetscCall(TslContactGeomSetUp(in, PETSC_FALSE, &geo, NULL));
   PetscCall(TslContactProjectDual(&geo, &x, &raw));
-  TslContactNormalDual(&geo, x, nn, tau);
-  for (PetscInt d = 0; d < 2; d++) r[d] = DSub(geo.xs[d], DAdd(geo.x1[d], DMul(x, DSub(geo.x2[d], geo.x1[d]))));
+  TslContactSurfaceDual(&geo, x, xm, nn, tau);
+  for (PetscInt d = 0; d < 2; d++) r[d] = DSub(geo.xs[d], xm[d]);
   if (xi) *xi = raw;
   if (g) *g = DDot(r, nn).v;
   if (n) {
     n[0] = nn[0].v;
     n[1] = nn[1].v;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslContactSurfacePoint(const TslContactInput *in, PetscReal xi, PetscReal x[], PetscReal n[])
+{
+  TslContactGeom geo;
+  TslDual        xm[2], nn[2], tau[2];
+
+  PetscFunctionBeginUser;
+  PetscCall(TslContactGeomSetUp(in, PETSC_FALSE, &geo, NULL));
+  TslContactSurfaceDual(&geo, DConst(xi), xm, nn, tau);
+  for (PetscInt d = 0; d < 2; d++) {
+    if (x) x[d] = xm[d].v + in->x[1][d]; /* the geometry is relative to the reference position of m1 */
+    if (n) n[d] = nn[d].v;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -201,17 +289,18 @@ PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1
 
   PetscFunctionBeginUser;
   PetscCheck(s >= 0 && s < 0.5, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "smoothing %g outside [0, 0.5)", (double)s);
+  geo.face = TslContactFaceGet(TSL_CONTACT_FACE_LINE2);
   for (PetscInt d = 0; d < 2; d++) {
-    geo.x1[d] = DConst(x1[d]);
-    geo.x2[d] = DConst(x2[d]);
-    geo.x0[d] = DConst(x0 ? x0[d] : 0);
-    geo.x3[d] = DConst(x3 ? x3[d] : 0);
-    geo.xs[d] = DConst(0);
+    geo.seg[0][d] = geo.prev[1][d] = DConst(x1[d]);
+    geo.seg[1][d] = geo.next[0][d] = DConst(x2[d]);
+    geo.prev[0][d]                 = DConst(x0 ? x0[d] : 0);
+    geo.next[1][d]                 = DConst(x3 ? x3[d] : 0);
+    geo.xs[d]                      = DConst(0);
   }
   geo.has_prev = (PetscBool)(x0 != NULL);
   geo.has_next = (PetscBool)(x3 != NULL);
   geo.s        = s;
-  TslContactNormalDual(&geo, DConst(xi), nn, tau);
+  TslContactSurfaceDual(&geo, DConst(xi), NULL, nn, tau);
   n[0] = nn[0].v;
   n[1] = nn[1].v;
   PetscFunctionReturn(PETSC_SUCCESS);

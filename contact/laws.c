@@ -212,13 +212,23 @@ static PetscErrorCode RadiationConstant(const TslContactLaw *law, TslDual g, Tsl
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Contact area of the secondary node: its tributary length times the thickness (plane), or times 2 pi r
+ * at its reference radius for both axisymmetric kinematics (a twist model's phi plays no part in contact,
+ * which acts in the r-z plane). The one place the kernel looks at the kinematics. */
+static PetscReal NodeArea(const TslContactInput *in)
+{
+  PetscBool revolve = (PetscBool)(in->kin == TSL_KIN_AXISYMMETRIC || in->kin == TSL_KIN_AXISYMMETRIC_TWIST);
+
+  return revolve ? in->length * 2 * PETSC_PI * in->x[0][0] : in->length * in->thickness;
+}
+
 PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out)
 {
   TslContactGeom geo;
-  PetscInt       nnode, ndof;
-  PetscReal      xi_raw, area;
-  TslDual        xi, n[2], tau[2], r[2], g, L, pN, ds, traction[2], k, C, q, theta_s, theta_m, N[2], heat;
-  TslDual        Rd[TSL_CONTACT_MAX_DOF];
+  PetscInt       nnode, ndof, nper;
+  PetscReal      xi_raw, area, Nv[TSL_CONTACT_MAX_FACE_NODES], dNv[TSL_CONTACT_MAX_FACE_NODES], d2Nv[TSL_CONTACT_MAX_FACE_NODES];
+  TslDual        xi, n[2], tau[2], r[2], xm[2], t[2], g, L, pN, ds, traction[2], k, C, q, theta_s, theta_m, heat;
+  TslDual        N[TSL_CONTACT_MAX_FACE_NODES], Rd[TSL_CONTACT_MAX_DOF];
   FrictionState  fs;
   PetscBool      closed;
 
@@ -226,23 +236,19 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   PetscCheck(in->length > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Tributary length must be positive");
   PetscCall(TslContactGeomSetUp(in, PETSC_TRUE, &geo, &nnode));
   ndof = 3 * nnode;
-  if (in->kin == TSL_KIN_AXISYMMETRIC)
-    area = in->length * 2 * PETSC_PI * in->x[0][0];
-  else
-    area = in->length * in->thickness;
+  nper = geo.face->geom->nnode;
+  area = NodeArea(in);
 
-  /* kinematics: projection, normal, gap, slip increment */
+  /* kinematics: projection, normal, gap, slip increment along the segment's metric |t| at xi */
   PetscCall(TslContactProjectDual(&geo, &xi, &xi_raw));
-  TslContactNormalDual(&geo, xi, n, tau);
-  for (PetscInt d = 0; d < 2; d++) r[d] = DSub(geo.xs[d], DAdd(geo.x1[d], DMul(xi, DSub(geo.x2[d], geo.x1[d]))));
+  TslContactSurfaceDual(&geo, xi, xm, n, tau);
+  for (PetscInt d = 0; d < 2; d++) r[d] = DSub(geo.xs[d], xm[d]);
   g = DDot(r, n);
-  {
-    TslDual e[2] = {DSub(geo.x2[0], geo.x1[0]), DSub(geo.x2[1], geo.x1[1])};
-    L            = DSqrt(DDot(e, e));
-  }
-  ds   = DMul(L, DAddC(xi, -in->hist.xi_old));
-  N[0] = DAddC(DScale(-1, xi), 1);
-  N[1] = xi;
+  TslContactFacePointDual(geo.face, geo.seg, xi, xm, t);
+  L  = DSqrt(DDot(t, t));
+  ds = DMul(L, DAddC(xi, -in->hist.xi_old));
+  TslContactFaceShape(geo.face, xi.v, Nv, dNv, d2Nv);
+  for (PetscInt a = 0; a < nper; a++) N[a] = DChain(xi, Nv[a], dNv[a]);
 
   /* mechanical laws */
   pN = NormalPressure(law, &in->hist, g, L.v, &closed);
@@ -251,7 +257,8 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
 
   /* thermal laws */
   theta_s = DVar(in->u[0][2], 2);
-  theta_m = DAdd(DMul(N[0], DVar(in->u[1][2], 5)), DMul(N[1], DVar(in->u[2][2], 8)));
+  theta_m = DConst(0);
+  for (PetscInt a = 0; a < nper; a++) theta_m = DAdd(theta_m, DMul(N[a], DVar(in->u[1 + a][2], 3 * (1 + a) + 2)));
   PetscCall(Conductance(law, pN, closed, g, &k));
   PetscCall(RadiationConstant(law, g, &C));
   q = DMul(k, DSub(theta_m, theta_s));
@@ -262,10 +269,10 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   for (PetscInt i = 0; i < ndof; i++) Rd[i] = DConst(0);
   for (PetscInt d = 0; d < 2; d++) {
     Rd[d] = DScale(-area, traction[d]);
-    for (PetscInt a = 0; a < 2; a++) Rd[3 * (a + 1) + d] = DScale(area, DMul(N[a], traction[d]));
+    for (PetscInt a = 0; a < nper; a++) Rd[3 * (a + 1) + d] = DScale(area, DMul(N[a], traction[d]));
   }
   Rd[2] = DScale(-area, DAdd(q, DScale(law->f, heat)));
-  for (PetscInt a = 0; a < 2; a++) Rd[3 * (a + 1) + 2] = DScale(area, DMul(N[a], DSub(q, DScale(1 - law->f, heat))));
+  for (PetscInt a = 0; a < nper; a++) Rd[3 * (a + 1) + 2] = DScale(area, DMul(N[a], DSub(q, DScale(1 - law->f, heat))));
 
   if (R)
     for (PetscInt i = 0; i < ndof; i++) R[i] = Rd[i].v;

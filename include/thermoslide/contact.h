@@ -1,5 +1,5 @@
-/* thermoslide contact kernels: 2D node-to-segment contact for coupled temperature-displacement
- * analysis (plane strain, plane stress, axisymmetric).
+/* thermoslide contact kernels: 2D node-to-surface contact for coupled temperature-displacement
+ * analysis (plane strain, plane stress, axisymmetric), on linear (line2) and quadratic (line3) faces.
  *
  * Everything here works on plain arrays: no MPI, no PETSc objects. The assembly calls
  * TslContactElement() once per active contact element (one secondary node against one main segment)
@@ -9,15 +9,19 @@
  * Conventions (as include/thermoslide/element.h):
  *   - nodal unknowns interleaved per node, (u_x, u_y, theta); residual = internal - external;
  *     K = dR/du, row-major;
- *   - axisymmetric: x = r, y = z, forces and heat are totals around the circumference (2 pi r);
+ *   - axisymmetric (with or without twist): x = r, y = z, forces and heat are totals around the
+ *     circumference (2 pi r); contact acts in the r-z plane (a twist model's phi is not involved);
  *   - plane: forces and heat are per the given thickness.
- *   - A main segment (m1, m2) is given in the order of its element face, i.e. with the main body on the
- *     left of m1 -> m2 (counter-clockwise elements). Its unit tangent is tau = (x2 - x1)/|x2 - x1| and
- *     the outward normal of the main body is n = (tau_y, -tau_x) (pointing towards the secondary side).
+ *   - A main segment is one element face of the main surface, its nodes in the face's own order (ends
+ *     first, then the midside node: (m1, m2) for line2, (m1, m2, m3) for line3), main body on the left of
+ *     m1 -> m2 (counter-clockwise elements). It is the curve x_m(xi) = sum_a N_a(xi) x_a, 0 <= xi <= 1 from
+ *     m1 to m2, with the face family's shape functions N_a (TslContactFace). Its tangent is
+ *     t = dx_m/dxi, tau = t/|t|, and the outward normal of the main body n = (tau_y, -tau_x) (pointing
+ *     towards the secondary side); |t| is the segment's metric (its length for line2).
  *   - Gap g = (x_s - x_m(xi)) . n: positive = open clearance, negative = penetration.
- *   - Slip increment ds = L (xi - xi_old) > 0 when the secondary node moves towards m2 relative to the
- *     main surface (L = current segment length). The shear stress tT has the sign of the slip it resists:
- *     the force on the secondary node is A (pN n - tT tau), the opposite force acts on the main nodes.
+ *   - Slip increment ds = |t| (xi - xi_old) > 0 when the secondary node moves towards m2 relative to the
+ *     main surface. The shear stress tT has the sign of the slip it resists: the force on the secondary
+ *     node is A (pN n - tT tau), the opposite force acts on the main nodes, distributed by N_a.
  *   - Heat flux q (per area) > 0 flows from the main surface into the secondary node.
  * Units are whatever the deck uses (force, length, time, temperature, energy consistent).
  */
@@ -25,8 +29,62 @@
 #include <thermoslide/compat.h>
 #include <thermoslide/element.h>
 
-#define TSL_CONTACT_MAX_NODES 5 /* secondary, m1, m2, previous-segment node, next-segment node */
+#define TSL_CONTACT_MAX_FACE_NODES 3 /* nodes of one main segment (line3) */
+/* secondary, the segment's nodes, and the other nodes of the previous and the next segment (smoothing) */
+#define TSL_CONTACT_MAX_NODES (1 + TSL_CONTACT_MAX_FACE_NODES + 2 * (TSL_CONTACT_MAX_FACE_NODES - 1))
 #define TSL_CONTACT_MAX_DOF   (TSL_CONTACT_MAX_NODES * 3)
+
+/* ---------------------------------------------------------------------------------------------------
+ * Face families of contact surfaces
+ * ------------------------------------------------------------------------------------------------- */
+
+/* One row per face family (contact/face.c): the element catalogue's face geometry (its shape functions,
+ * node count and order; node order: ends first, then the midside node) and what contact adds to it. The
+ * kernels are written for any row: a new family is a row. */
+typedef enum {
+  TSL_CONTACT_FACE_LINE2 = 0, /* 2-node line: the default of a zeroed TslContactInput */
+  TSL_CONTACT_FACE_LINE3,     /* 3-node line (end, end, middle) */
+  TSL_CONTACT_FACE_NKINDS
+} TslContactFaceKind;
+
+typedef struct {
+  const TslGeometry *geom; /* the catalogue's face family ("line2", "line3"): name, nnode, ncorner, order, shape */
+  PetscInt           nq;   /* Gauss rule on [0, 1] for face integrals (exact for N_a |t| when |t| is a polynomial) */
+  PetscReal          q_xi[5], q_w[5];
+  /* control points of the face's Bernstein form, hull[i][a]: the face lies in their convex hull */
+  PetscReal hull[TSL_CONTACT_MAX_FACE_NODES][TSL_CONTACT_MAX_FACE_NODES];
+} TslContactFace;
+
+/* N, dN/dxi and d2N/dxi2 of the face's nodes on the segment parameter xi = (1 + zeta)/2 (zeta the
+ * geometry's own coordinate on [-1, 1]); any real xi: the face extends beyond its ends. */
+void TslContactFaceShape(const TslContactFace *face, PetscReal xi, PetscReal N[], PetscReal dN[], PetscReal d2N[]);
+
+/* The row of a family (NULL when out of range), and the family with a catalogue geometry name
+ * (case-insensitive; -1 when contact does not support that face family). */
+const TslContactFace *TslContactFaceGet(TslContactFaceKind kind);
+PetscInt              TslContactFaceFind(const char *geometry_name);
+
+/* Position p[2] and tangent t[2] = dx/dxi (either may be NULL) of a face with node coordinates
+ * x[2*a + d] (nnode nodes, face order) at parameter xi (any real xi: the extended face). */
+PetscErrorCode TslContactFaceEvaluate(TslContactFaceKind kind, const PetscReal x[], PetscReal xi, PetscReal p[], PetscReal t[]);
+
+/* Closest point of p[2] on the extended (unsmoothed) face x[]: the root of (p - x(xi)) . t(xi) = 0 nearest
+ * to the projection on the chord m1 -> m2, by safeguarded Newton; *xi is unclamped, limited to [-1, 2]
+ * (beyond that the caller re-pairs and precision does not matter). Straight faces (order 1): the chord
+ * projection, exactly. */
+PetscErrorCode TslContactFaceProject(TslContactFaceKind kind, const PetscReal x[], const PetscReal p[], PetscReal *xi);
+
+/* Bounding box (xmin, ymin, xmax, ymax) of the face x[]: that of its Bernstein control points, which
+ * contains the curve. */
+PetscErrorCode TslContactFaceBox(TslContactFaceKind kind, const PetscReal x[], PetscReal box[4]);
+
+/* Tributary weights of the nodes of a secondary face, reference coordinates x[]:
+ *   w[a] = int N_a ds over the face (a length; line2: L/2, L/2; straight line3 with the midside node in
+ *   the middle: L/6, L/6, 2L/3, as the consistent nodal forces of a uniform pressure),
+ * and *length = int ds (may be NULL). Integrated with the family's Gauss rule: exact for straight faces
+ * (|t| a polynomial), to the rule's accuracy for curved ones. The contact area of a node is w times the
+ * thickness or 2 pi r of the node (TslContactOutput.area), summed over the faces that share it. */
+PetscErrorCode TslContactFaceIntegrate(TslContactFaceKind kind, const PetscReal x[], PetscReal w[], PetscReal *length);
 
 /* ---------------------------------------------------------------------------------------------------
  * Tables
@@ -114,19 +172,25 @@ typedef struct {
 
 typedef enum { TSL_CONTACT_OPEN = 0, TSL_CONTACT_STICK, TSL_CONTACT_SLIP } TslContactStatus;
 
-/* Input of one contact element. Node order: 0 = secondary s, 1 = m1, 2 = m2, then the optional
- * neighbour nodes used for smoothing: m0 (start of the previous segment m0 -> m1) if x_prev is given,
- * then m3 (end of the next segment m2 -> m3) if x_next is given. */
+/* Input of one contact element. Node order: 0 = secondary s, 1..nper = the main segment's nodes in face
+ * order (nper = nodes of the face family), then the optional neighbour nodes used for smoothing: the nodes
+ * of the previous segment other than m1 (the end it shares with this one), in that segment's face order,
+ * if x_prev is given, then those of the next segment other than m2, if x_next is given. For line2 that is
+ * s, m1, m2, m0, m3; for line3 s, m1, m2, m3 (midside), then p1, p3 of the previous and n2, n3 of the next
+ * segment. The neighbours are of the same family as the segment. */
 typedef struct {
-  TslKinematics     kin;             /* TSL_KIN_PLANE_STRAIN, TSL_KIN_PLANE_STRESS or TSL_KIN_AXISYMMETRIC */
-  PetscReal         thickness;       /* plane models (length); ignored for axisymmetry */
-  PetscReal         length;          /* tributary length of the secondary node on its own surface (reference) */
-  PetscReal         x[3][2];         /* reference coordinates of s, m1, m2 */
-  PetscReal         u[3][3];         /* current unknowns (u_x, u_y, theta) of s, m1, m2 */
-  const PetscReal  *x_prev, *u_prev; /* m0: reference coords [2], unknowns [3]; NULL at a surface end */
-  const PetscReal  *x_next, *u_next; /* m3: idem */
-  PetscReal         smoothing;       /* fraction s of the segment length rounded at each end, 0 <= s < 0.5 */
-  PetscReal         dt;              /* increment (time) for the dissipation rate; > 0 when friction heats */
+  TslKinematics      kin;                                  /* plane strain or stress, axisymmetric (with or without twist) */
+  TslContactFaceKind face;                                 /* family of the main segments (0 = line2) */
+  PetscReal          thickness;                            /* plane models (length); ignored for axisymmetry */
+  PetscReal          length;                               /* tributary length of the secondary node on its own surface (reference) */
+  PetscReal          x[1 + TSL_CONTACT_MAX_FACE_NODES][2]; /* reference coordinates of s and the segment's nodes */
+  PetscReal          u[1 + TSL_CONTACT_MAX_FACE_NODES][3]; /* current unknowns (u_x, u_y, theta) of the same */
+  /* the previous / the next segment's other nodes (see above): reference coordinates [nper-1][2] and
+   * unknowns [nper-1][3]; NULL at a surface end */
+  const PetscReal  *x_prev, *u_prev;
+  const PetscReal  *x_next, *u_next;
+  PetscReal         smoothing; /* fraction s of the segment parameter rounded at each end, 0 <= s < 0.5 */
+  PetscReal         dt;        /* increment (time) for the dissipation rate; > 0 when friction heats */
   TslContactHistory hist;
 } TslContactInput;
 
@@ -137,21 +201,28 @@ typedef struct {
  * unknowns are ignored. */
 PetscErrorCode TslContactProject(const TslContactInput *in, PetscReal *xi, PetscReal *g, PetscReal n[]);
 
+/* The main segment of an input at parameter xi (current coordinates): position x[2] and smoothed unit
+ * outward normal n[2] (either may be NULL). */
+PetscErrorCode TslContactSurfacePoint(const TslContactInput *in, PetscReal xi, PetscReal x[], PetscReal n[]);
+
 /* Which side of the segment an (unclamped) projection lies: -1 before m1 (xi < -tol), +1 beyond m2
  * (xi > 1 + tol), 0 on the segment. The caller re-pairs the node with the neighbouring segment on that side,
  * or, at a surface end, declares it out of contact (no force, no heat). */
 PetscInt TslContactProjectionSide(PetscReal xi, PetscReal tol);
 
 /* Re-expresses history parameters when the node moves to the neighbouring segment on `side` (+1 next,
- * -1 previous): xi' = (xi - 1) L_from / L_to for side +1, 1 + xi L_from / L_to for side -1, applied to
- * xi_old and xi_anchor so slip and sticking stress carry over. */
+ * -1 previous), to first order in the distance from the shared node: with L_from = |t| of the segment left
+ * and L_to = |t| of the segment entered, both at the shared node (the segments' lengths for line2),
+ * xi' = (xi - 1) L_from / L_to for side +1, 1 + xi L_from / L_to for side -1, applied to xi_old and
+ * xi_anchor so slip and sticking stress carry over. */
 PetscErrorCode TslContactHistoryTransfer(PetscInt side, PetscReal L_from, PetscReal L_to, TslContactHistory *h);
 
-/* Smoothed unit outward normal at parameter xi of segment x1 -> x2 (current coordinates, 2 each), blending
- * with the neighbouring segments' normals over the fraction s at each end (x0 = start of the previous
- * segment, x3 = end of the next segment, NULL at surface ends). The weight of the neighbour's normal is
- * w = h(1 - xi/s)/2 near m1 (h(t) = 3t^2 - 2t^3, clamped to [0,1]), so at the node both segments give the
- * normalised average normal with zero derivative: the normal field is C1 along the surface. */
+/* Smoothed unit outward normal at parameter xi of the straight segment x1 -> x2 (line2, current
+ * coordinates, 2 each), blending with the neighbouring segments' normals over the fraction s at each end
+ * (x0 = start of the previous segment, x3 = end of the next segment, NULL at surface ends). The weight of
+ * the neighbour's normal is w = h(1 - xi/s)/2 near m1 (h(t) = 3t^2 - 2t^3, clamped to [0,1]), so at the
+ * node both segments give the normalised average normal with zero derivative: the normal field is C1 along
+ * the surface. TslContactSurfacePoint does the same for any face family. */
 PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1[], const PetscReal x2[], const PetscReal x3[], PetscReal s,
                                         PetscReal xi, PetscReal n[]);
 
@@ -159,7 +230,7 @@ PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1
  * The contact element kernel
  * ------------------------------------------------------------------------------------------------- */
 typedef struct {
-  PetscInt         nnode;            /* 3 + (x_prev != NULL) + (x_next != NULL); R and K have 3*nnode rows */
+  PetscInt         nnode;            /* 1 + nper + (nper - 1) ((x_prev != NULL) + (x_next != NULL)); R and K have 3*nnode rows */
   PetscReal        xi;               /* projection used (= xi_raw unless beyond [-1, 2]) */
   PetscReal        xi_raw;           /* unclamped projection (see TslContactProjectionSide) */
   PetscInt         side;             /* TslContactProjectionSide(xi_raw, 0) */
@@ -167,7 +238,7 @@ typedef struct {
   PetscReal        gap;              /* g (length), negative = penetration */
   PetscReal        area;             /* A = length * thickness, or length * 2 pi r_s (reference r of s) */
   PetscReal        pressure;         /* CPRESS = pN >= 0 */
-  PetscReal        slip;             /* slip increment ds = L (xi - xi_old) (length), CSLIP increment */
+  PetscReal        slip;             /* slip increment ds = |t| (xi - xi_old) (length), CSLIP increment */
   PetscReal        shear;            /* CSHEAR = tT (signed like the slip it resists) */
   PetscReal        slip_dissipative; /* part of ds that dissipates (ds in LAGRANGE mode, plastic slip in PENALTY) */
   PetscReal        conductance;      /* k used */
@@ -182,11 +253,12 @@ typedef struct {
 /* Residual R[3*nnode] (internal - external: the contact force on a node enters with a minus sign, heat
  * flowing into a node with a minus sign) and consistent (unsymmetric) tangent K = dR/du (row-major,
  * 3*nnode x 3*nnode, may be NULL) of one node-to-segment contact element, plus diagnostics (out, may be
- * NULL). Node order as TslContactInput. With no neighbours (or s = 0 and no neighbours) this is the
- * 9-entry / 9x9 element of s, m1, m2.
- *   R_s  = -A (pN n - tT tau),             R_a  = +A N_a (pN n - tT tau),        a = m1, m2
+ * NULL). Node order as TslContactInput. Without neighbours this is the element of s and the segment's
+ * nodes (9 entries for line2, 12 for line3).
+ *   R_s  = -A (pN n - tT tau),             R_a  = +A N_a (pN n - tT tau),        a = the segment's nodes
  *   Rth_s = -A (q + f eta D),              Rth_a = +A N_a (q - (1 - f) eta D)
- * with N_1 = 1 - xi, N_2 = xi, q = k (theta_m - theta_s) + C [(theta_m - theta_Z)^4 - (theta_s - theta_Z)^4],
+ * with N_a the face's shape functions at xi (line2: 1 - xi, xi),
+ * q = k (theta_m - theta_s) + C [(theta_m - theta_Z)^4 - (theta_s - theta_Z)^4],
  * theta_m = N_a theta_a, D the dissipation rate per area. Beyond a segment end the element works on the
  * extended segment (xi outside [0,1], frozen only beyond [-1,2]); when out->side != 0 the caller must
  * re-pair or drop the node after convergence (see TslContactProjectionSide). */
@@ -201,8 +273,9 @@ PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHi
  * ------------------------------------------------------------------------------------------------- */
 typedef struct _n_TslContactBinGrid *TslContactBinGrid;
 
-/* Builds the grid over nseg segments, seg_x[4*i..4*i+3] = (x1, y1, x2, y2) in current coordinates, each box
- * inflated by margin (length, >= 0). The bin size is about the mean inflated box size, so a segment covers
+/* Builds the grid over nseg segments, seg_x[4*i..4*i+3] = two opposite corners of segment i's bounding box
+ * (x1, y1, x2, y2) in current coordinates: the end points of a straight segment, TslContactFaceBox of a
+ * curved one. Each box is inflated by margin (length, >= 0). The bin size is about the mean inflated box size, so a segment covers
  * O(1) bins. The grid copies what it needs; destroy with TslContactBinGridDestroy. */
 PetscErrorCode TslContactBinGridCreate(PetscInt nseg, const PetscReal seg_x[], PetscReal margin, TslContactBinGrid *grid);
 PetscErrorCode TslContactBinGridDestroy(TslContactBinGrid *grid);

@@ -223,19 +223,22 @@ typedef struct {
   char           adjust_set[TSL_NAME_LEN];
   TslLoc         loc; /* the data line */
 
-  /* Derived by the mesh module on rank 0 (NULL / 0 before): the main surface as segments (2D), the
-   * secondary nodes with their tributary lengths; after distribution each rank keeps the secondary
-   * nodes it owns and the whole main surface (whose nodes it holds as ghosts). */
-  PetscInt   nmain;
-  PetscInt  *main_node;             /* [2*nmain] node ids of each segment, main body on the left */
-  PetscInt  *main_prev, *main_next; /* [nmain] neighbouring segment, -1 at an end */
+  /* Derived by the mesh module on rank 0 (NULL / 0 before): the main surface as faces (2D: line2 or
+   * line3 segments), the secondary nodes with their tributary lengths; after distribution each rank keeps
+   * the secondary nodes it owns and the whole main surface (whose nodes it holds as ghosts). */
+  PetscInt  nmain;
+  PetscInt  nper;                   /* nodes per main face: 2 (line2) or 3 (line3), the same for all faces of the pair */
+  PetscInt  main_face;              /* face family of the main faces: a TslContactFaceKind (include/thermoslide/contact.h) */
+  PetscInt *main_node;              /* [nper*nmain] node ids of each face in face order (ends, then midside), main body on the
+                                       left of the first end -> the second end */
+  PetscInt  *main_prev, *main_next; /* [nmain] neighbouring face (sharing the first / the second end), -1 at an end */
+  PetscInt   main_element;          /* id of the element of the first main face (its material gives the default penalty) */
   PetscInt   nsec;
-  PetscInt  *sec_node;    /* [nsec] node ids */
-  PetscReal *sec_length;  /* [nsec] tributary length on the secondary surface (reference) */
+  PetscInt  *sec_node;    /* [nsec] node ids (corner and midside nodes alike) */
+  PetscReal *sec_length;  /* [nsec] tributary length on the secondary surface (reference): sum of int N_a ds over the node's faces */
   PetscReal  thickness;   /* out-of-plane thickness of the secondary elements (plane models) */
   PetscInt   kin;         /* TslKinematics of the secondary elements */
-  PetscReal  mean_length; /* mean main segment length (reference) */
-  PetscReal  penalty;     /* default normal penalty: 10 E / mean_length */
+  PetscReal  mean_length; /* mean main face length (reference, along the face) */
 } TslContactPair;
 
 typedef struct {

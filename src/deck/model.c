@@ -361,7 +361,7 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
   PetscCall(PackArray(p, &m->pairs, m->npair, sizeof(TslContactPair)));
   for (PetscInt i = 0; i < m->npair; i++) {
     TslContactPair *c = &m->pairs[i];
-    PetscCall(PackArray(p, &c->main_node, 2 * c->nmain, sizeof(PetscInt)));
+    PetscCall(PackArray(p, &c->main_node, c->nper * c->nmain, sizeof(PetscInt)));
     PetscCall(PackArray(p, &c->main_prev, c->nmain, sizeof(PetscInt)));
     PetscCall(PackArray(p, &c->main_next, c->nmain, sizeof(PetscInt)));
     PetscCall(PackArray(p, &c->sec_node, c->nsec, sizeof(PetscInt)));

@@ -1,6 +1,7 @@
 /* Partition the model read on rank 0 and send each rank its part (see include/thermoslide/mesh.h). */
 #include <thermoslide/mesh.h>
 #include <thermoslide/element.h>
+#include <thermoslide/contact.h>
 #include <metis.h>
 #include <string.h>
 
@@ -109,7 +110,7 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
     const TslContactPair *c    = &g->pairs[k];
     PetscBool             owns = PETSC_FALSE;
     for (PetscInt i = 0; i < c->nsec && !owns; i++) owns = (PetscBool)(owner[TslModelNodeIndex(g, c->sec_node[i])] == r);
-    for (PetscInt i = 0; owns && i < 2 * c->nmain; i++) {
+    for (PetscInt i = 0; owns && i < c->nper * c->nmain; i++) {
       PetscInt q = TslModelNodeIndex(g, c->main_node[i]);
       if (!mark[q]) mark[q] = 2;
     }
@@ -165,8 +166,31 @@ static PetscInt FaceNodes(const TslModel *g, PetscInt e, PetscInt f, PetscInt no
   return geom->face_nnode[f - 1];
 }
 
-/* Contact pairs in the solver's terms (rank 0, whole model): main surfaces as oriented segments with
- * their neighbours, secondary nodes with tributary lengths, thickness, kinematics, default penalty. */
+/* The contact face family (TslContactFaceKind) of face f of element position e, its nodes in face order
+ * (nodes[], *nf) and their reference coordinates x[2*a + d]. A face family contact does not support is a
+ * user error at the pair's data line. */
+static PetscErrorCode ContactFace(const TslModel *g, const TslContactPair *c, PetscInt e, PetscInt f, PetscInt nodes[], PetscInt *nf, PetscReal x[],
+                                  PetscInt *family)
+{
+  const TslGeometry *fg = TslElementTypeGet(g->elem_type[e])->geom->face_geom[f - 1];
+  char               loc[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBeginUser;
+  *nf     = FaceNodes(g, e, f, nodes);
+  *family = fg ? TslContactFaceFind(fg->name) : -1;
+  PetscCheck(*family >= 0 && TslContactFaceGet((TslContactFaceKind)*family)->geom->nnode == *nf, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "%s: contact on %s faces (%" PetscInt_FMT " nodes) is not supported yet", TslLocString(g, c->loc, loc, sizeof(loc)),
+             fg ? fg->name : "unknown", *nf);
+  PetscCheck(*nf <= TSL_CONTACT_MAX_FACE_NODES, PETSC_COMM_SELF, PETSC_ERR_PLIB, "contact face with too many nodes");
+  for (PetscInt a = 0; a < *nf; a++)
+    for (PetscInt d = 0; d < 2; d++) x[2 * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, nodes[a]) + d];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Contact pairs in the solver's terms (rank 0, whole model): main surfaces as oriented faces (line2 or
+ * line3 segments) with their neighbours, secondary nodes with tributary lengths (the integrals of the
+ * secondary faces' shape functions), thickness, kinematics. The default penalty is left to the contact
+ * set-up, which has the materials (src/physics/contact.c). */
 static PetscErrorCode PrepareContactPairs(TslModel *g)
 {
   char loc[PETSC_MAX_PATH_LEN + 32];
@@ -176,68 +200,64 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
     TslContactPair   *c    = &g->pairs[k];
     const TslSurface *main = &g->surfaces[TslModelFindSurface(g, c->main)];
     const TslSurface *sec  = &g->surfaces[TslModelFindSurface(g, c->secondary)];
-    PetscInt         *first, *perm, nsec = 0, e0 = -1, s;
-    PetscReal         Lsum = 0, E = 0;
+    PetscInt         *first, *perm, nsec = 0, e0 = -1, nf, family;
+    PetscInt          nodes[TSL_MAX_FACE_NODES];
+    PetscReal         Lsum = 0, x[2 * TSL_MAX_FACE_NODES], w[TSL_MAX_FACE_NODES], L;
 
     PetscCheck(c->type == TSL_CONTACT_NODE_TO_SURFACE, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                "%s: *CONTACT PAIR, TYPE=SURFACE TO SURFACE is not supported yet (use the default node-to-surface)",
                TslLocString(g, c->loc, loc, sizeof(loc)));
     PetscCheck(g->dim == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact between 3D elements is not supported yet",
                TslLocString(g, c->loc, loc, sizeof(loc)));
-    /* main segments */
-    c->nmain = main->n;
-    PetscCall(PetscMalloc1(2 * c->nmain, &c->main_node));
+    /* main faces: one family per pair (the first face's), nper nodes each in face order */
+    c->nmain        = main->n;
+    c->main_face    = TSL_CONTACT_FACE_LINE2;
+    c->main_element = main->n ? main->elem[0] : -1;
+    if (main->n) PetscCall(ContactFace(g, c, TslModelElementIndex(g, main->elem[0]), main->face[0], nodes, &nf, x, &c->main_face));
+    c->nper = TslContactFaceGet((TslContactFaceKind)c->main_face)->geom->nnode;
+    PetscCall(PetscMalloc1(c->nper * c->nmain, &c->main_node));
     PetscCall(PetscMalloc1(c->nmain, &c->main_prev));
     PetscCall(PetscMalloc1(c->nmain, &c->main_next));
     for (PetscInt i = 0; i < main->n; i++) {
-      PetscInt e  = TslModelElementIndex(g, main->elem[i]), nodes[TSL_MAX_FACE_NODES];
-      PetscInt nf = FaceNodes(g, e, main->face[i], nodes);
-      PetscCheck(nf == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact on faces with %" PetscInt_FMT " nodes is not supported yet",
-                 TslLocString(g, c->loc, loc, sizeof(loc)), nf);
-      c->main_node[2 * i] = nodes[0], c->main_node[2 * i + 1] = nodes[1];
+      PetscCall(ContactFace(g, c, TslModelElementIndex(g, main->elem[i]), main->face[i], nodes, &nf, x, &family));
+      PetscCheck(family == c->main_face, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                 "%s: the main surface %s mixes %s and %s faces: contact needs one face family per main surface",
+                 TslLocString(g, c->loc, loc, sizeof(loc)), c->main, TslContactFaceGet((TslContactFaceKind)c->main_face)->geom->name,
+                 TslContactFaceGet((TslContactFaceKind)family)->geom->name);
+      for (PetscInt a = 0; a < nf; a++) c->main_node[c->nper * i + a] = nodes[a];
       c->main_prev[i] = c->main_next[i] = -1;
-      {
-        const PetscReal *a = &g->node_xyz[3 * TslModelNodeIndex(g, nodes[0])], *b = &g->node_xyz[3 * TslModelNodeIndex(g, nodes[1])];
-        Lsum += PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
-      }
-      if (i == 0) e0 = main->elem[i];
+      PetscCall(TslContactFaceIntegrate((TslContactFaceKind)family, x, w, &L));
+      Lsum += L;
     }
-    /* neighbours: the segment that starts where this one ends */
+    /* neighbours: the face that starts where this one ends */
     PetscCall(PetscMalloc2(c->nmain, &first, c->nmain, &perm));
-    for (PetscInt i = 0; i < c->nmain; i++) first[i] = c->main_node[2 * i], perm[i] = i;
+    for (PetscInt i = 0; i < c->nmain; i++) first[i] = c->main_node[c->nper * i], perm[i] = i;
     PetscCall(PetscSortIntWithArray(c->nmain, first, perm));
     for (PetscInt i = 0; i < c->nmain; i++) {
       PetscInt at;
-      PetscCall(PetscFindInt(c->main_node[2 * i + 1], c->nmain, first, &at));
+      PetscCall(PetscFindInt(c->main_node[c->nper * i + 1], c->nmain, first, &at));
       if (at >= 0) c->main_next[i] = perm[at], c->main_prev[perm[at]] = i;
     }
     PetscCall(PetscFree2(first, perm));
-    s = ElementSection(g, e0);
-    if (s >= 0) E = g->materials[g->sections[s].material_index].prop[TSL_PROP_ELASTIC].value[0][0];
     c->mean_length = c->nmain ? Lsum / c->nmain : 0;
-    c->penalty     = c->mean_length > 0 ? 10.0 * E / c->mean_length : 0;
 
-    /* secondary nodes and their tributary lengths */
+    /* secondary nodes and their tributary lengths: int N_a ds over each face, corner and midside nodes alike
+     * (line3: L/6, L/6, 2L/3), so that a uniform pressure gives the consistent nodal forces */
     if (sec->kind == TSL_SURFACE_NODE) {
       c->nsec = sec->n;
       PetscCall(PetscMalloc1(c->nsec, &c->sec_node));
       PetscCall(PetscMalloc1(c->nsec, &c->sec_length));
       for (PetscInt i = 0; i < sec->n; i++) c->sec_node[i] = sec->elem[i], c->sec_length[i] = 1.0; /* node surfaces: unit area per node */
     } else {
-      PetscCall(PetscMalloc1(2 * sec->n, &c->sec_node));
-      PetscCall(PetscMalloc1(2 * sec->n, &c->sec_length));
+      PetscCall(PetscMalloc1(TSL_MAX_FACE_NODES * sec->n, &c->sec_node));
+      PetscCall(PetscMalloc1(TSL_MAX_FACE_NODES * sec->n, &c->sec_length));
       for (PetscInt i = 0; i < sec->n; i++) {
-        PetscInt         e = TslModelElementIndex(g, sec->elem[i]), nodes[TSL_MAX_FACE_NODES], nf = FaceNodes(g, e, sec->face[i], nodes);
-        const PetscReal *a, *b;
-        PetscReal        L;
-        PetscCheck(nf == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact on faces with %" PetscInt_FMT " nodes is not supported yet",
-                   TslLocString(g, c->loc, loc, sizeof(loc)), nf);
-        a = &g->node_xyz[3 * TslModelNodeIndex(g, nodes[0])], b = &g->node_xyz[3 * TslModelNodeIndex(g, nodes[1])];
-        L = PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
-        for (PetscInt a2 = 0; a2 < 2; a2++) c->sec_node[nsec] = nodes[a2], c->sec_length[nsec++] = 0.5 * L;
+        PetscCall(ContactFace(g, c, TslModelElementIndex(g, sec->elem[i]), sec->face[i], nodes, &nf, x, &family));
+        PetscCall(TslContactFaceIntegrate((TslContactFaceKind)family, x, w, NULL));
+        for (PetscInt a = 0; a < nf; a++) c->sec_node[nsec] = nodes[a], c->sec_length[nsec++] = w[a];
         if (i == 0) e0 = sec->elem[i];
       }
-      /* merge duplicates: a node shared by two facets gets both halves */
+      /* merge duplicates: a node shared by two facets gets both parts */
       PetscCall(PetscSortIntWithScalarArray(nsec, c->sec_node, c->sec_length));
       c->nsec = 0;
       for (PetscInt i = 0; i < nsec; i++) {

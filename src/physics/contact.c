@@ -1,6 +1,7 @@
 /* Finite-sliding node-to-surface contact in the assembly (2D: plane and axisymmetric models).
  *
- * Each secondary node owned by this rank is paired with one main segment (or none). All nodes of the
+ * Each secondary node owned by this rank is paired with one main segment (or none): a face of the main
+ * surface, line2 or line3, whose nodes (nper per face) the kernels take in face order. All nodes of the
  * main surface are ghosts on every rank that owns secondary nodes of the pair (see src/mesh/), so the
  * main-surface data a rank needs arrives with the ordinary ghost update in every Newton iteration, and
  * the contact blocks are inserted through the same constraint-aware path as element blocks (rows of
@@ -25,37 +26,62 @@
 #define TSL_CONTACT_XI_TOL     1e-9
 #define TSL_CONTACT_DEPART_TOL 1e-6
 
-/* Local nodes of a contact element in kernel order: s, m1, m2, [m0], [m3]. */
+/* Local nodes of a contact element in kernel order: s, the segment's nodes, then (smoothing) the nodes of
+ * the previous segment other than its end (shared with m1) and those of the next segment other than its
+ * start (shared with m2), each in face order. */
 static PetscInt ElementNodes(TslProblem p, const TslContactNode *cn, PetscInt nodes[TSL_CONTACT_MAX_NODES])
 {
   const TslContactSurface *cs = &p->csurf[cn->pair];
-  PetscInt                 n = 0, seg = cn->seg;
+  PetscInt                 n = 0, seg = cn->seg, np = cs->nper;
 
   nodes[n++] = cn->lnode;
-  nodes[n++] = cs->main_lnode[2 * seg];
-  nodes[n++] = cs->main_lnode[2 * seg + 1];
-  if (cs->smooth > 0 && cs->prev[seg] >= 0) nodes[n++] = cs->main_lnode[2 * cs->prev[seg]];
-  if (cs->smooth > 0 && cs->next[seg] >= 0) nodes[n++] = cs->main_lnode[2 * cs->next[seg] + 1];
+  for (PetscInt a = 0; a < np; a++) nodes[n++] = cs->main_lnode[np * seg + a];
+  if (cs->smooth > 0 && cs->prev[seg] >= 0)
+    for (PetscInt a = 0; a < np; a++)
+      if (a != 1) nodes[n++] = cs->main_lnode[np * cs->prev[seg] + a];
+  if (cs->smooth > 0 && cs->next[seg] >= 0)
+    for (PetscInt a = 1; a < np; a++) nodes[n++] = cs->main_lnode[np * cs->next[seg] + a];
   return n;
 }
 
-/* Reference coordinates (2) and current unknowns (u_x, u_y, theta) of a local node. */
-static void NodeData(TslProblem p, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[3])
+/* Reference coordinates (2) and current unknowns (u_x, u_y, theta) of a local node, the unknowns taken
+ * from their slots among the node's (cs->slot: a twist model has phi before theta). */
+static void NodeData(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[3])
 {
   for (PetscInt c = 0; c < 2; c++) x[c] = p->m->node_xyz[3 * l + c];
-  for (PetscInt c = 0; c < 3; c++) u[c] = xa ? PetscRealPart(xa[l * p->ndof + c]) : 0;
+  for (PetscInt c = 0; c < 3; c++) u[c] = xa ? PetscRealPart(xa[l * p->ndof + cs->slot[c]]) : 0;
 }
 
-static void CurrentPosition(TslProblem p, const PetscScalar *xa, PetscInt l, PetscReal y[2])
+static void CurrentPosition(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal y[2])
 {
   PetscReal x[2], u[3];
-  NodeData(p, xa, l, x, u);
+  NodeData(p, cs, xa, l, x, u);
   y[0] = x[0] + u[0], y[1] = x[1] + u[1];
+}
+
+/* Current coordinates x[2*a + d] of the nodes of main face seg. */
+static void FacePosition(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt seg, PetscReal x[])
+{
+  for (PetscInt a = 0; a < cs->nper; a++) CurrentPosition(p, cs, xa, cs->main_lnode[cs->nper * seg + a], &x[2 * a]);
+}
+
+/* The metric |dx/dxi| of main face seg at its start (xi = 0) or end (xi = 1), current configuration. */
+static PetscErrorCode FaceMetric(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt seg, PetscReal xi, PetscReal *L)
+{
+  PetscReal x[2 * TSL_CONTACT_MAX_FACE_NODES], t[2];
+
+  PetscFunctionBeginUser;
+  FacePosition(p, cs, xa, seg, x);
+  PetscCall(TslContactFaceEvaluate(cs->face, x, xi, NULL, t));
+  *L = PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat)
 {
-  PetscReal R[TSL_CONTACT_MAX_DOF], K[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF], xp[2], up[3], xn[2], un[3];
+  PetscReal R[TSL_CONTACT_MAX_DOF], K[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF];
+  PetscReal xp[2 * TSL_CONTACT_MAX_FACE_NODES], up[3 * TSL_CONTACT_MAX_FACE_NODES], xn[2 * TSL_CONTACT_MAX_FACE_NODES],
+      un[3 * TSL_CONTACT_MAX_FACE_NODES];
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->ncnode; i++) {
@@ -68,23 +94,27 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
     cs = &p->csurf[cn->pair];
     n  = ElementNodes(p, cn, nodes);
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt c = 0; c < 3; c++) ld[3 * a + c] = nodes[a] * p->ndof + c;
+      for (PetscInt c = 0; c < 3; c++) ld[3 * a + c] = nodes[a] * p->ndof + cs->slot[c];
     if (mode == ASM_PATTERN) {
       PetscCall(TslProblemInsert(p, mode, A, f, 3 * n, ld, NULL, NULL));
       continue;
     }
     PetscCall(PetscMemzero(&in, sizeof(in)));
     in.kin       = cs->kin;
+    in.face      = cs->face;
     in.thickness = cs->thickness;
     in.length    = cn->length;
-    for (PetscInt a = 0; a < 3; a++) NodeData(p, xa, nodes[a], in.x[a], in.u[a]);
-    if (cs->smooth > 0 && cs->prev[cn->seg] >= 0) {
-      NodeData(p, xa, nodes[3], xp, up);
-      in.x_prev = xp, in.u_prev = up;
-    }
-    if (cs->smooth > 0 && cs->next[cn->seg] >= 0) {
-      NodeData(p, xa, nodes[n - 1], xn, un);
-      in.x_next = xn, in.u_next = un;
+    {
+      PetscInt k = 0;
+      for (PetscInt a = 0; a <= cs->nper; a++) NodeData(p, cs, xa, nodes[k++], in.x[a], in.u[a]);
+      if (cs->smooth > 0 && cs->prev[cn->seg] >= 0) {
+        for (PetscInt j = 0; j < cs->nper - 1; j++) NodeData(p, cs, xa, nodes[k++], &xp[2 * j], &up[3 * j]);
+        in.x_prev = xp, in.u_prev = up;
+      }
+      if (cs->smooth > 0 && cs->next[cn->seg] >= 0) {
+        for (PetscInt j = 0; j < cs->nper - 1; j++) NodeData(p, cs, xa, nodes[k++], &xn[2 * j], &un[3 * j]);
+        in.x_next = xn, in.u_next = un;
+      }
     }
     in.smoothing = cs->smooth;
     in.dt        = p->dt > 0 ? p->dt : 1.0;
@@ -104,32 +134,33 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Moves a node's history from segment `from` to segment `to` along the surface (neighbour by neighbour);
- * returns PETSC_FALSE when `to` is not within a few segments (the history then starts afresh). */
-static PetscBool TransferHistory(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt from, PetscInt to, TslContactHistory *h)
+/* Moves a node's history from segment `from` to segment `to` along the surface (neighbour by neighbour),
+ * each step re-scaled by the metrics of the two faces at their shared node; *moved is PETSC_FALSE when
+ * `to` is not within a few segments (the history then starts afresh). */
+static PetscErrorCode TransferHistory(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt from, PetscInt to,
+                                      TslContactHistory *h, PetscBool *moved)
 {
-  for (PetscInt side = -1; side <= 1; side += 2) {
+  PetscFunctionBeginUser;
+  *moved = PETSC_FALSE;
+  for (PetscInt side = -1; side <= 1 && !*moved; side += 2) {
     TslContactHistory t = *h;
     PetscInt          s = from;
     for (PetscInt step = 0; step < 4 && s >= 0; step++) {
       PetscInt  nb = side > 0 ? cs->next[s] : cs->prev[s];
-      PetscReal a[2], b[2], c[2], d[2], Lf, Lt;
+      PetscReal Lf, Lt;
       if (nb < 0) break;
-      CurrentPosition(p, xa, cs->main_lnode[2 * s], a);
-      CurrentPosition(p, xa, cs->main_lnode[2 * s + 1], b);
-      CurrentPosition(p, xa, cs->main_lnode[2 * nb], c);
-      CurrentPosition(p, xa, cs->main_lnode[2 * nb + 1], d);
-      Lf = PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
-      Lt = PetscSqrtReal(PetscSqr(d[0] - c[0]) + PetscSqr(d[1] - c[1]));
-      PetscCallAbort(PETSC_COMM_SELF, TslContactHistoryTransfer(side, Lf, Lt, &t));
+      PetscCall(FaceMetric(p, cs, xa, s, side > 0 ? 1 : 0, &Lf));
+      PetscCall(FaceMetric(p, cs, xa, nb, side > 0 ? 0 : 1, &Lt));
+      PetscCall(TslContactHistoryTransfer(side, Lf, Lt, &t));
       s = nb;
       if (s == to) {
-        *h = t;
-        return PETSC_TRUE;
+        *h     = t;
+        *moved = PETSC_TRUE;
+        break;
       }
     }
   }
-  return PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Pairs every owned secondary node with its main segment at the state xa. *changed counts the nodes
@@ -143,16 +174,17 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
   PetscCall(PetscMalloc1(cap, &cand));
   for (PetscInt k = 0; k < p->ncsurf; k++) {
     TslContactSurface *cs = &p->csurf[k];
-    PetscReal         *seg_x;
+    const PetscInt     np = cs->nper;
+    PetscReal         *seg_box, *seg_x;
     TslContactBinGrid  grid;
 
     if (!cs->active) continue;
-    PetscCall(PetscMalloc1(4 * cs->nmain, &seg_x));
+    PetscCall(PetscMalloc2(4 * cs->nmain, &seg_box, 2 * np * cs->nmain, &seg_x));
     for (PetscInt s = 0; s < cs->nmain; s++) {
-      CurrentPosition(p, xa, cs->main_lnode[2 * s], &seg_x[4 * s]);
-      CurrentPosition(p, xa, cs->main_lnode[2 * s + 1], &seg_x[4 * s + 2]);
+      FacePosition(p, cs, xa, s, &seg_x[2 * np * s]);
+      PetscCall(TslContactFaceBox(cs->face, &seg_x[2 * np * s], &seg_box[4 * s]));
     }
-    PetscCall(TslContactBinGridCreate(cs->nmain, seg_x, cs->search_radius, &grid));
+    PetscCall(TslContactBinGridCreate(cs->nmain, seg_box, cs->search_radius, &grid));
     for (PetscInt i = 0; i < p->ncnode; i++) {
       TslContactNode *cn = &p->cnode[i];
       PetscReal       y[2], best_d = PETSC_MAX_REAL, best_xi = 0;
@@ -160,7 +192,7 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
       PetscBool       best_inside = PETSC_FALSE;
 
       if (cn->pair != k) continue;
-      CurrentPosition(p, xa, cn->lnode, y);
+      CurrentPosition(p, cs, xa, cn->lnode, y);
       PetscCall(TslContactBinGridQuery(grid, y, cs->search_radius, cap, cand, &ncand, NULL));
       if (ncand > cap) {
         cap = ncand;
@@ -169,19 +201,21 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
         PetscCall(TslContactBinGridQuery(grid, y, cs->search_radius, cap, cand, &ncand, NULL));
       }
       for (PetscInt c = 0; c < ncand; c++) {
-        const PetscReal *a = &seg_x[4 * cand[c]], *b = &seg_x[4 * cand[c] + 2];
-        PetscReal        t[2] = {b[0] - a[0], b[1] - a[1]}, L2 = t[0] * t[0] + t[1] * t[1], xi, xc, q[2], dist, gap;
+        const PetscReal *x  = &seg_x[2 * np * cand[c]];
+        PetscReal        L2 = PetscSqr(x[2] - x[0]) + PetscSqr(x[3] - x[1]), xi, xc, q[2], t[2], dist, gap;
         PetscBool        inside;
         if (L2 <= 0) continue;
-        xi = ((y[0] - a[0]) * t[0] + (y[1] - a[1]) * t[1]) / L2;
+        /* closest point on the face (the chord projection for a straight one) */
+        PetscCall(TslContactFaceProject(cs->face, x, y, &xi));
         /* tolerances relative to the segment: a node on a segment end stays "inside" whatever the
          * round-off of coordinates far from the origin, and equal distances are a tie (first wins) */
         inside = (PetscBool)(xi >= -TSL_CONTACT_XI_TOL && xi <= 1 + TSL_CONTACT_XI_TOL);
         xc     = PetscMin(1, PetscMax(0, xi));
-        q[0] = a[0] + xc * t[0] - y[0], q[1] = a[1] + xc * t[1] - y[1];
+        PetscCall(TslContactFaceEvaluate(cs->face, x, xc, q, t));
+        q[0] -= y[0], q[1] -= y[1];
         dist = PetscSqrtReal(q[0] * q[0] + q[1] * q[1]);
-        /* outward normal (t_y, -t_x)/L: body of the main surface on the left of the segment */
-        gap = ((y[0] - a[0] - xc * t[0]) * t[1] - (y[1] - a[1] - xc * t[1]) * t[0]) / PetscSqrtReal(L2);
+        /* outward normal (t_y, -t_x)/|t|: body of the main surface on the left of the segment */
+        gap = (-q[0] * t[1] + q[1] * t[0]) / PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
         if (gap < -cs->search_radius) continue; /* behind the surface: another body, not a contact */
         if ((inside && !best_inside) || (inside == best_inside && dist < best_d - TSL_CONTACT_XI_TOL * PetscSqrtReal(L2))) {
           best = cand[c], best_d = dist, best_xi = xi, best_inside = inside;
@@ -190,9 +224,11 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
       /* beyond an end of the main surface: out of contact */
       if (best >= 0 && !best_inside && ((best_xi < 0 && cs->prev[best] < 0) || (best_xi > 1 && cs->next[best] < 0))) best = -1;
       if (best != cn->seg) {
+        PetscBool moved = PETSC_FALSE;
+
         (*changed)++;
         /* the history follows the node to a nearby segment; a new contact starts afresh */
-        PetscBool moved = (PetscBool)(best >= 0 && cn->seg >= 0 && TransferHistory(p, cs, xa, cn->seg, best, &cn->hist));
+        if (best >= 0 && cn->seg >= 0) PetscCall(TransferHistory(p, cs, xa, cn->seg, best, &cn->hist, &moved));
         if (best >= 0 && !moved) {
           cn->hist.xi_old = cn->hist.xi_anchor = PetscMin(1, PetscMax(0, best_xi));
           cn->hist.lambda                      = 0;
@@ -201,7 +237,7 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
       }
     }
     PetscCall(TslContactBinGridDestroy(&grid));
-    PetscCall(PetscFree(seg_x));
+    PetscCall(PetscFree2(seg_box, seg_x));
   }
   PetscCall(PetscFree(cand));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -343,8 +379,8 @@ PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The contact law of an interaction, in the kernel's terms. */
-static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscReal seg_length, TslContactLaw *law)
+/* The contact law of an interaction, in the kernel's terms; penalty = the default normal penalty. */
+static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscReal seg_length, PetscReal penalty, TslContactLaw *law)
 {
   const TslModel       *m  = p->m;
   const TslInteraction *it = &m->interactions[pair->interaction_index];
@@ -354,7 +390,7 @@ static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscRe
   PetscCall(TslContactLawSetDefaults(law));
   law->normal =
       it->behavior.given && it->behavior.enforcement == TSL_CONTACT_AUGMENTED_LAGRANGE ? TSL_CONTACT_NORMAL_AUGMENTED : TSL_CONTACT_NORMAL_PENALTY;
-  law->eps_n = it->behavior.given && it->behavior.penalty_stiffness > 0 ? it->behavior.penalty_stiffness : pair->penalty;
+  law->eps_n = it->behavior.given && it->behavior.penalty_stiffness > 0 ? it->behavior.penalty_stiffness : penalty;
   PetscCheck(!(it->friction.given && it->friction.rough), PETSC_COMM_SELF, PETSC_ERR_SUP, "%s: *FRICTION, ROUGH is not supported yet",
              TslLocString(m, it->friction.loc, loc, sizeof(loc)));
   if (it->friction.given && it->friction.mu > 0) {
@@ -407,7 +443,7 @@ static PetscErrorCode ReportPartition(TslProblem p)
     const TslContactPair *c       = &m->pairs[k];
     PetscInt              mine[2] = {c->nsec > 0, 0}, *all;
     char                  line[2][256];
-    for (PetscInt i = 0; i < 2 * c->nmain && !mine[1]; i++) {
+    for (PetscInt i = 0; i < c->nper * c->nmain && !mine[1]; i++) {
       PetscInt l = TslModelNodeIndex(m, c->main_node[i]);
       mine[1]    = (PetscInt)(l >= 0 && l < p->nown);
     }
@@ -429,10 +465,44 @@ static PetscErrorCode ReportPartition(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Young's modulus of local element e: the only place contact reads a material. Materials are tables
+ * in temperature: the first *ELASTIC row, the value the mesh code used to take. */
+static PetscReal ElementModulus(TslProblem p, PetscInt e)
+{
+  return p->esec[e].mat->prop[TSL_PROP_ELASTIC].value[0][0];
+}
+
+/* Collective. The default normal penalty of each pair, 10 E / (mean main face length), E the Young's
+ * modulus of the element of the pair's first main face. Only the rank that holds that element knows its
+ * material: the others contribute -1 to a maximum over the ranks (E > 0 is checked at set-up). */
+static PetscErrorCode DefaultPenalties(TslProblem p, PetscReal penalty[])
+{
+  const TslModel *m = p->m;
+  PetscReal      *E, *Eall;
+
+  PetscFunctionBeginUser;
+  if (!m->npair) PetscFunctionReturn(PETSC_SUCCESS); /* every rank has all pairs */
+  PetscCall(PetscMalloc2(m->npair, &E, m->npair, &Eall));
+  for (PetscInt k = 0; k < m->npair; k++) {
+    PetscInt e = m->pairs[k].main_element >= 0 ? TslModelElementIndex(m, m->pairs[k].main_element) : -1;
+    E[k]       = e >= 0 ? ElementModulus(p, e) : -1;
+  }
+  PetscCall(MPIU_Allreduce(E, Eall, (PetscMPIInt)m->npair, MPIU_REAL, MPIU_MAX, p->comm));
+  for (PetscInt k = 0; k < m->npair; k++) {
+    const TslContactPair *pair = &m->pairs[k];
+    penalty[k]                 = pair->mean_length > 0 ? 10.0 * PetscMax(Eall[k], 0) / pair->mean_length : 0;
+    PetscCall(PetscInfo(NULL, "contact pair %" PetscInt_FMT ": default normal penalty %g = 10 E / mean main face length (E %g, length %g)\n", k + 1,
+                        (double)penalty[k], (double)Eall[k], (double)pair->mean_length));
+  }
+  PetscCall(PetscFree2(E, Eall));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemContactSetUp(TslProblem p)
 {
   const TslModel *m = p->m;
   PetscInt        n = 0;
+  PetscReal      *penalty;
 
   PetscFunctionBeginUser;
   p->augment_tol = 1e-3;
@@ -440,6 +510,8 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_contact_augment_tol", "augmented Lagrange: multiplier change that ends the augmentations", 0,
                            PETSC_TRUE, 1, PETSC_FALSE, &p->augment_tol));
   PetscOptionsEnd();
+  PetscCall(PetscMalloc1(m->npair + 1, &penalty));
+  PetscCall(DefaultPenalties(p, penalty));
   p->ncsurf = m->npair;
   PetscCall(PetscCalloc1(m->npair, &p->csurf));
   for (PetscInt k = 0; k < m->npair; k++) n += m->pairs[k].nsec;
@@ -447,23 +519,42 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
   for (PetscInt k = 0; k < m->npair; k++) {
     const TslContactPair *pair = &m->pairs[k];
     TslContactSurface    *cs   = &p->csurf[k];
+    const TslContactFace *face = TslContactFaceGet((TslContactFaceKind)pair->main_face);
+    char                  loc[PETSC_MAX_PATH_LEN + 32];
 
+    PetscCheck(face && face->geom->nnode == pair->nper, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "contact pair %" PetscInt_FMT ": face family %" PetscInt_FMT " does not have %" PetscInt_FMT " nodes", k + 1, pair->main_face,
+               pair->nper);
     cs->kin       = (TslKinematics)pair->kin;
+    cs->face      = (TslContactFaceKind)pair->main_face;
+    cs->nper      = pair->nper;
     cs->thickness = pair->thickness;
     cs->smooth    = pair->smooth;
     cs->nmain     = pair->nmain;
     cs->active    = (PetscBool)(pair->nsec > 0);
-    PetscCall(PetscMalloc3(2 * pair->nmain, &cs->main_lnode, pair->nmain, &cs->prev, pair->nmain, &cs->next));
+    PetscCall(PetscMalloc3(cs->nper * pair->nmain, &cs->main_lnode, pair->nmain, &cs->prev, pair->nmain, &cs->next));
     for (PetscInt s = 0; s < pair->nmain; s++) {
       cs->prev[s] = pair->main_prev[s];
       cs->next[s] = pair->main_next[s];
-      for (PetscInt a = 0; a < 2; a++) {
-        cs->main_lnode[2 * s + a] = TslModelNodeIndex(m, pair->main_node[2 * s + a]);
-        PetscCheck(!cs->active || cs->main_lnode[2 * s + a] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "main-surface node %" PetscInt_FMT " is not local",
-                   pair->main_node[2 * s + a]);
+      for (PetscInt a = 0; a < cs->nper; a++) {
+        PetscInt i = cs->nper * s + a;
+
+        cs->main_lnode[i] = TslModelNodeIndex(m, pair->main_node[i]);
+        PetscCheck(!cs->active || cs->main_lnode[i] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "main-surface node %" PetscInt_FMT " is not local",
+                   pair->main_node[i]);
       }
     }
-    PetscCall(SetUpLaw(p, pair, pair->mean_length, &cs->law));
+    PetscCall(SetUpLaw(p, pair, pair->mean_length, penalty[k], &cs->law));
+    /* the kernels see (u_x, u_y, theta) per node; a twist model has phi (dof 5) among them too, which
+     * frictionless contact does not involve, and friction would need the circumferential slip */
+    cs->slot[0] = TslProblemDofSlot(p, 1);
+    cs->slot[1] = TslProblemDofSlot(p, 2);
+    cs->slot[2] = TslProblemDofSlot(p, 11);
+    PetscCheck(cs->slot[0] >= 0 && cs->slot[1] >= 0 && cs->slot[2] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "contact needs the displacements 1, 2 and the temperature 11 among the nodal unknowns");
+    PetscCheck(TslProblemDofSlot(p, 5) < 0 || cs->law.mu == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "%s: friction with twist elements (CGAX): circumferential slip is not supported yet (frictionless contact is)",
+               TslLocString(m, pair->loc, loc, sizeof(loc)));
     /* candidates within one mean segment length, or the largest tabulated clearance */
     cs->search_radius = pair->mean_length;
     if (cs->law.conductance == TSL_CONTACT_CONDUCTANCE_CLEARANCE) cs->search_radius = PetscMax(cs->search_radius, cs->law.k_arg[cs->law.k_n - 1]);
@@ -478,6 +569,7 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
                  pair->sec_node[i]);
     }
   }
+  PetscCall(PetscFree(penalty));
   PetscCall(ReportPartition(p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

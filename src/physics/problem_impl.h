@@ -8,13 +8,15 @@
 /* One contact pair on this rank: the law and the main surface (all its nodes are local here when the
  * rank owns secondary nodes of the pair; active is false otherwise). */
 typedef struct {
-  TslContactLaw law;
-  PetscBool     active;
-  PetscInt      nmain;
-  PetscInt     *main_lnode;  /* [2*nmain] local nodes of each segment, main body on the left */
-  PetscInt     *prev, *next; /* [nmain] neighbouring segments, -1 at the ends */
-  PetscReal     smooth, thickness, search_radius;
-  TslKinematics kin;
+  TslContactLaw      law;
+  PetscBool          active;
+  PetscInt           nmain, nper; /* main faces, nodes per face */
+  TslContactFaceKind face;        /* family of the main faces */
+  PetscInt          *main_lnode;  /* [nper*nmain] local nodes of each face in face order, main body on the left */
+  PetscInt          *prev, *next; /* [nmain] neighbouring faces, -1 at the ends */
+  PetscInt           slot[3];     /* slots of u_x, u_y and theta among a node's unknowns */
+  PetscReal          smooth, thickness, search_radius;
+  TslKinematics      kin;
 } TslContactSurface;
 
 /* A secondary node owned by this rank: its pairing and history (current and committed). */
@@ -42,8 +44,8 @@ typedef struct {
 typedef struct {
   PetscInt        elem, face; /* local element, face 1..6 (0: body) */
   TslFaceLoadKind kind;
-  TslLoadValue value;    /* pressure, flux or film coefficient */
-  TslLoadValue sink;     /* film sink temperature */
+  TslLoadValue    value;    /* pressure, flux or film coefficient */
+  TslLoadValue    sink;     /* film sink temperature */
   PetscInt        film_amp; /* amplitude scaling the film coefficient, or -1 */
   PetscInt        seq;      /* order of definition (later replaces earlier) */
 } TslFaceRecord;
@@ -55,7 +57,7 @@ struct _p_TslProblem {
   /* dof layout, from the element rows: ndof unknowns per node, the dialect's number of each
    * (node_dof[], theta last), nu of them displacements */
   PetscInt ndof, nu, node_dof[TSL_MAX_NODE_DOF];
-  PetscInt  rstart;              /* first owned global dof */
+  PetscInt rstart; /* first owned global dof */
 
   Vec                    X, Xold, Xl, Fl; /* Xl, Fl: ghosted work vectors */
   Vec                    Rraw;            /* unconstrained residual of the last post-processed state */
@@ -63,25 +65,25 @@ struct _p_TslProblem {
   ISLocalToGlobalMapping l2g;
   IS                     is_u, is_theta;
 
-  PetscInt           *elem_lnode;   /* local node of each element node (model elem_ptr layout) */
-  TslElementSection  *esec;         /* [nelem] material and thickness of each element */
-  PetscReal          *theta_init;   /* [nn] */
-  PetscReal           row_scale[2]; /* constraint-row scale for displacement and temperature dofs */
+  PetscInt          *elem_lnode;   /* local node of each element node (model elem_ptr layout) */
+  TslElementSection *esec;         /* [nelem] material and thickness of each element */
+  PetscReal         *theta_init;   /* [nn] */
+  PetscReal          row_scale[2]; /* constraint-row scale for displacement and temperature dofs */
 
   /* step state */
   PetscInt      step;
   PetscBool     steady;
   TslAmpDefault amp_default;
   PetscReal     period, t, dt, ttot;
-  PetscReal     shift; /* capacity rate factor chosen by the solver: 1/dt (backward Euler) or 0 (steady) */
+  PetscReal     shift;           /* capacity rate factor chosen by the solver: 1/dt (backward Euler) or 0 (steady) */
   PetscReal     step_start_ttot; /* total time at the start of the step */
   PetscBool    *amp_active;      /* [namplitude] followed by some load of the step (any rank) */
 
-  TslLoadValue *bc;    /* [nn*ndof] prescribed values (owned and ghost dofs) */
-  TslLoadValue *nload; /* [nn*ndof] nodal loads (CLOAD, CFLUX), owned dofs only */
-  PetscInt         nface, face_seq;
-  TslFaceRecord   *face;       /* sorted by element */
-  PetscInt        *face_start; /* [nelem+1] CSR over face[] */
+  TslLoadValue  *bc;    /* [nn*ndof] prescribed values (owned and ghost dofs) */
+  TslLoadValue  *nload; /* [nn*ndof] nodal loads (CLOAD, CFLUX), owned dofs only */
+  PetscInt       nface, face_seq;
+  TslFaceRecord *face;       /* sorted by element */
+  PetscInt      *face_start; /* [nelem+1] CSR over face[] */
 
   /* contact */
   PetscInt           ncsurf, ncnode;
