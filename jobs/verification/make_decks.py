@@ -179,8 +179,9 @@ def loads_multistep():
 
 
 # Element families of the 2D deck types (the digits of the type name) and what the generated meshes need:
-# faces of the bottom and top edge of a grid cell. Triangles split each cell along its (n1, n3) diagonal
-# into A = (n1, n2, n3) (bottom edge S1) and B = (n1, n3, n4) (top edge S2).
+# faces of the bottom and top edge of a grid cell. Triangles split each cell along a diagonal into A
+# (bottom edge S1) and B (top edge S2): (n1, n2, n3) and (n1, n3, n4), or, mirrored, (n1, n2, n4) and
+# (n2, n3, n4).
 FAMILIES_2D = {"3": ("tri", 1), "4": ("quad", 1), "6": ("tri", 2), "8": ("quad", 2)}
 
 
@@ -191,8 +192,10 @@ def family_of(typ):
     return shape, order, m.group(1)
 
 
-def mesh2d(nx, ny, x0, x1, y0, y1, shape, order, nid0=0, eid0=0):
+def mesh2d(nx, ny, x0, x1, y0, y1, shape, order, nid0=0, eid0=0, mirror=None):
     """A structured nx x ny grid of cells as quads or triangles of order 1 or 2 (Abaqus node order).
+    Triangles: cells left of x = mirror are cut along (n1, n3), cells right of it along (n2, n4), so that
+    the mesh is symmetric about x = mirror.
     Returns nodes [(id, x, y)], elems [(id, n...)], and per cell row j the bottom and top elements:
     rows[j] = ([bottom-edge elements], [top-edge elements]) with the faces given by faces()."""
     step = order
@@ -214,9 +217,13 @@ def mesh2d(nx, ny, x0, x1, y0, y1, shape, order, nid0=0, eid0=0):
                 e += 1
                 elems.append((e,) + tuple(conn))
                 bottom.append(e), top.append(e)
+            elif mirror is not None and x0 + (x1 - x0) * (i + 0.5) / nx > mirror:
+                a = [c1, c2, c4] + ([mids["b"], mids["c"], mids["l"]] if order == 2 else [])   # bottom edge S1
+                b = [c2, c3, c4] + ([mids["r"], mids["t"], mids["c"]] if order == 2 else [])   # top edge S2
             else:
                 a = [c1, c2, c3] + ([mids["b"], mids["r"], mids["c"]] if order == 2 else [])
                 b = [c1, c3, c4] + ([mids["c"], mids["t"], mids["l"]] if order == 2 else [])
+            if shape == "tri":
                 elems.append((e + 1,) + tuple(a))
                 elems.append((e + 2,) + tuple(b))
                 bottom.append(e + 1), top.append(e + 2)
@@ -255,8 +262,8 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
     typ = typ.upper()
     shape, order, kin = family_of(typ)
     axi = kin == "AX"
-    bnodes, belems, brows = mesh2d(12, 2, 0.0, 6.0, 0.0, 1.25, shape, order)
-    tnodes, telems, trows = mesh2d(4, 6, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000)
+    bnodes, belems, brows = mesh2d(12, 2, 0.0, 6.0, 0.0, 1.25, shape, order, mirror=3.0)
+    tnodes, telems, trows = mesh2d(4, 6, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000, mirror=3.0)
     fb, ft = faces(shape)
     base = [n[0] for n in bnodes if abs(n[2]) < 1e-12]
     topface = [n[0] for n in tnodes if abs(n[2] - 1.5) < 1e-12]
@@ -394,9 +401,9 @@ def contact_jacobian():
 
 if __name__ == "__main__":
     import sys
-    if len(sys.argv) == 5 and sys.argv[1] == "--sliding":
-        # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR
-        sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4])
+    if len(sys.argv) in (5, 6) and sys.argv[1] == "--sliding":
+        # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR [--auglagr]
+        sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr=sys.argv[5:] == ["--auglagr"])
         sys.exit(0)
     contact_jacobian()
     for series in ("conductance", "radiation", "friction"):

@@ -25,10 +25,12 @@ Any 2D type (make_decks.py --sliding TYPE SERIES): triangles and second-order me
 Axisymmetric types (job name *_cax*): the rings of make_decks.py (r = 2.5 - y, z = x); the results are
 turned back into the planar picture (x = z, y = 2.5 - r) so that every check reads the same. Friction on
 rings: the inner ring's hoop stiffness takes part of the applied radial force, so the interface force N
-is measured (the base's axial reaction while slipping = mu N) and the checks are dissipation = mu N x
-slip path 6 (0.1 %), absorbed = eta x dissipation, final temperature = absorbed / (rho c V) with the
-ring volume V = pi (16 x 2.5 - 10.75) = 29.25 pi (0.1 %); the applied force 211.6 makes N about 200,
-so the dissipation is 120 within 1 %.
+is measured (the base's axial reaction while slipping = mu N, averaged over a window of the first slide)
+and the checks are dissipation = mu N x slip path 6 (0.5 %: N drifts by up to 1 % along the path), absorbed = eta x dissipation, final temperature = absorbed / (rho c V) with the
+ring volume V = pi (16 x 2.5 - 10.75) = 29.25 pi (0.1 %); the applied force 211.6 makes N about 200
+(the share the ring's hoop stiffness takes depends a little on the element: 196.5 with quadratic rings),
+so the dissipation is 120 within 2 %. Second-order meshes (job *_cpe8t, *_cax6mt, ...): the interface
+averages use Simpson weights over the line3 faces.
 With AUGMENTED LAGRANGE normal contact (job name *_auglagr_*) the penetration at the end of step 4
 must also be below 1 % of the penalty method's p / eps_n (eps_n = 10 E / 0.5).
 usage: check_sliding.py OUTDIR JOB conductance|radiation|friction
@@ -46,6 +48,7 @@ ids, xyz, h = r.node_ids, r.xyz, r.history
 small = ids > 1000
 large = ~small
 axi = "_cax" in job
+quadratic = bool(__import__("re").search(r"_c(pe|ps|ax|peg|gax)[68]", job))
 R_AXI = 2.5
 if axi:
     # back to the planar picture: x = z, y = R - r; U and RF likewise (u_x = u_z, u_y = -u_r)
@@ -75,8 +78,9 @@ if series == "friction" and axi:
     print("friction force while slipping %.6g (spread %.2g), interface force N = %.6g" % (friction, (max(fr) - min(fr)) / friction, friction / 0.1))
     volume = np.pi * (16 * R_AXI - 10.75)
     dis = h["friction_dissipation_total"][-1]
-    check("total frictional dissipation = friction force x slip path 6", dis, friction * 6.0, 1e-3, relative=True)
-    check("total frictional dissipation (N about 200: 120)", dis, 120.0, 1e-2, relative=True)
+    # N drifts by about 1 % as the ring slides over a triangle mesh: the force is the mean of a window
+    check("total frictional dissipation = friction force x slip path 6", dis, friction * 6.0, 5e-3, relative=True)
+    check("total frictional dissipation (N about 200: 120)", dis, 120.0, 2e-2, relative=True)
     check("heat absorbed by the rings (eta = 0.5)", h["friction_heat_total"][-1], 0.5 * dis, 1e-3, relative=True)
     nt = r.field("NT")[:, 0]
     check("final temperature, coldest node (absorbed / 29.25 pi)", nt.min(), 0.5 * dis / volume, 1e-3, relative=True)
@@ -120,8 +124,22 @@ def interface(frame):
     sec = sorted([i for i in range(len(ids)) if small[i] and abs(xyz[i, 1] - y0) < 1e-9], key=lambda i: xyz[i, 0])
     top = sorted([i for i in range(len(ids)) if large[i] and abs(xyz[i, 1] - y0) < 1e-9], key=lambda i: xyz[i, 0])
     xm = np.array([xyz[i, 0] + u[i, 0] for i in top])
-    tm = np.interp([xyz[i, 0] + u[i, 0] for i in sec], xm, nt[top])
-    w = np.array([0.5 if k in (0, len(sec) - 1) else 1.0 for k in range(len(sec))])  # uniform spacing
+    xs = [xyz[i, 0] + u[i, 0] for i in sec]
+    if quadratic:  # the main temperature is quadratic along each line3 face (nodes k, k+1, k+2, k even)
+        tm = []
+        for x in xs:
+            k = min(max(0, 2 * ((int(np.searchsorted(xm, x)) - 1) // 2)), len(xm) - 3)
+            xa, xb, xc = xm[k:k + 3]
+            ta, tb, tc = nt[top][k:k + 3]
+            tm.append(ta * (x - xb) * (x - xc) / ((xa - xb) * (xa - xc)) + tb * (x - xa) * (x - xc) / ((xb - xa) * (xb - xc))
+                      + tc * (x - xa) * (x - xb) / ((xc - xa) * (xc - xb)))
+        tm = np.array(tm)
+    else:
+        tm = np.interp(xs, xm, nt[top])
+    if quadratic:  # line3 faces: Simpson weights (corner, midside, corner, ...)
+        w = np.array([1.0 if k in (0, len(sec) - 1) else (4.0 if k % 2 else 2.0) for k in range(len(sec))])
+    else:  # line2 faces, uniform spacing
+        w = np.array([0.5 if k in (0, len(sec) - 1) else 1.0 for k in range(len(sec))])
     return nt[sec], tm, cp[sec], q[sec], w
 
 
