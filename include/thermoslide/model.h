@@ -70,6 +70,7 @@ typedef struct {
   char      material[TSL_NAME_LEN];
   PetscInt  material_index; /* resolved by TslModelCheck, index into materials[] */
   PetscReal thickness;      /* data line; plane elements' out-of-plane thickness (default 1) */
+  TslTarget ref_node;       /* REF NODE= (generalized plane strain): a node id or a node set of one node; id -1 and no set: none */
   TslLoc    loc;
 } TslSection;
 

@@ -187,7 +187,7 @@ FAMILIES_2D = {"3": ("tri", 1), "4": ("quad", 1), "6": ("tri", 2), "8": ("quad",
 
 def family_of(typ):
     """(shape, order, kinematics) of a 2D type name: CPE4RT -> ("quad", 1, "PE")."""
-    m = re.match(r"C(PE|PS|AX)(\d)", typ.upper())
+    m = re.match(r"C(PEG|PE|PS|AX)(\d)", typ.upper())
     shape, order = FAMILIES_2D[m.group(2)]
     return shape, order, m.group(1)
 
@@ -254,7 +254,9 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
     start; both have 24 cells, so slabs along y put them on different ranks.
     series: conductance (pressure-dependent gap conductance, 5 steps), radiation (gap radiation,
     5 steps), friction (Lagrange friction and frictional heating, 3 steps).
-    typ: any 2D type of the catalogue (CPE*, CPS*, CAX*): triangles split each cell, second-order
+    typ: any 2D type of the catalogue (CPE*, CPEG*, CPS*, CAX*): triangles split each cell, second-order
+    types get midside nodes, generalized plane strain types a reference node per block (9001, 9002:
+    free, so each block expands out of plane freely; the in-plane problem is that of plane strain),
     types get midside nodes, axisymmetric types the rings described at R_AXI (slide along z, press
     along r; the applied pressure scaled by r_interface / r_face so that the interface sees 100; the
     friction series' radial force 211.6, of which the inner ring's hoop stiffness takes about 5 %, so
@@ -282,7 +284,10 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
             nset("BASE", base) + nset("TOPFACE", topface) + elset("MAINE", main_elems) + elset("SECE", sec_elems) +
             elset("PRESSED", pressed) + elset("FILMED", filmed) +
             "*SURFACE, NAME=MAIN, TYPE=ELEMENT\n MAINE, S%s\n*SURFACE, NAME=SECONDARY, TYPE=ELEMENT\n SECE, S%s\n" % (ft, fb) + MAT +
-            "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n 1.0\n")
+            (("*NODE, NSET=REFS\n 9001, 3.0, 0.0\n 9002, 3.0, 1.375\n"
+              "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL, REF NODE=9001\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL, REF NODE=9002\n 1.0\n")
+             if kin == "PEG" else
+             "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n 1.0\n"))
     if series == "conductance":
         text += "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
         if auglagr:

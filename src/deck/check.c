@@ -120,7 +120,7 @@ static PetscErrorCode CheckMesh(TslModel *m)
   for (PetscInt e = 0; e < m->nelem; e++) {
     const TslElementType *et = TslElementTypeGet(m->elem_type[e]);
     CHECK(et, ElemLoc(m, e), "element %" PetscInt_FMT " has no valid type", m->elem_id[e]);
-    CHECK(m->elem_ptr[e + 1] - m->elem_ptr[e] == et->geom->nnode, ElemLoc(m, e),
+    CHECK(m->elem_ptr[e + 1] - m->elem_ptr[e] == et->geom->nnode || m->elem_ptr[e + 1] - m->elem_ptr[e] == TslElementTypeNodes(et), ElemLoc(m, e),
           "element %" PetscInt_FMT " has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT, m->elem_id[e],
           m->elem_ptr[e + 1] - m->elem_ptr[e], et->name, et->geom->nnode);
     for (PetscInt j = m->elem_ptr[e]; j < m->elem_ptr[e + 1]; j++)
@@ -339,6 +339,92 @@ static PetscErrorCode CheckContactPair(TslModel *m, TslContactPair *p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The reference node of a generalized plane strain section (REF NODE=): a defined node that no element
+ * uses; position in the model, or -1 when the section has none. */
+static PetscErrorCode SectionReferenceNode(TslModel *m, const TslSection *sec, const char *uses, PetscInt *pos)
+{
+  PetscInt id = sec->ref_node.id;
+
+  PetscFunctionBeginUser;
+  *pos = -1;
+  if (sec->ref_node.set[0]) {
+    PetscInt k = TslModelFindNodeSet(m, sec->ref_node.set);
+    CHECK(k >= 0, sec->loc, "REF NODE=%s: undefined node set", sec->ref_node.set);
+    CHECK(m->nsets[k].n == 1, sec->loc, "REF NODE=%s: the node set must hold exactly one node (it holds %" PetscInt_FMT ")", sec->ref_node.set,
+          m->nsets[k].n);
+    id = m->nsets[k].ids[0];
+  }
+  if (id < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  *pos = TslModelNodeIndex(m, id);
+  CHECK(*pos >= 0, sec->loc, "REF NODE=%" PetscInt_FMT ": undefined node", id);
+  CHECK(!uses[*pos], sec->loc, "REF NODE=%" PetscInt_FMT ": the reference node must not belong to an element", id);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Generalized plane strain: every element of such a type gets its section's reference node appended to
+ * its nodes (the row's extra node), so that distribution, ghosting and assembly carry the reference
+ * node's dofs with the element like any other node. A section of such elements without REF NODE=, or a
+ * REF NODE= on a section of other elements, is an error at the section's line. */
+static PetscErrorCode AttachReferenceNodes(TslModel *m)
+{
+  PetscInt *ref, *ptr, *conn, nextra = 0;
+  char     *uses;
+
+  PetscFunctionBeginUser;
+  for (PetscInt e = 0; e < m->nelem; e++) nextra += TslElementTypeGet(m->elem_type[e])->nextra;
+  if (!nextra) {
+    for (PetscInt s = 0; s < m->nsection; s++)
+      CHECK(m->sections[s].ref_node.id < 0 && !m->sections[s].ref_node.set[0], m->sections[s].loc,
+            "REF NODE= is for generalized plane strain elements (CPEG...); the section's elements are not%s", "");
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(PetscCalloc1(m->nnode, &uses));
+  PetscCall(PetscMalloc1(m->nelem, &ref));
+  for (PetscInt k = 0; k < m->elem_ptr[m->nelem]; k++) uses[TslModelNodeIndex(m, m->elem_conn[k])] = 1;
+  for (PetscInt e = 0; e < m->nelem; e++) ref[e] = -1;
+  for (PetscInt s = 0; s < m->nsection; s++) {
+    const TslSection *sec = &m->sections[s];
+    const TslSet     *set = &m->elsets[TslModelFindElementSet(m, sec->elset)];
+    PetscInt          pos;
+    PetscErrorCode    ierr = SectionReferenceNode(m, sec, uses, &pos);
+    if (ierr) {
+      PetscCall(PetscFree(uses));
+      PetscCall(PetscFree(ref));
+    }
+    PetscCall(ierr);
+    for (PetscInt k = 0; k < set->n; k++) {
+      PetscInt              e = TslModelElementIndex(m, set->ids[k]);
+      const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
+      if ((t->nextra && pos < 0) || (!t->nextra && pos >= 0)) {
+        PetscCall(PetscFree(uses));
+        PetscCall(PetscFree(ref));
+      }
+      CHECK(!t->nextra || pos >= 0, sec->loc, "*SOLID SECTION for %s elements needs REF NODE= (the generalized plane strain reference node)", t->name);
+      CHECK(t->nextra || pos < 0, sec->loc, "REF NODE= is for generalized plane strain elements (CPEG...), not %s", t->name);
+      ref[e] = pos;
+    }
+  }
+  PetscCall(PetscMalloc2(m->nelem + 1, &ptr, m->elem_ptr[m->nelem] + nextra, &conn));
+  ptr[0] = 0;
+  for (PetscInt e = 0; e < m->nelem; e++) {
+    PetscInt k = ptr[e];
+    for (PetscInt j = m->elem_ptr[e]; j < m->elem_ptr[e + 1]; j++) conn[k++] = m->elem_conn[j];
+    if (TslElementTypeGet(m->elem_type[e])->nextra) conn[k++] = m->node_id[ref[e]];
+    ptr[e + 1] = k;
+  }
+  /* the model's arrays are single allocations (TslDeckGrow): replace them */
+  PetscCall(PetscFree(m->elem_ptr));
+  PetscCall(PetscFree(m->elem_conn));
+  PetscCall(PetscMalloc1(m->nelem + 1, &m->elem_ptr));
+  PetscCall(PetscMalloc1(ptr[m->nelem], &m->elem_conn));
+  PetscCall(PetscArraycpy(m->elem_ptr, ptr, m->nelem + 1));
+  PetscCall(PetscArraycpy(m->elem_conn, conn, ptr[m->nelem]));
+  PetscCall(PetscFree2(ptr, conn));
+  PetscCall(PetscFree(uses));
+  PetscCall(PetscFree(ref));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslModelCheck(TslModel *m)
 {
   PetscFunctionBeginUser;
@@ -361,5 +447,6 @@ PetscErrorCode TslModelCheck(TslModel *m)
   for (PetscInt i = 0; i < m->ninteraction; i++) PetscCall(CheckInteraction(m, &m->interactions[i]));
   for (PetscInt i = 0; i < m->npair; i++) PetscCall(CheckContactPair(m, &m->pairs[i]));
   PetscCall(CheckSteps(m));
+  PetscCall(AttachReferenceNodes(m));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -981,6 +981,18 @@ static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
   s->material_index = -1;
   s->thickness      = 1.0;
   s->loc            = d->kwloc;
+  s->ref_node.id     = -1;
+  s->ref_node.set[0] = 0;
+  {
+    const char *ref = Param(d, "REF NODE");
+    if (ref) {
+      USER_CHECK(ref[0], LOC_FMT "REF NODE= needs a node or a node set", KLOC(d));
+      if (IsInteger(ref))
+        PetscCall(DeckId(d, ref, "the reference node", &s->ref_node.id));
+      else
+        PetscCall(CopyName(d, d->kwloc, s->ref_node.set, ref));
+    }
+  }
   PetscCall(DataLine(d, 0, &got));
   if (got) {
     USER_CHECK(d->nfield <= 1, LOC_FMT "*SOLID SECTION data line needs only the thickness", DLOC(d));
@@ -1773,7 +1785,7 @@ static const DeckKeyword Keywords[] = {
     {"DENSITY", AT_MODEL, IN_MATERIAL, "", KwProperty, TSL_PROP_DENSITY, NULL},
     {"SPECIFIC HEAT", AT_MODEL, IN_MATERIAL, "", KwProperty, TSL_PROP_SPECIFIC_HEAT, NULL},
     {"EXPANSION", AT_MODEL, IN_MATERIAL, "TYPE|ZERO", KwProperty, TSL_PROP_EXPANSION, NULL},
-    {"SOLID SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL", KwSolidSection, 0, NULL},
+    {"SOLID SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL|REF NODE", KwSolidSection, 0, NULL},
     {"INITIAL CONDITIONS", AT_MODEL, IN_NONE, "TYPE", KwInitial, 0, NULL},
     {"AMPLITUDE", AT_BOTH, IN_NONE, "NAME|TIME|DEFINITION", KwAmplitude, 0, NULL},
     {"PHYSICAL CONSTANTS", AT_MODEL, IN_NONE, "ABSOLUTE ZERO|STEFAN BOLTZMANN", KwPhysical, 0, NULL},

@@ -68,12 +68,25 @@ static PetscErrorCode PartitionAxis(const TslModel *g, PetscInt axis, PetscInt n
 /* Local dof offset of a dialect dof number. */
 /* Slot of a dialect dof among a node's unknowns: the element rows say which unknowns a node has (all
  * rows of a model share them; the deck check rejects a mix). -1 if the model has no such dof. */
-static PetscInt DofSlot(const TslModel *g, PetscInt dof)
+static PetscInt DofSlot(const TslModel *g, PetscBool extra, PetscInt dof)
 {
-  const TslElementType *t = TslElementTypeGet(g->elem_type[0]);
+  const TslElementType *t    = TslElementTypeGet(g->elem_type[0]);
+  const PetscInt       *list = extra ? t->extra_dof : t->node_dof;
+  if (dof <= 0) return -1;
   for (PetscInt i = 0; i < t->ndof; i++)
-    if (t->node_dof[i] == dof) return i;
+    if (list[i] == dof) return i;
   return -1;
+}
+
+/* Is node position p an extra node (a generalized plane strain reference node) of some element? */
+static PetscBool IsExtraNode(const TslModel *g, PetscInt p)
+{
+  for (PetscInt e = 0; e < g->nelem; e++) {
+    const TslElementType *t = TslElementTypeGet(g->elem_type[e]);
+    for (PetscInt k = g->elem_ptr[e + 1] - t->nextra; k < g->elem_ptr[e + 1]; k++)
+      if (TslModelNodeIndex(g, g->elem_conn[k]) == p) return PETSC_TRUE;
+  }
+  return PETSC_FALSE;
 }
 
 /* Builds the part of rank r: its elements, nodes (owned, then ghosts), numbering arrays. */
@@ -359,9 +372,14 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
       PetscInt p = TslModelNodeIndex(g, eq->node[t]);
       PetscCheck(p >= 0 && owner[p] >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                  "%s: *EQUATION node %" PetscInt_FMT " does not belong to any element", TslLocString(g, eq->loc, loc, sizeof(loc)), eq->node[t]);
-      PetscCheck(DofSlot(g, eq->dof[t]) >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: *EQUATION dof %" PetscInt_FMT " does not exist for %s elements",
-                 TslLocString(g, eq->loc, loc, sizeof(loc)), eq->dof[t], TslElementTypeGet(g->elem_type[0])->name);
-      eq->gdof[t] = gnum[p] * ndof + DofSlot(g, eq->dof[t]);
+      {
+        /* the rare equation on a reference node costs a scan of the elements */
+        const PetscBool extra = TslElementTypeGet(g->elem_type[0])->nextra ? IsExtraNode(g, p) : PETSC_FALSE;
+        const PetscInt  slot  = DofSlot(g, extra, eq->dof[t]);
+        PetscCheck(slot >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: *EQUATION dof %" PetscInt_FMT " does not exist at node %" PetscInt_FMT " of %s elements",
+                   TslLocString(g, eq->loc, loc, sizeof(loc)), eq->dof[t], eq->node[t], TslElementTypeGet(g->elem_type[0])->name);
+        eq->gdof[t] = gnum[p] * ndof + slot;
+      }
     }
   }
 

@@ -80,7 +80,7 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
       f[row] += R[r];
       continue;
     }
-    if (p->bc[row].active) continue;
+    if (p->bc[row].active || p->pinned[row]) continue;
     if (q < 0) {
       PetscCall(AddRow(mode, A, f, row, 1.0, r, n, ld, R, K));
       continue;
@@ -292,7 +292,12 @@ static PetscErrorCode ConstraintRows(TslProblem p, AsmMode mode, const PetscScal
   for (PetscInt d = 0; d < p->nown * p->ndof; d++) {
     PetscInt  q = p->dep[d];
     PetscReal s = p->row_scale[(d % p->ndof) == p->ndof - 1];
-    if (p->bc[d].active) {
+    if (p->pinned[d]) { /* a slot the kinematics does not use: s u = 0 */
+      if (mode == ASM_RESIDUAL)
+        F[d] = s * xa[d];
+      else
+        PetscCall(MatSetValuesLocal(A, 1, &d, 1, &d, &s, ADD_VALUES));
+    } else if (p->bc[d].active) {
       if (mode == ASM_RESIDUAL)
         F[d] = s * (xa[d] - TslProblemEvalLoadValue(p, &p->bc[d]));
       else

@@ -30,8 +30,14 @@ static PetscErrorCode NodeReaction(TslProblem p, PetscInt which, PetscInt ncomp,
   PetscCall(VecGetArrayRead(p->Rraw, &r));
   for (PetscInt n = 0; n < p->nown; n++) {
     const PetscInt d = n * p->ndof;
-    if (which == 0)
-      for (PetscInt c = 0; c < p->nu; c++) vals[ncomp * n + c] = p->bc[d + c].active ? PetscRealPart(r[d + c]) : 0;
+    if (which == 0) {
+      const PetscInt *dof = p->extra[n] ? p->extra_dof : p->node_dof;
+      for (PetscInt c = 0; c < p->nu; c++) {
+        /* forces on dofs 1..3; with twist, RF3 is the torque about the axis; a reference node's moments are not RF */
+        const PetscInt comp = dof[c] >= 1 && dof[c] <= 3 ? dof[c] - 1 : (dof[c] == 5 && !p->extra[n] ? 2 : -1);
+        if (p->bc[d + c].active && comp >= 0) vals[ncomp * n + comp] = PetscRealPart(r[d + c]);
+      }
+    }
     else
       vals[n] = p->bc[d + p->ndof - 1].active ? PetscRealPart(r[d + p->ndof - 1]) : 0;
   }

@@ -259,7 +259,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
       PetscCall(TargetNodes(p, &ld->target, &n, &nodes));
       for (PetscInt j = 0; j < n; j++)
         for (PetscInt dof = ld->dof_first; dof <= ld->dof_last; dof++) {
-          PetscInt c = TslProblemDofSlot(p, dof), d = nodes[j] * p->ndof + c;
+          PetscInt c = TslProblemNodeDofSlot(p, nodes[j], dof), d = nodes[j] * p->ndof + c;
           if (c < 0) continue; /* a dof the model's elements do not have (e.g. 3 in 2D): ignored as in the dialect */
           if (ld->kind == TSL_LOAD_BOUNDARY && ld->fixed)
             p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD};

@@ -28,22 +28,33 @@ static PetscErrorCode SetUpSections(TslProblem p)
  * from the others. */
 static PetscErrorCode SetUpLayout(TslProblem p)
 {
-  PetscInt mine[1 + TSL_MAX_NODE_DOF] = {0}, all[1 + TSL_MAX_NODE_DOF];
+  PetscInt mine[1 + 2 * TSL_MAX_NODE_DOF] = {0}, all[1 + 2 * TSL_MAX_NODE_DOF];
 
   PetscFunctionBeginUser;
   if (p->m->nelem > 0) {
     const TslElementType *t = TslElementTypeGet(p->m->elem_type[0]);
     mine[0]                 = t->ndof;
-    for (PetscInt i = 0; i < t->ndof; i++) mine[1 + i] = t->node_dof[i];
+    for (PetscInt i = 0; i < t->ndof; i++) mine[1 + i] = t->node_dof[i], mine[1 + TSL_MAX_NODE_DOF + i] = t->extra_dof[i];
   }
-  PetscCall(MPIU_Allreduce(mine, all, 1 + TSL_MAX_NODE_DOF, MPIU_INT, MPI_MAX, p->comm));
+  PetscCall(MPIU_Allreduce(mine, all, 1 + 2 * TSL_MAX_NODE_DOF, MPIU_INT, MPI_MAX, p->comm));
   PetscCheck(all[0] > 1, p->comm, PETSC_ERR_USER_INPUT, "the model has no elements");
   p->ndof = all[0];
-  p->nu   = 0;
-  for (PetscInt i = 0; i < p->ndof; i++) {
-    p->node_dof[i] = all[1 + i];
-    if (all[1 + i] >= 1 && all[1 + i] <= 3) p->nu++;
+  p->nu   = p->ndof - 1;
+  for (PetscInt i = 0; i < p->ndof; i++) p->node_dof[i] = all[1 + i], p->extra_dof[i] = all[1 + TSL_MAX_NODE_DOF + i];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Extra nodes (the last nextra nodes of each element whose row has them) and the pinned slots. */
+static PetscErrorCode SetUpExtraNodes(TslProblem p)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc2(p->nn, &p->extra, p->nn * p->ndof, &p->pinned));
+  for (PetscInt e = 0; e < p->m->nelem; e++) {
+    const TslElementType *t = TslElementTypeGet(p->m->elem_type[e]);
+    for (PetscInt k = p->m->elem_ptr[e + 1] - t->nextra; k < p->m->elem_ptr[e + 1]; k++) p->extra[p->elem_lnode[k]] = 1;
   }
+  for (PetscInt l = 0; l < p->nn; l++)
+    for (PetscInt i = 0; i < p->ndof; i++) p->pinned[l * p->ndof + i] = (char)((p->extra[l] ? p->extra_dof[i] : p->node_dof[i]) == 0);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -51,6 +62,15 @@ PetscInt TslProblemDofSlot(TslProblem p, PetscInt dof)
 {
   for (PetscInt i = 0; i < p->ndof; i++)
     if (p->node_dof[i] == dof) return i;
+  return -1;
+}
+
+PetscInt TslProblemNodeDofSlot(TslProblem p, PetscInt l, PetscInt dof)
+{
+  const PetscInt *list = p->extra[l] ? p->extra_dof : p->node_dof;
+  if (dof <= 0) return -1;
+  for (PetscInt i = 0; i < p->ndof; i++)
+    if (list[i] == dof) return i;
   return -1;
 }
 
@@ -103,7 +123,7 @@ static PetscErrorCode SetUpVectors(TslProblem p)
   PetscCall(VecGetArray(xl, &x));
   for (PetscInt n = 0; n < p->nn; n++) {
     for (PetscInt c = 0; c < p->ndof - 1; c++) x[n * p->ndof + c] = 0;
-    x[n * p->ndof + p->ndof - 1] = p->theta_init[n];
+    x[n * p->ndof + p->ndof - 1] = p->pinned[n * p->ndof + p->ndof - 1] ? 0 : p->theta_init[n];
   }
   PetscCall(VecRestoreArray(xl, &x));
   PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
@@ -190,6 +210,7 @@ static PetscErrorCode SetUpLocal(TslProblem p)
     p->elem_lnode[k] = TslModelNodeIndex(local, local->elem_conn[k]);
     PetscCheck(p->elem_lnode[k] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "element node %" PetscInt_FMT " missing on this rank", local->elem_conn[k]);
   }
+  PetscCall(SetUpExtraNodes(p));
   PetscCall(SetUpSections(p));
   PetscCall(SetUpInitialTemperature(p));
   PetscCall(SetUpEquations(p));
@@ -249,6 +270,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(PetscFree(p->elem_lnode));
   PetscCall(PetscFree(p->amp_active));
   PetscCall(PetscFree(p->esec));
+  PetscCall(PetscFree2(p->extra, p->pinned));
   PetscCall(PetscFree(p->theta_init));
   PetscCall(PetscFree2(p->bc, p->nload));
   PetscCall(PetscFree(p->face));

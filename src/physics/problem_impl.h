@@ -55,8 +55,12 @@ struct _p_TslProblem {
   TslModel *m;
   PetscInt  dim, nn, nown; /* local nodes, owned nodes */
   /* dof layout, from the element rows: ndof unknowns per node, the dialect's number of each
-   * (node_dof[], theta last), nu of them displacements */
-  PetscInt ndof, nu, node_dof[TSL_MAX_NODE_DOF];
+   * (node_dof[], theta last; 0 for a slot the kinematics does not use), nu of them displacements; an
+   * extra node of the rows (the generalized plane strain reference node) has extra_dof[] instead.
+   * Unused slots are pinned at zero (pinned[], a constraint row of their own). */
+  PetscInt ndof, nu, node_dof[TSL_MAX_NODE_DOF], extra_dof[TSL_MAX_NODE_DOF];
+  char    *extra;  /* [nn] 1 for an extra (reference) node */
+  char    *pinned; /* [nn*ndof] */
   PetscInt rstart; /* first owned global dof */
 
   Vec                    X, Xold, Xl, Fl; /* Xl, Fl: ghosted work vectors */
@@ -136,8 +140,10 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p);
 PetscErrorCode TslProblemContactDestroy(TslProblem p);
 PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[]);
 PetscReal      TslProblemEvalLoadValue(TslProblem p, const TslLoadValue *h);
-/* The slot of dialect dof number dof (1..6, 11) among a node's unknowns, -1 when the model has no such dof. */
+/* The slot of dialect dof number dof (1..6, 11) among an ordinary node's unknowns (TslProblemDofSlot) or
+ * among local node l's (TslProblemNodeDofSlot: reference nodes have their own), -1 when it has no such dof. */
 PetscInt       TslProblemDofSlot(TslProblem p, PetscInt dof);
+PetscInt       TslProblemNodeDofSlot(TslProblem p, PetscInt l, PetscInt dof);
 PetscErrorCode TslProblemLocalNode(TslProblem p, PetscInt gnum, PetscInt *lnode);
 PetscErrorCode TslProblemPreallocate(TslProblem p);
 PetscErrorCode TslProblemCheckElements(TslProblem p);

@@ -49,14 +49,14 @@ static PetscInt GramRank(PetscInt n, PetscReal G[6][6])
 /* Nodes (positions) of a node target. */
 /* Marks the prescribed slots of a node target; slots are those of the model's nodal unknowns (the rows'
  * node_dof: displacement-like unknowns first, the temperature last). */
-static void MarkTarget(const TslModel *g, const TslTarget *t, PetscInt dof_first, PetscInt dof_last, char *fixed)
+static void MarkTarget(const TslModel *g, const TslTarget *t, PetscInt dof_first, PetscInt dof_last, const char *extra, char *fixed)
 {
   const TslElementType *t0 = TslElementTypeGet(g->elem_type[0]);
   PetscInt n = 1, k = t->set[0] ? TslModelFindNodeSet(g, t->set) : -1;
   if (k >= 0) n = g->nsets[k].n;
   for (PetscInt i = 0; i < n; i++) {
     PetscInt p = TslModelNodeIndex(g, k >= 0 ? g->nsets[k].ids[i] : t->id);
-    if (p < 0) continue;
+    if (p < 0 || extra[p]) continue; /* a reference node's dofs are not in-plane displacements */
     for (PetscInt d = dof_first; d <= dof_last; d++)
       for (PetscInt c = 0; c < t0->ndof; c++)
         if (t0->node_dof[c] == d) fixed[TSL_MAX_NODE_DOF * p + c] = 1;
@@ -86,7 +86,7 @@ static void MarkFilm(const TslModel *g, const TslLoad *ld, char *film)
 PetscErrorCode TslModelCheckSupports(TslModel *g)
 {
   PetscInt  *parent, *first_elem, nn = g->nnode;
-  char      *fixed, *film, *thermal;
+  char      *fixed, *film, *thermal, *extra;
   PetscReal *gram;
   PetscInt  *body, nbody = 0, th;
   PetscReal *centre, *size;
@@ -97,6 +97,11 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
   PetscCall(TslModelIndex(g));
   PetscCall(PetscMalloc4(nn, &parent, nn, &first_elem, 4 * nn, &centre, nn, &size));
   PetscCall(PetscCalloc2(TSL_MAX_NODE_DOF * nn, &fixed, g->nelem, &film));
+  PetscCall(PetscCalloc1(nn, &extra));
+  for (PetscInt e = 0; e < g->nelem; e++) {
+    const TslElementType *t = TslElementTypeGet(g->elem_type[e]);
+    for (PetscInt k = g->elem_ptr[e + 1] - t->nextra; k < g->elem_ptr[e + 1]; k++) extra[TslModelNodeIndex(g, g->elem_conn[k])] = 1;
+  }
   for (PetscInt i = 0; i < nn; i++) parent[i] = i, first_elem[i] = -1;
   for (PetscInt e = 0; e < g->nelem; e++)
     for (PetscInt k = g->elem_ptr[e] + 1; k < g->elem_ptr[e + 1]; k++)
@@ -149,7 +154,7 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
     if (clear_film) PetscCall(PetscArrayzero(film, g->nelem));
     for (PetscInt i = 0; i < step->nload; i++) {
       const TslLoad *ld = &step->loads[i];
-      if (ld->kind == TSL_LOAD_BOUNDARY) MarkTarget(g, &ld->target, ld->dof_first, ld->dof_last, fixed);
+      if (ld->kind == TSL_LOAD_BOUNDARY) MarkTarget(g, &ld->target, ld->dof_first, ld->dof_last, extra, fixed);
       if (ld->kind == TSL_LOAD_FILM) MarkFilm(g, ld, film);
     }
     /* one pass over the nodes and elements: Gram matrix and thermal support of every body */
@@ -192,5 +197,6 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
   PetscCall(PetscFree2(gram, thermal));
   PetscCall(PetscFree(body));
   PetscCall(PetscFree2(fixed, film));
+  PetscCall(PetscFree(extra));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -182,17 +182,23 @@ static PetscErrorCode SetUpSolver(Driver *d)
 static PetscErrorCode SetUpOutput(Driver *d, const char *dir, const char *jobname)
 {
   const TslModel *m;
-  PetscInt       *xtype, *conn;
+  PetscInt       *xtype, *conn, *ptr;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
   PetscCall(TslOutputCreate(d->comm, dir, jobname, &d->out));
-  PetscCall(PetscMalloc2(m->nelem, &xtype, m->elem_ptr[m->nelem], &conn));
-  for (PetscInt e = 0; e < m->nelem; e++) xtype[e] = TslElementTypeGet(m->elem_type[e])->geom->xdmf_type;
-  for (PetscInt k = 0; k < m->elem_ptr[m->nelem]; k++) conn[k] = m->node_nat[TslModelNodeIndex(m, m->elem_conn[k])];
+  PetscCall(PetscMalloc3(m->nelem, &xtype, m->elem_ptr[m->nelem], &conn, m->nelem + 1, &ptr));
+  /* cells are the geometry families' nodes (an element's extra reference node is not part of its cell) */
+  ptr[0] = 0;
+  for (PetscInt e = 0; e < m->nelem; e++) {
+    const TslGeometry *g = TslElementTypeGet(m->elem_type[e])->geom;
+    xtype[e]             = g->xdmf_type;
+    ptr[e + 1]           = ptr[e] + g->nnode;
+    for (PetscInt a = 0; a < g->nnode; a++) conn[ptr[e] + a] = m->node_nat[TslModelNodeIndex(m, m->elem_conn[m->elem_ptr[e] + a])];
+  }
   PetscCall(TslOutputSetMesh(d->out, m->nnode_global, m->nnode_owned, m->node_nat, m->node_id, m->node_xyz, m->nelem_global, m->nelem, m->elem_nat,
-                             m->elem_id, xtype, m->elem_ptr, conn));
-  PetscCall(PetscFree2(xtype, conn));
+                             m->elem_id, xtype, ptr, conn));
+  PetscCall(PetscFree3(xtype, conn, ptr));
   PetscCall(TslHistoryCreate(d->comm, dir, jobname, NHISTORY, HistoryColumns, &d->hist));
   for (PetscInt i = 0; i < TslFieldCount(); i++) {
     PetscInt deflt;

@@ -83,3 +83,6 @@ tsl_deck_bad(collapsed_coordinates collapsed_coordinates.inp "error: collapsed_c
 tsl_deck_bad(mixed_kinematics mixed_kinematics.inp "error: mixed_kinematics.inp:12: element 2 (CPS4T, plane stress) shares node 2 with element 1 (CPE4T, plane strain) at mixed_kinematics.inp:10: one body, one kinematics")
 tsl_deck_bad(mixed_axisymmetric mixed_axisymmetric.inp "error: mixed_axisymmetric.inp:14: element 2 (CAX4T, axisymmetric) cannot be in one model with element 1 (CPE4T, plane strain) at mixed_axisymmetric.inp:12")
 tsl_deck_bad(wrong_node_count_quadratic wrong_node_count_quadratic.inp "error: wrong_node_count_quadratic.inp:7: element has 4 nodes but type CPE8T needs 8")
+tsl_deck_bad(cpeg_without_ref_node cpeg_without_ref_node.inp "error: cpeg_without_ref_node.inp:17: *SOLID SECTION for CPEG4T elements needs REF NODE= (the generalized plane strain reference node)")
+tsl_deck_bad(ref_node_not_cpeg ref_node_not_cpeg.inp "error: ref_node_not_cpeg.inp:19: REF NODE= is for generalized plane strain elements (CPEG...)")
+tsl_deck_bad(ref_node_in_element ref_node_in_element.inp "error: ref_node_in_element.inp:17: REF NODE=3: the reference node must not belong to an element")
