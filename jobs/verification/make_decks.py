@@ -187,7 +187,7 @@ FAMILIES_2D = {"3": ("tri", 1), "4": ("quad", 1), "6": ("tri", 2), "8": ("quad",
 
 def family_of(typ):
     """(shape, order, kinematics) of a 2D type name: CPE4RT -> ("quad", 1, "PE")."""
-    m = re.match(r"C(PEG|PE|PS|AX)(\d)", typ.upper())
+    m = re.match(r"C(GAX|PEG|PE|PS|AX)(\d)", typ.upper())
     shape, order = FAMILIES_2D[m.group(2)]
     return shape, order, m.group(1)
 
@@ -258,12 +258,15 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
     types get midside nodes, generalized plane strain types a reference node per block (9001, 9002:
     free, so each block expands out of plane freely; the in-plane problem is that of plane strain),
     types get midside nodes, axisymmetric types the rings described at R_AXI (slide along z, press
-    along r; the applied pressure scaled by r_interface / r_face so that the interface sees 100; the
+    along r; the applied pressure scaled by r_interface / r_face so that the interface sees 100; with
+    twist (CGAX) the sliding face also turns by 0.4 rad with the axial slide (circumferential motion,
+    the spec's twist tests) and the twist (dof 5) is held where the axial motion is; the
     friction series' radial force 211.6, of which the inner ring's hoop stiffness takes about 5 %, so
     that the interface carries about 200 as in the planar decks)."""
     typ = typ.upper()
     shape, order, kin = family_of(typ)
-    axi = kin == "AX"
+    axi = kin in ("AX", "GAX")
+    twist = kin == "GAX"
     bnodes, belems, brows = mesh2d(12, 2, 0.0, 6.0, 0.0, 1.25, shape, order, mirror=3.0)
     tnodes, telems, trows = mesh2d(4, 6, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000, mirror=3.0)
     fb, ft = faces(shape)
@@ -313,15 +316,17 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
         p1, p2 = "%.10g" % (100.0 * pscale), "%.10g" % (200.0 * pscale)
         text += ("*AMPLITUDE, NAME=OFF\n 0.0, 0.0, 1.0, 1.0\n*AMPLITUDE, NAME=FLUXDOWN\n 0.0, 1.0, 0.1, 0.0\n"
                  "*STEP, NAME=HEAT, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 1.0, 1e-5, 0.1\n"
-                 "*BOUNDARY\n BASE, 1, 2\n TOPFACE, %s, %s\n*DLOAD\n PRESSED, P%s, %s\n*DFLUX\n PRESSED, S%s, 100.0\n" % (slide, slide, ft, p1, ft) +
+                 "*BOUNDARY\n BASE, 1, 2\n TOPFACE, %s, %s\n%s*DLOAD\n PRESSED, P%s, %s\n*DFLUX\n PRESSED, S%s, 100.0\n"
+                 % (slide, slide, " BASE, 5, 5\n TOPFACE, 5, 5\n" if twist else "", ft, p1, ft) +
                  "*FILM\n FILMED, F%s, 0.0, 10.0\n*END STEP\n" % fb +
                  "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.05\n"
-                 "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, %s, %s, 1.5\n*END STEP\n" % (slide, slide) +
+                 "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, %s, %s, 1.5\n%s*END STEP\n" % (slide, slide, " TOPFACE, 5, 5, 0.4\n" if twist else "") +
                  "*STEP, NAME=STEADY\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n*END STEP\n"
                  "*STEP, NAME=DOUBLE PRESSURE\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
                  "*DLOAD\n PRESSED, P%s, %s\n*END STEP\n" % (ft, p2) +
                  "*STEP, NAME=SLIDE OFF, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.1\n"
-                 "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, %s, %s, 5.0\n" % (press, press, slide, slide) +
+                 "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n%s*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, %s, %s, 5.0\n"
+                 % (press, press, " TOPFACE, 5, 5\n" if twist else "", slide, slide) +
                  "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S%s, 100.0\n*END STEP\n" % ft)
     name = "sliding_%s%s_%s.inp" % (series, "_auglagr" if auglagr else "", typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:

@@ -48,7 +48,7 @@ ids, xyz, h = r.node_ids, r.xyz, r.history
 refs = ids > 9000  # generalized plane strain reference nodes (no temperature)
 small = (ids > 1000) & ~refs
 large = (ids <= 1000)
-axi = "_cax" in job
+axi = "_cax" in job or "_cgax" in job
 quadratic = bool(__import__("re").search(r"_c(pe|ps|ax|peg|gax)[68]", job))
 R_AXI = 2.5
 if axi:
@@ -99,9 +99,10 @@ if series == "friction":
 
 def mirror_error(frame):
     nt = r.field("NT", frame)[:, 0]
-    key = {(bool(small[i]), round(xyz[i, 0], 9), round(xyz[i, 1], 9)): i for i in range(len(ids))}
+    body = [i for i in range(len(ids)) if not refs[i]]
+    key = {(bool(small[i]), round(xyz[i, 0], 9), round(xyz[i, 1], 9)): i for i in body}
     worst = 0.0
-    for i in range(len(ids)):
+    for i in body:
         j = key[(bool(small[i]), round(6.0 - xyz[i, 0], 9), round(xyz[i, 1], 9))]
         worst = max(worst, abs(nt[i] - nt[j]))
     return worst, abs(nt).max()
