@@ -64,6 +64,28 @@ def check_true(name, ok, detail=""):
         _failed.append(name)
 
 
+def check_contact_jacobian_log(log):
+    """The ||J - Jfd||/||J|| ratios of -snes_test_jacobian in a job log, step by step: every one below 1e-6
+    in steps 1, 2, 3 (stick, slip, open), except the first evaluation of step 3, which starts exactly on
+    the Coulomb yield surface (a kink where a finite-difference Jacobian means nothing)."""
+    import re
+    step, seen = 0, {}
+    for line in open(log):
+        m = re.match(r"step (\d+) \(", line)
+        if m:
+            step = int(m.group(1))
+        m = re.search(r"\|\|J - Jfd\|\|_F/\|\|J\|\|_F = ([0-9.eE+-]+)", line)
+        if m:
+            seen.setdefault(step, []).append(float(m.group(1)))
+    check_true("Jacobian comparisons in all three steps", sorted(seen) == [1, 2, 3], "%s" % {k: len(v) for k, v in seen.items()})
+    for s, ratios in sorted(seen.items()):
+        for k, x in enumerate(ratios):
+            if s == 3 and k == 0:
+                print("step 3 evaluation 1: %.3g (on the yield surface, not checked)" % x)
+                continue
+            check("step %d evaluation %d ||J - Jfd||/||J||" % (s, k + 1), x, 0.0, 1e-6)
+
+
 def finish():
     if _failed:
         print("FAILED checks: %s" % ", ".join(_failed))
