@@ -71,6 +71,9 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
  * Arrays are allocated by the callee and freed with PetscFree: node fields [nnode_owned][ncomp],
  * element fields [nelem][ncomp]. */
 PetscErrorCode TslProblemHeatBalance(TslProblem prob, TslHeatBalance *hb);
+/* Strain energy of the elements and the energy of the reduced-integration types' hourglass control
+ * (collective; the element outputs ELSE and ELASE summed). */
+PetscErrorCode TslProblemEnergies(TslProblem prob, PetscReal *strain, PetscReal *hourglass);
 
 /* Output fields, one table row each (fields.c): nodal U, NT, RF, RFL, CPRESS, CSLIP, CSTATUS, HFLA and
  * element S, E, HFL, ELSE (strain energy), ELASE (hourglass-control energy). TslFieldFind returns -1 for

@@ -136,3 +136,32 @@ PetscErrorCode TslProblemField(TslProblem p, PetscInt i, PetscInt *ncomp, PetscR
   PetscCall(f->eval(p, f->which, f->ncomp, *vals));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+static PetscErrorCode EnergyVisit(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+{
+  PetscReal       *sum = (PetscReal *)ctx;
+  TslElementResult res;
+
+  PetscFunctionBeginUser;
+  (void)p, (void)e, (void)stop;
+  PetscCall(TslElementOutput(&d->in, &res));
+  sum[0] += res.strain_energy;
+  sum[1] += res.hourglass_energy;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemEnergies(TslProblem p, PetscReal *strain, PetscReal *hourglass)
+{
+  Vec                xl;
+  const PetscScalar *xa;
+  PetscReal          loc[2] = {0, 0}, g[2];
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  PetscCall(TslProblemElementLoop(p, xa, xa, EnergyVisit, loc));
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscCall(MPIU_Allreduce(loc, g, 2, MPIU_REAL, MPIU_SUM, p->comm));
+  *strain    = g[0];
+  *hourglass = g[1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -22,7 +22,9 @@ static const char *const HistoryColumns[] = {"step",
                                              "friction_dissipation_rate",
                                              "friction_dissipation_total",
                                              "friction_heat_total",
-                                             "balance_residual"};
+                                             "balance_residual",
+                                             "strain_energy",
+                                             "hourglass_energy"};
 #define NHISTORY ((PetscInt)(sizeof(HistoryColumns) / sizeof(HistoryColumns[0])))
 
 typedef struct {
@@ -378,6 +380,7 @@ static PetscErrorCode Accept(Driver *d, PetscInt s, PetscInt inc, PetscReal t, P
   row[12] = d->dissipated;
   row[13] = d->absorbed;
   row[14] = hb.balance;
+  PetscCall(TslProblemEnergies(d->prob, &row[15], &row[16]));
   PetscCall(TslHistoryAppend(d->hist, row));
   d->done_step = s + 1, d->done_inc = inc, d->done_time = total, d->done_step_time = t, d->done_dt = h;
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -35,6 +35,7 @@ With AUGMENTED LAGRANGE normal contact (job name *_auglagr_*) the penetration at
 must also be below 1 % of the penalty method's p / eps_n (eps_n = 10 E / 0.5).
 usage: check_sliding.py OUTDIR JOB conductance|radiation|friction
 """
+import re
 import sys
 
 import numpy as np
@@ -49,7 +50,7 @@ refs = ids > 9000  # generalized plane strain reference nodes (no temperature)
 small = (ids > 1000) & ~refs
 large = (ids <= 1000)
 axi = "_cax" in job or "_cgax" in job
-quadratic = bool(__import__("re").search(r"_c(pe|ps|ax|peg|gax)[68]", job))
+quadratic = bool(re.search(r"_c(pe|ps|ax|peg|gax)[68]", job))
 R_AXI = 2.5
 if axi:
     # back to the planar picture: x = z, y = R - r; U and RF likewise (u_x = u_z, u_y = -u_r)
@@ -67,6 +68,10 @@ if axi:
 def last_row(step):
     return [i for i in range(len(h["step"])) if h["step"][i] == step][-1]
 
+
+if re.search(r"_c(pe|peg|ps|ax|gax)4r", job):  # reduced integration: the hourglass control stays small
+    worst = max(h["hourglass_energy"][i] / h["strain_energy"][i] for i in range(len(h["step"])) if h["strain_energy"][i] > 0)
+    check("hourglass energy / strain energy, worst increment", worst, 0.0, 0.01)
 
 balance_scale = max(abs(h["heat_in"]).max(), abs(h["friction_dissipation_rate"]).max(), 1e-300)
 check("worst energy balance residual over all increments", abs(h["balance_residual"]).max(), 0.0, 1e-6 * balance_scale)
