@@ -409,6 +409,30 @@ def contact_jacobian():
           "*BOUNDARY\n TOP, 2, 2, 0.05\n*END STEP\n")
 
 
+def temperature_tables():
+    """Temperature-dependent conductivity and specific heat (issue 6): a bar 1 x 0.1 (40 x 1 CPE4T).
+    Step 1, steady: theta = 0 at x = 0 and 100 at x = 1 with k = 10 at 0 and 30 at 100 (linear):
+    the heat flux q = -k(theta) theta' is uniform, and the Kirchhoff transform K(theta) = int_0^theta k
+    = 10 theta + 0.1 theta^2 is linear in x:
+    10 theta + 0.1 theta^2 = 2000 x; q = 2000 (per unit area, thickness 1 and height 0.1: RFL = 200 total).
+    Step 2, transient: both ends insulated (the temperatures released), a flux of 500 per area into the
+    face x = 0 for 1 s: the heat stored, sum over nodes of rho V_a (e(theta_a) - e(theta_a, start)) with
+    e(theta) = int_0^theta c = theta + theta^2 / 400 (c = 1 at 0, 2 at 200; rho = 1), equals 500 x 0.1."""
+    nodes, elems = grid2d(40, 1, 0.0, 1.0, 0.0, 0.1)
+    left = [n[0] for n in nodes if abs(n[1]) < 1e-12]
+    right = [n[0] for n in nodes if abs(n[1] - 1.0) < 1e-12]
+    write("conduction_tables_cpe4t.inp",
+          "*HEADING\n Temperature-dependent conductivity and specific heat: Kirchhoff profile and stored heat\n" +
+          fmt_nodes(nodes) + fmt_elems(elems, "CPE4T") + nset("LEFT", left) + nset("RIGHT", right) + elset("FIRST", [1]) +
+          "*MATERIAL, NAME=TABLES\n*ELASTIC\n 1000.0, 0.3\n*CONDUCTIVITY\n 10.0, 0.0\n 30.0, 100.0\n*DENSITY\n 1.0\n"
+          "*SPECIFIC HEAT\n 1.0, 0.0\n 2.0, 200.0\n*SOLID SECTION, ELSET=BODY, MATERIAL=TABLES\n 1.0\n"
+          "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n"
+          "*STEP, NAME=KIRCHHOFF\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
+          "*BOUNDARY\n ALL, 1, 2\n LEFT, 11, 11, 0.0\n RIGHT, 11, 11, 100.0\n*END STEP\n"
+          "*STEP, NAME=HEAT UP, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 1.0\n"
+          "*BOUNDARY, OP=NEW\n ALL, 1, 2\n*DFLUX\n FIRST, S4, 500.0\n*END STEP\n")
+
+
 if __name__ == "__main__":
     import sys
     if len(sys.argv) in (5, 6) and sys.argv[1] == "--sliding":
@@ -416,6 +440,7 @@ if __name__ == "__main__":
         sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr=sys.argv[5:] == ["--auglagr"])
         sys.exit(0)
     contact_jacobian()
+    temperature_tables()
     for series in ("conductance", "radiation", "friction"):
         sliding_blocks(series)
     sliding_blocks("conductance", auglagr=True)
