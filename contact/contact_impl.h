@@ -117,7 +117,8 @@ typedef struct {
   TslDual               xs[2];
   TslDual               seg[TSL_CONTACT_MAX_FACE_NODES][2], prev[TSL_CONTACT_MAX_FACE_NODES][2], next[TSL_CONTACT_MAX_FACE_NODES][2];
   PetscBool             has_prev, has_next;
-  PetscReal             s; /* smoothing fraction */
+  PetscReal             s;  /* smoothing fraction */
+  PetscInt              nu; /* unknowns per node: node k's u_x, u_y are seeded in slots nu k, nu k + 1 */
 } TslContactGeom;
 
 /* Position x_m and tangent t = dx_m/dxi of a segment (face nodes x[nnode][2]) at dual parameter xi. */
@@ -130,5 +131,6 @@ void TslContactSurfaceDual(const TslContactGeom *geo, TslDual xi, TslDual x[2], 
 /* Solves the projection: returns xi as a dual carrying dxi/du (zero when clamped), and the unclamped value. */
 PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, PetscReal *xi_raw);
 
-/* Builds the geometry from the input; seed = PETSC_TRUE seeds the displacement unknowns in their slots. */
+/* Builds the geometry from the input; seed = PETSC_TRUE seeds the displacement unknowns in their slots
+ * (nu k + d for node k, nu = TslContactNodeUnknowns(in->kin)). */
 PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, TslContactGeom *geo, PetscInt *nnode);

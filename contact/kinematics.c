@@ -173,9 +173,9 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
  * constant shift leaves every derivative unchanged, and the differences of nearby points (gap, slip,
  * projection) no longer lose digits to the size of the coordinates: a model far from the origin (or in
  * a small length unit) gives the same contact state as the same model at the origin. */
-static void SetPoint(const PetscReal X[], const PetscReal U[], const PetscReal O[], PetscInt node, PetscBool seed, TslDual x[2])
+static void SetPoint(const PetscReal X[], const PetscReal U[], const PetscReal O[], PetscInt node, PetscInt nu, PetscBool seed, TslDual x[2])
 {
-  for (PetscInt d = 0; d < 2; d++) x[d] = DVar((X[d] - O[d]) + U[d], seed ? 3 * node + d : -1);
+  for (PetscInt d = 0; d < 2; d++) x[d] = DVar((X[d] - O[d]) + U[d], seed ? nu * node + d : -1);
 }
 
 PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, TslContactGeom *geo, PetscInt *nnode)
@@ -190,9 +190,10 @@ PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, Ts
              "Neighbour node needs both reference coordinates and unknowns");
   geo->face = TslContactFaceGet(in->face);
   PetscCheck(geo->face, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown contact face family %d", (int)in->face);
-  nper = geo->face->geom->nnode;
-  SetPoint(in->x[0], in->u[0], O, k++, seed, geo->xs);
-  for (PetscInt a = 0; a < nper; a++) SetPoint(in->x[1 + a], in->u[1 + a], O, k++, seed, geo->seg[a]);
+  nper    = geo->face->geom->nnode;
+  geo->nu = TslContactNodeUnknowns(in->kin);
+  SetPoint(in->x[0], in->u[0], O, k++, geo->nu, seed, geo->xs);
+  for (PetscInt a = 0; a < nper; a++) SetPoint(in->x[1 + a], in->u[1 + a], O, k++, geo->nu, seed, geo->seg[a]);
   geo->has_prev = (PetscBool)(in->x_prev != NULL);
   geo->has_next = (PetscBool)(in->x_next != NULL);
   /* a neighbour shares one end with this segment: the previous one its end (node 1) with m1, the next one
@@ -203,7 +204,7 @@ PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, Ts
         geo->prev[a][0] = geo->seg[0][0];
         geo->prev[a][1] = geo->seg[0][1];
       } else {
-        SetPoint(&in->x_prev[2 * j], &in->u_prev[3 * j], O, k++, seed, geo->prev[a]);
+        SetPoint(&in->x_prev[2 * j], &in->u_prev[geo->nu * j], O, k++, geo->nu, seed, geo->prev[a]);
         j++;
       }
     }
@@ -213,7 +214,7 @@ PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, Ts
         geo->next[a][0] = geo->seg[1][0];
         geo->next[a][1] = geo->seg[1][1];
       } else {
-        SetPoint(&in->x_next[2 * j], &in->u_next[3 * j], O, k++, seed, geo->next[a]);
+        SetPoint(&in->x_next[2 * j], &in->u_next[geo->nu * j], O, k++, geo->nu, seed, geo->next[a]);
         j++;
       }
     }
@@ -300,6 +301,7 @@ PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1
   geo.has_prev = (PetscBool)(x0 != NULL);
   geo.has_next = (PetscBool)(x3 != NULL);
   geo.s        = s;
+  geo.nu       = 3;
   TslContactSurfaceDual(&geo, DConst(xi), NULL, nn, tau);
   n[0] = nn[0].v;
   n[1] = nn[1].v;

@@ -72,6 +72,8 @@ PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHi
   PetscFunctionBeginUser;
   h->xi_old    = out->xi;
   h->xi_anchor = out->xi_anchor;
+  h->w_old     = out->w;
+  h->w_anchor  = out->w_anchor;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -89,78 +91,134 @@ static TslDual NormalPressure(const TslContactLaw *law, const TslContactHistory 
   return a.v >= 0 ? a : DConst(0);
 }
 
+/* What contact needs of a kinematics: does the area revolve (2 pi r instead of the thickness), and does
+ * the slip have a circumferential component (the twist phi among the unknowns, u_theta = R phi)? */
+static const struct {
+  PetscBool revolve, twist;
+} ContactKinematics[TSL_NKIN] = {
+    [TSL_KIN_AXISYMMETRIC]       = {PETSC_TRUE, PETSC_FALSE},
+    [TSL_KIN_AXISYMMETRIC_TWIST] = {PETSC_TRUE, PETSC_TRUE},
+};
+
+PetscInt TslContactNodeUnknowns(TslKinematics kin)
+{
+  return (PetscInt)kin >= 0 && kin < TSL_NKIN && ContactKinematics[kin].twist ? 4 : 3;
+}
+
+/* The slip of one element as nc components: the in-plane one along tau and, with twist, the
+ * circumferential one. e = slip from the anchor, ds = slip increment (from the start of the increment). */
 typedef struct {
-  TslDual          tT;        /* shear stress */
-  TslDual          D;         /* dissipation rate per area (before eta) */
-  PetscReal        slip_diss; /* dissipative slip increment */
-  PetscReal        anchor;    /* updated sticking anchor */
+  PetscInt nc;
+  TslDual  e[2], ds[2];
+  TslDual  xi, L, w; /* projection, metric |t| at xi, relative circumferential displacement (twist) */
+} Slip;
+
+typedef struct {
+  TslDual          t[2];         /* shear stresses (in-plane tT, circumferential tW) */
+  TslDual          D;            /* dissipation rate per area (before eta) */
+  PetscReal        slip_diss[2]; /* dissipative slip increments */
+  PetscReal        anchor;       /* updated sticking anchor (in-plane, parameter xi) */
+  PetscReal        w_anchor;     /* updated circumferential anchor */
   TslContactStatus status;
 } FrictionState;
 
-/* Coulomb friction. PENALTY: elastic predictor tT* = eps_t L (xi - xi_anchor), return mapping onto
- * |tT| <= mu pN; the plastic slip (tT* - tT)/eps_t dissipates. LAGRANGE: tT = mu pN sign(e), e = L (xi - xi_anchor)
- * the slip from an anchor that trails the node by slip_tol, sign(e) replaced by e/slip_tol for |e| < slip_tol;
- * the dissipation is tT ds over the whole increment slip ds, so tT ds = mu pN |ds| exactly while the node slips
- * (all relative motion becomes heat, as the spec's frictional-heating tests require). */
-static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *in, TslDual pN, TslDual xi, TslDual L, TslDual ds, FrictionState *fs)
+/* |v| of an nc-component slip or traction (value only: no derivative of the norm at v = 0). */
+static PetscReal MagnitudeValue(PetscInt nc, const TslDual v[2])
 {
+  return nc == 1 ? PetscAbsReal(v[0].v) : PetscSqrtReal(v[0].v * v[0].v + v[1].v * v[1].v);
+}
+
+/* Unit direction v/|v| of a nonzero vector. One component: the sign, a constant, exactly what the scalar
+ * law used, so plane and plain axisymmetric models keep their answers to the last digit. */
+static void Direction(PetscInt nc, const TslDual v[2], TslDual dir[2])
+{
+  if (nc == 1) {
+    dir[0] = DConst(v[0].v >= 0 ? 1 : -1);
+    dir[1] = DConst(0);
+  } else {
+    TslDual len = DSqrt(DDot(v, v));
+
+    for (PetscInt c = 0; c < 2; c++) dir[c] = DDiv(v[c], len);
+  }
+}
+
+/* Coulomb friction on the slip vector (one component, or two with twist: the isotropic law, |t| <= mu pN,
+ * slip along the trial traction). PENALTY: elastic predictor t* = eps_t e, radial return onto the circle
+ * |t| = mu pN; the plastic slip (t* - t)/eps_t dissipates. LAGRANGE: t = mu pN e/|e|, e the slip from an
+ * anchor that trails the node by slip_tol along the slip direction, e/|e| replaced by e/slip_tol for
+ * |e| < slip_tol; the dissipation is t . ds over the increment's whole slip ds, so t . ds = mu pN |ds|
+ * exactly while the node slips in a fixed direction (all relative motion becomes heat, as the spec's
+ * frictional-heating tests require). */
+static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *in, TslDual pN, const Slip *sl, FrictionState *fs)
+{
+  const PetscInt nc = sl->nc;
+
   PetscFunctionBeginUser;
-  fs->tT        = DConst(0);
-  fs->D         = DConst(0);
-  fs->slip_diss = 0;
-  fs->anchor    = xi.v; /* open or frictionless: a new contact starts stress-free */
-  fs->status    = pN.v > 0 ? TSL_CONTACT_SLIP : TSL_CONTACT_OPEN;
+  for (PetscInt c = 0; c < 2; c++) {
+    fs->t[c]         = DConst(0);
+    fs->slip_diss[c] = 0;
+  }
+  fs->D        = DConst(0);
+  fs->anchor   = sl->xi.v; /* open or frictionless: a new contact starts stress-free */
+  fs->w_anchor = sl->w.v;
+  fs->status   = pN.v > 0 ? TSL_CONTACT_SLIP : TSL_CONTACT_OPEN;
   if (pN.v <= 0 || law->friction == TSL_CONTACT_FRICTION_NONE || law->mu == 0) PetscFunctionReturn(PETSC_SUCCESS);
   if (law->friction == TSL_CONTACT_FRICTION_PENALTY) {
     /* elastic slip e from the anchor; stick stiffness eps_t, or mu pN / e_max (automatic: the stick limit is
      * an elastic slip of e_max whatever the pressure, the dialect's SLIP TOLERANCE) */
-    TslDual   e     = DMul(L, DAddC(xi, -in->hist.xi_anchor));
-    TslDual   eps_t = law->elastic_slip > 0 ? DScale(law->mu / law->elastic_slip, pN) : DConst(law->eps_t);
-    TslDual   trial = DMul(eps_t, e);
-    TslDual   limit = DScale(law->mu, pN);
-    PetscReal sgn   = e.v >= 0 ? 1 : -1;
+    TslDual eps_t = law->elastic_slip > 0 ? DScale(law->mu / law->elastic_slip, pN) : DConst(law->eps_t);
+    TslDual limit = DScale(law->mu, pN), trial[2];
 
     PetscCheck(law->eps_t > 0 || law->elastic_slip > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
                "Penalty friction needs eps_t > 0 or elastic_slip > 0");
-    if (PetscAbsReal(trial.v) <= limit.v) {
-      fs->tT     = trial;
-      fs->anchor = in->hist.xi_anchor;
-      fs->status = TSL_CONTACT_STICK;
+    for (PetscInt c = 0; c < nc; c++) trial[c] = DMul(eps_t, sl->e[c]);
+    if (MagnitudeValue(nc, trial) <= limit.v) {
+      for (PetscInt c = 0; c < nc; c++) fs->t[c] = trial[c];
+      fs->anchor   = in->hist.xi_anchor;
+      fs->w_anchor = in->hist.w_anchor;
+      fs->status   = TSL_CONTACT_STICK;
     } else {
-      /* plastic slip: e minus the elastic part tT / eps_t (= sgn e_max in the automatic form) */
-      TslDual slip = law->elastic_slip > 0 ? DAddC(e, -sgn * law->elastic_slip) : DScale(1 / law->eps_t, DSub(trial, DScale(sgn, limit)));
+      TslDual dir[2], slip[2];
 
-      fs->tT        = DScale(sgn, limit);
-      fs->slip_diss = slip.v;
-      fs->anchor    = xi.v - (e.v - slip.v) / L.v;
-      fs->D         = DMul(fs->tT, slip);
+      /* radial return: t = mu pN t_trial / |t_trial|; plastic slip = e minus the elastic part t / eps_t (= e_max along
+       * the direction in the automatic form) */
+      Direction(nc, trial, dir);
+      for (PetscInt c = 0; c < nc; c++) {
+        fs->t[c]         = DMul(limit, dir[c]);
+        slip[c]          = law->elastic_slip > 0 ? DSub(sl->e[c], DScale(law->elastic_slip, dir[c])) : DScale(1 / law->eps_t, DSub(trial[c], fs->t[c]));
+        fs->slip_diss[c] = slip[c].v;
+        fs->D            = c == 0 ? DMul(fs->t[c], slip[c]) : DAdd(fs->D, DMul(fs->t[c], slip[c]));
+      }
+      fs->anchor = sl->xi.v - (sl->e[0].v - slip[0].v) / sl->L.v;
+      if (nc == 2) fs->w_anchor = sl->w.v - (sl->e[1].v - slip[1].v);
     }
   } else {
-    /* the regularised sign is measured from the anchor, which trails the node by slip_tol while it slips:
-     * a node that slipped in the last increment starts the next one on the slip branch (tT = mu pN, no
-     * tangential stiffness) instead of at ds = 0 in the middle of the steep ramp, whose tangent
-     * mu pN / slip_tol made the first Newton step predict a shear hundreds of times mu pN (tilting the
-     * block, opening the contact: issue 8, item 7). A node starting to slip (anchor = xi_old) sees
-     * e = ds, as before. */
+    /* the regularised direction is measured from the anchor, which trails the node by slip_tol while it
+     * slips: a node that slipped in the last increment starts the next one on the slip branch (|t| = mu pN,
+     * no tangential stiffness along the slip) instead of at ds = 0 in the middle of the steep ramp, whose
+     * tangent mu pN / slip_tol made the first Newton step predict a shear hundreds of times mu pN (tilting
+     * the block, opening the contact: issue 8, item 7). A node starting to slip (anchor = start of the
+     * increment) sees e = ds, as before. */
     PetscReal tol = law->slip_tol;
-    TslDual   e   = DMul(L, DAddC(xi, -in->hist.xi_anchor));
-    TslDual   sgn;
+    TslDual   dir[2], mup = DScale(law->mu, pN);
 
     PetscCheck(tol > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Lagrange friction needs slip_tol > 0");
-    if (PetscAbsReal(e.v) >= tol) {
-      PetscReal s = e.v > 0 ? 1 : -1;
-
-      sgn = DConst(s);
+    if (MagnitudeValue(nc, sl->e) >= tol) {
+      Direction(nc, sl->e, dir);
       /* just beyond the ramp, so that round-off in the next increment's e does not fall back onto it */
-      fs->anchor = xi.v - s * tol * (1 + 1e-6) / L.v;
+      fs->anchor = sl->xi.v - dir[0].v * tol * (1 + 1e-6) / sl->L.v;
+      if (nc == 2) fs->w_anchor = sl->w.v - dir[1].v * tol * (1 + 1e-6);
     } else {
-      sgn        = DScale(1 / tol, e);
-      fs->anchor = in->hist.xi_anchor;
-      fs->status = TSL_CONTACT_STICK;
+      for (PetscInt c = 0; c < nc; c++) dir[c] = DScale(1 / tol, sl->e[c]);
+      fs->anchor   = in->hist.xi_anchor;
+      fs->w_anchor = in->hist.w_anchor;
+      fs->status   = TSL_CONTACT_STICK;
     }
-    fs->tT        = DMul(DScale(law->mu, pN), sgn);
-    fs->slip_diss = ds.v;
-    fs->D         = DMul(fs->tT, ds);
+    for (PetscInt c = 0; c < nc; c++) {
+      fs->t[c]         = DMul(mup, dir[c]);
+      fs->slip_diss[c] = sl->ds[c].v;
+      fs->D            = c == 0 ? DMul(fs->t[c], sl->ds[c]) : DAdd(fs->D, DMul(fs->t[c], sl->ds[c]));
+    }
   }
   /* dissipated energy per area over the increment -> rate */
   if (law->eta != 0) PetscCheck(in->dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Frictional heating needs dt > 0");
@@ -213,29 +271,47 @@ static PetscErrorCode RadiationConstant(const TslContactLaw *law, TslDual g, Tsl
 }
 
 /* Contact area of the secondary node: its tributary length times the thickness (plane), or times 2 pi r
- * at its reference radius for both axisymmetric kinematics (a twist model's phi plays no part in contact,
- * which acts in the r-z plane). The one place the kernel looks at the kinematics. */
+ * at its reference radius for both axisymmetric kinematics. */
 static PetscReal NodeArea(const TslContactInput *in)
 {
-  PetscBool revolve = (PetscBool)(in->kin == TSL_KIN_AXISYMMETRIC || in->kin == TSL_KIN_AXISYMMETRIC_TWIST);
+  return ContactKinematics[in->kin].revolve ? in->length * 2 * PETSC_PI * in->x[0][0] : in->length * in->thickness;
+}
 
-  return revolve ? in->length * 2 * PETSC_PI * in->x[0][0] : in->length * in->thickness;
+/* Twist: the reference radius R_m(xi) = N_a R_a of the main point and the relative circumferential
+ * displacement w = R_s phi_s - R_m(xi) phi_m(xi), phi_m = N_a phi_a, of the secondary node against it
+ * (u_theta = R phi, the elements' small-strain twist: reference radii, so that the moments R f_theta the
+ * friction puts on the phi rows are work-conjugate to phi exactly as the elements' own). N[] are the
+ * segment's shape functions at xi; phi of node k is seeded in slot nu k + 3 when seed is set. */
+static TslDual RelativeTwist(const TslContactInput *in, PetscInt nper, const TslDual N[], PetscBool seed, TslDual *Rm)
+{
+  const PetscInt nu = 4;
+  TslDual        phi_m = DConst(0);
+
+  *Rm = DConst(0);
+  for (PetscInt a = 0; a < nper; a++) {
+    *Rm   = DAdd(*Rm, DScale(in->x[1 + a][0], N[a]));
+    phi_m = DAdd(phi_m, DMul(N[a], DVar(in->u[1 + a][3], seed ? nu * (1 + a) + 3 : -1)));
+  }
+  return DSub(DScale(in->x[0][0], DVar(in->u[0][3], seed ? 3 : -1)), DMul(*Rm, phi_m));
 }
 
 PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out)
 {
   TslContactGeom geo;
-  PetscInt       nnode, ndof, nper;
+  PetscInt       nnode, ndof, nper, nu;
   PetscReal      xi_raw, area, Nv[TSL_CONTACT_MAX_FACE_NODES], dNv[TSL_CONTACT_MAX_FACE_NODES], d2Nv[TSL_CONTACT_MAX_FACE_NODES];
-  TslDual        xi, n[2], tau[2], r[2], xm[2], t[2], g, L, pN, ds, traction[2], k, C, q, theta_s, theta_m, heat;
+  TslDual        xi, n[2], tau[2], r[2], xm[2], t[2], g, L, pN, traction[2], k, C, q, theta_s, theta_m, heat, Rm = DConst(0);
   TslDual        N[TSL_CONTACT_MAX_FACE_NODES], Rd[TSL_CONTACT_MAX_DOF];
+  Slip           sl;
   FrictionState  fs;
   PetscBool      closed;
 
   PetscFunctionBeginUser;
   PetscCheck(in->length > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Tributary length must be positive");
+  PetscCheck((PetscInt)in->kin >= 0 && in->kin < TSL_NKIN, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown kinematics %d", (int)in->kin);
   PetscCall(TslContactGeomSetUp(in, PETSC_TRUE, &geo, &nnode));
-  ndof = 3 * nnode;
+  nu   = geo.nu;
+  ndof = nu * nnode;
   nper = geo.face->geom->nnode;
   area = NodeArea(in);
 
@@ -245,34 +321,53 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   for (PetscInt d = 0; d < 2; d++) r[d] = DSub(geo.xs[d], xm[d]);
   g = DDot(r, n);
   TslContactFacePointDual(geo.face, geo.seg, xi, xm, t);
-  L  = DSqrt(DDot(t, t));
-  ds = DMul(L, DAddC(xi, -in->hist.xi_old));
+  L = DSqrt(DDot(t, t));
   TslContactFaceShape(geo.face, xi.v, Nv, dNv, d2Nv);
   for (PetscInt a = 0; a < nper; a++) N[a] = DChain(xi, Nv[a], dNv[a]);
+  sl.nc    = ContactKinematics[in->kin].twist ? 2 : 1;
+  sl.xi    = xi;
+  sl.L     = L;
+  sl.ds[0] = DMul(L, DAddC(xi, -in->hist.xi_old));
+  sl.e[0]  = DMul(L, DAddC(xi, -in->hist.xi_anchor));
+  sl.w     = DConst(0);
+  sl.ds[1] = sl.e[1] = DConst(0);
+  if (sl.nc == 2) {
+    /* circumferential slip: the relative circumferential displacement w from the start of the increment
+     * and from the anchor */
+    sl.w     = RelativeTwist(in, nper, N, PETSC_TRUE, &Rm);
+    sl.ds[1] = DAddC(sl.w, -in->hist.w_old);
+    sl.e[1]  = DAddC(sl.w, -in->hist.w_anchor);
+  }
 
   /* mechanical laws */
   pN = NormalPressure(law, &in->hist, g, L.v, &closed);
-  PetscCall(Friction(law, in, pN, xi, L, ds, &fs));
-  for (PetscInt d = 0; d < 2; d++) traction[d] = DSub(DMul(pN, n[d]), DMul(fs.tT, tau[d]));
+  PetscCall(Friction(law, in, pN, &sl, &fs));
+  for (PetscInt d = 0; d < 2; d++) traction[d] = DSub(DMul(pN, n[d]), DMul(fs.t[0], tau[d]));
 
   /* thermal laws */
   theta_s = DVar(in->u[0][2], 2);
   theta_m = DConst(0);
-  for (PetscInt a = 0; a < nper; a++) theta_m = DAdd(theta_m, DMul(N[a], DVar(in->u[1 + a][2], 3 * (1 + a) + 2)));
+  for (PetscInt a = 0; a < nper; a++) theta_m = DAdd(theta_m, DMul(N[a], DVar(in->u[1 + a][2], nu * (1 + a) + 2)));
   PetscCall(Conductance(law, pN, closed, g, &k));
   PetscCall(RadiationConstant(law, g, &C));
   q = DMul(k, DSub(theta_m, theta_s));
   if (C.v != 0) q = DAdd(q, DMul(C, DSub(DPow4(DAddC(theta_m, -law->theta_zero)), DPow4(DAddC(theta_s, -law->theta_zero)))));
   heat = DScale(law->eta, fs.D);
 
-  /* residual: internal - external; contact force and heat inflow are external to each node */
+  /* residual: internal - external; contact force and heat inflow are external to each node. With twist the
+   * circumferential friction force -A tW on s (+A tW at the main point) does the virtual work
+   * -A tW (R_s dphi_s - R_m N_a dphi_a): moments on the phi rows. */
   for (PetscInt i = 0; i < ndof; i++) Rd[i] = DConst(0);
   for (PetscInt d = 0; d < 2; d++) {
     Rd[d] = DScale(-area, traction[d]);
-    for (PetscInt a = 0; a < nper; a++) Rd[3 * (a + 1) + d] = DScale(area, DMul(N[a], traction[d]));
+    for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + d] = DScale(area, DMul(N[a], traction[d]));
   }
   Rd[2] = DScale(-area, DAdd(q, DScale(law->f, heat)));
-  for (PetscInt a = 0; a < nper; a++) Rd[3 * (a + 1) + 2] = DScale(area, DMul(N[a], DSub(q, DScale(1 - law->f, heat))));
+  for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + 2] = DScale(area, DMul(N[a], DSub(q, DScale(1 - law->f, heat))));
+  if (sl.nc == 2) {
+    Rd[3] = DScale(area * in->x[0][0], fs.t[1]);
+    for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + 3] = DScale(-area, DMul(DMul(N[a], Rm), fs.t[1]));
+  }
 
   if (R)
     for (PetscInt i = 0; i < ndof; i++) R[i] = Rd[i].v;
@@ -280,25 +375,51 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
     for (PetscInt i = 0; i < ndof; i++)
       for (PetscInt j = 0; j < ndof; j++) K[i * ndof + j] = Rd[i].d[j];
   if (out) {
-    out->nnode            = nnode;
-    out->xi               = xi.v;
-    out->xi_raw           = xi_raw;
-    out->side             = TslContactProjectionSide(xi_raw, 0);
-    out->normal[0]        = n[0].v;
-    out->normal[1]        = n[1].v;
-    out->gap              = g.v;
-    out->area             = area;
-    out->pressure         = pN.v;
-    out->slip             = ds.v;
-    out->shear            = fs.tT.v;
-    out->slip_dissipative = fs.slip_diss;
-    out->conductance      = k.v;
-    out->radiation_C      = C.v;
-    out->heat_flux        = q.v;
-    out->dissipation_rate = fs.D.v;
-    out->heat_generation  = heat.v;
-    out->status           = fs.status;
-    out->xi_anchor        = fs.anchor;
+    out->nnode                 = nnode;
+    out->nu                    = nu;
+    out->xi                    = xi.v;
+    out->xi_raw                = xi_raw;
+    out->side                  = TslContactProjectionSide(xi_raw, 0);
+    out->normal[0]             = n[0].v;
+    out->normal[1]             = n[1].v;
+    out->gap                   = g.v;
+    out->area                  = area;
+    out->pressure              = pN.v;
+    out->slip                  = sl.ds[0].v;
+    out->shear                 = fs.t[0].v;
+    out->slip_dissipative      = fs.slip_diss[0];
+    out->w                     = sl.w.v;
+    out->slip_circ             = sl.ds[1].v;
+    out->shear_circ            = fs.t[1].v;
+    out->slip_dissipative_circ = fs.slip_diss[1];
+    out->conductance           = k.v;
+    out->radiation_C           = C.v;
+    out->heat_flux             = q.v;
+    out->dissipation_rate      = fs.D.v;
+    out->heat_generation       = heat.v;
+    out->status                = fs.status;
+    out->xi_anchor             = fs.anchor;
+    out->w_anchor              = fs.w_anchor;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslContactHistoryStart(const TslContactInput *in, PetscReal xi, TslContactHistory *h)
+{
+  const TslContactFace *face = TslContactFaceGet(in->face);
+  PetscReal             Nv[TSL_CONTACT_MAX_FACE_NODES], dNv[TSL_CONTACT_MAX_FACE_NODES], d2Nv[TSL_CONTACT_MAX_FACE_NODES];
+  TslDual               N[TSL_CONTACT_MAX_FACE_NODES], Rm;
+
+  PetscFunctionBeginUser;
+  PetscCheck(face, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown contact face family %d", (int)in->face);
+  PetscCheck((PetscInt)in->kin >= 0 && in->kin < TSL_NKIN, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown kinematics %d", (int)in->kin);
+  h->xi_old = h->xi_anchor = xi;
+  h->lambda                = 0;
+  h->w_old = h->w_anchor = 0;
+  if (ContactKinematics[in->kin].twist) {
+    TslContactFaceShape(face, xi, Nv, dNv, d2Nv);
+    for (PetscInt a = 0; a < face->geom->nnode; a++) N[a] = DConst(Nv[a]);
+    h->w_old = h->w_anchor = RelativeTwist(in, face->geom->nnode, N, PETSC_FALSE, &Rm).v;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -7,10 +7,14 @@
  * docs/contact.md describes the algorithm, formulas, units and signs in full.
  *
  * Conventions (as include/thermoslide/element.h):
- *   - nodal unknowns interleaved per node, (u_x, u_y, theta); residual = internal - external;
+ *   - nodal unknowns interleaved per node, (u_x, u_y, theta), and (u_x, u_y, theta, phi) for the
+ *     axisymmetric kinematics with twist (TslContactNodeUnknowns); residual = internal - external;
  *     K = dR/du, row-major;
  *   - axisymmetric (with or without twist): x = r, y = z, forces and heat are totals around the
- *     circumference (2 pi r); contact acts in the r-z plane (a twist model's phi is not involved);
+ *     circumference (2 pi r); with twist the slip has a circumferential component as well, the relative
+ *     circumferential displacement w = R_s phi_s - R_m(xi) phi_m(xi) (R reference radii, phi the twist
+ *     angle, u_theta = R phi as in the elements), and its friction force enters the phi rows as the
+ *     moment R f_theta;
  *   - plane: forces and heat are per the given thickness.
  *   - A main segment is one element face of the main surface, its nodes in the face's own order (ends
  *     first, then the midside node: (m1, m2) for line2, (m1, m2, m3) for line3), main body on the left of
@@ -32,7 +36,12 @@
 #define TSL_CONTACT_MAX_FACE_NODES 3 /* nodes of one main segment (line3) */
 /* secondary, the segment's nodes, and the other nodes of the previous and the next segment (smoothing) */
 #define TSL_CONTACT_MAX_NODES (1 + TSL_CONTACT_MAX_FACE_NODES + 2 * (TSL_CONTACT_MAX_FACE_NODES - 1))
-#define TSL_CONTACT_MAX_DOF   (TSL_CONTACT_MAX_NODES * 3)
+#define TSL_CONTACT_MAX_NODE_DOF 4 /* (u_x, u_y, theta, phi): phi with twist only */
+#define TSL_CONTACT_MAX_DOF      (TSL_CONTACT_MAX_NODES * TSL_CONTACT_MAX_NODE_DOF)
+
+/* Unknowns per node of a contact element: 3 (u_x, u_y, theta), or 4 (u_x, u_y, theta, phi) for the
+ * axisymmetric kinematics with twist, whose slip has a circumferential component. */
+PetscInt TslContactNodeUnknowns(TslKinematics kin);
 
 /* ---------------------------------------------------------------------------------------------------
  * Face families of contact surfaces
@@ -168,6 +177,10 @@ typedef struct {
   PetscReal xi_old;    /* projection parameter on the current segment at the start of the increment */
   PetscReal xi_anchor; /* sticking anchor (PENALTY friction): tT = eps_t L (xi - xi_anchor) while sticking */
   PetscReal lambda;    /* augmented-Lagrange multiplier (pressure), AUGMENTED normal only */
+  /* twist only: the relative circumferential displacement w = R_s phi_s - R_m(xi) phi_m(xi) (a length)
+   * at the start of the increment, and its sticking anchor (the circumferential slip from the anchor is
+   * w - w_anchor); unchanged by a move to a neighbouring segment (w is continuous along the surface) */
+  PetscReal w_old, w_anchor;
 } TslContactHistory;
 
 typedef enum { TSL_CONTACT_OPEN = 0, TSL_CONTACT_STICK, TSL_CONTACT_SLIP } TslContactStatus;
@@ -184,9 +197,9 @@ typedef struct {
   PetscReal          thickness;                            /* plane models (length); ignored for axisymmetry */
   PetscReal          length;                               /* tributary length of the secondary node on its own surface (reference) */
   PetscReal          x[1 + TSL_CONTACT_MAX_FACE_NODES][2]; /* reference coordinates of s and the segment's nodes */
-  PetscReal          u[1 + TSL_CONTACT_MAX_FACE_NODES][3]; /* current unknowns (u_x, u_y, theta) of the same */
+  PetscReal          u[1 + TSL_CONTACT_MAX_FACE_NODES][TSL_CONTACT_MAX_NODE_DOF]; /* current unknowns (u_x, u_y, theta[, phi]) of the same */
   /* the previous / the next segment's other nodes (see above): reference coordinates [nper-1][2] and
-   * unknowns [nper-1][3]; NULL at a surface end */
+   * unknowns [nper-1][nu], nu = TslContactNodeUnknowns(kin); NULL at a surface end */
   const PetscReal  *x_prev, *u_prev;
   const PetscReal  *x_next, *u_next;
   PetscReal         smoothing; /* fraction s of the segment parameter rounded at each end, 0 <= s < 0.5 */
@@ -230,7 +243,8 @@ PetscErrorCode TslContactSmoothedNormal(const PetscReal x0[], const PetscReal x1
  * The contact element kernel
  * ------------------------------------------------------------------------------------------------- */
 typedef struct {
-  PetscInt         nnode;            /* 1 + nper + (nper - 1) ((x_prev != NULL) + (x_next != NULL)); R and K have 3*nnode rows */
+  PetscInt         nnode;            /* 1 + nper + (nper - 1) ((x_prev != NULL) + (x_next != NULL)); R and K have nu*nnode rows */
+  PetscInt         nu;               /* unknowns per node (TslContactNodeUnknowns) */
   PetscReal        xi;               /* projection used (= xi_raw unless beyond [-1, 2]) */
   PetscReal        xi_raw;           /* unclamped projection (see TslContactProjectionSide) */
   PetscInt         side;             /* TslContactProjectionSide(xi_raw, 0) */
@@ -241,6 +255,11 @@ typedef struct {
   PetscReal        slip;             /* slip increment ds = |t| (xi - xi_old) (length), CSLIP increment */
   PetscReal        shear;            /* CSHEAR = tT (signed like the slip it resists) */
   PetscReal        slip_dissipative; /* part of ds that dissipates (ds in LAGRANGE mode, plastic slip in PENALTY) */
+  /* twist only (zero otherwise): the circumferential components, w = R_s phi_s - R_m(xi) phi_m(xi) */
+  PetscReal        w;                     /* relative circumferential displacement (length) */
+  PetscReal        slip_circ;             /* circumferential slip increment w - w_old, > 0 when s turns ahead of the main surface */
+  PetscReal        shear_circ;            /* circumferential shear stress (signed like the slip it resists) */
+  PetscReal        slip_dissipative_circ; /* its dissipative part */
   PetscReal        conductance;      /* k used */
   PetscReal        radiation_C;      /* C used */
   PetscReal        heat_flux;        /* q = q_cond + q_rad per area, main -> secondary (HFLA) */
@@ -248,25 +267,34 @@ typedef struct {
   PetscReal        heat_generation;  /* eta * dissipation_rate per area */
   TslContactStatus status;
   PetscReal        xi_anchor; /* updated sticking anchor: store with TslContactHistoryUpdate after convergence */
+  PetscReal        w_anchor;  /* updated circumferential anchor (twist) */
 } TslContactOutput;
 
-/* Residual R[3*nnode] (internal - external: the contact force on a node enters with a minus sign, heat
+/* Residual R[nu*nnode] (internal - external: the contact force on a node enters with a minus sign, heat
  * flowing into a node with a minus sign) and consistent (unsymmetric) tangent K = dR/du (row-major,
- * 3*nnode x 3*nnode, may be NULL) of one node-to-segment contact element, plus diagnostics (out, may be
- * NULL). Node order as TslContactInput. Without neighbours this is the element of s and the segment's
- * nodes (9 entries for line2, 12 for line3).
+ * nu*nnode x nu*nnode, may be NULL) of one node-to-segment contact element, plus diagnostics (out, may be
+ * NULL). nu = TslContactNodeUnknowns(in->kin); node order as TslContactInput. Without neighbours this is
+ * the element of s and the segment's nodes (9 entries for line2, 12 for line3; 12 and 16 with twist).
  *   R_s  = -A (pN n - tT tau),             R_a  = +A N_a (pN n - tT tau),        a = the segment's nodes
  *   Rth_s = -A (q + f eta D),              Rth_a = +A N_a (q - (1 - f) eta D)
- * with N_a the face's shape functions at xi (line2: 1 - xi, xi),
+ *   Rphi_s = +A tW R_s,                    Rphi_a = -A N_a R_m(xi) tW            (twist only)
+ * with N_a the face's shape functions at xi (line2: 1 - xi, xi), (tT, tW) the in-plane and the
+ * circumferential shear (Coulomb on the 2-vector: |(tT, tW)| <= mu pN, slip along the trial traction),
+ * R_s and R_m(xi) = N_a R_a reference radii,
  * q = k (theta_m - theta_s) + C [(theta_m - theta_Z)^4 - (theta_s - theta_Z)^4],
- * theta_m = N_a theta_a, D the dissipation rate per area. Beyond a segment end the element works on the
+ * theta_m = N_a theta_a, D = (tT, tW) . (dissipative slip) / dt the dissipation rate per area. Beyond a segment end the element works on the
  * extended segment (xi outside [0,1], frozen only beyond [-1,2]); when out->side != 0 the caller must
  * re-pair or drop the node after convergence (see TslContactProjectionSide). */
 PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
 
-/* After an increment converged: xi_old = out->xi, xi_anchor = out->xi_anchor (lambda is left to
- * TslContactAugmentedUpdate). */
+/* After an increment converged: xi_old = out->xi, xi_anchor = out->xi_anchor, w_old = out->w,
+ * w_anchor = out->w_anchor (lambda is left to TslContactAugmentedUpdate). */
 PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHistory *h);
+
+/* A new contact starts stress-free at parameter xi of the input's segment: xi_old = xi_anchor = xi,
+ * w_old = w_anchor = the relative circumferential displacement there (twist; 0 otherwise), lambda = 0.
+ * in->hist is not read. */
+PetscErrorCode TslContactHistoryStart(const TslContactInput *in, PetscReal xi, TslContactHistory *h);
 
 /* ---------------------------------------------------------------------------------------------------
  * Candidate search: uniform bin grid over the main segments' bounding boxes

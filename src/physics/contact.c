@@ -44,17 +44,17 @@ static PetscInt ElementNodes(TslProblem p, const TslContactNode *cn, PetscInt no
   return n;
 }
 
-/* Reference coordinates (2) and current unknowns (u_x, u_y, theta) of a local node, the unknowns taken
- * from their slots among the node's (cs->slot: a twist model has phi before theta). */
-static void NodeData(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[3])
+/* Reference coordinates (2) and current unknowns (u_x, u_y, theta[, phi]: cs->nu of them) of a local node,
+ * taken from their slots among the node's (cs->slot: a twist model has phi before theta). */
+static void NodeData(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[])
 {
   for (PetscInt c = 0; c < 2; c++) x[c] = p->m->node_xyz[3 * l + c];
-  for (PetscInt c = 0; c < 3; c++) u[c] = xa ? PetscRealPart(xa[l * p->ndof + cs->slot[c]]) : 0;
+  for (PetscInt c = 0; c < cs->nu; c++) u[c] = xa ? PetscRealPart(xa[l * p->ndof + cs->slot[c]]) : 0;
 }
 
 static void CurrentPosition(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal y[2])
 {
-  PetscReal x[2], u[3];
+  PetscReal x[2], u[TSL_CONTACT_MAX_NODE_DOF];
   NodeData(p, cs, xa, l, x, u);
   y[0] = x[0] + u[0], y[1] = x[1] + u[1];
 }
@@ -77,54 +77,68 @@ static PetscErrorCode FaceMetric(TslProblem p, const TslContactSurface *cs, cons
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Storage of the neighbours' nodes that a TslContactInput points to. */
+typedef struct {
+  PetscReal xp[2 * TSL_CONTACT_MAX_FACE_NODES], up[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES];
+  PetscReal xn[2 * TSL_CONTACT_MAX_FACE_NODES], un[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES];
+} NeighbourData;
+
+/* The kernel input of secondary node cn on its segment cn->seg at the state xa (history included), its
+ * local nodes in kernel order (*n of them); in points into nb. */
+static void ElementInput(TslProblem p, const TslContactNode *cn, const PetscScalar *xa, TslContactInput *in, PetscInt nodes[], PetscInt *n,
+                         NeighbourData *nb)
+{
+  const TslContactSurface *cs = &p->csurf[cn->pair];
+  PetscInt                 k  = 0;
+
+  *n = ElementNodes(p, cn, nodes);
+  memset(in, 0, sizeof(*in));
+  in->kin       = cs->kin;
+  in->face      = cs->face;
+  in->thickness = cs->thickness;
+  in->length    = cn->length;
+  for (PetscInt a = 0; a <= cs->nper; a++) NodeData(p, cs, xa, nodes[k++], in->x[a], in->u[a]);
+  if (cs->smooth > 0 && cs->prev[cn->seg] >= 0) {
+    for (PetscInt j = 0; j < cs->nper - 1; j++) NodeData(p, cs, xa, nodes[k++], &nb->xp[2 * j], &nb->up[cs->nu * j]);
+    in->x_prev = nb->xp, in->u_prev = nb->up;
+  }
+  if (cs->smooth > 0 && cs->next[cn->seg] >= 0) {
+    for (PetscInt j = 0; j < cs->nper - 1; j++) NodeData(p, cs, xa, nodes[k++], &nb->xn[2 * j], &nb->un[cs->nu * j]);
+    in->x_next = nb->xn, in->u_next = nb->un;
+  }
+  in->smoothing = cs->smooth;
+  in->dt        = p->dt > 0 ? p->dt : 1.0;
+  in->hist      = cn->hist;
+}
+
 PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat)
 {
-  PetscReal R[TSL_CONTACT_MAX_DOF], K[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF];
-  PetscReal xp[2 * TSL_CONTACT_MAX_FACE_NODES], up[3 * TSL_CONTACT_MAX_FACE_NODES], xn[2 * TSL_CONTACT_MAX_FACE_NODES],
-      un[3 * TSL_CONTACT_MAX_FACE_NODES];
+  PetscReal     R[TSL_CONTACT_MAX_DOF], K[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF];
+  NeighbourData nb;
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode          *cn = &p->cnode[i];
     const TslContactSurface *cs;
     TslContactInput          in;
-    PetscInt                 nodes[TSL_CONTACT_MAX_NODES], n, ld[TSL_CONTACT_MAX_DOF];
+    PetscInt                 nodes[TSL_CONTACT_MAX_NODES], n, nu, ld[TSL_CONTACT_MAX_DOF];
 
     if (cn->seg < 0) continue;
     cs = &p->csurf[cn->pair];
-    n  = ElementNodes(p, cn, nodes);
+    nu = cs->nu;
+    ElementInput(p, cn, xa, &in, nodes, &n, &nb);
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt c = 0; c < 3; c++) ld[3 * a + c] = nodes[a] * p->ndof + cs->slot[c];
+      for (PetscInt c = 0; c < nu; c++) ld[nu * a + c] = nodes[a] * p->ndof + cs->slot[c];
     if (mode == ASM_PATTERN) {
-      PetscCall(TslProblemInsert(p, mode, A, f, 3 * n, ld, NULL, NULL));
+      PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, NULL, NULL));
       continue;
     }
-    PetscCall(PetscMemzero(&in, sizeof(in)));
-    in.kin       = cs->kin;
-    in.face      = cs->face;
-    in.thickness = cs->thickness;
-    in.length    = cn->length;
-    {
-      PetscInt k = 0;
-      for (PetscInt a = 0; a <= cs->nper; a++) NodeData(p, cs, xa, nodes[k++], in.x[a], in.u[a]);
-      if (cs->smooth > 0 && cs->prev[cn->seg] >= 0) {
-        for (PetscInt j = 0; j < cs->nper - 1; j++) NodeData(p, cs, xa, nodes[k++], &xp[2 * j], &up[3 * j]);
-        in.x_prev = xp, in.u_prev = up;
-      }
-      if (cs->smooth > 0 && cs->next[cn->seg] >= 0) {
-        for (PetscInt j = 0; j < cs->nper - 1; j++) NodeData(p, cs, xa, nodes[k++], &xn[2 * j], &un[3 * j]);
-        in.x_next = xn, in.u_next = un;
-      }
-    }
-    in.smoothing = cs->smooth;
-    in.dt        = p->dt > 0 ? p->dt : 1.0;
-    in.hist      = cn->hist;
     PetscCall(TslContactElement(&cs->law, &in, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
-    if (f || A) PetscCall(TslProblemInsert(p, mode, A, f, 3 * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
+    if (f || A) PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
     if (mode == ASM_RESIDUAL)
-      PetscCall(PetscInfo(NULL, "contact node %" PetscInt_FMT ": segment %" PetscInt_FMT " xi %g gap %g p %g slip %g shear %g q %g status %d\n",
+      PetscCall(PetscInfo(NULL, "contact node %" PetscInt_FMT ": segment %" PetscInt_FMT " xi %g gap %g p %g slip %g shear %g slip_circ %g shear_circ %g q %g status %d\n",
                           p->m->node_id[cn->lnode], cn->seg, (double)cn->out.xi_raw, (double)cn->out.gap, (double)cn->out.pressure,
-                          (double)cn->out.slip, (double)cn->out.shear, (double)cn->out.heat_flux, (int)cn->out.status));
+                          (double)cn->out.slip, (double)cn->out.shear, (double)cn->out.slip_circ, (double)cn->out.shear_circ, (double)cn->out.heat_flux, (int)cn->out.status));
     if (heat) {
       heat->interface += cn->out.heat_flux * cn->out.area;
       heat->dissipation += cn->out.dissipation_rate * cn->out.area;
@@ -229,11 +243,16 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
         (*changed)++;
         /* the history follows the node to a nearby segment; a new contact starts afresh */
         if (best >= 0 && cn->seg >= 0) PetscCall(TransferHistory(p, cs, xa, cn->seg, best, &cn->hist, &moved));
-        if (best >= 0 && !moved) {
-          cn->hist.xi_old = cn->hist.xi_anchor = PetscMin(1, PetscMax(0, best_xi));
-          cn->hist.lambda                      = 0;
-        }
         cn->seg = best;
+        if (best >= 0 && !moved) {
+          /* stress-free at the pairing point, the circumferential anchor (twist) at the relative twist there */
+          TslContactInput in;
+          PetscInt        nodes[TSL_CONTACT_MAX_NODES], n;
+          NeighbourData   nb;
+
+          ElementInput(p, cn, xa, &in, nodes, &n, &nb);
+          PetscCall(TslContactHistoryStart(&in, PetscMin(1, PetscMax(0, best_xi)), &cn->hist));
+        }
       }
     }
     PetscCall(TslContactBinGridDestroy(&grid));
@@ -330,7 +349,7 @@ PetscErrorCode TslProblemContactCommit(TslProblem p)
     TslContactNode *cn = &p->cnode[i];
     if (cn->seg >= 0) {
       PetscCall(TslContactHistoryUpdate(&cn->out, &cn->hist));
-      cn->cslip += PetscAbsReal(cn->out.slip);
+      cn->cslip += PetscHypotReal(cn->out.slip, cn->out.slip_circ); /* the slip vector's length (twist: 2 components) */
     }
     cn->seg_c   = cn->seg;
     cn->hist_c  = cn->hist;
@@ -520,7 +539,6 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
     const TslContactPair *pair = &m->pairs[k];
     TslContactSurface    *cs   = &p->csurf[k];
     const TslContactFace *face = TslContactFaceGet((TslContactFaceKind)pair->main_face);
-    char                  loc[PETSC_MAX_PATH_LEN + 32];
 
     PetscCheck(face && face->geom->nnode == pair->nper, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "contact pair %" PetscInt_FMT ": face family %" PetscInt_FMT " does not have %" PetscInt_FMT " nodes", k + 1, pair->main_face,
@@ -545,16 +563,18 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
       }
     }
     PetscCall(SetUpLaw(p, pair, pair->mean_length, penalty[k], &cs->law));
-    /* the kernels see (u_x, u_y, theta) per node; a twist model has phi (dof 5) among them too, which
-     * frictionless contact does not involve, and friction would need the circumferential slip */
+    /* the kernels see (u_x, u_y, theta) per node, and the twist phi (dof 5) after them on twist models,
+     * whose slip has a circumferential component */
+    cs->nu      = TslContactNodeUnknowns(cs->kin);
     cs->slot[0] = TslProblemDofSlot(p, 1);
     cs->slot[1] = TslProblemDofSlot(p, 2);
     cs->slot[2] = TslProblemDofSlot(p, 11);
+    cs->slot[3] = TslProblemDofSlot(p, 5);
     PetscCheck(cs->slot[0] >= 0 && cs->slot[1] >= 0 && cs->slot[2] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "contact needs the displacements 1, 2 and the temperature 11 among the nodal unknowns");
-    PetscCheck(TslProblemDofSlot(p, 5) < 0 || cs->law.mu == 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-               "%s: friction with twist elements (CGAX): circumferential slip is not supported yet (frictionless contact is)",
-               TslLocString(m, pair->loc, loc, sizeof(loc)));
+    PetscCheck((cs->nu == 4) == (cs->slot[3] >= 0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "contact pair %" PetscInt_FMT ": the twist dof 5 is %s the nodal unknowns but the pair's kinematics is %s", k + 1,
+               cs->slot[3] >= 0 ? "among" : "not among", cs->nu == 4 ? "with twist" : "without twist");
     /* candidates within one mean segment length, or the largest tabulated clearance */
     cs->search_radius = pair->mean_length;
     if (cs->law.conductance == TSL_CONTACT_CONDUCTANCE_CLEARANCE) cs->search_radius = PetscMax(cs->search_radius, cs->law.k_arg[cs->law.k_n - 1]);

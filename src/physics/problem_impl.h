@@ -14,7 +14,8 @@ typedef struct {
   TslContactFaceKind face;        /* family of the main faces */
   PetscInt          *main_lnode;  /* [nper*nmain] local nodes of each face in face order, main body on the left */
   PetscInt          *prev, *next; /* [nmain] neighbouring faces, -1 at the ends */
-  PetscInt           slot[3];     /* slots of u_x, u_y and theta among a node's unknowns */
+  PetscInt           nu;          /* unknowns per node of the contact kernels (3, or 4 with twist) */
+  PetscInt           slot[TSL_CONTACT_MAX_NODE_DOF]; /* slots of u_x, u_y, theta (and phi, twist) among a node's unknowns */
   PetscReal          smooth, thickness, search_radius;
   TslKinematics      kin;
 } TslContactSurface;

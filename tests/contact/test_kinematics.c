@@ -65,7 +65,7 @@ static PetscErrorCode CheckLeaving(TestLog *log)
   TslContactInput   in = InputSetUp(xs, x1, x2);
   TslContactOutput  out;
   TslContactLaw     law;
-  TslContactHistory h = {0.9, 0.85, 0};
+  TslContactHistory h = {.xi_old = 0.9, .xi_anchor = 0.85};
   PetscReal         xi, g;
 
   PetscFunctionBeginUser;

@@ -8,7 +8,13 @@
       the element space, so with consistent contact weights (1/6, 2/3, 1/6 of a face) every secondary node,
       corner or midside, carries the applied pressure and flux. CGAX8T: the same with the twist rows
       (twist held), whose contact must revolve like CAX8T's; contact_twist_friction_cgax8t.inp adds
-      *FRICTION, which is refused (circumferential slip not supported yet).
+      *FRICTION: nothing slips, so the answer is the frictionless one.
+  contact_twist_slide_{cgax4t,cgax8t}_{axial,twist,combined}.inp
+      Frictional sliding with circumferential slip (twist rows): an inner ring (r 1 to 1.25, z 2 to 4) pressed
+      outward (radial force 211.6 on its inner face, tied radially) on an outer ring (r 1.25 to 2.5, z 0 to 6)
+      held on its outside, LAGRANGE friction mu = 0.1, frictional heating eta = 0.5; the inner face is then
+      driven by a slide of magnitude 1 at the interface radius 1.25: axially (u_z = 1), circumferentially
+      (phi = 1/1.25, the path 1.25 phi = 1) or both (u_z = 0.6, 1.25 phi = 0.8). check_twist_slide.py.
   contact_line3_jacobian_cpe8t.inp, contact_line3_friction_cpe8t.inp
       jobs/verification/contact_jacobian_cpe4t.inp and sliding_friction_cpe4t.inp with every CPE4T made a
       CPE8T (a midside node in the middle of each edge; node sets gain the midsides of their edges), so the
@@ -38,6 +44,20 @@ def quad8_block(nx, ny, x0, x1, y0, y1, first_node, first_elem):
             c = [grid[a, b], grid[a + 2, b], grid[a + 2, b + 2], grid[a, b + 2]]
             m = [grid[a + 1, b], grid[a + 2, b + 1], grid[a + 1, b + 2], grid[a, b + 1]]
             elems.append((first_elem + i + j * nx, c + m))
+    return nodes, elems, grid
+
+
+def quad_block(order, nx, ny, x0, x1, y0, y1, first_node, first_elem):
+    """quad8_block for order 2; for order 1 the 4-node quadrilaterals of the same grid of cells (the grid is
+    indexed on the lattice (order nx + 1) x (order ny + 1) either way)."""
+    if order == 2:
+        return quad8_block(nx, ny, x0, x1, y0, y1, first_node, first_elem)
+    nodes, grid = [], {}
+    for j in range(ny + 1):
+        for i in range(nx + 1):
+            grid[i, j] = first_node + len(nodes)
+            nodes.append((grid[i, j], x0 + (x1 - x0) * i / nx, y0 + (y1 - y0) * j / ny))
+    elems = [(first_elem + i + j * nx, [grid[i, j], grid[i + 1, j], grid[i + 1, j + 1], grid[i, j + 1]]) for j in range(ny) for i in range(nx)]
     return nodes, elems, grid
 
 
@@ -84,6 +104,48 @@ def uniform(etype, x0, friction=False):
         out += [" BASE, 5, 5", " UPTOP, 5, 5"]
     out += ["*DLOAD", " UPPER, P3, 100.0", "*DFLUX", " UPPER, S3, 10.0", "*END STEP", ""]
     name = "contact_%s_%s.inp" % ("twist_friction" if friction else "line3_uniform", etype.lower())
+    open(os.path.join(HERE, name), "w").write("\n".join(out))
+
+
+def twist_slide(etype, motion):
+    """The ring pair of contact_twist_slide_*: x = r, y = z; motion axial, twist or combined (docstring above)."""
+    order = 2 if etype.endswith("8T") else 1
+    out_n, out_e, out_g = quad_block(order, 2, 12, 1.25, 2.5, 0.0, 6.0, 1, 1)
+    in_n, in_e, in_g = quad_block(order, 2, 4, 1.0, 1.25, 2.0, 4.0, 1001, 101)
+    base = [n for (i, j), n in sorted(out_g.items()) if i == 2 * order]
+    driven = [n for (i, j), n in sorted(in_g.items()) if i == 0]
+    ref = driven[0]
+    uz, path = {"axial": (1.0, 0.0), "twist": (0.0, 1.0), "combined": (0.6, 0.8)}[motion]
+    out = ["*HEADING",
+           " Inner %s ring pressed on an outer ring and slid with friction at the interface radius 1.25: %s (u_z %g, 1.25 phi %g)" %
+           (etype, motion, uz, path),
+           "*NODE, NSET=ALL"]
+    out += [" %d, %.17g, %.17g" % n for n in out_n + in_n]
+    out.append("*ELEMENT, TYPE=%s, ELSET=OUTER" % etype)
+    out += [" %d, %s" % (e, ", ".join(str(x) for x in c)) for e, c in out_e]
+    out.append("*ELEMENT, TYPE=%s, ELSET=INNER" % etype)
+    out += [" %d, %s" % (e, ", ".join(str(x) for x in c)) for e, c in in_e]
+    out += ["*NSET, NSET=BASE", lines(base), "*NSET, NSET=DRIVEN", lines(driven),
+            "*ELSET, ELSET=MAINE", lines(e for k, (e, c) in enumerate(out_e) if k % 2 == 0),
+            "*ELSET, ELSET=SECE", lines(e for k, (e, c) in enumerate(in_e) if k % 2 == 1),
+            "*SURFACE, NAME=MAIN, TYPE=ELEMENT", " MAINE, S4",
+            "*SURFACE, NAME=SECONDARY, TYPE=ELEMENT", " SECE, S2",
+            "*MATERIAL, NAME=STEEL", "*ELASTIC", " 30.0E6, 0.3", "*CONDUCTIVITY", " 10.0", "*DENSITY", " 1000.0",
+            "*SPECIFIC HEAT", " 0.001",
+            "*SOLID SECTION, ELSET=OUTER, MATERIAL=STEEL", " 1.0", "*SOLID SECTION, ELSET=INNER, MATERIAL=STEEL", " 1.0",
+            "*SURFACE INTERACTION, NAME=IFACE", "*FRICTION, LAGRANGE", " 0.1", "*GAP CONDUCTANCE, PRESSURE", " 20.0, 0.0",
+            "*GAP HEAT GENERATION", " 0.5, 0.5",
+            "*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05", " SECONDARY, MAIN",
+            "*AMPLITUDE, NAME=SLIDE", " 0.0, 0.0, 1.0, 1.0",
+            "*INITIAL CONDITIONS, TYPE=TEMPERATURE", " ALL, 0.0"]
+    for n in driven[1:]:
+        out += ["*EQUATION", " 2", " %d, 1, 1.0, %d, 1, -1.0" % (n, ref)]
+    out += ["*STEP, NAME=PRESS, INC=100", "*COUPLED TEMPERATURE-DISPLACEMENT", " 0.5, 1.0",
+            "*BOUNDARY", " BASE, 1, 2", " BASE, 5, 5", " DRIVEN, 2, 2", " DRIVEN, 5, 5",
+            "*CLOAD", " %d, 1, 211.6" % ref, "*END STEP",
+            "*STEP, NAME=SLIDE, INC=1000", "*COUPLED TEMPERATURE-DISPLACEMENT", " 0.05, 1.0, 1e-5, 0.05",
+            "*BOUNDARY, AMPLITUDE=SLIDE", " DRIVEN, 2, 2, %.17g" % uz, " DRIVEN, 5, 5, %.17g" % (path / 1.25), "*END STEP", ""]
+    name = "contact_twist_slide_%s_%s.inp" % (etype.lower(), motion)
     open(os.path.join(HERE, name), "w").write("\n".join(out))
 
 
@@ -158,7 +220,10 @@ def to_quad8(src, dst, heading):
 uniform("CPE8T", 0.0)
 uniform("CAX8T", 0.5)
 uniform("CGAX8T", 0.5)  # twist rows: contact acts in the r-z plane, the same answer as CAX8T
-uniform("CGAX8T", 0.5, friction=True)  # refused: circumferential slip is not supported yet
+uniform("CGAX8T", 0.5, friction=True)  # with *FRICTION: nothing slips, the frictionless answer
+for etype in ("CGAX4T", "CGAX8T"):
+    for motion in ("axial", "twist", "combined"):
+        twist_slide(etype, motion)
 to_quad8("contact_jacobian_cpe4t.inp", "contact_line3_jacobian_cpe8t.inp",
          "Contact Jacobian check on line3 faces (jobs/verification/contact_jacobian_cpe4t.inp with CPE8T): stick, slip, open")
 to_quad8("sliding_friction_cpe4t.inp", "contact_line3_friction_cpe8t.inp",
