@@ -306,11 +306,18 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
              "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
     if series == "friction":
         ref = topface[0]
-        text += "".join("*EQUATION\n 2\n %d, %d, 1.0, %d, %d, -1.0\n" % (n, d, ref, d) for n in topface[1:] for d in (1, 2))
+        # twist rings: the sliding face also turns; the slide is 0.6 axial and 0.8 circumferential of the
+        # planar slide (0.8 x 1.5 = 1.2 of arc at the interface r = 1.25: phi = 0.96), so that the slip path
+        # and the heat are the planar ones
+        dofs = (1, 2, 5) if twist else (1, 2)
+        text += "".join("*EQUATION\n 2\n %d, %d, 1.0, %d, %d, -1.0\n" % (n, d, ref, d) for n in topface[1:] for d in dofs)
+        hold = (" BASE, 5, 5\n %d, 5, 5\n" % ref) if twist else ""
+        amount = "0.9" if twist else "1.5"
+        turn = (" %d, 5, 5, 0.96\n" % ref) if twist else ""
         text += ("*STEP, NAME=PRESS, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.5, 1.0\n"
-                 "*BOUNDARY\n BASE, 1, 2\n %d, %s, %s\n*CLOAD\n %d, %s, %s\n*END STEP\n" % (ref, slide, slide, ref, press, "211.6" if axi else "-200.0") +
+                 "*BOUNDARY\n BASE, 1, 2\n %d, %s, %s\n%s*CLOAD\n %d, %s, %s\n*END STEP\n" % (ref, slide, slide, hold, ref, press, "211.6" if axi else "-200.0") +
                  "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.025, 3.0, 1e-5, 0.025\n"
-                 "*BOUNDARY, AMPLITUDE=SLIDE\n %d, %s, %s, 1.5\n*END STEP\n" % (ref, slide, slide) +
+                 "*BOUNDARY, AMPLITUDE=SLIDE\n %d, %s, %s, %s\n%s*END STEP\n" % (ref, slide, slide, amount, turn) +
                  "*STEP, NAME=EQUILIBRATE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 20.0, 1e-5, 2.0\n*END STEP\n")
     else:
         p1, p2 = "%.10g" % (100.0 * pscale), "%.10g" % (200.0 * pscale)

@@ -79,7 +79,11 @@ check("worst energy balance residual over all increments", abs(h["balance_residu
 if series == "friction" and axi:
     # the axial reaction of the base while the ring slips (first half of step 2) is the friction force
     frames = [i for i, f in enumerate(r.frames) if int(r.h5["/frames/" + f].attrs["step"]) == 2]
-    fr = [abs(r.field("RF", i)[:, 0][large].sum()) for i in frames[len(frames) // 6: len(frames) // 3]]
+    window = frames[len(frames) // 6: len(frames) // 3]
+    if "_cgax" in job:  # axial and circumferential friction: RF3 of a twist model is the torque, acting at r = 1.25
+        fr = [float(np.hypot(r.field("RF", i)[:, 0][large].sum(), r.field("RF", i)[:, 2][large].sum() / 1.25)) for i in window]
+    else:
+        fr = [abs(r.field("RF", i)[:, 0][large].sum()) for i in window]
     friction = float(np.mean(fr))
     print("friction force while slipping %.6g (spread %.2g), interface force N = %.6g" % (friction, (max(fr) - min(fr)) / friction, friction / 0.1))
     volume = np.pi * (16 * R_AXI - 10.75)
