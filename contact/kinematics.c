@@ -265,7 +265,7 @@ PetscInt TslContactProjectionSide(PetscReal xi, PetscReal tol)
   return 0;
 }
 
-PetscErrorCode TslContactHistoryTransfer(PetscInt side, PetscReal L_from, PetscReal L_to, TslContactHistory *h)
+PetscErrorCode TslContactStateTransfer(PetscInt side, PetscReal L_from, PetscReal L_to, TslContactState *h)
 {
   PetscReal r = L_from / L_to;
 

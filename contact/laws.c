@@ -67,7 +67,7 @@ PetscErrorCode TslContactAugmentedUpdate(PetscReal eps_n, PetscReal g, PetscReal
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHistory *h)
+PetscErrorCode TslContactStateUpdate(const TslContactOutput *out, TslContactState *h)
 {
   PetscFunctionBeginUser;
   h->xi_old    = out->xi;
@@ -82,7 +82,7 @@ PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHi
  * in contact are held from the first Newton iteration. */
 /* *closed: touching or pressed, with "touching" up to the round-off of the gap (1e-12 of the segment
  * length L), so that node-on-node meshes whose coordinates differ in the last digit still start closed. */
-static TslDual NormalPressure(const TslContactLaw *law, const TslContactHistory *h, TslDual g, PetscReal L, PetscBool *closed)
+static TslDual NormalPressure(const TslContactLaw *law, const TslContactState *h, TslDual g, PetscReal L, PetscBool *closed)
 {
   TslDual a = DScale(-law->eps_n, g);
 
@@ -404,7 +404,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslContactHistoryStart(const TslContactInput *in, PetscReal xi, TslContactHistory *h)
+PetscErrorCode TslContactStateStart(const TslContactInput *in, PetscReal xi, TslContactState *h)
 {
   const TslContactFace *face = TslContactFaceGet(in->face);
   PetscReal             Nv[TSL_CONTACT_MAX_FACE_NODES], dNv[TSL_CONTACT_MAX_FACE_NODES], d2Nv[TSL_CONTACT_MAX_FACE_NODES];

@@ -3,7 +3,7 @@
  *
  * Everything here works on plain arrays: no MPI, no PETSc objects. The assembly calls
  * TslContactElement() once per active contact element (one secondary node against one main segment)
- * each Newton iteration, and keeps the per-secondary-node history (TslContactHistory) itself.
+ * each Newton iteration, and keeps the per-secondary-node state (TslContactState: projection, anchor, multiplier) itself.
  * docs/contact.md describes the algorithm, formulas, units and signs in full.
  *
  * Conventions (as include/thermoslide/element.h):
@@ -181,7 +181,7 @@ typedef struct {
    * at the start of the increment, and its sticking anchor (the circumferential slip from the anchor is
    * w - w_anchor); unchanged by a move to a neighbouring segment (w is continuous along the surface) */
   PetscReal w_old, w_anchor;
-} TslContactHistory;
+} TslContactState;
 
 typedef enum { TSL_CONTACT_OPEN = 0, TSL_CONTACT_STICK, TSL_CONTACT_SLIP } TslContactStatus;
 
@@ -204,7 +204,7 @@ typedef struct {
   const PetscReal  *x_next, *u_next;
   PetscReal         smoothing; /* fraction s of the segment parameter rounded at each end, 0 <= s < 0.5 */
   PetscReal         dt;        /* increment (time) for the dissipation rate; > 0 when friction heats */
-  TslContactHistory hist;
+  TslContactState hist;
 } TslContactInput;
 
 /* Closest-point (normal) projection of the current secondary position onto the current, smoothed
@@ -228,7 +228,7 @@ PetscInt TslContactProjectionSide(PetscReal xi, PetscReal tol);
  * and L_to = |t| of the segment entered, both at the shared node (the segments' lengths for line2),
  * xi' = (xi - 1) L_from / L_to for side +1, 1 + xi L_from / L_to for side -1, applied to xi_old and
  * xi_anchor so slip and sticking stress carry over. */
-PetscErrorCode TslContactHistoryTransfer(PetscInt side, PetscReal L_from, PetscReal L_to, TslContactHistory *h);
+PetscErrorCode TslContactStateTransfer(PetscInt side, PetscReal L_from, PetscReal L_to, TslContactState *h);
 
 /* Smoothed unit outward normal at parameter xi of the straight segment x1 -> x2 (line2, current
  * coordinates, 2 each), blending with the neighbouring segments' normals over the fraction s at each end
@@ -266,7 +266,7 @@ typedef struct {
   PetscReal        dissipation_rate; /* tT * slip_dissipative / dt per area (power/area) */
   PetscReal        heat_generation;  /* eta * dissipation_rate per area */
   TslContactStatus status;
-  PetscReal        xi_anchor; /* updated sticking anchor: store with TslContactHistoryUpdate after convergence */
+  PetscReal        xi_anchor; /* updated sticking anchor: store with TslContactStateUpdate after convergence */
   PetscReal        w_anchor;  /* updated circumferential anchor (twist) */
 } TslContactOutput;
 
@@ -289,12 +289,12 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
 
 /* After an increment converged: xi_old = out->xi, xi_anchor = out->xi_anchor, w_old = out->w,
  * w_anchor = out->w_anchor (lambda is left to TslContactAugmentedUpdate). */
-PetscErrorCode TslContactHistoryUpdate(const TslContactOutput *out, TslContactHistory *h);
+PetscErrorCode TslContactStateUpdate(const TslContactOutput *out, TslContactState *h);
 
 /* A new contact starts stress-free at parameter xi of the input's segment: xi_old = xi_anchor = xi,
  * w_old = w_anchor = the relative circumferential displacement there (twist; 0 otherwise), lambda = 0.
  * in->hist is not read. */
-PetscErrorCode TslContactHistoryStart(const TslContactInput *in, PetscReal xi, TslContactHistory *h);
+PetscErrorCode TslContactStateStart(const TslContactInput *in, PetscReal xi, TslContactState *h);
 
 /* ---------------------------------------------------------------------------------------------------
  * Candidate search: uniform bin grid over the main segments' bounding boxes

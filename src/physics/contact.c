@@ -152,12 +152,12 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
  * each step re-scaled by the metrics of the two faces at their shared node; *moved is PETSC_FALSE when
  * `to` is not within a few segments (the history then starts afresh). */
 static PetscErrorCode TransferHistory(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt from, PetscInt to,
-                                      TslContactHistory *h, PetscBool *moved)
+                                      TslContactState *h, PetscBool *moved)
 {
   PetscFunctionBeginUser;
   *moved = PETSC_FALSE;
   for (PetscInt side = -1; side <= 1 && !*moved; side += 2) {
-    TslContactHistory t = *h;
+    TslContactState t = *h;
     PetscInt          s = from;
     for (PetscInt step = 0; step < 4 && s >= 0; step++) {
       PetscInt  nb = side > 0 ? cs->next[s] : cs->prev[s];
@@ -165,7 +165,7 @@ static PetscErrorCode TransferHistory(TslProblem p, const TslContactSurface *cs,
       if (nb < 0) break;
       PetscCall(FaceMetric(p, cs, xa, s, side > 0 ? 1 : 0, &Lf));
       PetscCall(FaceMetric(p, cs, xa, nb, side > 0 ? 0 : 1, &Lt));
-      PetscCall(TslContactHistoryTransfer(side, Lf, Lt, &t));
+      PetscCall(TslContactStateTransfer(side, Lf, Lt, &t));
       s = nb;
       if (s == to) {
         *h     = t;
@@ -251,7 +251,7 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
           NeighbourData   nb;
 
           ElementInput(p, cn, xa, &in, nodes, &n, &nb);
-          PetscCall(TslContactHistoryStart(&in, PetscMin(1, PetscMax(0, best_xi)), &cn->hist));
+          PetscCall(TslContactStateStart(&in, PetscMin(1, PetscMax(0, best_xi)), &cn->hist));
         }
       }
     }
@@ -348,7 +348,7 @@ PetscErrorCode TslProblemContactCommit(TslProblem p)
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode *cn = &p->cnode[i];
     if (cn->seg >= 0) {
-      PetscCall(TslContactHistoryUpdate(&cn->out, &cn->hist));
+      PetscCall(TslContactStateUpdate(&cn->out, &cn->hist));
       cn->cslip += PetscHypotReal(cn->out.slip, cn->out.slip_circ); /* the slip vector's length (twist: 2 components) */
     }
     cn->seg_c   = cn->seg;

@@ -25,7 +25,7 @@ typedef struct {
   PetscInt          pair, lnode;
   PetscReal         length; /* tributary length on the secondary surface */
   PetscInt          seg, seg_c;
-  TslContactHistory hist, hist_c;
+  TslContactState hist, hist_c;
   PetscReal         cslip, cslip_c; /* accumulated slip */
   TslContactOutput  out;            /* last evaluation */
 } TslContactNode;

@@ -65,7 +65,7 @@ static PetscErrorCode CheckLeaving(TestLog *log)
   TslContactInput   in = InputSetUp(xs, x1, x2);
   TslContactOutput  out;
   TslContactLaw     law;
-  TslContactHistory h = {.xi_old = 0.9, .xi_anchor = 0.85};
+  TslContactState h = {.xi_old = 0.9, .xi_anchor = 0.85};
   PetscReal         xi, g;
 
   PetscFunctionBeginUser;
@@ -80,10 +80,10 @@ static PetscErrorCode CheckLeaving(TestLog *log)
   Check(log, out.xi, 1.2, 1e-14, "leaving: kernel keeps the extended segment until re-pairing");
   Check(log, (PetscReal)out.side, 1, 0, "leaving: kernel reports side");
   /* moving to the next segment of length 2: xi' = (xi - 1) L/L' */
-  PetscCall(TslContactHistoryTransfer(1, 1, 2, &h));
+  PetscCall(TslContactStateTransfer(1, 1, 2, &h));
   Check(log, h.xi_old, -0.05, 1e-15, "transfer: xi_old onto next segment");
   Check(log, h.xi_anchor, -0.075, 1e-15, "transfer: anchor onto next segment");
-  PetscCall(TslContactHistoryTransfer(-1, 2, 1, &h));
+  PetscCall(TslContactStateTransfer(-1, 2, 1, &h));
   Check(log, h.xi_old, 0.9, 1e-15, "transfer: back again xi_old");
   Check(log, h.xi_anchor, 0.85, 1e-15, "transfer: back again anchor");
   PetscFunctionReturn(PETSC_SUCCESS);

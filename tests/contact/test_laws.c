@@ -142,13 +142,13 @@ static PetscErrorCode CheckPenaltyFriction(TestLog *log)
   Check(log, out.dissipation_rate, 10 * 0.01 / 0.5, 1e-10, "slip: dissipation rate = tT * plastic slip / dt");
   Check(log, out.xi_anchor, out.xi - 10 / (1e3 * 2), 1e-14, "slip: anchor follows to the elastic limit");
   /* continued sliding over the next increment: all new motion dissipates */
-  PetscCall(TslContactHistoryUpdate(&out, &in.hist));
+  PetscCall(TslContactStateUpdate(&out, &in.hist));
   in.u[0][0] = -0.03;
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.slip, 0.01, 1e-12, "continued slip: increment");
   Check(log, out.slip_dissipative, 0.01, 1e-12, "continued slip: whole increment is plastic");
   /* reversal: slide back by 0.03 from the last converged state */
-  PetscCall(TslContactHistoryUpdate(&out, &in.hist));
+  PetscCall(TslContactStateUpdate(&out, &in.hist));
   in.u[0][0] = 0.0;
   PetscCall(TslContactElement(&law, &in, R, NULL, &out));
   Check(log, out.shear, -10, 1e-10, "reversal: tT = -mu p");

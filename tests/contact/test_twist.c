@@ -4,7 +4,7 @@
  *     the moments +-A R tW (balanced), a combined axial + circumferential slide of the same magnitude
  *     dissipates what the pure axial one does, the penalty return is radial (along the trial traction,
  *     |t| = mu p) and dissipates mu p (|e| - e_max), a rigid twist of both bodies does not slip, and
- *     TslContactHistoryStart anchors a new contact at the current relative twist;
+ *     TslContactStateStart anchors a new contact at the current relative twist;
  *   - a twist element without twist (phi = 0) gives the rows and columns of the plain axisymmetric one;
  *   - the tangent against central differences of the residual, block by block (u, theta, phi rows and
  *     columns, each block relative to its own scale), in stick and slip for penalty (constant and automatic
@@ -53,7 +53,7 @@ static PetscErrorCode CheckLaws(TestLog *log)
   TslContactLaw     law;
   TslContactInput   in;
   TslContactOutput  out, ref;
-  TslContactHistory h;
+  TslContactState h;
   PetscReal         R[NU * 3], A, d = 0.004, mup;
 
   PetscFunctionBeginUser;
@@ -110,7 +110,7 @@ static PetscErrorCode CheckLaws(TestLog *log)
   in.u[0][3] = 0.01;
   in.u[1][3] = 0.002;
   in.u[2][3] = 0.004;
-  PetscCall(TslContactHistoryStart(&in, 0.5, &h));
+  PetscCall(TslContactStateStart(&in, 0.5, &h));
   CheckRel(log, h.w_old, RC * 0.01 - RC * 0.003, 1e-13, 1, "history start: w_old = R_s phi_s - R_m phi_m");
   Check(log, h.w_anchor, h.w_old, 0, "history start: anchor at w_old");
   in.hist = h;
@@ -264,7 +264,7 @@ static PetscErrorCode CheckCase(TestLog *log, const char *name, const TslContact
 static PetscErrorCode CaseSetUp(Case *c, PetscReal gap, TslContactFaceKind face)
 {
   const PetscReal   x1[2] = {3, 0.3}, x2[2] = {1, 0}, xs[2] = {1.8, 0.12 + gap};
-  TslContactHistory h;
+  TslContactState h;
   PetscReal         xi;
 
   PetscFunctionBeginUser;
@@ -297,7 +297,7 @@ static PetscErrorCode CaseSetUp(Case *c, PetscReal gap, TslContactFaceKind face)
     for (PetscInt d = 0; d < 2; d++) c->in.x[0][d] = xm[d] + gap * nm[d] - c->in.u[0][d];
   }
   PetscCall(TslContactProject(&c->in, &xi, NULL, NULL));
-  PetscCall(TslContactHistoryStart(&c->in, xi, &h));
+  PetscCall(TslContactStateStart(&c->in, xi, &h));
   c->in.hist.xi_old = c->in.hist.xi_anchor = xi + 0.003;
   c->in.hist.w_old = c->in.hist.w_anchor = h.w_old - 0.004;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -399,12 +399,12 @@ static PetscErrorCode CheckTangents(TestLog *log, TslContactFaceKind face)
   c.in.u_next = c.u_next;
   {
     PetscReal         xi = 0.08, n[2], xm[2], xr;
-    TslContactHistory h;
+    TslContactState h;
 
     PetscCall(TslContactSurfacePoint(&c.in, xi, xm, n));
     for (PetscInt d = 0; d < 2; d++) c.in.x[0][d] = xm[d] - 0.01 * n[d] - c.in.u[0][d];
     PetscCall(TslContactProject(&c.in, &xr, NULL, NULL));
-    PetscCall(TslContactHistoryStart(&c.in, xr, &h));
+    PetscCall(TslContactStateStart(&c.in, xr, &h));
     c.in.hist.xi_old = c.in.hist.xi_anchor = xr + 0.01;
     c.in.hist.w_old = c.in.hist.w_anchor = h.w_old + 0.01;
     Check(log, (PetscReal)(xr < 0.2), 1, 0, "twist %s: smoothed case: xi = %g in the rounded zone", fam, (double)xr);
