@@ -91,18 +91,12 @@ static TslDual NormalPressure(const TslContactLaw *law, const TslContactState *h
   return a.v >= 0 ? a : DConst(0);
 }
 
-/* What contact needs of a kinematics: does the area revolve (2 pi r instead of the thickness), and does
- * the slip have a circumferential component (the twist phi among the unknowns, u_theta = R phi)? */
-static const struct {
-  PetscBool revolve, twist;
-} ContactKinematics[TSL_NKIN] = {
-    [TSL_KIN_AXISYMMETRIC]       = {PETSC_TRUE, PETSC_FALSE},
-    [TSL_KIN_AXISYMMETRIC_TWIST] = {PETSC_TRUE, PETSC_TRUE},
-};
-
+/* What contact needs of a kinematics it asks the element module (TslKinematicsRevolves, ...Twists): does
+ * the area revolve (2 pi r instead of the thickness), and does the slip have a circumferential component
+ * (the twist phi among the unknowns, u_theta = R phi)? */
 PetscInt TslContactNodeUnknowns(TslKinematics kin)
 {
-  return (PetscInt)kin >= 0 && kin < TSL_NKIN && ContactKinematics[kin].twist ? 4 : 3;
+  return (PetscInt)kin >= 0 && kin < TSL_NKIN && TslKinematicsTwists(kin) ? 4 : 3;
 }
 
 /* The slip of one element as nc components: the in-plane one along tau and, with twist, the
@@ -274,7 +268,7 @@ static PetscErrorCode RadiationConstant(const TslContactLaw *law, TslDual g, Tsl
  * at its reference radius for both axisymmetric kinematics. */
 static PetscReal NodeArea(const TslContactInput *in)
 {
-  return ContactKinematics[in->kin].revolve ? in->length * 2 * PETSC_PI * in->x[0][0] : in->length * in->thickness;
+  return TslKinematicsRevolves(in->kin) ? in->length * 2 * PETSC_PI * in->x[0][0] : in->length * in->thickness;
 }
 
 /* Twist: the reference radius R_m(xi) = N_a R_a of the main point and the relative circumferential
@@ -324,7 +318,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   L = DSqrt(DDot(t, t));
   TslContactFaceShape(geo.face, xi.v, Nv, dNv, d2Nv);
   for (PetscInt a = 0; a < nper; a++) N[a] = DChain(xi, Nv[a], dNv[a]);
-  sl.nc    = ContactKinematics[in->kin].twist ? 2 : 1;
+  sl.nc    = TslKinematicsTwists(in->kin) ? 2 : 1;
   sl.xi    = xi;
   sl.L     = L;
   sl.ds[0] = DMul(L, DAddC(xi, -in->hist.xi_old));
@@ -416,7 +410,7 @@ PetscErrorCode TslContactStateStart(const TslContactInput *in, PetscReal xi, Tsl
   h->xi_old = h->xi_anchor = xi;
   h->lambda                = 0;
   h->w_old = h->w_anchor = 0;
-  if (ContactKinematics[in->kin].twist) {
+  if (TslKinematicsTwists(in->kin)) {
     TslContactFaceShape(face, xi, Nv, dNv, d2Nv);
     for (PetscInt a = 0; a < face->geom->nnode; a++) N[a] = DConst(Nv[a]);
     h->w_old = h->w_anchor = RelativeTwist(in, face->geom->nnode, N, PETSC_FALSE, &Rm).v;

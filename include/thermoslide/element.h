@@ -113,6 +113,10 @@ const char *TslElementTypeKinematicsName(const TslElementType *t);
  * nodal unknowns and the same measure: no axisymmetric body beside a planar one)? */
 PetscBool TslElementTypeSameKinematics(const TslElementType *a, const TslElementType *b);
 PetscBool TslElementTypeSameModel(const TslElementType *a, const TslElementType *b);
+/* What other modules need of a kinematics (contact: the measure of an interface and its slip
+ * components): does dV revolve about the axis (2 pi r), does it carry a twist unknown? */
+PetscBool TslKinematicsRevolves(TslKinematics kin);
+PetscBool TslKinematicsTwists(TslKinematics kin);
 /* Does the type carry dialect dof number dof at its nodes? The list of its dofs ("1, 2, 11") in buf. */
 PetscBool   TslElementTypeHasDof(const TslElementType *t, PetscInt dof);
 const char *TslElementTypeDofList(const TslElementType *t, char *buf, size_t len);

@@ -267,15 +267,17 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
     shape, order, kin = family_of(typ)
     axi = kin in ("AX", "GAX")
     twist = kin == "GAX"
-    bnodes, belems, brows = mesh2d(12, 2, 0.0, 6.0, 0.0, 1.25, shape, order, mirror=3.0)
-    tnodes, telems, trows = mesh2d(4, 6, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000, mirror=3.0)
+    # second-order types: half the cells each way (the same node spacing, a quarter of the elements)
+    c = 2 if order == 2 else 1
+    bnodes, belems, brows = mesh2d(12 // c, 2 // c, 0.0, 6.0, 0.0, 1.25, shape, order, mirror=3.0)
+    tnodes, telems, trows = mesh2d(4 // c, 6 // c, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000, mirror=3.0)
     fb, ft = faces(shape)
     base = [n[0] for n in bnodes if abs(n[2]) < 1e-12]
     topface = [n[0] for n in tnodes if abs(n[2] - 1.5) < 1e-12]
     main_elems = brows[-1][1]   # top row of the large block
     sec_elems = trows[0][0]     # bottom row of the small block
     pressed = trows[-1][1]      # top row of the small block
-    filmed = [brows[0][0][k] for k in (5, 6)]  # centre of the large block's bottom
+    filmed = [brows[0][0][k] for k in (6 // c - 1, 6 // c)]  # centre of the large block's bottom
     place = (lambda x, y: (R_AXI - y, x)) if axi else (lambda x, y: (x, y))
     slide, press = ("2", "1") if axi else ("1", "2")
     pscale = (R_AXI - 1.25) / (R_AXI - 1.5) if axi else 1.0

@@ -76,6 +76,16 @@ PetscBool TslElementTypeSameModel(const TslElementType *a, const TslElementType 
   return PETSC_TRUE;
 }
 
+PetscBool TslKinematicsRevolves(TslKinematics kin)
+{
+  return (PetscInt)kin >= 0 && kin < TSL_NKIN ? KinematicsTable[kin].revolve : PETSC_FALSE;
+}
+
+PetscBool TslKinematicsTwists(TslKinematics kin)
+{
+  return (PetscInt)kin >= 0 && kin < TSL_NKIN ? KinematicsTable[kin].twist : PETSC_FALSE;
+}
+
 PetscBool TslElementTypeHasDof(const TslElementType *t, PetscInt dof)
 {
   for (PetscInt i = 0; i < t->ndof; i++)
