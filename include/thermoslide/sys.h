@@ -52,3 +52,25 @@ PetscErrorCode TslOptionsInt(PetscOptionItems *PetscOptionsObject, const char *n
  * must not silently leave a default in place); otherwise each unused option is a warning in the log
  * (PETSc's own start-up and finalize-time options excepted). Collective. */
 PetscErrorCode TslOptionsCheckUnused(MPI_Comm comm, PetscBool fail);
+
+/* Where the wall time goes: phases of a job, each also a PETSc log event (so -log_view lists them). The
+ * report at the end of a job prints the largest time over the ranks per phase and the peak memory.
+ * Assembly (the SNES callbacks) and PETSc's PCSetUp run inside the solve phase; the report subtracts them
+ * from it ("linear solve"), so the printed parts add up to the whole. */
+typedef enum {
+  TSL_PHASE_READ,      /* deck read and checks (rank 0) */
+  TSL_PHASE_PARTITION, /* METIS and distribution */
+  TSL_PHASE_SETUP,     /* problem set-up: dof maps, ghosts, preallocation */
+  TSL_PHASE_ASSEMBLY,  /* residual and Jacobian evaluation */
+  TSL_PHASE_CONTACT,   /* contact search and update between the solves */
+  TSL_PHASE_SOLVE,     /* the nonlinear solves (SNESSolve: contains assembly and solver set-up) */
+  TSL_PHASE_OUTPUT,    /* field frames, history, prints */
+  TSL_PHASE_COUNT
+} TslPhase;
+
+/* Registers the events and starts PETSc's default logging if nothing else did. Call once. */
+PetscErrorCode TslPhasesInitialize(void);
+PetscErrorCode TslPhaseBegin(TslPhase phase);
+PetscErrorCode TslPhaseEnd(TslPhase phase);
+/* Collective: one line "time ...; memory ..." on rank 0 (total: wall time since TslPhasesInitialize). */
+PetscErrorCode TslPhasesReport(MPI_Comm comm);

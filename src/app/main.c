@@ -110,6 +110,7 @@ static PetscErrorCode Run(const char *deck)
     if (!set && alt_set) PetscCall(PetscStrncpy(dir, alt, sizeof(dir)));
   }
   JobName(deck, job, sizeof(job));
+  PetscCall(TslPhaseBegin(TSL_PHASE_READ));
   if (rank == 0) {
     ierr = TslDeckRead(deck, &global);
     if (!ierr) ierr = TslModelCheckSupports(global);
@@ -126,13 +127,19 @@ static PetscErrorCode Run(const char *deck)
     if (ierr) PetscCall(TslModelDestroy(&global));
   }
   TslCallCollective(comm, ierr);
+  PetscCall(TslPhaseEnd(TSL_PHASE_READ));
   PetscCall(PetscPrintf(comm, "thermoslide: %s -> %s/%s.{h5,xmf,csv}\n", deck, dir, job));
+  PetscCall(TslPhaseBegin(TSL_PHASE_PARTITION));
   PetscCall(TslMeshDistribute(comm, &global, &local));
+  PetscCall(TslPhaseEnd(TSL_PHASE_PARTITION));
+  PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));
   TslCallCollective(comm, TslProblemCreate(comm, local, &prob));
+  PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
   ierr = TslAnalysisRun(prob, dir, job);
   PetscCall(TslProblemDestroy(&prob));
   PetscCheck(!ierr, comm, ierr, " ");
   PetscCall(TslOptionsCheckUnused(comm, PETSC_FALSE));
+  PetscCall(TslPhasesReport(comm));
   PetscCall(PetscPrintf(comm, "thermoslide: completed\n"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -202,6 +209,7 @@ int main(int argc, char **argv)
   }
   PetscCall(PetscInitialize(&argc, &argv, NULL, Usage));
   PetscCall(PetscPushErrorHandler(ErrorHandler, NULL));
+  PetscCall(TslPhasesInitialize());
   if (ndeck > 1) {
     PetscCall(PetscFPrintf(PETSC_COMM_WORLD, stderr, "thermoslide: error: more than one deck given (%s, %s): one job per run\n", decks[0], decks[1]));
     PetscCall(PetscPopErrorHandler());

@@ -97,6 +97,80 @@ static PetscErrorCode SetUpInitialTemperature(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The near-null space of the displacement block for algebraic multigrid: the rigid-body modes that the
+ * element rows admit (translations and rotations), evaluated at the owned nodes relative to the model's
+ * centre (coordinates far from the origin must not swamp the rotations), orthonormalised, and attached to
+ * the displacement index set, where PCFIELDSPLIT hands it to the u block's preconditioner (GAMG builds
+ * its coarse spaces from it, BoomerAMG its interpolation vectors). Kinematics with fewer rigid modes than
+ * displacement components (axisymmetric: only the axial translation) get none: AMG's default of one
+ * constant per component serves them better than an incomplete set. Slots a node does not use and
+ * reference nodes stay zero. Collective. */
+static PetscErrorCode SetUpNearNullSpace(TslProblem p)
+{
+  const TslModel *m = p->m;
+  PetscInt        nm = 0, nmg;
+  PetscReal       c[4] = {0, 0, 0, 0}, cg[4];
+  PetscScalar    *a[6];
+  PetscBool      *done;
+  Vec             v[6];
+  MatNullSpace    sp;
+
+  PetscFunctionBeginUser;
+  /* the same kinematics throughout the model (deck check): its mode count from any local element */
+  if (m->nelem > 0) {
+    PetscReal modes[6][3] = {{0}}, x[3] = {0, 0, 0};
+    nm = TslElementTypeRigidModes(TslElementTypeGet(m->elem_type[0]), x, modes);
+  }
+  PetscCall(MPIU_Allreduce(&nm, &nmg, 1, MPIU_INT, MPI_MAX, p->comm)); /* a rank without elements has 0 */
+  nm = nmg;
+  if (nm < p->nu) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt n = 0; n < p->nown; n++) {
+    for (PetscInt d = 0; d < 3; d++) c[d] += m->node_xyz[3 * n + d];
+    c[3] += 1;
+  }
+  PetscCall(MPIU_Allreduce(c, cg, 4, MPIU_REAL, MPIU_SUM, p->comm));
+  for (PetscInt d = 0; d < 3; d++) cg[d] /= PetscMax(cg[3], 1);
+  for (PetscInt k = 0; k < nm; k++) {
+    PetscCall(VecCreateMPI(p->comm, p->nown * p->nu, PETSC_DETERMINE, &v[k]));
+    PetscCall(VecSetBlockSize(v[k], p->nu));
+    PetscCall(VecSet(v[k], 0));
+    PetscCall(VecGetArray(v[k], &a[k]));
+  }
+  PetscCall(PetscCalloc1(p->nown, &done));
+  for (PetscInt e = 0; e < m->nelem; e++) {
+    const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
+    for (PetscInt j = 0; j < t->geom->nnode; j++) {
+      PetscInt  l           = p->elem_lnode[m->elem_ptr[e] + j];
+      PetscReal modes[6][3] = {{0}}, x[3];
+      if (l >= p->nown || done[l]) continue;
+      done[l] = PETSC_TRUE;
+      for (PetscInt d = 0; d < 3; d++) x[d] = m->node_xyz[3 * l + d] - cg[d];
+      (void)TslElementTypeRigidModes(t, x, modes);
+      for (PetscInt k = 0; k < nm; k++)
+        for (PetscInt i = 0; i < p->nu; i++)
+          if (!p->pinned[l * p->ndof + i]) a[k][l * p->nu + i] = modes[k][i];
+    }
+  }
+  PetscCall(PetscFree(done));
+  for (PetscInt k = 0; k < nm; k++) PetscCall(VecRestoreArray(v[k], &a[k]));
+  /* modified Gram-Schmidt (MatNullSpaceCreate wants orthonormal vectors) */
+  for (PetscInt k = 0; k < nm; k++) {
+    PetscReal nrm;
+    for (PetscInt j = 0; j < k; j++) {
+      PetscScalar dot;
+      PetscCall(VecDot(v[k], v[j], &dot));
+      PetscCall(VecAXPY(v[k], -dot, v[j]));
+    }
+    PetscCall(VecNormalize(v[k], &nrm));
+    PetscCheck(nrm > 0, p->comm, PETSC_ERR_PLIB, "rigid-body mode %" PetscInt_FMT " vanishes", k);
+  }
+  PetscCall(MatNullSpaceCreate(p->comm, PETSC_FALSE, nm, v, &sp));
+  PetscCall(PetscObjectCompose((PetscObject)p->is_u, "nearnullspace", (PetscObject)sp));
+  PetscCall(MatNullSpaceDestroy(&sp));
+  for (PetscInt k = 0; k < nm; k++) PetscCall(VecDestroy(&v[k]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode SetUpVectors(TslProblem p)
 {
   TslModel    *m = p->m;
@@ -117,6 +191,7 @@ static PetscErrorCode SetUpVectors(TslProblem p)
   PetscCall(VecGetOwnershipRange(p->X, &p->rstart, NULL));
   PetscCheck(p->nown == 0 || p->rstart == m->node_gnum[0] * p->ndof, PETSC_COMM_SELF, PETSC_ERR_PLIB, "node numbering is not contiguous per rank");
   PetscCall(ISLocalToGlobalMappingCreate(p->comm, p->ndof, p->nn, m->node_gnum, PETSC_COPY_VALUES, &p->l2g));
+  PetscCall(ISLocalToGlobalMappingCreate(p->comm, 1, p->nn, m->node_gnum, PETSC_COPY_VALUES, &p->l2g_node));
 
   /* initial state: u = 0, theta = initial temperature */
   PetscCall(VecGhostGetLocalForm(p->X, &xl));
@@ -136,6 +211,7 @@ static PetscErrorCode SetUpVectors(TslProblem p)
   PetscCall(ISCreateGeneral(p->comm, p->nown * p->nu, idx, PETSC_OWN_POINTER, &p->is_u));
   PetscCall(ISSetBlockSize(p->is_u, p->nu));
   PetscCall(ISCreateStride(p->comm, p->nown, p->rstart + p->ndof - 1, p->ndof, &p->is_theta));
+  PetscCall(SetUpNearNullSpace(p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -265,6 +341,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(VecDestroy(&p->Fl));
   PetscCall(MatDestroy(&p->J));
   PetscCall(ISLocalToGlobalMappingDestroy(&p->l2g));
+  PetscCall(ISLocalToGlobalMappingDestroy(&p->l2g_node));
   PetscCall(ISDestroy(&p->is_u));
   PetscCall(ISDestroy(&p->is_theta));
   PetscCall(PetscFree(p->elem_lnode));

@@ -67,7 +67,7 @@ struct _p_TslProblem {
   Vec                    X, Xold, Xl, Fl; /* Xl, Fl: ghosted work vectors */
   Vec                    Rraw;            /* unconstrained residual of the last post-processed state */
   Mat                    J;
-  ISLocalToGlobalMapping l2g;
+  ISLocalToGlobalMapping l2g, l2g_node; /* dof blocks (bs = ndof) and nodes (bs = 1) */
   IS                     is_u, is_theta;
 
   PetscInt          *elem_lnode;   /* local node of each element node (model elem_ptr layout) */

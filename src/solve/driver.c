@@ -326,7 +326,9 @@ static PetscErrorCode SolveIncrement(Driver *d, Vec X, SNESConvergedReason *reas
 
   PetscFunctionBeginUser;
   *its = *lits = 0;
+  PetscCall(TslPhaseBegin(TSL_PHASE_CONTACT));
   PetscCall(TslProblemContactSearch(d->prob, &repattern));
+  PetscCall(TslPhaseEnd(TSL_PHASE_CONTACT));
   while (again) {
     PetscInt i, l;
     if (repattern) {
@@ -334,13 +336,17 @@ static PetscErrorCode SolveIncrement(Driver *d, Vec X, SNESConvergedReason *reas
       PetscCall(TslProblemGetJacobian(d->prob, &J));
       PetscCall(SNESSetJacobian(d->snes, J, J, TslProblemFormJacobian, d->prob));
     }
+    PetscCall(TslPhaseBegin(TSL_PHASE_SOLVE));
     PetscCall(SNESSolve(d->snes, NULL, X));
+    PetscCall(TslPhaseEnd(TSL_PHASE_SOLVE));
     PetscCall(SNESGetConvergedReason(d->snes, reason));
     PetscCall(SNESGetIterationNumber(d->snes, &i));
     PetscCall(SNESGetLinearSolveIterations(d->snes, &l));
     *its += i, *lits += l;
     if (*reason <= 0) break;
+    PetscCall(TslPhaseBegin(TSL_PHASE_CONTACT));
     PetscCall(TslProblemContactUpdate(d->prob, &again, &repattern));
+    PetscCall(TslPhaseEnd(TSL_PHASE_CONTACT));
     if (again && ++n >= d->max_contact_its) {
       PetscCall(PetscInfo(d->snes, "contact state still changing after %" PetscInt_FMT " solves\n", n));
       *reason = SNES_DIVERGED_MAX_IT;
@@ -403,7 +409,9 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   step = &m->steps[s];
   PetscCall(PetscPrintf(d->comm, "step %" PetscInt_FMT " (%s): %s, period %g, initial increment %g\n", s + 1, step->name[0] ? step->name : "-",
                         step->steady ? "steady state" : "transient", (double)step->period, (double)step->dt0));
+  PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));
   TslCallCollective(d->comm, TslProblemSetStep(d->prob, s));
+  PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
   PetscCall(TslProblemGetJacobian(d->prob, &J));
   PetscCall(SNESSetJacobian(d->snes, J, J, TslProblemFormJacobian, d->prob));
   PetscCall(SetOutputRequests(d, step));
@@ -463,8 +471,10 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     *total_time += h;
     inc++;
     d->trial = PETSC_FALSE;
+    PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
     PetscCall(Accept(d, s, inc, t, h, *total_time, its, lits));
     if (last || inc % d->frequency == 0) PetscCall(WriteFrame(d, s + 1, inc, *total_time));
+    PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
     if (!step->direct) {
       /* the controller grows from the increment it asked for, not from one cut short at a corner */
       PetscReal f = its <= d->easy_its ? d->growth : 1.0;
@@ -472,7 +482,9 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       dt = PetscMin(step->dtmax, dt * PetscMax(f, d->cutback));
     }
   }
+  PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
   PetscCall(PrintTables(d, step));
+  PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
   PetscCall(PetscInfo(NULL, "step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %" PetscInt_FMT " attempts\n", s + 1, inc, attempts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -557,7 +569,11 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
     PetscErrorCode e = SaveLastConverged(&d);
     if (e) d.in_output = PETSC_TRUE; /* could not even write the last state: keep nothing of this run */
   }
-  if (!d.in_output) PetscCall(Finish(&d, ierr, dir, jobname));
+  if (!d.in_output) {
+    PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
+    PetscCall(Finish(&d, ierr, dir, jobname));
+    PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
+  }
   PetscCall(TslOutputDestroy(&d.out));
   PetscCall(TslHistoryDestroy(&d.hist));
   PetscCall(SNESDestroy(&d.snes));
