@@ -59,7 +59,7 @@ typedef struct TslGeometry {
   TslQuadrature as_face;
   PetscInt      xdmf_type; /* XDMF mixed-topology cell type id */
   /* Linear subdivision of a second-order family (line3: 2 line2, tri6: 4 tri3, tet10: 8 tet4; nsub = 0
-   * otherwise). The "modified" types lump capacity and face loads on it, where the quadratic shape
+   * otherwise). The "modified" types lump capacity and pressure loads on it, where the quadratic shape
    * functions would give zero or negative corner weights. sub_node[s][] are element-local node
    * positions, ordered so that a sub-element has a positive Jacobian when its parent has. */
   PetscInt                  nsub;
