@@ -53,9 +53,13 @@ typedef struct TslGeometry {
   PetscReal     node_xi[TSL_MAX_ELEM_NODES][3];                       /* reference coordinates of the nodes */
   PetscReal     ref_volume;                                           /* measure of the reference element */
   TslQuadrature full, reduced;
+  /* The rule when the family is the face of an element (line2, line3, tri3, tri6, quad4): exact for the
+   * product of two of its shape functions (degree 2 order; lines one more, for the r of axisymmetric
+   * faces), so film and flux integrals are the consistent ones. n = 0 for a family that is never a face. */
+  TslQuadrature as_face;
   PetscInt      xdmf_type; /* XDMF mixed-topology cell type id */
   /* Linear subdivision of a second-order family (line3: 2 line2, tri6: 4 tri3, tet10: 8 tet4; nsub = 0
-   * otherwise). The "modified" types lump capacity and face loads on it, where the quadratic shape
+   * otherwise). The "modified" types lump capacity and pressure loads on it, where the quadratic shape
    * functions would give zero or negative corner weights. sub_node[s][] are element-local node
    * positions, ordered so that a sub-element has a positive Jacobian when its parent has. */
   PetscInt                  nsub;

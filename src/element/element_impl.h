@@ -54,8 +54,10 @@ void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp
  *   hourglass    stabilisation added to a reduced-integration element (NULL: none); adds to R and K
  *                (may be NULL) and returns the stabilisation energy
  *   nodal_volume the lumping weights V_a (capacity and mass)
- *   face_rule    the points used for a face integral: the face family's own rule, or the sub-faces of
- *                a modified element (positive nodal weights) */
+ *   pressure_face_rule, thermal_face_rule
+ *                the points of a face integral of a pressure, and of a surface flux or film: the face
+ *                family's own shape functions with its as_face rule (exact for N_a N_b, the film), or
+ *                for the pressure of a modified element its linear sub-faces (positive nodal weights) */
 typedef struct {
   PetscInt  n;
   PetscReal N[TSL_MAX_QP * 4][TSL_MAX_FACE_NODES]; /* face shape values at each point */
@@ -69,7 +71,8 @@ struct TslFormulation {
   PetscInt (*pressure)(const TslGeometry *g, const TslElementPoint *p, PetscReal P[]);
   PetscErrorCode (*hourglass)(const TslElementInput *in, const TslMaterialPoint *mp, PetscReal R[], PetscReal K[], PetscReal *energy);
   PetscBool (*nodal_volume)(const TslElementInput *in, PetscReal vol[]);
-  void (*face_rule)(const TslGeometry *g, PetscInt face, TslFaceRule *rule);
+  void (*pressure_face_rule)(const TslGeometry *g, PetscInt face, TslFaceRule *rule);
+  void (*thermal_face_rule)(const TslGeometry *g, PetscInt face, TslFaceRule *rule);
 };
 
 /* Hybrid pressure spaces are at most linear: 1 + dim terms. */

@@ -7,9 +7,15 @@
  *   hybrid     an independent pressure, constant (linear families) or linear (quadratic families),
  *              condensed in the element (kernels.c)
  *   modified   second-order triangles and tetrahedra that behave well in contact: capacity, mass and 3D
- *              face loads are lumped over the linear sub-elements (tri6 -> 4 tri3, tet10 -> 8 tet4), so
- *              every nodal weight is positive (the plain tet10 face gives zero corner forces under a
+ *              pressure loads are lumped over the linear sub-elements (tri6 -> 4 tri3, tet10 -> 8 tet4),
+ *              so every nodal weight is positive (the plain tet10 face gives zero corner forces under a
  *              uniform pressure and negative corner capacities)
+ *
+ * Surface flux and film use the face family's own shape functions and its as_face rule in every
+ * formulation (the modified rows too): lumped on the linear sub-faces of a tet10 face they cost C3D10MT
+ * its order at a film or flux boundary (L2 rate 1.4 instead of 3, tests/element/face_convergence.c),
+ * since the composite linear functions are not the quadratic face's and the film matrix int h N_a N_b dA
+ * is of degree 4; and no contact condition asks positive nodal weights of a heat load.
  */
 #include "element_impl.h"
 
@@ -97,23 +103,25 @@ static PetscBool SubElementLump(const TslElementInput *in, PetscReal vol[])
   return PETSC_TRUE;
 }
 
-/* The face family's own rule. */
+/* The face family's own shape functions at the points of its as_face rule: exact for N_a N_b on a flat
+ * face (the film matrix), N_a N_b r on an axisymmetric one. */
 static void FaceRuleOwn(const TslGeometry *g, PetscInt face, TslFaceRule *rule)
 {
-  const TslGeometry *fg = g->face_geom[face];
-  PetscReal          dN[TSL_MAX_FACE_NODES * 3];
+  const TslGeometry   *fg   = g->face_geom[face];
+  const TslQuadrature *quad = &fg->as_face;
+  PetscReal            dN[TSL_MAX_FACE_NODES * 3];
 
-  rule->n = fg->full.n;
-  for (PetscInt q = 0; q < fg->full.n; q++) {
-    fg->shape(fg->full.xi[q], rule->N[q], dN);
+  rule->n = quad->n;
+  for (PetscInt q = 0; q < quad->n; q++) {
+    fg->shape(quad->xi[q], rule->N[q], dN);
     for (PetscInt f = 0; f < fg->nnode; f++)
       for (PetscInt j = 0; j < fg->dim; j++) rule->dN[q][f][j] = dN[fg->dim * f + j];
-    rule->w[q] = fg->full.w[q];
+    rule->w[q] = quad->w[q];
   }
 }
 
 /* The linear sub-faces of a quadratic 3D face (tri6 -> 4 tri3): composite linear shape functions, so
- * the nodal weights of a uniform load are all positive. 2D faces (line3) keep their own rule, whose
+ * the nodal weights of a uniform pressure are all positive. 2D faces (line3) keep their own rule, whose
  * weights (1/6, 2/3, 1/6) already are. */
 static void FaceRuleSub(const TslGeometry *g, PetscInt face, TslFaceRule *rule)
 {
@@ -212,13 +220,15 @@ static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMat
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-const TslFormulation TslFormFull          = {"full integration", FullRule, NULL, NULL, Lump, FaceRuleOwn};
-const TslFormulation TslFormReduced       = {"reduced integration, hourglass control", ReducedRule, NULL, HourglassStiffness, Lump, FaceRuleOwn};
-const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn};
+const TslFormulation TslFormFull    = {"full integration", FullRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
+const TslFormulation TslFormReduced = {
+    "reduced integration, hourglass control", ReducedRule, NULL, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};
+const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
 const TslFormulation TslFormReducedHybrid = {
-    "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn};
-const TslFormulation TslFormModified       = {"modified second order", FullRule, NULL, NULL, SubElementLump, FaceRuleSub};
-const TslFormulation TslFormModifiedHybrid = {"modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub};
+    "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};
+const TslFormulation TslFormModified       = {"modified second order", FullRule, NULL, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn};
+const TslFormulation TslFormModifiedHybrid = {
+    "modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn};
 
 const char *TslElementTypeFormulationName(const TslElementType *t)
 {

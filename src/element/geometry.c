@@ -17,6 +17,16 @@
  * (1956): triangle points (2/3, 1/6, 1/6) in barycentric coordinates with weight 1/6 each, tetrahedron
  * points (a, b, b, b), a = (5 + 3 sqrt 5)/20, b = (5 - sqrt 5)/20, weight 1/24 each. All weights are
  * positive and all points inside the element; tests/element/test_geometry.c checks the degrees.
+ *
+ * A family that is the face of an element carries a rule exact for the product of two of its shape
+ * functions (as_face): the face integrals of the film (int h N_a N_b dA) and of the flux are then the
+ * consistent ones. Lines, quadrilaterals and tri3 reuse a rule above; tri6 (degree 4) takes the
+ * symmetric 6-point rule of Strang & Fix (1973, table 4.1; Dunavant 1985): two orbits of barycentric
+ * points (a, a, 1 - 2a) with weights w on the unit triangle,
+ *   a = (8 - sqrt 10 +- sqrt(38 - 44 sqrt(2/5))) / 18,   w = (620 +- sqrt(213125 - 53320 sqrt 10)) / 7440,
+ * the + signs together (a = 0.4459..., w = 0.1117...), the - signs together (a = 0.0916..., w = 0.0550...).
+ * Solved again from the moment equations of the symmetric invariants 1, e2, e3, e2^2 of the barycentrics
+ * (exact integrals 1/2, 1/8, 1/120, 1/30); positive weights, points inside, exact to degree 4 and not 5.
  */
 #include "element_impl.h"
 
@@ -183,6 +193,10 @@ static void ShapeHex8(const PetscReal xi[], PetscReal N[], PetscReal dN[])
 #define W3C (8.0 / 9.0)
 #define T1  (1.0 / 6.0) /* triangle degree-2 rule: barycentrics (2/3, 1/6, 1/6) */
 #define T2  (2.0 / 3.0)
+#define D4A 0.44594849091596488632 /* triangle degree-4 rule (Strang & Fix): orbit (a, a, 1 - 2a), weight w */
+#define D4W 0.11169079483900573285
+#define D4B 0.091576213509770743460 /*                                         second orbit */
+#define D4V 0.054975871827660933819
 #define TA  0.58541019662496845446 /* tetrahedron degree-2 rule: (5 + 3 sqrt 5)/20 */
 #define TB  0.13819660112501051518 /*                             (5 - sqrt 5)/20 */
 
@@ -206,6 +220,10 @@ static void ShapeHex8(const PetscReal xi[], PetscReal N[], PetscReal dN[])
 
 #define QUAD_TRI_1 {.n = 1, .xi = {{1.0 / 3, 1.0 / 3, 0}}, .w = {0.5}, .degree = 1}
 #define QUAD_TRI_3 {.n = 3, .xi = {{T1, T1, 0}, {T2, T1, 0}, {T1, T2, 0}}, .w = {T1, T1, T1}, .degree = 2}
+#define QUAD_TRI_6 \
+  {.n = 6, \
+   .xi = {{D4A, D4A, 0}, {1 - 2 * D4A, D4A, 0}, {D4A, 1 - 2 * D4A, 0}, {D4B, D4B, 0}, {1 - 2 * D4B, D4B, 0}, {D4B, 1 - 2 * D4B, 0}}, \
+   .w = {D4W, D4W, D4W, D4V, D4V, D4V}, .degree = 4}
 
 #define QUAD_TET_1 {.n = 1, .xi = {{0.25, 0.25, 0.25}}, .w = {1.0 / 6}, .degree = 1}
 #define QUAD_TET_4 \
@@ -232,6 +250,7 @@ const TslGeometry TslGeomLine2 = {
     .ref_volume = 2,
     .full       = QUAD_LINE_2,
     .reduced    = QUAD_LINE_1,
+    .as_face    = QUAD_LINE_2,
     .xdmf_type  = 2, /* Polyline: only a face family, never written as a cell (see the writer) */
 };
 
@@ -247,6 +266,7 @@ const TslGeometry TslGeomLine3 = {
     .ref_volume = 2,
     .full       = QUAD_LINE_3,
     .reduced    = QUAD_LINE_2,
+    .as_face    = QUAD_LINE_3,
     .xdmf_type  = 34, /* Edge_3 */
     .nsub       = 2,
     .sub_geom   = &TslGeomLine2,
@@ -268,6 +288,7 @@ const TslGeometry TslGeomTri3 = {
     .ref_volume = 0.5,
     .full       = QUAD_TRI_1,
     .reduced    = QUAD_TRI_1,
+    .as_face    = QUAD_TRI_3,
     .xdmf_type  = 4,
 };
 
@@ -287,6 +308,7 @@ const TslGeometry TslGeomTri6 = {
     .ref_volume = 0.5,
     .full       = QUAD_TRI_3,
     .reduced    = QUAD_TRI_1,
+    .as_face    = QUAD_TRI_6,
     .xdmf_type  = 36, /* Triangle_6 */
     .nsub       = 4,
     .sub_geom   = &TslGeomTri3,
@@ -308,6 +330,7 @@ const TslGeometry TslGeomQuad4 = {
     .ref_volume = 4,
     .full       = QUAD_QUAD_4,
     .reduced    = QUAD_QUAD_1,
+    .as_face    = QUAD_QUAD_4,
     .xdmf_type  = 5,
 };
 

@@ -405,8 +405,9 @@ static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
  *   film h, sink:                               R_theta(a) += int N_a h (theta - sink) dA,
  *                                               K_ab       += int h N_a N_b dA,        heat = -int h (theta - sink) dA
  *   body flux q per volume:                     R_theta(a) -= q V_a (lumped),          heat = int q dV
- * The points are the formulation's face rule (the face family's own rule, or the linear sub-faces of a
- * modified element, whose nodal weights are all positive). */
+ * The points are the formulation's face rules: for flux and film the face family's own shape functions
+ * with a rule exact for h N_a N_b; for pressure the same, or the linear sub-faces of a modified element,
+ * whose nodal weights are all positive. */
 PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],
                                   PetscReal K[], PetscReal *heat)
 {
@@ -424,7 +425,10 @@ PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kin
   PetscCheck(face >= 1 && face <= g->nface, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE,
              "Face S%" PetscInt_FMT " out of range 1..%" PetscInt_FMT " for %s", face, g->nface, in->type->name);
   face--;
-  in->type->form->face_rule(g, face, &rule);
+  if (kind == TSL_FACE_PRESSURE)
+    in->type->form->pressure_face_rule(g, face, &rule);
+  else
+    in->type->form->thermal_face_rule(g, face, &rule);
   for (PetscInt q = 0; q < rule.n; q++) {
     const PetscInt *node = g->face_node[face];
     const PetscInt  fn   = g->face_nnode[face];

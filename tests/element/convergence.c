@@ -112,64 +112,39 @@ static void Source(const TslElementType *t, const Moduli *m, const PetscReal x[3
   }
 }
 
-/* F_a = int N_a b dV (displacement rows), Q_a = int N_a q dV (temperature rows). */
-static PetscErrorCode Loads(const Grid *grid, const GridRule *rule, PetscReal F[])
+/* The manufactured problem's callbacks (grid.h), ctx the type: the exact fields (theta, the last
+ * unknown, is field 3) and the densities b (displacement rows) and q (temperature rows). */
+static void ExactField(void *ctx, PetscInt slot, const PetscReal x[3], PetscReal *f, PetscReal g[3])
 {
-  const TslElementType *t    = grid->type;
-  const PetscInt        ndof = t->ndof, dim = t->dim, nen = grid->nen;
-  const Moduli          m = ModuliOf(t);
-  PetscReal             xe[TSL_MAX_ELEM_NODES * 3], ue[TSL_MAX_ELEM_DOF], th0[TSL_MAX_ELEM_NODES];
-  TslElementInput       in;
-  TslElementPoint       p;
+  const TslElementType *t = (const TslElementType *)ctx;
+  PetscReal             H[3][3];
 
-  PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < grid->nnode * ndof; i++) F[i] = 0;
-  for (PetscInt e = 0; e < grid->nelem; e++) {
-    GridElementInput(grid, e, NULL, xe, ue, th0, &in);
-    for (PetscInt q = 0; q < rule->n; q++) {
-      PetscReal b[3], s;
-      PetscCheck(TslElementPointEvaluate(t, &grid->sec, xe, rule->xi[q], rule->w[q], &p), PETSC_COMM_SELF, PETSC_ERR_PLIB, "invalid map");
-      Source(t, &m, p.x, b, &s);
-      for (PetscInt a = 0; a < nen; a++) {
-        const PetscInt n = grid->conn[e * nen + a];
-        for (PetscInt i = 0; i < dim; i++) F[ndof * n + i] += p.N[a] * b[i] * p.dV;
-        F[ndof * n + dim] += p.N[a] * s * p.dV;
-      }
-    }
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
+  Field(slot < t->dim ? slot : 3, x, f, g, H);
+}
+
+static void ExactSource(void *ctx, const PetscReal x[3], PetscReal s[])
+{
+  const TslElementType *t = (const TslElementType *)ctx;
+  const Moduli          m = ModuliOf(t);
+  PetscReal             b[3];
+
+  Source(t, &m, x, b, &s[t->dim]);
+  for (PetscInt i = 0; i < t->dim; i++) s[i] = b[i];
 }
 
 /* err[0..3]: ||u - u_h||, |u - u_h|_1, ||theta - theta_h||, |theta - theta_h|_1 (the measure dV of the
  * kinematics: 2 pi r dA for axisymmetry). */
 static PetscErrorCode Errors(const Grid *grid, const PetscReal u[], const GridRule *rule, PetscReal err[4])
 {
-  const TslElementType *t    = grid->type;
-  const PetscInt        ndof = t->ndof, dim = t->dim, nen = grid->nen;
-  PetscReal             xe[TSL_MAX_ELEM_NODES * 3], ue[TSL_MAX_ELEM_DOF], th0[TSL_MAX_ELEM_NODES];
-  TslElementInput       in;
-  TslElementPoint       p;
+  const PetscInt dim = grid->type->dim;
+  PetscReal      l2[TSL_MAX_NODE_DOF], h1[TSL_MAX_NODE_DOF];
 
   PetscFunctionBeginUser;
+  PetscCall(GridErrors(grid, u, rule, ExactField, (void *)grid->type, l2, h1));
   for (PetscInt k = 0; k < 4; k++) err[k] = 0;
-  for (PetscInt e = 0; e < grid->nelem; e++) {
-    GridElementInput(grid, e, u, xe, ue, th0, &in);
-    for (PetscInt q = 0; q < rule->n; q++) {
-      PetscCheck(TslElementPointEvaluate(t, &grid->sec, xe, rule->xi[q], rule->w[q], &p), PETSC_COMM_SELF, PETSC_ERR_PLIB, "invalid map");
-      for (PetscInt c = 0; c <= dim; c++) {
-        const PetscInt field = c < dim ? c : 3, slot = c; /* theta is the last unknown, field 3 */
-        PetscReal      f, g[3], H[3][3], fh = 0, gh[3] = {0, 0, 0}, e0, e1 = 0;
-        Field(field, p.x, &f, g, H);
-        for (PetscInt a = 0; a < nen; a++) {
-          fh += p.N[a] * ue[ndof * a + slot];
-          for (PetscInt d = 0; d < dim; d++) gh[d] += p.dNdx[a][d] * ue[ndof * a + slot];
-        }
-        e0 = (fh - f) * (fh - f);
-        for (PetscInt d = 0; d < dim; d++) e1 += (gh[d] - g[d]) * (gh[d] - g[d]);
-        err[c < dim ? 0 : 2] += e0 * p.dV;
-        err[c < dim ? 1 : 3] += e1 * p.dV;
-      }
-    }
+  for (PetscInt c = 0; c <= dim; c++) {
+    err[c < dim ? 0 : 2] += l2[c];
+    err[c < dim ? 1 : 3] += h1[c];
   }
   for (PetscInt k = 0; k < 4; k++) err[k] = PetscSqrtReal(err[k]);
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -197,7 +172,7 @@ static PetscErrorCode SolveLevel(const TslElementType *t, PetscInt n, const Grid
   GridSetMaterial(&grid, E, NU, K, ALPHA, THETA_INIT, 1);
   PetscCall(GridMinJacobian(&grid, &lv->min_detJ, &lv->invalid));
   PetscCall(PetscMalloc3(grid.nnode * ndof, &F, grid.nnode * ndof, &u, grid.nnode * ndof, &fix));
-  PetscCall(Loads(&grid, rule, F));
+  PetscCall(GridLoadVector(&grid, rule, ExactSource, (void *)t, F));
   for (PetscInt a = 0; a < grid.nnode; a++) {
     PetscBool boundary = PETSC_FALSE;
     for (PetscInt d = 0; d < dim; d++) boundary = (PetscBool)(boundary || GridOnPlane(&grid, a, d, lo[d]) || GridOnPlane(&grid, a, d, hi[d]));

@@ -266,6 +266,16 @@ PetscBool GridOnPlane(const Grid *grid, PetscInt a, PetscInt d, PetscReal value)
   return PetscAbsReal(grid->x[3 * a + d] - value) < tol ? PETSC_TRUE : PETSC_FALSE;
 }
 
+PetscBool GridFaceOnPlane(const Grid *grid, PetscInt e, PetscInt f, PetscInt d, PetscReal value)
+{
+  const TslGeometry *g    = grid->type->geom;
+  const PetscInt    *node = &grid->conn[e * grid->nen];
+
+  for (PetscInt k = 0; k < g->face_nnode[f]; k++)
+    if (!GridOnPlane(grid, node[g->face_node[f][k]], d, value)) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
 PetscErrorCode GridFaceWeights(const Grid *grid, PetscInt d, PetscReal value, PetscReal w[])
 {
   const TslGeometry             *g     = grid->type->geom;
@@ -275,15 +285,12 @@ PetscErrorCode GridFaceWeights(const Grid *grid, PetscInt d, PetscReal value, Pe
   PetscFunctionBeginUser;
   for (PetscInt e = 0; e < grid->nelem; e++)
     for (PetscInt f = 0; f < g->nface; f++) {
-      const TslGeometry *fg = g->face_geom[f];
-      const PetscInt     fn = g->face_nnode[f];
-      const PetscInt    *node;
-      PetscBool          on = PETSC_TRUE;
+      const TslGeometry *fg   = g->face_geom[f];
+      const PetscInt     fn   = g->face_nnode[f];
+      const PetscInt    *node = &grid->conn[e * grid->nen];
       GridRule           rule;
 
-      node = &grid->conn[e * grid->nen];
-      for (PetscInt k = 0; k < fn; k++) on = (PetscBool)(on && GridOnPlane(grid, node[g->face_node[f][k]], d, value));
-      if (!on) continue;
+      if (!GridFaceOnPlane(grid, e, f, d, value)) continue;
       GridRuleCreate(fg, 6, &rule);
       for (PetscInt q = 0; q < rule.n; q++) {
         PetscReal N[TSL_MAX_FACE_NODES], dN[TSL_MAX_FACE_NODES * 3], T[2][3] = {{0}}, xq[3] = {0, 0, 0}, dA;
@@ -308,6 +315,103 @@ PetscErrorCode GridFaceWeights(const Grid *grid, PetscInt d, PetscReal value, Pe
         for (PetscInt k = 0; k < fn; k++) w[node[g->face_node[f][k]]] += N[k] * dA;
       }
     }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* ---- face loads -------------------------------------------------------------------------------- */
+
+PetscErrorCode GridAddFaceLoad(Grid *grid, PetscInt d, PetscReal plane, TslFaceLoadKind kind, PetscReal value, PetscReal value2)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(grid->nload < GRID_MAX_FACE_LOADS, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "at most %d face loads", GRID_MAX_FACE_LOADS);
+  grid->load[grid->nload++] = (GridFaceLoad){d, plane, kind, value, value2};
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Adds the grid's face loads on element e (kernel input in) to Re and Ke (may be NULL); *heat (may be
+ * NULL) += their heat. */
+static PetscErrorCode ElementFaceLoads(const Grid *grid, PetscInt e, const TslElementInput *in, PetscReal Re[], PetscReal Ke[], PetscReal *heat)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt l = 0; l < grid->nload; l++) {
+    const GridFaceLoad *ld = &grid->load[l];
+    for (PetscInt f = 0; f < grid->type->geom->nface; f++) {
+      PetscReal h;
+      if (!GridFaceOnPlane(grid, e, f, ld->d, ld->plane)) continue;
+      PetscCall(TslElementFaceLoad(in, ld->kind, f + 1, ld->value, ld->value2, Re, Ke, &h));
+      if (heat) *heat += h;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode GridFaceHeat(const Grid *grid, const PetscReal u[], PetscReal *heat)
+{
+  PetscReal       xe[TSL_MAX_ELEM_NODES * 3], ue[TSL_MAX_ELEM_DOF], th0[TSL_MAX_ELEM_NODES], Re[TSL_MAX_ELEM_DOF];
+  TslElementInput in;
+
+  PetscFunctionBeginUser;
+  *heat = 0;
+  for (PetscInt e = 0; e < grid->nelem; e++) {
+    GridElementInput(grid, e, u, xe, ue, th0, &in);
+    for (PetscInt i = 0; i < grid->nen * grid->ndof; i++) Re[i] = 0;
+    PetscCall(ElementFaceLoads(grid, e, &in, Re, NULL, heat));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* ---- manufactured problems --------------------------------------------------------------------- */
+
+PetscErrorCode GridLoadVector(const Grid *grid, const GridRule *rule, GridSourceFn source, void *ctx, PetscReal F[])
+{
+  const TslElementType *t    = grid->type;
+  const PetscInt        ndof = grid->ndof, nen = grid->nen;
+  PetscReal             xe[TSL_MAX_ELEM_NODES * 3], ue[TSL_MAX_ELEM_DOF], th0[TSL_MAX_ELEM_NODES];
+  TslElementInput       in;
+  TslElementPoint       p;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < grid->nnode * ndof; i++) F[i] = 0;
+  for (PetscInt e = 0; e < grid->nelem; e++) {
+    GridElementInput(grid, e, NULL, xe, ue, th0, &in);
+    for (PetscInt q = 0; q < rule->n; q++) {
+      PetscReal s[TSL_MAX_NODE_DOF];
+      PetscCheck(TslElementPointEvaluate(t, &grid->sec, xe, rule->xi[q], rule->w[q], &p), PETSC_COMM_SELF, PETSC_ERR_PLIB, "invalid map");
+      source(ctx, p.x, s);
+      for (PetscInt a = 0; a < nen; a++)
+        for (PetscInt i = 0; i < ndof; i++) F[ndof * grid->conn[e * nen + a] + i] += p.N[a] * s[i] * p.dV;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode GridErrors(const Grid *grid, const PetscReal u[], const GridRule *rule, GridFieldFn field, void *ctx, PetscReal l2[], PetscReal h1[])
+{
+  const TslElementType *t    = grid->type;
+  const PetscInt        ndof = grid->ndof, dim = t->dim, nen = grid->nen;
+  PetscReal             xe[TSL_MAX_ELEM_NODES * 3], ue[TSL_MAX_ELEM_DOF], th0[TSL_MAX_ELEM_NODES];
+  TslElementInput       in;
+  TslElementPoint       p;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < ndof; i++) l2[i] = h1[i] = 0;
+  for (PetscInt e = 0; e < grid->nelem; e++) {
+    GridElementInput(grid, e, u, xe, ue, th0, &in);
+    for (PetscInt q = 0; q < rule->n; q++) {
+      PetscCheck(TslElementPointEvaluate(t, &grid->sec, xe, rule->xi[q], rule->w[q], &p), PETSC_COMM_SELF, PETSC_ERR_PLIB, "invalid map");
+      for (PetscInt i = 0; i < ndof; i++) {
+        PetscReal f, g[3], fh = 0, gh[3] = {0, 0, 0}, e1 = 0;
+        field(ctx, i, p.x, &f, g);
+        for (PetscInt a = 0; a < nen; a++) {
+          fh += p.N[a] * ue[ndof * a + i];
+          for (PetscInt d = 0; d < dim; d++) gh[d] += p.dNdx[a][d] * ue[ndof * a + i];
+        }
+        for (PetscInt d = 0; d < dim; d++) e1 += (gh[d] - g[d]) * (gh[d] - g[d]);
+        l2[i] += (fh - f) * (fh - f) * p.dV;
+        h1[i] += e1 * p.dV;
+      }
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -360,6 +464,7 @@ PetscErrorCode GridAssemble(const Grid *grid, const PetscReal u[], PetscReal R[]
     GridElementInput(grid, e, u, xe, ue, th0, &in);
     PetscCall(TslElementInternal(&in, Re, Ke, &inverted));
     PetscCheck(!inverted, PETSC_COMM_SELF, PETSC_ERR_PLIB, "%s element %" PetscInt_FMT " inverted", grid->type->name, e);
+    PetscCall(ElementFaceLoads(grid, e, &in, Re, Ke, NULL));
     for (PetscInt a = 0; a < nen; a++)
       for (PetscInt i = 0; i < ndof; i++) idx[ndof * a + i] = ndof * grid->conn[e * nen + a] + i;
     for (PetscInt i = 0; i < nd; i++) R[idx[i]] += Re[i];

@@ -23,6 +23,17 @@ typedef struct {
   PetscReal xi[GRID_MAX_QP][3], w[GRID_MAX_QP];
 } GridRule;
 
+/* A face load of the kernels (TslElementFaceLoad: kind, value, value2) on every element face lying on
+ * the plane x_d = plane; GridAssemble includes it in R and K. */
+typedef struct {
+  PetscInt        d;
+  PetscReal       plane;
+  TslFaceLoadKind kind;
+  PetscReal       value, value2;
+} GridFaceLoad;
+
+#define GRID_MAX_FACE_LOADS 4
+
 /* The section points at the grid's own material: a Grid is set up in place and never copied. */
 typedef struct {
   const TslElementType *type;
@@ -34,6 +45,8 @@ typedef struct {
   PetscReal            *x;          /* [nnode*3] */
   PetscReal            *theta_init; /* [nnode] */
   PetscInt             *conn;       /* [nelem*nen] in the catalogue's node order */
+  PetscInt              nload;      /* face loads (GridAddFaceLoad), none after GridCreate */
+  GridFaceLoad          load[GRID_MAX_FACE_LOADS];
 } Grid;
 
 typedef struct {
@@ -62,14 +75,33 @@ void GridElementInput(const Grid *grid, PetscInt e, const PetscReal u[], PetscRe
  * where the map is not valid (TslElementPointEvaluate false). */
 PetscErrorCode GridMinJacobian(const Grid *grid, PetscReal *min_detJ, PetscInt *invalid);
 
-/* Is node a on the plane x_d = value? */
+/* Is node a on the plane x_d = value? Does face f (0-based) of element e lie on it? */
 PetscBool GridOnPlane(const Grid *grid, PetscInt a, PetscInt d, PetscReal value);
+PetscBool GridFaceOnPlane(const Grid *grid, PetscInt e, PetscInt f, PetscInt d, PetscReal value);
+
+/* Adds a face load on the plane x_d = plane (at most GRID_MAX_FACE_LOADS). GridFaceHeat sums the heat
+ * the grid's thermal face loads add to the body per unit time at u (the kernels' heat: flux in, film
+ * -h (theta - sink)). */
+PetscErrorCode GridAddFaceLoad(Grid *grid, PetscInt d, PetscReal plane, TslFaceLoadKind kind, PetscReal value, PetscReal value2);
+PetscErrorCode GridFaceHeat(const Grid *grid, const PetscReal u[], PetscReal *heat);
 
 /* w[a] += int_S N_a dA over the element faces lying on the plane x_d = value (dA with the thickness
  * or 2 pi r of the kinematics): the consistent nodal weights of a uniform traction there. */
 PetscErrorCode GridFaceWeights(const Grid *grid, PetscInt d, PetscReal value, PetscReal w[]);
 
-/* Internal force and heat flow R(u) and (K not NULL) the tangent, assembled from TslElementInternal. */
+/* A manufactured problem as callbacks: field gives the exact value f and gradient g of the unknown in
+ * slot (0 .. ndof-1, theta last) at x; source the load densities s[slot] at x (body force, heat source). */
+typedef void (*GridFieldFn)(void *ctx, PetscInt slot, const PetscReal x[3], PetscReal *f, PetscReal g[3]);
+typedef void (*GridSourceFn)(void *ctx, const PetscReal x[3], PetscReal s[]);
+
+/* The consistent load of the densities, F[ndof n + i] = sum_e int N_a s_i dV, with the rule. */
+PetscErrorCode GridLoadVector(const Grid *grid, const GridRule *rule, GridSourceFn source, void *ctx, PetscReal F[]);
+/* Squared errors of each unknown slot against the exact field, with the rule and the measure dV of the
+ * kinematics: l2[i] = int (u_i - u_h,i)^2 dV, h1[i] = int |grad (u_i - u_h,i)|^2 dV. */
+PetscErrorCode GridErrors(const Grid *grid, const PetscReal u[], const GridRule *rule, GridFieldFn field, void *ctx, PetscReal l2[], PetscReal h1[]);
+
+/* Internal force and heat flow R(u) and (K not NULL) the tangent, assembled from TslElementInternal and
+ * the grid's face loads. */
 PetscErrorCode GridCreateMatrix(const Grid *grid, Mat *K);
 PetscErrorCode GridAssemble(const Grid *grid, const PetscReal u[], PetscReal R[], Mat K);
 

@@ -1,7 +1,7 @@
 /* Every geometry family of src/element/geometry.c, from one table: shape functions (partition of
  * unity, linear completeness, Kronecker property, derivatives against central differences at random
  * points), quadrature (positive weights inside the element, weight sum, exactness up to the stated
- * degree and not beyond), faces (trace of the element on each face equals the face family's
+ * degree and not beyond; the full, reduced and, for face families, as-face rules), faces (trace of the element on each face equals the face family's
  * interpolation, outward normals, closed boundary), linear sub-elements (positive volumes that tile
  * the element, positive nodal weights) and the XDMF cell type. The catalogue may only use families of
  * the table. */
@@ -288,6 +288,10 @@ static void CheckFaces(TestLog *log, const Family *fam)
     Check(log, fg && fg->dim == g->dim - 1 && fg->nnode == g->face_nnode[f] && fg->order == g->order, 1, 0,
           "%s face S%" PetscInt_FMT " family %s fits (dimension, nodes, order)", g->name, f + 1, fg ? fg->name : "none");
     if (!fg) continue;
+    /* film and flux are integrated with the face family's as_face rule (formulations.c) */
+    Check(log, fg->as_face.n > 0 && fg->as_face.degree >= 2 * fg->order + (fg->dim == 1 ? 1 : 0), 1, 0,
+          "%s face S%" PetscInt_FMT " family %s has a face rule exact for N_a N_b (times r on a line): degree %" PetscInt_FMT, g->name, f + 1,
+          fg->name, fg->as_face.degree);
     for (PetscInt k = 0; k < g->face_nnode[f]; k++)
       if (node[k] < 0 || node[k] >= g->nnode) badnode++;
     Check(log, badnode, 0, 0, "%s face S%" PetscInt_FMT " node positions out of range", g->name, f + 1);
@@ -461,6 +465,7 @@ int main(int argc, char **argv)
     CheckShape(&log, g);
     CheckQuadrature(&log, f, &g->full, "full");
     CheckQuadrature(&log, f, &g->reduced, "reduced");
+    if (g->as_face.n) CheckQuadrature(&log, f, &g->as_face, "as-face");
     Check(&log, g->full.degree >= g->reduced.degree, 1, 0, "%s full rule at least as exact as the reduced one", g->name);
     CheckFaces(&log, f);
     CheckSubElements(&log, g);
