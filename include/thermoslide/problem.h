@@ -88,9 +88,11 @@ PetscErrorCode TslProblemField(TslProblem prob, PetscInt i, PetscInt *ncomp, Pet
 /* Contact (collective). Search: pairs secondary nodes at the current solution, rebuilding the matrix
  * pattern when pairing changed (then *repattern: hand the new matrix to the solver). Update: after a
  * converged solve, re-pairs nodes that left their segment and updates augmented-Lagrange multipliers;
- * *again: solve the increment again. Commit / Rollback: accept or reject the increment's contact state. */
+ * *again: solve the increment again; *augmented: the multipliers changed, so the next solve must take at
+ * least one Newton step (otherwise the gaps, and so the next update, stay the same). Commit / Rollback:
+ * accept or reject the increment's contact state. */
 PetscErrorCode TslProblemContactSearch(TslProblem prob, PetscBool *repattern);
-PetscErrorCode TslProblemContactUpdate(TslProblem prob, PetscBool *again, PetscBool *repattern);
+PetscErrorCode TslProblemContactUpdate(TslProblem prob, PetscBool *again, PetscBool *repattern, PetscBool *augmented);
 PetscErrorCode TslProblemContactCommit(TslProblem prob);
 PetscErrorCode TslProblemContactRollback(TslProblem prob);
 

@@ -288,14 +288,15 @@ PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
 }
 
 /* Collective. After a converged solve: nodes whose projection left their segment need re-pairing, and
- * augmented-Lagrange multipliers are updated. *again is set when the increment must be solved again. */
-PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool *repattern)
+ * augmented-Lagrange multipliers are updated. *again is set when the increment must be solved again,
+ * *augmented when that is because the multipliers changed. */
+PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool *repattern, PetscBool *augmented)
 {
   PetscInt  loc[2] = {0, 0}, g[2];
   PetscReal change = 0, scale = 0, gc[2], lc[2];
 
   PetscFunctionBeginUser;
-  *again = *repattern = PETSC_FALSE;
+  *again = *repattern = *augmented = PETSC_FALSE;
   if (!p->ncsurf) PetscFunctionReturn(PETSC_SUCCESS);
   {
     /* the contact elements at the converged state (outputs only: no residual, no matrix) */
@@ -328,8 +329,10 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
   /* multipliers change only when another solve follows, so that the accepted state is the one solved */
   /* relative to the largest pressure only (no absolute floor: pressures may be 1e-7 in kN/mm^2); with no
    * pressure anywhere the multipliers are already zero after one update and the change is exactly 0 */
+  if (gc[1] > 0 || gc[0] > 0)
+    PetscCall(PetscInfo(NULL, "augmented Lagrange: largest multiplier change %g, largest pressure %g\n", (double)gc[0], (double)gc[1]));
   if (gc[0] > p->augment_tol * gc[1]) {
-    *again = PETSC_TRUE;
+    *again = *augmented = PETSC_TRUE;
     for (PetscInt i = 0; i < p->ncnode; i++) {
       TslContactNode          *cn = &p->cnode[i];
       const TslContactSurface *cs = &p->csurf[cn->pair];

@@ -32,7 +32,8 @@ ring volume V = pi (16 x 2.5 - 10.75) = 29.25 pi (0.1 %); the applied force 211.
 coarser quadratic rings), so the dissipation is 120 within 3 %. Second-order meshes (job *_cpe8t, *_cax6mt, ...): the interface
 averages use Simpson weights over the line3 faces.
 With AUGMENTED LAGRANGE normal contact (job name *_auglagr_*) the penetration at the end of step 4
-must also be below 1 % of the penalty method's p / eps_n (eps_n = 10 E / 0.5).
+must also be below 1 % of the penalty method's p / eps_n (eps_n = 10 E / main face length: 0.5, or 1.0
+on the second-order meshes).
 usage: check_sliding.py OUTDIR JOB conductance|radiation|friction
 """
 import re
@@ -188,7 +189,7 @@ if "auglagr" in job:
     top = sorted([i for i in range(len(ids)) if large[i] and abs(xyz[i, 1] - y0) < 1e-9], key=lambda i: xyz[i, 0])
     ym = np.interp([xyz[i, 0] + u[i, 0] for i in sec], [xyz[i, 0] + u[i, 0] for i in top], [y0 + u[i, 1] for i in top])
     pen = max(0.0, float(np.max(ym - (y0 + u[sec, 1]))))
-    penalty_pen = 200.0 / (10 * 30.0e6 / 0.5)
+    penalty_pen = 200.0 / (10 * 30.0e6 / (1.0 if quadratic else 0.5))
     check("step 4 penetration with augmented Lagrange (penalty alone: %.3g)" % penalty_pen, pen, 0.0, 0.01 * penalty_pen)
 
 nt = r.field("NT")[:, 0][small]
