@@ -26,20 +26,29 @@ static PetscReal PointInitialTheta(const TslElementInput *in, const TslElementPo
   return theta;
 }
 
+/* The geometry at the points of the family's full rule, shared by conduction and (for fully integrated
+ * rows) the mechanical terms; PETSC_FALSE for an inverted element. */
+static PetscBool FullPoints(const TslElementInput *in, TslElementPoint pts[])
+{
+  const TslGeometry *g = in->type->geom;
+  for (PetscInt q = 0; q < g->full.n; q++)
+    if (!TslElementPointEvaluate(in->type, in->sec, in->x, g->full.xi[q], g->full.w[q], &pts[q])) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
 /* Conduction with the family's full rule: R_theta(a) = int k grad N_a . grad theta dV;
  * K = int k grad N_a . grad N_b + dk/dtheta (grad N_a . grad theta) N_b dV. */
-static PetscBool Conduction(const TslElementInput *in, PetscReal R[], PetscReal K[])
+static void Conduction(const TslElementInput *in, const TslElementPoint pts[], PetscReal R[], PetscReal K[])
 {
   const TslElementType *t   = in->type;
   const TslGeometry    *g   = t->geom;
   const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, n = g->nnode, nd = TslElementTypeNodes(t) * ndof;
-  TslElementPoint       p;
 
   for (PetscInt q = 0; q < g->full.n; q++) {
-    PetscReal        grad[3] = {0, 0, 0}, theta;
-    TslMaterialPoint mp;
+    const TslElementPoint p       = pts[q];
+    PetscReal             grad[3] = {0, 0, 0}, theta;
+    TslMaterialPoint      mp;
 
-    if (!TslElementPointEvaluate(t, in->sec, in->x, g->full.xi[q], g->full.w[q], &p)) return PETSC_FALSE;
     theta = NodalTheta(in, p.N, in->u);
     for (PetscInt a = 0; a < n; a++)
       for (PetscInt d = 0; d < dim; d++) grad[d] += p.dNdx[a][d] * in->u[ndof * a + th];
@@ -56,7 +65,6 @@ static PetscBool Conduction(const TslElementInput *in, PetscReal R[], PetscReal 
       }
     }
   }
-  return PETSC_TRUE;
 }
 
 /* State of the mechanical terms at one point. */
@@ -65,21 +73,34 @@ typedef struct {
   TslMaterialPoint mp;
   PetscReal        B[6][TSL_MAX_ELEM_NODES * 3];
   PetscReal        eps[6], eps_th, deps_th; /* total strain, thermal strain (per normal component) and d/dtheta */
+  /* the nonzeros of each column c of B (at most 4 of the 6 rows: B is sparse, and every product with it
+   * below runs over these only): rows bz_row[c][0..bz_n[c]), values bz_val */
+  PetscInt  bz_n[TSL_MAX_ELEM_NODES * 3], bz_row[TSL_MAX_ELEM_NODES * 3][6];
+  PetscReal bz_val[TSL_MAX_ELEM_NODES * 3][6];
 } MechPoint;
 
-static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi[], PetscReal w, MechPoint *mq)
+/* pre: the point's geometry when already evaluated (NULL: evaluate it here) */
+static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi[], PetscReal w, const TslElementPoint *pre, MechPoint *mq)
 {
   const TslElementType *t   = in->type;
   const PetscInt        ndof = t->ndof, nu = ndof - 1, n = TslElementTypeNodes(t);
   PetscReal             theta;
 
-  if (!TslElementPointEvaluate(t, in->sec, in->x, xi, w, &mq->p)) return PETSC_FALSE;
+  if (pre) mq->p = *pre;
+  else if (!TslElementPointEvaluate(t, in->sec, in->x, xi, w, &mq->p)) return PETSC_FALSE;
   TslElementStrainMatrix(t, in->sec, in->x, &mq->p, mq->B);
-  for (PetscInt r = 0; r < 6; r++) {
-    mq->eps[r] = 0;
-    for (PetscInt a = 0; a < n; a++)
-      for (PetscInt i = 0; i < nu; i++) mq->eps[r] += mq->B[r][nu * a + i] * in->u[ndof * a + i];
-  }
+  for (PetscInt r = 0; r < 6; r++) mq->eps[r] = 0;
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt i = 0; i < nu; i++) {
+      const PetscInt c = nu * a + i;
+      mq->bz_n[c]      = 0;
+      for (PetscInt r = 0; r < 6; r++) {
+        if (mq->B[r][c] == 0) continue;
+        mq->bz_row[c][mq->bz_n[c]]   = r;
+        mq->bz_val[c][mq->bz_n[c]++] = mq->B[r][c];
+        mq->eps[r] += mq->B[r][c] * in->u[ndof * a + i];
+      }
+    }
   theta = NodalTheta(in, mq->p.N, in->u);
   TslMaterialEval(in->sec->mat, theta, &mq->mp);
   mq->eps_th = TslMaterialThermalStrain(in->sec->mat, theta, PointInitialTheta(in, &mq->p), &mq->deps_th);
@@ -138,7 +159,7 @@ static void SmallInverse(PetscInt n, PetscReal A[TSL_MAX_PRESSURE][TSL_MAX_PRESS
  *   only through the pressure equation. Nearly incompressible material does not lock: the volumetric
  *   constraint is imposed on the pressure space only (one term per linear element, 1 + dim per
  *   quadratic one). If res is given, stresses, strains and the strain energy are averaged into it. */
-static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K[], Hybrid *hy, TslElementResult *res)
+static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], Hybrid *hy, TslElementResult *res)
 {
   const TslElementType *t    = in->type;
   const TslGeometry    *g    = t->geom;
@@ -147,13 +168,15 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
   const PetscBool       hybrid      = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
   PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
   MechPoint             mq;
+  PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
+  if (K) PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(Kuu, ncol * ncol));
   for (PetscInt q = 0; q < quad->n; q++) {
     PetscReal D[6][6], dD[6][6], emech[6], sig[6], dsig[6], P[TSL_MAX_PRESSURE];
     PetscReal DB[6][TSL_MAX_ELEM_NODES * 3];
 
-    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], &mq)) return PETSC_FALSE;
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, &mq)) return PETSC_FALSE;
     if (hybrid) {
       const PetscReal nuv = mq.mp.nu, E = mq.mp.E, mu = E / (2 * (1 + nuv)), kb = E / (3 * (1 - 2 * nuv));
       const PetscReal dmu = mq.mp.dE / (2 * (1 + nuv)) - mq.mp.dnu * E / (2 * (1 + nuv) * (1 + nuv));
@@ -189,8 +212,12 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
       }
     }
     for (PetscInt a = 0; a < nv; a++)
-      for (PetscInt i = 0; i < nu; i++)
-        for (PetscInt r = 0; r < 6; r++) R[ndof * a + i] += mq.B[r][nu * a + i] * sig[r] * mq.p.dV;
+      for (PetscInt i = 0; i < nu; i++) {
+        const PetscInt c = nu * a + i;
+        PetscReal      f = 0;
+        for (PetscInt k = 0; k < mq.bz_n[c]; k++) f += mq.bz_val[c][k] * sig[mq.bz_row[c][k]];
+        R[ndof * a + i] += f * mq.p.dV;
+      }
     if (res) {
       for (PetscInt r = 0; r < 6; r++) {
         res->E[r] += mq.eps[r] / quad->n;
@@ -205,26 +232,34 @@ static PetscBool Mechanics(const TslElementInput *in, PetscReal R[], PetscReal K
         for (PetscInt r = 0; r < 6; r++) res->strain_energy += 0.5 * sig[r] * mq.eps[r] * mq.p.dV;
     }
     if (!K) continue;
-    for (PetscInt r = 0; r < 6; r++)
-      for (PetscInt c = 0; c < ncol; c++) {
-        DB[r][c] = 0;
-        for (PetscInt s = 0; s < 6; s++) DB[r][c] += D[r][s] * mq.B[s][c];
+    /* DB = D B dV (rows of D skip its zeros; contiguous in the columns), then the upper triangle of
+     * B^T D B dV row by row over the nonzeros of B's column (symmetric: D is), into Kuu */
+    for (PetscInt r = 0; r < 6; r++) {
+      for (PetscInt c = 0; c < ncol; c++) DB[r][c] = 0;
+      for (PetscInt s = 0; s < 6; s++) {
+        const PetscReal drs = D[r][s] * mq.p.dV;
+        if (drs == 0) continue;
+        for (PetscInt c = 0; c < ncol; c++) DB[r][c] += drs * mq.B[s][c];
       }
-    for (PetscInt a = 0; a < nv; a++)
-      for (PetscInt i = 0; i < nu; i++) {
-        const PetscInt row = ndof * a + i;
-        PetscReal      Bds = 0;
-        for (PetscInt r = 0; r < 6; r++) Bds += mq.B[r][nu * a + i] * dsig[r];
-        for (PetscInt b = 0; b < nv; b++) {
-          for (PetscInt j = 0; j < nu; j++) {
-            PetscReal kij = 0;
-            for (PetscInt r = 0; r < 6; r++) kij += mq.B[r][nu * a + i] * DB[r][nu * b + j];
-            K[row * nd + ndof * b + j] += kij * mq.p.dV;
-          }
-          if (b < n) K[row * nd + ndof * b + th] += Bds * mq.p.N[b] * mq.p.dV;
-        }
+    }
+    for (PetscInt c1 = 0; c1 < ncol; c1++) {
+      PetscReal *kr = &Kuu[c1 * ncol], Bds = 0;
+      for (PetscInt k = 0; k < mq.bz_n[c1]; k++) {
+        const PetscReal  v  = mq.bz_val[c1][k];
+        const PetscReal *db = DB[mq.bz_row[c1][k]];
+        for (PetscInt c2 = c1; c2 < ncol; c2++) kr[c2] += v * db[c2];
+        Bds += v * dsig[mq.bz_row[c1][k]];
       }
+      for (PetscInt b = 0; b < n; b++) K[(ndof * (c1 / nu) + c1 % nu) * nd + ndof * b + th] += Bds * mq.p.N[b] * mq.p.dV;
+    }
   }
+  if (K) /* the displacement block, both triangles */
+    for (PetscInt c1 = 0; c1 < ncol; c1++)
+      for (PetscInt c2 = c1; c2 < ncol; c2++) {
+        const PetscInt r1 = ndof * (c1 / nu) + c1 % nu, r2 = ndof * (c2 / nu) + c2 % nu;
+        K[r1 * nd + r2] += Kuu[c1 * ncol + c2];
+        if (c2 != c1) K[r2 * nd + r1] += Kuu[c1 * ncol + c2];
+      }
   if (hybrid) {
     PetscReal      Hi[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], rhs[TSL_MAX_PRESSURE];
     const PetscInt np = hy->np;
@@ -292,23 +327,28 @@ static PetscErrorCode Hourglass(const TslElementInput *in, PetscReal R[], PetscR
   PetscFunctionBeginUser;
   *energy = 0;
   if (!in->type->form->hourglass) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(MechPointEvaluate(in, quad->xi[0], quad->w[0], &mq), PETSC_COMM_SELF, PETSC_ERR_PLIB, "hourglass control of an inverted element");
+  PetscCheck(MechPointEvaluate(in, quad->xi[0], quad->w[0], NULL, &mq), PETSC_COMM_SELF, PETSC_ERR_PLIB, "hourglass control of an inverted element");
   PetscCall(in->type->form->hourglass(in, &mq.mp, R, K, energy));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted)
 {
-  const PetscInt nd = TslElementTypeNodes(in->type) * in->type->ndof;
-  Hybrid         hy;
-  PetscReal      ehg;
+  const PetscInt  nd = TslElementTypeNodes(in->type) * in->type->ndof;
+  Hybrid          hy;
+  PetscReal       ehg;
+  TslElementPoint full[TSL_MAX_QP];
 
   PetscFunctionBeginUser;
   *inverted = PETSC_FALSE;
-  for (PetscInt i = 0; i < nd; i++) R[i] = 0;
-  if (K)
-    for (PetscInt i = 0; i < nd * nd; i++) K[i] = 0;
-  if (!Conduction(in, R, K) || !Mechanics(in, R, K, &hy, NULL)) {
+  PetscCall(PetscArrayzero(R, nd));
+  if (K) PetscCall(PetscArrayzero(K, nd * nd));
+  if (!FullPoints(in, full)) {
+    *inverted = PETSC_TRUE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  Conduction(in, full, R, K);
+  if (!Mechanics(in, full, R, K, &hy, NULL)) {
     *inverted = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -479,14 +519,14 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(res, sizeof(*res)));
   for (PetscInt i = 0; i < TslElementTypeNodes(t) * ndof; i++) R[i] = 0;
-  PetscCheck(Mechanics(in, R, NULL, &hy, res), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
+  PetscCheck(Mechanics(in, NULL, R, NULL, &hy, res), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
   if (TslKinematicsRowGet(t->kin)->free_normal) {
     const TslQuadrature *quad = t->form->quadrature(g);
     res->E[2]                 = 0;
     for (PetscInt q = 0; q < quad->n; q++) {
       MechPoint mq;
       PetscReal ratio;
-      (void)MechPointEvaluate(in, quad->xi[q], quad->w[q], &mq);
+      (void)MechPointEvaluate(in, quad->xi[q], quad->w[q], NULL, &mq);
       ratio = mq.mp.nu / (1 - mq.mp.nu); /* lambda / (lambda + 2 mu) */
       res->E[2] += (mq.eps_th - ratio * (mq.eps[0] + mq.eps[1] - 2 * mq.eps_th)) / quad->n;
     }

@@ -206,8 +206,12 @@ void TslElementStrainMatrix(const TslElementType *type, const TslElementSection 
  * same function gives dD from (dlambda, dmu) before the plane-stress condensation. */
 static void Isotropic(PetscReal lambda, PetscReal mu, PetscReal D[6][6])
 {
-  for (PetscInt i = 0; i < 6; i++)
-    for (PetscInt j = 0; j < 6; j++) D[i][j] = (i < 3 && j < 3 ? lambda : 0) + (i == j ? (i < 3 ? 2 * mu : mu) : 0);
+  PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(&D[0][0], 36));
+  for (PetscInt i = 0; i < 3; i++) {
+    D[i][0] = D[i][1] = D[i][2] = lambda;
+    D[i][i] += 2 * mu;
+    D[i + 3][i + 3] = mu;
+  }
 }
 
 void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp, PetscReal D[6][6], PetscReal dD[6][6])

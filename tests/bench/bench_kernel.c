@@ -1,0 +1,83 @@
+/* Element kernel cost per catalogue row, in CPU time of this thread (robust to a loaded machine):
+ * residual (internal force + heat flow) and residual + tangent of one element, on a mildly distorted
+ * unit element with a nonzero state, plus the flop-free floor of touching the element arrays.
+ * Prints figures only (ctest -L bench). usage: bench_kernel [seconds per figure, default 0.2; a negative
+ * value -N runs exactly N calls per figure, for instruction counts with perf stat] [TYPE] */
+#define _POSIX_C_SOURCE 200809L
+#include <thermoslide/element.h>
+#include <thermoslide/material.h>
+#include <time.h>
+#include <string.h>
+
+static double CpuNow(void)
+{
+  struct timespec ts;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+static void Constant(TslPropertyTable *t, PetscReal v0, PetscReal v1)
+{
+  t->n           = 1;
+  t->value[0][0] = v0, t->value[0][1] = v1;
+}
+
+/* ns per call of TslElementInternal (K or not), repeated for about `budget` seconds */
+static PetscErrorCode Time(const TslElementInput *in, PetscBool tangent, double budget, double *ns)
+{
+  static PetscReal R[TSL_MAX_ELEM_DOF], K[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF];
+  PetscBool        inv;
+  long             n = 0, batch = 64;
+  double           t0 = CpuNow(), t;
+
+  PetscFunctionBeginUser;
+  do {
+    for (long i = 0; i < batch; i++) PetscCall(TslElementInternal(in, R, tangent ? K : NULL, &inv));
+    n += batch;
+    t = CpuNow() - t0;
+  } while (budget > 0 ? t < budget : n < -budget);
+  PetscCheck(!inv, PETSC_COMM_SELF, PETSC_ERR_PLIB, "inverted benchmark element");
+  *ns = 1e9 * t / n;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  double budget = argc > 1 ? atof(argv[1]) : 0.2;
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %6s %5s %12s %12s %12s %12s\n", "type", "nodes", "dofs", "residual_ns", "jacobian_ns", "res_ns/node",
+                        "jac_ns/node"));
+  for (PetscInt k = 0; k < TslElementTypeCount(); k++) {
+    const TslElementType *t = TslElementTypeGet(k);
+    const TslGeometry    *g = t->geom;
+    TslMaterial           mat;
+    TslElementSection     sec;
+    PetscReal             x[TSL_MAX_ELEM_NODES * 3] = {0}, u[TSL_MAX_ELEM_DOF] = {0}, ti[TSL_MAX_ELEM_NODES] = {0};
+    TslElementInput       in;
+    double                r_ns, j_ns;
+    const PetscInt        nn = TslElementTypeNodes(t);
+
+    if (argc > 2 && strcmp(argv[2], t->name)) continue;
+    PetscCall(PetscMemzero(&mat, sizeof(mat)));
+    Constant(&mat.prop[TSL_PROP_ELASTIC], 200e3, 0.3);
+    Constant(&mat.prop[TSL_PROP_CONDUCTIVITY], 10, 0);
+    Constant(&mat.prop[TSL_PROP_DENSITY], 2, 0);
+    Constant(&mat.prop[TSL_PROP_SPECIFIC_HEAT], 3, 0);
+    Constant(&mat.prop[TSL_PROP_EXPANSION], 1e-5, 0);
+    sec = (TslElementSection){&mat, 0.5};
+    for (PetscInt a = 0; a < g->nnode; a++) {
+      for (PetscInt d = 0; d < t->dim; d++) x[3 * a + d] = 0.5 * g->node_xi[a][d] + 0.02 * PetscSinReal(3.1 * a + 1.3 * d) + (d == 0 ? 2 : 0);
+      for (PetscInt i = 0; i < t->ndof; i++) u[t->ndof * a + i] = 1e-4 * PetscCosReal(1.7 * a + i);
+      u[t->ndof * a + t->ndof - 1] = 20 + a;
+    }
+    for (PetscInt a = g->nnode; a < nn; a++) x[3 * a] = 0.3; /* reference node of generalized plane strain */
+    in = (TslElementInput){.type = t, .sec = &sec, .x = x, .u = u, .theta_init = ti};
+    PetscCall(Time(&in, PETSC_FALSE, budget, &r_ns));
+    PetscCall(Time(&in, PETSC_TRUE, budget, &j_ns));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %6" PetscInt_FMT " %5" PetscInt_FMT " %12.0f %12.0f %12.0f %12.0f\n", t->name, nn, nn * t->ndof, r_ns,
+                          j_ns, r_ns / nn, j_ns / nn));
+  }
+  PetscCall(PetscFinalize());
+  return 0;
+}
