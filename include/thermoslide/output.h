@@ -41,7 +41,13 @@ PetscErrorCode TslOutputSetMesh(TslOutput out, PetscInt nnode_global, PetscInt n
 PetscErrorCode TslOutputBeginFrame(TslOutput out, PetscInt step, PetscInt increment, PetscReal time);
 PetscErrorCode TslOutputNodeField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[]);
 PetscErrorCode TslOutputElementField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[]);
-PetscErrorCode TslOutputEndFrame(TslOutput out); /* flushes the .h5 and rewrites the .xmf.part */
+/* Ends the frame. The .h5 is flushed and the .xmf.part rewritten to name it when at least the sync
+ * interval has passed since the last time (rank 0's clock decides; always for the first frame), and at
+ * TslOutputFinalize: a long job's frames become visible to a reader within that interval, while a job
+ * of many small increments does not spend its time rewriting the XML and flushing metadata. */
+PetscErrorCode TslOutputEndFrame(TslOutput out);
+/* Seconds between syncs (default 1; 0: after every frame). */
+PetscErrorCode TslOutputSetSyncInterval(TslOutput out, PetscReal seconds);
 
 /* Moves the temporary files over <job>.h5 / <job>.xmf, or <job>.<tag>.h5 / .xmf when tag is given (the
  * results of a run that stopped, kept beside earlier ones). Collective. */

@@ -61,6 +61,7 @@ struct _p_TslOutput {
   TslRedist           nodes, elems;
   PetscInt            nframe, maxframe;
   TslOutputFrameInfo *frames;
+  double              sync_interval, last_sync; /* wall seconds between syncs of the .h5 and .xmf.part; last one */
 };
 
 /* Writes the whole .xmf text for the frames so far to path. Called on rank 0 only; returns 0 or an

@@ -78,7 +78,9 @@ PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobna
   o->comm        = comm;
   o->file        = H5I_INVALID_HID;
   o->dxpl        = H5I_INVALID_HID;
-  o->frame_group = H5I_INVALID_HID;
+  o->frame_group   = H5I_INVALID_HID;
+  o->sync_interval = 1.0;
+  o->last_sync     = -1e300;
   PetscCallMPI(MPI_Comm_rank(comm, &o->rank));
   PetscCall(PetscStrncpy(o->job, jobname, sizeof(o->job)));
   PetscCall(PetscStrncpy(o->dir, dir ? dir : "", sizeof(o->dir)));
@@ -367,9 +369,23 @@ PetscErrorCode TslOutputEndFrame(TslOutput out)
   TslH5Check(out->comm, H5Gclose(out->frame_group), out->h5_part);
   out->frame_group = H5I_INVALID_HID;
   out->in_frame    = PETSC_FALSE;
+  {
+    double now  = MPI_Wtime();
+    int    sync = now - out->last_sync >= out->sync_interval;
+    PetscCallMPI(MPI_Bcast(&sync, 1, MPI_INT, 0, out->comm));
+    if (!sync) PetscFunctionReturn(PETSC_SUCCESS);
+    out->last_sync = now;
+  }
   /* The .xmf about to name this frame must not point at data still in HDF5's cache. */
   TslH5Check(out->comm, H5Fflush(out->file, H5F_SCOPE_GLOBAL), out->h5_part);
   PetscCall(RewriteXmf(out));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputSetSyncInterval(TslOutput out, PetscReal seconds)
+{
+  PetscFunctionBeginUser;
+  out->sync_interval = (double)seconds;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

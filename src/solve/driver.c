@@ -45,6 +45,8 @@ typedef struct {
   PetscInt   done_step, done_inc;   /* last converged increment */
   PetscReal  dissipated, absorbed;  /* frictional dissipation and the heat made of it, since the start */
   PetscInt   max_contact_its;
+  PetscReal  sync_interval; /* -tsl_output_sync: seconds between syncs of the result files */
+  PetscInt   direct_max;    /* -tsl_direct_max_dofs: direct solver by default up to this size */
   PetscReal  done_time, done_step_time, done_dt;
   PetscBool  trial;     /* X holds an unconverged trial state (Xold the last converged one) */
   PetscBool  in_output; /* inside a frame: a failure there leaves the output unusable */
@@ -116,7 +118,46 @@ static PetscErrorCode SetUpSolver(Driver *d)
   IS  is_u, is_theta;
 
   PetscFunctionBeginUser;
+  d->rtol               = 1e-9;
+  d->atol_rel           = 1e-8;
+  d->cutback            = 0.25;
+  d->growth             = 1.5;
+  d->easy_its           = 5;
+  d->max_contact_its    = 8;
+  d->sync_interval      = 1.0;
+  d->direct_max         = 20000;
+  d->debug_diverge_step = 0;
+  PetscOptionsBegin(d->comm, NULL, "thermoslide increment control", NULL);
+  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_rtol", "per-field Newton residual reduction", 0, PETSC_TRUE, 1, PETSC_TRUE, &d->rtol));
+  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_atol_rel", "per-field residual floor relative to the job's largest", 0, PETSC_TRUE, 1,
+                           PETSC_TRUE, &d->atol_rel));
+  PetscCall(
+      TslOptionsReal(PetscOptionsObject, "-tsl_cutback", "increment factor after a failed increment", 0, PETSC_TRUE, 1, PETSC_TRUE, &d->cutback));
+  PetscCall(
+      TslOptionsReal(PetscOptionsObject, "-tsl_growth", "increment factor after an easy increment", 1, PETSC_FALSE, 100, PETSC_FALSE, &d->growth));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_easy_its", "Newton iterations that count as easy", 0, 1000, &d->easy_its));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_contact_max_its", "solves of one increment while contact pairing or multipliers change", 1, 1000,
+                          &d->max_contact_its));
+  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_output_sync", "seconds between syncs of the .h5 and .xmf.part (0: every frame)", 0, PETSC_FALSE,
+                           86400, PETSC_FALSE, &d->sync_interval));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_direct_max_dofs", "models up to this many unknowns get a direct solver by default", 0,
+                          PETSC_MAX_INT, &d->direct_max));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", 0,
+                          PETSC_MAX_INT, &d->debug_diverge_step));
+  PetscOptionsEnd();
   PetscCall(SetDefaultOption(d, "-snes_linesearch_type", "basic"));
+  {
+    /* a small model: a sparse direct solve costs less than building and applying the AMG hierarchies,
+     * whose set-up dominates the increments of a few-hundred-unknown contact deck */
+    Vec      X;
+    PetscInt N;
+    PetscCall(TslProblemGetSolution(d->prob, &X));
+    PetscCall(VecGetSize(X, &N));
+    if (N <= d->direct_max) {
+      PetscCall(SetDefaultOption(d, "-pc_type", "lu"));
+      PetscCall(SetDefaultOption(d, "-pc_factor_mat_solver_type", "mumps"));
+    }
+  }
   PetscCall(SetDefaultOption(d, "-ksp_type", "fgmres"));
   PetscCall(SetDefaultOption(d, "-ksp_rtol", "1e-10"));
   PetscCall(SetDefaultOption(d, "-ksp_max_it", "1000"));
@@ -160,27 +201,6 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(PCFieldSplitSetIS(pc, "u", is_u));
   PetscCall(SNESSetFromOptions(d->snes));
 
-  d->rtol               = 1e-9;
-  d->atol_rel           = 1e-8;
-  d->cutback            = 0.25;
-  d->growth             = 1.5;
-  d->easy_its           = 5;
-  d->max_contact_its    = 8;
-  d->debug_diverge_step = 0;
-  PetscOptionsBegin(d->comm, NULL, "thermoslide increment control", NULL);
-  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_rtol", "per-field Newton residual reduction", 0, PETSC_TRUE, 1, PETSC_TRUE, &d->rtol));
-  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_atol_rel", "per-field residual floor relative to the job's largest", 0, PETSC_TRUE, 1,
-                           PETSC_TRUE, &d->atol_rel));
-  PetscCall(
-      TslOptionsReal(PetscOptionsObject, "-tsl_cutback", "increment factor after a failed increment", 0, PETSC_TRUE, 1, PETSC_TRUE, &d->cutback));
-  PetscCall(
-      TslOptionsReal(PetscOptionsObject, "-tsl_growth", "increment factor after an easy increment", 1, PETSC_FALSE, 100, PETSC_FALSE, &d->growth));
-  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_easy_its", "Newton iterations that count as easy", 0, 1000, &d->easy_its));
-  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_contact_max_its", "solves of one increment while contact pairing or multipliers change", 1, 1000,
-                          &d->max_contact_its));
-  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", 0,
-                          PETSC_MAX_INT, &d->debug_diverge_step));
-  PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -192,6 +212,7 @@ static PetscErrorCode SetUpOutput(Driver *d, const char *dir, const char *jobnam
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
   PetscCall(TslOutputCreate(d->comm, dir, jobname, &d->out));
+  PetscCall(TslOutputSetSyncInterval(d->out, d->sync_interval));
   PetscCall(PetscMalloc3(m->nelem, &xtype, m->elem_ptr[m->nelem], &conn, m->nelem + 1, &ptr));
   /* cells are the geometry families' nodes (an element's extra reference node is not part of its cell) */
   ptr[0] = 0;

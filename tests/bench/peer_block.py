@@ -16,10 +16,15 @@ options prefix -peer_ (splits: -peer_fieldsplit_T_..., -peer_fieldsplit_u_...), 
 
 usage: [mpirun -n P] /usr/bin/python3 peer_block.py N OUTDIR [--no-output] [--compare THERMOSLIDE.h5]
                                                              [-peer_... PETSc options]
-Prints a timing table and a final machine-readable line starting with "PEER ". JIT (FFCx/CFFI) time is
-reported separately and is not in "total"; run once beforehand (any N) to fill the FFCx cache
-(~/.cache/fenics) so that it is only a cache load. --compare matches the nodes of a thermoslide result
-(outdir/deck.h5 of the same N) by coordinates and prints the relative differences of U and NT.
+Writes OUTDIR/peer_blockN.{xdmf,h5} (U and NT, dolfinx.io.XDMFFile) unless --no-output. Prints (rank 0) a
+timing table (wall per phase, synchronized by barriers, and CPU time per phase, max over ranks: on a
+loaded machine the CPU column is the steadier one), the KSP iterations, dofs, peak RSS (ru_maxrss, max and
+sum over ranks), check values (theta and u at the node (2,1,1), max theta, max |u|) and a final
+machine-readable line "PEER key=value ...". JIT (FFCx/CFFI) time is reported separately and is not in
+"total" (which does include the python/dolfinx import, also reported separately); run once beforehand
+(any N, same ranks or not) to fill the FFCx cache (~/.cache/fenics or $XDG_CACHE_HOME/fenics) so that the
+JIT row is only a cache load. --compare matches the nodes of a thermoslide result of the same N
+(outdir/deck.h5) by coordinates and prints max|difference|/max|value| for NT and U (needs h5py).
 """
 import os
 import sys
@@ -59,9 +64,7 @@ from dolfinx.mesh import CellType, GhostMode  # noqa: E402
 
 comm = MPI.COMM_WORLD
 rank = comm.rank
-times = {}
-
-
+times = {}  # wall time per phase
 cpu = {}  # CPU time of this process per phase (a check on a loaded machine, where wall times are noisy)
 
 
@@ -107,8 +110,8 @@ DEFAULTS = [
     ("fieldsplit_u_pc_type", "gamg"),
     ("fieldsplit_u_pc_gamg_type", "agg"),
     ("fieldsplit_u_pc_gamg_agg_nsmooths", "1"),
-    ("fieldsplit_u_pc_gamg_threshold", "0.01"),
-    ("fieldsplit_u_pc_gamg_square_graph", "0"),
+    ("fieldsplit_u_pc_gamg_threshold", "0.02"),
+    ("fieldsplit_u_pc_gamg_square_graph", "1"),
     ("fieldsplit_u_mg_levels_ksp_type", "chebyshev"),
     ("fieldsplit_u_mg_levels_pc_type", "jacobi"),
     ("fieldsplit_u_mg_levels_ksp_max_it", "2"),
@@ -134,6 +137,8 @@ QDEG = 2  # 2x2x2 Gauss points on the hexahedra, 2x2 on faces: C3D8T's full inte
 
 with Phase("jit"):
     (ufcx_element, ufcx_dofmap), module, _ = dolfinx.jit.ffcx_jit(comm, ME)
+    if WRITE:
+        dolfinx.jit.ffcx_jit(comm, Ue)  # the vector Q1 space u is written from (created in "output")
 
 with Phase("fe_setup"):
     # the function space from the compiled element (what dolfinx.fem.FunctionSpace does, minus its JIT)
@@ -153,52 +158,56 @@ with Phase("fe_setup"):
     order = np.argsort(fac)
     mt = dolfinx.mesh.meshtags(mesh, fdim, fac[order], tag[order])
 
-    # collapsed sub-spaces and their dofs in W
-    V_u, map_u = W.sub(0).collapse()
+    # Sub-spaces collapsed: temperature and the x component of u (scalar collapses are cheap; dolfinx 0.5's
+    # collapse of the blocked u sub-space W.sub(0) costs 0.12 s at N=16 but several s at N=32, superlinear:
+    # FEniCS/dolfinx#3282, so it is not used here).
     V_T, map_T = W.sub(1).collapse()
-    u_bc = dolfinx.fem.Function(V_u)  # u = 0
-    T_bc = dolfinx.fem.Function(V_T)
-    T_bc.x.array[:] = 100.0
-    dofs_u = dolfinx.fem.locate_dofs_topological((W.sub(0), V_u), fdim, f_x0)
-    dofs_T = dolfinx.fem.locate_dofs_topological((W.sub(1), V_T), fdim, f_x0)
-    bcs = [dolfinx.fem.dirichletbc(u_bc, dofs_u, W.sub(0)), dolfinx.fem.dirichletbc(T_bc, dofs_T, W.sub(1))]
+    V_x, map_x = W.sub(0).sub(0).collapse()
+    # Dirichlet conditions on x = 0: theta = 100, u = 0 (per component, constant values)
+    bcs = [dolfinx.fem.dirichletbc(PETSc.ScalarType(100.0), dolfinx.fem.locate_dofs_topological(W.sub(1), fdim, f_x0),
+                                   W.sub(1))]
+    for i in range(3):
+        Wi = W.sub(0).sub(i)
+        bcs.append(dolfinx.fem.dirichletbc(PETSc.ScalarType(0.0), dolfinx.fem.locate_dofs_topological(Wi, fdim, f_x0),
+                                           Wi))
 
-    # field index sets (global numbering of W, owned dofs only). PCFIELDSPLIT wants them sorted; dolfinx
-    # numbers the 3 components of a node consecutively in W, so sorting the nodes keeps u node-interleaved
-    # (x,y,z per node) and the u split has block size 3.
+    # Field index sets (global numbering of W, owned dofs only; PCFIELDSPLIT wants them sorted). dolfinx
+    # numbers the 4 dofs of a node u_x, u_y, u_z, theta consecutively in W, so the sorted u dofs are
+    # node-interleaved (x,y,z per node) and the u split has block size 3.
     imap = W.dofmap.index_map
     assert W.dofmap.index_map_bs == 1
     n_own, first = imap.size_local, imap.local_range[0]
-    nnod_u = V_u.dofmap.index_map.size_local
-    nloc_u, nloc_T = 3 * nnod_u, V_T.dofmap.index_map.size_local
-    own_u = np.asarray(map_u[:nloc_u]).reshape(-1, 3)
-    node_order = np.argsort(own_u[:, 0])
-    own_u = own_u[node_order]
-    own_T = np.sort(np.asarray(map_T[:nloc_T]))
-    assert np.all(np.diff(own_u, axis=1) == 1), "u components of a node not consecutive in W"
-    assert own_u.size + own_T.size == n_own and own_u.max(initial=-1) < n_own and own_T.max(initial=-1) < n_own
-    own_u = own_u.ravel()
+    own_T = np.sort(np.asarray(map_T[:V_T.dofmap.index_map.size_local]))
+    is_theta = np.zeros(n_own, dtype=bool)
+    is_theta[own_T] = True
+    own_u = np.flatnonzero(~is_theta).astype(np.int64)
+    nloc_u = own_u.size
+    own_x = np.asarray(map_x[:V_x.dofmap.index_map.size_local])
+    x_order = np.argsort(own_x)
+    assert nloc_u == 3 * own_x.size and np.array_equal(own_x[x_order], own_u[0::3]), "u dofs not (x,y,z) per node"
+    assert np.all(own_u[1::3] == own_u[0::3] + 1) and np.all(own_u[2::3] == own_u[0::3] + 2)
     is_u = PETSc.IS().createGeneral((first + own_u).astype(PETSc.IntType), comm=comm)
     is_u.setBlockSize(3)
     is_T = PETSc.IS().createGeneral((first + own_T).astype(PETSc.IntType), comm=comm)
 
     # near null space of the u block: the 6 rigid body modes at the nodes, in is_u's order
-    xyz = V_u.tabulate_dof_coordinates()[:nnod_u][node_order]
+    xyz = V_x.tabulate_dof_coordinates()[:own_x.size][x_order]
     modes = []
     for m in range(6):
-        vec = PETSc.Vec().createMPI((nloc_u, PETSc.DECIDE), bsize=3, comm=comm)
-        a = vec.getArray().reshape(-1, 3)  # a view
-        a[:] = 0.0
+        blk = np.zeros((xyz.shape[0], 3), dtype=PETSc.ScalarType)
         if m < 3:
-            a[:, m] = 1.0
-        elif m == 3:
-            a[:, 0], a[:, 1] = -xyz[:, 1], xyz[:, 0]
+            blk[:, m] = 1.0  # translations
+        elif m == 3:  # rotations about z, x, y
+            blk[:, 0], blk[:, 1] = -xyz[:, 1], xyz[:, 0]
         elif m == 4:
-            a[:, 1], a[:, 2] = -xyz[:, 2], xyz[:, 1]
+            blk[:, 1], blk[:, 2] = -xyz[:, 2], xyz[:, 1]
         else:
-            a[:, 0], a[:, 2] = xyz[:, 2], -xyz[:, 0]
+            blk[:, 0], blk[:, 2] = xyz[:, 2], -xyz[:, 0]
+        vec = PETSc.Vec().createMPI((nloc_u, PETSc.DECIDE), bsize=3, comm=comm)
+        vec.setArray(blk.ravel())
         modes.append(vec)
     dolfinx.la.orthonormalize(modes)
+    assert dolfinx.la.is_orthonormal(modes, eps=1e-10)
     nearnull = PETSc.NullSpace().create(vectors=modes, comm=comm)
     is_u.compose("nearnullspace", nearnull)  # PCFIELDSPLIT puts it on the u sub-matrix
 
@@ -217,7 +226,8 @@ with Phase("fe_setup"):
     md = {"quadrature_degree": QDEG}
     dx = ufl.Measure("dx", domain=mesh, metadata=md)
     ds = ufl.Measure("ds", domain=mesh, subdomain_data=mt, metadata=md)
-    a_ufl = (ufl.inner(sigma, ufl.sym(ufl.grad(v))) + k * ufl.inner(ufl.grad(T), ufl.grad(s))) * dx + h * T * s * ds(1)
+    a_ufl = ((ufl.inner(sigma, ufl.sym(ufl.grad(v))) + k * ufl.inner(ufl.grad(T), ufl.grad(s))) * dx
+             + h * T * s * ds(1))
     L_ufl = -p * ufl.inner(n, v) * ds(2) + h * T_sink * s * ds(1)
 
 with Phase("jit"):
@@ -259,8 +269,11 @@ rnorm = ksp.getResidualNorm()
 # ---- output -----------------------------------------------------------------------------------------
 with Phase("output"):
     if WRITE:
-        uh, Th = w.sub(0).collapse(), w.sub(1).collapse()
-        uh.name, Th.name = "U", "NT"
+        # u: interpolated (an exact copy, same nodes) into a vector Q1 space; theta: the collapse map
+        uh = dolfinx.fem.Function(dolfinx.fem.FunctionSpace(mesh, Ue), name="U")
+        uh.interpolate(w.sub(0))
+        Th = dolfinx.fem.Function(V_T, name="NT")
+        Th.x.array[:] = w.x.array[map_T]
         if rank == 0:
             os.makedirs(OUTDIR, exist_ok=True)
         comm.Barrier()
@@ -270,15 +283,12 @@ with Phase("output"):
             xf.write_function(Th)
 
 T_END = time.perf_counter()
-if not WRITE:
-    uh, Th = w.sub(0).collapse(), w.sub(1).collapse()  # for the check values only
 
 # ---- check values: theta and u at the corner node (2,1,1), extremes ----------------------------------
-n_own_nodes = V_T.dofmap.index_map.size_local
-xT = V_T.tabulate_dof_coordinates()[:n_own_nodes]
-uT = Th.x.array[:n_own_nodes]
-xU = V_u.tabulate_dof_coordinates()[:V_u.dofmap.index_map.size_local]
-uU = uh.x.array[:3 * len(xU)].reshape(-1, 3)
+xT = V_T.tabulate_dof_coordinates()[:V_T.dofmap.index_map.size_local]
+uT = w.x.array[np.asarray(map_T[:xT.shape[0]])]
+xU = V_x.tabulate_dof_coordinates()[:own_x.size]
+uU = np.stack([w.x.array[own_x + i] for i in range(3)], axis=1)
 probe = None
 iT = np.flatnonzero(np.linalg.norm(xT - [2.0, 1.0, 1.0], axis=1) < 1e-10)
 iU = np.flatnonzero(np.linalg.norm(xU - [2.0, 1.0, 1.0], axis=1) < 1e-10)
@@ -320,7 +330,8 @@ if COMPARE:
 
 if rank == 0:
     total = T_END - T_START - times["jit"]
-    rows = [("import (python, dolfinx, petsc4py)", times["import"]), ("mesh (create_box + distribute)", times["mesh"]),
+    rows = [("import (python, dolfinx, petsc4py)", times["import"]),
+            ("mesh (create_box + distribute)", times["mesh"]),
             ("fe setup (dofmap, BCs, ISs, near null space)", times["fe_setup"]),
             ("assembly (matrix + rhs, lifting, BCs)", times["assembly"]),
             ("solver setup (KSP/PC, AMG hierarchies)", times["solver_setup"]), ("solve (KSP)", times["solve"]),
@@ -331,20 +342,22 @@ if rank == 0:
     print("KSP %s/PC %s: %d iterations, reason %d, final residual %.3e" %
           (ksp.getType(), pc.getType(), its, reason, rnorm))
     print("  %-48s %9s   %s" % ("phase", "wall", "cpu (max over ranks)"))
-    for (name, t), key in zip(rows, ["import", "mesh", "fe_setup", "assembly", "solver_setup", "solve", "output", None,
-                                     "jit"]):
-        print("  %-48s %9.3f s %s" % (name, t, " %8.3f s" % cpu_max[key] if key in cpu_max else ""))
+    for (name, t), ph in zip(rows, ["import", "mesh", "fe_setup", "assembly", "solver_setup", "solve", "output", None,
+                                    "jit"]):
+        print("  %-48s %9.3f s %s" % (name, t, " %8.3f s" % cpu_max[ph] if ph in cpu_max else ""))
     print("  %-48s %9.1f MB max/rank, %.1f MB sum" % ("peak RSS", rss_max, rss_sum))
     print("check: theta(2,1,1) %.10g  u(2,1,1) %.10g %.10g %.10g  max theta %.10g  max|u| %.10g" %
           (probe[0], probe[1], probe[2], probe[3], max_T, max_u))
     if cmp_line:
         print(cmp_line)
     print("PEER n=%d ranks=%d dofs=%d its=%d reason=%d import=%.4f mesh=%.4f fe_setup=%.4f jit=%.4f assembly=%.4f "
-          "solver_setup=%.4f solve=%.4f output=%.4f total=%.4f rss_max_mb=%.1f rss_sum_mb=%.1f theta_211=%.10g "
-          "uy_211=%.10g max_theta=%.10g max_u=%.10g cpu_assembly=%.4f cpu_solver_setup=%.4f cpu_solve=%.4f" %
+          "solver_setup=%.4f solve=%.4f output=%.4f total=%.4f total_excl_import=%.4f rss_max_mb=%.1f "
+          "rss_sum_mb=%.1f theta_211=%.10g uy_211=%.10g max_theta=%.10g max_u=%.10g cpu_assembly=%.4f "
+          "cpu_solver_setup=%.4f cpu_solve=%.4f" %
           (N, comm.size, ndofs, its, reason, times["import"], times["mesh"], times["fe_setup"], times["jit"],
-           times["assembly"], times["solver_setup"], times["solve"], times["output"], total, rss_max, rss_sum,
-           probe[0], probe[2], max_T, max_u, cpu_max["assembly"], cpu_max["solver_setup"], cpu_max["solve"]))
+           times["assembly"], times["solver_setup"], times["solve"], times["output"], total, total - times["import"],
+           rss_max, rss_sum, probe[0], probe[2], max_T, max_u, cpu_max["assembly"], cpu_max["solver_setup"],
+           cpu_max["solve"]))
     sys.stdout.flush()
 if reason < 0:
     sys.exit(1)
