@@ -60,3 +60,11 @@ PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobn
 PetscErrorCode TslHistoryAppend(TslHistory hist, const PetscReal vals[]);
 PetscErrorCode TslHistoryFinalize(TslHistory hist, const char *tag); /* as TslOutputFinalize */
 PetscErrorCode TslHistoryDestroy(TslHistory *hist);
+
+/* Printed tables (*NODE PRINT, *EL PRINT) in rank order with bounded memory: rank 0 prints its own lines
+ * as they come, then asks each rank in turn, which sends its lines in chunks of at most 64 kB. No rank
+ * ever holds more than a chunk of text, whatever the size of the table. emit() is called once on every
+ * rank and writes its lines with TslPrintLine; a failure on any rank is raised on all (collective). */
+typedef struct _p_TslPrintSink *TslPrintSink;
+PetscErrorCode TslPrintOrdered(MPI_Comm comm, PetscErrorCode (*emit)(TslPrintSink sink, void *ctx), void *ctx);
+PetscErrorCode TslPrintLine(TslPrintSink sink, const char *fmt, ...) PETSC_ATTRIBUTE_FORMAT(2, 3);

@@ -1,0 +1,85 @@
+#!/bin/bash
+# thermoslide against the code a user would pick instead, in one run on this machine: the steady coupled
+# C3D8T block of make_block.py N (2N x N x N hexahedra, 4 dofs per node) solved by
+#   - thermoslide (its defaults; 1 and 2 ranks),
+#   - a FEniCSx peer (peer_block.py: the same discretisation, one monolithic system, FGMRES with a
+#     multiplicative field split, BoomerAMG on the temperature, GAMG with the rigid-body near-null space on
+#     the displacement; Debian's python3-dolfinx, 1 and 2 ranks),
+#   - CalculiX (ccx 2.20, C3D8 + *HEAT TRANSFER-free coupled steady step, its default direct solver, one
+#     thread), up to CCX_MAX_N (default 24; above, its memory and time leave the machine's budget).
+# Per run: wall time split into read + partition (peer: mesh), set-up (peer: fe set-up), assembly, solver
+# set-up, linear solve, output; linear iterations; peak memory per rank. Then the ratios. The peer's total
+# leaves out its Python imports (0.6 s) and JIT (cached: a warm-up run fills the cache). Figures only,
+# never pass/fail (ctest -L bench). The peer's solution is compared with thermoslide's at each size
+# (printed max relative difference).
+# usage: bench_peer.sh THERMOSLIDE [OUTDIR] [sizes...]      (default sizes: 16 32 50: 38 k, 283 k, 1.05 M dofs)
+set -u
+exe=$1 out=${2:-$PWD/bench-peer-out}
+shift 2 || shift $#
+sizes=${*:-16 32 50}
+here=$(cd "$(dirname "$0")" && pwd)
+ccx_max=${CCX_MAX_N:-24}
+mkdir -p "$out"
+peer_ok=1
+/usr/bin/python3 -c "import dolfinx" 2> /dev/null || { peer_ok=0; echo "python3-dolfinx not installed (apt-get install python3-dolfinx): peer runs skipped"; }
+[ $peer_ok = 1 ] && /usr/bin/python3 "$here/peer_block.py" 2 "$out/warm" --no-output > /dev/null 2>&1
+
+field() { echo "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
+printf "\n%-4s %9s %-5s %-11s %7s %8s %7s %8s %8s %8s %7s %5s %9s\n" N dofs ranks code total read+part set-up assembly pc_setup solve output its mem_MB
+declare -A T
+for n in $sizes; do
+  deck=$out/block$n.inp
+  /usr/bin/python3 "$here/make_block.py" "$n" "$deck"
+  dofs=$(( (2*n+1)*(n+1)*(n+1)*4 ))
+  for np in 1 2; do
+    log=$out/block$n.np$np.log
+    mpirun -n $np "$exe" "$deck" -o "$out/ts$n.np$np" > "$log" 2>&1 || { echo "thermoslide failed: $log"; tail -3 "$log"; continue; }
+    w=$(grep "thermoslide: wall time" "$log" | sed 's/[:,;]/ /g')
+    tot=$(echo "$w" | awk '{print $4}')
+    rp=$(echo "$w" | awk '{for(i=1;i<=NF;i++){if($i=="read")r=$(i+1);if($i=="partition")p=$(i+1)}; printf "%.3g", r+p}')
+    get() { echo "$w" | awk -v k="$1" '{for(i=1;i<=NF;i++) if($i==k) {print $(i+1); exit}}'; }
+    su=$(get set-up) as=$(get assembly) ps=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="solver" && $(i+1)=="set-up") print $(i+2)}')
+    ls=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="linear" && $(i+1)=="solve") print $(i+2)}') op=$(get output)
+    mem=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="memory") print $(i+1)}')
+    its=$(grep -o "newton [0-9]*  linear [0-9]*" "$log" | tail -1 | awk '{print $4}')
+    printf "%-4s %9d %-5s %-11s %7s %8s %7s %8s %8s %8s %7s %5s %9s\n" "$n" "$dofs" "$np" thermoslide "$tot" "$rp" "$su" "$as" "$ps" "$ls" "$op" "$its" "$mem"
+    T[ts,$n,$np]=$tot T[tsmem,$n,$np]=$mem
+    if [ $peer_ok = 1 ]; then
+      cmp=""
+      [ $np = 1 ] && cmp="--compare $out/ts$n.np1/block$n.h5"
+      plog=$out/peer$n.np$np.log
+      if mpirun -n $np /usr/bin/python3 "$here/peer_block.py" "$n" "$out/peer$n.np$np" $cmp > "$plog" 2>&1; then
+        p=$(grep "^PEER " "$plog")
+        printf "%-4s %9d %-5s %-11s %7.3g %8.3g %7.3g %8.3g %8.3g %8.3g %7.3g %5s %9.0f\n" "$n" "$dofs" "$np" FEniCSx "$(field "$p" total_excl_import)" \
+          "$(field "$p" mesh)" "$(field "$p" fe_setup)" "$(field "$p" assembly)" "$(field "$p" solver_setup)" "$(field "$p" solve)" "$(field "$p" output)" \
+          "$(field "$p" its)" "$(field "$p" rss_max_mb)"
+        T[peer,$n,$np]=$(field "$p" total_excl_import) T[peermem,$n,$np]=$(field "$p" rss_max_mb)
+        [ $np = 1 ] && grep -i "compare\|differ" "$plog" | head -2 | sed 's/^/       /'
+      else
+        echo "peer failed: $plog"; tail -3 "$plog"
+      fi
+    fi
+  done
+  if command -v ccx > /dev/null && [ "$n" -le "$ccx_max" ]; then
+    /usr/bin/python3 "$here/make_block.py" "$n" "$out/ccx$n.inp" C3D8
+    if (cd "$out" && OMP_NUM_THREADS=1 /usr/bin/time -f "%e %M" -o ccx$n.time ccx -i ccx$n > ccx$n.log 2>&1); then
+      read -r t rss < "$out/ccx$n.time"
+      printf "%-4s %9d %-5s %-11s %7s %8s %7s %8s %8s %8s %7s %5s %9d\n" "$n" "$dofs" "1 thr" CalculiX "$t" - - - - - - direct $(( rss / 1024 ))
+      T[ccx,$n]=$t T[ccxmem,$n]=$(( rss / 1024 ))
+    else
+      echo "ccx failed: $out/ccx$n.log"
+    fi
+  fi
+done
+echo
+echo "ratios (other code's time / thermoslide's time; memory: thermoslide's / other's, per rank):"
+for n in $sizes; do
+  for np in 1 2; do
+    [ -n "${T[ts,$n,$np]:-}" ] || continue
+    line="N=$n ranks=$np:"
+    [ -n "${T[peer,$n,$np]:-}" ] && line="$line FEniCSx/thermoslide time $(awk -v a="${T[peer,$n,$np]}" -v b="${T[ts,$n,$np]}" 'BEGIN{printf "%.2f", a/b}'), memory $(awk -v a="${T[tsmem,$n,$np]}" -v b="${T[peermem,$n,$np]}" 'BEGIN{printf "%.2f", a/b}')"
+    [ $np = 1 ] && [ -n "${T[ccx,$n]:-}" ] && line="$line; CalculiX/thermoslide time $(awk -v a="${T[ccx,$n]}" -v b="${T[ts,$n,1]}" 'BEGIN{printf "%.1f", a/b}'), memory $(awk -v a="${T[tsmem,$n,1]}" -v b="${T[ccxmem,$n]}" 'BEGIN{printf "%.2f", a/b}')"
+    [ $np = 2 ] && [ -n "${T[ts,$n,1]:-}" ] && line="$line; thermoslide 2-rank speed-up $(awk -v a="${T[ts,$n,1]}" -v b="${T[ts,$n,2]}" 'BEGIN{printf "%.2f", a/b}')"
+    echo "  $line"
+  done
+done
