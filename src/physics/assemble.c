@@ -112,8 +112,9 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
   PetscInt bidx[TSL_MAX_ELEM_NODES + 1];
 
   PetscFunctionBeginUser;
-  if (mode == ASM_JACOBIAN && K && FreeNodeBlocks(p, n, ld, TSL_MAX_ELEM_NODES + 1, bidx)) {
-    PetscCall(MatSetValuesBlockedLocal(A, n / p->ndof, bidx, n / p->ndof, bidx, K, ADD_VALUES));
+  if (((mode == ASM_JACOBIAN && K) || mode == ASM_PATTERN) && FreeNodeBlocks(p, n, ld, TSL_MAX_ELEM_NODES + 1, bidx)) {
+    if (mode == ASM_PATTERN) PetscCall(MatAdd(p, mode, A, n, ld, n, ld, NULL)); /* every node pair once */
+    else PetscCall(MatSetValuesBlockedLocal(A, n / p->ndof, bidx, n / p->ndof, bidx, K, ADD_VALUES));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (PetscInt r = 0; r < n; r++) {
@@ -544,6 +545,29 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   PetscCall(MatSetOption(J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
   PetscCall(MatDestroy(&p->J));
   p->J = J;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A step whose constraints leave every row as it was keeps the matrix (its pattern depends on the rows'
+ * kinds and the contact pairing only; the contact search rebuilds it itself when the pairing changes).
+ * Collective: rebuilt when any rank's rows changed. */
+PetscErrorCode TslProblemPreallocateIfChanged(TslProblem p)
+{
+  const PetscInt n = p->nn * p->ndof;
+  PetscInt       changed = 0, any;
+
+  PetscFunctionBeginUser;
+  if (!p->pattern_rows) {
+    PetscCall(PetscMalloc1(n, &p->pattern_rows));
+    changed = 1;
+  }
+  for (PetscInt d = 0; d < n; d++) {
+    char kind = p->pinned[d] ? 'p' : p->bc[d].active ? 'b' : p->dep[d] >= 0 ? 'e' : 'f';
+    if (p->pattern_rows[d] != kind) changed = 1, p->pattern_rows[d] = kind;
+  }
+  PetscCall(MPIU_Allreduce(&changed, &any, 1, MPIU_INT, MPI_MAX, p->comm));
+  if (any || !p->J) PetscCall(TslProblemPreallocate(p));
+  else PetscCall(PetscInfo(NULL, "constraints unchanged: the Jacobian's pattern is kept\n"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

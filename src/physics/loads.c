@@ -285,7 +285,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
   PetscCall(CompactFaces(p));
   PetscCall(MarkActiveAmplitudes(p));
   p->step_start_ttot = p->ttot;
-  PetscCall(TslProblemPreallocate(p));
+  PetscCall(TslProblemPreallocateIfChanged(p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

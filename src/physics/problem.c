@@ -356,6 +356,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
     for (PetscInt q = 0; q < p->m->nequation; q++) PetscCall(PetscFree(p->eq_ldof[q]));
   PetscCall(PetscFree(p->eq_ldof));
   PetscCall(PetscFree(p->dep));
+  PetscCall(PetscFree(p->pattern_rows));
   PetscCall(TslProblemContactDestroy(p));
   PetscCall(TslModelDestroy(&p->m));
   PetscCall(PetscFree(p));

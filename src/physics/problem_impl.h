@@ -96,6 +96,7 @@ struct _p_TslProblem {
   TslContactNode    *cnode;
   PetscReal          augment_tol;
   PetscBool          pattern_stale; /* a rollback changed the pairing: the matrix pattern is the failed attempt's */
+  char              *pattern_rows;  /* [nn*ndof] kind of each row (free, prescribed, pinned, eliminated) when J's pattern was built */
 
   /* failures decided by all ranks (sys.h) */
   TslInject inject;
@@ -147,4 +148,5 @@ PetscInt       TslProblemDofSlot(TslProblem p, PetscInt dof);
 PetscInt       TslProblemNodeDofSlot(TslProblem p, PetscInt l, PetscInt dof);
 PetscErrorCode TslProblemLocalNode(TslProblem p, PetscInt gnum, PetscInt *lnode);
 PetscErrorCode TslProblemPreallocate(TslProblem p);
+PetscErrorCode TslProblemPreallocateIfChanged(TslProblem p); /* TslProblemPreallocate unless every row kind is as it was */
 PetscErrorCode TslProblemCheckElements(TslProblem p);
