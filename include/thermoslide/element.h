@@ -171,7 +171,7 @@ typedef enum {
   TSL_FACE_PRESSURE = 0, /* value: pressure (force/area, positive pushing into the body) */
   TSL_FACE_FLUX,         /* value: heat flux per area into the body */
   TSL_FACE_FILM,         /* value: film coefficient h, value2: sink temperature; q_out = h (theta - sink) */
-  TSL_BODY_FLUX          /* value: heat per volume into the body (face ignored) */
+  TSL_BODY_FLUX          /* value: heat per volume into the body (face ignored); consistent, int N_a q dV */
 } TslFaceLoadKind;
 
 /* Adds the face load's contribution to the residual R (as an internal-minus-external residual, i.e.

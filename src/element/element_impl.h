@@ -53,7 +53,7 @@ void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp
  *                values P[] (NULL: displacement formulation)
  *   hourglass    stabilisation added to a reduced-integration element (NULL: none); adds to R and K
  *                (may be NULL) and returns the stabilisation energy
- *   nodal_volume the lumping weights V_a (capacity and mass)
+ *   nodal_volume the lumping weights V_a (capacity and mass only; the body flux is consistent, kernels.c)
  *   pressure_face_rule, thermal_face_rule
  *                the points of a face integral of a pressure, and of a surface flux or film: the face
  *                family's own shape functions with its as_face rule (exact for N_a N_b, the film), or

@@ -15,7 +15,9 @@
  * formulation (the modified rows too): lumped on the linear sub-faces of a tet10 face they cost C3D10MT
  * its order at a film or flux boundary (L2 rate 1.4 instead of 3, tests/element/face_convergence.c),
  * since the composite linear functions are not the quadratic face's and the film matrix int h N_a N_b dA
- * is of degree 4; and no contact condition asks positive nodal weights of a heat load.
+ * is of degree 4; and no contact condition asks positive nodal weights of a heat load. The body flux is
+ * not lumped either: the kernel integrates it with the family's full rule and shape functions in every
+ * formulation (kernels.c, BodyFlux), so the lumping weights here are the capacity's and the mass's only.
  */
 #include "element_impl.h"
 

@@ -424,18 +424,26 @@ static void FacePointEvaluate(const TslElementInput *in, PetscInt face, const Ts
   fp->dA = PetscSqrtReal(fp->ndA[0] * fp->ndA[0] + fp->ndA[1] * fp->ndA[1] + fp->ndA[2] * fp->ndA[2]);
 }
 
-/* Body heat source, lumped like the capacity (R_theta(a) -= q V_a, positive weights for every family);
- * returns int q dV. */
+/* Body heat source, consistent: R_theta(a) -= int N_a q dV with the family's full rule (the conduction's
+ * points), in every formulation; returns int q dV = sum_a of the loads, since sum_a N_a = 1. Not the
+ * capacity's lumping weights: HRZ (quad8) and the linear sub-elements (tri6, tet10) are not the
+ * integrals of the quadratic N_a, and with them the second-order types fell to L2 rate 2 and H1 rate 1
+ * under a source (tests/element/body_convergence.c). A uniform q gives zero (tri6) or negative (quad8,
+ * tet10) corner loads; no condition asks positive weights of a heat load (the capacity's must be, and
+ * stay lumped). Nothing is added to R for an inverted element (TslElementInternal reports it). */
 static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
 {
-  const PetscInt ndof = in->type->ndof, th = ndof - 1;
-  PetscReal      heat = 0, vol[TSL_MAX_ELEM_NODES];
+  const TslGeometry *g    = in->type->geom;
+  const PetscInt     ndof = in->type->ndof, th = ndof - 1;
+  PetscReal          heat = 0, load[TSL_MAX_ELEM_NODES] = {0};
+  TslElementPoint    p;
 
-  if (!in->type->form->nodal_volume(in, vol)) return 0;
-  for (PetscInt a = 0; a < in->type->geom->nnode; a++) {
-    R[ndof * a + th] -= q * vol[a];
-    heat += q * vol[a];
+  for (PetscInt k = 0; k < g->full.n; k++) {
+    if (!TslElementPointEvaluate(in->type, in->sec, in->x, g->full.xi[k], g->full.w[k], &p)) return 0;
+    for (PetscInt a = 0; a < g->nnode; a++) load[a] += p.N[a] * q * p.dV;
+    heat += q * p.dV;
   }
+  for (PetscInt a = 0; a < g->nnode; a++) R[ndof * a + th] -= load[a];
   return heat;
 }
 
@@ -444,10 +452,10 @@ static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
  *   flux q into the body:                       R_theta(a) -= int N_a q dA,            heat = int q dA
  *   film h, sink:                               R_theta(a) += int N_a h (theta - sink) dA,
  *                                               K_ab       += int h N_a N_b dA,        heat = -int h (theta - sink) dA
- *   body flux q per volume:                     R_theta(a) -= q V_a (lumped),          heat = int q dV
+ *   body flux q per volume:                     R_theta(a) -= int N_a q dV,            heat = int q dV
  * The points are the formulation's face rules: for flux and film the face family's own shape functions
  * with a rule exact for h N_a N_b; for pressure the same, or the linear sub-faces of a modified element,
- * whose nodal weights are all positive. */
+ * whose nodal weights are all positive. The body flux takes the family's full rule, as conduction does. */
 PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],
                                   PetscReal K[], PetscReal *heat)
 {

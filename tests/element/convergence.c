@@ -5,7 +5,7 @@
  *   div sigma + b = 0,  sigma = D (eps - alpha (theta - theta_init) m),   -div(k grad theta) = q
  * are derived by hand for each kinematics (plane strain, plane stress with its condensed D, axisymmetric
  * with the hoop terms, 3D) and integrated against the element's shape functions with a high-order rule
- * (F_a = int N_a b dV, Q_a = int N_a q dV; the kernels only lump body heat). The exact solution is
+ * (F_a = int N_a b dV, Q_a = int N_a q dV; the kernels' body flux takes one value per element). The exact solution is
  * prescribed on the whole boundary (row elimination), the coupled system assembled from
  * TslElementInternal and solved by LU on three refinements of a structured mesh of the type: the unit
  * square (axisymmetric: r in [1, 2], z in [0, 1]) or cube. L2 and H1-seminorm errors of u and theta and

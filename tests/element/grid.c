@@ -328,13 +328,26 @@ PetscErrorCode GridAddFaceLoad(Grid *grid, PetscInt d, PetscReal plane, TslFaceL
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Adds the grid's face loads on element e (kernel input in) to Re and Ke (may be NULL); *heat (may be
+PetscErrorCode GridAddBodyFlux(Grid *grid, PetscReal q)
+{
+  PetscFunctionBeginUser;
+  PetscCall(GridAddFaceLoad(grid, -1, 0, TSL_BODY_FLUX, q, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Adds the grid's face and body loads on element e (kernel input in) to Re and Ke (may be NULL); *heat (may be
  * NULL) += their heat. */
 static PetscErrorCode ElementFaceLoads(const Grid *grid, PetscInt e, const TslElementInput *in, PetscReal Re[], PetscReal Ke[], PetscReal *heat)
 {
   PetscFunctionBeginUser;
   for (PetscInt l = 0; l < grid->nload; l++) {
     const GridFaceLoad *ld = &grid->load[l];
+    if (ld->kind == TSL_BODY_FLUX) {
+      PetscReal h;
+      PetscCall(TslElementFaceLoad(in, ld->kind, 0, ld->value, ld->value2, Re, Ke, &h));
+      if (heat) *heat += h;
+      continue;
+    }
     for (PetscInt f = 0; f < grid->type->geom->nface; f++) {
       PetscReal h;
       if (!GridFaceOnPlane(grid, e, f, ld->d, ld->plane)) continue;

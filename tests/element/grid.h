@@ -24,7 +24,8 @@ typedef struct {
 } GridRule;
 
 /* A face load of the kernels (TslElementFaceLoad: kind, value, value2) on every element face lying on
- * the plane x_d = plane; GridAssemble includes it in R and K. */
+ * the plane x_d = plane, or (kind TSL_BODY_FLUX, d and plane unused) a body flux on every element;
+ * GridAssemble includes it in R and K. */
 typedef struct {
   PetscInt        d;
   PetscReal       plane;
@@ -79,10 +80,11 @@ PetscErrorCode GridMinJacobian(const Grid *grid, PetscReal *min_detJ, PetscInt *
 PetscBool GridOnPlane(const Grid *grid, PetscInt a, PetscInt d, PetscReal value);
 PetscBool GridFaceOnPlane(const Grid *grid, PetscInt e, PetscInt f, PetscInt d, PetscReal value);
 
-/* Adds a face load on the plane x_d = plane (at most GRID_MAX_FACE_LOADS). GridFaceHeat sums the heat
- * the grid's thermal face loads add to the body per unit time at u (the kernels' heat: flux in, film
- * -h (theta - sink)). */
+/* Adds a face load on the plane x_d = plane, or a uniform body flux q (heat per volume) on every element
+ * (at most GRID_MAX_FACE_LOADS in all). GridFaceHeat sums the heat the grid's thermal loads add to the
+ * body per unit time at u (the kernels' heat: flux and body flux in, film -h (theta - sink)). */
 PetscErrorCode GridAddFaceLoad(Grid *grid, PetscInt d, PetscReal plane, TslFaceLoadKind kind, PetscReal value, PetscReal value2);
+PetscErrorCode GridAddBodyFlux(Grid *grid, PetscReal q);
 PetscErrorCode GridFaceHeat(const Grid *grid, const PetscReal u[], PetscReal *heat);
 
 /* w[a] += int_S N_a dA over the element faces lying on the plane x_d = value (dA with the thickness
