@@ -152,6 +152,9 @@ typedef struct {
  * dV with q = k grad theta, and the consistent tangent K = dR/du (row-major, nd x nd, nd = nnode*ndof;
  * may be NULL). No capacity and no inertia: those come from TslElementLumped. *inverted is set when the
  * map is not valid at some point (R, K then undefined). */
+/* PETSC_FALSE for an element that TslElementInternal would report inverted (a non-positive Jacobian at a
+ * point of the full or the mechanical rule), at the cost of the geometry alone. */
+PetscBool TslElementValid(const TslElementInput *in);
 PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted);
 /* Nodes of the element's vectors: the family's nodes and the type's extra nodes. */
 static inline PetscInt TslElementTypeNodes(const TslElementType *t)

@@ -45,23 +45,23 @@ static void Conduction(const TslElementInput *in, const TslElementPoint pts[], P
   const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, n = g->nnode, nd = TslElementTypeNodes(t) * ndof;
 
   for (PetscInt q = 0; q < g->full.n; q++) {
-    const TslElementPoint p       = pts[q];
-    PetscReal             grad[3] = {0, 0, 0}, theta;
-    TslMaterialPoint      mp;
+    const TslElementPoint *p       = &pts[q];
+    PetscReal              grad[3] = {0, 0, 0}, theta;
+    TslMaterialPoint       mp;
 
-    theta = NodalTheta(in, p.N, in->u);
+    theta = NodalTheta(in, p->N, in->u);
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt d = 0; d < dim; d++) grad[d] += p.dNdx[a][d] * in->u[ndof * a + th];
+      for (PetscInt d = 0; d < dim; d++) grad[d] += p->dNdx[a][d] * in->u[ndof * a + th];
     TslMaterialEval(in->sec->mat, theta, &mp);
     for (PetscInt a = 0; a < n; a++) {
       PetscReal ga = 0;
-      for (PetscInt d = 0; d < dim; d++) ga += p.dNdx[a][d] * grad[d];
-      R[ndof * a + th] += mp.k * ga * p.dV;
+      for (PetscInt d = 0; d < dim; d++) ga += p->dNdx[a][d] * grad[d];
+      R[ndof * a + th] += mp.k * ga * p->dV;
       if (!K) continue;
       for (PetscInt b = 0; b < n; b++) {
         PetscReal kab = 0;
-        for (PetscInt d = 0; d < dim; d++) kab += p.dNdx[a][d] * p.dNdx[b][d];
-        K[(ndof * a + th) * nd + ndof * b + th] += (mp.k * kab + mp.dk * ga * p.N[b]) * p.dV;
+        for (PetscInt d = 0; d < dim; d++) kab += p->dNdx[a][d] * p->dNdx[b][d];
+        K[(ndof * a + th) * nd + ndof * b + th] += (mp.k * kab + mp.dk * ga * p->N[b]) * p->dV;
       }
     }
   }
@@ -69,10 +69,11 @@ static void Conduction(const TslElementInput *in, const TslElementPoint pts[], P
 
 /* State of the mechanical terms at one point. */
 typedef struct {
-  TslElementPoint  p;
-  TslMaterialPoint mp;
-  PetscReal        B[6][TSL_MAX_ELEM_NODES * 3];
-  PetscReal        eps[6], eps_th, deps_th; /* total strain, thermal strain (per normal component) and d/dtheta */
+  const TslElementPoint *p; /* the point's geometry: given by the caller or evaluated into own */
+  TslElementPoint        own;
+  TslMaterialPoint       mp;
+  PetscReal              B[6][TSL_MAX_ELEM_NODES * 3];
+  PetscReal              eps[6], eps_th, deps_th; /* total strain, thermal strain (per normal component) and d/dtheta */
   /* the nonzeros of each column c of B (at most 4 of the 6 rows: B is sparse, and every product with it
    * below runs over these only): rows bz_row[c][0..bz_n[c]), values bz_val */
   PetscInt  bz_n[TSL_MAX_ELEM_NODES * 3], bz_row[TSL_MAX_ELEM_NODES * 3][6];
@@ -82,13 +83,17 @@ typedef struct {
 /* pre: the point's geometry when already evaluated (NULL: evaluate it here) */
 static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi[], PetscReal w, const TslElementPoint *pre, MechPoint *mq)
 {
-  const TslElementType *t   = in->type;
+  const TslElementType *t    = in->type;
   const PetscInt        ndof = t->ndof, nu = ndof - 1, n = TslElementTypeNodes(t);
   PetscReal             theta;
 
-  if (pre) mq->p = *pre;
-  else if (!TslElementPointEvaluate(t, in->sec, in->x, xi, w, &mq->p)) return PETSC_FALSE;
-  TslElementStrainMatrix(t, in->sec, in->x, &mq->p, mq->B);
+  if (pre)
+    mq->p = pre;
+  else {
+    if (!TslElementPointEvaluate(t, in->sec, in->x, xi, w, &mq->own)) return PETSC_FALSE;
+    mq->p = &mq->own;
+  }
+  TslElementStrainMatrix(t, in->sec, in->x, mq->p, mq->B);
   for (PetscInt r = 0; r < 6; r++) mq->eps[r] = 0;
   for (PetscInt a = 0; a < n; a++)
     for (PetscInt i = 0; i < nu; i++) {
@@ -101,9 +106,9 @@ static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi
         mq->eps[r] += mq->B[r][c] * in->u[ndof * a + i];
       }
     }
-  theta = NodalTheta(in, mq->p.N, in->u);
+  theta = NodalTheta(in, mq->p->N, in->u);
   TslMaterialEval(in->sec->mat, theta, &mq->mp);
-  mq->eps_th = TslMaterialThermalStrain(in->sec->mat, theta, PointInitialTheta(in, &mq->p), &mq->deps_th);
+  mq->eps_th = TslMaterialThermalStrain(in->sec->mat, theta, PointInitialTheta(in, mq->p), &mq->deps_th);
   return PETSC_TRUE;
 }
 
@@ -182,7 +187,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
       const PetscReal dmu = mq.mp.dE / (2 * (1 + nuv)) - mq.mp.dnu * E / (2 * (1 + nuv) * (1 + nuv));
       const PetscReal dkb = mq.mp.dE / (3 * (1 - 2 * nuv)) + mq.mp.dnu * 2 * E / (3 * (1 - 2 * nuv) * (1 - 2 * nuv));
       PetscReal       Bm[TSL_MAX_ELEM_NODES * 3];
-      hy->np = t->form->pressure(g, &mq.p, P);
+      hy->np = t->form->pressure(g, mq.p, P);
       Deviatoric(mu, D);
       Deviatoric(dmu, dD);
       for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r]; /* the deviatoric part ignores the volumetric eps_th */
@@ -191,12 +196,12 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         for (PetscInt r = 0; r < 3; r++) Bm[c] += mq.B[r][c];
       }
       for (PetscInt k = 0; k < hy->np; k++) {
-        for (PetscInt c = 0; c < ncol; c++) hy->G[c][k] += Bm[c] * P[k] * mq.p.dV;
-        hy->g0[k] += P[k] * 3 * mq.eps_th * mq.p.dV;
-        for (PetscInt l = 0; l < hy->np; l++) hy->H[k][l] += P[k] * P[l] / kb * mq.p.dV;
+        for (PetscInt c = 0; c < ncol; c++) hy->G[c][k] += Bm[c] * P[k] * mq.p->dV;
+        hy->g0[k] += P[k] * 3 * mq.eps_th * mq.p->dV;
+        for (PetscInt l = 0; l < hy->np; l++) hy->H[k][l] += P[k] * P[l] / kb * mq.p->dV;
         for (PetscInt b = 0; b < n; b++) {
-          hy->dg0[b][k] += P[k] * 3 * mq.deps_th * mq.p.N[b] * mq.p.dV;
-          for (PetscInt l = 0; l < hy->np; l++) hy->dH[b][k][l] -= P[k] * P[l] * dkb / (kb * kb) * mq.p.N[b] * mq.p.dV;
+          hy->dg0[b][k] += P[k] * 3 * mq.deps_th * mq.p->N[b] * mq.p->dV;
+          for (PetscInt l = 0; l < hy->np; l++) hy->dH[b][k][l] -= P[k] * P[l] * dkb / (kb * kb) * mq.p->N[b] * mq.p->dV;
         }
         P_avg[k] += P[k] / quad->n;
       }
@@ -216,7 +221,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         const PetscInt c = nu * a + i;
         PetscReal      f = 0;
         for (PetscInt k = 0; k < mq.bz_n[c]; k++) f += mq.bz_val[c][k] * sig[mq.bz_row[c][k]];
-        R[ndof * a + i] += f * mq.p.dV;
+        R[ndof * a + i] += f * mq.p->dV;
       }
     if (res) {
       for (PetscInt r = 0; r < 6; r++) {
@@ -227,9 +232,9 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
           res->S[r] += sig[r] / quad->n;
       }
       if (!hybrid)
-        for (PetscInt r = 0; r < 6; r++) res->strain_energy += 0.5 * sig[r] * emech[r] * mq.p.dV;
+        for (PetscInt r = 0; r < 6; r++) res->strain_energy += 0.5 * sig[r] * emech[r] * mq.p->dV;
       else
-        for (PetscInt r = 0; r < 6; r++) res->strain_energy += 0.5 * sig[r] * mq.eps[r] * mq.p.dV;
+        for (PetscInt r = 0; r < 6; r++) res->strain_energy += 0.5 * sig[r] * mq.eps[r] * mq.p->dV;
     }
     if (!K) continue;
     /* DB = D B dV (rows of D skip its zeros; contiguous in the columns), then the upper triangle of
@@ -237,7 +242,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
     for (PetscInt r = 0; r < 6; r++) {
       for (PetscInt c = 0; c < ncol; c++) DB[r][c] = 0;
       for (PetscInt s = 0; s < 6; s++) {
-        const PetscReal drs = D[r][s] * mq.p.dV;
+        const PetscReal drs = D[r][s] * mq.p->dV;
         if (drs == 0) continue;
         for (PetscInt c = 0; c < ncol; c++) DB[r][c] += drs * mq.B[s][c];
       }
@@ -250,7 +255,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         for (PetscInt c2 = c1; c2 < ncol; c2++) kr[c2] += v * db[c2];
         Bds += v * dsig[mq.bz_row[c1][k]];
       }
-      for (PetscInt b = 0; b < n; b++) K[(ndof * (c1 / nu) + c1 % nu) * nd + ndof * b + th] += Bds * mq.p.N[b] * mq.p.dV;
+      for (PetscInt b = 0; b < n; b++) K[(ndof * (c1 / nu) + c1 % nu) * nd + ndof * b + th] += Bds * mq.p->N[b] * mq.p->dV;
     }
   }
   if (K) /* the displacement block, both triangles */
@@ -330,6 +335,19 @@ static PetscErrorCode Hourglass(const TslElementInput *in, PetscReal R[], PetscR
   PetscCheck(MechPointEvaluate(in, quad->xi[0], quad->w[0], NULL, &mq), PETSC_COMM_SELF, PETSC_ERR_PLIB, "hourglass control of an inverted element");
   PetscCall(in->type->form->hourglass(in, &mq.mp, R, K, energy));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscBool TslElementValid(const TslElementInput *in)
+{
+  const TslGeometry   *g    = in->type->geom;
+  const TslQuadrature *quad = in->type->form->quadrature(g);
+  TslElementPoint      full[TSL_MAX_QP], p;
+
+  if (!FullPoints(in, full)) return PETSC_FALSE;
+  if (quad != &g->full)
+    for (PetscInt q = 0; q < quad->n; q++)
+      if (!TslElementPointEvaluate(in->type, in->sec, in->x, quad->xi[q], quad->w[q], &p)) return PETSC_FALSE;
+  return PETSC_TRUE;
 }
 
 PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted)

@@ -104,6 +104,33 @@ static PetscBool FreeNodeBlocks(TslProblem p, PetscInt n, const PetscInt ld[], P
   return PETSC_TRUE;
 }
 
+/* An element's node blocks in increasing global node number (K permuted to match): each row's columns
+ * come sorted, so AIJ's search for an entry's place starts where the previous one ended. */
+static PetscErrorCode AddSortedBlocks(TslProblem p, Mat A, PetscInt nb, const PetscInt lnode[], const PetscReal K[])
+{
+  const PetscInt bs = p->ndof, n = nb * bs;
+  PetscInt       perm[TSL_MAX_ELEM_NODES + 1], g[TSL_MAX_ELEM_NODES + 1];
+  PetscScalar    Ks[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF];
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < nb; a++) perm[a] = a;
+  for (PetscInt a = 1; a < nb; a++) /* insertion sort: at most 27 nodes */
+    for (PetscInt b = a; b > 0 && p->m->node_gnum[lnode[perm[b]]] < p->m->node_gnum[lnode[perm[b - 1]]]; b--) {
+      PetscInt t = perm[b];
+      perm[b] = perm[b - 1], perm[b - 1] = t;
+    }
+  for (PetscInt a = 0; a < nb; a++) g[a] = p->m->node_gnum[lnode[perm[a]]];
+  for (PetscInt a = 0; a < nb; a++)
+    for (PetscInt i = 0; i < bs; i++) {
+      const PetscReal *src = &K[(perm[a] * bs + i) * n];
+      PetscScalar     *dst = &Ks[(a * bs + i) * n];
+      for (PetscInt b = 0; b < nb; b++)
+        for (PetscInt j = 0; j < bs; j++) dst[b * bs + j] = src[perm[b] * bs + j];
+    }
+  PetscCall(MatSetValuesBlocked(A, nb, g, nb, g, Ks, ADD_VALUES));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Inserts an element block, applying the constraints: rows of prescribed dofs are dropped, rows of
  * dofs eliminated by an equation go to the other terms' rows with weight -c_k/c_0 (T^T R, T^T K). */
 PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[],
@@ -114,7 +141,7 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
   PetscFunctionBeginUser;
   if (((mode == ASM_JACOBIAN && K) || mode == ASM_PATTERN) && FreeNodeBlocks(p, n, ld, TSL_MAX_ELEM_NODES + 1, bidx)) {
     if (mode == ASM_PATTERN) PetscCall(MatAdd(p, mode, A, n, ld, n, ld, NULL)); /* every node pair once */
-    else PetscCall(MatSetValuesBlockedLocal(A, n / p->ndof, bidx, n / p->ndof, bidx, K, ADD_VALUES));
+    else PetscCall(AddSortedBlocks(p, A, n / p->ndof, bidx, K));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (PetscInt r = 0; r < n; r++) {
@@ -295,13 +322,16 @@ static PetscErrorCode CheckElement(TslProblem p, PetscInt e, TslElemData *d, voi
   PetscBool inverted = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  PetscCall(TslElementInternal(&d->in, c->R, p->m->elem_nat[e] % c->stride ? NULL : c->K, &inverted));
+  if (p->m->elem_nat[e] % c->stride) { /* geometry only */
+    if (!TslElementValid(&d->in)) c->bad = e, *stop = PETSC_TRUE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(TslElementInternal(&d->in, c->R, c->K, &inverted));
   if (inverted) {
     c->bad = e;
     *stop  = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  if (p->m->elem_nat[e] % c->stride) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt r = 0; r < d->nd; r++) {
     PetscInt f = (r % p->ndof) == p->ndof - 1;
     c->sum[f] += PetscAbsReal(c->K[r * d->nd + r]);
