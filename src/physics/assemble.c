@@ -7,6 +7,8 @@
  */
 #include "problem_impl.h"
 
+static PetscErrorCode DiagonalBlock(Mat J, Mat *Ad);
+
 void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const PetscScalar *xoa, TslElemData *d)
 {
   const TslModel *m  = p->m;
@@ -195,6 +197,32 @@ static PetscErrorCode AddCapacity(TslProblem p, const TslElemData *d, PetscReal 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* An element's block: straight into the CSR values when the element has a direct-insertion map and a
+ * Jacobian is being assembled, else through TslProblemInsert. */
+static PetscErrorCode InsertElement(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt e, const TslElemData *d, const PetscReal R[],
+                                    const PetscReal K[])
+{
+  PetscFunctionBeginUser;
+  if (mode == ASM_JACOBIAN && K && p->jac_val && p->blk_ptr[e + 1] > p->blk_ptr[e]) {
+    const PetscInt        bs = p->ndof, nb = d->n, nd = d->nd;
+    const unsigned short *pos = &p->blk[p->blk_ptr[e]];
+    for (PetscInt a = 0; a < nb; a++) {
+      const PetscInt la = d->ld[a * bs] / bs;
+      for (PetscInt i = 0; i < bs; i++) {
+        PetscScalar     *row = p->jac_val + p->jac_row[la * bs + i];
+        const PetscReal *src = &K[(a * bs + i) * nd];
+        for (PetscInt b = 0; b < nb; b++) {
+          PetscScalar *dst = row + bs * pos[a * nb + b];
+          for (PetscInt j = 0; j < bs; j++) dst[j] += src[b * bs + j];
+        }
+      }
+    }
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(TslProblemInsert(p, mode, A, f, d->nd, d->ld, R, K));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 typedef struct {
   AsmMode      mode;
   Mat          A;
@@ -222,7 +250,7 @@ static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, 
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(AddCapacity(p, d, R, K));
-  PetscCall(TslProblemInsert(p, c->mode, c->A, c->f, d->nd, d->ld, R, K));
+  PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
     const TslFaceRecord *r = &p->face[i];
     PetscReal            value, sink, h = 0;
@@ -230,7 +258,7 @@ static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, 
     PetscCall(PetscArrayzero(R, d->nd));
     if (K) PetscCall(PetscArrayzero(K, d->nd * d->nd));
     PetscCall(TslElementFaceLoad(&d->in, r->kind, r->face, value, sink, R, K, &h));
-    PetscCall(TslProblemInsert(p, c->mode, c->A, c->f, d->nd, d->ld, R, K));
+    PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
     if (c->heat) {
       if (r->kind == TSL_FACE_FILM)
         c->heat->film += h;
@@ -487,12 +515,28 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   const PetscScalar *xa, *xoa;
   PetscInt           bad;
   TslFailure         fail;
+  Mat                Ad = NULL;
+  const PetscInt    *ja;
 
   PetscFunctionBeginUser;
   PetscCall(TslPhaseBegin(TSL_PHASE_ASSEMBLY));
   PetscCall(MatZeroEntries(P));
   PetscCall(GetStates(p, X, &xl, &xol, &xa, &xoa));
+  if (P == p->J && p->blk) { /* direct insertion (BuildDirectMap) */
+    PetscInt  nrow;
+    PetscBool done;
+    PetscCall(DiagonalBlock(P, &Ad));
+    PetscCall(MatSeqAIJGetArray(Ad, &p->jac_val));
+    PetscCall(MatGetRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &nrow, &p->jac_row, &ja, &done));
+  }
   PetscCall(AssembleLocal(p, ASM_JACOBIAN, xa, xoa, NULL, P, NULL, &bad, &fail));
+  if (p->jac_val) {
+    PetscInt  nrow;
+    PetscBool done;
+    PetscCall(MatSeqAIJRestoreArray(Ad, &p->jac_val));
+    PetscCall(MatRestoreRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &nrow, &p->jac_row, &ja, &done));
+    p->jac_val = NULL, p->jac_row = NULL;
+  }
   PetscCall(ConstraintRows(p, ASM_JACOBIAN, xa, NULL, P));
   PetscCall(RestoreStates(p, &xl, &xol, &xa, &xoa));
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
@@ -504,6 +548,73 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
     PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The local diagonal block of the Jacobian (the matrix itself on one rank). */
+static PetscErrorCode DiagonalBlock(Mat J, Mat *Ad)
+{
+  PetscBool mpi;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectTypeCompare((PetscObject)J, MATMPIAIJ, &mpi));
+  if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(J, Ad, NULL, NULL));
+  else *Ad = J;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The direct-insertion map (problem_impl.h) of the assembled pattern: for each element with owned nodes and
+ * free rows, the place of every node block in the CSR rows, found once by binary search, so that a
+ * Jacobian assembly adds the element block without any search (MatSetValues looked up every entry). */
+static PetscErrorCode BuildDirectMap(TslProblem p, Mat J)
+{
+  const TslModel *m  = p->m;
+  const PetscInt  bs = p->ndof;
+  Mat             Ad;
+  const PetscInt *ia, *ja;
+  PetscInt        nrow;
+  PetscBool       done;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(p->blk_ptr));
+  PetscCall(PetscFree(p->blk));
+  PetscCall(PetscMalloc1(m->nelem + 1, &p->blk_ptr));
+  p->blk_ptr[0] = 0;
+  for (PetscInt e = 0; e < m->nelem; e++) {
+    const PetscInt *ln = &p->elem_lnode[m->elem_ptr[e]], nb = m->elem_ptr[e + 1] - m->elem_ptr[e];
+    PetscBool       ok = PETSC_TRUE;
+    for (PetscInt a = 0; a < nb && ok; a++) {
+      if (ln[a] >= p->nown) ok = PETSC_FALSE;
+      for (PetscInt i = 0; i < bs && ok; i++) {
+        PetscInt r = ln[a] * bs + i;
+        if (p->bc[r].active || p->pinned[r] || p->dep[r] >= 0) ok = PETSC_FALSE;
+      }
+    }
+    p->blk_ptr[e + 1] = p->blk_ptr[e] + (ok ? nb * nb : 0);
+  }
+  PetscCall(PetscMalloc1(p->blk_ptr[m->nelem], &p->blk));
+  PetscCall(DiagonalBlock(J, &Ad));
+  PetscCall(MatGetRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &nrow, &ia, &ja, &done));
+  PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no row structure of the Jacobian");
+  for (PetscInt e = 0; e < m->nelem; e++) {
+    const PetscInt *ln = &p->elem_lnode[m->elem_ptr[e]], nb = m->elem_ptr[e + 1] - m->elem_ptr[e];
+    if (p->blk_ptr[e + 1] == p->blk_ptr[e]) continue;
+    for (PetscInt a = 0; a < nb; a++) {
+      const PetscInt r = ln[a] * bs, lo0 = ia[r], hi0 = ia[r + 1];
+      for (PetscInt b = 0; b < nb; b++) {
+        PetscInt lo = lo0, hi = hi0, col = ln[b] * bs;
+        while (lo < hi) { /* first entry >= col */
+          PetscInt mid = (lo + hi) / 2;
+          if (ja[mid] < col) lo = mid + 1;
+          else hi = mid;
+        }
+        PetscCheck(lo < hi0 && ja[lo] == col && (lo - lo0) % bs == 0 && (lo - lo0) / bs < 65536, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                   "Jacobian pattern without the element's node block");
+        p->blk[p->blk_ptr[e] + a * nb + b] = (unsigned short)((lo - lo0) / bs);
+      }
+    }
+  }
+  PetscCall(MatRestoreRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &nrow, &ia, &ja, &done));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -573,6 +684,7 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatSetOption(J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));
+  PetscCall(BuildDirectMap(p, J));
   PetscCall(MatDestroy(&p->J));
   p->J = J;
   PetscFunctionReturn(PETSC_SUCCESS);

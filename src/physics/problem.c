@@ -357,6 +357,8 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(PetscFree(p->eq_ldof));
   PetscCall(PetscFree(p->dep));
   PetscCall(PetscFree(p->pattern_rows));
+  PetscCall(PetscFree(p->blk_ptr));
+  PetscCall(PetscFree(p->blk));
   PetscCall(TslProblemContactDestroy(p));
   PetscCall(TslModelDestroy(&p->m));
   PetscCall(PetscFree(p));

@@ -97,6 +97,14 @@ struct _p_TslProblem {
   PetscReal          augment_tol;
   PetscBool          pattern_stale; /* a rollback changed the pairing: the matrix pattern is the failed attempt's */
   char              *pattern_rows;  /* [nn*ndof] kind of each row (free, prescribed, pinned, eliminated) when J's pattern was built */
+  /* Direct insertion (TslProblemPreallocate): for an element whose nodes are all owned and whose rows are
+   * all free, blk[blk_ptr[e] + a*nb + b] is the place of node b's block among node a's blocks in the
+   * local diagonal CSR matrix (whole ndof x ndof blocks, sorted); blk_ptr[e] = blk_ptr[e+1] otherwise.
+   * During a Jacobian assembly jac_val / jac_row point at that matrix's values and row starts. */
+  PetscInt          *blk_ptr;
+  unsigned short    *blk;
+  PetscScalar       *jac_val;
+  const PetscInt    *jac_row;
 
   /* failures decided by all ranks (sys.h) */
   TslInject inject;
