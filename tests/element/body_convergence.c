@@ -104,12 +104,9 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   for (PetscInt ti = 0; ti < TslElementTypeCount(); ti++) {
     const TslElementType *t = TslElementTypeGet(ti);
-    /* the twist and generalized plane strain rows share their families and conduction with the
-     * axisymmetric and plane strain rows */
-    if (t->kin == TSL_KIN_AXISYMMETRIC_TWIST || t->nextra) continue;
-    const PetscBool quadratic = (PetscBool)(t->geom->order > 1);
-    const PetscInt  n0        = t->dim == 3 && quadratic ? 1 : 2; /* cells per side, as element_convergence */
-    const PetscReal min[2]    = {quadratic ? 2.7 : 1.8, quadratic ? 1.8 : 0.85};
+    PetscInt              n0;
+    PetscReal             min[2];
+    if (!GridConvergenceRow(t, &n0, min)) continue;
     /* the box's volume: 1, or 2 pi int_1^2 r dr = 3 pi around the axis */
     const PetscReal volume = TslKinematicsRevolves(t->kin) ? 3 * PETSC_PI : 1;
     Level           lv[NLEVEL];

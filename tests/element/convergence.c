@@ -202,16 +202,12 @@ int main(int argc, char **argv)
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   for (PetscInt ti = 0; ti < TslElementTypeCount(); ti++) {
-    /* the twist rows share their families and in-plane terms with the axisymmetric rows, the generalized
-     * plane strain rows theirs with the plane strain rows; their own terms are checked by
-     * element_coupled_kernels (tangent, rigid twist, uniform torsion, uniform out-of-plane strain) */
-    if (TslElementTypeGet(ti)->kin == TSL_KIN_AXISYMMETRIC_TWIST || TslElementTypeGet(ti)->nextra) continue;
-    const TslElementType *t         = TslElementTypeGet(ti);
-    const TslGeometry    *g         = t->geom;
-    const PetscBool       quadratic = (PetscBool)(g->order > 1);
-    /* 2D: 2, 4, 8 cells per side; 3D: 2, 4, 8 linear, 1, 2, 4 quadratic (at most 729 nodes) */
-    const PetscInt  n0     = t->dim == 3 && quadratic ? 1 : 2;
-    const PetscReal min[4] = {quadratic ? 2.7 : 1.8, quadratic ? 1.8 : 0.85, quadratic ? 2.7 : 1.8, quadratic ? 1.8 : 0.85};
+    const TslElementType *t = TslElementTypeGet(ti);
+    const TslGeometry    *g = t->geom;
+    PetscInt              n0;
+    PetscReal             min[4];
+    if (!GridConvergenceRow(t, &n0, min)) continue;
+    min[2] = min[0], min[3] = min[1]; /* the same rates for the displacement */
     Level           lv[NLEVEL];
     GridRule        rule;
     PetscReal       wsum = 0, min_detJ = PETSC_MAX_REAL, residual = 0;

@@ -126,6 +126,17 @@ static PetscInt KuhnSplit(PetscInt ns, PetscInt vert[6][4][3])
   return n;
 }
 
+PetscBool GridConvergenceRow(const TslElementType *t, PetscInt *n0, PetscReal min[2])
+{
+  const PetscBool quadratic = (PetscBool)(t->geom->order > 1);
+
+  if (t->kin == TSL_KIN_AXISYMMETRIC_TWIST || t->nextra) return PETSC_FALSE;
+  *n0    = t->dim == 3 && quadratic ? 1 : 2;
+  min[0] = quadratic ? 2.7 : 1.8;
+  min[1] = quadratic ? 1.8 : 0.85;
+  return PETSC_TRUE;
+}
+
 PetscErrorCode GridCreate(const TslElementType *type, const PetscInt ncell[], const PetscReal lo[], const PetscReal hi[], Grid *grid)
 {
   const TslGeometry *g   = type->geom;

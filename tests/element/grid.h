@@ -64,6 +64,12 @@ void     GridRuleCreate(const TslGeometry *g, PetscInt npd, GridRule *rule);
 
 /* Mesh of [lo, hi] (2D types: the first two directions) with ncell[d] cells per direction. Material:
  * GridSetMaterial. Free with GridDestroy. */
+/* The rows a convergence test refines, with its coarsest mesh and the rates it asserts: PETSC_FALSE for the
+ * twist and generalized plane strain rows, which share their families and in-plane terms with the
+ * axisymmetric and plane strain rows (their own terms are checked by element_coupled_kernels). n0: cells
+ * per side of the coarsest mesh (2D: 2; 3D: 2 linear, 1 quadratic, at most 729 nodes at 4 cells);
+ * min: the smallest L2 and H1 rates (2.7 / 1.8 second order, 1.8 / 0.85 linear). */
+PetscBool GridConvergenceRow(const TslElementType *t, PetscInt *n0, PetscReal min[2]);
 PetscErrorCode GridCreate(const TslElementType *type, const PetscInt ncell[], const PetscReal lo[], const PetscReal hi[], Grid *grid);
 void           GridSetMaterial(Grid *grid, PetscReal E, PetscReal nu, PetscReal k, PetscReal alpha, PetscReal theta_init, PetscReal thickness);
 PetscErrorCode GridDestroy(Grid *grid);
