@@ -56,42 +56,24 @@ typedef struct {
 
 static PetscErrorCode SolveLevel(const TslElementType *t, PetscInt n, const GridRule *rule, Level *lv)
 {
-  const PetscInt  dim = t->dim, ndof = t->ndof, th = TslElementTypeThetaSlot(t), ncell[3] = {n, n, n};
+  const PetscInt  dim = t->dim, ndof = t->ndof, ncell[3] = {n, n, n};
   const PetscReal r0 = TslKinematicsRevolves(t->kin) ? 1 : 0, lo[3] = {r0, 0, 0}, hi[3] = {r0 + 1, 1, 1};
+  PetscInt        dir[6], np = 0;
+  PetscReal       value[6], *F, *u;
   Grid            grid;
-  PetscReal      *F, *u, l2[TSL_MAX_NODE_DOF], h1[TSL_MAX_NODE_DOF];
-  PetscInt       *fix, nfix = 0;
   GridSolveInfo   info;
 
   PetscFunctionBeginUser;
   PetscCall(GridCreate(t, ncell, lo, hi, &grid));
   GridSetMaterial(&grid, 1, 0.3, K, 0, 0, 1);
   PetscCall(GridAddBodyFlux(&grid, Q));
-  PetscCall(PetscMalloc3(grid.nnode * ndof, &F, grid.nnode * ndof, &u, grid.nnode * ndof, &fix));
-  for (PetscInt a = 0; a < grid.nnode; a++) {
-    PetscBool boundary = PETSC_FALSE;
-    for (PetscInt d = 0; d < dim; d++) boundary = (PetscBool)(boundary || GridOnPlane(&grid, a, d, lo[d]) || GridOnPlane(&grid, a, d, hi[d]));
-    for (PetscInt i = 0; i < ndof; i++) {
-      PetscReal g[3];
-      F[ndof * a + i] = 0; /* the source is in R(u), through the kernels */
-      ExactField((void *)t, i, &grid.x[3 * a], &u[ndof * a + i], g);
-      if (i < th || boundary)
-        fix[nfix++] = ndof * a + i;
-      else
-        u[ndof * a + i] = 0;
-    }
-  }
-  PetscCall(GridSolve(&grid, F, nfix, fix, u, &info));
+  PetscCall(PetscCalloc2(grid.nnode * ndof, &F, grid.nnode * ndof, &u)); /* F = 0: the source is in R(u), through the kernels */
+  for (PetscInt d = 0; d < dim; d++) dir[np] = d, value[np++] = lo[d], dir[np] = d, value[np++] = hi[d]; /* the whole boundary */
+  PetscCall(GridSolveConduction(&grid, rule, F, np, dir, value, ExactField, (void *)t, u, &info, lv->err));
   lv->factored = info.factored;
   lv->residual = info.residual;
-  lv->err[0] = lv->err[1] = PETSC_MAX_REAL;
   PetscCall(GridFaceHeat(&grid, u, &lv->heat));
-  if (info.factored) {
-    PetscCall(GridErrors(&grid, u, rule, ExactField, (void *)t, l2, h1));
-    lv->err[0] = PetscSqrtReal(l2[th]);
-    lv->err[1] = PetscSqrtReal(h1[th]);
-  }
-  PetscCall(PetscFree3(F, u, fix));
+  PetscCall(PetscFree2(F, u));
   PetscCall(GridDestroy(&grid));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -578,3 +578,36 @@ PetscErrorCode GridEnergies(const Grid *grid, const PetscReal u[], PetscReal *st
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+PetscErrorCode GridSolveConduction(const Grid *grid, const GridRule *rule, const PetscReal F[], PetscInt nplane, const PetscInt dir[],
+                                   const PetscReal value[], GridFieldFn exact, void *ctx, PetscReal u[], GridSolveInfo *info, PetscReal err[2])
+{
+  const TslElementType *t    = grid->type;
+  const PetscInt        ndof = t->ndof, th = TslElementTypeThetaSlot(t);
+  PetscReal             l2[TSL_MAX_NODE_DOF], h1[TSL_MAX_NODE_DOF];
+  PetscInt             *fix, nfix = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(grid->nnode * ndof, &fix));
+  for (PetscInt a = 0; a < grid->nnode; a++) {
+    PetscBool held = PETSC_FALSE;
+    for (PetscInt k = 0; k < nplane; k++) held = (PetscBool)(held || GridOnPlane(grid, a, dir[k], value[k]));
+    for (PetscInt i = 0; i < ndof; i++) {
+      PetscReal g[3];
+      exact(ctx, i, &grid->x[3 * a], &u[ndof * a + i], g);
+      if (i < th || held)
+        fix[nfix++] = ndof * a + i;
+      else
+        u[ndof * a + i] = 0;
+    }
+  }
+  PetscCall(GridSolve(grid, F, nfix, fix, u, info));
+  err[0] = err[1] = PETSC_MAX_REAL;
+  if (info->factored) {
+    PetscCall(GridErrors(grid, u, rule, exact, ctx, l2, h1));
+    err[0] = PetscSqrtReal(l2[th]);
+    err[1] = PetscSqrtReal(h1[th]);
+  }
+  PetscCall(PetscFree(fix));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -116,6 +116,12 @@ PetscErrorCode GridAssemble(const Grid *grid, const PetscReal u[], PetscReal R[]
 /* One Newton step for R(u) = F from u, which holds the prescribed values on the rows fix[]: the rows of
  * fix[] are replaced by identity rows (row elimination, zero increment), the rest solved by LU
  * (KSPPREONLY + PCLU). Exact for the linear problems of the tests; info->residual shows it. */
+/* Steady conduction against a manufactured temperature: the displacement dofs, and the temperature of
+ * the nodes on the given planes (coordinate dir[k] == value[k]), are held at the exact field; the rest is
+ * solved with the load F (ndof per node). u: the solution (ndof per node, allocated by the caller);
+ * err: the L2 and H1 errors of the temperature (PETSC_MAX_REAL when the matrix could not be factored). */
+PetscErrorCode GridSolveConduction(const Grid *grid, const GridRule *rule, const PetscReal F[], PetscInt nplane, const PetscInt dir[],
+                                   const PetscReal value[], GridFieldFn exact, void *ctx, PetscReal u[], GridSolveInfo *info, PetscReal err[2]);
 PetscErrorCode GridSolve(const Grid *grid, const PetscReal F[], PetscInt nfix, const PetscInt fix[], PetscReal u[], GridSolveInfo *info);
 
 /* Sums over the elements of TslElementOutput's strain and hourglass energies. */
