@@ -627,7 +627,7 @@ static PetscErrorCode BuildDirectMap(TslProblem p, Mat J)
 PetscErrorCode TslProblemPreallocate(TslProblem p)
 {
   Mat          pre, G, J;
-  PetscInt     bad, rs, re, *dnz, *onz, maxc = 0;
+  PetscInt     bad, rs, re, *dnz, *onz, maxc = 0, *pcols;
   PetscScalar *zero;
   TslFailure   fail;
 
@@ -671,15 +671,23 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   PetscCall(MatSetLocalToGlobalMapping(J, p->l2g, p->l2g));
   PetscCall(MatXAIJSetPreallocation(J, p->ndof, dnz, onz, NULL, NULL));
   PetscCall(PetscFree2(dnz, onz));
-  PetscCall(PetscCalloc1(maxc * p->ndof * p->ndof, &zero));
+  PetscCall(PetscCalloc2(maxc * p->ndof, &zero, maxc * p->ndof, &pcols));
+  /* each point row whole, columns sorted (MAT_SORTED_FULL: a copy per row instead of a search per entry) */
+  PetscCall(MatSetOption(J, MAT_SORTED_FULL, PETSC_TRUE));
   for (PetscInt r = rs; r < re; r++) {
     PetscInt        nc;
     const PetscInt *cols;
     PetscCall(MatGetRow(G, r, &nc, &cols, NULL));
-    PetscCall(MatSetValuesBlocked(J, 1, &r, nc, cols, zero, INSERT_VALUES));
+    for (PetscInt k = 0; k < nc; k++)
+      for (PetscInt j = 0; j < p->ndof; j++) pcols[k * p->ndof + j] = cols[k] * p->ndof + j;
+    for (PetscInt i = 0; i < p->ndof; i++) {
+      PetscInt row = r * p->ndof + i;
+      PetscCall(MatSetValues(J, 1, &row, nc * p->ndof, pcols, zero, INSERT_VALUES));
+    }
     PetscCall(MatRestoreRow(G, r, &nc, &cols, NULL));
   }
-  PetscCall(PetscFree(zero));
+  PetscCall(MatSetOption(J, MAT_SORTED_FULL, PETSC_FALSE));
+  PetscCall(PetscFree2(zero, pcols));
   PetscCall(MatDestroy(&G));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
