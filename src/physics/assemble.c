@@ -90,6 +90,13 @@ static PetscErrorCode AddRow(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A row's kind for the matrix pattern: 'f' free, 'p' pinned (a slot the kinematics does not use), 'b'
+ * prescribed by a boundary condition, 'e' eliminated by an equation. */
+static char RowKind(TslProblem p, PetscInt r)
+{
+  return p->pinned[r] ? 'p' : p->bc[r].active ? 'b' : p->dep[r] >= 0 ? 'e' : 'f';
+}
+
 /* Whole node blocks (ld = node-major dofs of n / ndof nodes) none of whose rows is constrained: the
  * block can go in with one MatSetValuesBlockedLocal. */
 static PetscBool FreeNodeBlocks(TslProblem p, PetscInt n, const PetscInt ld[], PetscInt nb, PetscInt bidx[])
@@ -100,37 +107,10 @@ static PetscBool FreeNodeBlocks(TslProblem p, PetscInt n, const PetscInt ld[], P
     bidx[a] = ld[a * p->ndof] / p->ndof;
     for (PetscInt i = 0; i < p->ndof; i++) {
       PetscInt row = ld[a * p->ndof + i];
-      if (row != ld[a * p->ndof] + i || p->bc[row].active || p->pinned[row] || p->dep[row] >= 0) return PETSC_FALSE;
+      if (row != ld[a * p->ndof] + i || RowKind(p, row) != 'f') return PETSC_FALSE;
     }
   }
   return PETSC_TRUE;
-}
-
-/* An element's node blocks in increasing global node number (K permuted to match): each row's columns
- * come sorted, so AIJ's search for an entry's place starts where the previous one ended. */
-static PetscErrorCode AddSortedBlocks(TslProblem p, Mat A, PetscInt nb, const PetscInt lnode[], const PetscReal K[])
-{
-  const PetscInt bs = p->ndof, n = nb * bs;
-  PetscInt       perm[TSL_MAX_ELEM_NODES + 1], g[TSL_MAX_ELEM_NODES + 1];
-  PetscScalar    Ks[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF];
-
-  PetscFunctionBeginUser;
-  for (PetscInt a = 0; a < nb; a++) perm[a] = a;
-  for (PetscInt a = 1; a < nb; a++) /* insertion sort: at most 27 nodes */
-    for (PetscInt b = a; b > 0 && p->m->node_gnum[lnode[perm[b]]] < p->m->node_gnum[lnode[perm[b - 1]]]; b--) {
-      PetscInt t = perm[b];
-      perm[b] = perm[b - 1], perm[b - 1] = t;
-    }
-  for (PetscInt a = 0; a < nb; a++) g[a] = p->m->node_gnum[lnode[perm[a]]];
-  for (PetscInt a = 0; a < nb; a++)
-    for (PetscInt i = 0; i < bs; i++) {
-      const PetscReal *src = &K[(perm[a] * bs + i) * n];
-      PetscScalar     *dst = &Ks[(a * bs + i) * n];
-      for (PetscInt b = 0; b < nb; b++)
-        for (PetscInt j = 0; j < bs; j++) dst[b * bs + j] = src[perm[b] * bs + j];
-    }
-  PetscCall(MatSetValuesBlocked(A, nb, g, nb, g, Ks, ADD_VALUES));
-  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Inserts an element block, applying the constraints: rows of prescribed dofs are dropped, rows of
@@ -143,7 +123,7 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
   PetscFunctionBeginUser;
   if (((mode == ASM_JACOBIAN && K) || mode == ASM_PATTERN) && FreeNodeBlocks(p, n, ld, TSL_MAX_ELEM_NODES + 1, bidx)) {
     if (mode == ASM_PATTERN) PetscCall(MatAdd(p, mode, A, n, ld, n, ld, NULL)); /* every node pair once */
-    else PetscCall(AddSortedBlocks(p, A, n / p->ndof, bidx, K));
+    else PetscCall(MatSetValuesBlockedLocal(A, n / p->ndof, bidx, n / p->ndof, bidx, K, ADD_VALUES));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (PetscInt r = 0; r < n; r++) {
@@ -585,10 +565,8 @@ static PetscErrorCode BuildDirectMap(TslProblem p, Mat J)
     PetscBool       ok = PETSC_TRUE;
     for (PetscInt a = 0; a < nb && ok; a++) {
       if (ln[a] >= p->nown) ok = PETSC_FALSE;
-      for (PetscInt i = 0; i < bs && ok; i++) {
-        PetscInt r = ln[a] * bs + i;
-        if (p->bc[r].active || p->pinned[r] || p->dep[r] >= 0) ok = PETSC_FALSE;
-      }
+      for (PetscInt i = 0; i < bs && ok; i++)
+        if (RowKind(p, ln[a] * bs + i) != 'f') ok = PETSC_FALSE;
     }
     p->blk_ptr[e + 1] = p->blk_ptr[e] + (ok ? nb * nb : 0);
   }
@@ -712,7 +690,7 @@ PetscErrorCode TslProblemPreallocateIfChanged(TslProblem p)
     changed = 1;
   }
   for (PetscInt d = 0; d < n; d++) {
-    char kind = p->pinned[d] ? 'p' : p->bc[d].active ? 'b' : p->dep[d] >= 0 ? 'e' : 'f';
+    char kind = RowKind(p, d);
     if (p->pattern_rows[d] != kind) changed = 1, p->pattern_rows[d] = kind;
   }
   PetscCall(MPIU_Allreduce(&changed, &any, 1, MPIU_INT, MPI_MAX, p->comm));
