@@ -181,6 +181,10 @@ typedef struct {
    * at the start of the increment, and its sticking anchor (the circumferential slip from the anchor is
    * w - w_anchor); unchanged by a move to a neighbouring segment (w is continuous along the surface) */
   PetscReal w_old, w_anchor;
+  /* 3D only (TslContactElement3): the second surface parameter of the projection at the start of the
+   * increment and of the sticking anchor, in the face geometry's own reference coordinates (xi_old,
+   * xi_anchor then hold the first one) */
+  PetscReal eta_old, eta_anchor;
 } TslContactState;
 
 typedef enum { TSL_CONTACT_OPEN = 0, TSL_CONTACT_STICK, TSL_CONTACT_SLIP } TslContactStatus;
@@ -268,6 +272,13 @@ typedef struct {
   TslContactStatus status;
   PetscReal        xi_anchor; /* updated sticking anchor: store with TslContactStateUpdate after convergence */
   PetscReal        w_anchor;  /* updated circumferential anchor (twist) */
+  /* 3D only (TslContactElement3; zero in 2D): the second surface parameter (used and unclamped), its anchor,
+   * the third component of the normal, and whether the projection lies on the face (0) or beyond an edge
+   * (1, by more than the tolerance of TslContactFace3Inside): the caller re-pairs the node then. In 3D,
+   * slip/shear are the components along the first unit tangent t1 and slip_circ/shear_circ those along
+   * t2 = n x t1 (t1 = the normalised part of dx/dxi orthogonal to n). */
+  PetscReal eta, eta_raw, eta_anchor, normal_z;
+  PetscInt  outside;
 } TslContactOutput;
 
 /* Residual R[nu*nnode] (internal - external: the contact force on a node enters with a minus sign, heat
@@ -295,6 +306,89 @@ PetscErrorCode TslContactStateUpdate(const TslContactOutput *out, TslContactStat
  * w_old = w_anchor = the relative circumferential displacement there (twist; 0 otherwise), lambda = 0.
  * in->hist is not read. */
 PetscErrorCode TslContactStateStart(const TslContactInput *in, PetscReal xi, TslContactState *h);
+
+/* ---------------------------------------------------------------------------------------------------
+ * 3D node-to-surface (contact/face3.c, contact/kernel3.c): a secondary node against one main face
+ *
+ * Faces are the catalogue's 2D families used as faces of 3D elements: tri3 (C3D4T, C3D6T ends), quad4
+ * (C3D8T family, C3D6T sides) and tri6 (C3D10MT), nodes in the catalogue's face order, whose right-hand
+ * normal points out of the main body (towards the secondary side). Surface parameters are the face
+ * geometry's own reference coordinates (xi, eta): [-1,1]^2 for quads, the unit triangle for triangles.
+ * A main surface may mix families (wedge sides and ends): the family is per face.
+ * Nodal unknowns (u_x, u_y, u_z, theta): four per node. Forces and heat are totals on the secondary
+ * node's tributary area (TslContactFace3Integrate). Signs and laws as in 2D: g = (x_s - x_m) . n,
+ * residual = internal - external, q > 0 from the main surface into the secondary node.
+ * ------------------------------------------------------------------------------------------------- */
+#define TSL_CONTACT3_MAX_FACE_NODES 6 /* tri6: the largest face of the catalogue's 3D families (fits TSL_CONTACT_MAX_DOF) */
+#define TSL_CONTACT3_NU             4 /* (u_x, u_y, u_z, theta) */
+
+/* Face family of a catalogue geometry name for 3D contact (tri3, quad4, tri6; case-insensitive), -1 when
+ * 3D contact does not support it; its node count. */
+PetscInt TslContactFace3Find(const char *geometry_name);
+PetscInt TslContactFace3Nodes(PetscInt kind);
+
+/* Position p[3] and unit normal n[3] (right-hand rule on the face order; either may be NULL) of a face,
+ * node coordinates x[3*a + d], at reference coordinates xi[2] (any real values: the extended face). */
+PetscErrorCode TslContactFace3Evaluate(PetscInt kind, const PetscReal x[], const PetscReal xi[], PetscReal p[], PetscReal n[]);
+
+/* Closest point of p[3] on the extended (unsmoothed) face x[]: reference coordinates xi[2], by
+ * safeguarded Newton from the face centre (exact in one step for flat tri3); limited to a band of one face
+ * size around the face (beyond it the caller re-pairs and precision does not matter). */
+PetscErrorCode TslContactFace3Project(PetscInt kind, const PetscReal x[], const PetscReal p[], PetscReal xi[]);
+
+/* Whether reference coordinates xi[2] lie on the face, with a tolerance tol in reference units
+ * (tri: xi, eta >= -tol, xi + eta <= 1 + tol; quad: |xi|, |eta| <= 1 + tol). */
+PetscBool TslContactFace3Inside(PetscInt kind, const PetscReal xi[], PetscReal tol);
+
+/* Bounding box (xmin, ymin, zmin, xmax, ymax, zmax) of the face x[]: of the control points of its
+ * Bernstein form, which contains it (its nodes for the linear families). */
+PetscErrorCode TslContactFace3Box(PetscInt kind, const PetscReal x[], PetscReal box[6]);
+
+/* Tributary areas of the nodes of a secondary face, reference coordinates x[]: w[a] = int N_a dA (tri3,
+ * quad4); tri6 (whose consistent corner weights are zero) takes the weights of its linear subdivision into
+ * four tri3, A/12 per corner and A/4 per midside node of a flat face, as the modified elements do for
+ * pressure; *area = int dA (may be NULL). Sums to the face area exactly for flat faces. */
+PetscErrorCode TslContactFace3Integrate(PetscInt kind, const PetscReal x[], PetscReal w[], PetscReal *area);
+
+/* Input of one 3D contact element: node 0 is the secondary node s, nodes 1..nper the main face's in face
+ * order. */
+typedef struct {
+  PetscInt  face;                                            /* TslContactFace3Find family of the main face */
+  PetscReal area;                                            /* tributary area of s (reference) */
+  PetscReal x[1 + TSL_CONTACT3_MAX_FACE_NODES][3];           /* reference coordinates */
+  PetscReal u[1 + TSL_CONTACT3_MAX_FACE_NODES][TSL_CONTACT3_NU]; /* current unknowns (u_x, u_y, u_z, theta) */
+  /* Smoothing: unit normals at the face's nodes (the average of the normals of the main faces around each
+   * node, computed by the caller from the converged configuration at the start of the increment and held
+   * fixed during it). The normal used is n = normalise((1 - beta) n_face + beta sum_a N_a nn_a), beta = 1
+   * on the face's edges, falling smoothly to 0 at the fraction `smoothing` of the face from every edge,
+   * so that neighbouring faces agree on their shared edge. smoothing = 0: the face's own normal (nn ignored). */
+  PetscReal nodal_normal[TSL_CONTACT3_MAX_FACE_NODES][3];
+  PetscReal smoothing;
+  PetscReal dt;   /* increment (time), > 0 when friction heats */
+  TslContactState hist; /* xi_old, eta_old, xi_anchor, eta_anchor, lambda (w_* unused) */
+} TslContactInput3;
+
+/* Residual R[4*(1 + nper)] and consistent tangent K = dR/du (row-major, may be NULL) of one 3D node-to-face
+ * contact element, plus diagnostics (out, may be NULL; out->nnode = 1 + nper, out->nu = 4):
+ *   R_s = -A (pN n - tT),  R_a = +A N_a (pN n - tT)     (tT the tangential traction vector, in the plane)
+ *   Rth_s = -A (q + f eta D),  Rth_a = +A N_a (q - (1 - f) eta D)
+ * The projection solves (x_s - x_m(xi)) . a_alpha = 0 (a_alpha the face's tangents made orthogonal to the
+ * smoothed normal); slip from the start of the increment ds and from the anchor e are the tangential parts
+ * of x_m(xi) - x_m(xi_old) and x_m(xi) - x_m(xi_anchor) on the current face; Coulomb friction (penalty with
+ * return mapping, or LAGRANGE) on the 2-vector of their components along (t1, t2), as 2D's law with twist.
+ * The updated anchor (out->xi_anchor, eta_anchor) is the face point whose tangential offset from x_m(xi)
+ * is the elastic slip. Beyond an edge the element works on the extended face (reference coordinates
+ * limited to a band of one face size); out->outside asks the caller to re-pair after convergence. */
+PetscErrorCode TslContactElement3(const TslContactLaw *law, const TslContactInput3 *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
+
+/* A new contact starts stress-free at xi[2] of the input's face: xi_old = xi_anchor = xi[0], eta_old =
+ * eta_anchor = xi[1], lambda = 0, w_* = 0. */
+PetscErrorCode TslContactStateStart3(PetscReal xi[], TslContactState *h);
+
+/* Moves history to another face when a node is re-paired: the face points of xi_old/eta_old and of the
+ * anchor on the face `from` (current coordinates x_from[], family kind_from) are projected onto the face
+ * `to` (x_to[], kind_to, extended) and their reference coordinates there replace them; lambda is kept. */
+PetscErrorCode TslContactStateTransfer3(PetscInt kind_from, const PetscReal x_from[], PetscInt kind_to, const PetscReal x_to[], TslContactState *h);
 
 /* ---------------------------------------------------------------------------------------------------
  * Candidate search: uniform bin grid over the main segments' bounding boxes
