@@ -400,6 +400,9 @@ typedef struct _n_TslContactBinGrid *TslContactBinGrid;
  * curved one. Each box is inflated by margin (length, >= 0). The bin size is about the mean inflated box size, so a segment covers
  * O(1) bins. The grid copies what it needs; destroy with TslContactBinGridDestroy. */
 PetscErrorCode TslContactBinGridCreate(PetscInt nseg, const PetscReal seg_x[], PetscReal margin, TslContactBinGrid *grid);
+/* The same in dim = 2 or 3: seg_x[2*dim*i ..] = two opposite corners of face i's box (x1, y1[, z1], x2, y2[, z2]);
+ * queries then take p[dim]. TslContactBinGridCreate is dim = 2. */
+PetscErrorCode TslContactBinGridCreateDim(PetscInt dim, PetscInt nseg, const PetscReal seg_x[], PetscReal margin, TslContactBinGrid *grid);
 PetscErrorCode TslContactBinGridDestroy(TslContactBinGrid *grid);
 
 /* Candidate segments for point p[2]: every segment whose inflated box contains a point within distance
@@ -409,5 +412,5 @@ PetscErrorCode TslContactBinGridDestroy(TslContactBinGrid *grid);
 PetscErrorCode TslContactBinGridQuery(TslContactBinGrid grid, const PetscReal p[], PetscReal radius, PetscInt cap, PetscInt cand[], PetscInt *ncand,
                                       PetscInt *nbins);
 
-/* Number of bins in x and y (for logs and tests). */
+/* Number of bins in x and in the other directions (y, or y times z in 3D; for logs and tests). */
 PetscErrorCode TslContactBinGridGetSize(TslContactBinGrid grid, PetscInt *nx, PetscInt *ny);

@@ -228,18 +228,23 @@ typedef struct {
    * line3 segments), the secondary nodes with their tributary lengths; after distribution each rank keeps
    * the secondary nodes it owns and the whole main surface (whose nodes it holds as ghosts). */
   PetscInt  nmain;
-  PetscInt  nper;                   /* nodes per main face: 2 (line2) or 3 (line3), the same for all faces of the pair */
-  PetscInt  main_face;              /* face family of the main faces: a TslContactFaceKind (include/thermoslide/contact.h) */
+  PetscInt  nper;                   /* 2D: nodes per main face, 2 (line2) or 3 (line3), the same for all faces of the pair;
+                                       3D: the most nodes of any main face (the stride of main_node) */
+  PetscInt  main_face;              /* 2D: face family of the main faces, a TslContactFaceKind (include/thermoslide/contact.h);
+                                       3D: the first face's TslContactFace3Find family */
+  PetscInt *main_kind;              /* [nmain] family of each face (3D surfaces may mix tri3 and quad4: wedges) */
   PetscInt *main_node;              /* [nper*nmain] node ids of each face in face order (ends, then midside), main body on the
-                                       left of the first end -> the second end */
+                                       left of the first end -> the second end (2D) or on the side opposite the right-hand
+                                       normal (3D); a face with fewer than nper nodes is padded with -1 */
   PetscInt  *main_prev, *main_next; /* [nmain] neighbouring face (sharing the first / the second end), -1 at an end */
   PetscInt   main_element;          /* id of the element of the first main face (its material gives the default penalty) */
   PetscInt   nsec;
   PetscInt  *sec_node;    /* [nsec] node ids (corner and midside nodes alike) */
-  PetscReal *sec_length;  /* [nsec] tributary length on the secondary surface (reference): sum of int N_a ds over the node's faces */
+  PetscReal *sec_length;  /* [nsec] tributary length (2D) or area (3D) on the secondary surface (reference): sum of int N_a ds
+                             (dA) over the node's faces */
   PetscReal  thickness;   /* out-of-plane thickness of the secondary elements (plane models) */
   PetscInt   kin;         /* TslKinematics of the secondary elements */
-  PetscReal  mean_length; /* mean main face length (reference, along the face) */
+  PetscReal  mean_length; /* mean main face length (reference, along the face; 3D: the square root of the mean face area) */
 } TslContactPair;
 
 typedef struct {

@@ -342,6 +342,161 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
         f.write(text)
 
 
+# The 3D series (issue 7): the planar blocks extruded to the spec's "three-dimensional model with width
+# 1.0" (the small block, z in [0, 1]); the large block is slightly wider (z in [-0.1, 1.1]) so that the
+# small block's edge nodes land inside its faces; two cells across each width, so the meshes do not match
+# in z either. Hexahedra (C3D8*), wedges (C3D6T: the planar triangles extruded, quad faces on the
+# interface), tetrahedra (C3D4T: each hexahedron cut into six; C3D10MT: the same with midside nodes, tri6
+# faces on the interface). Face numbers are found from the geometry (the face whose corners lie on the
+# interface plane), so every family uses the catalogue's own numbering.
+FACES_3D = {  # corner positions of each face S1..S6, as the dialect numbers them
+    "hex": [(0, 1, 2, 3), (4, 7, 6, 5), (0, 4, 5, 1), (1, 5, 6, 2), (2, 6, 7, 3), (3, 7, 4, 0)],
+    "wedge": [(0, 1, 2), (3, 5, 4), (0, 3, 4, 1), (1, 4, 5, 2), (2, 5, 3, 0)],
+    "tet": [(0, 1, 2), (0, 3, 1), (1, 3, 2), (2, 3, 0)],
+}
+TET10_EDGES = [(0, 1), (1, 2), (2, 0), (0, 3), (1, 3), (2, 3)]
+# six tetrahedra of a hexahedron (corners 0..7 as C3D8), all around the diagonal 0-6
+HEX_TETS = [(0, 1, 2, 6), (0, 2, 3, 6), (0, 3, 7, 6), (0, 7, 4, 6), (0, 4, 5, 6), (0, 5, 1, 6)]
+
+
+def family_3d(typ):
+    m = re.match(r"C3D(\d+)", typ.upper())
+    return {"8": "hex", "6": "wedge", "4": "tet", "10": "tet"}[m.group(1)], 2 if m.group(1) == "10" else 1
+
+
+def mesh3d(nx, ny, nz, x0, x1, y0, y1, z0, z1, typ, nid0=0, eid0=0, mirror=None):
+    """Block of nx x ny x nz cells as the family of typ; returns nodes {id: (x, y, z)} and elements
+    [(id, conn...)] with positive volumes. Wedges and tetrahedra: cells right of x = mirror are cut as the
+    mirror images of those left of it, so that the mesh is symmetric about x = mirror."""
+    shape, order = family_3d(typ)
+    nid = lambda i, j, k: nid0 + 1 + i + j * (nx + 1) + k * (nx + 1) * (ny + 1)
+    nodes = {nid(i, j, k): (x0 + (x1 - x0) * i / nx, y0 + (y1 - y0) * j / ny, z0 + (z1 - z0) * k / nz)
+             for k in range(nz + 1) for j in range(ny + 1) for i in range(nx + 1)}
+    elems, e, mids = [], eid0, {}
+    nextid = [nid0 + (nx + 1) * (ny + 1) * (nz + 1)]
+
+    def mid(a, b):
+        key = (min(a, b), max(a, b))
+        if key not in mids:
+            nextid[0] += 1
+            mids[key] = nextid[0]
+            nodes[nextid[0]] = tuple(0.5 * (nodes[a][d] + nodes[b][d]) for d in range(3))
+        return mids[key]
+
+    def volume(c):
+        a, b, cc, d = (nodes[n] for n in c[:4])
+        u = [b[i] - a[i] for i in range(3)]
+        v = [cc[i] - a[i] for i in range(3)]
+        w = [d[i] - a[i] for i in range(3)]
+        return (u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]))
+
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                h = [nid(i, j, k), nid(i + 1, j, k), nid(i + 1, j + 1, k), nid(i, j + 1, k),
+                     nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j + 1, k + 1), nid(i, j + 1, k + 1)]
+                if shape != "hex" and mirror is not None and x0 + (x1 - x0) * (i + 0.5) / nx > mirror:
+                    h = [h[1], h[0], h[3], h[2], h[5], h[4], h[7], h[6]]  # the cut of the mirror image (left-handed)
+                if shape == "hex":
+                    cells = [h]
+                elif shape == "wedge":  # the planar triangles (c1, c2, c3), (c1, c3, c4) extruded along z
+                    cells = [[h[0], h[1], h[2], h[4], h[5], h[6]], [h[0], h[2], h[3], h[4], h[6], h[7]]]
+                    for c in cells:
+                        if volume([c[0], c[1], c[2], c[3]]) < 0:  # a mirrored cell: reverse each triangle
+                            c[1], c[2], c[4], c[5] = c[2], c[1], c[5], c[4]
+                else:
+                    cells = []
+                    for t in HEX_TETS:
+                        c = [h[q] for q in t]
+                        if volume(c) < 0:
+                            c[1], c[2] = c[2], c[1]
+                        if order == 2:
+                            c = c + [mid(c[a], c[b]) for a, b in TET10_EDGES]
+                        cells.append(c)
+                for c in cells:
+                    e += 1
+                    elems.append((e,) + tuple(c))
+    return nodes, elems, shape
+
+
+def faces_on(nodes, elems, shape, y):
+    """(element, S-number) of every face whose corners lie on the plane y."""
+    out = []
+    for el in elems:
+        conn = el[1:]
+        for f, corners in enumerate(FACES_3D[shape]):
+            if all(abs(nodes[conn[c]][1] - y) < 1e-12 for c in corners):
+                out.append((el[0], f + 1))
+    return out
+
+
+def sliding_blocks_3d(series, typ, outdir=None):
+    """The spec's three series on 3D blocks (see above): the planar decks' loads and steps on faces of
+    width 1 (small block) and 1.2 (large block), sliding along x, pressing along -y, z held on the small
+    block's top face. Volume 6 x 1.25 x 1.2 + 2 x 0.25 x 1 = 9.5 (rho c = 1): the friction series ends at
+    60 / 9.5."""
+    typ = typ.upper()
+    bnodes, belems, shape = mesh3d(12, 2, 2, 0.0, 6.0, 0.0, 1.25, -0.1, 1.1, typ, mirror=3.0)
+    tnodes, telems, _ = mesh3d(4, 6, 2, 2.0, 4.0, 1.25, 1.5, 0.0, 1.0, typ, 1000, 1000, mirror=3.0)
+    main = faces_on(bnodes, belems, shape, 1.25)
+    sec = faces_on(tnodes, telems, shape, 1.25)
+    pressed = faces_on(tnodes, telems, shape, 1.5)
+    base = sorted(n for n, c in bnodes.items() if abs(c[1]) < 1e-12)
+    topface = sorted(n for n, c in tnodes.items() if abs(c[1] - 1.5) < 1e-12)
+    # film on the large block's bottom under the small block (x in [2.5, 3.5]), all across the width
+    filmed = [(e, f) for e, f in faces_on(bnodes, belems, shape, 0.0)
+              if all(2.5 - 1e-12 <= bnodes[n][0] <= 3.5 + 1e-12 for n in [dict((el[0], el[1:]) for el in belems)[e][c] for c in FACES_3D[shape][f - 1]])]
+
+    def surface(name, faces):
+        return "*SURFACE, NAME=%s, TYPE=ELEMENT\n" % name + "".join(" %d, S%d\n" % f for f in faces)
+
+    def load_lines(faces, kind, value):
+        return "".join(" %d, %s%d, %s\n" % (e, kind, f, value) for e, f in faces)
+
+    fmt = lambda nodes: "".join(" %d, %.10g, %.10g, %.10g\n" % ((n,) + nodes[n]) for n in sorted(nodes))
+    text = ("*HEADING\n Finite sliding between coupled temperature-displacement %s blocks (3D): %s series\n" % (typ, series) +
+            "*NODE, NSET=ALL\n" + fmt(bnodes) + "*NODE, NSET=ALL\n" + fmt(tnodes) +
+            "*ELEMENT, TYPE=%s, ELSET=LARGE\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
+            "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
+            nset("BASE", base) + nset("TOPFACE", topface) + surface("MAIN", main) + surface("SECONDARY", sec) + MAT +
+            "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n")
+    if series == "conductance":
+        text += "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
+    elif series == "radiation":
+        text += ("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
+                 "*SURFACE INTERACTION, NAME=IFACE\n*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 1.0\n")
+    else:
+        text += ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION, LAGRANGE\n 0.1\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n"
+                 "*GAP HEAT GENERATION\n 0.5, 0.5\n")
+    text += ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05\n SECONDARY, MAIN\n"
+             "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n"
+             "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+    if series == "friction":
+        ref = topface[0]
+        text += "".join("*EQUATION\n 2\n %d, %d, 1.0, %d, %d, -1.0\n" % (n, d, ref, d) for n in topface[1:] for d in (1, 2, 3))
+        text += ("*STEP, NAME=PRESS, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.5, 1.0\n"
+                 "*BOUNDARY\n BASE, 1, 3\n %d, 1, 1\n %d, 3, 3\n*CLOAD\n %d, 2, -200.0\n*END STEP\n" % (ref, ref, ref) +
+                 "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.025, 3.0, 1e-5, 0.025\n"
+                 "*BOUNDARY, AMPLITUDE=SLIDE\n %d, 1, 1, 1.5\n*END STEP\n" % ref +
+                 "*STEP, NAME=EQUILIBRATE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 20.0, 1e-5, 2.0\n*END STEP\n")
+    else:
+        text += ("*AMPLITUDE, NAME=OFF\n 0.0, 0.0, 1.0, 1.0\n*AMPLITUDE, NAME=FLUXDOWN\n 0.0, 1.0, 0.1, 0.0\n"
+                 "*STEP, NAME=HEAT, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 1.0, 1e-5, 0.1\n"
+                 "*BOUNDARY\n BASE, 1, 3\n TOPFACE, 1, 1\n TOPFACE, 3, 3\n*DLOAD\n" + load_lines(pressed, "P", "100.0") +
+                 "*DFLUX\n" + load_lines(pressed, "S", "100.0") + "*FILM\n" + load_lines(filmed, "F", "0.0, 10.0") + "*END STEP\n"
+                 "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.05\n"
+                 "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, 1, 1, 1.5\n*END STEP\n"
+                 "*STEP, NAME=STEADY\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n*END STEP\n"
+                 "*STEP, NAME=DOUBLE PRESSURE\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
+                 "*DLOAD\n" + load_lines(pressed, "P", "200.0") + "*END STEP\n"
+                 "*STEP, NAME=SLIDE OFF, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.1\n"
+                 "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, 2, 2\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, 1, 1, 5.0\n"
+                 "*DFLUX, AMPLITUDE=FLUXDOWN\n" + load_lines(pressed, "S", "100.0") + "*END STEP\n")
+    name = "sliding_%s_%s.inp" % (series, typ.lower())
+    with open(os.path.join(outdir or HERE, name), "w") as f:
+        f.write(text)
+
+
 def friction_cycle(law):
     """Issue 8, items 7 and 8: the friction series' two blocks (sliding_blocks) with a pressure of 75 on
     the top of the small block, mu = 0.2, slid +1.25, -2.5, +1.25 over 4 s (slip path 5): dissipation
@@ -446,7 +601,10 @@ if __name__ == "__main__":
     import sys
     if len(sys.argv) in (5, 6) and sys.argv[1] == "--sliding":
         # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR [--auglagr]
-        sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr=sys.argv[5:] == ["--auglagr"])
+        if sys.argv[2].upper().startswith("C3D"):
+            sliding_blocks_3d(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4])
+        else:
+            sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr=sys.argv[5:] == ["--auglagr"])
         sys.exit(0)
     contact_jacobian()
     temperature_tables()

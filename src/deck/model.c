@@ -73,6 +73,7 @@ PetscErrorCode TslModelDestroy(TslModel **model)
   for (PetscInt i = 0; i < m->npair; i++) {
     TslContactPair *c = &m->pairs[i];
     PetscCall(PetscFree(c->main_node));
+    PetscCall(PetscFree(c->main_kind));
     PetscCall(PetscFree(c->main_prev));
     PetscCall(PetscFree(c->main_next));
     PetscCall(PetscFree(c->sec_node));
@@ -362,6 +363,7 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
   for (PetscInt i = 0; i < m->npair; i++) {
     TslContactPair *c = &m->pairs[i];
     PetscCall(PackArray(p, &c->main_node, c->nper * c->nmain, sizeof(PetscInt)));
+    PetscCall(PackArray(p, &c->main_kind, c->nmain, sizeof(PetscInt)));
     PetscCall(PackArray(p, &c->main_prev, c->nmain, sizeof(PetscInt)));
     PetscCall(PackArray(p, &c->main_next, c->nmain, sizeof(PetscInt)));
     PetscCall(PackArray(p, &c->sec_node, c->nsec, sizeof(PetscInt)));

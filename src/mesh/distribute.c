@@ -124,8 +124,8 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
     PetscBool             owns = PETSC_FALSE;
     for (PetscInt i = 0; i < c->nsec && !owns; i++) owns = (PetscBool)(owner[TslModelNodeIndex(g, c->sec_node[i])] == r);
     for (PetscInt i = 0; owns && i < c->nper * c->nmain; i++) {
-      PetscInt q = TslModelNodeIndex(g, c->main_node[i]);
-      if (!mark[q]) mark[q] = 2;
+      PetscInt q = c->main_node[i] >= 0 ? TslModelNodeIndex(g, c->main_node[i]) : -1;
+      if (q >= 0 && !mark[q]) mark[q] = 2;
     }
   }
   PetscCall(PetscMalloc2(g->nnode, &nodes, g->nnode, &key));
@@ -179,34 +179,54 @@ static PetscInt FaceNodes(const TslModel *g, PetscInt e, PetscInt f, PetscInt no
   return geom->face_nnode[f - 1];
 }
 
-/* The contact face family (TslContactFaceKind) of face f of element position e, its nodes in face order
- * (nodes[], *nf) and their reference coordinates x[2*a + d]. A face family contact does not support is a
- * user error at the pair's data line. */
+/* The contact face family of face f of element position e (2D: a TslContactFaceKind, 3D: a
+ * TslContactFace3Find family), its nodes in face order (nodes[], *nf) and their reference coordinates
+ * x[dim*a + d]. A face family contact does not support is a user error at the pair's data line. */
 static PetscErrorCode ContactFace(const TslModel *g, const TslContactPair *c, PetscInt e, PetscInt f, PetscInt nodes[], PetscInt *nf, PetscReal x[],
                                   PetscInt *family)
 {
-  const TslGeometry *fg = TslElementTypeGet(g->elem_type[e])->geom->face_geom[f - 1];
+  const TslGeometry *fg  = TslElementTypeGet(g->elem_type[e])->geom->face_geom[f - 1];
+  const PetscInt     dim = g->dim;
+  PetscInt           nn  = -1;
   char               loc[PETSC_MAX_PATH_LEN + 32];
 
   PetscFunctionBeginUser;
-  *nf     = FaceNodes(g, e, f, nodes);
-  *family = fg ? TslContactFaceFind(fg->name) : -1;
-  PetscCheck(*family >= 0 && TslContactFaceGet((TslContactFaceKind)*family)->geom->nnode == *nf, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-             "%s: contact on %s faces (%" PetscInt_FMT " nodes) is not supported yet", TslLocString(g, c->loc, loc, sizeof(loc)),
-             fg ? fg->name : "unknown", *nf);
-  PetscCheck(*nf <= TSL_CONTACT_MAX_FACE_NODES, PETSC_COMM_SELF, PETSC_ERR_PLIB, "contact face with too many nodes");
+  *nf = FaceNodes(g, e, f, nodes);
+  if (dim == 2) {
+    *family = fg ? TslContactFaceFind(fg->name) : -1;
+    if (*family >= 0) nn = TslContactFaceGet((TslContactFaceKind)*family)->geom->nnode;
+  } else {
+    *family = fg ? TslContactFace3Find(fg->name) : -1;
+    if (*family >= 0) nn = TslContactFace3Nodes(*family);
+  }
+  PetscCheck(*family >= 0 && nn == *nf, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact on %s faces (%" PetscInt_FMT " nodes) is not supported yet",
+             TslLocString(g, c->loc, loc, sizeof(loc)), fg ? fg->name : "unknown", *nf);
+  PetscCheck(*nf <= (dim == 2 ? TSL_CONTACT_MAX_FACE_NODES : TSL_CONTACT3_MAX_FACE_NODES), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "contact face with too many nodes");
   for (PetscInt a = 0; a < *nf; a++)
-    for (PetscInt d = 0; d < 2; d++) x[2 * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, nodes[a]) + d];
+    for (PetscInt d = 0; d < dim; d++) x[dim * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, nodes[a]) + d];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Contact pairs in the solver's terms (rank 0, whole model): main surfaces as oriented faces (line2 or
- * line3 segments) with their neighbours, secondary nodes with tributary lengths (the integrals of the
- * secondary faces' shape functions), thickness, kinematics. The default penalty is left to the contact
- * set-up, which has the materials (src/physics/contact.c). */
+/* Tributary weights w[] of the nodes of a face (int N_a ds in 2D, int N_a dA in 3D) and its size (length
+ * or area). */
+static PetscErrorCode FaceWeights(PetscInt dim, PetscInt family, const PetscReal x[], PetscReal w[], PetscReal *size)
+{
+  PetscFunctionBeginUser;
+  if (dim == 2) PetscCall(TslContactFaceIntegrate((TslContactFaceKind)family, x, w, size));
+  else PetscCall(TslContactFace3Integrate(family, x, w, size));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Contact pairs in the solver's terms (rank 0, whole model): main surfaces as oriented faces (2D: line2 or
+ * line3 segments with their neighbours; 3D: tri3, quad4, tri6 faces, one family per face), secondary nodes
+ * with tributary lengths or areas (the integrals of the secondary faces' shape functions), thickness,
+ * kinematics. The default penalty is left to the contact set-up, which has the materials
+ * (src/physics/contact.c). */
 static PetscErrorCode PrepareContactPairs(TslModel *g)
 {
-  char loc[PETSC_MAX_PATH_LEN + 32];
+  const PetscInt dim = g->dim;
+  char           loc[PETSC_MAX_PATH_LEN + 32];
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < g->npair; k++) {
@@ -215,47 +235,57 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
     const TslSurface *sec  = &g->surfaces[TslModelFindSurface(g, c->secondary)];
     PetscInt         *first, *perm, nsec = 0, e0 = -1, nf, family;
     PetscInt          nodes[TSL_MAX_FACE_NODES];
-    PetscReal         Lsum = 0, x[2 * TSL_MAX_FACE_NODES], w[TSL_MAX_FACE_NODES], L;
+    PetscReal         Lsum = 0, x[3 * TSL_MAX_FACE_NODES], w[TSL_MAX_FACE_NODES], L;
 
     PetscCheck(c->type == TSL_CONTACT_NODE_TO_SURFACE, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                "%s: *CONTACT PAIR, TYPE=SURFACE TO SURFACE is not supported yet (use the default node-to-surface)",
                TslLocString(g, c->loc, loc, sizeof(loc)));
-    PetscCheck(g->dim == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: contact between 3D elements is not supported yet",
-               TslLocString(g, c->loc, loc, sizeof(loc)));
-    /* main faces: one family per pair (the first face's), nper nodes each in face order */
+    /* main faces: in 2D one family per pair (the first face's); nper nodes each (3D: the most of any face,
+     * shorter faces padded with -1), in face order */
     c->nmain        = main->n;
-    c->main_face    = TSL_CONTACT_FACE_LINE2;
+    c->main_face    = 0;
     c->main_element = main->n ? main->elem[0] : -1;
-    if (main->n) PetscCall(ContactFace(g, c, TslModelElementIndex(g, main->elem[0]), main->face[0], nodes, &nf, x, &c->main_face));
-    c->nper = TslContactFaceGet((TslContactFaceKind)c->main_face)->geom->nnode;
+    c->nper         = 0;
+    PetscCall(PetscMalloc1(c->nmain, &c->main_kind));
+    for (PetscInt i = 0; i < main->n; i++) {
+      PetscCall(ContactFace(g, c, TslModelElementIndex(g, main->elem[i]), main->face[i], nodes, &nf, x, &family));
+      if (i == 0) c->main_face = family;
+      c->main_kind[i] = family;
+      c->nper         = PetscMax(c->nper, nf);
+      PetscCheck(dim == 3 || family == c->main_face, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                 "%s: the main surface %s mixes %s and %s faces: contact needs one face family per main surface",
+                 TslLocString(g, c->loc, loc, sizeof(loc)), c->main, TslContactFaceGet((TslContactFaceKind)c->main_face)->geom->name,
+                 TslContactFaceGet((TslContactFaceKind)family)->geom->name);
+    }
+    if (dim == 2 && !main->n) c->nper = TslContactFaceGet(TSL_CONTACT_FACE_LINE2)->geom->nnode;
     PetscCall(PetscMalloc1(c->nper * c->nmain, &c->main_node));
     PetscCall(PetscMalloc1(c->nmain, &c->main_prev));
     PetscCall(PetscMalloc1(c->nmain, &c->main_next));
     for (PetscInt i = 0; i < main->n; i++) {
       PetscCall(ContactFace(g, c, TslModelElementIndex(g, main->elem[i]), main->face[i], nodes, &nf, x, &family));
-      PetscCheck(family == c->main_face, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-                 "%s: the main surface %s mixes %s and %s faces: contact needs one face family per main surface",
-                 TslLocString(g, c->loc, loc, sizeof(loc)), c->main, TslContactFaceGet((TslContactFaceKind)c->main_face)->geom->name,
-                 TslContactFaceGet((TslContactFaceKind)family)->geom->name);
-      for (PetscInt a = 0; a < nf; a++) c->main_node[c->nper * i + a] = nodes[a];
+      for (PetscInt a = 0; a < c->nper; a++) c->main_node[c->nper * i + a] = a < nf ? nodes[a] : -1;
       c->main_prev[i] = c->main_next[i] = -1;
-      PetscCall(TslContactFaceIntegrate((TslContactFaceKind)family, x, w, &L));
-      Lsum += L;
+      PetscCall(FaceWeights(dim, family, x, w, &L));
+      Lsum += dim == 2 ? L : PetscSqrtReal(L);
     }
-    /* neighbours: the face that starts where this one ends */
-    PetscCall(PetscMalloc2(c->nmain, &first, c->nmain, &perm));
-    for (PetscInt i = 0; i < c->nmain; i++) first[i] = c->main_node[c->nper * i], perm[i] = i;
-    PetscCall(PetscSortIntWithArray(c->nmain, first, perm));
-    for (PetscInt i = 0; i < c->nmain; i++) {
-      PetscInt at;
-      PetscCall(PetscFindInt(c->main_node[c->nper * i + 1], c->nmain, first, &at));
-      if (at >= 0) c->main_next[i] = perm[at], c->main_prev[perm[at]] = i;
+    /* neighbours along a 2D surface: the face that starts where this one ends (3D faces find their
+     * neighbours through the search) */
+    if (dim == 2) {
+      PetscCall(PetscMalloc2(c->nmain, &first, c->nmain, &perm));
+      for (PetscInt i = 0; i < c->nmain; i++) first[i] = c->main_node[c->nper * i], perm[i] = i;
+      PetscCall(PetscSortIntWithArray(c->nmain, first, perm));
+      for (PetscInt i = 0; i < c->nmain; i++) {
+        PetscInt at;
+        PetscCall(PetscFindInt(c->main_node[c->nper * i + 1], c->nmain, first, &at));
+        if (at >= 0) c->main_next[i] = perm[at], c->main_prev[perm[at]] = i;
+      }
+      PetscCall(PetscFree2(first, perm));
     }
-    PetscCall(PetscFree2(first, perm));
     c->mean_length = c->nmain ? Lsum / c->nmain : 0;
 
-    /* secondary nodes and their tributary lengths: int N_a ds over each face, corner and midside nodes alike
-     * (line3: L/6, L/6, 2L/3), so that a uniform pressure gives the consistent nodal forces */
+    /* secondary nodes and their tributary lengths or areas: int N_a ds (dA) over each face, corner and
+     * midside nodes alike (line3: L/6, L/6, 2L/3; tri6: the weights of its linear subdivision), so that a
+     * uniform pressure gives the consistent nodal forces */
     if (sec->kind == TSL_SURFACE_NODE) {
       c->nsec = sec->n;
       PetscCall(PetscMalloc1(c->nsec, &c->sec_node));
@@ -266,7 +296,7 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
       PetscCall(PetscMalloc1(TSL_MAX_FACE_NODES * sec->n, &c->sec_length));
       for (PetscInt i = 0; i < sec->n; i++) {
         PetscCall(ContactFace(g, c, TslModelElementIndex(g, sec->elem[i]), sec->face[i], nodes, &nf, x, &family));
-        PetscCall(TslContactFaceIntegrate((TslContactFaceKind)family, x, w, NULL));
+        PetscCall(FaceWeights(dim, family, x, w, NULL));
         for (PetscInt a = 0; a < nf; a++) c->sec_node[nsec] = nodes[a], c->sec_length[nsec++] = w[a];
         if (i == 0) e0 = sec->elem[i];
       }
@@ -280,10 +310,26 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
           c->sec_node[c->nsec] = c->sec_node[i], c->sec_length[c->nsec++] = c->sec_length[i];
       }
     }
+    {
+      /* a node on both surfaces would be paired with faces of its own: not a contact this code models */
+      PetscInt *sorted;
+      PetscCall(PetscMalloc1(c->nsec + 1, &sorted));
+      PetscCall(PetscArraycpy(sorted, c->sec_node, c->nsec));
+      PetscCall(PetscSortInt(c->nsec, sorted));
+      for (PetscInt i = 0; i < c->nper * c->nmain; i++) {
+        PetscInt at = -1;
+        if (c->main_node[i] >= 0) PetscCall(PetscFindInt(c->main_node[i], c->nsec, sorted, &at));
+        PetscCheck(at < 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                   "%s: node %" PetscInt_FMT " belongs to both the secondary surface %s and the main surface %s: contact of a surface with "
+                   "itself, or with a surface sharing its nodes, is not supported",
+                   TslLocString(g, c->loc, loc, sizeof(loc)), c->main_node[i], c->secondary, c->main);
+      }
+      PetscCall(PetscFree(sorted));
+    }
     if (sec->kind == TSL_SURFACE_ELEMENT && sec->n > 0) {
       PetscInt ps  = ElementSection(g, e0);
       c->kin       = TslElementTypeGet(g->elem_type[TslModelElementIndex(g, e0)])->kin;
-      c->thickness = ps >= 0 && g->sections[ps].thickness > 0 ? g->sections[ps].thickness : 1.0;
+      c->thickness = dim == 2 && ps >= 0 && g->sections[ps].thickness > 0 ? g->sections[ps].thickness : 1.0;
     } else {
       c->kin       = g->nelem ? TslElementTypeGet(g->elem_type[0])->kin : TSL_KIN_PLANE_STRAIN;
       c->thickness = 1.0;

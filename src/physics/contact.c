@@ -121,19 +121,22 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
     TslContactNode          *cn = &p->cnode[i];
     const TslContactSurface *cs;
     TslContactInput          in;
+    TslContactInput3         in3;
     PetscInt                 nodes[TSL_CONTACT_MAX_NODES], n, nu, ld[TSL_CONTACT_MAX_DOF];
 
     if (cn->seg < 0) continue;
     cs = &p->csurf[cn->pair];
     nu = cs->nu;
-    ElementInput(p, cn, xa, &in, nodes, &n, &nb);
+    if (cs->dim == 3) PetscCall(TslProblemContact3Input(p, cn, xa, &in3, nodes, &n));
+    else ElementInput(p, cn, xa, &in, nodes, &n, &nb);
     for (PetscInt a = 0; a < n; a++)
       for (PetscInt c = 0; c < nu; c++) ld[nu * a + c] = nodes[a] * p->ndof + cs->slot[c];
     if (mode == ASM_PATTERN) {
       PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, NULL, NULL));
       continue;
     }
-    PetscCall(TslContactElement(&cs->law, &in, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
+    if (cs->dim == 3) PetscCall(TslContactElement3(&cs->law, &in3, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
+    else PetscCall(TslContactElement(&cs->law, &in, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
     if (f || A) PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
     if (mode == ASM_RESIDUAL)
       PetscCall(PetscInfo(NULL, "contact node %" PetscInt_FMT ": segment %" PetscInt_FMT " xi %g gap %g p %g slip %g shear %g slip_circ %g shear_circ %g q %g status %d\n",
@@ -193,6 +196,10 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
     TslContactBinGrid  grid;
 
     if (!cs->active) continue;
+    if (cs->dim == 3) {
+      PetscCall(TslProblemContact3Search(p, k, xa, changed));
+      continue;
+    }
     PetscCall(PetscMalloc2(4 * cs->nmain, &seg_box, 2 * np * cs->nmain, &seg_x));
     for (PetscInt s = 0; s < cs->nmain; s++) {
       FacePosition(p, cs, xa, s, &seg_x[2 * np * s]);
@@ -311,7 +318,8 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
     const TslContactSurface *cs = &p->csurf[cn->pair];
     if (cn->seg < 0) continue;
     /* a node on a segment end may fall outside [0,1] by round-off: only a real departure re-pairs */
-    if (TslContactProjectionSide(cn->out.xi_raw, TSL_CONTACT_DEPART_TOL) != 0) loc[0]++;
+    if (cs->dim == 3 ? TslProblemContact3Departed(p, cn, TSL_CONTACT_DEPART_TOL) : TslContactProjectionSide(cn->out.xi_raw, TSL_CONTACT_DEPART_TOL) != 0)
+      loc[0]++;
     if (cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED) {
       PetscReal c, lambda = cn->hist.lambda; /* applied below only if the increment is solved again */
       PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &lambda, &c));
@@ -344,10 +352,19 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* An accepted increment: its contact state becomes the start of the next one. */
+/* An accepted increment: its contact state becomes the start of the next one (3D: and its configuration
+ * gives the nodal normals of the next increment's smoothing). */
 PetscErrorCode TslProblemContactCommit(TslProblem p)
 {
   PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < p->ncsurf; k++)
+    if (p->csurf[k].dim == 3 && p->csurf[k].active && p->csurf[k].smooth > 0) {
+      Vec                xl;
+      const PetscScalar *xa;
+      PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+      PetscCall(TslProblemContact3Normals(p, &p->csurf[k], xa));
+      PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+    }
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode *cn = &p->cnode[i];
     if (cn->seg >= 0) {
@@ -466,7 +483,7 @@ static PetscErrorCode ReportPartition(TslProblem p)
     PetscInt              mine[2] = {c->nsec > 0, 0}, *all;
     char                  line[2][256];
     for (PetscInt i = 0; i < c->nper * c->nmain && !mine[1]; i++) {
-      PetscInt l = TslModelNodeIndex(m, c->main_node[i]);
+      PetscInt l = c->main_node[i] >= 0 ? TslModelNodeIndex(m, c->main_node[i]) : -1;
       mine[1]    = (PetscInt)(l >= 0 && l < p->nown);
     }
     PetscCall(PetscMalloc1(2 * size, &all));
@@ -543,7 +560,8 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
     TslContactSurface    *cs   = &p->csurf[k];
     const TslContactFace *face = TslContactFaceGet((TslContactFaceKind)pair->main_face);
 
-    PetscCheck(face && face->geom->nnode == pair->nper, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    cs->dim = p->dim;
+    PetscCheck(cs->dim == 3 || (face && face->geom->nnode == pair->nper), PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "contact pair %" PetscInt_FMT ": face family %" PetscInt_FMT " does not have %" PetscInt_FMT " nodes", k + 1, pair->main_face,
                pair->nper);
     cs->kin       = (TslKinematics)pair->kin;
@@ -553,29 +571,38 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
     cs->smooth    = pair->smooth;
     cs->nmain     = pair->nmain;
     cs->active    = (PetscBool)(pair->nsec > 0);
-    PetscCall(PetscMalloc3(cs->nper * pair->nmain, &cs->main_lnode, pair->nmain, &cs->prev, pair->nmain, &cs->next));
+    PetscCall(PetscMalloc4(cs->nper * pair->nmain + 1, &cs->main_lnode, pair->nmain + 1, &cs->prev, pair->nmain + 1, &cs->next, pair->nmain + 1, &cs->kind));
     for (PetscInt s = 0; s < pair->nmain; s++) {
       cs->prev[s] = pair->main_prev[s];
       cs->next[s] = pair->main_next[s];
+      cs->kind[s] = pair->main_kind[s];
       for (PetscInt a = 0; a < cs->nper; a++) {
         PetscInt i = cs->nper * s + a;
 
-        cs->main_lnode[i] = TslModelNodeIndex(m, pair->main_node[i]);
-        PetscCheck(!cs->active || cs->main_lnode[i] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "main-surface node %" PetscInt_FMT " is not local",
-                   pair->main_node[i]);
+        cs->main_lnode[i] = pair->main_node[i] >= 0 ? TslModelNodeIndex(m, pair->main_node[i]) : -1;
+        PetscCheck(!cs->active || pair->main_node[i] < 0 || cs->main_lnode[i] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                   "main-surface node %" PetscInt_FMT " is not local", pair->main_node[i]);
       }
     }
     PetscCall(SetUpLaw(p, pair, pair->mean_length, penalty[k], &cs->law));
     /* the kernels see (u_x, u_y, theta) per node, and the twist phi (dof 5) after them on twist models,
      * whose slip has a circumferential component */
-    cs->nu      = TslContactNodeUnknowns(cs->kin);
+    cs->nu      = cs->dim == 3 ? TSL_CONTACT3_NU : TslContactNodeUnknowns(cs->kin);
     cs->slot[0] = TslProblemDofSlot(p, 1);
     cs->slot[1] = TslProblemDofSlot(p, 2);
     cs->slot[2] = TslProblemDofSlot(p, 11);
     cs->slot[3] = TslProblemDofSlot(p, 5);
+    if (cs->dim == 3) {
+      /* 3D kernels see (u_x, u_y, u_z, theta); smoothing by the nodal normals, first of the reference state */
+      cs->slot[2] = TslProblemDofSlot(p, 3);
+      cs->slot[3] = TslProblemDofSlot(p, 11);
+      PetscCheck(cs->slot[2] >= 0 && cs->slot[3] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "3D contact needs the displacements 1..3 and the temperature 11");
+      PetscCall(PetscCalloc1(3 * p->nn, &cs->nnormal));
+      PetscCall(TslProblemContact3Normals(p, cs, NULL));
+    }
     PetscCheck(cs->slot[0] >= 0 && cs->slot[1] >= 0 && cs->slot[2] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "contact needs the displacements 1, 2 and the temperature 11 among the nodal unknowns");
-    PetscCheck((cs->nu == 4) == (cs->slot[3] >= 0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    PetscCheck(cs->dim == 3 || (cs->nu == 4) == (cs->slot[3] >= 0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "contact pair %" PetscInt_FMT ": the twist dof 5 is %s the nodal unknowns but the pair's kinematics is %s", k + 1,
                cs->slot[3] >= 0 ? "among" : "not among", cs->nu == 4 ? "with twist" : "without twist");
     /* candidates within one mean segment length, or the largest tabulated clearance */
@@ -600,7 +627,10 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
 PetscErrorCode TslProblemContactDestroy(TslProblem p)
 {
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < p->ncsurf; k++) PetscCall(PetscFree3(p->csurf[k].main_lnode, p->csurf[k].prev, p->csurf[k].next));
+  for (PetscInt k = 0; k < p->ncsurf; k++) {
+    PetscCall(PetscFree4(p->csurf[k].main_lnode, p->csurf[k].prev, p->csurf[k].next, p->csurf[k].kind));
+    PetscCall(PetscFree(p->csurf[k].nnormal));
+  }
   PetscCall(PetscFree(p->csurf));
   PetscCall(PetscFree(p->cnode));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -18,6 +18,12 @@ typedef struct {
   PetscInt           slot[TSL_CONTACT_MAX_NODE_DOF]; /* slots of u_x, u_y, theta (and phi, twist) among a node's unknowns */
   PetscReal          smooth, thickness, search_radius;
   TslKinematics      kin;
+  /* 3D (dim 3): the family of each face (kind[nmain], TslContactFace3Find; faces with fewer than nper nodes
+   * padded with -1 in main_lnode) and the unit nodal normals of the main surface for smoothing,
+   * nnormal[3*l] for local node l, averaged over the faces around the node at the last converged state */
+  PetscInt   dim;
+  PetscInt  *kind;
+  PetscReal *nnormal;
 } TslContactSurface;
 
 /* A secondary node owned by this rank: its pairing and history (current and committed). */
@@ -147,6 +153,14 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
                                 const PetscReal K[]);
 PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);
 PetscErrorCode TslProblemContactSetUp(TslProblem p);
+/* 3D node-to-surface (contact3.c): the kernel input of a paired node (its local nodes in kernel order, *n of
+ * them), the pairing of the pair's owned secondary nodes (*changed counts new pairings), whether a converged
+ * projection left its face, and the nodal normals at the state xa (at set-up and after each accepted
+ * increment). */
+PetscErrorCode TslProblemContact3Input(TslProblem p, const TslContactNode *cn, const PetscScalar *xa, TslContactInput3 *in, PetscInt nodes[], PetscInt *n);
+PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt pair, const PetscScalar *xa, PetscInt *changed);
+PetscBool      TslProblemContact3Departed(TslProblem p, const TslContactNode *cn, PetscReal tol);
+PetscErrorCode TslProblemContact3Normals(TslProblem p, TslContactSurface *cs, const PetscScalar *xa);
 PetscErrorCode TslProblemContactDestroy(TslProblem p);
 PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[]);
 PetscReal      TslProblemEvalLoadValue(TslProblem p, const TslLoadValue *h);

@@ -44,6 +44,9 @@ import numpy as np
 sys.path.insert(0, sys.path[0] + "/../tools")
 from tslcheck import Result, check, check_true, finish
 
+sys.path.insert(0, sys.path[1] + "/../../jobs/verification")
+from make_decks import FACES_3D, TET10_EDGES
+
 outdir, job, series = sys.argv[1:4]
 r = Result(outdir, job)
 ids, xyz, h = r.node_ids, r.xyz, r.history
@@ -52,6 +55,7 @@ small = (ids > 1000) & ~refs
 large = (ids <= 1000)
 axi = "_cax" in job or "_cgax" in job
 quadratic = bool(re.search(r"_c(pe|ps|ax|peg|gax)[68]", job))
+three_d = "_c3d" in job
 R_AXI = 2.5
 if axi:
     # back to the planar picture: x = z, y = R - r; U and RF likewise (u_x = u_z, u_y = -u_r)
@@ -99,21 +103,23 @@ if series == "friction" and axi:
     finish()
 
 if series == "friction":
+    # planar blocks: area 8 (thickness 1); 3D blocks: volume 6 x 1.25 x 1.2 + 2 x 0.25 x 1 = 9.5
+    final = 60.0 / (9.5 if three_d else 8.0)
     check("total frictional dissipation", h["friction_dissipation_total"][-1], 120.0, 1e-3, relative=True)
     check("heat absorbed by the blocks (eta = 0.5)", h["friction_heat_total"][-1], 60.0, 1e-3, relative=True)
     nt = r.field("NT")[:, 0][~refs]
-    check("final temperature, coldest node", nt.min(), 7.5, 1e-3, relative=True)
-    check("final temperature, hottest node", nt.max(), 7.5, 1e-3, relative=True)
+    check("final temperature, coldest node (60 / volume)", nt.min(), final, 1e-3, relative=True)
+    check("final temperature, hottest node (60 / volume)", nt.max(), final, 1e-3, relative=True)
     finish()
 
 
 def mirror_error(frame):
     nt = r.field("NT", frame)[:, 0]
     body = [i for i in range(len(ids)) if not refs[i]]
-    key = {(bool(small[i]), round(xyz[i, 0], 9), round(xyz[i, 1], 9)): i for i in body}
+    key = {(bool(small[i]), round(xyz[i, 0], 9), round(xyz[i, 1], 9), round(xyz[i, 2], 9)): i for i in body}
     worst = 0.0
     for i in body:
-        j = key[(bool(small[i]), round(6.0 - xyz[i, 0], 9), round(xyz[i, 1], 9))]
+        j = key[(bool(small[i]), round(6.0 - xyz[i, 0], 9), round(xyz[i, 1], 9), round(xyz[i, 2], 9))]
         worst = max(worst, abs(nt[i] - nt[j]))
     return worst, abs(nt).max()
 
@@ -155,13 +161,88 @@ def interface(frame):
     return nt[sec], tm, cp[sec], q[sec], w
 
 
+def face_shape(n, a, b):
+    """Shape functions of a quad4 ((a, b) in [-1, 1]^2), tri3 or tri6 (the unit triangle) face and their
+    derivatives, nodes in the catalogue's face order (corners, then the midsides 1-2, 2-3, 3-1)."""
+    if n == 4:
+        sa, sb = [-1, 1, 1, -1], [-1, -1, 1, 1]
+        N = np.array([0.25 * (1 + sa[k] * a) * (1 + sb[k] * b) for k in range(4)])
+        dN = np.array([[0.25 * sa[k] * (1 + sb[k] * b), 0.25 * sb[k] * (1 + sa[k] * a)] for k in range(4)])
+        return N, dN
+    L = [1 - a - b, a, b]
+    dL = [[-1, -1], [1, 0], [0, 1]]
+    if n == 3:
+        return np.array(L), np.array(dL, dtype=float)
+    N = [L[k] * (2 * L[k] - 1) for k in range(3)] + [4 * L[p] * L[q] for p, q in ((0, 1), (1, 2), (2, 0))]
+    dN = [[(4 * L[k] - 1) * dL[k][c] for c in range(2)] for k in range(3)]
+    dN += [[4 * (dL[p][c] * L[q] + L[p] * dL[q][c]) for c in range(2)] for p, q in ((0, 1), (1, 2), (2, 0))]
+    return np.array(N), np.array(dN)
+
+
+def interface_faces(which, y0):
+    """Faces on the plane y = y0 of the small (which = True) or large block: natural node indices in the
+    face order of the catalogue (corners, then midsides), from the elements of the .h5."""
+    out = []
+    for conn in r.elements():
+        conn = list(conn)
+        if bool(small[conn[0]]) != which:
+            continue
+        shape = {8: "hex", 6: "wedge", 4: "tet", 10: "tet"}[len(conn)]
+        for corners in FACES_3D[shape]:
+            if all(abs(xyz[conn[c], 1] - y0) < 1e-9 for c in corners):
+                face = [conn[c] for c in corners]
+                if len(conn) == 10:  # tet10: the midside nodes of the face's edges
+                    edge = {frozenset(e): 4 + k for k, e in enumerate(TET10_EDGES)}
+                    face += [conn[edge[frozenset((corners[k], corners[(k + 1) % 3]))]] for k in range(3)]
+                out.append(face)
+    return out
+
+
+def interface3d(frame):
+    """The 3D interface: secondary nodes with theta_main interpolated on the main face under their current
+    (x, z), CPRESS, HFLA, and the tributary areas of the secondary faces (quad4 A/4, tri3 A/3, tri6 A/12
+    and A/4), as interface() does in 2D."""
+    nt, u = r.field("NT", frame)[:, 0], r.field("U", frame)
+    cp, q = r.field("CPRESS", frame)[:, 0], r.field("HFLA", frame)[:, 0]
+    y0 = xyz[small, 1].min()
+    cur = xyz + u
+    w = {}
+    for f in interface_faces(True, y0):
+        c = xyz[f][:, [0, 2]]
+        area = 0.5 * abs(np.cross(c[2] - c[0], c[3] - c[1] if len(f) == 4 else c[1] - c[0]))  # diagonals of a quad
+        share = [area / 4] * 4 if len(f) == 4 else ([area / 3] * 3 if len(f) == 3 else [area / 12] * 3 + [area / 4] * 3)
+        for i, s in zip(f, share):
+            w[i] = w.get(i, 0.0) + s
+    sec = sorted(w)
+    mains = interface_faces(False, y0)
+    tm = []
+    for i in sec:
+        p = cur[i, [0, 2]]
+        found = None
+        for f in mains:
+            X = cur[f][:, [0, 2]]
+            if p[0] < X[:, 0].min() - 1e-9 or p[0] > X[:, 0].max() + 1e-9 or p[1] < X[:, 1].min() - 1e-9 or p[1] > X[:, 1].max() + 1e-9:
+                continue
+            a = np.array([0.0, 0.0]) if len(f) == 4 else np.array([1 / 3, 1 / 3])
+            for _ in range(30):
+                N, dN = face_shape(len(f), *a)
+                a = a + np.linalg.solve(X.T @ dN, p - N @ X)
+            N, _ = face_shape(len(f), *a)
+            inside = (abs(a) <= 1 + 1e-9).all() if len(f) == 4 else (a.min() >= -1e-9 and a.sum() <= 1 + 1e-9)
+            if inside:
+                found = float(N @ nt[f])
+                break
+        tm.append(found)
+    return nt[sec], np.array(tm), cp[sec], q[sec], np.array([w[i] for i in sec])
+
+
 def k_table(p):
     return np.interp(p, [100.0, 200.0], [20.0, 5.0])
 
 
 drops, kmean, prange = {}, {}, {}
 for step in (3, 4):
-    ts, tm, cp, q, w = interface(r.frame_of_step(step))
+    ts, tm, cp, q, w = (interface3d if three_d else interface)(r.frame_of_step(step))
     drops[step] = float(np.sum(w * (ts - tm)) / np.sum(w))
     kmean[step] = float(np.sum(w * k_table(cp)) / np.sum(w))
     prange[step] = (cp.min(), cp.max())

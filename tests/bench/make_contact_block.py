@@ -1,0 +1,82 @@
+#!/usr/bin/python3
+"""A 3D two-block contact problem for the contact benchmark (issue 7): a thin C3D8T block (N x N x 1
+cells over [0.02, 0.98]^2 in x-z, 0.1 high) pressed on a base block ((N+1) x (N+1) x 2 cells over
+[0, 1]^2, 0.5 high) fixed and held at temperature 0 at its bottom; the thin block's top face at
+temperature 100 under a pressure of 100, held in x and z. The meshes do not match across the interface:
+(N+1)^2 secondary nodes against (N+1)^2 main faces. Gap conductance by pressure. One steady coupled
+increment.
+usage: make_contact_block.py N deck.inp [thermoslide|calculix]
+  thermoslide: node-to-surface (the default pair type, hard contact, default penalty);
+  calculix:    the same mesh with C3D8 elements... no: C3D8T, face-to-face (TYPE=SURFACE TO SURFACE)
+               with a linear pressure-overclosure of the penalty thermoslide uses, as ccx requires one.
+"""
+import sys
+
+n, path = int(sys.argv[1]), sys.argv[2]
+flavour = sys.argv[3] if len(sys.argv) > 3 else "thermoslide"
+nb = n + 1
+E = 200.0e3
+
+
+def block(nx, ny, nz, x0, x1, y0, y1, z0, z1, nid0, eid0):
+    nid = lambda i, j, k: nid0 + 1 + i + k * (nx + 1) + j * (nx + 1) * (nz + 1)
+    nodes = []
+    for j in range(ny + 1):
+        for k in range(nz + 1):
+            for i in range(nx + 1):
+                nodes.append((nid(i, j, k), x0 + (x1 - x0) * i / nx, y0 + (y1 - y0) * j / ny, z0 + (z1 - z0) * k / nz))
+    elems, e = [], eid0
+    for j in range(ny):
+        for k in range(nz):
+            for i in range(nx):
+                # bottom (y_j) then top (y_j+1) quadrilaterals, counter-clockwise seen from +y... C3D8 wants
+                # nodes 1-4 then 5-8 with a positive volume: (x, z) loops are clockwise seen from +y, so go
+                # (i,k) -> (i,k+1) -> (i+1,k+1) -> (i+1,k)
+                e += 1
+                q = [(i, k), (i, k + 1), (i + 1, k + 1), (i + 1, k)]
+                elems.append((e,) + tuple(nid(a, j, b) for a, b in q) + tuple(nid(a, j + 1, b) for a, b in q))
+    return nodes, elems, nid
+
+
+bn, be, bid = block(nb, 2, nb, 0.0, 1.0, 0.0, 0.5, 0.0, 1.0, 0, 0)
+off = 10 ** len(str(len(bn)))
+tn, te, tid = block(n, 1, n, 0.02, 0.98, 0.5, 0.6, 0.02, 0.98, off, off)
+with open(path, "w") as f:
+    w = f.write
+    w("*HEADING\n 3D contact benchmark: %d secondary nodes\n*NODE, NSET=ALL\n" % ((n + 1) ** 2))
+    for nd in bn + tn:
+        w("%d, %.9g, %.9g, %.9g\n" % nd)
+    typ = "C3D8T"
+    w("*ELEMENT, TYPE=%s, ELSET=BASE\n" % typ)
+    for el in be:
+        w(", ".join(str(v) for v in el) + "\n")
+    w("*ELEMENT, TYPE=%s, ELSET=TOP\n" % typ)
+    for el in te:
+        w(", ".join(str(v) for v in el) + "\n")
+    # faces: the base's top (y = 0.5: nodes 5-8 face S2) and the thin block's bottom (nodes 1-4: S1)
+    w("*ELSET, ELSET=BASETOP\n")
+    ids = [el[0] for el in be if el[0] > nb * nb]
+    for k in range(0, len(ids), 16):
+        w(", ".join(str(i) for i in ids[k:k + 16]) + "\n")
+    w("*SURFACE, NAME=MAIN, TYPE=ELEMENT\n BASETOP, S2\n*SURFACE, NAME=SECONDARY, TYPE=ELEMENT\n TOP, S1\n")
+    w("*NSET, NSET=FIXED\n")
+    ids = [nd[0] for nd in bn if nd[2] == 0.0]
+    for k in range(0, len(ids), 16):
+        w(", ".join(str(i) for i in ids[k:k + 16]) + "\n")
+    w("*NSET, NSET=HOT\n")
+    ids = [nd[0] for nd in tn if abs(nd[2] - 0.6) < 1e-12]
+    for k in range(0, len(ids), 16):
+        w(", ".join(str(i) for i in ids[k:k + 16]) + "\n")
+    w("*MATERIAL, NAME=STEEL\n*ELASTIC\n %g, 0.3\n*CONDUCTIVITY\n 50.0\n*EXPANSION\n 1.2E-5\n*DENSITY\n 7.8E-9\n*SPECIFIC HEAT\n 4.6E8\n" % E)
+    w("*SOLID SECTION, ELSET=BASE, MATERIAL=STEEL\n*SOLID SECTION, ELSET=TOP, MATERIAL=STEEL\n")
+    w("*SURFACE INTERACTION, NAME=IFACE\n")
+    if flavour == "calculix":
+        # the penalty thermoslide uses by default: 10 E / main face size
+        w("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n %g\n" % (10 * E * nb))
+    w("*GAP CONDUCTANCE\n 1000.0, 0.0\n 2000.0, 200.0\n")
+    w("*CONTACT PAIR, INTERACTION=IFACE%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if flavour == "calculix" else ""))
+    w("*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+    w("*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n")
+    w("*BOUNDARY\n FIXED, 1, 3\n FIXED, 11, 11, 0.0\n HOT, 1, 1\n HOT, 3, 3\n HOT, 11, 11, 100.0\n")
+    w("*DLOAD\n TOP, P2, 100.0\n")
+    w("*NODE FILE\n U, NT\n*END STEP\n")
