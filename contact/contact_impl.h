@@ -184,8 +184,8 @@ PetscErrorCode TslContactHeatFlux(const TslContactLaw *law, TslDual pN, PetscBoo
  * displacement components per node followed by theta (index dim), nu unknowns per node:
  *   R_s = -A traction, R_a = A N_a traction, Rth_s = -A (q + f heat), Rth_a = A N_a (q - (1 - f) heat).
  * Rows beyond these (the twist's phi rows) are zeroed for the caller to fill. */
-void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[], const TslDual traction[],
-                            TslDual q, TslDual heat, TslDual Rd[]);
+void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[],
+                            const TslDual traction[], TslDual q, TslDual heat, TslDual Rd[]);
 
 /* R (values) and K = dR/du (slots 0..ndof-1), either may be NULL. */
 void TslContactDualExtract(PetscInt ndof, const TslDual Rd[], PetscReal R[], PetscReal K[]);
@@ -215,3 +215,49 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
 /* Builds the geometry from the input; seed = PETSC_TRUE seeds the displacement unknowns in their slots
  * (nu k + d for node k, nu = TslContactNodeUnknowns(in->kin)). */
 PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, TslContactGeom *geo, PetscInt *nnode);
+
+/* ---------------------------------------------------------------------------------------------------
+ * 3D faces (face3.c): one row per family, as face.c's rows for the 2D faces
+ * ------------------------------------------------------------------------------------------------- */
+typedef struct {
+  const TslGeometry *geom;      /* the catalogue's family: nnode, shape on its own reference coordinates, as_face rule */
+  PetscReal          centre[2]; /* where the projection starts */
+  PetscReal          size;      /* reference span of the face (quad 2, triangle 1): the band beyond the edges and step limits */
+  /* the face in reference coordinates: xi_i in [lo, hi] for both, xi_1 + xi_2 <= sum (triangles) */
+  PetscReal lo, hi, sum;
+  PetscBool affine; /* x(xi) is affine in xi for a face of this family (tri3): the closest point in one Newton step */
+  /* distances from the edges, in units of the face (quads: (1 - |xi_i|)/2 for the two directions; triangles:
+   * the barycentric coordinates), for the normal smoothing; returns how many */
+  PetscInt (*edge_distance)(const TslDual xi[2], TslDual d[3]);
+  /* control points of the face's Bernstein form, hull[i][a]: the face lies in their convex hull */
+  PetscReal hull[TSL_CONTACT3_MAX_FACE_NODES][TSL_CONTACT3_MAX_FACE_NODES];
+} TslContactFace3;
+
+const TslContactFace3 *TslContactFace3Get(PetscInt kind);
+
+/* TslContactOutput.outside: beyond an edge by more than this (reference units), as the 2D pairing's 1e-6 of a
+ * segment, so that round-off at a shared edge does not make a node bounce between two faces. */
+#define TSL_CONTACT3_INSIDE_TOL 1e-6
+
+/* N, dN/dxi_alpha and d2N/dxi_alpha dxi_beta of the face's nodes at xi[2] (any real values). */
+void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], PetscReal N[], PetscReal dN[][2], PetscReal d2N[][2][2]);
+
+/* Position p (relative to x[0]... as the nodes are given), tangents a[alpha] = dx/dxi_alpha and, when N
+ * is not NULL, the shape functions N_a of a face with dual node positions x[nnode][3] at dual parameters
+ * xi[2]: derivatives flow through the nodes and through xi (with the second derivatives of N). */
+void TslContactFace3PointDual(const TslContactFace3 *face, const TslDual x[][3], const TslDual xi[2], TslDual p[3], TslDual a[2][3], TslDual N[]);
+
+/* A root of F(xi) = 0 for two face parameters by Newton, with dF/dxi from the dual slots TSL_DUAL_XI,
+ * TSL_DUAL_ETA of fn's F: from xi[] as given, steps limited to `step` (reference units), a step down
+ * the gradient of |x_s - x|^2 where -dF/dxi is not positive definite (far on the concave side), and
+ * stopped (*frozen) where the iterate leaves the band of one face size around the face (clamped to it).
+ * tol: on the step, in reference units. */
+typedef PetscErrorCode (*TslContactFace3Function)(void *ctx, const PetscReal xi[2], TslDual F[2]);
+PetscErrorCode TslContactFace3Solve(const TslContactFace3 *face, TslContactFace3Function fn, void *ctx, PetscReal step, PetscReal tol,
+                                    PetscReal xi[2], PetscBool *frozen);
+
+/* x = A^{-1} b for a 2x2 A; PETSC_FALSE when A is singular (to working precision). */
+PetscBool TslContactSolve2(const PetscReal A[2][2], const PetscReal b[2], PetscReal x[2]);
+
+/* Characteristic length of a face with node coordinates x[3*a + d]: the largest distance from its first node. */
+PetscReal TslContactFace3Size(const TslContactFace3 *face, const PetscReal x[]);

@@ -257,8 +257,8 @@ PetscErrorCode TslContactHeatFlux(const TslContactLaw *law, TslDual pN, PetscBoo
 
 /* Residual = internal - external: the contact force and the heat inflow are external to each node. The
  * sum of the thermal rows is -A heat: conduction and radiation move heat across, friction adds it. */
-void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[], const TslDual traction[],
-                            TslDual q, TslDual heat, TslDual Rd[])
+void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[],
+                            const TslDual traction[], TslDual q, TslDual heat, TslDual Rd[])
 {
   for (PetscInt i = 0; i < nu * nnode; i++) Rd[i] = DConst(0);
   for (PetscInt d = 0; d < dim; d++) {
