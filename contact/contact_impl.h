@@ -7,12 +7,15 @@
  * tests still compare it against finite differences.
  *
  * Slots 0..TSL_CONTACT_MAX_DOF-1 are the element unknowns, slot TSL_DUAL_XI is the projection parameter xi
- * (used to get dF/dxi in the projection Newton iteration and the implicit derivative dxi/du). */
+ * (used to get dF/dxi in the projection Newton iteration and the implicit derivative dxi/du), and slot
+ * TSL_DUAL_ETA the second surface parameter of the 3D faces (unused, always zero, in 2D). Each slot is
+ * computed on its own, so the extra slot leaves every 2D derivative unchanged to the last bit. */
 #pragma once
 #include <thermoslide/contact.h>
 
-#define TSL_DUAL_XI TSL_CONTACT_MAX_DOF
-#define TSL_DUAL_N  (TSL_CONTACT_MAX_DOF + 1)
+#define TSL_DUAL_XI  TSL_CONTACT_MAX_DOF
+#define TSL_DUAL_ETA (TSL_CONTACT_MAX_DOF + 1)
+#define TSL_DUAL_N   (TSL_CONTACT_MAX_DOF + 2)
 
 typedef struct {
   PetscReal v;
@@ -97,6 +100,24 @@ static inline TslDual DChain(TslDual a, PetscReal fv, PetscReal df)
   return r;
 }
 
+/* f(a, b) of two duals with f = fv, df/da = dfa, df/db = dfb: shape functions of the two surface parameters. */
+static inline TslDual DChain2(TslDual a, TslDual b, PetscReal fv, PetscReal dfa, PetscReal dfb)
+{
+  TslDual r;
+  r.v = fv;
+  for (PetscInt i = 0; i < TSL_DUAL_N; i++) r.d[i] = dfa * a.d[i] + dfb * b.d[i];
+  return r;
+}
+
+/* h(t) = 3t^2 - 2t^3 clamped to [0, 1] (constant outside): the C1 ramp of the normal smoothing, with zero
+ * slope at both ends of the rounded zone. */
+static inline TslDual DSmoothStep(TslDual t)
+{
+  if (t.v >= 1) return DConst(1);
+  if (t.v <= 0) return DConst(0);
+  return DMul(DMul(t, t), DAddC(DScale(-2, t), 3));
+}
+
 static inline TslDual DPow4(TslDual a)
 {
   PetscReal a3 = a.v * a.v * a.v;
@@ -108,6 +129,66 @@ static inline TslDual DDot(const TslDual a[2], const TslDual b[2])
 {
   return DAdd(DMul(a[0], b[0]), DMul(a[1], b[1]));
 }
+
+static inline TslDual DDot3(const TslDual a[3], const TslDual b[3])
+{
+  return DAdd(DAdd(DMul(a[0], b[0]), DMul(a[1], b[1])), DMul(a[2], b[2]));
+}
+
+static inline void DCross(const TslDual a[3], const TslDual b[3], TslDual c[3])
+{
+  c[0] = DSub(DMul(a[1], b[2]), DMul(a[2], b[1]));
+  c[1] = DSub(DMul(a[2], b[0]), DMul(a[0], b[2]));
+  c[2] = DSub(DMul(a[0], b[1]), DMul(a[1], b[0]));
+}
+
+/* ---------------------------------------------------------------------------------------------------
+ * Interaction laws shared by the 2D (laws.c) and 3D (kernel3.c) elements: they see the gap, the slip
+ * components and the temperatures, never the geometry they came from.
+ * ------------------------------------------------------------------------------------------------- */
+
+/* The slip of one element as nc components (2D: along tau, and circumferential with twist; 3D: along
+ * t1, t2): e = slip from the sticking anchor, ds = slip increment from the start of the increment. */
+typedef struct {
+  PetscInt nc;
+  TslDual  e[2], ds[2];
+} TslContactSlip;
+
+/* What the friction law returns. The anchor itself is the caller's (a parameter on its face): the law
+ * says whether it stays (keep_anchor: stick) or moves so that the slip from it becomes `elastic` (the
+ * elastic slip left after the return mapping; zero when open or frictionless: a new contact starts
+ * stress-free at the current point). */
+typedef struct {
+  TslDual          t[2];         /* shear stress components (signed like the slip they resist) */
+  TslDual          D;            /* dissipation rate per area (before eta) */
+  PetscReal        slip_diss[2]; /* dissipative slip increments */
+  PetscBool        keep_anchor;
+  PetscReal        elastic[2];
+  TslContactStatus status;
+} TslContactFriction;
+
+/* Normal pressure pN (penalty or augmented) and whether the law is on its closed branch, touching up to
+ * 1e-12 of the face size L. */
+TslDual TslContactNormalPressure(const TslContactLaw *law, const TslContactState *h, TslDual g, PetscReal L, PetscBool *closed);
+
+/* Coulomb friction on the slip vector sl (PENALTY with return mapping, LAGRANGE); dt the increment. */
+PetscErrorCode TslContactFrictionLaw(const TslContactLaw *law, PetscReal dt, TslDual pN, const TslContactSlip *sl, TslContactFriction *fs);
+
+/* Heat flux per area from the main surface into the secondary node, q = k (theta_m - theta_s) +
+ * C [(theta_m - theta_Z)^4 - (theta_s - theta_Z)^4], with the conductance k and radiation constant C
+ * used. */
+PetscErrorCode TslContactHeatFlux(const TslContactLaw *law, TslDual pN, PetscBool closed, TslDual g, TslDual theta_s, TslDual theta_m, TslDual *k,
+                                  TslDual *C, TslDual *q);
+
+/* Residual rows of a node-to-face element in duals, nper main nodes with shape functions N[], dim
+ * displacement components per node followed by theta (index dim), nu unknowns per node:
+ *   R_s = -A traction, R_a = A N_a traction, Rth_s = -A (q + f heat), Rth_a = A N_a (q - (1 - f) heat).
+ * Rows beyond these (the twist's phi rows) are zeroed for the caller to fill. */
+void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[],
+                            const TslDual traction[], TslDual q, TslDual heat, TslDual Rd[]);
+
+/* R (values) and K = dR/du (slots 0..ndof-1), either may be NULL. */
+void TslContactDualExtract(PetscInt ndof, const TslDual Rd[], PetscReal R[], PetscReal K[]);
 
 /* Geometry of one element in dual numbers (current coordinates of all nodes present, relative to the
  * reference position of m1). The neighbouring segments are stored whole, in their face order, the node
@@ -134,3 +215,49 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
 /* Builds the geometry from the input; seed = PETSC_TRUE seeds the displacement unknowns in their slots
  * (nu k + d for node k, nu = TslContactNodeUnknowns(in->kin)). */
 PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, TslContactGeom *geo, PetscInt *nnode);
+
+/* ---------------------------------------------------------------------------------------------------
+ * 3D faces (face3.c): one row per family, as face.c's rows for the 2D faces
+ * ------------------------------------------------------------------------------------------------- */
+typedef struct {
+  const TslGeometry *geom;      /* the catalogue's family: nnode, shape on its own reference coordinates, as_face rule */
+  PetscReal          centre[2]; /* where the projection starts */
+  PetscReal          size;      /* reference span of the face (quad 2, triangle 1): the band beyond the edges and step limits */
+  /* the face in reference coordinates: xi_i in [lo, hi] for both, xi_1 + xi_2 <= sum (triangles) */
+  PetscReal lo, hi, sum;
+  PetscBool affine; /* x(xi) is affine in xi for a face of this family (tri3): the closest point in one Newton step */
+  /* distances from the edges, in units of the face (quads: (1 - |xi_i|)/2 for the two directions; triangles:
+   * the barycentric coordinates), for the normal smoothing; returns how many */
+  PetscInt (*edge_distance)(const TslDual xi[2], TslDual d[3]);
+  /* control points of the face's Bernstein form, hull[i][a]: the face lies in their convex hull */
+  PetscReal hull[TSL_CONTACT3_MAX_FACE_NODES][TSL_CONTACT3_MAX_FACE_NODES];
+} TslContactFace3;
+
+const TslContactFace3 *TslContactFace3Get(PetscInt kind);
+
+/* TslContactOutput.outside: beyond an edge by more than this (reference units), as the 2D pairing's 1e-6 of a
+ * segment, so that round-off at a shared edge does not make a node bounce between two faces. */
+#define TSL_CONTACT3_INSIDE_TOL 1e-6
+
+/* N, dN/dxi_alpha and d2N/dxi_alpha dxi_beta of the face's nodes at xi[2] (any real values). */
+void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], PetscReal N[], PetscReal dN[][2], PetscReal d2N[][2][2]);
+
+/* Position p (relative to x[0]... as the nodes are given), tangents a[alpha] = dx/dxi_alpha and, when N
+ * is not NULL, the shape functions N_a of a face with dual node positions x[nnode][3] at dual parameters
+ * xi[2]: derivatives flow through the nodes and through xi (with the second derivatives of N). */
+void TslContactFace3PointDual(const TslContactFace3 *face, const TslDual x[][3], const TslDual xi[2], TslDual p[3], TslDual a[2][3], TslDual N[]);
+
+/* A root of F(xi) = 0 for two face parameters by Newton, with dF/dxi from the dual slots TSL_DUAL_XI,
+ * TSL_DUAL_ETA of fn's F: from xi[] as given, steps limited to `step` (reference units), a step down
+ * the gradient of |x_s - x|^2 where -dF/dxi is not positive definite (far on the concave side), and
+ * stopped (*frozen) where the iterate leaves the band of one face size around the face (clamped to it).
+ * tol: on the step, in reference units. */
+typedef PetscErrorCode (*TslContactFace3Function)(void *ctx, const PetscReal xi[2], TslDual F[2]);
+PetscErrorCode TslContactFace3Solve(const TslContactFace3 *face, TslContactFace3Function fn, void *ctx, PetscReal step, PetscReal tol,
+                                    PetscReal xi[2], PetscBool *frozen);
+
+/* x = A^{-1} b for a 2x2 A; PETSC_FALSE when A is singular (to working precision). */
+PetscBool TslContactSolve2(const PetscReal A[2][2], const PetscReal b[2], PetscReal x[2]);
+
+/* Characteristic length of a face with node coordinates x[3*a + d]: the largest distance from its first node. */
+PetscReal TslContactFace3Size(const TslContactFace3 *face, const PetscReal x[]);

@@ -45,9 +45,7 @@ static void NormalOfTangent(const TslDual t[2], TslDual n[2])
  * of the zone) and both segments meet at the average normal. */
 static TslDual BlendWeight(TslDual t)
 {
-  if (t.v >= 1) return DConst(0.5);
-  if (t.v <= 0) return DConst(0);
-  return DScale(0.5, DMul(DMul(t, t), DAddC(DScale(-2, t), 3)));
+  return DScale(0.5, DSmoothStep(t));
 }
 
 /* Normal of the neighbouring segment nb[] at the point as far from the shared node as xi is on this one:

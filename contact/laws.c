@@ -82,7 +82,7 @@ PetscErrorCode TslContactStateUpdate(const TslContactOutput *out, TslContactStat
  * in contact are held from the first Newton iteration. */
 /* *closed: touching or pressed, with "touching" up to the round-off of the gap (1e-12 of the segment
  * length L), so that node-on-node meshes whose coordinates differ in the last digit still start closed. */
-static TslDual NormalPressure(const TslContactLaw *law, const TslContactState *h, TslDual g, PetscReal L, PetscBool *closed)
+TslDual TslContactNormalPressure(const TslContactLaw *law, const TslContactState *h, TslDual g, PetscReal L, PetscBool *closed)
 {
   TslDual a = DScale(-law->eps_n, g);
 
@@ -98,23 +98,6 @@ PetscInt TslContactNodeUnknowns(TslKinematics kin)
 {
   return (PetscInt)kin >= 0 && kin < TSL_NKIN && TslKinematicsTwists(kin) ? 4 : 3;
 }
-
-/* The slip of one element as nc components: the in-plane one along tau and, with twist, the
- * circumferential one. e = slip from the anchor, ds = slip increment (from the start of the increment). */
-typedef struct {
-  PetscInt nc;
-  TslDual  e[2], ds[2];
-  TslDual  xi, L, w; /* projection, metric |t| at xi, relative circumferential displacement (twist) */
-} Slip;
-
-typedef struct {
-  TslDual          t[2];         /* shear stresses (in-plane tT, circumferential tW) */
-  TslDual          D;            /* dissipation rate per area (before eta) */
-  PetscReal        slip_diss[2]; /* dissipative slip increments */
-  PetscReal        anchor;       /* updated sticking anchor (in-plane, parameter xi) */
-  PetscReal        w_anchor;     /* updated circumferential anchor */
-  TslContactStatus status;
-} FrictionState;
 
 /* |v| of an nc-component slip or traction (value only: no derivative of the norm at v = 0). */
 static PetscReal MagnitudeValue(PetscInt nc, const TslDual v[2])
@@ -136,14 +119,15 @@ static void Direction(PetscInt nc, const TslDual v[2], TslDual dir[2])
   }
 }
 
-/* Coulomb friction on the slip vector (one component, or two with twist: the isotropic law, |t| <= mu pN,
- * slip along the trial traction). PENALTY: elastic predictor t* = eps_t e, radial return onto the circle
- * |t| = mu pN; the plastic slip (t* - t)/eps_t dissipates. LAGRANGE: t = mu pN e/|e|, e the slip from an
- * anchor that trails the node by slip_tol along the slip direction, e/|e| replaced by e/slip_tol for
+/* Coulomb friction on the slip vector (one component, or two with twist and in 3D: the isotropic law,
+ * |t| <= mu pN, slip along the trial traction). PENALTY: elastic predictor t* = eps_t e, radial return onto
+ * the circle |t| = mu pN; the plastic slip (t* - t)/eps_t dissipates. LAGRANGE: t = mu pN e/|e|, e the slip
+ * from an anchor that trails the node by slip_tol along the slip direction, e/|e| replaced by e/slip_tol for
  * |e| < slip_tol; the dissipation is t . ds over the increment's whole slip ds, so t . ds = mu pN |ds|
  * exactly while the node slips in a fixed direction (all relative motion becomes heat, as the spec's
- * frictional-heating tests require). */
-static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *in, TslDual pN, const Slip *sl, FrictionState *fs)
+ * frictional-heating tests require). The law returns the elastic slip left after the return; each kernel
+ * turns it into an anchor on its own face (2D: a parameter xi, 3D: a point (xi, eta)). */
+PetscErrorCode TslContactFrictionLaw(const TslContactLaw *law, PetscReal dt, TslDual pN, const TslContactSlip *sl, TslContactFriction *fs)
 {
   const PetscInt nc = sl->nc;
 
@@ -151,11 +135,11 @@ static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *
   for (PetscInt c = 0; c < 2; c++) {
     fs->t[c]         = DConst(0);
     fs->slip_diss[c] = 0;
+    fs->elastic[c]   = 0; /* open or frictionless: a new contact starts stress-free */
   }
-  fs->D        = DConst(0);
-  fs->anchor   = sl->xi.v; /* open or frictionless: a new contact starts stress-free */
-  fs->w_anchor = sl->w.v;
-  fs->status   = pN.v > 0 ? TSL_CONTACT_SLIP : TSL_CONTACT_OPEN;
+  fs->D           = DConst(0);
+  fs->keep_anchor = PETSC_FALSE;
+  fs->status      = pN.v > 0 ? TSL_CONTACT_SLIP : TSL_CONTACT_OPEN;
   if (pN.v <= 0 || law->friction == TSL_CONTACT_FRICTION_NONE || law->mu == 0) PetscFunctionReturn(PETSC_SUCCESS);
   if (law->friction == TSL_CONTACT_FRICTION_PENALTY) {
     /* elastic slip e from the anchor; stick stiffness eps_t, or mu pN / e_max (automatic: the stick limit is
@@ -168,9 +152,8 @@ static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *
     for (PetscInt c = 0; c < nc; c++) trial[c] = DMul(eps_t, sl->e[c]);
     if (MagnitudeValue(nc, trial) <= limit.v) {
       for (PetscInt c = 0; c < nc; c++) fs->t[c] = trial[c];
-      fs->anchor   = in->hist.xi_anchor;
-      fs->w_anchor = in->hist.w_anchor;
-      fs->status   = TSL_CONTACT_STICK;
+      fs->keep_anchor = PETSC_TRUE;
+      fs->status      = TSL_CONTACT_STICK;
     } else {
       TslDual dir[2], slip[2];
 
@@ -181,10 +164,9 @@ static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *
         fs->t[c]         = DMul(limit, dir[c]);
         slip[c]          = law->elastic_slip > 0 ? DSub(sl->e[c], DScale(law->elastic_slip, dir[c])) : DScale(1 / law->eps_t, DSub(trial[c], fs->t[c]));
         fs->slip_diss[c] = slip[c].v;
+        fs->elastic[c]   = sl->e[c].v - slip[c].v;
         fs->D            = c == 0 ? DMul(fs->t[c], slip[c]) : DAdd(fs->D, DMul(fs->t[c], slip[c]));
       }
-      fs->anchor = sl->xi.v - (sl->e[0].v - slip[0].v) / sl->L.v;
-      if (nc == 2) fs->w_anchor = sl->w.v - (sl->e[1].v - slip[1].v);
     }
   } else {
     /* the regularised direction is measured from the anchor, which trails the node by slip_tol while it
@@ -200,13 +182,11 @@ static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *
     if (MagnitudeValue(nc, sl->e) >= tol) {
       Direction(nc, sl->e, dir);
       /* just beyond the ramp, so that round-off in the next increment's e does not fall back onto it */
-      fs->anchor = sl->xi.v - dir[0].v * tol * (1 + 1e-6) / sl->L.v;
-      if (nc == 2) fs->w_anchor = sl->w.v - dir[1].v * tol * (1 + 1e-6);
+      for (PetscInt c = 0; c < nc; c++) fs->elastic[c] = dir[c].v * tol * (1 + 1e-6);
     } else {
       for (PetscInt c = 0; c < nc; c++) dir[c] = DScale(1 / tol, sl->e[c]);
-      fs->anchor   = in->hist.xi_anchor;
-      fs->w_anchor = in->hist.w_anchor;
-      fs->status   = TSL_CONTACT_STICK;
+      fs->keep_anchor = PETSC_TRUE;
+      fs->status      = TSL_CONTACT_STICK;
     }
     for (PetscInt c = 0; c < nc; c++) {
       fs->t[c]         = DMul(mup, dir[c]);
@@ -215,8 +195,8 @@ static PetscErrorCode Friction(const TslContactLaw *law, const TslContactInput *
     }
   }
   /* dissipated energy per area over the increment -> rate */
-  if (law->eta != 0) PetscCheck(in->dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Frictional heating needs dt > 0");
-  fs->D = in->dt > 0 ? DScale(1 / in->dt, fs->D) : DConst(0);
+  if (law->eta != 0) PetscCheck(dt > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Frictional heating needs dt > 0");
+  fs->D = dt > 0 ? DScale(1 / dt, fs->D) : DConst(0);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -264,6 +244,40 @@ static PetscErrorCode RadiationConstant(const TslContactLaw *law, TslDual g, Tsl
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslContactHeatFlux(const TslContactLaw *law, TslDual pN, PetscBool closed, TslDual g, TslDual theta_s, TslDual theta_m, TslDual *k,
+                                  TslDual *C, TslDual *q)
+{
+  PetscFunctionBeginUser;
+  PetscCall(Conductance(law, pN, closed, g, k));
+  PetscCall(RadiationConstant(law, g, C));
+  *q = DMul(*k, DSub(theta_m, theta_s));
+  if (C->v != 0) *q = DAdd(*q, DMul(*C, DSub(DPow4(DAddC(theta_m, -law->theta_zero)), DPow4(DAddC(theta_s, -law->theta_zero)))));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Residual = internal - external: the contact force and the heat inflow are external to each node. The
+ * sum of the thermal rows is -A heat: conduction and radiation move heat across, friction adds it. */
+void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[],
+                            const TslDual traction[], TslDual q, TslDual heat, TslDual Rd[])
+{
+  for (PetscInt i = 0; i < nu * nnode; i++) Rd[i] = DConst(0);
+  for (PetscInt d = 0; d < dim; d++) {
+    Rd[d] = DScale(-area, traction[d]);
+    for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + d] = DScale(area, DMul(N[a], traction[d]));
+  }
+  Rd[dim] = DScale(-area, DAdd(q, DScale(f, heat)));
+  for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + dim] = DScale(area, DMul(N[a], DSub(q, DScale(1 - f, heat))));
+}
+
+void TslContactDualExtract(PetscInt ndof, const TslDual Rd[], PetscReal R[], PetscReal K[])
+{
+  if (R)
+    for (PetscInt i = 0; i < ndof; i++) R[i] = Rd[i].v;
+  if (K)
+    for (PetscInt i = 0; i < ndof; i++)
+      for (PetscInt j = 0; j < ndof; j++) K[i * ndof + j] = Rd[i].d[j];
+}
+
 /* Contact area of the secondary node: its tributary length times the thickness (plane), or times 2 pi r
  * at its reference radius for both axisymmetric kinematics. */
 static PetscReal NodeArea(const TslContactInput *in)
@@ -291,14 +305,15 @@ static TslDual RelativeTwist(const TslContactInput *in, PetscInt nper, const Tsl
 
 PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out)
 {
-  TslContactGeom geo;
-  PetscInt       nnode, ndof, nper, nu;
-  PetscReal      xi_raw, area, Nv[TSL_CONTACT_MAX_FACE_NODES], dNv[TSL_CONTACT_MAX_FACE_NODES], d2Nv[TSL_CONTACT_MAX_FACE_NODES];
-  TslDual        xi, n[2], tau[2], r[2], xm[2], t[2], g, L, pN, traction[2], k, C, q, theta_s, theta_m, heat, Rm = DConst(0);
-  TslDual        N[TSL_CONTACT_MAX_FACE_NODES], Rd[TSL_CONTACT_MAX_DOF];
-  Slip           sl;
-  FrictionState  fs;
-  PetscBool      closed;
+  TslContactGeom     geo;
+  PetscInt           nnode, ndof, nper, nu;
+  PetscReal          xi_raw, area, Nv[TSL_CONTACT_MAX_FACE_NODES], dNv[TSL_CONTACT_MAX_FACE_NODES], d2Nv[TSL_CONTACT_MAX_FACE_NODES];
+  PetscReal          anchor = in->hist.xi_anchor, w_anchor = in->hist.w_anchor;
+  TslDual            xi, n[2], tau[2], r[2], xm[2], t[2], g, L, pN, traction[2], k, C, q, theta_s, theta_m, heat, w, Rm = DConst(0);
+  TslDual            N[TSL_CONTACT_MAX_FACE_NODES], Rd[TSL_CONTACT_MAX_DOF];
+  TslContactSlip     sl;
+  TslContactFriction fs;
+  PetscBool          closed;
 
   PetscFunctionBeginUser;
   PetscCheck(in->length > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Tributary length must be positive");
@@ -319,55 +334,43 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   TslContactFaceShape(geo.face, xi.v, Nv, dNv, d2Nv);
   for (PetscInt a = 0; a < nper; a++) N[a] = DChain(xi, Nv[a], dNv[a]);
   sl.nc    = TslKinematicsTwists(in->kin) ? 2 : 1;
-  sl.xi    = xi;
-  sl.L     = L;
   sl.ds[0] = DMul(L, DAddC(xi, -in->hist.xi_old));
   sl.e[0]  = DMul(L, DAddC(xi, -in->hist.xi_anchor));
-  sl.w     = DConst(0);
+  w        = DConst(0);
   sl.ds[1] = sl.e[1] = DConst(0);
   if (sl.nc == 2) {
     /* circumferential slip: the relative circumferential displacement w from the start of the increment
      * and from the anchor */
-    sl.w     = RelativeTwist(in, nper, N, PETSC_TRUE, &Rm);
-    sl.ds[1] = DAddC(sl.w, -in->hist.w_old);
-    sl.e[1]  = DAddC(sl.w, -in->hist.w_anchor);
+    w        = RelativeTwist(in, nper, N, PETSC_TRUE, &Rm);
+    sl.ds[1] = DAddC(w, -in->hist.w_old);
+    sl.e[1]  = DAddC(w, -in->hist.w_anchor);
   }
 
-  /* mechanical laws */
-  pN = NormalPressure(law, &in->hist, g, L.v, &closed);
-  PetscCall(Friction(law, in, pN, &sl, &fs));
+  /* mechanical laws; a moved anchor lies the elastic slip behind the node along the segment (in xi: the
+   * slip over the metric L) and around the circumference */
+  pN = TslContactNormalPressure(law, &in->hist, g, L.v, &closed);
+  PetscCall(TslContactFrictionLaw(law, in->dt, pN, &sl, &fs));
+  if (!fs.keep_anchor) {
+    anchor   = xi.v - fs.elastic[0] / L.v;
+    w_anchor = w.v - fs.elastic[1];
+  }
   for (PetscInt d = 0; d < 2; d++) traction[d] = DSub(DMul(pN, n[d]), DMul(fs.t[0], tau[d]));
 
   /* thermal laws */
   theta_s = DVar(in->u[0][2], 2);
   theta_m = DConst(0);
   for (PetscInt a = 0; a < nper; a++) theta_m = DAdd(theta_m, DMul(N[a], DVar(in->u[1 + a][2], nu * (1 + a) + 2)));
-  PetscCall(Conductance(law, pN, closed, g, &k));
-  PetscCall(RadiationConstant(law, g, &C));
-  q = DMul(k, DSub(theta_m, theta_s));
-  if (C.v != 0) q = DAdd(q, DMul(C, DSub(DPow4(DAddC(theta_m, -law->theta_zero)), DPow4(DAddC(theta_s, -law->theta_zero)))));
+  PetscCall(TslContactHeatFlux(law, pN, closed, g, theta_s, theta_m, &k, &C, &q));
   heat = DScale(law->eta, fs.D);
 
-  /* residual: internal - external; contact force and heat inflow are external to each node. With twist the
-   * circumferential friction force -A tW on s (+A tW at the main point) does the virtual work
-   * -A tW (R_s dphi_s - R_m N_a dphi_a): moments on the phi rows. */
-  for (PetscInt i = 0; i < ndof; i++) Rd[i] = DConst(0);
-  for (PetscInt d = 0; d < 2; d++) {
-    Rd[d] = DScale(-area, traction[d]);
-    for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + d] = DScale(area, DMul(N[a], traction[d]));
-  }
-  Rd[2] = DScale(-area, DAdd(q, DScale(law->f, heat)));
-  for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + 2] = DScale(area, DMul(N[a], DSub(q, DScale(1 - law->f, heat))));
+  /* residual. With twist the circumferential friction force -A tW on s (+A tW at the main point) does the
+   * virtual work -A tW (R_s dphi_s - R_m N_a dphi_a): moments on the phi rows. */
+  TslContactResidualRows(area, law->f, 2, nu, nnode, nper, N, traction, q, heat, Rd);
   if (sl.nc == 2) {
     Rd[3] = DScale(area * in->x[0][0], fs.t[1]);
     for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + 3] = DScale(-area, DMul(DMul(N[a], Rm), fs.t[1]));
   }
-
-  if (R)
-    for (PetscInt i = 0; i < ndof; i++) R[i] = Rd[i].v;
-  if (K)
-    for (PetscInt i = 0; i < ndof; i++)
-      for (PetscInt j = 0; j < ndof; j++) K[i * ndof + j] = Rd[i].d[j];
+  TslContactDualExtract(ndof, Rd, R, K);
   if (out) {
     out->nnode                 = nnode;
     out->nu                    = nu;
@@ -382,7 +385,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
     out->slip                  = sl.ds[0].v;
     out->shear                 = fs.t[0].v;
     out->slip_dissipative      = fs.slip_diss[0];
-    out->w                     = sl.w.v;
+    out->w                     = w.v;
     out->slip_circ             = sl.ds[1].v;
     out->shear_circ            = fs.t[1].v;
     out->slip_dissipative_circ = fs.slip_diss[1];
@@ -392,8 +395,10 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
     out->dissipation_rate      = fs.D.v;
     out->heat_generation       = heat.v;
     out->status                = fs.status;
-    out->xi_anchor             = fs.anchor;
-    out->w_anchor              = fs.w_anchor;
+    out->xi_anchor             = anchor;
+    out->w_anchor              = w_anchor;
+    out->eta = out->eta_raw = out->eta_anchor = out->normal_z = 0;
+    out->outside                                              = 0;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
