@@ -627,3 +627,8 @@ void TslProblemContactNodeData(TslProblem p, const TslContactSurface *cs, const 
 {
   NodeData(p, cs, xa, l, x, u);
 }
+
+PetscErrorCode TslProblemContactFaceMetric(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt seg, PetscReal xi, PetscReal *L)
+{
+  return FaceMetric(p, cs, xa, seg, xi, L);
+}

@@ -141,18 +141,6 @@ PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const Pe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The metric |dx/dxi| of main face seg (current) at xi. */
-static PetscErrorCode Metric(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt seg, PetscReal xi, PetscReal *L)
-{
-  PetscReal y[2 * TSL_CONTACT_MAX_FACE_NODES], t[2];
-
-  PetscFunctionBeginUser;
-  MainFace(p, cs, xa, seg, y);
-  PetscCall(TslContactFaceEvaluate(cs->face, y, xi, NULL, t));
-  *L = PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* The portable history of a face's points in contact at the state xa, averaged to the face's nodes:
  * H[NH*b + k], and the face mean Hm[k]; *any when some point was in contact. */
 static PetscErrorCode PortableHistory(TslProblem p, const S2SFace *fc, const S2SPoint *pts, PetscInt npt, const PetscScalar *xa, PetscReal H[],
@@ -176,7 +164,7 @@ static PetscErrorCode PortableHistory(TslProblem p, const S2SFace *fc, const S2S
     if (pt->seg < 0) continue;
     PetscCall(PointInput(p, fc, pt, xa, &in, nodes, &n, &nb));
     PetscCall(TslContactElement(&cs->law, &in, NULL, NULL, &out));
-    PetscCall(Metric(p, cs, xa, pt->seg, out.xi, &L));
+    PetscCall(TslProblemContactFaceMetric(p, cs, xa, pt->seg, out.xi, &L));
     v[0] = L * (out.xi - pt->hist.xi_old);
     v[1] = L * (out.xi - pt->hist.xi_anchor);
     v[2] = pt->hist.lambda;
@@ -337,7 +325,7 @@ static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, Pe
     PetscCall(TslContactStateStart(&in, xi, &pt->hist));
     if (!any) continue;
     /* carried over: interpolated from the face's nodes */
-    PetscCall(Metric(p, cs, xa, pt->seg, xi, &L));
+    PetscCall(TslProblemContactFaceMetric(p, cs, xa, pt->seg, xi, &L));
     TslContactFaceShape(face, pt->zeta, N, dN, d2N);
     for (PetscInt k = 0; k < NH; k++) {
       v[k] = 0;
@@ -467,6 +455,20 @@ static PetscErrorCode NodalValues(TslProblem p, PetscInt which, PetscReal v[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* dst[0..n) = src[0..n), dst grown as needed (committed <-> current point lists). */
+static PetscErrorCode CopyPoints(const S2SPoint *src, PetscInt n, S2SPoint **dst, PetscInt *cap, PetscInt *ndst)
+{
+  PetscFunctionBeginUser;
+  if (*cap < n) {
+    PetscCall(PetscFree(*dst));
+    *cap = n;
+    PetscCall(PetscMalloc1(*cap, dst));
+  }
+  if (n) PetscCall(PetscArraycpy(*dst, src, n));
+  *ndst = n;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemContactS2SCommit(TslProblem p)
 {
   TslContactS2S s = p->s2s;
@@ -480,13 +482,7 @@ PetscErrorCode TslProblemContactS2SCommit(TslProblem p)
   PetscCall(PetscFree(slip));
   for (PetscInt q = 0; q < s->npt; q++)
     if (s->pt[q].seg >= 0) PetscCall(TslContactStateUpdate(&s->pt[q].out, &s->pt[q].hist));
-  if (s->cap_c < s->npt) {
-    PetscCall(PetscFree(s->pt_c));
-    s->cap_c = s->cap;
-    PetscCall(PetscMalloc1(s->cap_c, &s->pt_c));
-  }
-  if (s->npt) PetscCall(PetscArraycpy(s->pt_c, s->pt, s->npt));
-  s->npt_c = s->npt;
+  PetscCall(CopyPoints(s->pt, s->npt, &s->pt_c, &s->cap_c, &s->npt_c));
   for (PetscInt i = 0; i < s->nface; i++) s->face[i].first_c = s->face[i].first, s->face[i].npt_c = s->face[i].npt;
   PetscCall(PetscArraycpy(s->cslip_c, s->cslip, p->nn));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -498,13 +494,7 @@ PetscErrorCode TslProblemContactS2SRollback(TslProblem p)
 
   PetscFunctionBeginUser;
   if (!s) PetscFunctionReturn(PETSC_SUCCESS);
-  if (s->cap < s->npt_c) {
-    PetscCall(PetscFree(s->pt));
-    s->cap = s->cap_c;
-    PetscCall(PetscMalloc1(s->cap, &s->pt));
-  }
-  if (s->npt_c) PetscCall(PetscArraycpy(s->pt, s->pt_c, s->npt_c));
-  s->npt = s->npt_c;
+  PetscCall(CopyPoints(s->pt_c, s->npt_c, &s->pt, &s->cap, &s->npt));
   for (PetscInt i = 0; i < s->nface; i++) s->face[i].first = s->face[i].first_c, s->face[i].npt = s->face[i].npt_c;
   PetscCall(PetscArraycpy(s->cslip, s->cslip_c, p->nn));
   if (s->nface) p->pattern_stale = PETSC_TRUE; /* the attempt's cut may have coupled other main faces */

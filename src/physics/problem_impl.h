@@ -161,10 +161,12 @@ PetscErrorCode TslProblemContactDestroy(TslProblem p);
 PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[]);
 /* What surface-to-surface contact takes from node-to-surface (src/physics/contact.c): the kernel input of
  * node cn on its segment (nodes[] in kernel order, *n of them; in points into nb) and a node's reference
- * coordinates and contact unknowns. */
+ * coordinates and contact unknowns; a main face's metric. */
 void TslProblemContactElementInput(TslProblem p, const TslContactNode *cn, const PetscScalar *xa, TslContactInput *in, PetscInt nodes[], PetscInt *n,
                                    TslContactNeighbourData *nb);
 void TslProblemContactNodeData(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[]);
+/* The metric |dx/dxi| of main face seg at xi (current configuration). */
+PetscErrorCode TslProblemContactFaceMetric(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt seg, PetscReal xi, PetscReal *L);
 /* Surface-to-surface contact, called at the end of the node-to-surface functions of the same role. */
 PetscErrorCode TslProblemContactS2SSetUp(TslProblem p);
 PetscErrorCode TslProblemContactS2SDestroy(TslProblem p);
