@@ -245,6 +245,13 @@ typedef struct {
   PetscReal  thickness;   /* out-of-plane thickness of the secondary elements (plane models) */
   PetscInt   kin;         /* TslKinematics of the secondary elements */
   PetscReal  mean_length; /* mean main face length (reference, along the face; 3D: the square root of the mean face area) */
+  /* TYPE=SURFACE TO SURFACE (nsec = 0 then): the secondary faces, snper nodes each in face order, family
+   * sface_kind (a TslContactFaceKind); after distribution each rank keeps the faces with a node it owns (it
+   * holds all their nodes), sface_asm[i] = 1 on the one rank that assembles face i (the owner of its first
+   * node) */
+  PetscInt  nsface, snper, sface_kind;
+  PetscInt *sface_node; /* [snper*nsface] node ids */
+  PetscInt *sface_asm;  /* [nsface] */
 } TslContactPair;
 
 typedef struct {

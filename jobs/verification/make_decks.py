@@ -247,7 +247,7 @@ def faces(shape):
 R_AXI = 2.5
 
 
-def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
+def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, refine=1):
     """The spec's finite-sliding problems: a block 2 x 0.25 (4 x 6 cells) pressed on a block 6 x 1.25
     (12 x 2 cells) fixed at its bottom; total area 8, rho c = 1. The thin upper block passes the applied
     pressure on nearly uniformly (a few % spread), and the blocks' nodes meet along the interface at the
@@ -262,22 +262,24 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
     twist (CGAX) the sliding face also turns by 0.4 rad with the axial slide (circumferential motion,
     the spec's twist tests) and the twist (dof 5) is held where the axial motion is; the
     friction series' radial force 211.6, of which the inner ring's hoop stiffness takes about 5 %, so
-    that the interface carries about 200 as in the planar decks)."""
+    that the interface carries about 200 as in the planar decks).
+    surf: TYPE=SURFACE TO SURFACE (job name *_surf_*); refine: cells per cell each way (job name *_rN_*)."""
     typ = typ.upper()
     shape, order, kin = family_of(typ)
     axi = kin in ("AX", "GAX")
     twist = kin == "GAX"
     # second-order types: half the cells each way (the same node spacing, a quarter of the elements)
     c = 2 if order == 2 else 1
-    bnodes, belems, brows = mesh2d(12 // c, 2 // c, 0.0, 6.0, 0.0, 1.25, shape, order, mirror=3.0)
-    tnodes, telems, trows = mesh2d(4 // c, 6 // c, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000, mirror=3.0)
+    bnodes, belems, brows = mesh2d(12 * refine // c, 2 * refine // c, 0.0, 6.0, 0.0, 1.25, shape, order, mirror=3.0)
+    tnodes, telems, trows = mesh2d(4 * refine // c, 6 * refine // c, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000, mirror=3.0)
     fb, ft = faces(shape)
     base = [n[0] for n in bnodes if abs(n[2]) < 1e-12]
     topface = [n[0] for n in tnodes if abs(n[2] - 1.5) < 1e-12]
     main_elems = brows[-1][1]   # top row of the large block
     sec_elems = trows[0][0]     # bottom row of the small block
     pressed = trows[-1][1]      # top row of the small block
-    filmed = [brows[0][0][k] for k in (6 // c - 1, 6 // c)]  # centre of the large block's bottom
+    # centre of the large block's bottom, 2.5 <= x <= 3.5
+    filmed = [brows[0][0][k] for k in (range(5 * refine // c, 7 * refine // c) if refine > 1 else (6 // c - 1, 6 // c))]
     place = (lambda x, y: (R_AXI - y, x)) if axi else (lambda x, y: (x, y))
     slide, press = ("2", "1") if axi else ("1", "2")
     pscale = (R_AXI - 1.25) / (R_AXI - 1.5) if axi else 1.0
@@ -303,7 +305,7 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
     else:
         text += ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION, LAGRANGE\n 0.1\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n"
                  "*GAP HEAT GENERATION\n 0.5, 0.5\n")
-    text += ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05\n SECONDARY, MAIN\n"
+    text += ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if surf else "") +
              "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n"
              "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
     if series == "friction":
@@ -337,7 +339,7 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None):
                  "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n%s*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, %s, %s, 5.0\n"
                  % (press, press, " TOPFACE, 5, 5\n" if twist else "", slide, slide) +
                  "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S%s, 100.0\n*END STEP\n" % ft)
-    name = "sliding_%s%s_%s.inp" % (series, "_auglagr" if auglagr else "", typ.lower())
+    name = "sliding_%s%s%s%s_%s.inp" % (series, "_auglagr" if auglagr else "", "_surf" if surf else "", "_r%d" % refine if refine > 1 else "", typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:
         f.write(text)
 
@@ -599,12 +601,15 @@ def temperature_tables():
 
 if __name__ == "__main__":
     import sys
-    if len(sys.argv) in (5, 6) and sys.argv[1] == "--sliding":
-        # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR [--auglagr]
+    if len(sys.argv) >= 5 and sys.argv[1] == "--sliding":
+        # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR [--auglagr] [--surf] [--refine=N]
+        flags = sys.argv[5:]
+        refine = [int(f.split("=")[1]) for f in flags if f.startswith("--refine=")]
         if sys.argv[2].upper().startswith("C3D"):
             sliding_blocks_3d(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4])
         else:
-            sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr=sys.argv[5:] == ["--auglagr"])
+            sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr="--auglagr" in flags, surf="--surf" in flags,
+                           refine=refine[0] if refine else 1)
         sys.exit(0)
     contact_jacobian()
     temperature_tables()

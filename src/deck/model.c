@@ -78,6 +78,8 @@ PetscErrorCode TslModelDestroy(TslModel **model)
     PetscCall(PetscFree(c->main_next));
     PetscCall(PetscFree(c->sec_node));
     PetscCall(PetscFree(c->sec_length));
+    PetscCall(PetscFree(c->sface_node));
+    PetscCall(PetscFree(c->sface_asm));
   }
   PetscCall(PetscFree(m->pairs));
   for (PetscInt i = 0; i < m->nstep; i++) {
@@ -368,6 +370,8 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
     PetscCall(PackArray(p, &c->main_next, c->nmain, sizeof(PetscInt)));
     PetscCall(PackArray(p, &c->sec_node, c->nsec, sizeof(PetscInt)));
     PetscCall(PackArray(p, &c->sec_length, c->nsec, sizeof(PetscReal)));
+    PetscCall(PackArray(p, &c->sface_node, c->snper * c->nsface, sizeof(PetscInt)));
+    PetscCall(PackArray(p, &c->sface_asm, c->nsface, sizeof(PetscInt)));
   }
   PetscCall(PackArray(p, &m->steps, m->nstep, sizeof(TslStep)));
   for (PetscInt i = 0; i < m->nstep; i++) {

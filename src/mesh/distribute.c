@@ -89,6 +89,14 @@ static PetscBool IsExtraNode(const TslModel *g, PetscInt p)
   return PETSC_FALSE;
 }
 
+/* Does rank r hold secondary face i of a surface-to-surface pair: does it own one of its nodes? */
+static PetscBool SecondaryFaceHeld(const TslModel *g, const TslContactPair *c, PetscInt i, const PetscInt owner[], PetscInt r)
+{
+  for (PetscInt a = 0; a < c->snper; a++)
+    if (owner[TslModelNodeIndex(g, c->sface_node[c->snper * i + a])] == r) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
+
 /* Builds the part of rank r: its elements, nodes (owned, then ghosts), numbering arrays. */
 static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt epart[], const PetscInt owner[], const PetscInt gnum[],
                                 const PetscInt node_nat[], const PetscInt elem_nat[], const PetscInt elem_by_id[], PetscInt nnode_used,
@@ -118,11 +126,20 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
       }
   }
   /* contact: a rank that owns secondary nodes of a pair holds the whole main surface (as ghosts), so
-   * the main-surface data it needs arrives with every ghost update */
+   * the main-surface data it needs arrives with every ghost update; surface-to-surface: a rank that owns
+   * a node of a secondary face holds the face (all its nodes) and the main surface */
   for (PetscInt k = 0; k < g->npair; k++) {
     const TslContactPair *c    = &g->pairs[k];
     PetscBool             owns = PETSC_FALSE;
     for (PetscInt i = 0; i < c->nsec && !owns; i++) owns = (PetscBool)(owner[TslModelNodeIndex(g, c->sec_node[i])] == r);
+    for (PetscInt i = 0; i < c->nsface; i++)
+      if (SecondaryFaceHeld(g, c, i, owner, r)) {
+        owns = PETSC_TRUE;
+        for (PetscInt a = 0; a < c->snper; a++) {
+          PetscInt q = TslModelNodeIndex(g, c->sface_node[c->snper * i + a]);
+          if (!mark[q]) mark[q] = 2;
+        }
+      }
     for (PetscInt i = 0; owns && i < c->nper * c->nmain; i++) {
       PetscInt q = c->main_node[i] >= 0 ? TslModelNodeIndex(g, c->main_node[i]) : -1;
       if (q >= 0 && !mark[q]) mark[q] = 2;
@@ -144,6 +161,13 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
     for (PetscInt i = 0; i < c->nsec; i++)
       if (owner[TslModelNodeIndex(g, c->sec_node[i])] == r) c->sec_node[n] = c->sec_node[i], c->sec_length[n++] = c->sec_length[i];
     c->nsec = n;
+    n       = 0;
+    for (PetscInt i = 0; i < c->nsface; i++)
+      if (SecondaryFaceHeld(g, &g->pairs[k], i, owner, r)) {
+        for (PetscInt a = 0; a < c->snper; a++) c->sface_node[c->snper * n + a] = c->sface_node[c->snper * i + a];
+        c->sface_asm[n++] = owner[TslModelNodeIndex(g, c->sface_node[c->snper * i])] == r;
+      }
+    c->nsface = n;
   }
   sub->nnode_global = nnode_used;
   sub->nelem_global = g->nelem;
@@ -218,11 +242,61 @@ static PetscErrorCode FaceWeights(PetscInt dim, PetscInt family, const PetscReal
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Does the straight chord of secondary face xs (first two nodes) lie across the main face xm, facing it:
+ * the main face's ends project onto the chord with an overlap of positive length, and the outward normals
+ * (body on the left of both faces) oppose? */
+static PetscBool FacesOverlap(const PetscReal xs[], const PetscReal xm[])
+{
+  PetscReal ts[2] = {xs[2] - xs[0], xs[3] - xs[1]}, tm[2] = {xm[2] - xm[0], xm[3] - xm[1]}, L2 = ts[0] * ts[0] + ts[1] * ts[1], z[2];
+
+  if (L2 <= 0 || ts[0] * tm[0] + ts[1] * tm[1] >= 0) return PETSC_FALSE; /* opposing normals = opposing tangents */
+  for (PetscInt e = 0; e < 2; e++) z[e] = ((xm[2 * e] - xs[0]) * ts[0] + (xm[2 * e + 1] - xs[1]) * ts[1]) / L2;
+  return (PetscBool)(PetscMin(1, PetscMax(z[0], z[1])) - PetscMax(0, PetscMin(z[0], z[1])) > 1e-9);
+}
+
+/* Surface-to-surface pair: the secondary faces (one family per surface) instead of secondary nodes, and
+ * the check that some secondary face lies across some main face in the reference configuration: a pair
+ * with no face overlap at all can never transmit anything and is a user error at its data line. */
+static PetscErrorCode SurfaceToSurfaceFaces(const TslModel *g, TslContactPair *c, const TslSurface *sec)
+{
+  PetscInt  nodes[TSL_MAX_FACE_NODES], nf, family;
+  PetscReal x[2 * TSL_MAX_FACE_NODES], y[2 * TSL_MAX_FACE_NODES];
+  PetscBool overlap = PETSC_FALSE;
+  char      loc[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBeginUser;
+  c->nsec       = 0;
+  c->nsface     = sec->n;
+  c->sface_kind = TSL_CONTACT_FACE_LINE2;
+  if (sec->n) PetscCall(ContactFace(g, c, TslModelElementIndex(g, sec->elem[0]), sec->face[0], nodes, &nf, x, &c->sface_kind));
+  c->snper = TslContactFaceGet((TslContactFaceKind)c->sface_kind)->geom->nnode;
+  PetscCall(PetscMalloc1(c->snper * c->nsface, &c->sface_node));
+  PetscCall(PetscMalloc1(c->nsface, &c->sface_asm));
+  for (PetscInt i = 0; i < sec->n; i++) {
+    PetscCall(ContactFace(g, c, TslModelElementIndex(g, sec->elem[i]), sec->face[i], nodes, &nf, x, &family));
+    PetscCheck(family == c->sface_kind, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "%s: the secondary surface %s mixes face families: surface-to-surface contact needs one per surface", TslLocString(g, c->loc, loc, sizeof(loc)),
+               c->secondary);
+    for (PetscInt a = 0; a < nf; a++) c->sface_node[c->snper * i + a] = nodes[a];
+    c->sface_asm[i] = 1;
+    for (PetscInt j = 0; j < c->nmain && !overlap; j++) {
+      for (PetscInt a = 0; a < 2; a++)
+        for (PetscInt d = 0; d < 2; d++) y[2 * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, c->main_node[c->nper * j + a]) + d];
+      overlap = FacesOverlap(x, y);
+    }
+  }
+  PetscCheck(overlap, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "%s: *CONTACT PAIR, TYPE=SURFACE TO SURFACE: the surfaces %s and %s have no face overlap at all (no secondary face lies across a main "
+             "face, facing it)",
+             TslLocString(g, c->loc, loc, sizeof(loc)), c->secondary, c->main);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Contact pairs in the solver's terms (rank 0, whole model): main surfaces as oriented faces (2D: line2 or
  * line3 segments with their neighbours; 3D: tri3, quad4, tri6 faces, one family per face), secondary nodes
- * with tributary lengths or areas (the integrals of the secondary faces' shape functions), thickness,
- * kinematics. The default penalty is left to the contact set-up, which has the materials
- * (src/physics/contact.c). */
+ * with tributary lengths or areas (the integrals of the secondary faces' shape functions) or, surface to
+ * surface (2D), the secondary faces, thickness, kinematics. The default penalty is left to the contact
+ * set-up, which has the materials (src/physics/contact.c). */
 static PetscErrorCode PrepareContactPairs(TslModel *g)
 {
   const PetscInt dim = g->dim;
@@ -237,8 +311,8 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
     PetscInt          nodes[TSL_MAX_FACE_NODES];
     PetscReal         Lsum = 0, x[3 * TSL_MAX_FACE_NODES], w[TSL_MAX_FACE_NODES], L;
 
-    PetscCheck(c->type == TSL_CONTACT_NODE_TO_SURFACE, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-               "%s: *CONTACT PAIR, TYPE=SURFACE TO SURFACE is not supported yet (use the default node-to-surface)",
+    PetscCheck(c->type == TSL_CONTACT_NODE_TO_SURFACE || dim == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+               "%s: *CONTACT PAIR, TYPE=SURFACE TO SURFACE between 3D elements is not supported yet (use the default node-to-surface)",
                TslLocString(g, c->loc, loc, sizeof(loc)));
     /* main faces: in 2D one family per pair (the first face's); nper nodes each (3D: the most of any face,
      * shorter faces padded with -1), in face order */
@@ -286,7 +360,11 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
     /* secondary nodes and their tributary lengths or areas: int N_a ds (dA) over each face, corner and
      * midside nodes alike (line3: L/6, L/6, 2L/3; tri6: the weights of its linear subdivision), so that a
      * uniform pressure gives the consistent nodal forces */
-    if (sec->kind == TSL_SURFACE_NODE) {
+    if (c->type == TSL_CONTACT_SURFACE_TO_SURFACE) {
+      /* surface-to-surface: the secondary faces themselves (src/deck/check.c requires an element surface) */
+      PetscCall(SurfaceToSurfaceFaces(g, c, sec));
+      e0 = sec->n ? sec->elem[0] : -1;
+    } else if (sec->kind == TSL_SURFACE_NODE) {
       c->nsec = sec->n;
       PetscCall(PetscMalloc1(c->nsec, &c->sec_node));
       PetscCall(PetscMalloc1(c->nsec, &c->sec_length));

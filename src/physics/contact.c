@@ -77,11 +77,8 @@ static PetscErrorCode FaceMetric(TslProblem p, const TslContactSurface *cs, cons
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Storage of the neighbours' nodes that a TslContactInput points to. */
-typedef struct {
-  PetscReal xp[2 * TSL_CONTACT_MAX_FACE_NODES], up[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES];
-  PetscReal xn[2 * TSL_CONTACT_MAX_FACE_NODES], un[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES];
-} NeighbourData;
+/* Storage of the neighbours' nodes that a TslContactInput points to (problem_impl.h). */
+typedef TslContactNeighbourData NeighbourData;
 
 /* The kernel input of secondary node cn on its segment cn->seg at the state xa (history included), its
  * local nodes in kernel order (*n of them); in points into nb. */
@@ -148,6 +145,7 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
       heat->friction_heat += cn->out.heat_generation * cn->out.area;
     }
   }
+  PetscCall(TslProblemContactS2SAssemble(p, mode, xa, f, A, heat));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -282,6 +280,11 @@ PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
   if (!p->ncsurf) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
   PetscCall(Search(p, xa, &changed));
+  {
+    PetscInt c2;
+    PetscCall(TslProblemContactS2SSearch(p, xa, &c2));
+    changed += c2;
+  }
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
   if (p->pattern_stale) changed++;
   p->pattern_stale = PETSC_FALSE;
@@ -327,6 +330,7 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
       scale  = PetscMax(scale, cn->out.pressure);
     }
   }
+  PetscCall(TslProblemContactS2SUpdate(p, &loc[0], &change, &scale));
   lc[0] = change, lc[1] = scale;
   PetscCall(MPIU_Allreduce(loc, g, 1, MPIU_INT, MPI_SUM, p->comm));
   PetscCall(MPIU_Allreduce(lc, gc, 2, MPIU_REAL, MPIU_MAX, p->comm));
@@ -348,6 +352,7 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
       if (cn->seg >= 0 && cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED)
         PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &cn->hist.lambda, &c));
     }
+    PetscCall(TslProblemContactS2SAugment(p));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -375,6 +380,7 @@ PetscErrorCode TslProblemContactCommit(TslProblem p)
     cn->hist_c  = cn->hist;
     cn->cslip_c = cn->cslip;
   }
+  PetscCall(TslProblemContactS2SCommit(p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -390,6 +396,7 @@ PetscErrorCode TslProblemContactRollback(TslProblem p)
     cn->hist  = cn->hist_c;
     cn->cslip = cn->cslip_c;
   }
+  PetscCall(TslProblemContactS2SRollback(p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -415,6 +422,7 @@ PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscR
     if (which == 1) v = cn->cslip;
     vals[cn->lnode] = v;
   }
+  PetscCall(TslProblemContactS2SNodeField(p, name, vals));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -480,7 +488,7 @@ static PetscErrorCode ReportPartition(TslProblem p)
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   for (PetscInt k = 0; k < m->npair; k++) {
     const TslContactPair *c       = &m->pairs[k];
-    PetscInt              mine[2] = {c->nsec > 0, 0}, *all;
+    PetscInt              mine[2] = {c->nsec > 0 || c->nsface > 0, 0}, *all;
     char                  line[2][256];
     for (PetscInt i = 0; i < c->nper * c->nmain && !mine[1]; i++) {
       PetscInt l = c->main_node[i] >= 0 ? TslModelNodeIndex(m, c->main_node[i]) : -1;
@@ -620,6 +628,7 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
     }
   }
   PetscCall(PetscFree(penalty));
+  PetscCall(TslProblemContactS2SSetUp(p));
   PetscCall(ReportPartition(p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -633,5 +642,23 @@ PetscErrorCode TslProblemContactDestroy(TslProblem p)
   }
   PetscCall(PetscFree(p->csurf));
   PetscCall(PetscFree(p->cnode));
+  PetscCall(TslProblemContactS2SDestroy(p));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* For surface-to-surface contact (src/physics/contact_s2s.c): the kernel input of a node, and node data. */
+void TslProblemContactElementInput(TslProblem p, const TslContactNode *cn, const PetscScalar *xa, TslContactInput *in, PetscInt nodes[], PetscInt *n,
+                                   TslContactNeighbourData *nb)
+{
+  ElementInput(p, cn, xa, in, nodes, n, nb);
+}
+
+void TslProblemContactNodeData(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[])
+{
+  NodeData(p, cs, xa, l, x, u);
+}
+
+PetscErrorCode TslProblemContactFaceMetric(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt seg, PetscReal xi, PetscReal *L)
+{
+  return FaceMetric(p, cs, xa, seg, xi, L);
 }

@@ -36,6 +36,15 @@ typedef struct {
   TslContactOutput  out;            /* last evaluation */
 } TslContactNode;
 
+/* Storage of the neighbours' nodes that a TslContactInput points to (smoothing). */
+typedef struct {
+  PetscReal xp[2 * TSL_CONTACT_MAX_FACE_NODES], up[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES];
+  PetscReal xn[2 * TSL_CONTACT_MAX_FACE_NODES], un[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES];
+} TslContactNeighbourData;
+
+/* Surface-to-surface contact (src/physics/contact_s2s.c): the secondary faces held here and their points. */
+typedef struct _n_TslContactS2S *TslContactS2S;
+
 /* Amplitude codes besides an index into model->amplitudes[]. */
 #define TSL_AMP_DEFAULT (-1) /* the step's default: RAMP or STEP */
 #define TSL_AMP_HOLD    (-2) /* carried over from an earlier step: constant */
@@ -102,6 +111,7 @@ struct _p_TslProblem {
   TslContactNode    *cnode;
   PetscReal          augment_tol;
   PetscBool          pattern_stale; /* a rollback changed the pairing: the matrix pattern is the failed attempt's */
+  TslContactS2S      s2s;           /* surface-to-surface pairs (NULL without) */
   char              *pattern_rows;  /* [nn*ndof] kind of each row (free, prescribed, pinned, eliminated) when J's pattern was built */
   /* Direct insertion (TslProblemPreallocate): for an element whose nodes are all owned and whose rows are
    * all free, blk[blk_ptr[e] + a*nb + b] is the place of node b's block among node a's blocks in the
@@ -163,6 +173,24 @@ PetscBool      TslProblemContact3Departed(TslProblem p, const TslContactNode *cn
 PetscErrorCode TslProblemContact3Normals(TslProblem p, TslContactSurface *cs, const PetscScalar *xa);
 PetscErrorCode TslProblemContactDestroy(TslProblem p);
 PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[]);
+/* What surface-to-surface contact takes from node-to-surface (src/physics/contact.c): the kernel input of
+ * node cn on its segment (nodes[] in kernel order, *n of them; in points into nb) and a node's reference
+ * coordinates and contact unknowns; a main face's metric. */
+void TslProblemContactElementInput(TslProblem p, const TslContactNode *cn, const PetscScalar *xa, TslContactInput *in, PetscInt nodes[], PetscInt *n,
+                                   TslContactNeighbourData *nb);
+void TslProblemContactNodeData(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[]);
+/* The metric |dx/dxi| of main face seg at xi (current configuration). */
+PetscErrorCode TslProblemContactFaceMetric(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt seg, PetscReal xi, PetscReal *L);
+/* Surface-to-surface contact, called at the end of the node-to-surface functions of the same role. */
+PetscErrorCode TslProblemContactS2SSetUp(TslProblem p);
+PetscErrorCode TslProblemContactS2SDestroy(TslProblem p);
+PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);
+PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, PetscInt *changed);
+PetscErrorCode TslProblemContactS2SUpdate(TslProblem p, PetscInt *depart, PetscReal *change, PetscReal *scale);
+PetscErrorCode TslProblemContactS2SAugment(TslProblem p);
+PetscErrorCode TslProblemContactS2SCommit(TslProblem p);
+PetscErrorCode TslProblemContactS2SRollback(TslProblem p);
+PetscErrorCode TslProblemContactS2SNodeField(TslProblem p, const char *name, PetscReal vals[]);
 PetscReal      TslProblemEvalLoadValue(TslProblem p, const TslLoadValue *h);
 /* The slot of dialect dof number dof (1..6, 11) among an ordinary node's unknowns (TslProblemDofSlot) or
  * among local node l's (TslProblemNodeDofSlot: reference nodes have their own), -1 when it has no such dof. */

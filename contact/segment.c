@@ -1,0 +1,114 @@
+/* Surface-to-surface contact points: segmentation of a secondary face at the main surface's kinks, Gauss
+ * rules on the pieces, and the node-to-segment kernel at a point expanded to the secondary face's nodes.
+ * Interface and method: include/thermoslide/contact_s2s.h, docs/contact.md. */
+#include <thermoslide/contact_s2s.h>
+
+/* Gauss-Legendre on [0, 1] */
+static const PetscReal G3x[3] = {0.11270166537925831148, 0.5, 0.88729833462074168852}; /* (1 -+ sqrt(3/5))/2 */
+static const PetscReal G3w[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+static const PetscReal G4x[4] = {0.06943184420297371239, 0.33000947820757186760, 0.66999052179242813240, 0.93056815579702628761};
+static const PetscReal G4w[4] = {0.17392742256872692869, 0.32607257743127307131, 0.32607257743127307131, 0.17392742256872692869};
+
+PetscInt TslContactSegmentGaussPoints(TslContactFaceKind kind)
+{
+  return kind == TSL_CONTACT_FACE_LINE2 ? 3 : 4;
+}
+
+PetscErrorCode TslContactSegmentBreaks(TslContactFaceKind kind, const PetscReal y[], PetscInt np, const PetscReal pts[], PetscReal tol, PetscInt cap,
+                                       PetscReal zeta[], PetscInt *n)
+{
+  PetscInt m = 0;
+
+  PetscFunctionBeginUser;
+  PetscCheck(cap >= 2, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Break array too small");
+  zeta[m++] = 0;
+  zeta[m++] = 1;
+  for (PetscInt i = 0; i < np; i++) {
+    PetscReal z;
+    PetscCall(TslContactFaceProject(kind, y, &pts[2 * i], &z));
+    if (z > tol && z < 1 - tol) {
+      PetscCheck(m < cap, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "More than %" PetscInt_FMT " break points on a secondary face", cap);
+      zeta[m++] = z;
+    }
+  }
+  PetscCall(PetscSortReal(m, zeta));
+  *n = 1;
+  for (PetscInt i = 1; i < m; i++) {
+    if (zeta[i] - zeta[*n - 1] <= tol) {
+      if (i == m - 1) zeta[*n - 1] = 1; /* the end wins over a point just before it */
+      continue;
+    }
+    zeta[(*n)++] = zeta[i];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslContactSegmentRule(TslContactFaceKind kind, const PetscReal X[], PetscReal z0, PetscReal z1, PetscInt *nq, PetscReal zeta[],
+                                     PetscReal w[])
+{
+  const PetscReal *gx = kind == TSL_CONTACT_FACE_LINE2 ? G3x : G4x, *gw = kind == TSL_CONTACT_FACE_LINE2 ? G3w : G4w;
+
+  PetscFunctionBeginUser;
+  *nq = TslContactSegmentGaussPoints(kind);
+  for (PetscInt q = 0; q < *nq; q++) {
+    PetscReal t[2];
+    zeta[q] = z0 + gx[q] * (z1 - z0);
+    PetscCall(TslContactFaceEvaluate(kind, X, zeta[q], NULL, t));
+    w[q] = gw[q] * (z1 - z0) * PetscSqrtReal(t[0] * t[0] + t[1] * t[1]);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslContactPointSetUp(TslContactFaceKind kind, const PetscReal X[], const PetscReal U[], PetscReal zeta, TslContactInput *in)
+{
+  const TslContactFace *face = TslContactFaceGet(kind);
+  const PetscInt        nu   = TslContactNodeUnknowns(in->kin);
+  PetscReal             N[TSL_CONTACT_MAX_FACE_NODES], dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES];
+
+  PetscFunctionBeginUser;
+  PetscCheck(face, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown contact face family %d", (int)kind);
+  TslContactFaceShape(face, zeta, N, dN, d2N);
+  for (PetscInt d = 0; d < 2; d++) in->x[0][d] = 0;
+  for (PetscInt c = 0; c < TSL_CONTACT_MAX_NODE_DOF; c++) in->u[0][c] = 0;
+  for (PetscInt b = 0; b < face->geom->nnode; b++) {
+    for (PetscInt d = 0; d < 2; d++) in->x[0][d] += N[b] * X[2 * b + d];
+    for (PetscInt c = 0; c < nu; c++) in->u[0][c] += N[b] * U[nu * b + c];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslContactPointElement(const TslContactLaw *law, const TslContactInput *in, TslContactFaceKind kind, PetscReal zeta, PetscReal R[],
+                                      PetscReal K[], TslContactOutput *out)
+{
+  const TslContactFace *face = TslContactFaceGet(kind);
+  PetscReal             Rk[TSL_CONTACT_MAX_DOF], Kk[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF], N[TSL_CONTACT_MAX_FACE_NODES];
+  PetscReal             dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES];
+  /* expanded dof i is kernel dof row[i] times fac[i]: the secondary face's dofs take the virtual node's
+   * with factor N_b, the others are the kernel's own */
+  PetscInt              row[TSL_CONTACT_S2S_MAX_DOF];
+  PetscReal             fac[TSL_CONTACT_S2S_MAX_DOF];
+  TslContactOutput      o;
+  PetscInt              nsn, nu, nk, ne;
+
+  PetscFunctionBeginUser;
+  PetscCheck(face, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown contact face family %d", (int)kind);
+  PetscCall(TslContactElement(law, in, Rk, K ? Kk : NULL, &o));
+  nsn = face->geom->nnode;
+  nu  = o.nu;
+  nk  = nu * o.nnode;
+  ne  = nu * (nsn + o.nnode - 1);
+  TslContactFaceShape(face, zeta, N, dN, d2N);
+  for (PetscInt b = 0; b < nsn; b++)
+    for (PetscInt c = 0; c < nu; c++) row[nu * b + c] = c, fac[nu * b + c] = N[b];
+  for (PetscInt i = nu; i < nk; i++) row[nu * (nsn - 1) + i] = i, fac[nu * (nsn - 1) + i] = 1;
+  if (R)
+    for (PetscInt ii = 0; ii < ne; ii++) R[ii] = fac[ii] * Rk[row[ii]];
+  if (K)
+    for (PetscInt ii = 0; ii < ne; ii++)
+      for (PetscInt jj = 0; jj < ne; jj++) K[ii * ne + jj] = fac[ii] * fac[jj] * Kk[row[ii] * nk + row[jj]];
+  if (out) {
+    *out       = o;
+    out->nnode = nsn + o.nnode - 1;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
