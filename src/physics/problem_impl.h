@@ -80,6 +80,7 @@ struct _p_TslProblem {
   PetscBool     steady;
   TslAmpDefault amp_default;
   PetscReal     period, t, dt, ttot;
+  PetscBool     matrix_free;     /* explicit steps: no Jacobian, so no pattern is built (TslProblemSetMatrixFree) */
   PetscReal     shift;           /* capacity rate factor chosen by the solver: 1/dt (backward Euler) or 0 (steady) */
   PetscReal     step_start_ttot; /* total time at the start of the step */
   PetscBool    *amp_active;      /* [namplitude] followed by some load of the step (any rank) */
@@ -147,6 +148,10 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
                                 const PetscReal K[]);
 PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);
 PetscErrorCode TslProblemContactSetUp(TslProblem p);
+/* A face record's load value and sink at the current time (amplitudes, film amplitude). */
+PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscReal *value, PetscReal *sink);
+/* Collective: bad >= 0 (a local element) on any rank is the user error "element is inverted" on all. */
+PetscErrorCode TslProblemCheckBadElement(TslProblem p, PetscInt bad);
 PetscErrorCode TslProblemContactDestroy(TslProblem p);
 PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[]);
 PetscReal      TslProblemEvalLoadValue(TslProblem p, const TslLoadValue *h);
