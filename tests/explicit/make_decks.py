@@ -77,3 +77,14 @@ write("vibration_bar_cpe4t", "*HEADING\n Explicit: released stretched free-free 
  U
 *END STEP
 """)
+
+# The implicit transient conduction deck of jobs/verification as an explicit step: the same slab, the same
+# prescribed face temperature, forward Euler on the lumped capacity instead of backward Euler.
+with open("../../jobs/verification/conduction_transient_cpe4t.inp") as f:
+    deck = f.read()
+deck = deck.replace("*COUPLED TEMPERATURE-DISPLACEMENT, DELTMX=50.0\n 0.0005, 0.03, 1e-6, 0.0005\n",
+                    "*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , 0.03\n")
+deck = deck.replace("*NODE OUTPUT\n NT\n", "*OUTPUT, FIELD, TIME INTERVAL=0.0005\n*NODE OUTPUT\n NT\n")
+deck = deck.replace("Transient 1D conduction, CPE4T", "Explicit transient 1D conduction, CPE4T")
+assert "EXPLICIT" in deck and "TIME INTERVAL" in deck
+write("conduction_explicit_cpe4t", deck)
