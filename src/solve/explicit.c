@@ -80,7 +80,7 @@ static void MassScaleFactors(Explicit *x, PetscBool variable_only)
       const TslMassScaling *ms = &x->step->mass[k];
       if ((variable_only && !ms->variable) || !InSet(x->m, ms->elset, e)) continue;
       if (!variable_only) x->scale[e] *= ms->factor;
-      if (ms->dt > 0 && x->dt_mech[e] * PetscSqrtReal(x->scale[e]) < ms->dt) x->scale[e] = PetscSqrtReal(ms->dt / x->dt_mech[e]) * PetscSqrtReal(ms->dt / x->dt_mech[e]);
+      if (ms->dt > 0 && x->dt_mech[e] * PetscSqrtReal(x->scale[e]) < ms->dt) x->scale[e] = PetscSqr(ms->dt / x->dt_mech[e]);
     }
   }
 }

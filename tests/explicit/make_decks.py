@@ -88,3 +88,14 @@ deck = deck.replace("*NODE OUTPUT\n NT\n", "*OUTPUT, FIELD, TIME INTERVAL=0.0005
 deck = deck.replace("Transient 1D conduction, CPE4T", "Explicit transient 1D conduction, CPE4T")
 assert "EXPLICIT" in deck and "TIME INTERVAL" in deck
 write("conduction_explicit_cpe4t", deck)
+
+# The wave deck with the mass scaled to a target element increment twice the stable one: every element's
+# mass x 4, so the front moves at c / 2 = 50 and reaches x = 0.35 at t = 0.007.
+with open("decks/wave_bar_cpe4t.inp") as f:
+    deck = f.read()
+deck = deck.replace("*CLOAD\n", "*VARIABLE MASS SCALING, DT=2.0E-4, ELSET=BAR, FREQUENCY=50\n*CLOAD\n")
+deck = deck.replace("front speed c = sqrt(E/rho) = 100", "mass scaled x 4 to DT = 2e-4, front speed 50")
+write("wave_mass_scaled_cpe4t", deck)
+
+# A factor beyond the sane bound (100): the run goes on, the log warns with the figure.
+write("mass_scaling_warning_cpe4t", deck.replace("*VARIABLE MASS SCALING, DT=2.0E-4, ELSET=BAR, FREQUENCY=50\n", "*FIXED MASS SCALING, FACTOR=200\n").replace(" , 0.007\n", " , 0.001\n").replace("NUMBER INTERVAL=7", "NUMBER INTERVAL=1"))
