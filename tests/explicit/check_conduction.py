@@ -8,13 +8,12 @@ t = 0.03 agree within 1 % of the 100 range (backward Euler's O(dt) error: 0.5 at
 balance of every history row closes (heat in through the prescribed face = heat stored, 1e-9 relative).
 usage: check_conduction.py OUTDIR JOB IMPLICIT_OUTDIR IMPLICIT_JOB
 """
-import math
 import sys
 
 import numpy as np
 
 sys.path.insert(0, sys.path[0] + "/../tools")
-from tslcheck import Result, check, finish
+from tslcheck import Result, check, finish, slab_series
 
 outdir, job, idir, ijob = sys.argv[1:5]
 r, ri = Result(outdir, job), Result(idir, ijob)
@@ -22,11 +21,7 @@ kappa, L = 10.0, 1.0
 
 
 def exact(x, t):
-    s = 0.0
-    for n in range(200):
-        m = (2 * n + 1) * math.pi / (2 * L)
-        s += 4.0 / ((2 * n + 1) * math.pi) * math.sin(m * x) * math.exp(-m * m * kappa * t)
-    return 100.0 * (1.0 - s)
+    return slab_series(x, t, kappa, L)
 
 
 times = [float(r.frame(i).attrs["time"]) for i in range(len(r.frames))]
