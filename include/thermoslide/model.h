@@ -254,10 +254,31 @@ typedef struct {
   PetscInt *sface_asm;  /* [nsface] */
 } TslContactPair;
 
+/* *FIXED MASS SCALING / *VARIABLE MASS SCALING in an explicit step: the element masses of the set (all
+ * elements when elset is empty) scaled by factor, then further where an element's stable increment is
+ * below dt (TYPE=BELOW MIN: just enough to reach dt). Variable scaling is re-evaluated every frequency
+ * increments. */
+#define TSL_MAX_MASS_SCALING 8
+typedef struct {
+  char      elset[TSL_NAME_LEN];
+  PetscReal factor;    /* FACTOR= (1 when absent) */
+  PetscReal dt;        /* DT= target element stable increment (0: none) */
+  PetscBool variable;  /* *VARIABLE MASS SCALING */
+  PetscInt  frequency; /* FREQUENCY= (variable scaling: increments between re-evaluations, default 1) */
+  TslLoc    loc;
+} TslMassScaling;
+
 typedef struct {
   char              name[TSL_NAME_LEN];
   TslLoc            loc;
-  PetscBool         coupled;                   /* *COUPLED TEMPERATURE-DISPLACEMENT seen */
+  PetscBool         coupled;                   /* a procedure seen (*COUPLED or *DYNAMIC TEMPERATURE-DISPLACEMENT) */
+  PetscBool         explicit_dynamics;         /* *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT (src/solve/explicit.c) */
+  PetscReal         dt_user;                   /* explicit, DIRECT USER CONTROL: the fixed increment (0: the stable increment) */
+  PetscReal         dt_scale;                  /* explicit, SCALE FACTOR= on the stable increment (default 1) */
+  PetscInt          nmass;                     /* explicit: mass scaling definitions of the step */
+  TslMassScaling    mass[TSL_MAX_MASS_SCALING];
+  PetscInt          out_number_interval;       /* explicit, *OUTPUT, FIELD, NUMBER INTERVAL= (0: not given) */
+  PetscReal         out_time_interval;         /* explicit, *OUTPUT, FIELD, TIME INTERVAL= (0: not given) */
   PetscBool         steady;                    /* STEADY STATE */
   PetscBool         direct;                    /* DIRECT: fixed increments */
   PetscBool         nlgeom;                    /* NLGEOM accepted (small-strain kinematics used; see docs) */

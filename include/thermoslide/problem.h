@@ -101,6 +101,38 @@ PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta
 /* Reference magnitudes of the displacement and temperature residuals (for convergence tests). */
 PetscErrorCode TslProblemResidualNorms(TslProblem prob, Vec F, PetscReal *norm_u, PetscReal *norm_theta);
 
+/* ---- explicit dynamics (src/solve/explicit.c): vectors, no matrix -------------------------------
+ * Every Vec below is a duplicate of the solution vector (ghosted, block size ndof). */
+
+/* Explicit steps set this before TslProblemSetStep: no Jacobian pattern is built for the step. */
+PetscErrorCode TslProblemSetMatrixFree(TslProblem prob, PetscBool matrix_free);
+
+/* Rates of the heat terms of the last force evaluation, summed over all ranks. */
+typedef struct {
+  PetscReal heat_in;        /* applied heat: CFLUX + surface and body fluxes */
+  PetscReal film_out;       /* heat leaving through films */
+  PetscReal interface_heat; /* heat crossing contact interfaces (main -> secondary) */
+  PetscReal dissipation;    /* frictional dissipation */
+  PetscReal friction_heat;  /* part of it converted to heat */
+} TslExplicitRates;
+
+/* Unconstrained nodal vectors at the current solution and time, ghost contributions summed (collective):
+ *   Fi  element internal forces, and every heat row (internal flow, fluxes, films) in residual form;
+ *   Fe  applied mechanical loads (CLOAD, DLOAD) as forces;
+ *   Fc  contact forces and contact heat in residual form (may be NULL when the model has no pairs).
+ * The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets M a = Fe - Fi - Fc. */
+PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, TslExplicitRates *rates);
+/* Lumped nodal mass in the displacement slots (element e's mass times scale[e]; scale NULL: 1) and lumped
+ * capacity dQ/dtheta in the temperature slot, at the current temperatures (collective). An element with a
+ * non-positive lumped mass at a node is a user error naming it. */
+PetscErrorCode TslProblemLumpedMass(TslProblem prob, const PetscReal scale[], Vec M);
+/* Each local element's stable increments with its unscaled lumped mass: mechanical 2 / omega_max and thermal
+ * 2 / lambda_max, from the largest eigenvalues of M^-1 K_uu and C^-1 K_thth of the element (no global
+ * eigenvalue exceeds the largest element one). dt_heat is PETSC_MAX_REAL for an element without conduction. */
+PetscErrorCode TslProblemStableIncrements(TslProblem prob, PetscReal dt_mech[], PetscReal dt_heat[]);
+/* 1 at the owned dofs held by a prescribed value or pinned (slots a kinematics does not use), 0 elsewhere. */
+PetscErrorCode TslProblemConstrainedMask(TslProblem prob, Vec mask);
+
 /* Rank 0, on the whole model before distribution: every body has its rigid-body modes removed by
  * prescribed displacements in every step, and a prescribed temperature or film in steady-state steps.
  * A violation is a user error naming the step and a node of the body. */

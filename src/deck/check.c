@@ -252,6 +252,35 @@ static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* What an explicit step cannot do: mass scaling outside one, *EQUATION (no constraint rows without a
+ * matrix), element types without a positive lumped mass at every node (the reference node of generalized
+ * plane strain, the twist of CGAX; the element rows say so), and element sets of mass scaling defined. */
+static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
+{
+  char where[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBeginUser;
+  (void)TslLocString(m, s->loc, where, sizeof(where));
+  for (PetscInt k = 0; k < s->nmass; k++) {
+    const TslMassScaling *ms = &s->mass[k];
+    CHECK(s->explicit_dynamics, ms->loc, "mass scaling belongs to an explicit step (*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT); step %s is not one",
+          s->name);
+    CHECK(!ms->elset[0] || TslModelFindElementSet(m, ms->elset) >= 0, ms->loc, "undefined element set %s", ms->elset);
+  }
+  if (!s->explicit_dynamics) PetscFunctionReturn(PETSC_SUCCESS);
+  if (m->nequation) CHECK(PETSC_FALSE, m->equations[0].loc, "*EQUATION is not supported in explicit steps (step %s at %s)", s->name, where);
+  /* the pairing search is not run by the explicit procedure yet: contact forces would silently be zero */
+  if (m->npair) CHECK(PETSC_FALSE, m->pairs[0].loc, "*CONTACT PAIR is not supported in explicit steps yet (step %s at %s)", s->name, where);
+  for (PetscInt e = 0; e < m->nelem; e++) {
+    const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
+    TslLoc                l = {m->elem_line[2 * e], m->elem_line[2 * e + 1]};
+    CHECK(t->nextra == 0 && !TslKinematicsTwists(t->kin), l,
+          "element type %s (%s) is not supported in explicit steps (its extra unknowns have no lumped mass; step %s at %s)", t->name,
+          TslElementTypeKinematicsName(t), s->name, where);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckSteps(TslModel *m)
 {
   PetscFunctionBeginUser;
@@ -261,7 +290,8 @@ static PetscErrorCode CheckSteps(TslModel *m)
   }
   for (PetscInt i = 0; i < m->nstep; i++) {
     const TslStep *s = &m->steps[i];
-    CHECK(s->coupled, s->loc, "step %s has no procedure (*COUPLED TEMPERATURE-DISPLACEMENT)", s->name);
+    CHECK(s->coupled, s->loc, "step %s has no procedure (*COUPLED TEMPERATURE-DISPLACEMENT or *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT)", s->name);
+    PetscCall(CheckExplicitStep(m, s));
     for (PetscInt k = 0; k < s->nload; k++) PetscCall(CheckLoad(m, &s->loads[k]));
     for (PetscInt k = 0; k < s->nout; k++) {
       const TslOutputRequest *r = &s->out[k];

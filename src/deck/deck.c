@@ -1500,6 +1500,70 @@ static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT (Abaqus/Explicit): data line "[increment], time period". The
+ * increment is the stable one (element by element, times SCALE FACTOR) unless DIRECT USER CONTROL fixes it
+ * to the first field. Only the explicit form exists here. */
+static PetscErrorCode KwDynamic(Deck *d, const DeckKeyword *kw)
+{
+  TslStep  *s = &d->m->steps[d->step];
+  PetscBool got, set, direct = Param(d, "DIRECT USER CONTROL") ? PETSC_TRUE : PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!s->coupled, LOC_FMT "step %s already has a procedure", KLOC(d), s->name);
+  USER_CHECK(Param(d, "EXPLICIT"), LOC_FMT "*DYNAMIC TEMPERATURE-DISPLACEMENT is supported with EXPLICIT only (implicit dynamics is not available)",
+             KLOC(d));
+  s->coupled           = PETSC_TRUE;
+  s->explicit_dynamics = PETSC_TRUE;
+  s->dt_scale          = 1.0;
+  PetscCall(ParamReal(d, "SCALE FACTOR", &s->dt_scale, &set));
+  USER_CHECK(!set || (s->dt_scale > 0 && s->dt_scale <= 1), LOC_FMT "SCALE FACTOR must lie in (0, 1] (got %g)", KLOC(d), (double)s->dt_scale);
+  if (!s->amp_given) s->amp_default = TSL_AMP_STEP;
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(got, LOC_FMT "*DYNAMIC TEMPERATURE-DISPLACEMENT needs a data line: [time increment], time period", KLOC(d));
+  USER_CHECK(d->nfield <= 2, LOC_FMT "*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT data line: [time increment], time period", DLOC(d));
+  PetscCall(FieldRealDefault(d, 0, "the time increment", 0, &s->dt_user));
+  PetscCall(FieldReal(d, 1, "the time period", &s->period));
+  USER_CHECK(s->period > 0, LOC_FMT "the time period must be positive", DLOC(d));
+  USER_CHECK(!direct || s->dt_user > 0, LOC_FMT "DIRECT USER CONTROL needs the time increment in the first field", DLOC(d));
+  if (!direct) s->dt_user = 0; /* the first field is used only under DIRECT USER CONTROL, as in the dialect */
+  s->dt0 = s->dtmax = s->period;
+  s->dtmin          = 1e-5 * s->period;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *FIXED MASS SCALING, FACTOR=, DT=, ELSET=, TYPE=BELOW MIN and *VARIABLE MASS SCALING, DT=, ELSET=,
+ * FREQUENCY=, TYPE=BELOW MIN: history data of an explicit step (checked in TslModelCheck). */
+static PetscErrorCode KwMassScaling(Deck *d, const DeckKeyword *kw)
+{
+  TslStep        *s = &d->m->steps[d->step];
+  TslMassScaling *ms;
+  const char     *set = Param(d, "ELSET"), *type;
+  char            buf[32];
+  PetscBool       has_dt, has_f;
+
+  PetscFunctionBeginUser;
+  USER_CHECK(s->nmass < TSL_MAX_MASS_SCALING, LOC_FMT "at most %d mass scaling definitions per step", KLOC(d), TSL_MAX_MASS_SCALING);
+  ms = &s->mass[s->nmass++];
+  PetscCall(PetscMemzero(ms, sizeof(*ms)));
+  ms->loc       = d->kwloc;
+  ms->variable  = kw->kind ? PETSC_TRUE : PETSC_FALSE;
+  ms->factor    = 1.0;
+  ms->frequency = 1;
+  if (set) PetscCall(CopyName(d, d->kwloc, ms->elset, set));
+  PetscCall(ParamReal(d, "FACTOR", &ms->factor, &has_f));
+  PetscCall(ParamReal(d, "DT", &ms->dt, &has_dt));
+  PetscCall(ParamInt(d, "FREQUENCY", &ms->frequency));
+  type = ParamUpper(d, "TYPE", buf, sizeof(buf));
+  USER_CHECK(!type || !strcmp(type, "BELOW MIN"), LOC_FMT "*%s, TYPE=%s is not supported (BELOW MIN only)", KLOC(d), d->kw, type);
+  USER_CHECK(ms->factor > 0, LOC_FMT "FACTOR must be positive (got %g)", KLOC(d), (double)ms->factor);
+  USER_CHECK(!has_dt || ms->dt > 0, LOC_FMT "DT must be positive (got %g)", KLOC(d), (double)ms->dt);
+  USER_CHECK(ms->frequency > 0, LOC_FMT "FREQUENCY must be positive", KLOC(d));
+  USER_CHECK(!ms->variable || has_dt, LOC_FMT "*VARIABLE MASS SCALING needs DT= (the target element stable increment)", KLOC(d));
+  USER_CHECK(ms->variable || has_dt || has_f, LOC_FMT "*FIXED MASS SCALING needs FACTOR= or DT=", KLOC(d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* ---- loads ----------------------------------------------------------------------------------- */
 
 static PetscErrorCode CheckDof(Deck *d, PetscInt dof)
@@ -1722,6 +1786,15 @@ static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
   *freq = 1;
   PetscCall(ParamInt(d, "FREQUENCY", freq));
   USER_CHECK(*freq >= 0, LOC_FMT "FREQUENCY must not be negative", KLOC(d));
+  if (Param(d, "NUMBER INTERVAL") || Param(d, "TIME INTERVAL")) { /* Abaqus/Explicit's output intervals */
+    TslStep  *s = d->step >= 0 ? &d->m->steps[d->step] : NULL;
+    PetscBool set;
+    USER_CHECK(s && s->explicit_dynamics, LOC_FMT "NUMBER INTERVAL= and TIME INTERVAL= belong to the *OUTPUT of an explicit step (after *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT)", KLOC(d));
+    PetscCall(ParamInt(d, "NUMBER INTERVAL", &s->out_number_interval));
+    PetscCall(ParamReal(d, "TIME INTERVAL", &s->out_time_interval, &set));
+    USER_CHECK(!Param(d, "NUMBER INTERVAL") || s->out_number_interval > 0, LOC_FMT "NUMBER INTERVAL must be positive", KLOC(d));
+    USER_CHECK(!set || s->out_time_interval > 0, LOC_FMT "TIME INTERVAL must be positive", KLOC(d));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1801,6 +1874,9 @@ static const DeckKeyword Keywords[] = {
     {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
+    {"DYNAMIC TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "EXPLICIT|DIRECT USER CONTROL|ELEMENT BY ELEMENT|SCALE FACTOR", KwDynamic, 0, NULL},
+    {"FIXED MASS SCALING", AT_STEP, IN_NONE, "FACTOR|DT|ELSET|TYPE", KwMassScaling, 0, NULL},
+    {"VARIABLE MASS SCALING", AT_STEP, IN_NONE, "DT|ELSET|FREQUENCY|TYPE", KwMassScaling, 1, NULL},
     {"BOUNDARY", AT_BOTH, IN_NONE, LOAD_PARAMS "|FIXED", KwLoad, TSL_LOAD_BOUNDARY, LineBoundary},
     {"CLOAD", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_CLOAD, LineConcentrated},
     {"CFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_CFLUX, LineConcentrated},
@@ -1809,7 +1885,7 @@ static const DeckKeyword Keywords[] = {
     {"DSFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DFLUX, LineDsflux},
     {"FILM", AT_STEP, IN_NONE, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
     {"SFILM", AT_STEP, IN_NONE, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
-    {"OUTPUT", AT_BOTH, IN_NONE, "FIELD|HISTORY|FREQUENCY", KwOutput, 0, NULL},
+    {"OUTPUT", AT_BOTH, IN_NONE, "FIELD|HISTORY|FREQUENCY|NUMBER INTERVAL|TIME INTERVAL", KwOutput, 0, NULL},
     {"NODE OUTPUT", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
     {"NODE FILE", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
     {"ELEMENT OUTPUT", AT_STEP, IN_NONE, "ELSET|FREQUENCY", KwOutputRequest, 0, NULL},

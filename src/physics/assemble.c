@@ -146,7 +146,7 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode FaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscReal *value, PetscReal *sink)
+PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscReal *value, PetscReal *sink)
 {
   PetscFunctionBeginUser;
   *value = TslProblemEvalLoadValue(p, &r->value);
@@ -234,7 +234,7 @@ static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, 
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
     const TslFaceRecord *r = &p->face[i];
     PetscReal            value, sink, h = 0;
-    PetscCall(FaceLoadValue(p, r, &value, &sink));
+    PetscCall(TslProblemFaceLoadValue(p, r, &value, &sink));
     PetscCall(PetscArrayzero(R, d->nd));
     if (K) PetscCall(PetscArrayzero(K, d->nd * d->nd));
     PetscCall(TslElementFaceLoad(&d->in, r->kind, r->face, value, sink, R, K, &h));
@@ -303,7 +303,7 @@ static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScala
 }
 
 /* An inverted element on any rank is a user error on all ranks (collective). */
-static PetscErrorCode CheckBadElement(TslProblem p, PetscInt bad)
+PetscErrorCode TslProblemCheckBadElement(TslProblem p, PetscInt bad)
 {
   PetscInt loc[3] = {-1, -1, -1}, g[3];
   char     where[PETSC_MAX_PATH_LEN + 32];
@@ -362,7 +362,7 @@ PetscErrorCode TslProblemCheckElements(TslProblem p)
   PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &c.R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &c.K));
   PetscCall(TslProblemElementLoop(p, NULL, NULL, CheckElement, &c));
   PetscCall(PetscFree2(c.R, c.K));
-  PetscCall(CheckBadElement(p, c.bad));
+  PetscCall(TslProblemCheckBadElement(p, c.bad));
   PetscCall(MPIU_Allreduce(c.sum, g, 4, MPIU_REAL, MPIU_SUM, p->comm));
   for (PetscInt f = 0; f < 2; f++) p->row_scale[f] = (g[2 + f] > 0 && g[f] > 0) ? g[f] / g[2 + f] : 1.0;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -463,7 +463,7 @@ static PetscErrorCode Residual(TslProblem p, AsmMode mode, Vec X, Vec F, AsmHeat
   PetscCall(AssembleLocal(p, mode, xa, xoa, fa, NULL, heat, &bad, fail));
   PetscCall(VecRestoreArray(fl, &fa));
   PetscCall(VecGhostRestoreLocalForm(p->Fl, &fl));
-  PetscCall(CheckBadElement(p, bad));
+  PetscCall(TslProblemCheckBadElement(p, bad));
   PetscCall(VecGhostUpdateBegin(p->Fl, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecGhostUpdateEnd(p->Fl, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(p->Fl, F));
@@ -522,7 +522,7 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   PetscCall(TslPhaseEnd(TSL_PHASE_ASSEMBLY));
-  PetscCall(CheckBadElement(p, bad));
+  PetscCall(TslProblemCheckBadElement(p, bad));
   if (fail) PetscCall(SNESSetJacobianDomainError(snes));
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));

@@ -285,7 +285,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
   PetscCall(CompactFaces(p));
   PetscCall(MarkActiveAmplitudes(p));
   p->step_start_ttot = p->ttot;
-  PetscCall(TslProblemPreallocateIfChanged(p));
+  if (!p->matrix_free) PetscCall(TslProblemPreallocateIfChanged(p));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

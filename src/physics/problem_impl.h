@@ -95,6 +95,7 @@ struct _p_TslProblem {
   PetscBool     steady;
   TslAmpDefault amp_default;
   PetscReal     period, t, dt, ttot;
+  PetscBool     matrix_free;     /* explicit steps: no Jacobian, so no pattern is built (TslProblemSetMatrixFree) */
   PetscReal     shift;           /* capacity rate factor chosen by the solver: 1/dt (backward Euler) or 0 (steady) */
   PetscReal     step_start_ttot; /* total time at the start of the step */
   PetscBool    *amp_active;      /* [namplitude] followed by some load of the step (any rank) */
@@ -171,6 +172,10 @@ PetscErrorCode TslProblemContact3Input(TslProblem p, const TslContactNode *cn, c
 PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt pair, const PetscScalar *xa, PetscInt *changed);
 PetscBool      TslProblemContact3Departed(TslProblem p, const TslContactNode *cn, PetscReal tol);
 PetscErrorCode TslProblemContact3Normals(TslProblem p, TslContactSurface *cs, const PetscScalar *xa);
+/* A face record's load value and sink at the current time (amplitudes, film amplitude). */
+PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscReal *value, PetscReal *sink);
+/* Collective: bad >= 0 (a local element) on any rank is the user error "element is inverted" on all. */
+PetscErrorCode TslProblemCheckBadElement(TslProblem p, PetscInt bad);
 PetscErrorCode TslProblemContactDestroy(TslProblem p);
 PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[]);
 /* What surface-to-surface contact takes from node-to-surface (src/physics/contact.c): the kernel input of

@@ -1,14 +1,8 @@
 /* Step procedures: increments with cutback and DELTMX control, Newton through SNES, output. */
-#include <thermoslide/solve.h>
-#include <thermoslide/output.h>
-#include <thermoslide/sys.h>
-#include <petscsnes.h>
+#include "solve_impl.h"
 #include <string.h>
 
-#define MAX_DEFAULTS 32
-#define MAX_FIELDS   32
-
-static const char *const HistoryColumns[] = {"step",
+const char *const TslHistoryColumns[NHISTORY] = {"step",
                                              "increment",
                                              "time",
                                              "step_time",
@@ -24,35 +18,15 @@ static const char *const HistoryColumns[] = {"step",
                                              "friction_heat_total",
                                              "balance_residual",
                                              "strain_energy",
-                                             "hourglass_energy"};
-#define NHISTORY ((PetscInt)(sizeof(HistoryColumns) / sizeof(HistoryColumns[0])))
+                                             "hourglass_energy",
+                                             "ALLKE",
+                                             "ALLIE",
+                                             "ALLWK",
+                                             "ALLFD",
+                                             "ALLCW",
+                                             "ALLMW",
+                                             "ETOTAL"};
 
-typedef struct {
-  TslProblem prob;
-  MPI_Comm   comm;
-  SNES       snes;
-  Vec        F;
-  TslOutput  out;
-  TslHistory hist;
-  PetscReal  rtol, atol_rel, cutback, growth;
-  PetscInt   easy_its;
-  PetscInt   debug_diverge_step;   /* test hook: every increment of this step is declared diverged */
-  PetscReal  scale_u, scale_theta; /* largest initial residuals seen in the job */
-  PetscReal  r0_u, r0_theta;       /* initial residuals of the current solve */
-  PetscBool  field_on[MAX_FIELDS]; /* rows of the problem's field table written in frames */
-  PetscInt   frequency;
-  PetscInt   frame_step, frame_inc; /* last frame written */
-  PetscInt   done_step, done_inc;   /* last converged increment */
-  PetscReal  dissipated, absorbed;  /* frictional dissipation and the heat made of it, since the start */
-  PetscInt   max_contact_its;
-  PetscReal  sync_interval; /* -tsl_output_sync: seconds between syncs of the result files */
-  PetscInt   direct_max;    /* -tsl_direct_max_dofs: direct solver by default up to this size */
-  PetscReal  done_time, done_step_time, done_dt;
-  PetscBool  trial;     /* X holds an unconverged trial state (Xold the last converged one) */
-  PetscBool  in_output; /* inside a frame: a failure there leaves the output unusable */
-  PetscInt   ndefault;  /* solver options entered as defaults (SetDefaultOption) */
-  char       defaults[MAX_DEFAULTS][64];
-} Driver;
 
 /* Default solver choices, entered only where the user gave none, and remembered: a default that the
  * user's own choice makes irrelevant (fieldsplit options under -pc_type lu) is removed again at the end,
@@ -235,7 +209,7 @@ static PetscErrorCode SetUpOutput(Driver *d, const char *dir, const char *jobnam
   PetscCall(TslOutputSetMesh(d->out, m->nnode_global, m->nnode_owned, m->node_nat, m->node_id, m->node_xyz, m->nelem_global, m->nelem, m->elem_nat,
                              m->elem_id, xtype, ptr, conn));
   PetscCall(PetscFree3(xtype, conn, ptr));
-  PetscCall(TslHistoryCreate(d->comm, dir, jobname, NHISTORY, HistoryColumns, &d->hist));
+  PetscCall(TslHistoryCreate(d->comm, dir, jobname, NHISTORY, TslHistoryColumns, &d->hist));
   for (PetscInt i = 0; i < TslFieldCount(); i++) {
     PetscInt deflt;
     (void)TslFieldName(i, NULL, &deflt);
@@ -246,7 +220,7 @@ static PetscErrorCode SetUpOutput(Driver *d, const char *dir, const char *jobnam
 }
 
 /* Field output requests of a step: they replace the previous step's when present. */
-static PetscErrorCode SetOutputRequests(Driver *d, const TslStep *step)
+PetscErrorCode TslDriverSetOutputRequests(Driver *d, const TslStep *step)
 {
   PetscBool any = PETSC_FALSE;
 
@@ -281,7 +255,7 @@ static PetscErrorCode SetIncrement(Driver *d, const TslStep *step, PetscReal ste
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode WriteFrame(Driver *d, PetscInt step, PetscInt inc, PetscReal time)
+PetscErrorCode TslDriverWriteFrame(Driver *d, PetscInt step, PetscInt inc, PetscReal time)
 {
   PetscFunctionBeginUser;
   d->in_output = PETSC_TRUE;
@@ -340,7 +314,7 @@ static PetscErrorCode PrintRows(TslPrintSink sink, void *ctx)
 }
 
 /* *NODE PRINT / *EL PRINT tables at the end of a step, streamed in rank order (TslPrintOrdered). */
-static PetscErrorCode PrintTables(Driver *d, const TslStep *step)
+PetscErrorCode TslDriverPrintTables(Driver *d, const TslStep *step)
 {
   const TslModel *m;
 
@@ -456,6 +430,7 @@ static PetscErrorCode Accept(Driver *d, PetscInt s, PetscInt inc, PetscReal t, P
   row[13] = d->absorbed;
   row[14] = hb.balance;
   PetscCall(TslProblemEnergies(d->prob, &row[15], &row[16]));
+  for (PetscInt c = HIST_ENERGY; c < NHISTORY; c++) row[c] = 0; /* the energies of explicit steps */
   PetscCall(TslHistoryAppend(d->hist, row));
   d->done_step = s + 1, d->done_inc = inc, d->done_time = total, d->done_step_time = t, d->done_dt = h;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -483,7 +458,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
   PetscCall(TslProblemGetJacobian(d->prob, &J));
   PetscCall(SNESSetJacobian(d->snes, J, J, TslProblemFormJacobian, d->prob));
-  PetscCall(SetOutputRequests(d, step));
+  PetscCall(TslDriverSetOutputRequests(d, step));
   PetscCall(TslProblemGetSolution(d->prob, &X));
   PetscCall(TslProblemGetOldSolution(d->prob, &Xold));
 
@@ -542,7 +517,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     d->trial = PETSC_FALSE;
     PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
     PetscCall(Accept(d, s, inc, t, h, *total_time, its, lits));
-    if (last || inc % d->frequency == 0) PetscCall(WriteFrame(d, s + 1, inc, *total_time));
+    if (last || inc % d->frequency == 0) PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
     if (!step->direct) {
       /* the controller grows from the increment it asked for, not from one cut short at a corner */
@@ -552,7 +527,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     }
   }
   PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
-  PetscCall(PrintTables(d, step));
+  PetscCall(TslDriverPrintTables(d, step));
   PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
   PetscCall(PetscInfo(NULL, "step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %" PetscInt_FMT " attempts\n", s + 1, inc, attempts));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -578,7 +553,7 @@ static PetscErrorCode SaveLastConverged(Driver *d)
     PetscCall(TslProblemGetModel(d->prob, &m));
     PetscCall(SetIncrement(d, &m->steps[d->done_step - 1], d->done_step_time, d->done_dt, d->done_time));
     PetscCall(TslProblemHeatBalance(d->prob, &hb)); /* contact outputs at that state */
-    PetscCall(WriteFrame(d, d->done_step, d->done_inc, d->done_time));
+    PetscCall(TslDriverWriteFrame(d, d->done_step, d->done_inc, d->done_time));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -622,7 +597,8 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&d, sizeof(d)));
-  d.prob = prob;
+  d.prob          = prob;
+  d.explicit_last = -1;
   PetscCall(TslProblemGetModel(prob, &m));
   {
     Vec X;
@@ -630,10 +606,14 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
     PetscCall(PetscObjectGetComm((PetscObject)X, &d.comm));
   }
   PetscCall(SetUpSolver(&d));
+  PetscCall(TslExplicitSetFromOptions(&d));
   PetscCall(TslOptionsCheckUnused(d.comm, PETSC_TRUE)); /* every -tsl_ option has been read by now */
   PetscCall(SetUpOutput(&d, dir, jobname));
   /* every failure inside a step is decided by all ranks together (sys.h), so all ranks stop here alike */
-  for (PetscInt s = 0; s < m->nstep && !ierr; s++) ierr = RunStep(&d, s, &total);
+  for (PetscInt s = 0; s < m->nstep && !ierr; s++) {
+    PetscCall(TslProblemSetMatrixFree(prob, m->steps[s].explicit_dynamics));
+    ierr = m->steps[s].explicit_dynamics ? TslExplicitRunStep(&d, s, &total) : RunStep(&d, s, &total);
+  }
   if (ierr && !d.in_output) {
     PetscErrorCode e = SaveLastConverged(&d);
     if (e) d.in_output = PETSC_TRUE; /* could not even write the last state: keep nothing of this run */
@@ -646,6 +626,7 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
   PetscCall(TslOutputDestroy(&d.out));
   PetscCall(TslHistoryDestroy(&d.hist));
   PetscCall(SNESDestroy(&d.snes));
+  PetscCall(VecDestroy(&d.velocity));
   PetscCall(VecDestroy(&d.F));
   for (PetscInt i = 0; i < d.ndefault; i++) PetscCall(PetscOptionsClearValue(NULL, d.defaults[i]));
   PetscFunctionReturn(ierr);

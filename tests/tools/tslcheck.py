@@ -4,6 +4,7 @@ Each check prints one line `name: value (expected E, tolerance T) PASS|FAIL`; `f
 if any failed. Uses Debian's python3-h5py and python3-numpy only.
 """
 import csv
+import math
 import sys
 
 import h5py
@@ -92,3 +93,13 @@ def finish():
         sys.exit(1)
     print("all checks passed")
     sys.exit(0)
+
+
+def slab_series(x, t, kappa, L=1.0, theta=100.0):
+    """Slab 0 < x < L initially at 0, face x = 0 held at theta from t = 0, x = L insulated:
+    theta [1 - sum_n 4/((2n+1) pi) sin((2n+1) pi x / 2L) exp(-(2n+1)^2 pi^2 kappa t / 4L^2)]."""
+    s = 0.0
+    for n in range(200):
+        m = (2 * n + 1) * math.pi / (2 * L)
+        s += 4.0 / ((2 * n + 1) * math.pi) * math.sin(m * x) * math.exp(-m * m * kappa * t)
+    return theta * (1.0 - s)

@@ -1,0 +1,254 @@
+/* What the explicit procedure (src/solve/explicit.c) needs of the problem: nodal force and heat vectors,
+ * lumped mass and capacity, element stable increments and the mask of prescribed dofs. Vectors only: an
+ * explicit increment never builds a matrix. Every per-element computation goes through the one element
+ * loop (TslProblemElementLoop) and the time-agnostic kernels (TslElementInternal, TslElementLumped,
+ * TslElementFaceLoad), as the implicit assembly does. */
+#include "problem_impl.h"
+#include <petscblaslapack.h>
+
+PetscErrorCode TslProblemSetMatrixFree(TslProblem p, PetscBool matrix_free)
+{
+  PetscFunctionBeginUser;
+  p->matrix_free = matrix_free;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+typedef struct {
+  PetscScalar *fi, *fe;
+  AsmHeat     *heat;
+  PetscInt     bad;
+} ForceCtx;
+
+/* One element's internal forces and heat flow into fi; its face loads: mechanical rows (pressure) as
+ * forces into fe, heat rows (flux, film) in residual form into fi. */
+static PetscErrorCode ForceElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+{
+  ForceCtx *c = (ForceCtx *)ctx;
+  PetscReal R[TSL_MAX_ELEM_DOF];
+  PetscBool inverted = PETSC_FALSE;
+  PetscInt  th       = p->ndof - 1;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslElementInternal(&d->in, R, NULL, &inverted));
+  if (inverted) {
+    c->bad = e;
+    *stop  = PETSC_TRUE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  for (PetscInt r = 0; r < d->nd; r++) c->fi[d->ld[r]] += R[r];
+  for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
+    const TslFaceRecord *rec = &p->face[i];
+    PetscReal            value, sink, h = 0;
+    PetscCall(TslProblemFaceLoadValue(p, rec, &value, &sink));
+    PetscCall(PetscArrayzero(R, d->nd));
+    PetscCall(TslElementFaceLoad(&d->in, rec->kind, rec->face, value, sink, R, NULL, &h));
+    for (PetscInt r = 0; r < d->nd; r++) {
+      if (r % p->ndof == th) c->fi[d->ld[r]] += R[r];
+      else c->fe[d->ld[r]] -= R[r];
+    }
+    if (rec->kind == TSL_FACE_FILM) c->heat->film += h;
+    else if (rec->kind != TSL_FACE_PRESSURE) c->heat->flux_in += h;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Local form of a ghosted vector, zeroed, and its array. */
+static PetscErrorCode BeginLocal(Vec V, Vec *vl, PetscScalar **a)
+{
+  PetscFunctionBeginUser;
+  *a = NULL;
+  if (!V) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecGhostGetLocalForm(V, vl));
+  PetscCall(VecZeroEntries(*vl));
+  PetscCall(VecGetArray(*vl, a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Restores the local form and adds the ghosts' contributions to their owners (one vector at a time:
+ * duplicated ghosted vectors share their scatter). */
+static PetscErrorCode EndLocal(Vec V, Vec *vl, PetscScalar **a)
+{
+  PetscFunctionBeginUser;
+  if (!V) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(VecRestoreArray(*vl, a));
+  PetscCall(VecGhostRestoreLocalForm(V, vl));
+  PetscCall(VecGhostUpdateBegin(V, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateEnd(V, ADD_VALUES, SCATTER_REVERSE));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, TslExplicitRates *rates)
+{
+  Vec                xl, il, el, cl = NULL;
+  const PetscScalar *xa;
+  PetscScalar       *fc;
+  AsmHeat            heat;
+  ForceCtx           c = {NULL, NULL, &heat, -1};
+  PetscReal          loc[5], g[5];
+  TslFailure         fail;
+  PetscErrorCode     ierr;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&heat, sizeof(heat)));
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  PetscCall(BeginLocal(Fi, &il, &c.fi));
+  PetscCall(BeginLocal(Fe, &el, &c.fe));
+  PetscCall(BeginLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
+  PetscCall(TslProblemElementLoop(p, xa, xa, ForceElement, &c));
+  /* a contact projection that fails has no cutback to fall back on here: an error on all ranks */
+  PetscCall(TslCaptureBegin());
+  ierr = fc ? TslProblemContactAssemble(p, ASM_RAW, xa, fc, NULL, &heat) : PETSC_SUCCESS;
+  PetscCall(TslCaptureEnd());
+  PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
+  PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit contact: %s", p->fail_msg);
+  for (PetscInt dof = 0; dof < p->nown * p->ndof; dof++) { /* nodal loads, owned dofs */
+    PetscReal v;
+    if (!p->nload[dof].active) continue;
+    v = TslProblemEvalLoadValue(p, &p->nload[dof]);
+    if (dof % p->ndof == p->ndof - 1) c.fi[dof] -= v, heat.flux_in += v;
+    else c.fe[dof] += v;
+  }
+  PetscCall(EndLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
+  PetscCall(EndLocal(Fe, &el, &c.fe));
+  PetscCall(EndLocal(Fi, &il, &c.fi));
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscCall(TslProblemCheckBadElement(p, c.bad));
+  if (Fc && !p->ncsurf) PetscCall(VecZeroEntries(Fc));
+  loc[0] = heat.flux_in, loc[1] = -heat.film, loc[2] = heat.interface, loc[3] = heat.dissipation, loc[4] = heat.friction_heat;
+  PetscCall(MPIU_Allreduce(loc, g, 5, MPIU_REAL, MPIU_SUM, p->comm));
+  rates->heat_in = g[0], rates->film_out = g[1], rates->interface_heat = g[2], rates->dissipation = g[3], rates->friction_heat = g[4];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+typedef struct {
+  PetscScalar     *m;
+  const PetscReal *scale;
+  PetscInt         bad;
+} MassCtx;
+
+static PetscErrorCode MassElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+{
+  MassCtx  *c = (MassCtx *)ctx;
+  PetscReal M[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES], s = c->scale ? c->scale[e] : 1.0;
+  PetscInt  th = p->ndof - 1;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslElementLumped(&d->in, NULL, C, M));
+  for (PetscInt a = 0; a < d->in.type->geom->nnode; a++) {
+    if (!(M[a] > 0)) {
+      c->bad = e;
+      *stop  = PETSC_TRUE;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+    for (PetscInt i = 0; i < th; i++) c->m[d->ld[a * p->ndof + i]] += s * M[a];
+    c->m[d->ld[a * p->ndof + th]] += C[a];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemLumpedMass(TslProblem p, const PetscReal scale[], Vec M)
+{
+  Vec                xl, ml;
+  const PetscScalar *xa;
+  MassCtx            c = {NULL, scale, -1};
+  PetscInt           loc[3] = {-1, -1, -1}, g[3];
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  PetscCall(BeginLocal(M, &ml, &c.m));
+  PetscCall(TslProblemElementLoop(p, xa, xa, MassElement, &c));
+  PetscCall(EndLocal(M, &ml, &c.m));
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  if (c.bad >= 0) loc[0] = p->m->elem_id[c.bad], loc[1] = p->m->elem_line[2 * c.bad], loc[2] = p->m->elem_line[2 * c.bad + 1];
+  PetscCall(MPIU_Allreduce(loc, g, 3, MPIU_INT, MPI_MAX, p->comm));
+  if (g[0] >= 0) {
+    TslLoc l = {g[1], g[2]};
+    char   where[PETSC_MAX_PATH_LEN + 32];
+    SETERRQ(p->comm, PETSC_ERR_USER_INPUT,
+            "%s: element %" PetscInt_FMT " has a non-positive lumped mass at a node: its type is not supported in explicit steps (use a linear or a "
+            "modified second-order type)",
+            TslLocString(p->m, l, where, sizeof(where)), g[0]);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Largest eigenvalue of the symmetric part of D^-1/2 A D^-1/2 (A: the n x n block of the element matrix at
+ * rows/columns idx[], leading dimension lda; D: diagonal w), exactly (LAPACK syev): by Irons' theorem no
+ * eigenvalue of the assembled lumped-mass problem exceeds the largest element one, so the increment is
+ * stable with it; an iterative estimate from below (power iteration) was not, by 10 % on a bar. */
+static PetscErrorCode LargestEigenvalue(PetscInt n, const PetscInt idx[], const PetscReal A[], PetscInt lda, const PetscReal w[], PetscReal *lambda)
+{
+  PetscScalar  S[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF], work[8 * TSL_MAX_ELEM_DOF];
+  PetscReal    ev[TSL_MAX_ELEM_DOF], s[TSL_MAX_ELEM_DOF];
+  PetscBLASInt bn, lwork = 8 * TSL_MAX_ELEM_DOF, info;
+
+  PetscFunctionBeginUser;
+  *lambda = 0;
+  if (n == 0) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscBLASIntCast(n, &bn));
+  for (PetscInt i = 0; i < n; i++) s[i] = 1.0 / PetscSqrtReal(w[i]);
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt j = 0; j < n; j++) S[i * n + j] = 0.5 * (A[idx[i] * lda + idx[j]] + A[idx[j] * lda + idx[i]]) * s[i] * s[j];
+  PetscCallBLAS("LAPACKsyev", LAPACKsyev_("N", "U", &bn, S, &bn, ev, work, &lwork, &info));
+  PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK syev failed: %d", (int)info);
+  *lambda = ev[n - 1];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+typedef struct {
+  PetscReal *R, *K, *dt_mech, *dt_heat;
+  PetscInt   bad;
+} StableCtx;
+
+static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+{
+  StableCtx *c = (StableCtx *)ctx;
+  PetscReal  M[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES], w[TSL_MAX_ELEM_DOF] = {0}, lam;
+  PetscInt   idx[TSL_MAX_ELEM_DOF] = {0}, n = 0, nnode = d->in.type->geom->nnode, th = p->ndof - 1;
+  PetscBool  inverted = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslElementInternal(&d->in, c->R, c->K, &inverted));
+  if (inverted) {
+    c->bad = e;
+    *stop  = PETSC_TRUE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(TslElementLumped(&d->in, NULL, C, M));
+  for (PetscInt a = 0; a < nnode; a++)
+    for (PetscInt i = 0; i < th; i++)
+      if (!p->pinned[d->ld[a * p->ndof + i]]) idx[n] = a * p->ndof + i, w[n++] = M[a];
+  PetscCall(LargestEigenvalue(n, idx, c->K, d->nd, w, &lam));
+  c->dt_mech[e] = lam > 0 ? 2.0 / PetscSqrtReal(lam) : PETSC_MAX_REAL;
+  for (PetscInt a = 0; a < nnode; a++) idx[a] = a * p->ndof + th, w[a] = C[a];
+  PetscCall(LargestEigenvalue(nnode, idx, c->K, d->nd, w, &lam));
+  c->dt_heat[e] = lam > 0 ? 2.0 / lam : PETSC_MAX_REAL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemStableIncrements(TslProblem p, PetscReal dt_mech[], PetscReal dt_heat[])
+{
+  Vec                xl;
+  const PetscScalar *xa;
+  StableCtx          c = {NULL, NULL, dt_mech, dt_heat, -1};
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &c.R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &c.K));
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  PetscCall(TslProblemElementLoop(p, xa, xa, StableElement, &c));
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscCall(PetscFree2(c.R, c.K));
+  PetscCall(TslProblemCheckBadElement(p, c.bad));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemConstrainedMask(TslProblem p, Vec mask)
+{
+  PetscScalar *m;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetArray(mask, &m));
+  for (PetscInt d = 0; d < p->nown * p->ndof; d++) m[d] = (p->pinned[d] || p->bc[d].active) ? 1.0 : 0.0;
+  PetscCall(VecRestoreArray(mask, &m));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -1,0 +1,64 @@
+/* Private to src/solve/: the step driver's state, shared by the implicit procedures (driver.c) and the
+ * explicit one (explicit.c), which write the same frames and the same history. */
+#pragma once
+#include <thermoslide/solve.h>
+#include <thermoslide/output.h>
+#include <thermoslide/sys.h>
+#include <petscsnes.h>
+
+/* History columns: the implicit increment's figures, then the energies of explicit steps (zero in implicit
+ * steps; docs/explicit.md): kinetic ALLKE, internal ALLIE (work of the element forces), external work ALLWK
+ * (loads and reactions at prescribed dofs), frictional dissipation ALLFD, energy absorbed by contact ALLCW
+ * (ALLFD and the penalty's elastic energy), mass-scaling work ALLMW and the balance
+ * ETOTAL = ALLKE + ALLIE + ALLCW - ALLWK - ALLMW. */
+#define MAX_DEFAULTS 32
+#define MAX_FIELDS   32
+
+extern const char *const TslHistoryColumns[];
+#define NHISTORY 24
+
+typedef struct {
+  TslProblem prob;
+  MPI_Comm   comm;
+  SNES       snes;
+  Vec        F;
+  TslOutput  out;
+  TslHistory hist;
+  PetscReal  rtol, atol_rel, cutback, growth;
+  PetscInt   easy_its;
+  PetscInt   debug_diverge_step;   /* test hook: every increment of this step is declared diverged */
+  PetscReal  scale_u, scale_theta; /* largest initial residuals seen in the job */
+  PetscReal  r0_u, r0_theta;       /* initial residuals of the current solve */
+  PetscBool  field_on[MAX_FIELDS]; /* rows of the problem's field table written in frames */
+  PetscInt   frequency;
+  PetscInt   frame_step, frame_inc; /* last frame written */
+  PetscInt   done_step, done_inc;   /* last converged increment */
+  PetscReal  dissipated, absorbed;  /* frictional dissipation and the heat made of it, since the start */
+  PetscInt   max_contact_its;
+  PetscReal  sync_interval; /* -tsl_output_sync: seconds between syncs of the result files */
+  PetscInt   direct_max;    /* -tsl_direct_max_dofs: direct solver by default up to this size */
+  PetscReal  done_time, done_step_time, done_dt;
+  PetscBool  trial;     /* X holds an unconverged trial state (Xold the last converged one) */
+  PetscBool  in_output; /* inside a frame: a failure there leaves the output unusable */
+  PetscInt   ndefault;  /* solver options entered as defaults (SetDefaultOption) */
+  char       defaults[MAX_DEFAULTS][64];
+  /* explicit steps: the velocity and the energies carry over from one explicit step to the next (an
+   * implicit step between them is static: the velocity restarts at zero) */
+  Vec       velocity;
+  PetscInt  explicit_last; /* last explicit step run (0-based), -1 none */
+  PetscReal energy[6];     /* ALLKE ALLIE ALLWK ALLFD ALLCW ALLMW since the start of the job */
+  PetscReal explicit_safety;   /* -tsl_explicit_safety */
+  PetscInt  explicit_progress; /* -tsl_explicit_progress */
+  PetscInt  explicit_history;  /* -tsl_explicit_history */
+} Driver;
+
+#define HIST_ENERGY 17 /* first energy column */
+
+/* Helpers of driver.c used by explicit.c */
+PetscErrorCode TslDriverSetOutputRequests(Driver *d, const TslStep *step);
+PetscErrorCode TslDriverWriteFrame(Driver *d, PetscInt step, PetscInt inc, PetscReal time);
+PetscErrorCode TslDriverPrintTables(Driver *d, const TslStep *step);
+/* The explicit procedure's run-time options (read with the others, before the unused-option check). */
+PetscErrorCode TslExplicitSetFromOptions(Driver *d);
+/* One explicit step (explicit.c); *total_time advances by the step period. */
+PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time);
