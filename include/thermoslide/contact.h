@@ -299,7 +299,8 @@ typedef struct {
 PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
 
 /* After an increment converged: xi_old = out->xi, xi_anchor = out->xi_anchor, w_old = out->w,
- * w_anchor = out->w_anchor (lambda is left to TslContactAugmentedUpdate). */
+ * w_anchor = out->w_anchor, and in 3D eta_old = out->eta, eta_anchor = out->eta_anchor (lambda is left to
+ * TslContactAugmentedUpdate). */
 PetscErrorCode TslContactStateUpdate(const TslContactOutput *out, TslContactState *h);
 
 /* A new contact starts stress-free at parameter xi of the input's segment: xi_old = xi_anchor = xi,

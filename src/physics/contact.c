@@ -362,8 +362,9 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
 PetscErrorCode TslProblemContactCommit(TslProblem p)
 {
   PetscFunctionBeginUser;
+  /* the ghost update is collective: the condition must not depend on the rank (active does) */
   for (PetscInt k = 0; k < p->ncsurf; k++)
-    if (p->csurf[k].dim == 3 && p->csurf[k].active && p->csurf[k].smooth > 0) {
+    if (p->csurf[k].dim == 3 && p->csurf[k].smooth > 0) {
       Vec                xl;
       const PetscScalar *xa;
       PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
