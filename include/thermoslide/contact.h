@@ -413,5 +413,9 @@ PetscErrorCode TslContactBinGridDestroy(TslContactBinGrid *grid);
 PetscErrorCode TslContactBinGridQuery(TslContactBinGrid grid, const PetscReal p[], PetscReal radius, PetscInt cap, PetscInt cand[], PetscInt *ncand,
                                       PetscInt *nbins);
 
+/* The same query into a growing array: *cand (PetscMalloc'ed, *cap entries) is enlarged when more faces
+ * than *cap are found, so that all *ncand candidates are listed. */
+PetscErrorCode TslContactBinGridQueryGrow(TslContactBinGrid grid, const PetscReal p[], PetscReal radius, PetscInt *cap, PetscInt **cand, PetscInt *ncand);
+
 /* Number of bins in x and in the other directions (y, or y times z in 3D; for logs and tests). */
 PetscErrorCode TslContactBinGridGetSize(TslContactBinGrid grid, PetscInt *nx, PetscInt *ny);

@@ -247,6 +247,25 @@ def faces(shape):
 R_AXI = 2.5
 
 
+def series_interaction(series, auglagr=False, surf=False):
+    """The spec's interface of each series (planar and 3D decks alike): pressure-dependent gap conductance,
+    gap radiation, or Lagrange friction with heat generation; the contact pair (smoothing 0.05), the
+    sliding amplitude and the initial temperature."""
+    if series == "conductance":
+        text = "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
+        if auglagr:
+            text += "*SURFACE BEHAVIOR, AUGMENTED LAGRANGE\n"
+    elif series == "radiation":
+        text = ("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
+                "*SURFACE INTERACTION, NAME=IFACE\n*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 1.0\n")
+    else:
+        text = ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION, LAGRANGE\n 0.1\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n"
+                "*GAP HEAT GENERATION\n 0.5, 0.5\n")
+    return text + ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if surf else "") +
+                   "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n"
+                   "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+
+
 def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, refine=1):
     """The spec's finite-sliding problems: a block 2 x 0.25 (4 x 6 cells) pressed on a block 6 x 1.25
     (12 x 2 cells) fixed at its bottom; total area 8, rho c = 1. The thin upper block passes the applied
@@ -295,19 +314,7 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
               "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL, REF NODE=9001\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL, REF NODE=9002\n 1.0\n")
              if kin == "PEG" else
              "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n 1.0\n"))
-    if series == "conductance":
-        text += "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
-        if auglagr:
-            text += "*SURFACE BEHAVIOR, AUGMENTED LAGRANGE\n"
-    elif series == "radiation":
-        text += ("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
-                 "*SURFACE INTERACTION, NAME=IFACE\n*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 1.0\n")
-    else:
-        text += ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION, LAGRANGE\n 0.1\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n"
-                 "*GAP HEAT GENERATION\n 0.5, 0.5\n")
-    text += ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if surf else "") +
-             "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n"
-             "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+    text += series_interaction(series, auglagr, surf)
     if series == "friction":
         ref = topface[0]
         # twist rings: the sliding face also turns; the slide is 0.6 axial and 0.8 circumferential of the
@@ -462,17 +469,7 @@ def sliding_blocks_3d(series, typ, outdir=None):
             "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
             nset("BASE", base) + nset("TOPFACE", topface) + surface("MAIN", main) + surface("SECONDARY", sec) + MAT +
             "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n")
-    if series == "conductance":
-        text += "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
-    elif series == "radiation":
-        text += ("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
-                 "*SURFACE INTERACTION, NAME=IFACE\n*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 1.0\n")
-    else:
-        text += ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION, LAGRANGE\n 0.1\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n"
-                 "*GAP HEAT GENERATION\n 0.5, 0.5\n")
-    text += ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05\n SECONDARY, MAIN\n"
-             "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n"
-             "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+    text += series_interaction(series)
     if series == "friction":
         ref = topface[0]
         text += "".join("*EQUATION\n 2\n %d, %d, 1.0, %d, %d, -1.0\n" % (n, d, ref, d) for n in topface[1:] for d in (1, 2, 3))
