@@ -154,7 +154,7 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
     for (PetscInt d = 0; d < 3; d++) cm[d] += ym[3 * a + d] / mc;
   for (PetscInt s = 0; s < npiece; s++) {
     PetscInt    idx[4], nc = pg->nnode, nq;
-    PetscReal   yp[12], Xp[12], As[3], ns[3], c[3] = {0, 0, 0}, e1[3], e2[3], la, P[8], M[8], Q[2 * TSL_CONTACT_CLIP_MAX_VERTICES], ap, aq, qc[2] = {0, 0};
+    PetscReal   yp[12], Xp[12], As[3], ns[3], c[3] = {0, 0, 0}, e1[3], e2[3], la, P[8], M[8], Q[2 * TSL_CONTACT_CLIP_MAX_VERTICES], ap, aq, qc[2] = {0, 0}, qm[2] = {0, 0};
 
     for (PetscInt a = 0; a < nc; a++) {
       idx[a] = sg->nsub ? sg->sub_node[s][a] : a;
@@ -199,11 +199,16 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
     if (nq < 3) continue;
     aq = TslContactPolygonArea(nq, Q);
     if (aq <= 1e-10 * ap) continue; /* faces that only touch along an edge or at a corner */
-    /* fan from the first vertex; the rule on each triangle */
-    for (PetscInt i = 1; i + 1 < nq; i++) {
-      const PetscReal *q0 = &Q[0], *q1 = &Q[2 * i], *q2 = &Q[2 * i + 2];
+    /* fan from the vertex centroid (inside: the overlap is convex), the rule on each triangle: the points do
+     * not depend on where the clipped polygon's vertex list starts, so mirror-symmetric faces get
+     * mirror-symmetric points (a fan from a vertex integrated the nonlinear laws asymmetrically) */
+    for (PetscInt i = 0; i < nq; i++)
+      for (PetscInt d = 0; d < 2; d++) qm[d] += Q[2 * i + d] / nq;
+    for (PetscInt i = 0; i < nq; i++) {
+      const PetscReal *q0 = qm, *q1 = &Q[2 * i], *q2 = &Q[2 * ((i + 1) % nq)];
       PetscReal        at = 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q2[0] - q0[0]) * (q1[1] - q0[1]));
 
+      if (at <= 1e-14 * aq) continue; /* a repeated or collinear vertex of the clipped polygon */
       for (PetscInt d = 0; d < 2; d++) qc[d] += at * (q0[d] + q1[d] + q2[d]) / 3;
       for (PetscInt g = 0; g < TSL_CONTACT_TRI_GAUSS; g++) {
         PetscReal q[2], xi[2], N[4], dN[8], Jp, a1[3] = {0, 0, 0}, a2[3] = {0, 0, 0}, cr[3];

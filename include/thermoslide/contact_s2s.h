@@ -74,8 +74,8 @@ PetscErrorCode TslContactPointExpand(PetscInt nu, PetscInt nk, PetscInt nsn, con
 #define TSL_CONTACT_CLIP_MAX_VERTICES 16 /* a convex n-gon clipped by a convex m-gon has at most n + m vertices */
 #define TSL_CONTACT_TRI_GAUSS         7  /* points of the triangle rule (degree 5) */
 /* points of one (secondary face, main face) overlap: up to 4 linear pieces (tri6), each polygon fanned into
- * at most TSL_CONTACT_CLIP_MAX_VERTICES - 2 triangles */
-#define TSL_CONTACT_OVERLAP_MAX_POINTS (4 * (TSL_CONTACT_CLIP_MAX_VERTICES - 2) * TSL_CONTACT_TRI_GAUSS)
+ * at most TSL_CONTACT_CLIP_MAX_VERTICES triangles (a fan from its centroid) */
+#define TSL_CONTACT_OVERLAP_MAX_POINTS (4 * TSL_CONTACT_CLIP_MAX_VERTICES * TSL_CONTACT_TRI_GAUSS)
 
 /* Sutherland-Hodgman: the part of the polygon P (n vertices P[2*i + d], any simple polygon) inside the
  * convex polygon C (m vertices, counter-clockwise). Writes the vertices to Q (room for cap), returns their
@@ -101,7 +101,7 @@ typedef struct {
  * current y[3*b + d]) with a main face (mkind, current ym[]): each linear piece of the secondary face (the
  * face, or tri6's four sub-triangles) is flattened onto its plane (centroid, area normal n_s), the main
  * face's corners are projected onto that plane along n_s, the main polygon is clipped by the piece's
- * (Sutherland-Hodgman) and the overlap fanned into triangles, each with the degree-5 rule. A point's
+ * (Sutherland-Hodgman) and the overlap fanned from its vertex centroid into triangles, each with the degree-5 rule. A point's
  * parameters on the piece come from the plane coordinates (affine for triangles, the bilinear inverse for
  * quads) and its weight is the plane weight times the reference-to-plane area ratio dA_ref/dA_plane there,
  * so the weights are reference areas: their sum is the reference area of the overlap (the whole face's

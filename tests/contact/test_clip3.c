@@ -150,7 +150,7 @@ static PetscErrorCode Eval(const TslContactLaw *law, Case *c, PetscReal R[], Pet
 
 /* Main face (body below): a warped quad4 or a tri3 around the origin; secondary face above it (normal down),
  * at height gap + the main face's height, small displacements and temperatures; the point is the fourth
- * of the overlap's points (the second with smoothing). History: the start of the increment ds away (reference units), the anchor
+ * of the overlap's points (the ninth with smoothing, off the centre). History: the start of the increment ds away (reference units), the anchor
  * `anchor` beyond it. */
 static PetscErrorCode CaseSetUp(Case *c, PetscInt mkind, PetscInt skind, PetscReal gap, PetscReal smoothing, PetscReal ds, PetscReal anchor)
 {
@@ -190,7 +190,7 @@ static PetscErrorCode CaseSetUp(Case *c, PetscInt mkind, PetscInt skind, PetscRe
   PetscCall(TslContactOverlap3(skind, c->X, y, mkind, ym, CAP, Pts, &n, NULL));
   PetscCheck(n > 3, PETSC_COMM_SELF, PETSC_ERR_PLIB, "test faces do not overlap");
   {
-    PetscInt q = smoothing > 0 ? 1 : 3; /* smoothed: a point near a corner of the overlap, in the rounded zone */
+    PetscInt q = smoothing > 0 ? 8 : 3; /* smoothed: a point near a corner of the overlap, in the rounded zone */
     for (PetscInt b = 0; b < c->nsn; b++) c->N[b] = Pts[q].N[b];
     c->in.area = Pts[q].w;
   }
