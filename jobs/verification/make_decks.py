@@ -439,11 +439,11 @@ def faces_on(nodes, elems, shape, y):
     return out
 
 
-def sliding_blocks_3d(series, typ, outdir=None):
+def sliding_blocks_3d(series, typ, outdir=None, surf=False):
     """The spec's three series on 3D blocks (see above): the planar decks' loads and steps on faces of
     width 1 (small block) and 1.2 (large block), sliding along x, pressing along -y, z held on the small
     block's top face. Volume 6 x 1.25 x 1.2 + 2 x 0.25 x 1 = 9.5 (rho c = 1): the friction series ends at
-    60 / 9.5."""
+    60 / 9.5. surf: TYPE=SURFACE TO SURFACE (job name *_surf_*)."""
     typ = typ.upper()
     bnodes, belems, shape = mesh3d(12, 2, 2, 0.0, 6.0, 0.0, 1.25, -0.1, 1.1, typ, mirror=3.0)
     tnodes, telems, _ = mesh3d(4, 6, 2, 2.0, 4.0, 1.25, 1.5, 0.0, 1.0, typ, 1000, 1000, mirror=3.0)
@@ -469,7 +469,7 @@ def sliding_blocks_3d(series, typ, outdir=None):
             "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
             nset("BASE", base) + nset("TOPFACE", topface) + surface("MAIN", main) + surface("SECONDARY", sec) + MAT +
             "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n")
-    text += series_interaction(series)
+    text += series_interaction(series, surf=surf)
     if series == "friction":
         ref = topface[0]
         text += "".join("*EQUATION\n 2\n %d, %d, 1.0, %d, %d, -1.0\n" % (n, d, ref, d) for n in topface[1:] for d in (1, 2, 3))
@@ -491,7 +491,7 @@ def sliding_blocks_3d(series, typ, outdir=None):
                  "*STEP, NAME=SLIDE OFF, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.1\n"
                  "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, 2, 2\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, 1, 1, 5.0\n"
                  "*DFLUX, AMPLITUDE=FLUXDOWN\n" + load_lines(pressed, "S", "100.0") + "*END STEP\n")
-    name = "sliding_%s_%s.inp" % (series, typ.lower())
+    name = "sliding_%s%s_%s.inp" % (series, "_surf" if surf else "", typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:
         f.write(text)
 
@@ -603,7 +603,7 @@ if __name__ == "__main__":
         flags = sys.argv[5:]
         refine = [int(f.split("=")[1]) for f in flags if f.startswith("--refine=")]
         if sys.argv[2].upper().startswith("C3D"):
-            sliding_blocks_3d(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4])
+            sliding_blocks_3d(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], surf="--surf" in flags)
         else:
             sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr="--auglagr" in flags, surf="--surf" in flags,
                            refine=refine[0] if refine else 1)
