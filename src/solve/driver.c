@@ -101,6 +101,7 @@ static PetscErrorCode SetUpSolver(Driver *d)
   d->sync_interval      = 1.0;
   d->direct_max         = -1; /* by dimension, below */
   d->fallback_max       = -1;
+  d->fallback_its       = 200;
   d->debug_diverge_step = 0;
   PetscOptionsBegin(d->comm, NULL, "thermoslide increment control", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_rtol", "per-field Newton residual reduction", 0, PETSC_TRUE, 1, PETSC_TRUE, &d->rtol));
@@ -122,6 +123,10 @@ static PetscErrorCode SetUpSolver(Driver *d)
                           "an increment whose iterative linear solve fails is retried with MUMPS LU (for the rest of the job) up to this many unknowns "
                           "(default 400000 in 2D, 150000 in 3D; 0: never)",
                           0, PETSC_MAX_INT, &d->fallback_max));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_fallback_its",
+                          "an increment that needed more linear iterations per Newton iteration than this switches to MUMPS LU (up to "
+                          "-tsl_fallback_max_dofs unknowns) for the rest of the job",
+                          1, PETSC_MAX_INT, &d->fallback_its));
   PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", 0,
                           PETSC_MAX_INT, &d->debug_diverge_step));
   PetscOptionsEnd();
@@ -364,6 +369,31 @@ PetscErrorCode TslDriverPrintTables(Driver *d, const TslStep *step)
  * series with augmented Lagrange in step 5: two nodes left near the end of the main surface, pressures
  * above the conductance table's last point (k flat, so no thermal residual forced a step either), and
  * lambda growing by eps_n |g| = 1.04 in every one of the eight solves. */
+/* Switches the linear solver to MUMPS LU for the rest of the job (once; up to -tsl_fallback_max_dofs
+ * unknowns, whose factorisation MUMPS affords), saying why in the log. */
+static PetscErrorCode FallBackToDirect(Driver *d, Vec X, PetscInt s, PetscInt inc, const char *why, PetscBool *switched)
+{
+  PetscInt N;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetSize(X, &N));
+  d->fell_back = PETSC_TRUE;
+  *switched    = (PetscBool)(N <= d->fallback_max);
+  if (*switched) {
+    KSP ksp;
+    PC  pc;
+    PetscCall(PetscPrintf(d->comm,
+                          "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": %s; the direct solver MUMPS serves the rest of the job (%" PetscInt_FMT
+                          " unknowns; -tsl_fallback_max_dofs %" PetscInt_FMT ")\n",
+                          s + 1, inc + 1, why, N, d->fallback_max));
+    PetscCall(SNESGetKSP(d->snes, &ksp));
+    PetscCall(KSPGetPC(ksp, &pc));
+    PetscCall(PCSetType(pc, PCLU));
+    PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode SolveIncrement(Driver *d, Vec X, SNESConvergedReason *reason, PetscInt *its, PetscInt *lits)
 {
   PetscBool again = PETSC_TRUE, repattern, augmented = PETSC_FALSE;
@@ -500,23 +530,12 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       /* the preconditioner, not the increment, failed (quadratic tetrahedra pressed into contact defeat the
        * AMG split): the same increment again with a direct solve, which MUMPS affords up to
        * -tsl_fallback_max_dofs, and for the rest of the job */
-      PetscInt N;
-      PetscCall(VecGetSize(X, &N));
-      d->fell_back = PETSC_TRUE;
-      if (N <= d->fallback_max) {
-        KSP ksp;
-        PC  pc;
-        PetscCall(PetscPrintf(d->comm,
-                              "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": the iterative linear solve failed (%s); the increment is repeated with the "
-                              "direct solver MUMPS, used for the rest of the job (%" PetscInt_FMT " unknowns; -tsl_fallback_max_dofs %" PetscInt_FMT ")\n",
-                              s + 1, inc + 1, SNESConvergedReasons[reason], N, d->fallback_max));
+      PetscBool switched;
+      PetscCall(FallBackToDirect(d, X, s, inc, "the iterative linear solve failed (DIVERGED_LINEAR_SOLVE); the increment is repeated", &switched));
+      if (switched) {
         PetscCall(VecCopy(Xold, X));
         PetscCall(TslProblemContactRollback(d->prob));
         d->trial = PETSC_FALSE;
-        PetscCall(SNESGetKSP(d->snes, &ksp));
-        PetscCall(KSPGetPC(ksp, &pc));
-        PetscCall(PCSetType(pc, PCLU));
-        PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
         continue;
       }
     }
@@ -548,6 +567,14 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     d->trial = PETSC_FALSE;
     PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
     PetscCall(Accept(d, s, inc, t, h, *total_time, its, lits));
+    if (!d->fell_back && its > 0 && lits > d->fallback_its * its) {
+      /* converged, but the preconditioner barely helps: a direct solve is cheaper from here on */
+      PetscBool switched;
+      char      why[128];
+      PetscCall(PetscSNPrintf(why, sizeof(why), "%" PetscInt_FMT " linear iterations per Newton iteration (-tsl_fallback_its %" PetscInt_FMT ")",
+                              lits / its, d->fallback_its));
+      PetscCall(FallBackToDirect(d, X, s, inc - 1, why, &switched));
+    }
     if (last || inc % d->frequency == 0) PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
     if (!step->direct) {
