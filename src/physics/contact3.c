@@ -130,6 +130,8 @@ PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt k, const PetscSca
       PetscCall(PetscMalloc1(cap, &cand));
       PetscCall(TslContactBinGridQuery(grid, y, cs->search_radius, cap, cand, &ncand, NULL));
     }
+    /* in face order, so that a tie goes the same way whichever faces this rank holds */
+    PetscCall(PetscSortInt(ncand, cand));
     for (PetscInt c = 0; c < ncand; c++) {
       const PetscReal *x = &fx[3 * np * cand[c]];
       PetscReal        xi[2], q[3], n[3], dist, gap;
@@ -146,6 +148,11 @@ PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt k, const PetscSca
       /* equal distances are a tie (the first face wins), whatever the round-off of large coordinates */
       if (dist < best_d - TSL_CONTACT3_XI_TOL * cs->search_radius) best = cand[c], best_d = dist, best_xi[0] = xi[0], best_xi[1] = xi[1];
     }
+    /* a face held only for its nodal normals never pairs: CheckHeldRegion (contact.c) guarantees that no
+     * node reaches one, so this is a defect, not a node out of contact */
+    PetscCheck(best < 0 || !cs->ring[best], PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "contact node %" PetscInt_FMT " reached main face %" PetscInt_FMT " at the edge of the part of the main surface held here",
+               p->m->node_id[cn->lnode], best);
     if (best != cn->seg) {
       (*changed)++;
       if (best >= 0 && cn->seg >= 0) {
