@@ -448,15 +448,21 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
  * gives the nodal normals of the next increment's smoothing). */
 PetscErrorCode TslProblemContactCommit(TslProblem p)
 {
+  PetscBool normals = PETSC_FALSE;
+
   PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < p->ncsurf; k++)
-    if (p->csurf[k].dim == 3 && p->csurf[k].active && p->csurf[k].smooth > 0) {
-      Vec                xl;
-      const PetscScalar *xa;
-      PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
-      PetscCall(TslProblemContact3Normals(p, &p->csurf[k], xa));
-      PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
-    }
+  /* the ghost update is collective: every rank takes part (dim and smoothing are the same on all ranks),
+   * also one that owns no secondary node of the pair (it used to skip it, and a 2-rank 3D run whose pair
+   * was split hung in the next ghost update) */
+  for (PetscInt k = 0; k < p->ncsurf; k++) normals = (PetscBool)(normals || (p->csurf[k].dim == 3 && p->csurf[k].smooth > 0));
+  if (normals) {
+    Vec                xl;
+    const PetscScalar *xa;
+    PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+    for (PetscInt k = 0; k < p->ncsurf; k++)
+      if (p->csurf[k].dim == 3 && p->csurf[k].active && p->csurf[k].smooth > 0) PetscCall(TslProblemContact3Normals(p, &p->csurf[k], xa));
+    PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  }
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode *cn = &p->cnode[i];
     if (cn->seg >= 0) {

@@ -109,7 +109,9 @@ PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt k, const PetscSca
 
   PetscFunctionBeginUser;
   if (!cs->active) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscMalloc3(6 * cs->nmain + 1, &box, 3 * np * cs->nmain + 1, &fx, cap, &cand));
+  /* cand on its own: it grows (freed and allocated again) when a query returns more than cap faces */
+  PetscCall(PetscMalloc2(6 * cs->nmain + 1, &box, 3 * np * cs->nmain + 1, &fx));
+  PetscCall(PetscMalloc1(cap, &cand));
   for (PetscInt f = 0; f < cs->nmain; f++) {
     FacePosition(p, cs, xa, f, &fx[3 * np * f]);
     PetscCall(TslContactFace3Box(cs->kind[f], &fx[3 * np * f], &box[6 * f]));
@@ -167,6 +169,7 @@ PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt k, const PetscSca
     }
   }
   PetscCall(TslContactBinGridDestroy(&grid));
-  PetscCall(PetscFree3(box, fx, cand));
+  PetscCall(PetscFree2(box, fx));
+  PetscCall(PetscFree(cand));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

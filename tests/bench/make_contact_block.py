@@ -73,7 +73,9 @@ with open(path, "w") as f:
     if flavour == "calculix":
         # the penalty thermoslide uses by default: 10 E / main face size
         w("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n %g\n" % (10 * E * nb))
-    w("*GAP CONDUCTANCE\n 1000.0, 0.0\n 2000.0, 200.0\n")
+    # conductance against the contact pressure: thermoslide's dialect says so with PRESSURE (without it the
+    # abscissa is the clearance); CalculiX's *GAP CONDUCTANCE is always by pressure and takes no such parameter
+    w("*GAP CONDUCTANCE%s\n 1000.0, 0.0\n 2000.0, 200.0\n" % ("" if flavour == "calculix" else ", PRESSURE"))
     w("*CONTACT PAIR, INTERACTION=IFACE%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if flavour == "calculix" else ""))
     w("*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
     w("*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n")
