@@ -365,6 +365,7 @@ PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
   *repattern = PETSC_FALSE;
   if (!p->ncsurf) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  PetscCall(TslPhaseBegin(TSL_PHASE_SEARCH));
   PetscCall(CheckHeldRegion(p, xa));
   PetscCall(Search(p, xa, &changed));
   {
@@ -372,6 +373,7 @@ PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
     PetscCall(TslProblemContactS2SSearch(p, xa, &c2));
     changed += c2;
   }
+  PetscCall(TslPhaseEnd(TSL_PHASE_SEARCH));
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
   if (p->pattern_stale) changed++;
   p->pattern_stale = PETSC_FALSE;
