@@ -301,6 +301,19 @@ PetscErrorCode TslContactFace3Box(PetscInt kind, const PetscReal x[], PetscReal 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscReal TslContactFace3HullBound(PetscInt kind)
+{
+  const TslContactFace3 *f = TslContactFace3Get(kind);
+  PetscReal              b = 1;
+
+  for (PetscInt i = 0; f && i < f->geom->nnode; i++) {
+    PetscReal s = 0;
+    for (PetscInt a = 0; a < f->geom->nnode; a++) s += PetscAbsReal(f->hull[i][a]);
+    b = PetscMax(b, s);
+  }
+  return b;
+}
+
 /* |a1 x a2| at reference point xi (the area element), with the shape functions there. */
 static PetscErrorCode AreaElement(const TslContactFace3 *f, const PetscReal x[], const PetscReal xi[], PetscReal N[], PetscReal *dA)
 {

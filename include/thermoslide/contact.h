@@ -344,6 +344,10 @@ PetscBool TslContactFace3Inside(PetscInt kind, const PetscReal xi[], PetscReal t
 /* Bounding box (xmin, ymin, zmin, xmax, ymax, zmax) of the face x[]: of the control points of its
  * Bernstein form, which contains it (its nodes for the linear families). */
 PetscErrorCode TslContactFace3Box(PetscInt kind, const PetscReal x[], PetscReal box[6]);
+/* How far the box of a face (TslContactFace3Box) can move when no node moves by more than 1 in any
+ * coordinate: the largest sum of |hull coefficients| of a control point (1 for flat families, more for
+ * quadratic ones, whose control points extrapolate the nodes). */
+PetscReal TslContactFace3HullBound(PetscInt kind);
 
 /* Tributary areas of the nodes of a secondary face, reference coordinates x[]: w[a] = int N_a dA (tri3,
  * quad4); tri6 (whose consistent corner weights are zero) takes the weights of its linear subdivision into

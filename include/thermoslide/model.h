@@ -252,6 +252,23 @@ typedef struct {
   PetscInt  nsface, snper, sface_kind;
   PetscInt *sface_node; /* [snper*nsface] node ids */
   PetscInt *sface_asm;  /* [nsface] */
+  /* The part of the main surface a rank holds (src/mesh/distribute.c, docs/contact.md "Parallel
+   * exchange"): the main faces whose reference box meets the held region, the reference box of the
+   * rank's secondary nodes (and secondary faces) inflated by margin, plus one ring of neighbours (2D: the
+   * previous and next face; 3D: the faces sharing a node), which only complete the smoothing data and are
+   * never paired (main_ring = 1). main_prev/main_next are local face numbers, -1 at an end of the surface,
+   * -2 for a neighbour this rank does not hold. main_own lists the main-surface nodes this rank owns (their
+   * displacement bounds how far unheld faces can have come). */
+  PetscInt  nmain_global; /* faces of the whole main surface */
+  PetscReal margin;       /* inflation of the held region (-tsl_contact_margin or the deck's default) */
+  PetscInt  margin_default; /* 1 if margin is the deck's default */
+  PetscReal margin_disp;  /* largest prescribed displacement of the deck (for the default and the log) */
+  PetscReal margin_radius; /* the search radius (for the default and the log) */
+  PetscInt  held;         /* 1 if this rank has a held region (it owns secondary nodes or faces) */
+  PetscReal held_box[6];  /* held region: lower corner [0..2], upper corner [3..5] (reference) */
+  PetscInt *main_ring;    /* [nmain] */
+  PetscInt  nmain_own;
+  PetscInt *main_own; /* [nmain_own] node ids */
 } TslContactPair;
 
 /* *FIXED MASS SCALING / *VARIABLE MASS SCALING in an explicit step: the element masses of the set (all

@@ -65,6 +65,8 @@ typedef enum {
   TSL_PHASE_CONTACT,   /* contact search and update between the solves */
   TSL_PHASE_SOLVE,     /* the nonlinear solves (SNESSolve: contains assembly and solver set-up) */
   TSL_PHASE_OUTPUT,    /* field frames, history, prints */
+  TSL_PHASE_SEARCH,    /* within TSL_PHASE_CONTACT: the pairing itself (held-region check and search, not the
+                          matrix pattern rebuilt after it), printed as "contact search" */
   TSL_PHASE_COUNT
 } TslPhase;
 

@@ -80,6 +80,8 @@ PetscErrorCode TslModelDestroy(TslModel **model)
     PetscCall(PetscFree(c->sec_length));
     PetscCall(PetscFree(c->sface_node));
     PetscCall(PetscFree(c->sface_asm));
+    PetscCall(PetscFree(c->main_ring));
+    PetscCall(PetscFree(c->main_own));
   }
   PetscCall(PetscFree(m->pairs));
   for (PetscInt i = 0; i < m->nstep; i++) {
@@ -372,6 +374,8 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
     PetscCall(PackArray(p, &c->sec_length, c->nsec, sizeof(PetscReal)));
     PetscCall(PackArray(p, &c->sface_node, c->snper * c->nsface, sizeof(PetscInt)));
     PetscCall(PackArray(p, &c->sface_asm, c->nsface, sizeof(PetscInt)));
+    PetscCall(PackArray(p, &c->main_ring, c->nmain, sizeof(PetscInt)));
+    PetscCall(PackArray(p, &c->main_own, c->nmain_own, sizeof(PetscInt)));
   }
   PetscCall(PackArray(p, &m->steps, m->nstep, sizeof(TslStep)));
   for (PetscInt i = 0; i < m->nstep; i++) {

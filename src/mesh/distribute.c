@@ -98,13 +98,126 @@ static PetscBool SecondaryFaceHeld(const TslModel *g, const TslContactPair *c, P
   return PETSC_FALSE;
 }
 
+/* Reference box (lower corner [0..2], upper corner [3..5]) of main face i of pair c: the box of its
+ * control hull, as the search builds it from the current coordinates. */
+static PetscErrorCode MainFaceBox(const TslModel *g, const TslContactPair *c, PetscInt i, PetscReal box[6])
+{
+  const PetscInt dim = g->dim, nf = dim == 2 ? c->nper : TslContactFace3Nodes(c->main_kind[i]);
+  PetscReal      x[3 * TSL_MAX_FACE_NODES], b[6];
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < nf; a++)
+    for (PetscInt d = 0; d < dim; d++) x[dim * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, c->main_node[c->nper * i + a]) + d];
+  if (dim == 2) PetscCall(TslContactFaceBox((TslContactFaceKind)c->main_face, x, b));
+  else PetscCall(TslContactFace3Box(c->main_kind[i], x, b));
+  for (PetscInt d = 0; d < 3; d++) box[d] = d < dim ? b[d] : 0, box[3 + d] = d < dim ? b[dim + d] : 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The held region of rank r for pair c (model.h): the reference box of the secondary nodes it owns and of
+ * the nodes of the secondary faces it holds, inflated by c->margin; PETSC_FALSE if it has neither. */
+static PetscBool HeldRegion(const TslModel *g, const TslContactPair *c, const PetscInt owner[], PetscInt r, PetscReal box[6])
+{
+  PetscBool held = PETSC_FALSE;
+
+  for (PetscInt d = 0; d < 3; d++) box[d] = PETSC_MAX_REAL, box[3 + d] = -PETSC_MAX_REAL;
+  for (PetscInt i = 0; i < c->nsec + c->nsface; i++) {
+    const PetscBool node = (PetscBool)(i < c->nsec);
+    const PetscInt  f = i - c->nsec, n = node ? 1 : c->snper;
+    if (node ? owner[TslModelNodeIndex(g, c->sec_node[i])] != r : !SecondaryFaceHeld(g, c, f, owner, r)) continue;
+    held = PETSC_TRUE;
+    for (PetscInt a = 0; a < n; a++) {
+      const PetscReal *x = &g->node_xyz[3 * TslModelNodeIndex(g, node ? c->sec_node[i] : c->sface_node[c->snper * f + a])];
+      for (PetscInt d = 0; d < g->dim; d++) box[d] = PetscMin(box[d], x[d]), box[3 + d] = PetscMax(box[3 + d], x[d]);
+    }
+  }
+  for (PetscInt d = 0; d < 3; d++) {
+    box[d]     = !held || d >= g->dim ? 0 : box[d] - c->margin;
+    box[3 + d] = !held || d >= g->dim ? 0 : box[3 + d] + c->margin;
+  }
+  return held;
+}
+
+/* The main faces rank r holds for pair c: sel[i] = 1 for a face whose reference box meets the held region
+ * B (a face the rank's nodes can pair with), 2 for a neighbour of such a face (2D: the previous and next
+ * face; 3D: a face sharing a node with one), held only so that smoothing sees what it sees on one rank,
+ * 0 otherwise. */
+static PetscErrorCode SelectMainFaces(const TslModel *g, const TslContactPair *c, const PetscReal B[6], PetscInt sel[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < c->nmain; i++) {
+    PetscReal b[6];
+    PetscCall(MainFaceBox(g, c, i, b));
+    sel[i] = 1;
+    for (PetscInt d = 0; d < g->dim; d++)
+      if (b[3 + d] < B[d] || b[d] > B[3 + d]) sel[i] = 0;
+  }
+  if (g->dim == 2) {
+    for (PetscInt i = 0; i < c->nmain; i++)
+      if (sel[i] == 1) {
+        if (c->main_prev[i] >= 0 && !sel[c->main_prev[i]]) sel[c->main_prev[i]] = 2;
+        if (c->main_next[i] >= 0 && !sel[c->main_next[i]]) sel[c->main_next[i]] = 2;
+      }
+  } else {
+    PetscInt *core, n = 0;
+    PetscCall(PetscMalloc1(c->nper * c->nmain + 1, &core));
+    for (PetscInt i = 0; i < c->nmain; i++)
+      for (PetscInt a = 0; sel[i] == 1 && a < c->nper; a++)
+        if (c->main_node[c->nper * i + a] >= 0) core[n++] = c->main_node[c->nper * i + a];
+    PetscCall(PetscSortRemoveDupsInt(&n, core));
+    for (PetscInt i = 0; i < c->nmain; i++)
+      for (PetscInt a = 0; !sel[i] && a < c->nper; a++) {
+        PetscInt at = -1;
+        if (c->main_node[c->nper * i + a] >= 0) PetscCall(PetscFindInt(c->main_node[c->nper * i + a], n, core, &at));
+        if (at >= 0) sel[i] = 2;
+      }
+    PetscCall(PetscFree(core));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Keeps in pair c (a copy of the whole model's pair gc in rank r's part) the main faces sel[] selects,
+ * renumbered locally in their global order: neighbours a rank does not hold become -2, not -1 (which is an
+ * end of the surface, where a node beyond it is out of contact), and the main-surface nodes r owns are
+ * listed. */
+static PetscErrorCode KeepMainFaces(const TslModel *g, const TslContactPair *gc, const PetscInt sel[], const PetscInt owner[], PetscInt r,
+                                    TslContactPair *c)
+{
+  PetscInt *newid, n = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(gc->nmain + 1, &newid));
+  for (PetscInt i = 0; i < gc->nmain; i++) newid[i] = sel && sel[i] ? n++ : -1;
+  for (PetscInt i = 0; i < gc->nmain; i++) {
+    const PetscInt j = newid[i], pv = gc->main_prev[i], nx = gc->main_next[i];
+    if (j < 0) continue;
+    for (PetscInt a = 0; a < gc->nper; a++) c->main_node[gc->nper * j + a] = gc->main_node[gc->nper * i + a];
+    c->main_kind[j] = gc->main_kind[i];
+    c->main_ring[j] = sel[i] == 2;
+    c->main_prev[j] = pv < 0 ? -1 : newid[pv] >= 0 ? newid[pv] : -2;
+    c->main_next[j] = nx < 0 ? -1 : newid[nx] >= 0 ? newid[nx] : -2;
+  }
+  c->nmain        = n;
+  c->nmain_global = gc->nmain;
+  PetscCall(PetscFree(c->main_own));
+  PetscCall(PetscMalloc1(gc->nper * gc->nmain + 1, &c->main_own));
+  n = 0;
+  for (PetscInt i = 0; i < gc->nper * gc->nmain; i++)
+    if (gc->main_node[i] >= 0 && owner[TslModelNodeIndex(g, gc->main_node[i])] == r) c->main_own[n++] = gc->main_node[i];
+  PetscCall(PetscSortRemoveDupsInt(&n, c->main_own));
+  c->nmain_own = n;
+  PetscCall(PetscFree(newid));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Builds the part of rank r: its elements, nodes (owned, then ghosts), numbering arrays. */
 static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt epart[], const PetscInt owner[], const PetscInt gnum[],
                                 const PetscInt node_nat[], const PetscInt elem_nat[], const PetscInt elem_by_id[], PetscInt nnode_used,
                                 PetscInt *mark, TslModel **part)
 {
-  PetscInt *elems, *nodes, *key, ne = 0, nn = 0, nown = 0;
-  TslModel *sub;
+  PetscInt  *elems, *nodes, *key, ne = 0, nn = 0, nown = 0, **sel, *held;
+  PetscReal *hbox;
+  TslModel  *sub;
 
   PetscFunctionBeginUser;
   PetscCall(PetscArrayzero(mark, g->nnode));
@@ -126,23 +239,28 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
         if (!mark[p]) mark[p] = 2;
       }
   }
-  /* contact: a rank that owns secondary nodes of a pair holds the whole main surface (as ghosts), so
-   * the main-surface data it needs arrives with every ghost update; surface-to-surface: a rank that owns
-   * a node of a secondary face holds the face (all its nodes) and the main surface */
+  /* contact: a rank that owns secondary nodes of a pair holds the main faces they can reach (their nodes
+   * as ghosts: the main-surface data it needs arrives with every ghost update), those whose reference box
+   * meets its held region, and their neighbours (SelectMainFaces); surface-to-surface: a rank that owns a
+   * node of a secondary face holds the face (all its nodes) */
+  PetscCall(PetscCalloc1(g->npair + 1, &sel));
+  PetscCall(PetscCalloc1(g->npair + 1, &held));
+  PetscCall(PetscMalloc1(6 * g->npair + 1, &hbox));
   for (PetscInt k = 0; k < g->npair; k++) {
-    const TslContactPair *c    = &g->pairs[k];
-    PetscBool             owns = PETSC_FALSE;
-    for (PetscInt i = 0; i < c->nsec && !owns; i++) owns = (PetscBool)(owner[TslModelNodeIndex(g, c->sec_node[i])] == r);
+    const TslContactPair *c = &g->pairs[k];
     for (PetscInt i = 0; i < c->nsface; i++)
       if (SecondaryFaceHeld(g, c, i, owner, r)) {
-        owns = PETSC_TRUE;
         for (PetscInt a = 0; a < c->snper; a++) {
           PetscInt q = TslModelNodeIndex(g, c->sface_node[c->snper * i + a]);
           if (!mark[q]) mark[q] = 2;
         }
       }
-    for (PetscInt i = 0; owns && i < c->nper * c->nmain; i++) {
-      PetscInt q = c->main_node[i] >= 0 ? TslModelNodeIndex(g, c->main_node[i]) : -1;
+    held[k] = HeldRegion(g, c, owner, r, &hbox[6 * k]);
+    if (!held[k]) continue;
+    PetscCall(PetscMalloc1(c->nmain + 1, &sel[k]));
+    PetscCall(SelectMainFaces(g, c, &hbox[6 * k], sel[k]));
+    for (PetscInt i = 0; i < c->nper * c->nmain; i++) {
+      PetscInt q = sel[k][i / c->nper] && c->main_node[i] >= 0 ? TslModelNodeIndex(g, c->main_node[i]) : -1;
       if (q >= 0 && !mark[q]) mark[q] = 2;
     }
   }
@@ -169,7 +287,14 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
         c->sface_asm[n++] = owner[TslModelNodeIndex(g, c->sface_node[c->snper * i])] == r;
       }
     c->nsface = n;
+    c->held   = held[k];
+    for (PetscInt d = 0; d < 6; d++) c->held_box[d] = hbox[6 * k + d];
+    PetscCall(KeepMainFaces(g, &g->pairs[k], sel[k], owner, r, c));
+    PetscCall(PetscFree(sel[k]));
   }
+  PetscCall(PetscFree(sel));
+  PetscCall(PetscFree(held));
+  PetscCall(PetscFree(hbox));
   sub->nnode_global = nnode_used;
   sub->nelem_global = g->nelem;
   sub->nnode_owned  = nown;
@@ -353,6 +478,7 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
     PetscCall(PetscMalloc1(c->nper * c->nmain, &c->main_node));
     PetscCall(PetscMalloc1(c->nmain, &c->main_prev));
     PetscCall(PetscMalloc1(c->nmain, &c->main_next));
+    PetscCall(PetscCalloc1(c->nmain + 1, &c->main_ring));
     for (PetscInt i = 0; i < main->n; i++) {
       PetscCall(ContactFace(g, c, TslModelElementIndex(g, main->elem[i]), main->face[i], nodes, &nf, x, &family));
       for (PetscInt a = 0; a < c->nper; a++) c->main_node[c->nper * i + a] = a < nf ? nodes[a] : -1;
@@ -434,10 +560,59 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The search radius of a pair as the contact set-up takes it (src/physics/contact.c): one mean main face,
+ * or the largest tabulated clearance of a gap conductance by clearance or of a gap radiation. */
+static PetscReal PairSearchRadius(const TslModel *g, const TslContactPair *c)
+{
+  const TslInteraction *it = &g->interactions[c->interaction_index];
+  PetscReal             r  = c->mean_length;
+
+  if (it->conductance.given && !it->conductance.by_pressure && it->conductance.n > 0) r = PetscMax(r, it->conductance.abscissa[it->conductance.n - 1]);
+  if (it->radiation.given && it->radiation.n > 0) r = PetscMax(r, it->radiation.clearance[it->radiation.n - 1]);
+  return r;
+}
+
+/* The largest displacement a *BOUNDARY prescribes anywhere in any step (the vector of the largest value of
+ * each displacement dof, an amplitude's largest |value| applied). */
+static PetscReal LargestPrescribedDisplacement(const TslModel *g)
+{
+  PetscReal u[3] = {0, 0, 0};
+
+  for (PetscInt s = 0; s < g->nstep; s++)
+    for (PetscInt l = 0; l < g->steps[s].nload; l++) {
+      const TslLoad *ld  = &g->steps[s].loads[l];
+      PetscReal      amp = 1;
+      if (ld->kind != TSL_LOAD_BOUNDARY) continue;
+      if (ld->amplitude >= 0 && ld->amplitude < g->namplitude) {
+        amp = 0;
+        for (PetscInt i = 0; i < g->amplitudes[ld->amplitude].n; i++) amp = PetscMax(amp, PetscAbsReal(g->amplitudes[ld->amplitude].a[i]));
+      }
+      for (PetscInt d = PetscMax(ld->dof_first, 1); d <= PetscMin(ld->dof_last, 3); d++) u[d - 1] = PetscMax(u[d - 1], amp * PetscAbsReal(ld->value));
+    }
+  return PetscSqrtReal(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+}
+
+/* The margin of each pair's held region: -tsl_contact_margin, or twice (the largest prescribed
+ * displacement + the search radius): the secondary and the main body may each move by the prescribed
+ * amount, one search radius is the query around a node and the other leaves room for motion nothing
+ * prescribes (elastic and thermal deformation of up to a face size). */
+static void SetContactMargins(TslModel *g, PetscReal option)
+{
+  const PetscReal U = LargestPrescribedDisplacement(g);
+  for (PetscInt k = 0; k < g->npair; k++) {
+    TslContactPair *c = &g->pairs[k];
+    c->margin_disp    = U;
+    c->margin_radius  = PairSearchRadius(g, c);
+    c->margin_default = option < 0;
+    c->margin         = option >= 0 ? option : 2 * (U + c->margin_radius);
+  }
+}
+
 static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt size, TslModel **local)
 {
   PetscInt *epart, *owner, *gnum, *node_nat, *elem_nat, *node_by_id, *elem_by_id, *count, *offset, *mark, nused = 0;
   char      method[32] = "metis";
+  PetscReal margin     = -1;
   PetscInt  ndof       = g->nelem ? TslElementTypeGet(g->elem_type[0])->ndof : g->dim + 1;
 
   PetscFunctionBeginUser;
@@ -447,7 +622,10 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
   PetscOptionsBegin(PETSC_COMM_SELF, NULL, "thermoslide mesh partition", NULL);
   PetscCall(PetscOptionsString("-tsl_partition", "element partition: metis, or slabs by element centroid axis_x|axis_y|axis_z", NULL, method, method,
                                sizeof(method), NULL));
+  PetscCall(PetscOptionsReal("-tsl_contact_margin", "contact: inflation of each rank's held region of the main surface (default 2 (largest prescribed displacement + search radius))", NULL, margin, &margin, NULL));
   PetscOptionsEnd();
+  PetscCheck(margin == -1 || margin >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_contact_margin %g: expected a length >= 0", (double)margin);
+  SetContactMargins(g, margin);
   PetscCheck(g->nelem >= size, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "the model has %" PetscInt_FMT " elements, fewer than the %d ranks", g->nelem,
              (int)size);
   PetscCall(PetscMalloc4(g->nelem, &epart, g->nnode, &owner, g->nnode, &gnum, g->nnode, &node_nat));

@@ -1,11 +1,13 @@
 /* Finite-sliding node-to-surface contact in the assembly (2D: plane and axisymmetric models).
  *
  * Each secondary node owned by this rank is paired with one main segment (or none): a face of the main
- * surface, line2 or line3, whose nodes (nper per face) the kernels take in face order. All nodes of the
- * main surface are ghosts on every rank that owns secondary nodes of the pair (see src/mesh/), so the
- * main-surface data a rank needs arrives with the ordinary ghost update in every Newton iteration, and
- * the contact blocks are inserted through the same constraint-aware path as element blocks (rows of
- * ghost nodes reach their owners through PETSc's stash).
+ * surface, line2 or line3, whose nodes (nper per face) the kernels take in face order. A rank that owns
+ * secondary nodes of the pair holds the main faces they can reach (those whose reference box meets its
+ * held region, plus their neighbours; see src/mesh/distribute.c) with their nodes as ghosts, so the
+ * main-surface data it needs arrives with the ordinary ghost update in every Newton iteration, and the
+ * contact blocks are inserted through the same constraint-aware path as element blocks (rows of ghost
+ * nodes reach their owners through PETSc's stash). Before every search CheckHeldRegion proves that no
+ * node can reach a face this rank does not hold, or stops the run naming the node.
  *
  * Pairing: a bin grid over the current main segments gives the candidates of each secondary node (never
  * a loop over all pairs); the nearest segment whose projection lies inside it wins. A node whose
@@ -234,8 +236,13 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
           best = cand[c], best_d = dist, best_xi = xi, best_inside = inside;
         }
       }
-      /* beyond an end of the main surface: out of contact */
-      if (best >= 0 && !best_inside && ((best_xi < 0 && cs->prev[best] < 0) || (best_xi > 1 && cs->next[best] < 0))) best = -1;
+      /* a face held only as a neighbour, or one whose neighbour is not held, never pairs: CheckHeldRegion
+       * guarantees that no node reaches one, so this is a defect, not a node out of contact */
+      PetscCheck(best < 0 || (!cs->ring[best] && cs->prev[best] != -2 && cs->next[best] != -2), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "contact node %" PetscInt_FMT " reached main face %" PetscInt_FMT " at the edge of the part of the main surface held here",
+                 p->m->node_id[cn->lnode], best);
+      /* beyond an end of the main surface (-1; not -2, a neighbour held elsewhere): out of contact */
+      if (best >= 0 && !best_inside && ((best_xi < 0 && cs->prev[best] == -1) || (best_xi > 1 && cs->next[best] == -1))) best = -1;
       if (best != cn->seg) {
         PetscBool moved = PETSC_FALSE;
 
@@ -261,8 +268,85 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Collective. Pairs secondary nodes at the current solution; rebuilds the matrix pattern when pairing
- * changed anywhere. */
+/* Collective. Can a secondary node (or a secondary face, surface to surface) of this rank reach a main
+ * face the rank does not hold? A face not held has a reference box outside the held region B; its current
+ * box lies within hull * D of its reference box, D the largest displacement of any main-surface node
+ * (per coordinate, a maximum over the owners). The search finds the faces whose current box meets the
+ * node's query box, its current position +- the search radius. So a query box inside B shrunk by hull * D
+ * meets only held faces. If some query box is not, the part held would have to be rebuilt; that is not
+ * implemented, so the run stops (all ranks) naming the node, the rank, the margin and the margin that
+ * would have avoided it; the driver saves the last converged state. */
+static PetscErrorCode CheckHeldRegion(TslProblem p, const PetscScalar *xa)
+{
+  const TslModel *m   = p->m;
+  const PetscInt  dim = p->dim;
+  PetscReal      *D, *Dg, worst[2] = {0, 0}, *all;
+  PetscInt        wpair = -1, wnode = -1;
+  PetscMPIInt     rank, size, root = -1;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc2(3 * p->ncsurf, &D, 3 * p->ncsurf, &Dg));
+  for (PetscInt k = 0; k < p->ncsurf; k++) {
+    const TslContactPair    *pair = &m->pairs[k];
+    const TslContactSurface *cs   = &p->csurf[k];
+    for (PetscInt i = 0; i < pair->nmain_own; i++) {
+      const PetscInt l = TslModelNodeIndex(m, pair->main_own[i]);
+      for (PetscInt d = 0; l >= 0 && d < dim; d++) D[3 * k + d] = PetscMax(D[3 * k + d], PetscAbsReal(PetscRealPart(xa[l * p->ndof + cs->slot[d]])));
+    }
+  }
+  PetscCall(MPIU_Allreduce(D, Dg, (PetscMPIInt)(3 * p->ncsurf), MPIU_REAL, MPIU_MAX, p->comm));
+  for (PetscInt k = 0; k < p->ncsurf; k++) {
+    const TslContactPair    *pair = &m->pairs[k];
+    const TslContactSurface *cs   = &p->csurf[k];
+    PetscReal                lo[3], hi[3], excess;
+    PetscInt                 node;
+    if (!pair->held) continue;
+    for (PetscInt d = 0; d < dim; d++) lo[d] = pair->held_box[d] + cs->hull * Dg[3 * k + d], hi[d] = pair->held_box[3 + d] - cs->hull * Dg[3 * k + d];
+    for (PetscInt i = 0; i < p->ncnode; i++) {
+      const TslContactNode *cn = &p->cnode[i];
+      if (cn->pair != k) continue;
+      for (PetscInt d = 0; d < dim; d++) {
+        const PetscReal y = m->node_xyz[3 * cn->lnode + d] + PetscRealPart(xa[cn->lnode * p->ndof + cs->slot[d]]);
+        const PetscReal e = PetscMax(lo[d] - (y - cs->search_radius), (y + cs->search_radius) - hi[d]);
+        if (e > worst[0]) worst[0] = e, wpair = k, wnode = m->node_id[cn->lnode];
+      }
+    }
+    PetscCall(TslProblemContactS2SReach(p, k, xa, lo, hi, &excess, &node));
+    if (excess > worst[0]) worst[0] = excess, wpair = k, wnode = node;
+  }
+  PetscCallMPI(MPI_Comm_rank(p->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(p->comm, &size));
+  PetscCall(PetscMalloc1(size, &all));
+  PetscCallMPI(MPI_Allgather(&worst[0], 1, MPIU_REAL, all, 1, MPIU_REAL, p->comm));
+  for (PetscMPIInt r = 0; r < size; r++)
+    if (all[r] > 0 && (root < 0 || all[r] > all[root])) root = r;
+  PetscCall(PetscFree(all));
+  if (root >= 0) {
+    char     msg[1024] = "";
+    PetscInt info[2]   = {wpair, wnode};
+    PetscCallMPI(MPI_Bcast(info, 2, MPIU_INT, root, p->comm));
+    PetscCallMPI(MPI_Bcast(worst, 1, MPIU_REAL, root, p->comm));
+    {
+      const TslContactPair *pair = &m->pairs[info[0]];
+      const PetscReal      *Dk   = &Dg[3 * info[0]];
+      PetscCall(PetscSNPrintf(msg, sizeof(msg),
+                              "contact pair %" PetscInt_FMT " (%s on %s): secondary node %" PetscInt_FMT " on rank %d can reach main faces that rank does "
+                              "not hold: its search box (current position +- the search radius %g) leaves the rank's held region (the reference box "
+                              "of its secondary nodes inflated by the margin %g, shrunk by the main surface's largest displacement %g) by %g. A "
+                              "rebuild of the held part during the run is not implemented: rerun with -tsl_contact_margin %g or more (the margin "
+                              "that would have avoided it here; more if the sliding goes on)",
+                              info[0] + 1, pair->secondary, pair->main, info[1], (int)root, (double)p->csurf[info[0]].search_radius, (double)pair->margin,
+                              (double)PetscSqrtReal(Dk[0] * Dk[0] + Dk[1] * Dk[1] + Dk[2] * Dk[2]), (double)worst[0], (double)(pair->margin + worst[0])));
+    }
+    PetscCall(PetscFree2(D, Dg));
+    SETERRQ(p->comm, PETSC_ERR_USER_INPUT, "%s", msg);
+  }
+  PetscCall(PetscFree2(D, Dg));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective. Pairs secondary nodes at the current solution (after checking that every node's reach is
+ * held here); rebuilds the matrix pattern when pairing changed anywhere. */
 PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
 {
   Vec                xl;
@@ -273,12 +357,15 @@ PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
   *repattern = PETSC_FALSE;
   if (!p->ncsurf) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  PetscCall(TslPhaseBegin(TSL_PHASE_SEARCH));
+  PetscCall(CheckHeldRegion(p, xa));
   PetscCall(Search(p, xa, &changed));
   {
     PetscInt c2;
     PetscCall(TslProblemContactS2SSearch(p, xa, &c2));
     changed += c2;
   }
+  PetscCall(TslPhaseEnd(TSL_PHASE_SEARCH));
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
   if (p->pattern_stale) changed++;
   p->pattern_stale = PETSC_FALSE;
@@ -355,16 +442,21 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
  * gives the nodal normals of the next increment's smoothing). */
 PetscErrorCode TslProblemContactCommit(TslProblem p)
 {
+  PetscBool normals = PETSC_FALSE;
+
   PetscFunctionBeginUser;
-  /* the ghost update is collective: the condition must not depend on the rank (active does) */
-  for (PetscInt k = 0; k < p->ncsurf; k++)
-    if (p->csurf[k].dim == 3 && p->csurf[k].smooth > 0) {
-      Vec                xl;
-      const PetscScalar *xa;
-      PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
-      PetscCall(TslProblemContact3Normals(p, &p->csurf[k], xa));
-      PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
-    }
+  /* the ghost update is collective: every rank takes part (dim and smoothing are the same on all ranks),
+   * also one that owns no secondary node of the pair (it used to skip it, and a 2-rank 3D run whose pair
+   * was split hung in the next ghost update) */
+  for (PetscInt k = 0; k < p->ncsurf; k++) normals = (PetscBool)(normals || (p->csurf[k].dim == 3 && p->csurf[k].smooth > 0));
+  if (normals) {
+    Vec                xl;
+    const PetscScalar *xa;
+    PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+    for (PetscInt k = 0; k < p->ncsurf; k++)
+      if (p->csurf[k].dim == 3 && p->csurf[k].active && p->csurf[k].smooth > 0) PetscCall(TslProblemContact3Normals(p, &p->csurf[k], xa));
+    PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  }
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode *cn = &p->cnode[i];
     if (cn->seg >= 0) {
@@ -473,7 +565,8 @@ static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscRe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Job-log line per pair: which ranks own its secondary nodes and its main-surface nodes. */
+/* Job-log lines per pair: which ranks own its secondary nodes and its main-surface nodes, the margin of
+ * the held regions and how many main faces each rank holds. */
 static PetscErrorCode ReportPartition(TslProblem p)
 {
   const TslModel *m = p->m;
@@ -483,25 +576,35 @@ static PetscErrorCode ReportPartition(TslProblem p)
   PetscCallMPI(MPI_Comm_size(p->comm, &size));
   for (PetscInt k = 0; k < m->npair; k++) {
     const TslContactPair *c       = &m->pairs[k];
-    PetscInt              mine[2] = {c->nsec > 0 || c->nsface > 0, 0}, *all;
-    char                  line[2][256];
-    for (PetscInt i = 0; i < c->nper * c->nmain && !mine[1]; i++) {
-      PetscInt l = c->main_node[i] >= 0 ? TslModelNodeIndex(m, c->main_node[i]) : -1;
-      mine[1]    = (PetscInt)(l >= 0 && l < p->nown);
-    }
-    PetscCall(PetscMalloc1(2 * size, &all));
-    PetscCallMPI(MPI_Allgather(mine, 2, MPIU_INT, all, 2, MPIU_INT, p->comm));
+    PetscInt              mine[3] = {c->nsec > 0 || c->nsface > 0, c->nmain_own > 0, c->nmain}, *all;
+    char                  line[2][256], *held;
+    size_t                hl = 0;
+    PetscCall(PetscMalloc1(3 * size, &all));
+    PetscCallMPI(MPI_Allgather(mine, 3, MPIU_INT, all, 3, MPIU_INT, p->comm));
     for (PetscInt w = 0; w < 2; w++) {
       size_t len = 0;
       line[w][0] = 0;
       for (PetscMPIInt r = 0; r < size; r++)
-        if (all[2 * r + w]) {
+        if (all[3 * r + w]) {
           PetscCall(PetscSNPrintf(line[w] + len, sizeof(line[w]) - len, "%s%d", len ? " " : "", (int)r));
           PetscCall(PetscStrlen(line[w], &len));
         }
     }
     PetscCall(PetscPrintf(p->comm, "contact pair %" PetscInt_FMT " (%s on %s): secondary nodes on ranks %s; main-surface nodes on ranks %s\n", k + 1,
                           c->secondary, c->main, line[0], line[1]));
+    PetscCall(PetscMalloc1(24 * size + 1, &held));
+    held[0] = 0;
+    for (PetscMPIInt r = 0; r < size; r++) {
+      PetscCall(PetscSNPrintf(held + hl, 24 * size + 1 - hl, "%s%" PetscInt_FMT, r ? " " : "", all[3 * r + 2]));
+      PetscCall(PetscStrlen(held, &hl));
+    }
+    if (c->margin_default)
+      PetscCall(PetscPrintf(p->comm, "contact pair %" PetscInt_FMT ": margin %g (default: 2 x (largest prescribed displacement %g + search radius %g)); main faces held by rank 0..%d: %s of %" PetscInt_FMT "\n",
+                            k + 1, (double)c->margin, (double)c->margin_disp, (double)c->margin_radius, (int)size - 1, held, c->nmain_global));
+    else
+      PetscCall(PetscPrintf(p->comm, "contact pair %" PetscInt_FMT ": margin %g (-tsl_contact_margin); main faces held by rank 0..%d: %s of %" PetscInt_FMT "\n", k + 1,
+                            (double)c->margin, (int)size - 1, held, c->nmain_global));
+    PetscCall(PetscFree(held));
     PetscCall(PetscFree(all));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -575,10 +678,12 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
     cs->nmain     = pair->nmain;
     cs->active    = (PetscBool)(pair->nsec > 0);
     PetscCall(PetscMalloc4(cs->nper * pair->nmain + 1, &cs->main_lnode, pair->nmain + 1, &cs->prev, pair->nmain + 1, &cs->next, pair->nmain + 1, &cs->kind));
+    PetscCall(PetscMalloc1(pair->nmain + 1, &cs->ring));
     for (PetscInt s = 0; s < pair->nmain; s++) {
       cs->prev[s] = pair->main_prev[s];
       cs->next[s] = pair->main_next[s];
       cs->kind[s] = pair->main_kind[s];
+      cs->ring[s] = pair->main_ring[s];
       for (PetscInt a = 0; a < cs->nper; a++) {
         PetscInt i = cs->nper * s + a;
 
@@ -588,6 +693,17 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
       }
     }
     PetscCall(SetUpLaw(p, pair, pair->mean_length, penalty[k], &cs->law));
+    /* the held region's shrink per unit of main-surface motion: the pair's face family (2D: one per pair;
+     * 3D: the first face's, the degree of a wedge's tri and quad faces alike) */
+    if (cs->dim == 3) cs->hull = TslContactFace3HullBound(pair->main_face);
+    else {
+      cs->hull = 1;
+      for (PetscInt i = 0; face && i < face->geom->nnode; i++) {
+        PetscReal sum = 0;
+        for (PetscInt a = 0; a < face->geom->nnode; a++) sum += PetscAbsReal(face->hull[i][a]);
+        cs->hull = PetscMax(cs->hull, sum);
+      }
+    }
     /* the kernels see (u_x, u_y, theta) per node, and the twist phi (dof 5) after them on twist models,
      * whose slip has a circumferential component */
     cs->nu      = cs->dim == 3 ? TSL_CONTACT3_NU : TslContactNodeUnknowns(cs->kin);
@@ -633,6 +749,7 @@ PetscErrorCode TslProblemContactDestroy(TslProblem p)
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < p->ncsurf; k++) {
     PetscCall(PetscFree4(p->csurf[k].main_lnode, p->csurf[k].prev, p->csurf[k].next, p->csurf[k].kind));
+    PetscCall(PetscFree(p->csurf[k].ring));
     PetscCall(PetscFree(p->csurf[k].nnormal));
   }
   PetscCall(PetscFree(p->csurf));

@@ -118,16 +118,43 @@ PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt k, const PetscSca
   PetscCall(TslContactBinGridCreateDim(3, cs->nmain, box, cs->search_radius, &grid));
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode *cn = &p->cnode[i];
-    PetscReal       y[3], X[3], u[4], best_d = PETSC_MAX_REAL, best_xi[2] = {0, 0};
+    PetscReal       y[3], X[3], u[4], best_d = PETSC_MAX_REAL, best_xi[2] = {0, 0}, bound;
     PetscInt        ncand, best = -1;
 
     if (cn->pair != k) continue;
     NodeData(p, cs, xa, cn->lnode, X, u);
     for (PetscInt d = 0; d < 3; d++) y[d] = X[d] + u[d];
     PetscCall(TslContactBinGridQueryGrow(grid, y, cs->search_radius, &cap, &cand, &ncand));
+    /* a bound first: the face nearest by its box, projected; a face farther than that by more than the tie
+     * tolerance cannot be the nearest, and is not projected below (the projection is most of the search) */
+    bound = PETSC_MAX_REAL;
+    for (PetscInt c = 0, c0 = -1; c <= ncand; c++) {
+      if (c < ncand) {
+        const PetscReal *b = &box[6 * cand[c]];
+        PetscReal        lb = 0;
+        for (PetscInt d = 0; d < 3; d++) lb += PetscSqr(PetscMax(0, PetscMax(b[d] - y[d], y[d] - b[3 + d])));
+        if (c0 < 0 || lb < bound) c0 = c, bound = lb;
+      } else if (c0 >= 0) {
+        const PetscReal *x = &fx[3 * np * cand[c0]];
+        PetscReal        xi[2], q[3], n[3];
+        bound = PETSC_MAX_REAL;
+        PetscCall(TslContactFace3Project(cs->kind[cand[c0]], x, y, xi));
+        if (TslContactFace3Inside(cs->kind[cand[c0]], xi, TSL_CONTACT3_XI_TOL)) {
+          PetscCall(TslContactFace3Evaluate(cs->kind[cand[c0]], x, xi, q, n));
+          for (PetscInt d = 0; d < 3; d++) q[d] = y[d] - q[d];
+          if (q[0] * n[0] + q[1] * n[1] + q[2] * n[2] >= -cs->search_radius) bound = PetscSqrtReal(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        }
+      }
+    }
     for (PetscInt c = 0; c < ncand; c++) {
-      const PetscReal *x = &fx[3 * np * cand[c]];
-      PetscReal        xi[2], q[3], n[3], dist, gap;
+      const PetscReal *x = &fx[3 * np * cand[c]], *b = &box[6 * cand[c]];
+      PetscReal        xi[2], q[3], n[3], dist, gap, lb = 0;
+
+      /* the face lies in its box, so the distance to the box bounds the distance to the face from below: a
+       * face that cannot beat the best so far is not projected (the projection is most of the search) */
+      for (PetscInt d = 0; d < 3; d++) lb += PetscSqr(PetscMax(0, PetscMax(b[d] - y[d], y[d] - b[3 + d])));
+      if (best >= 0 && PetscSqrtReal(lb) >= best_d - TSL_CONTACT3_XI_TOL * cs->search_radius) continue;
+      if (bound < PETSC_MAX_REAL && PetscSqrtReal(lb) > bound + 2 * TSL_CONTACT3_XI_TOL * cs->search_radius) continue;
 
       PetscCall(TslContactFace3Project(cs->kind[cand[c]], x, y, xi));
       /* only a face that contains the closest point pairs: a node beyond every face (off the main surface,
@@ -141,6 +168,11 @@ PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt k, const PetscSca
       /* equal distances are a tie (the first face wins), whatever the round-off of large coordinates */
       if (dist < best_d - TSL_CONTACT3_XI_TOL * cs->search_radius) best = cand[c], best_d = dist, best_xi[0] = xi[0], best_xi[1] = xi[1];
     }
+    /* a face held only for its nodal normals never pairs: CheckHeldRegion (contact.c) guarantees that no
+     * node reaches one, so this is a defect, not a node out of contact */
+    PetscCheck(best < 0 || !cs->ring[best], PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "contact node %" PetscInt_FMT " reached main face %" PetscInt_FMT " at the edge of the part of the main surface held here",
+               p->m->node_id[cn->lnode], best);
     if (best != cn->seg) {
       (*changed)++;
       if (best >= 0 && cn->seg >= 0) {

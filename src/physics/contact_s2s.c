@@ -258,6 +258,7 @@ static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, Pe
     PetscCall(PetscMalloc1(*cap, cand));
     PetscCall(TslContactBinGridQuery(grid, c, rad, *cap, *cand, &ncand, NULL));
   }
+  PetscCall(PetscSortInt(ncand, *cand)); /* in face order: ties go the same way whichever faces are held here */
   /* the breaks: the ends of the candidate main faces (the kinks of the main surface and of its shape
    * functions; a line3 face is smooth inside) */
   PetscCall(PetscMalloc1(4 * ncand + 1, &ends));
@@ -276,6 +277,8 @@ static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, Pe
     PetscCall(TslContactFaceEvaluate(fc->kind, Y, 0.5 * (zeta[i] + zeta[i + 1]), ym, ts));
     PetscCall(PieceFace(p, cs, xa, ym, ts, ncand, *cand, &seg));
     if (seg < 0) continue;
+    PetscCheck(!cs->ring[seg] && cs->prev[seg] != -2 && cs->next[seg] != -2, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+               "a secondary face reached main face %" PetscInt_FMT " at the edge of the part of the main surface held here", seg);
     PetscCall(TslContactSegmentRule(fc->kind, X, zeta[i], zeta[i + 1], &nq, zq, wq));
     for (PetscInt q = 0; q < nq; q++) {
       S2SPoint pt;
@@ -324,6 +327,34 @@ static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, Pe
   }
   fc->first = start;
   fc->npt   = s->npt - start;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* For CheckHeldRegion (contact.c): how far the query boxes of this rank's secondary faces of pair k (the
+ * square CutFace queries) reach beyond the box lo..hi (*excess, 0 if not at all), and the first node of
+ * the face that reaches farthest. */
+PetscErrorCode TslProblemContactS2SReach(TslProblem p, PetscInt k, const PetscScalar *xa, const PetscReal lo[], const PetscReal hi[], PetscReal *excess,
+                                         PetscInt *node)
+{
+  TslContactS2S s = p->s2s;
+
+  PetscFunctionBeginUser;
+  *excess = 0, *node = -1;
+  for (PetscInt i = 0; s && i < s->nface; i++) {
+    const S2SFace           *fc = &s->face[i];
+    const TslContactSurface *cs = &p->csurf[k];
+    PetscReal X[2 * TSL_CONTACT_MAX_FACE_NODES], U[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES], Y[2 * TSL_CONTACT_MAX_FACE_NODES], box[4], rad;
+    if (fc->pair != k) continue;
+    FaceData(p, fc, xa, X, U);
+    for (PetscInt b = 0; b < fc->nsn; b++)
+      for (PetscInt d = 0; d < 2; d++) Y[2 * b + d] = X[2 * b + d] + U[cs->nu * b + d];
+    PetscCall(TslContactFaceBox(fc->kind, Y, box));
+    rad = 0.5 * PetscMax(box[2] - box[0], box[3] - box[1]) + cs->search_radius;
+    for (PetscInt d = 0; d < 2; d++) {
+      const PetscReal c = 0.5 * (box[d] + box[2 + d]), e = PetscMax(lo[d] - (c - rad), (c + rad) - hi[d]);
+      if (e > *excess) *excess = e, *node = p->m->node_id[fc->lnode[0]];
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

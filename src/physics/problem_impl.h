@@ -5,15 +5,18 @@
 #include <thermoslide/sys.h>
 #include <string.h>
 
-/* One contact pair on this rank: the law and the main surface (all its nodes are local here when the
- * rank owns secondary nodes of the pair; active is false otherwise). */
+/* One contact pair on this rank: the law and the part of the main surface the rank holds (the faces its
+ * secondary nodes can reach and their neighbours, all their nodes local: see TslContactPair in model.h;
+ * active is false when it owns no secondary node of the pair). */
 typedef struct {
   TslContactLaw      law;
   PetscBool          active;
   PetscInt           nmain, nper; /* main faces, nodes per face */
   TslContactFaceKind face;        /* family of the main faces */
   PetscInt          *main_lnode;  /* [nper*nmain] local nodes of each face in face order, main body on the left */
-  PetscInt          *prev, *next; /* [nmain] neighbouring faces, -1 at the ends */
+  PetscInt          *prev, *next; /* [nmain] neighbouring faces, -1 at the ends, -2 where the neighbour is not held here */
+  PetscInt          *ring;        /* [nmain] 1 for a face held only as a neighbour: never paired */
+  PetscReal          hull;        /* how far a face's box moves per unit of node motion (TslContactFace3HullBound) */
   PetscInt           nu;          /* unknowns per node of the contact kernels (3, or 4 with twist) */
   PetscInt           slot[TSL_CONTACT_MAX_NODE_DOF]; /* slots of u_x, u_y, theta (and phi, twist) among a node's unknowns */
   PetscReal          smooth, thickness, search_radius;
@@ -191,6 +194,8 @@ PetscErrorCode TslProblemContactS2SSetUp(TslProblem p);
 PetscErrorCode TslProblemContactS2SDestroy(TslProblem p);
 PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);
 PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, PetscInt *changed);
+PetscErrorCode TslProblemContactS2SReach(TslProblem p, PetscInt k, const PetscScalar *xa, const PetscReal lo[], const PetscReal hi[], PetscReal *excess,
+                                         PetscInt *node);
 PetscErrorCode TslProblemContactS2SUpdate(TslProblem p, PetscInt *depart, PetscReal *change, PetscReal *scale);
 PetscErrorCode TslProblemContactS2SAugment(TslProblem p);
 PetscErrorCode TslProblemContactS2SCommit(TslProblem p);

@@ -2,7 +2,7 @@
 #include <thermoslide/sys.h>
 #include <sys/resource.h>
 
-static const char *const PhaseName[TSL_PHASE_COUNT] = {"TslRead", "TslPartition", "TslSetUp", "TslAssembly", "TslContact", "TslSolve", "TslOutput"};
+static const char *const PhaseName[TSL_PHASE_COUNT] = {"TslRead", "TslPartition", "TslSetUp", "TslAssembly", "TslContact", "TslSolve", "TslOutput", "TslContactSearch"};
 /* Process-wide like PETSc's own event table: the ids of our events and the start of the job. */
 static PetscLogEvent  phase_event[TSL_PHASE_COUNT];
 static PetscLogDouble job_start;
@@ -50,7 +50,7 @@ static PetscErrorCode EventTime(PetscLogEvent e, PetscLogDouble *t)
 
 PetscErrorCode TslPhasesReport(MPI_Comm comm)
 {
-  enum { READ, PARTITION, SETUP, ASSEMBLY, CONTACT, PCSETUP, LINEAR, OUTPUT, OTHER, TOTAL, MEM, N };
+  enum { READ, PARTITION, SETUP, ASSEMBLY, CONTACT, PCSETUP, LINEAR, OUTPUT, OTHER, TOTAL, MEM, SEARCH, N };
   static const char *const label[] = {"read", "partition", "set-up", "assembly", "contact", "solver set-up", "linear solve", "output", "other"};
   PetscLogDouble           t[TSL_PHASE_COUNT], pc = 0, now, local[N], maxv[N], mem_sum;
   PetscLogEvent            pcsetup;
@@ -73,6 +73,7 @@ PetscErrorCode TslPhasesReport(MPI_Comm comm)
   /* the solves contain the assembly, part of the contact work and the preconditioner set-up */
   local[LINEAR] = PetscMax(0, t[TSL_PHASE_SOLVE] - t[TSL_PHASE_ASSEMBLY] - pc);
   local[OUTPUT] = t[TSL_PHASE_OUTPUT];
+  local[SEARCH] = t[TSL_PHASE_SEARCH]; /* part of CONTACT, not a phase of its own in the sum */
   local[TOTAL]  = now - job_start;
   local[OTHER]  = local[TOTAL];
   for (PetscInt i = READ; i < OTHER; i++) local[OTHER] -= local[i];
@@ -83,6 +84,7 @@ PetscErrorCode TslPhasesReport(MPI_Comm comm)
   PetscCallMPI(MPI_Comm_size(comm, &size));
   PetscCall(PetscPrintf(comm, "thermoslide: wall time %.3g s:", maxv[TOTAL]));
   for (PetscInt i = READ; i <= OTHER; i++) PetscCall(PetscPrintf(comm, "%s %s %.3g", i == READ ? "" : ",", label[i], maxv[i]));
+  if (maxv[SEARCH] > 0) PetscCall(PetscPrintf(comm, " (contact search %.3g)", maxv[SEARCH]));
   PetscCall(PetscPrintf(comm, " (largest over %d ranks); peak memory %.0f MB per rank (largest), %.0f MB in all\n", size, maxv[MEM], mem_sum));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

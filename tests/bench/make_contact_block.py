@@ -1,14 +1,17 @@
 #!/usr/bin/python3
-"""A 3D two-block contact problem for the contact benchmark (issue 7): a thin C3D8T block (N x N x 1
-cells over [0.02, 0.98]^2 in x-z, 0.1 high) pressed on a base block ((N+1) x (N+1) x 2 cells over
-[0, 1]^2, 0.5 high) fixed and held at temperature 0 at its bottom; the thin block's top face at
-temperature 100 under a pressure of 100, held in x and z. The meshes do not match across the interface:
-(N+1)^2 secondary nodes against (N+1)^2 main faces. Gap conductance by pressure. One steady coupled
-increment.
+"""A 3D two-block contact problem for the contact benchmark (issue 7, tests/bench/bench_contact3d.sh): a
+thin block (N x 1 x N hexahedra over [0.02, 0.98] in x and z, 0.1 high in y) pressed on a base block
+((N+1) x 2 x (N+1) hexahedra over [0, 1] in x and z, 0.5 high) that is fixed and held at temperature 0 at
+its bottom (y = 0); the thin block's top face is held at temperature 100 and in x and z, and carries a
+pressure of 100. The meshes do not match across the interface: (N+1)^2 secondary nodes (the thin block's
+bottom) against (N+1)^2 main faces (the base's top). Gap conductance against the contact pressure. One
+steady coupled increment.
 usage: make_contact_block.py N deck.inp [thermoslide|calculix]
-  thermoslide: node-to-surface (the default pair type, hard contact, default penalty);
-  calculix:    the same mesh with C3D8 elements... no: C3D8T, face-to-face (TYPE=SURFACE TO SURFACE)
-               with a linear pressure-overclosure of the penalty thermoslide uses, as ccx requires one.
+  thermoslide: C3D8T, node-to-surface (the default pair type), hard contact with the default penalty,
+               *GAP CONDUCTANCE, PRESSURE;
+  calculix:    the same mesh with C3D8 (CalculiX's coupled temperature-displacement brick), face-to-face
+               (TYPE=SURFACE TO SURFACE) with a linear pressure-overclosure of the penalty thermoslide uses
+               by default, as ccx requires one, and its *GAP CONDUCTANCE (always by pressure).
 """
 import sys
 
@@ -46,7 +49,7 @@ with open(path, "w") as f:
     w("*HEADING\n 3D contact benchmark: %d secondary nodes\n*NODE, NSET=ALL\n" % ((n + 1) ** 2))
     for nd in bn + tn:
         w("%d, %.9g, %.9g, %.9g\n" % nd)
-    typ = "C3D8T"
+    typ = "C3D8" if flavour == "calculix" else "C3D8T"
     w("*ELEMENT, TYPE=%s, ELSET=BASE\n" % typ)
     for el in be:
         w(", ".join(str(v) for v in el) + "\n")
@@ -73,7 +76,9 @@ with open(path, "w") as f:
     if flavour == "calculix":
         # the penalty thermoslide uses by default: 10 E / main face size
         w("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n %g\n" % (10 * E * nb))
-    w("*GAP CONDUCTANCE\n 1000.0, 0.0\n 2000.0, 200.0\n")
+    # conductance against the contact pressure: thermoslide's dialect says so with PRESSURE (without it the
+    # abscissa is the clearance); CalculiX's *GAP CONDUCTANCE is always by pressure and takes no such parameter
+    w("*GAP CONDUCTANCE%s\n 1000.0, 0.0\n 2000.0, 200.0\n" % ("" if flavour == "calculix" else ", PRESSURE"))
     w("*CONTACT PAIR, INTERACTION=IFACE%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if flavour == "calculix" else ""))
     w("*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
     w("*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n")

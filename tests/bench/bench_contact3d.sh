@@ -1,0 +1,72 @@
+#!/bin/bash
+# Contact at scale (issue 7): the two-block C3D8T deck of make_contact_block.py N ((N+1)^2 secondary nodes
+# against (N+1)^2 main faces, non-matching meshes, one steady coupled increment) solved by
+#   - thermoslide on 1 and 2 ranks (-tsl_partition axis_x, so that both ranks own secondary nodes and each
+#     holds its own part of the main surface),
+#   - CalculiX 2.20 (ccx, face-to-face contact, its default direct solver, one thread) up to CCX_MAX_N
+#     (default 32).
+# Per run: total wall time, Newton iterations, the contact phase and the search inside it (pairing and the
+# held-region check, without the matrix pattern rebuild) per Newton iteration, the search's share of the
+# run, the main faces held per rank, peak memory per rank; then the ratios to CalculiX. Figures only,
+# never pass/fail (ctest -L bench).
+# usage: bench_contact3d.sh THERMOSLIDE [OUTDIR] [sizes...]   (default sizes: 16 32 64)
+set -u
+exe=$1 out=${2:-$PWD/bench-contact3d-out}
+shift 2 || shift $#
+sizes=${*:-16 32 64}
+here=$(cd "$(dirname "$0")" && pwd)
+ccx_max=${CCX_MAX_N:-32}
+mkdir -p "$out"
+ccx_ok=1
+command -v ccx > /dev/null || { ccx_ok=0; echo "ccx not installed (apt-get install calculix-ccx): CalculiX runs skipped"; }
+
+printf "\n%-4s %8s %9s %-5s %-11s %8s %6s %12s %12s %8s %-13s %9s\n" N contacts dofs ranks code total newton contact/it search/it search% held_faces mem_MB/rank
+declare -A T
+for n in $sizes; do
+  deck=$out/block$n.inp
+  /usr/bin/python3 "$here/make_contact_block.py" "$n" "$deck"
+  nc=$(( (n+1)*(n+1) ))
+  # base (n+2) x 3 x (n+2) nodes, thin block (n+1) x 2 x (n+1) nodes, 4 unknowns each
+  dofs=$(( ((n+2)*3*(n+2) + (n+1)*2*(n+1)) * 4 ))
+  for np in 1 2; do
+    log=$out/block$n.np$np.log
+    mpirun -n $np "$exe" "$deck" -o "$out/ts$n.np$np" -tsl_partition axis_x > "$log" 2>&1 || { echo "thermoslide failed: $log"; tail -3 "$log"; continue; }
+    w=$(grep "thermoslide: wall time" "$log" | sed 's/[:,;()]/ /g')
+    tot=$(echo "$w" | awk '{print $4}')
+    con=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="contact" && $(i+1)!="search") {print $(i+1); exit}}')
+    sea=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="contact" && $(i+1)=="search") print $(i+2)}')
+    mem=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="memory") print $(i+1)}')
+    its=$(grep -o "newton [0-9]*" "$log" | awk '{s+=$2} END {print s}')
+    held=$(grep -o "main faces held by rank [0-9.]*: [0-9 ]* of" "$log" | sed 's/.*: //; s/ of//; s/ /+/g')
+    printf "%-4s %8d %9d %-5s %-11s %8s %6s %12.3g %12.3g %7.2g%% %-13s %9s\n" "$n" "$nc" "$dofs" "$np" thermoslide "$tot" "$its" \
+      "$(echo "$con / $its" | bc -l)" "$(echo "${sea:-0} / $its" | bc -l)" "$(echo "100 * ${sea:-0} / $tot" | bc -l)" "$held" "$mem"
+    T[ts,$n,$np]=$tot T[tsmem,$n,$np]=$mem
+  done
+  if [ $ccx_ok = 1 ] && [ "$n" -le "$ccx_max" ]; then
+    cdir=$out/ccx$n
+    mkdir -p "$cdir"
+    /usr/bin/python3 "$here/make_contact_block.py" "$n" "$cdir/block.inp" calculix
+    if (cd "$cdir" && OMP_NUM_THREADS=1 /usr/bin/time -f "%e %M" -o time.txt ccx -i block > ccx.log 2>&1) && grep -q "Job finished" "$cdir/ccx.log"; then
+      read -r ct cm < "$cdir/time.txt"
+      cm=$(echo "$cm / 1024" | bc)
+      cits=$(grep -c "iteration [0-9]" "$cdir/ccx.log")
+      printf "%-4s %8d %9d %-5s %-11s %8s %6s %12s %12s %8s %-13s %9s\n" "$n" "$nc" "$dofs" 1 CalculiX "$ct" "$cits" - - - - "$cm"
+      T[ccx,$n]=$ct T[ccxmem,$n]=$cm
+    else
+      echo "ccx failed: $cdir/ccx.log"; tail -3 "$cdir/ccx.log"
+    fi
+  fi
+done
+
+echo
+echo "ratios (CalculiX / thermoslide): time on 1 rank, memory on 1 rank; memory per rank 2 ranks / 1 rank"
+for n in $sizes; do
+  r="N=$n:"
+  if [ -n "${T[ccx,$n]:-}" ] && [ -n "${T[ts,$n,1]:-}" ]; then
+    r="$r time x$(echo "${T[ccx,$n]} / ${T[ts,$n,1]}" | bc -l | xargs printf %.2g), memory x$(echo "${T[ccxmem,$n]} / ${T[tsmem,$n,1]}" | bc -l | xargs printf %.2g)"
+  fi
+  if [ -n "${T[tsmem,$n,2]:-}" ] && [ -n "${T[tsmem,$n,1]:-}" ]; then
+    r="$r; memory per rank 2/1 ranks $(echo "${T[tsmem,$n,2]} / ${T[tsmem,$n,1]}" | bc -l | xargs printf %.2g)"
+  fi
+  echo "$r"
+done
