@@ -95,6 +95,12 @@ PetscErrorCode TslProblemContactSearch(TslProblem prob, PetscBool *repattern);
 PetscErrorCode TslProblemContactUpdate(TslProblem prob, PetscBool *again, PetscBool *repattern, PetscBool *augmented);
 PetscErrorCode TslProblemContactCommit(TslProblem prob);
 PetscErrorCode TslProblemContactRollback(TslProblem prob);
+/* Explicit steps: commit the contact state of the forces just evaluated, then re-pair when asked or when a
+ * node left its face (*nrepair: how many left); and the normal penalty eps_n A of owned secondary node i
+ * (i < TslProblemContactNodeCount) with its local node and its main face's local nodes (*nmain of them). */
+PetscErrorCode TslProblemContactExplicitIncrement(TslProblem prob, PetscBool search, PetscInt *nrepair);
+PetscErrorCode TslProblemContactNodePenalty(TslProblem prob, PetscInt i, PetscReal *k, PetscInt *lnode, PetscInt main[], PetscInt *nmain);
+PetscInt       TslProblemContactNodeCount(TslProblem prob);
 
 /* Largest temperature change over the increment (all ranks). */
 PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta);

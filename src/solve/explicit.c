@@ -15,6 +15,7 @@
  * when the forces and the update are consistent, and ALLIE is checked against the elements' strain
  * energy (a state function) in the tests. */
 #include "solve_impl.h"
+#include <thermoslide/contact.h>
 
 #define MASS_WARN_FACTOR 100.0 /* a mass scaled by more than this is worth a warning */
 
@@ -33,6 +34,9 @@ typedef struct {
   PetscReal       safety;          /* -tsl_explicit_safety */
   PetscInt        progress;        /* -tsl_explicit_progress: increments between progress lines */
   PetscInt        history_rows;    /* -tsl_explicit_history: history rows per step besides the frames */
+  PetscInt        search_every;    /* -tsl_explicit_contact_search: increments between pairing searches */
+  PetscInt        nrepair;         /* contact nodes re-paired because their projection left the face */
+  PetscReal       dt_forces;       /* the increment the last force evaluation measured slip over */
   PetscBool       capacity_varies; /* temperature-dependent c or rho: capacity re-lumped every increment */
   PetscReal       rates_reaction_heat, stored_rate;
   TslExplicitRates rates;
@@ -48,6 +52,7 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
   d->explicit_safety   = 0.9;
   d->explicit_progress = 5000;
   d->explicit_history  = 200;
+  d->explicit_search   = 10;
   PetscOptionsBegin(d->comm, NULL, "thermoslide explicit dynamics", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_safety", "explicit: factor on the element-by-element stable increment", 0, PETSC_TRUE, 1,
                            PETSC_FALSE, &d->explicit_safety));
@@ -55,6 +60,8 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
                           &d->explicit_progress));
   PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_explicit_history", "explicit: history rows per step besides those of the frames", 0,
                           PETSC_MAX_INT, &d->explicit_history));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_explicit_contact_search", "explicit: increments between contact pairing searches (besides a node leaving its face)", 1,
+                          PETSC_MAX_INT, &d->explicit_search));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -88,12 +95,35 @@ static void MassScaleFactors(Explicit *x, PetscBool variable_only)
 /* The stable increment: min over the elements of the mechanical 2/omega (with the mass scaled) and the
  * thermal 2/lambda, by one reduction (MINLOC over both, so the log names the controlling element of each);
  * times the safety factor and the step's SCALE FACTOR. */
+/* The contact penalty's limit at each owned secondary node: the spring eps_n A between the node (mass m_s)
+ * and its main face (the lightest of the face's nodes, m_m; the node's own mass while unpaired) has
+ * omega^2 = eps_n A (1/m_s + 1/m_m), so dt_c = 2 / omega. The masses are the lumped (scaled) ones of M,
+ * ghosts included (the main face's nodes are ghosts here). */
+static PetscErrorCode ContactIncrement(Explicit *x, const PetscScalar *m, PetscReal *dt, int *id)
+{
+  PetscFunctionBeginUser;
+  *dt = PETSC_MAX_REAL, *id = -1;
+  for (PetscInt i = 0; i < TslProblemContactNodeCount(x->p); i++) {
+    PetscReal k, ms, mm, dc;
+    PetscInt  s, mf[TSL_CONTACT3_MAX_FACE_NODES], nmain;
+    PetscCall(TslProblemContactNodePenalty(x->p, i, &k, &s, mf, &nmain));
+    ms = PetscRealPart(m[s * x->ndof]), mm = ms;
+    for (PetscInt a = 0; a < nmain; a++)
+      if (mf[a] >= 0) mm = PetscMin(mm, PetscRealPart(m[mf[a] * x->ndof]));
+    if (!(k > 0) || !(ms > 0) || !(mm > 0)) continue;
+    dc = 2.0 / PetscSqrtReal(k * (1 / ms + 1 / mm));
+    if (dc < *dt) *dt = dc, *id = (int)x->m->node_id[s];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
 {
   struct {
     double v;
     int    id;
-  } loc[2] = {{PETSC_MAX_REAL, -1}, {PETSC_MAX_REAL, -1}}, g[2];
+  } loc[3] = {{PETSC_MAX_REAL, -1}, {PETSC_MAX_REAL, -1}, {PETSC_MAX_REAL, -1}}, g[3];
+  PetscReal dt_mech;
 
   PetscFunctionBeginUser;
   for (PetscInt e = 0; e < x->m->nelem; e++) {
@@ -101,12 +131,31 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
     if (dm < loc[0].v) loc[0].v = dm, loc[0].id = (int)x->m->elem_id[e];
     if (x->dt_heat[e] < loc[1].v) loc[1].v = x->dt_heat[e], loc[1].id = (int)x->m->elem_id[e];
   }
-  PetscCallMPI(MPI_Allreduce(loc, g, 2, MPI_DOUBLE_INT, MPI_MINLOC, x->comm));
-  x->dt_stable = x->safety * x->step->dt_scale * PetscMin(g[0].v, g[1].v);
+  if (x->m->npair) {
+    Vec                ml;
+    const PetscScalar *m;
+    PetscReal          dc;
+    PetscCall(VecGhostUpdateBegin(x->M, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostUpdateEnd(x->M, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostGetLocalForm(x->M, &ml));
+    PetscCall(VecGetArrayRead(ml, &m));
+    PetscCall(ContactIncrement(x, m, &dc, &loc[2].id));
+    loc[2].v = dc;
+    PetscCall(VecRestoreArrayRead(ml, &m));
+    PetscCall(VecGhostRestoreLocalForm(x->M, &ml));
+  }
+  PetscCallMPI(MPI_Allreduce(loc, g, 3, MPI_DOUBLE_INT, MPI_MINLOC, x->comm));
+  /* a secondary node is both in its elements and on the contact spring: their eigenvalues add at most
+   * (omega^2 <= omega_e^2 + omega_c^2), so 1/dt^2 = 1/dt_e^2 + 1/dt_c^2 bounds the combined limit */
+  dt_mech      = g[2].id >= 0 ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(g[0].v) + 1.0 / PetscSqr(g[2].v)) : g[0].v;
+  x->dt_stable = x->safety * x->step->dt_scale * PetscMin(dt_mech, g[1].v);
   if (print) {
     PetscCall(PetscPrintf(x->comm, "  stable increment %.4e (safety %g x scale factor %g): mechanical %.4e at element %d, thermal %.4e at element %d; %s controls\n",
                           (double)x->dt_stable, (double)x->safety, (double)x->step->dt_scale, g[0].v, g[0].id, g[1].v, g[1].id,
-                          g[0].v <= g[1].v ? "the mechanical limit" : "the thermal (diffusion) limit"));
+                          dt_mech <= g[1].v ? "the mechanical limit" : "the thermal (diffusion) limit"));
+    if (g[2].id >= 0)
+      PetscCall(PetscPrintf(x->comm, "  contact penalty (eps_n A on the lumped masses) %.4e at secondary node %d; with the elements' %.4e: mechanical %.4e\n", g[2].v,
+                            g[2].id, g[0].v, (double)dt_mech));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -174,11 +223,21 @@ static PetscErrorCode SetUpIncrement(Explicit *x, Energies *en, PetscBool first)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Forces(Explicit *x)
+/* Forces at the current state; with contact, its state (slip since the last increment, anchors) is
+ * committed as the history of the next increment, and pairing searched every search_every increments or
+ * when a node left its face. */
+static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
 {
+  PetscInt nrepair;
+
   PetscFunctionBeginUser;
   PetscCall(TslPhaseBegin(TSL_PHASE_ASSEMBLY));
   PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, &x->rates));
+  x->dt_forces = dt;
+  if (x->m->npair) {
+    PetscCall(TslProblemContactExplicitIncrement(x->p, (PetscBool)(inc % x->search_every == 0), &nrepair));
+    x->nrepair += nrepair;
+  }
   PetscCall(TslPhaseEnd(TSL_PHASE_ASSEMBLY));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -251,8 +310,10 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   en->ie += g[0];
   en->wk += g[1];
   en->cw += g[2];
-  en->fd += x->rates.dissipation * h;
-  x->d->dissipated += x->rates.dissipation * h;
+  /* the forces of state n measured the slip over the increment that ended there (dt_forces): its
+   * dissipation; the heat they generate enters the temperatures over h (forward Euler) */
+  en->fd += x->rates.dissipation * x->dt_forces;
+  x->d->dissipated += x->rates.dissipation * x->dt_forces;
   x->d->absorbed += x->rates.friction_heat * h;
   x->rates_reaction_heat = g[5];
   x->stored_rate         = g[6];
@@ -341,6 +402,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   x.safety       = d->explicit_safety;
   x.progress     = d->explicit_progress;
   x.history_rows = d->explicit_history;
+  x.search_every = d->explicit_search;
   PetscCall(PetscPrintf(d->comm, "step %" PetscInt_FMT " (%s): explicit dynamics, period %g%s\n", s + 1, x.step->name[0] ? x.step->name : "-",
                         (double)x.step->period, x.step->dt_user > 0 ? ", fixed increment (DIRECT USER CONTROL)" : ""));
   PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));
@@ -367,7 +429,10 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
     en->wk = en->ie + en->cw - en->mw;
   }
   PetscCall(VecDuplicate(x.X, &x.M));
-  PetscCall(VecZeroEntries(x.M));
+  /* the mass before this step's scaling: the last step's when the velocity carries over (only a change of
+   * mass does work on moving nodes, ALLMW), zero from rest */
+  if (d->mass && d->explicit_last == s - 1) PetscCall(VecCopy(d->mass, x.M));
+  else PetscCall(VecZeroEntries(x.M));
   PetscCall(VecDuplicate(x.X, &x.Mask));
   PetscCall(VecDuplicate(x.X, &x.Fi));
   PetscCall(VecDuplicate(x.X, &x.Fe));
@@ -378,8 +443,12 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslProblemConstrainedMask(x.p, x.Mask));
   PetscCall(TslProblemSetTime(x.p, 0, 0, *total_time));
   PetscCall(TslProblemApplyPrescribed(x.p, x.X));
+  if (x.m->npair) {
+    PetscBool repattern;
+    PetscCall(TslProblemContactSearch(x.p, &repattern));
+  }
   PetscCall(SetUpIncrement(&x, en, PETSC_TRUE));
-  PetscCall(Forces(&x));
+  PetscCall(Forces(&x, 0, 0));
   PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
 
   /* output times: NUMBER INTERVAL= (default 20, as in the dialect) or TIME INTERVAL= */
@@ -419,7 +488,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
         if (x.step->dt_user <= 0) x.dt = x.dt_stable;
         break;
       }
-    PetscCall(Forces(&x));
+    PetscCall(Forces(&x, h, inc));
     frame = (PetscBool)(last || t >= t_frame - eps);
     if (frame)
       while (t_frame <= t + eps) t_frame += dt_frame;
@@ -443,8 +512,14 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
                         "  step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %.2f s (%.3g s per increment); ALLKE %.6g ALLIE %.6g ALLWK %.6g ALLFD %.6g ALLCW %.6g ALLMW %.6g ETOTAL %.3g\n",
                         s + 1, inc, now - wall0, inc ? (now - wall0) / inc : 0.0, (double)en->ke, (double)en->ie, (double)en->wk, (double)en->fd, (double)en->cw,
                         (double)en->mw, (double)(en->ke + en->ie + en->cw - en->wk - en->mw)));
+  if (x.m->npair)
+    PetscCall(PetscPrintf(d->comm, "  contact: pairing searched every %" PetscInt_FMT " increments; %" PetscInt_FMT " re-pairings of nodes that left their face\n",
+                          x.search_every, x.nrepair));
   PetscCall(TslDriverPrintTables(d, x.step));
   d->explicit_last = s;
+  PetscCall(VecDestroy(&d->mass));
+  d->mass = x.M;
+  x.M     = NULL;
   PetscCall(Destroy(&x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -45,11 +45,13 @@ typedef struct {
   /* explicit steps: the velocity and the energies carry over from one explicit step to the next (an
    * implicit step between them is static: the velocity restarts at zero) */
   Vec       velocity;
+  Vec       mass;          /* the lumped mass the last explicit step ended with (ALLMW of the next one's scaling) */
   PetscInt  explicit_last; /* last explicit step run (0-based), -1 none */
   PetscReal energy[6];     /* ALLKE ALLIE ALLWK ALLFD ALLCW ALLMW since the start of the job */
   PetscReal explicit_safety;   /* -tsl_explicit_safety */
   PetscInt  explicit_progress; /* -tsl_explicit_progress */
   PetscInt  explicit_history;  /* -tsl_explicit_history */
+  PetscInt  explicit_search;   /* -tsl_explicit_contact_search */
 } Driver;
 
 #define HIST_ENERGY 17 /* first energy column */
