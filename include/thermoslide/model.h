@@ -218,6 +218,7 @@ typedef struct {
   char           secondary[TSL_NAME_LEN], main[TSL_NAME_LEN];
   TslContactType type;          /* TYPE= (default NODE TO SURFACE) */
   PetscBool      small_sliding; /* SMALL SLIDING */
+  PetscBool      kinematic;     /* MECHANICAL CONSTRAINT=KINEMATIC (explicit steps; PENALTY, the default here, otherwise) */
   PetscReal      smooth;        /* SMOOTH= (default 0.2) */
   PetscBool      adjust_given;  /* ADJUST= given: a distance (adjust) or a node set (adjust_set) */
   PetscReal      adjust;

@@ -1394,6 +1394,14 @@ static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw)
   proto.type = (type && !strcmp(type, "SURFACE TO SURFACE")) ? TSL_CONTACT_SURFACE_TO_SURFACE : TSL_CONTACT_NODE_TO_SURFACE;
   USER_CHECK(!Param(d, "TIED"), LOC_FMT "*CONTACT PAIR, TIED is not supported yet", KLOC(d));
   proto.small_sliding = Param(d, "SMALL SLIDING") ? PETSC_TRUE : PETSC_FALSE;
+  {
+    /* explicit steps' enforcement (docs/explicit.md): PENALTY unless KINEMATIC is asked for */
+    char        mbuf[32];
+    const char *mc = ParamUpper(d, "MECHANICAL CONSTRAINT", mbuf, sizeof(mbuf));
+    USER_CHECK(!mc || !strcmp(mc, "PENALTY") || !strcmp(mc, "KINEMATIC"),
+               LOC_FMT "*CONTACT PAIR, MECHANICAL CONSTRAINT=%s is not supported (PENALTY or KINEMATIC)", KLOC(d), mc);
+    proto.kinematic = (PetscBool)(mc && !strcmp(mc, "KINEMATIC"));
+  }
   proto.smooth        = 0.2;
   PetscCall(ParamReal(d, "SMOOTH", &proto.smooth, NULL));
   /* the contact kinematics smooth a fraction s < 1/2 of each segment at either end (s = 1/2 would leave no straight part) */
@@ -1870,7 +1878,7 @@ static const DeckKeyword Keywords[] = {
     {"GAP CONDUCTANCE", AT_MODEL, IN_INTERACTION, "PRESSURE|DEPENDENCIES|USER", KwGapConductance, 0, NULL},
     {"GAP RADIATION", AT_MODEL, IN_INTERACTION, "", KwGapRadiation, 0, NULL},
     {"GAP HEAT GENERATION", AT_MODEL, IN_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
-    {"CONTACT PAIR", AT_MODEL, IN_NONE, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED", KwContactPair, 0, NULL},
+    {"CONTACT PAIR", AT_MODEL, IN_NONE, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED|MECHANICAL CONSTRAINT", KwContactPair, 0, NULL},
     {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
