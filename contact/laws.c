@@ -74,6 +74,9 @@ PetscErrorCode TslContactStateUpdate(const TslContactOutput *out, TslContactStat
   h->xi_anchor = out->xi_anchor;
   h->w_old     = out->w;
   h->w_anchor  = out->w_anchor;
+  /* 3D: the second surface parameter (zero in 2D) */
+  h->eta_old    = out->eta;
+  h->eta_anchor = out->eta_anchor;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -173,6 +173,19 @@ PetscErrorCode TslContactBinGridQuery(TslContactBinGrid G, const PetscReal p[], 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslContactBinGridQueryGrow(TslContactBinGrid grid, const PetscReal p[], PetscReal radius, PetscInt *cap, PetscInt **cand, PetscInt *ncand)
+{
+  PetscFunctionBeginUser;
+  PetscCall(TslContactBinGridQuery(grid, p, radius, *cap, *cand, ncand, NULL));
+  if (*ncand > *cap) {
+    *cap = *ncand;
+    PetscCall(PetscFree(*cand));
+    PetscCall(PetscMalloc1(*cap, cand));
+    PetscCall(TslContactBinGridQuery(grid, p, radius, *cap, *cand, ncand, NULL));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslContactBinGridGetSize(TslContactBinGrid grid, PetscInt *nx, PetscInt *ny)
 {
   PetscFunctionBeginUser;

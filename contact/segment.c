@@ -77,35 +77,43 @@ PetscErrorCode TslContactPointSetUp(TslContactFaceKind kind, const PetscReal X[]
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslContactPointExpand(PetscInt nu, PetscInt nk, PetscInt nsn, const PetscReal N[], const PetscReal Rk[], const PetscReal Kk[], PetscReal R[],
+                                     PetscReal K[])
+{
+  /* expanded dof i is kernel dof row[i] times fac[i]: the secondary face's dofs take the virtual node's
+   * with factor N_b, the others are the kernel's own */
+  PetscInt  row[TSL_CONTACT_S2S3_MAX_DOF];
+  PetscReal fac[TSL_CONTACT_S2S3_MAX_DOF];
+  PetscInt  ne = nu * (nsn + nk - 1), nkd = nu * nk;
+
+  PetscFunctionBeginUser;
+  PetscCheck(ne <= TSL_CONTACT_S2S3_MAX_DOF, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Expanded contact element too large");
+  for (PetscInt b = 0; b < nsn; b++)
+    for (PetscInt c = 0; c < nu; c++) row[nu * b + c] = c, fac[nu * b + c] = N[b];
+  for (PetscInt i = nu; i < nkd; i++) row[nu * (nsn - 1) + i] = i, fac[nu * (nsn - 1) + i] = 1;
+  if (R)
+    for (PetscInt ii = 0; ii < ne; ii++) R[ii] = fac[ii] * Rk[row[ii]];
+  if (K)
+    for (PetscInt ii = 0; ii < ne; ii++)
+      for (PetscInt jj = 0; jj < ne; jj++) K[ii * ne + jj] = fac[ii] * fac[jj] * Kk[row[ii] * nkd + row[jj]];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslContactPointElement(const TslContactLaw *law, const TslContactInput *in, TslContactFaceKind kind, PetscReal zeta, PetscReal R[],
                                       PetscReal K[], TslContactOutput *out)
 {
   const TslContactFace *face = TslContactFaceGet(kind);
   PetscReal             Rk[TSL_CONTACT_MAX_DOF], Kk[TSL_CONTACT_MAX_DOF * TSL_CONTACT_MAX_DOF], N[TSL_CONTACT_MAX_FACE_NODES];
   PetscReal             dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES];
-  /* expanded dof i is kernel dof row[i] times fac[i]: the secondary face's dofs take the virtual node's
-   * with factor N_b, the others are the kernel's own */
-  PetscInt              row[TSL_CONTACT_S2S_MAX_DOF];
-  PetscReal             fac[TSL_CONTACT_S2S_MAX_DOF];
   TslContactOutput      o;
-  PetscInt              nsn, nu, nk, ne;
+  PetscInt              nsn;
 
   PetscFunctionBeginUser;
   PetscCheck(face, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown contact face family %d", (int)kind);
   PetscCall(TslContactElement(law, in, Rk, K ? Kk : NULL, &o));
   nsn = face->geom->nnode;
-  nu  = o.nu;
-  nk  = nu * o.nnode;
-  ne  = nu * (nsn + o.nnode - 1);
   TslContactFaceShape(face, zeta, N, dN, d2N);
-  for (PetscInt b = 0; b < nsn; b++)
-    for (PetscInt c = 0; c < nu; c++) row[nu * b + c] = c, fac[nu * b + c] = N[b];
-  for (PetscInt i = nu; i < nk; i++) row[nu * (nsn - 1) + i] = i, fac[nu * (nsn - 1) + i] = 1;
-  if (R)
-    for (PetscInt ii = 0; ii < ne; ii++) R[ii] = fac[ii] * Rk[row[ii]];
-  if (K)
-    for (PetscInt ii = 0; ii < ne; ii++)
-      for (PetscInt jj = 0; jj < ne; jj++) K[ii * ne + jj] = fac[ii] * fac[jj] * Kk[row[ii] * nk + row[jj]];
+  PetscCall(TslContactPointExpand(o.nu, o.nnode, nsn, N, Rk, K ? Kk : NULL, R, K));
   if (out) {
     *out       = o;
     out->nnode = nsn + o.nnode - 1;

@@ -299,7 +299,8 @@ typedef struct {
 PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
 
 /* After an increment converged: xi_old = out->xi, xi_anchor = out->xi_anchor, w_old = out->w,
- * w_anchor = out->w_anchor (lambda is left to TslContactAugmentedUpdate). */
+ * w_anchor = out->w_anchor, and in 3D eta_old = out->eta, eta_anchor = out->eta_anchor (lambda is left to
+ * TslContactAugmentedUpdate). */
 PetscErrorCode TslContactStateUpdate(const TslContactOutput *out, TslContactState *h);
 
 /* A new contact starts stress-free at parameter xi of the input's segment: xi_old = xi_anchor = xi,
@@ -411,6 +412,10 @@ PetscErrorCode TslContactBinGridDestroy(TslContactBinGrid *grid);
  * number of bins visited. Not thread safe (uses the grid's marker array). */
 PetscErrorCode TslContactBinGridQuery(TslContactBinGrid grid, const PetscReal p[], PetscReal radius, PetscInt cap, PetscInt cand[], PetscInt *ncand,
                                       PetscInt *nbins);
+
+/* The same query into a growing array: *cand (PetscMalloc'ed, *cap entries) is enlarged when more faces
+ * than *cap are found, so that all *ncand candidates are listed. */
+PetscErrorCode TslContactBinGridQueryGrow(TslContactBinGrid grid, const PetscReal p[], PetscReal radius, PetscInt *cap, PetscInt **cand, PetscInt *ncand);
 
 /* Number of bins in x and in the other directions (y, or y times z in 3D; for logs and tests). */
 PetscErrorCode TslContactBinGridGetSize(TslContactBinGrid grid, PetscInt *nx, PetscInt *ny);

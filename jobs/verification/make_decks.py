@@ -248,6 +248,25 @@ def faces(shape):
 R_AXI = 2.5
 
 
+def series_interaction(series, auglagr=False, surf=False):
+    """The spec's interface of each series (planar and 3D decks alike): pressure-dependent gap conductance,
+    gap radiation, or Lagrange friction with heat generation; the contact pair (smoothing 0.05), the
+    sliding amplitude and the initial temperature."""
+    if series == "conductance":
+        text = "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
+        if auglagr:
+            text += "*SURFACE BEHAVIOR, AUGMENTED LAGRANGE\n"
+    elif series == "radiation":
+        text = ("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
+                "*SURFACE INTERACTION, NAME=IFACE\n*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 1.0\n")
+    else:
+        text = ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION, LAGRANGE\n 0.1\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n"
+                "*GAP HEAT GENERATION\n 0.5, 0.5\n")
+    return text + ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if surf else "") +
+                   "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n"
+                   "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+
+
 def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, refine=1, top_rows=6):
     """The spec's finite-sliding problems: a block 2 x 0.25 (4 x 6 cells) pressed on a block 6 x 1.25
     (12 x 2 cells) fixed at its bottom; total area 8, rho c = 1. The thin upper block passes the applied
@@ -297,19 +316,7 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
               "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL, REF NODE=9001\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL, REF NODE=9002\n 1.0\n")
              if kin == "PEG" else
              "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n 1.0\n"))
-    if series == "conductance":
-        text += "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
-        if auglagr:
-            text += "*SURFACE BEHAVIOR, AUGMENTED LAGRANGE\n"
-    elif series == "radiation":
-        text += ("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
-                 "*SURFACE INTERACTION, NAME=IFACE\n*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 1.0\n")
-    else:
-        text += ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION, LAGRANGE\n 0.1\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n"
-                 "*GAP HEAT GENERATION\n 0.5, 0.5\n")
-    text += ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if surf else "") +
-             "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n"
-             "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+    text += series_interaction(series, auglagr, surf)
     if series == "friction":
         ref = topface[0]
         # twist rings: the sliding face also turns; the slide is 0.6 axial and 0.8 circumferential of the
@@ -508,11 +515,11 @@ def faces_on(nodes, elems, shape, y):
     return out
 
 
-def sliding_blocks_3d(series, typ, outdir=None):
+def sliding_blocks_3d(series, typ, outdir=None, surf=False):
     """The spec's three series on 3D blocks (see above): the planar decks' loads and steps on faces of
     width 1 (small block) and 1.2 (large block), sliding along x, pressing along -y, z held on the small
     block's top face. Volume 6 x 1.25 x 1.2 + 2 x 0.25 x 1 = 9.5 (rho c = 1): the friction series ends at
-    60 / 9.5."""
+    60 / 9.5. surf: TYPE=SURFACE TO SURFACE (job name *_surf_*)."""
     typ = typ.upper()
     bnodes, belems, shape = mesh3d(12, 2, 2, 0.0, 6.0, 0.0, 1.25, -0.1, 1.1, typ, mirror=3.0)
     tnodes, telems, _ = mesh3d(4, 6, 2, 2.0, 4.0, 1.25, 1.5, 0.0, 1.0, typ, 1000, 1000, mirror=3.0)
@@ -538,17 +545,7 @@ def sliding_blocks_3d(series, typ, outdir=None):
             "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
             nset("BASE", base) + nset("TOPFACE", topface) + surface("MAIN", main) + surface("SECONDARY", sec) + MAT +
             "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n")
-    if series == "conductance":
-        text += "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
-    elif series == "radiation":
-        text += ("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
-                 "*SURFACE INTERACTION, NAME=IFACE\n*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 1.0\n")
-    else:
-        text += ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION, LAGRANGE\n 0.1\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n"
-                 "*GAP HEAT GENERATION\n 0.5, 0.5\n")
-    text += ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05\n SECONDARY, MAIN\n"
-             "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n"
-             "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+    text += series_interaction(series, surf=surf)
     if series == "friction":
         ref = topface[0]
         text += "".join("*EQUATION\n 2\n %d, %d, 1.0, %d, %d, -1.0\n" % (n, d, ref, d) for n in topface[1:] for d in (1, 2, 3))
@@ -570,7 +567,7 @@ def sliding_blocks_3d(series, typ, outdir=None):
                  "*STEP, NAME=SLIDE OFF, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.1\n"
                  "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, 2, 2\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, 1, 1, 5.0\n"
                  "*DFLUX, AMPLITUDE=FLUXDOWN\n" + load_lines(pressed, "S", "100.0") + "*END STEP\n")
-    name = "sliding_%s_%s.inp" % (series, typ.lower())
+    name = "sliding_%s%s_%s.inp" % (series, "_surf" if surf else "", typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:
         f.write(text)
 
@@ -682,7 +679,7 @@ if __name__ == "__main__":
         flags = sys.argv[5:]
         refine = [int(f.split("=")[1]) for f in flags if f.startswith("--refine=")]
         if sys.argv[2].upper().startswith("C3D"):
-            sliding_blocks_3d(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4])
+            sliding_blocks_3d(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], surf="--surf" in flags)
         else:
             sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr="--auglagr" in flags, surf="--surf" in flags,
                            refine=refine[0] if refine else 1)

@@ -2,6 +2,7 @@
 #include <thermoslide/mesh.h>
 #include <thermoslide/element.h>
 #include <thermoslide/contact.h>
+#include <thermoslide/contact_s2s.h>
 #include <metis.h>
 #include <string.h>
 
@@ -254,13 +255,29 @@ static PetscBool FacesOverlap(const PetscReal xs[], const PetscReal xm[])
   return (PetscBool)(PetscMin(1, PetscMax(z[0], z[1])) - PetscMax(0, PetscMin(z[0], z[1])) > 1e-9);
 }
 
+/* 3D: does the secondary face xs (family ks) overlap main face j of the pair, facing it (contact/clip3.c, in
+ * the reference configuration)? */
+static PetscErrorCode FacesOverlap3(const TslModel *g, const TslContactPair *c, PetscInt ks, const PetscReal xs[], PetscInt j, PetscBool *overlap)
+{
+  static TslContactOverlapPoint pt[TSL_CONTACT_OVERLAP_MAX_POINTS];
+  PetscReal                     ym[3 * TSL_CONTACT3_MAX_FACE_NODES];
+  PetscInt                      n;
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < TslContactFace3Nodes(c->main_kind[j]); a++)
+    for (PetscInt d = 0; d < 3; d++) ym[3 * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, c->main_node[c->nper * j + a]) + d];
+  PetscCall(TslContactOverlap3(ks, xs, xs, c->main_kind[j], ym, TSL_CONTACT_OVERLAP_MAX_POINTS, pt, &n, NULL));
+  *overlap = (PetscBool)(n > 0);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Surface-to-surface pair: the secondary faces (one family per surface) instead of secondary nodes, and
  * the check that some secondary face lies across some main face in the reference configuration: a pair
  * with no face overlap at all can never transmit anything and is a user error at its data line. */
 static PetscErrorCode SurfaceToSurfaceFaces(const TslModel *g, TslContactPair *c, const TslSurface *sec)
 {
   PetscInt  nodes[TSL_MAX_FACE_NODES], nf, family;
-  PetscReal x[2 * TSL_MAX_FACE_NODES], y[2 * TSL_MAX_FACE_NODES];
+  PetscReal x[3 * TSL_MAX_FACE_NODES], y[2 * TSL_MAX_FACE_NODES];
   PetscBool overlap = PETSC_FALSE;
   char      loc[PETSC_MAX_PATH_LEN + 32];
 
@@ -269,7 +286,7 @@ static PetscErrorCode SurfaceToSurfaceFaces(const TslModel *g, TslContactPair *c
   c->nsface     = sec->n;
   c->sface_kind = TSL_CONTACT_FACE_LINE2;
   if (sec->n) PetscCall(ContactFace(g, c, TslModelElementIndex(g, sec->elem[0]), sec->face[0], nodes, &nf, x, &c->sface_kind));
-  c->snper = TslContactFaceGet((TslContactFaceKind)c->sface_kind)->geom->nnode;
+  c->snper = g->dim == 3 ? TslContactFace3Nodes(c->sface_kind) : TslContactFaceGet((TslContactFaceKind)c->sface_kind)->geom->nnode;
   PetscCall(PetscMalloc1(c->snper * c->nsface, &c->sface_node));
   PetscCall(PetscMalloc1(c->nsface, &c->sface_asm));
   for (PetscInt i = 0; i < sec->n; i++) {
@@ -280,6 +297,10 @@ static PetscErrorCode SurfaceToSurfaceFaces(const TslModel *g, TslContactPair *c
     for (PetscInt a = 0; a < nf; a++) c->sface_node[c->snper * i + a] = nodes[a];
     c->sface_asm[i] = 1;
     for (PetscInt j = 0; j < c->nmain && !overlap; j++) {
+      if (g->dim == 3) {
+        PetscCall(FacesOverlap3(g, c, family, x, j, &overlap));
+        continue;
+      }
       for (PetscInt a = 0; a < 2; a++)
         for (PetscInt d = 0; d < 2; d++) y[2 * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, c->main_node[c->nper * j + a]) + d];
       overlap = FacesOverlap(x, y);
@@ -311,9 +332,6 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
     PetscInt          nodes[TSL_MAX_FACE_NODES];
     PetscReal         Lsum = 0, x[3 * TSL_MAX_FACE_NODES], w[TSL_MAX_FACE_NODES], L;
 
-    PetscCheck(c->type == TSL_CONTACT_NODE_TO_SURFACE || dim == 2, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-               "%s: *CONTACT PAIR, TYPE=SURFACE TO SURFACE between 3D elements is not supported yet (use the default node-to-surface)",
-               TslLocString(g, c->loc, loc, sizeof(loc)));
     /* main faces: in 2D one family per pair (the first face's); nper nodes each (3D: the most of any face,
      * shorter faces padded with -1), in face order */
     c->nmain        = main->n;

@@ -212,13 +212,7 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
 
       if (cn->pair != k) continue;
       CurrentPosition(p, cs, xa, cn->lnode, y);
-      PetscCall(TslContactBinGridQuery(grid, y, cs->search_radius, cap, cand, &ncand, NULL));
-      if (ncand > cap) {
-        cap = ncand;
-        PetscCall(PetscFree(cand));
-        PetscCall(PetscMalloc1(cap, &cand));
-        PetscCall(TslContactBinGridQuery(grid, y, cs->search_radius, cap, cand, &ncand, NULL));
-      }
+      PetscCall(TslContactBinGridQueryGrow(grid, y, cs->search_radius, &cap, &cand, &ncand));
       for (PetscInt c = 0; c < ncand; c++) {
         const PetscReal *x  = &seg_x[2 * np * cand[c]];
         PetscReal        L2 = PetscSqr(x[2] - x[0]) + PetscSqr(x[3] - x[1]), xi, xc, q[2], t[2], dist, gap;
@@ -375,8 +369,9 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
 PetscErrorCode TslProblemContactCommit(TslProblem p)
 {
   PetscFunctionBeginUser;
+  /* the ghost update is collective: the condition must not depend on the rank (active does) */
   for (PetscInt k = 0; k < p->ncsurf; k++)
-    if (p->csurf[k].dim == 3 && p->csurf[k].active && p->csurf[k].smooth > 0) {
+    if (p->csurf[k].dim == 3 && p->csurf[k].smooth > 0) {
       Vec                xl;
       const PetscScalar *xa;
       PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));

@@ -109,7 +109,8 @@ PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt k, const PetscSca
 
   PetscFunctionBeginUser;
   if (!cs->active) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscMalloc3(6 * cs->nmain + 1, &box, 3 * np * cs->nmain + 1, &fx, cap, &cand));
+  PetscCall(PetscMalloc2(6 * cs->nmain + 1, &box, 3 * np * cs->nmain + 1, &fx));
+  PetscCall(PetscMalloc1(cap, &cand)); /* grown by the queries */
   for (PetscInt f = 0; f < cs->nmain; f++) {
     FacePosition(p, cs, xa, f, &fx[3 * np * f]);
     PetscCall(TslContactFace3Box(cs->kind[f], &fx[3 * np * f], &box[6 * f]));
@@ -123,13 +124,7 @@ PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt k, const PetscSca
     if (cn->pair != k) continue;
     NodeData(p, cs, xa, cn->lnode, X, u);
     for (PetscInt d = 0; d < 3; d++) y[d] = X[d] + u[d];
-    PetscCall(TslContactBinGridQuery(grid, y, cs->search_radius, cap, cand, &ncand, NULL));
-    if (ncand > cap) {
-      cap = ncand;
-      PetscCall(PetscFree(cand));
-      PetscCall(PetscMalloc1(cap, &cand));
-      PetscCall(TslContactBinGridQuery(grid, y, cs->search_radius, cap, cand, &ncand, NULL));
-    }
+    PetscCall(TslContactBinGridQueryGrow(grid, y, cs->search_radius, &cap, &cand, &ncand));
     for (PetscInt c = 0; c < ncand; c++) {
       const PetscReal *x = &fx[3 * np * cand[c]];
       PetscReal        xi[2], q[3], n[3], dist, gap;
@@ -160,6 +155,7 @@ PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt k, const PetscSca
     }
   }
   PetscCall(TslContactBinGridDestroy(&grid));
-  PetscCall(PetscFree3(box, fx, cand));
+  PetscCall(PetscFree2(box, fx));
+  PetscCall(PetscFree(cand));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

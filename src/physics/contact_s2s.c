@@ -27,37 +27,12 @@
  * as CPRESS from the points' slips.
  */
 #include "problem_impl.h"
-#include <thermoslide/contact_s2s.h>
+#include "contact_s2s_impl.h"
 
 #define S2S_BREAK_TOL  1e-6 /* breaks closer than this fraction of the secondary face are merged */
 #define S2S_XI_TOL     1e-9 /* a piece's middle projects onto a main face within this fraction of it */
-#define S2S_DEPART_TOL 1e-6 /* after convergence, a point this far (fraction) beyond its face re-pairs */
 #define S2S_MAX_BREAKS 64
 #define NH             5 /* portable history: slip, elastic slip, lambda, twist slip, twist elastic slip */
-
-typedef struct {
-  PetscInt           pair, nsn;
-  TslContactFaceKind kind;
-  PetscInt           lnode[TSL_CONTACT_MAX_FACE_NODES];
-  PetscBool          assemble;
-  PetscInt           first, npt, first_c, npt_c; /* its points, current and committed */
-} S2SFace;
-
-typedef struct {
-  PetscInt         seg;
-  PetscReal        zeta, length;
-  TslContactState  hist;
-  TslContactOutput out;
-} S2SPoint;
-
-struct _n_TslContactS2S {
-  PetscInt   nface;
-  S2SFace   *face;
-  PetscInt   npt, cap, npt_c, cap_c;
-  S2SPoint  *pt, *pt_c;
-  PetscReal *trib;           /* [nn] int N_b ds over the held faces of each node (reference) */
-  PetscReal *cslip, *cslip_c; /* [nn] accumulated slip */
-};
 
 /* Reference coordinates X[2*b + d] and unknowns U[nu*b + c] of a face's nodes. */
 static void FaceData(TslProblem p, const S2SFace *fc, const PetscScalar *xa, PetscReal X[], PetscReal U[])
@@ -104,7 +79,7 @@ static PetscErrorCode PointInput(TslProblem p, const S2SFace *fc, const S2SPoint
 PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat)
 {
   TslContactS2S           s = p->s2s;
-  static PetscReal        R[TSL_CONTACT_S2S_MAX_DOF], K[TSL_CONTACT_S2S_MAX_DOF * TSL_CONTACT_S2S_MAX_DOF];
+  static PetscReal        R[TSL_CONTACT_S2S3_MAX_DOF], K[TSL_CONTACT_S2S3_MAX_DOF * TSL_CONTACT_S2S3_MAX_DOF];
   TslContactNeighbourData nb;
 
   PetscFunctionBeginUser;
@@ -116,19 +91,22 @@ PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const Pe
 
     if (mode == ASM_PATTERN && !fc->assemble) continue;
     for (PetscInt q = fc->first; q < fc->first + fc->npt; q++) {
-      S2SPoint       *pt = &s->pt[q];
-      TslContactInput in;
-      PetscInt        nodes[TSL_CONTACT_S2S_MAX_NODES], n, ld[TSL_CONTACT_S2S_MAX_DOF];
+      S2SPoint        *pt = &s->pt[q];
+      TslContactInput  in;
+      TslContactInput3 in3;
+      PetscInt         nodes[TSL_CONTACT_S2S3_MAX_NODES], n, ld[TSL_CONTACT_S2S3_MAX_DOF];
 
       if (pt->seg < 0) continue;
-      PetscCall(PointInput(p, fc, pt, xa, &in, nodes, &n, &nb));
+      if (p->dim == 3) PetscCall(TslS2S3PointInput(p, fc, pt, xa, &in3, nodes, &n));
+      else PetscCall(PointInput(p, fc, pt, xa, &in, nodes, &n, &nb));
       for (PetscInt a = 0; a < n; a++)
         for (PetscInt c = 0; c < nu; c++) ld[nu * a + c] = nodes[a] * p->ndof + cs->slot[c];
       if (mode == ASM_PATTERN) {
         PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, NULL, NULL));
         continue;
       }
-      PetscCall(TslContactPointElement(&cs->law, &in, fc->kind, pt->zeta, R, mode == ASM_JACOBIAN ? K : NULL, &pt->out));
+      if (p->dim == 3) PetscCall(TslContactPointElement3(&cs->law, &in3, fc->nsn, pt->N, R, mode == ASM_JACOBIAN ? K : NULL, &pt->out));
+      else PetscCall(TslContactPointElement(&cs->law, &in, fc->kind, pt->zeta, R, mode == ASM_JACOBIAN ? K : NULL, &pt->out));
       if (!fc->assemble) continue; /* another rank inserts this face; the outputs are kept here too */
       if (f || A) PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
       if (heat) {
@@ -215,7 +193,7 @@ static PetscErrorCode PieceFace(TslProblem p, const TslContactSurface *cs, const
 }
 
 /* Appends a point to the current list. */
-static PetscErrorCode Push(TslContactS2S s, const S2SPoint *pt)
+PetscErrorCode TslS2SPush(TslContactS2S s, const S2SPoint *pt)
 {
   PetscFunctionBeginUser;
   if (s->npt == s->cap) {
@@ -230,6 +208,29 @@ static PetscErrorCode Push(TslContactS2S s, const S2SPoint *pt)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void TslS2SCompareCut(const S2SPoint *old, PetscInt nold, const S2SPoint *pnew, PetscInt nnew, PetscBool *same, PetscBool *changed)
+{
+  *same = (PetscBool)(nnew == nold);
+  for (PetscInt q = 0; q < nold && *same; q++) {
+    *same = (PetscBool)(old[q].seg == pnew[q].seg && PetscAbsReal(old[q].zeta - pnew[q].zeta) < 1e-12);
+    for (PetscInt b = 0; b < TSL_CONTACT3_MAX_FACE_NODES && *same; b++) *same = (PetscBool)(PetscAbsReal(old[q].N[b] - pnew[q].N[b]) < 1e-12);
+  }
+  *changed = PETSC_FALSE;
+  if (!*same) {
+    /* couplings: compare the sequences of main faces (a change of the matrix pattern) */
+    PetscInt a = 0, b = 0;
+    while (a < nold || b < nnew) {
+      PetscInt sa = a < nold ? old[a].seg : -3, sb = b < nnew ? pnew[b].seg : -3;
+      if (sa != sb) {
+        *changed = PETSC_TRUE;
+        break;
+      }
+      while (a < nold && old[a].seg == sa) a++;
+      while (b < nnew && pnew[b].seg == sb) b++;
+    }
+  }
+}
+
 /* Cuts face fc at the state xa and appends its points (new list), carrying the history of its old points
  * (old[0..nold)); *changed when the main faces it couples to changed. */
 static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, PetscInt nold, TslContactBinGrid grid, const PetscScalar *xa,
@@ -241,7 +242,7 @@ static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, Pe
   PetscReal X[2 * TSL_CONTACT_MAX_FACE_NODES], U[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES], Y[2 * TSL_CONTACT_MAX_FACE_NODES];
   PetscReal box[4], c[2], rad, zeta[S2S_MAX_BREAKS], *ends, H[NH * TSL_CONTACT_MAX_FACE_NODES], Hm[NH];
   PetscInt  ncand, nb, start = s->npt;
-  PetscBool any, same = PETSC_TRUE;
+  PetscBool any, same;
 
   PetscFunctionBeginUser;
   FaceData(p, fc, xa, X, U);
@@ -282,26 +283,10 @@ static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, Pe
       pt.seg    = seg;
       pt.zeta   = zq[q];
       pt.length = wq[q];
-      PetscCall(Push(s, &pt));
+      PetscCall(TslS2SPush(s, &pt));
     }
   }
-  /* the same cut (same points on the same main faces): the history stays as it is */
-  if (s->npt - start != nold) same = PETSC_FALSE;
-  for (PetscInt q = 0; q < nold && same; q++) same = (PetscBool)(old[q].seg == s->pt[start + q].seg && PetscAbsReal(old[q].zeta - s->pt[start + q].zeta) < 1e-12);
-  *changed = PETSC_FALSE;
-  if (!same) {
-    /* couplings: compare the sequences of main faces (a change of the matrix pattern) */
-    PetscInt a = 0, b = start;
-    while (a < nold || b < s->npt) {
-      PetscInt sa = a < nold ? old[a].seg : -3, sb = b < s->npt ? s->pt[b].seg : -3;
-      if (sa != sb) {
-        *changed = PETSC_TRUE;
-        break;
-      }
-      while (a < nold && old[a].seg == sa) a++;
-      while (b < s->npt && s->pt[b].seg == sb) b++;
-    }
-  }
+  TslS2SCompareCut(old, nold, s->pt + start, s->npt - start, &same, changed);
   for (PetscInt q = start; q < s->npt; q++) {
     S2SPoint               *pt = &s->pt[q];
     TslContactInput         in;
@@ -362,6 +347,12 @@ PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, P
     PetscReal         *box, y[2 * TSL_CONTACT_MAX_FACE_NODES];
     TslContactBinGrid  grid = NULL;
 
+    if (p->dim == 3) {
+      PetscInt ch;
+      PetscCall(TslS2S3SearchPair(p, k, old, nold, xa, &ch));
+      *changed += ch;
+      continue;
+    }
     for (PetscInt i = 0; i < s->nface; i++) {
       S2SFace  *fc = &s->face[i];
       PetscBool ch;
@@ -397,7 +388,7 @@ PetscErrorCode TslProblemContactS2SUpdate(TslProblem p, PetscInt *depart, PetscR
     for (PetscInt q = fc->first; q < fc->first + fc->npt; q++) {
       const S2SPoint *pt = &s->pt[q];
       if (pt->seg < 0) continue;
-      if (TslContactProjectionSide(pt->out.xi_raw, S2S_DEPART_TOL) != 0) (*depart)++;
+      if (p->dim == 3 ? TslS2S3Departed(p, pt, fc->pair) : TslContactProjectionSide(pt->out.xi_raw, S2S_DEPART_TOL) != 0) (*depart)++;
       if (cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED) {
         PetscReal c, lambda = pt->hist.lambda;
         PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, pt->out.gap, &lambda, &c));
@@ -440,10 +431,11 @@ static PetscErrorCode NodalValues(TslProblem p, PetscInt which, PetscReal v[])
     const TslContactFace *face = TslContactFaceGet(fc->kind);
     for (PetscInt q = fc->first; q < fc->first + fc->npt; q++) {
       const S2SPoint *pt = &s->pt[q];
-      PetscReal       N[TSL_CONTACT_MAX_FACE_NODES], dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES], val;
+      PetscReal       N[TSL_CONTACT3_MAX_FACE_NODES], dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES], val;
       if (pt->seg < 0) continue;
       val = which == 0 ? pt->out.pressure : which == 1 ? PetscHypotReal(pt->out.slip, pt->out.slip_circ) : which == 2 ? (PetscReal)pt->out.status : pt->out.heat_flux;
-      TslContactFaceShape(face, pt->zeta, N, dN, d2N);
+      if (p->dim == 3) PetscCall(PetscArraycpy(N, pt->N, fc->nsn));
+      else TslContactFaceShape(face, pt->zeta, N, dN, d2N);
       for (PetscInt b = 0; b < fc->nsn; b++) {
         PetscInt l = fc->lnode[b];
         if (which == 2) {
@@ -476,6 +468,14 @@ PetscErrorCode TslProblemContactS2SCommit(TslProblem p)
 
   PetscFunctionBeginUser;
   if (!s) PetscFunctionReturn(PETSC_SUCCESS);
+  if (p->dim == 3) {
+    /* the converged configuration gives the next increment's nodal normals (smoothing) */
+    Vec                xl;
+    const PetscScalar *xa;
+    PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+    PetscCall(TslS2S3Normals(p, xa));
+    PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  }
   PetscCall(PetscMalloc1(p->nn, &slip));
   PetscCall(NodalValues(p, 1, slip));
   for (PetscInt l = 0; l < p->nn; l++) s->cslip[l] += slip[l];
@@ -542,7 +542,7 @@ PetscErrorCode TslProblemContactS2SSetUp(TslProblem p)
     TslContactSurface    *cs   = &p->csurf[k];
     for (PetscInt i = 0; i < pair->nsface; i++) {
       S2SFace  *fc = &s->face[n++];
-      PetscReal X[2 * TSL_CONTACT_MAX_FACE_NODES], U[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES], w[TSL_CONTACT_MAX_FACE_NODES];
+      PetscReal X[3 * TSL_CONTACT3_MAX_FACE_NODES], U[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT3_MAX_FACE_NODES], w[TSL_CONTACT3_MAX_FACE_NODES];
       fc->pair     = k;
       fc->kind     = (TslContactFaceKind)pair->sface_kind;
       fc->nsn      = pair->snper;
@@ -551,13 +551,20 @@ PetscErrorCode TslProblemContactS2SSetUp(TslProblem p)
         fc->lnode[b] = TslModelNodeIndex(m, pair->sface_node[fc->nsn * i + b]);
         PetscCheck(fc->lnode[b] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "secondary face node %" PetscInt_FMT " is not local", pair->sface_node[fc->nsn * i + b]);
       }
-      FaceData(p, fc, NULL, X, U);
-      PetscCall(TslContactFaceIntegrate(fc->kind, X, w, NULL));
+      if (p->dim == 3) {
+        /* int N_b dA with the points' interpolation (tri6: its linear sub-triangles) */
+        PetscCall(TslS2S3FaceData(p, fc, NULL, X, U));
+        PetscCall(TslContactFace3Integrate(fc->kind, X, w, NULL));
+      } else {
+        FaceData(p, fc, NULL, X, U);
+        PetscCall(TslContactFaceIntegrate(fc->kind, X, w, NULL));
+      }
       for (PetscInt b = 0; b < fc->nsn; b++) s->trib[fc->lnode[b]] += w[b];
     }
     for (PetscInt a = 0; pair->nsface && a < cs->nper * cs->nmain; a++)
-      PetscCheck(cs->main_lnode[a] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "main-surface node %" PetscInt_FMT " is not local", pair->main_node[a]);
+      PetscCheck(cs->main_lnode[a] >= 0 || pair->main_node[a] < 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "main-surface node %" PetscInt_FMT " is not local", pair->main_node[a]);
   }
+  if (p->dim == 3) PetscCall(TslS2S3Normals(p, NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

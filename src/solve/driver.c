@@ -100,6 +100,7 @@ static PetscErrorCode SetUpSolver(Driver *d)
   d->max_contact_its    = 8;
   d->sync_interval      = 1.0;
   d->direct_max         = -1; /* by dimension, below */
+  d->fallback_max       = -1;
   d->debug_diverge_step = 0;
   PetscOptionsBegin(d->comm, NULL, "thermoslide increment control", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_rtol", "per-field Newton residual reduction", 0, PETSC_TRUE, 1, PETSC_TRUE, &d->rtol));
@@ -117,6 +118,10 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_direct_max_dofs",
                           "models up to this many unknowns get a direct solver by default (default 20000 in 2D, 2000 in 3D)", 0, PETSC_MAX_INT,
                           &d->direct_max));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_fallback_max_dofs",
+                          "an increment whose iterative linear solve fails is retried with MUMPS LU (for the rest of the job) up to this many unknowns "
+                          "(default 400000 in 2D, 150000 in 3D; 0: never)",
+                          0, PETSC_MAX_INT, &d->fallback_max));
   PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", 0,
                           PETSC_MAX_INT, &d->debug_diverge_step));
   PetscOptionsEnd();
@@ -132,6 +137,8 @@ static PetscErrorCode SetUpSolver(Driver *d)
     PetscCall(TslProblemGetModel(d->prob, &m));
     PetscCall(VecGetSize(X, &N));
     if (d->direct_max < 0) d->direct_max = m->dim == 3 ? 2000 : 20000;
+    if (d->fallback_max < 0) d->fallback_max = m->dim == 3 ? 150000 : 400000;
+    if (N <= d->direct_max) d->fell_back = PETSC_TRUE; /* direct from the start: nothing to fall back to */
     if (N <= d->direct_max) {
       PetscCall(SetDefaultOption(d, "-pc_type", "lu"));
       PetscCall(SetDefaultOption(d, "-pc_factor_mat_solver_type", "mumps"));
@@ -488,6 +495,30 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     if (accept && !step->steady && step->deltmx > 0) {
       PetscCall(TslProblemMaxTemperatureChange(d->prob, &dtheta));
       if (dtheta > step->deltmx * 1.0001 && !step->direct) accept = PETSC_FALSE;
+    }
+    if (!accept && reason == SNES_DIVERGED_LINEAR_SOLVE && !d->fell_back) {
+      /* the preconditioner, not the increment, failed (quadratic tetrahedra pressed into contact defeat the
+       * AMG split): the same increment again with a direct solve, which MUMPS affords up to
+       * -tsl_fallback_max_dofs, and for the rest of the job */
+      PetscInt N;
+      PetscCall(VecGetSize(X, &N));
+      d->fell_back = PETSC_TRUE;
+      if (N <= d->fallback_max) {
+        KSP ksp;
+        PC  pc;
+        PetscCall(PetscPrintf(d->comm,
+                              "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": the iterative linear solve failed (%s); the increment is repeated with the "
+                              "direct solver MUMPS, used for the rest of the job (%" PetscInt_FMT " unknowns; -tsl_fallback_max_dofs %" PetscInt_FMT ")\n",
+                              s + 1, inc + 1, SNESConvergedReasons[reason], N, d->fallback_max));
+        PetscCall(VecCopy(Xold, X));
+        PetscCall(TslProblemContactRollback(d->prob));
+        d->trial = PETSC_FALSE;
+        PetscCall(SNESGetKSP(d->snes, &ksp));
+        PetscCall(KSPGetPC(ksp, &pc));
+        PetscCall(PCSetType(pc, PCLU));
+        PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
+        continue;
+      }
     }
     if (!accept) {
       PetscReal f = reason > 0 ? PetscMax(d->cutback, 0.85 * step->deltmx / dtheta) : d->cutback;

@@ -37,6 +37,8 @@ typedef struct {
   PetscInt   max_contact_its;
   PetscReal  sync_interval; /* -tsl_output_sync: seconds between syncs of the result files */
   PetscInt   direct_max;    /* -tsl_direct_max_dofs: direct solver by default up to this size */
+  PetscInt   fallback_max;  /* -tsl_fallback_max_dofs: a failed iterative solve switches to MUMPS up to this size */
+  PetscBool  fell_back;     /* the switch happened (once per job) */
   PetscReal  done_time, done_step_time, done_dt;
   PetscBool  trial;     /* X holds an unconverged trial state (Xold the last converged one) */
   PetscBool  in_output; /* inside a frame: a failure there leaves the output unusable */

@@ -1,0 +1,47 @@
+/* Surface-to-surface contact in the assembly: the data that src/physics/contact_s2s.c (2D, and what both
+ * dimensions share: assembly, commit, rollback, outputs) and src/physics/contact_s2s3.c (3D: clipping,
+ * history carried across a new cut) both see. */
+#pragma once
+#include "problem_impl.h"
+#include <thermoslide/contact_s2s.h>
+
+#define S2S_DEPART_TOL 1e-6 /* after convergence, a point this far (fraction) beyond its face re-pairs */
+
+typedef struct {
+  PetscInt           pair, nsn;
+  TslContactFaceKind kind; /* 2D: the face family; 3D: its TslContactFace3Find family */
+  PetscInt           lnode[TSL_CONTACT3_MAX_FACE_NODES];
+  PetscBool          assemble;
+  PetscInt           first, npt, first_c, npt_c; /* its points, current and committed */
+} S2SFace;
+
+typedef struct {
+  PetscInt         seg;
+  PetscReal        zeta, length;                 /* 2D: parameter on the secondary face; weight (length, 3D area) */
+  PetscReal        N[TSL_CONTACT3_MAX_FACE_NODES]; /* 3D: the secondary face's interpolation at the point */
+  TslContactState  hist;
+  TslContactOutput out;
+} S2SPoint;
+
+struct _n_TslContactS2S {
+  PetscInt   nface;
+  S2SFace   *face;
+  PetscInt   npt, cap, npt_c, cap_c;
+  S2SPoint  *pt, *pt_c;
+  PetscReal *trib;            /* [nn] int N_b ds (3D: dA) over the held faces of each node (reference) */
+  PetscReal *cslip, *cslip_c; /* [nn] accumulated slip */
+};
+
+/* Shared by both dimensions (contact_s2s.c). */
+PetscErrorCode TslS2SPush(TslContactS2S s, const S2SPoint *pt);
+/* Whether the points new[0..nnew) are the old ones (same main faces, same places: *same), and whether the
+ * sequence of main faces changed (a new matrix pattern: *changed). */
+void TslS2SCompareCut(const S2SPoint *old, PetscInt nold, const S2SPoint *pnew, PetscInt nnew, PetscBool *same, PetscBool *changed);
+
+/* 3D (contact_s2s3.c). */
+PetscErrorCode TslS2S3FaceData(TslProblem p, const S2SFace *fc, const PetscScalar *xa, PetscReal X[], PetscReal U[]);
+PetscErrorCode TslS2S3PointInput(TslProblem p, const S2SFace *fc, const S2SPoint *pt, const PetscScalar *xa, TslContactInput3 *in, PetscInt nodes[],
+                                 PetscInt *n);
+PetscErrorCode TslS2S3SearchPair(TslProblem p, PetscInt k, S2SPoint *old, PetscInt nold, const PetscScalar *xa, PetscInt *changed);
+PetscBool      TslS2S3Departed(TslProblem p, const S2SPoint *pt, PetscInt pair);
+PetscErrorCode TslS2S3Normals(TslProblem p, const PetscScalar *xa);
