@@ -85,6 +85,7 @@ typedef struct {
   PetscInt   n;
   PetscReal *t, *a;      /* tabular (time, value) pairs, t ascending */
   PetscBool  total_time; /* TIME=TOTAL TIME (default STEP TIME) */
+  PetscBool  smooth;     /* DEFINITION=SMOOTH STEP: a + (b - a) xi^3 (10 - 15 xi + 6 xi^2) between points */
   TslLoc     loc;
 } TslAmplitude;
 
@@ -369,7 +370,8 @@ PetscErrorCode TslModelIndex(TslModel *model); /* builds the id lookups (call af
 PetscInt       TslModelNodeIndex(const TslModel *model, PetscInt id);
 PetscInt       TslModelElementIndex(const TslModel *model, PetscInt id);
 
-/* Amplitude value at time t (linear interpolation, constant beyond the ends). */
+/* Amplitude value at time t (linear interpolation, or the smooth step between points with SMOOTH STEP;
+ * constant beyond the ends). */
 PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t);
 
 /* Serialisation used to broadcast / scatter models. TslModelPack writes the whole model into a

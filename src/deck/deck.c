@@ -1058,11 +1058,13 @@ static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw)
   def  = ParamUpper(d, "DEFINITION", b2, sizeof(b2));
   USER_CHECK(!time || !strcmp(time, "STEP TIME") || !strcmp(time, "TOTAL TIME"),
              LOC_FMT "*AMPLITUDE, TIME=%s is not supported (STEP TIME or TOTAL TIME)", KLOC(d), time);
-  USER_CHECK(!def || !strcmp(def, "TABULAR"), LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (only TABULAR)", KLOC(d), def);
+  USER_CHECK(!def || !strcmp(def, "TABULAR") || !strcmp(def, "SMOOTH STEP"),
+             LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (TABULAR or SMOOTH STEP)", KLOC(d), def);
   PetscCall(TslDeckGrow(&m->amplitudes, sizeof(TslAmplitude), m->namplitude));
   a = &m->amplitudes[m->namplitude++];
   PetscCall(CopyName(d, d->kwloc, a->name, name));
   a->total_time = (time && !strcmp(time, "TOTAL TIME")) ? PETSC_TRUE : PETSC_FALSE;
+  a->smooth     = (def && !strcmp(def, "SMOOTH STEP")) ? PETSC_TRUE : PETSC_FALSE;
   a->loc        = d->kwloc;
   for (;;) {
     PetscCall(DataLine(d, 0, &got));
