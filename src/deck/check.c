@@ -267,6 +267,8 @@ static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
           s->name);
     CHECK(!ms->elset[0] || TslModelFindElementSet(m, ms->elset) >= 0, ms->loc, "undefined element set %s", ms->elset);
   }
+  if (s->bv_given)
+    CHECK(s->explicit_dynamics, s->bv_loc, "*BULK VISCOSITY belongs to an explicit step (*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT); step %s is not one", s->name);
   if (!s->explicit_dynamics) PetscFunctionReturn(PETSC_SUCCESS);
   if (m->nequation) CHECK(PETSC_FALSE, m->equations[0].loc, "*EQUATION is not supported in explicit steps (step %s at %s)", s->name, where);
   /* surface-to-surface points have no penalty estimate in the stable increment yet */

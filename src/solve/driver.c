@@ -25,6 +25,7 @@ const char *const TslHistoryColumns[NHISTORY] = {"step",
                                              "ALLFD",
                                              "ALLCW",
                                              "ALLMW",
+                                             "ALLVD",
                                              "ETOTAL"};
 
 

@@ -28,8 +28,8 @@ typedef struct {
   PetscInt        ndof, nown;
   Vec             X, Xold;         /* the problem's solution and the state at the start of the increment */
   Vec             V, M, Mask;      /* half-step velocity, lumped mass / capacity, prescribed dofs */
-  Vec             Fi, Fe, Fc;      /* force vectors of the current state (Fc NULL without contact) */
-  PetscReal      *dt_mech, *dt_heat, *scale; /* [nelem] element stable increments, mass scale factors */
+  Vec             Fi, Fe, Fc, Fv;  /* force vectors of the current state (Fc NULL without contact, Fv without bulk viscosity) */
+  PetscReal      *dt_mech, *dt_heat, *scale, *eta; /* [nelem] element stable increments, mass scale factors, b1 L_e / c_d */
   PetscReal       dt_stable, dt;   /* stable increment (with safety) and the increment used */
   PetscReal       safety;          /* -tsl_explicit_safety */
   PetscInt        progress;        /* -tsl_explicit_progress: increments between progress lines */
@@ -44,7 +44,7 @@ typedef struct {
 
 /* the energies since the start of the job (Driver.energy) */
 typedef struct {
-  PetscReal ke, ie, wk, fd, cw, mw;
+  PetscReal ke, ie, wk, fd, cw, mw, vd;
 } Energies;
 PetscErrorCode TslExplicitSetFromOptions(Driver *d)
 {
@@ -117,6 +117,13 @@ static PetscErrorCode ContactIncrement(Explicit *x, const PetscScalar *m, PetscR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The damping fraction xi of the highest element mode (b1 for the linear bulk viscosity; Abaqus
+ * documentation, "Bulk viscosity") shortens its stable increment to (2 / omega)(sqrt(1 + xi^2) - xi). */
+static PetscReal BulkViscosityFactor(PetscReal xi)
+{
+  return PetscSqrtReal(1 + xi * xi) - xi;
+}
+
 static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
 {
   struct {
@@ -128,6 +135,9 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
   PetscFunctionBeginUser;
   for (PetscInt e = 0; e < x->m->nelem; e++) {
     PetscReal dm = x->dt_mech[e] * PetscSqrtReal(x->scale[e]);
+    /* bulk viscosity: L_e / c_d is the element's own (mass-scaled) increment, so rho c_d L_e = (lambda + 2 mu) dt_e */
+    x->eta[e] = x->step->bv_linear * (dm < PETSC_MAX_REAL ? dm : 0);
+    dm *= BulkViscosityFactor(x->step->bv_linear);
     if (dm < loc[0].v) loc[0].v = dm, loc[0].id = (int)x->m->elem_id[e];
     if (x->dt_heat[e] < loc[1].v) loc[1].v = x->dt_heat[e], loc[1].id = (int)x->m->elem_id[e];
   }
@@ -150,8 +160,9 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
   dt_mech      = g[2].id >= 0 ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(g[0].v) + 1.0 / PetscSqr(g[2].v)) : g[0].v;
   x->dt_stable = x->safety * x->step->dt_scale * PetscMin(dt_mech, g[1].v);
   if (print) {
-    PetscCall(PetscPrintf(x->comm, "  stable increment %.4e (safety %g x scale factor %g): mechanical %.4e at element %d, thermal %.4e at element %d; %s controls\n",
-                          (double)x->dt_stable, (double)x->safety, (double)x->step->dt_scale, g[0].v, g[0].id, g[1].v, g[1].id,
+    PetscCall(PetscPrintf(x->comm, "  stable increment %.4e (safety %g x scale factor %g): mechanical %.4e at element %d%s, thermal %.4e at element %d; %s controls\n",
+                          (double)x->dt_stable, (double)x->safety, (double)x->step->dt_scale, g[0].v, g[0].id,
+                          x->step->bv_linear > 0 ? " (with the linear bulk viscosity's damping)" : "", g[1].v, g[1].id,
                           dt_mech <= g[1].v ? "the mechanical limit" : "the thermal (diffusion) limit"));
     if (g[2].id >= 0)
       PetscCall(PetscPrintf(x->comm, "  contact penalty (eps_n A on the lumped masses) %.4e at secondary node %d; with the elements' %.4e: mechanical %.4e\n", g[2].v,
@@ -233,6 +244,8 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
   PetscFunctionBeginUser;
   PetscCall(TslPhaseBegin(TSL_PHASE_ASSEMBLY));
   PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, &x->rates));
+  /* bulk viscosity of the velocity v_{n-1/2} (the latest one: central differences have no v_n) */
+  if (x->Fv) PetscCall(TslProblemExplicitBulkViscosity(x->p, x->V, x->eta, x->Fv, &x->rates.viscous));
   x->dt_forces = dt;
   if (x->m->npair) {
     PetscCall(TslProblemContactExplicitIncrement(x->p, (PetscBool)(inc % x->search_every == 0), &nrepair));
@@ -246,10 +259,10 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
 static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal h_prev, PetscReal t_new, PetscReal total_new)
 {
   PetscScalar       *u, *v;
-  const PetscScalar *uo, *m, *mask, *fi, *fe, *fc = NULL;
+  const PetscScalar *uo, *m, *mask, *fi, *fe, *fc = NULL, *fv = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
   const PetscReal    h_avg = h_prev > 0 ? 0.5 * (h + h_prev) : 0.5 * h; /* from rest at the start: v_{1/2} = dt/2 a_0 */
-  PetscReal          loc[7] = {0, 0, 0, 0, 0, 0, 0}, g[7];
+  PetscReal          loc[8] = {0, 0, 0, 0, 0, 0, 0, 0}, g[8];
 
   PetscFunctionBeginUser;
   PetscCall(VecCopy(x->X, x->Xold));
@@ -260,8 +273,9 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArrayRead(x->Fi, &fi));
   PetscCall(VecGetArrayRead(x->Fe, &fe));
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
+  if (x->Fv) PetscCall(VecGetArrayRead(x->Fv, &fv));
   for (PetscInt i = 0; i < n; i++) { /* free dofs: the update and the forces' work */
-    PetscReal f = fe[i] - fi[i] - (fc ? fc[i] : 0), vo = v[i], w;
+    PetscReal f = fe[i] - fi[i] - (fc ? fc[i] : 0) - (fv ? fv[i] : 0), vo = v[i], w;
     if (mask[i] != 0) continue;
     if (i % x->ndof == th) {
       u[i] += h * f / m[i];
@@ -273,6 +287,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     loc[0] += fi[i] * w;
     loc[1] += fe[i] * w;
     loc[2] += (fc ? fc[i] : 0) * w;
+    loc[7] += (fv ? fv[i] : 0) * w;
   }
   PetscCall(VecRestoreArray(x->X, &u));
   /* prescribed values at t_{n+1} */
@@ -281,7 +296,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArray(x->X, &u));
   PetscCall(VecGetArrayRead(x->Xold, &uo));
   for (PetscInt i = 0; i < n; i++) { /* prescribed dofs: velocity, reaction and work; stored heat */
-    PetscReal f = fe[i] - fi[i] - (fc ? fc[i] : 0), vo = v[i], w, s;
+    PetscReal f = fe[i] - fi[i] - (fc ? fc[i] : 0) - (fv ? fv[i] : 0), vo = v[i], w, s;
     if (i % x->ndof == th) {
       PetscReal rate = m[i] * (u[i] - uo[i]) / h; /* heat stored at the node per unit time */
       loc[6] += rate;
@@ -295,10 +310,12 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     loc[0] += fi[i] * w;
     loc[1] += (fe[i] + s) * w;
     loc[2] += (fc ? fc[i] : 0) * w;
+    loc[7] += (fv ? fv[i] : 0) * w;
   }
   PetscCall(VecRestoreArrayRead(x->Xold, &uo));
   PetscCall(VecRestoreArray(x->X, &u));
   if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
+  if (x->Fv) PetscCall(VecRestoreArrayRead(x->Fv, &fv));
   PetscCall(VecRestoreArrayRead(x->Fe, &fe));
   PetscCall(VecRestoreArrayRead(x->Fi, &fi));
   PetscCall(VecRestoreArrayRead(x->Mask, &mask));
@@ -306,8 +323,9 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecRestoreArray(x->V, &v));
   PetscCall(VecGhostUpdateBegin(x->X, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostUpdateEnd(x->X, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_SUM, x->comm));
+  PetscCall(MPIU_Allreduce(loc, g, 8, MPIU_REAL, MPIU_SUM, x->comm));
   en->ie += g[0];
+  en->vd += g[7];
   en->wk += g[1];
   en->cw += g[2];
   /* the forces of state n measured the slip over the increment that ended there (dt_forces): its
@@ -366,7 +384,8 @@ static PetscErrorCode HistoryRow(Explicit *x, Energies *en, PetscInt s, PetscInt
   row[HIST_ENERGY + 3] = en->fd;
   row[HIST_ENERGY + 4] = en->cw;
   row[HIST_ENERGY + 5] = en->mw;
-  row[HIST_ENERGY + 6] = en->ke + en->ie + en->cw - en->wk - en->mw;
+  row[HIST_ENERGY + 6] = en->vd;
+  row[HIST_ENERGY + 7] = en->ke + en->ie + en->vd + en->cw - en->wk - en->mw;
   PetscCall(TslHistoryAppend(d->hist, row));
   d->done_step = s + 1, d->done_inc = inc, d->done_time = total, d->done_step_time = t, d->done_dt = h;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -380,7 +399,8 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fi));
   PetscCall(VecDestroy(&x->Fe));
   PetscCall(VecDestroy(&x->Fc));
-  PetscCall(PetscFree3(x->dt_mech, x->dt_heat, x->scale));
+  PetscCall(VecDestroy(&x->Fv));
+  PetscCall(PetscFree4(x->dt_mech, x->dt_heat, x->scale, x->eta));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -426,7 +446,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscReal se, hg;
     PetscCall(TslProblemEnergies(x.p, &se, &hg));
     en->ke = 0, en->ie = se + hg;
-    en->wk = en->ie + en->cw - en->mw;
+    en->wk = en->ie + en->vd + en->cw - en->mw;
   }
   PetscCall(VecDuplicate(x.X, &x.M));
   /* the mass before this step's scaling: the last step's when the velocity carries over (only a change of
@@ -437,7 +457,8 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(VecDuplicate(x.X, &x.Fi));
   PetscCall(VecDuplicate(x.X, &x.Fe));
   if (x.m->npair) PetscCall(VecDuplicate(x.X, &x.Fc));
-  PetscCall(PetscMalloc3(x.m->nelem, &x.dt_mech, x.m->nelem, &x.dt_heat, x.m->nelem, &x.scale));
+  if (x.step->bv_linear > 0) PetscCall(VecDuplicate(x.X, &x.Fv));
+  PetscCall(PetscMalloc4(x.m->nelem, &x.dt_mech, x.m->nelem, &x.dt_heat, x.m->nelem, &x.scale, x.m->nelem, &x.eta));
   for (PetscInt i = 0; i < x.m->nmaterial; i++)
     if (TslMaterialIsTemperatureDependent(&x.m->materials[i])) x.capacity_varies = PETSC_TRUE;
   PetscCall(TslProblemConstrainedMask(x.p, x.Mask));
@@ -503,15 +524,15 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
       now = MPI_Wtime();
       PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": step time %.6g (%.1f %%)  dt %.4g  ALLKE %.4g  ETOTAL %.3g  wall %.1f s, about %.1f s left\n",
                             s + 1, inc, (double)t, (double)(100 * t / x.step->period), (double)h, (double)en->ke,
-                            (double)(en->ke + en->ie + en->cw - en->wk - en->mw), now - wall0, (now - wall0) * (x.step->period - t) / t));
+                            (double)(en->ke + en->ie + en->vd + en->cw - en->wk - en->mw), now - wall0, (now - wall0) * (x.step->period - t) / t));
     }
   }
   now = MPI_Wtime();
   PetscCall(KineticEnergy(&x, &en->ke));
   PetscCall(PetscPrintf(d->comm,
-                        "  step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %.2f s (%.3g s per increment); ALLKE %.6g ALLIE %.6g ALLWK %.6g ALLFD %.6g ALLCW %.6g ALLMW %.6g ETOTAL %.3g\n",
+                        "  step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %.2f s (%.3g s per increment); ALLKE %.6g ALLIE %.6g ALLWK %.6g ALLFD %.6g ALLCW %.6g ALLMW %.6g ALLVD %.6g ETOTAL %.3g\n",
                         s + 1, inc, now - wall0, inc ? (now - wall0) / inc : 0.0, (double)en->ke, (double)en->ie, (double)en->wk, (double)en->fd, (double)en->cw,
-                        (double)en->mw, (double)(en->ke + en->ie + en->cw - en->wk - en->mw)));
+                        (double)en->mw, (double)en->vd, (double)(en->ke + en->ie + en->vd + en->cw - en->wk - en->mw)));
   if (x.m->npair)
     PetscCall(PetscPrintf(d->comm, "  contact: pairing searched every %" PetscInt_FMT " increments; %" PetscInt_FMT " re-pairings of nodes that left their face\n",
                           x.search_every, x.nrepair));
