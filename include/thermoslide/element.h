@@ -162,6 +162,11 @@ static inline PetscInt TslElementTypeNodes(const TslElementType *t)
   return t->geom->nnode + t->nextra;
 }
 
+/* Linear bulk viscosity of explicit steps: nodal forces of the pressure eta (lambda + 2 mu) eps_vol_dot at
+ * the element centre (eps_vol_dot from the nodal velocities v[], laid out as in->u) added to R; *power is
+ * the rate it dissipates (>= 0). eta = b1 L_e / c_d (kernels.c). */
+PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta, PetscReal R[], PetscReal *power);
+
 /* Lumped nodal quantities of the element at its current temperatures:
  *   Q[a] heat content  rho V_a e(theta_a)  (material.h: e = int c dtheta)
  *   C[a] dQ/dtheta_a = rho V_a c(theta_a)

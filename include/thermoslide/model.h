@@ -85,6 +85,7 @@ typedef struct {
   PetscInt   n;
   PetscReal *t, *a;      /* tabular (time, value) pairs, t ascending */
   PetscBool  total_time; /* TIME=TOTAL TIME (default STEP TIME) */
+  PetscBool  smooth;     /* DEFINITION=SMOOTH STEP: a + (b - a) xi^3 (10 - 15 xi + 6 xi^2) between points */
   TslLoc     loc;
 } TslAmplitude;
 
@@ -218,6 +219,7 @@ typedef struct {
   char           secondary[TSL_NAME_LEN], main[TSL_NAME_LEN];
   TslContactType type;          /* TYPE= (default NODE TO SURFACE) */
   PetscBool      small_sliding; /* SMALL SLIDING */
+  PetscBool      kinematic;     /* MECHANICAL CONSTRAINT=KINEMATIC (explicit steps; PENALTY, the default here, otherwise) */
   PetscReal      smooth;        /* SMOOTH= (default 0.2) */
   PetscBool      adjust_given;  /* ADJUST= given: a distance (adjust) or a node set (adjust_set) */
   PetscReal      adjust;
@@ -292,6 +294,9 @@ typedef struct {
   PetscBool         explicit_dynamics;         /* *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT (src/solve/explicit.c) */
   PetscReal         dt_user;                   /* explicit, DIRECT USER CONTROL: the fixed increment (0: the stable increment) */
   PetscReal         dt_scale;                  /* explicit, SCALE FACTOR= on the stable increment (default 1) */
+  PetscReal         bv_linear, bv_quadratic;   /* explicit, *BULK VISCOSITY b1, b2 (defaults 0.06, 1.2; b2 is read, not applied) */
+  PetscBool         bv_given;                  /* *BULK VISCOSITY seen in the step */
+  TslLoc            bv_loc;
   PetscInt          nmass;                     /* explicit: mass scaling definitions of the step */
   TslMassScaling    mass[TSL_MAX_MASS_SCALING];
   PetscInt          out_number_interval;       /* explicit, *OUTPUT, FIELD, NUMBER INTERVAL= (0: not given) */
@@ -385,7 +390,8 @@ PetscErrorCode TslModelIndex(TslModel *model); /* builds the id lookups (call af
 PetscInt       TslModelNodeIndex(const TslModel *model, PetscInt id);
 PetscInt       TslModelElementIndex(const TslModel *model, PetscInt id);
 
-/* Amplitude value at time t (linear interpolation, constant beyond the ends). */
+/* Amplitude value at time t (linear interpolation, or the smooth step between points with SMOOTH STEP;
+ * constant beyond the ends). */
 PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t);
 
 /* Serialisation used to broadcast / scatter models. TslModelPack writes the whole model into a

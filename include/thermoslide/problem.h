@@ -95,6 +95,12 @@ PetscErrorCode TslProblemContactSearch(TslProblem prob, PetscBool *repattern);
 PetscErrorCode TslProblemContactUpdate(TslProblem prob, PetscBool *again, PetscBool *repattern, PetscBool *augmented);
 PetscErrorCode TslProblemContactCommit(TslProblem prob);
 PetscErrorCode TslProblemContactRollback(TslProblem prob);
+/* Explicit steps: commit the contact state of the forces just evaluated, then re-pair when asked or when a
+ * node left its face (*nrepair: how many left); and the normal penalty eps_n A of owned secondary node i
+ * (i < TslProblemContactNodeCount) with its local node and its main face's local nodes (*nmain of them). */
+PetscErrorCode TslProblemContactExplicitIncrement(TslProblem prob, PetscBool search, PetscInt *nrepair);
+PetscErrorCode TslProblemContactNodePenalty(TslProblem prob, PetscInt i, PetscReal *k, PetscInt *lnode, PetscInt main[], PetscInt *nmain);
+PetscInt       TslProblemContactNodeCount(TslProblem prob);
 
 /* Largest temperature change over the increment (all ranks). */
 PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta);
@@ -114,6 +120,7 @@ typedef struct {
   PetscReal interface_heat; /* heat crossing contact interfaces (main -> secondary) */
   PetscReal dissipation;    /* frictional dissipation */
   PetscReal friction_heat;  /* part of it converted to heat */
+  PetscReal viscous;        /* rate dissipated by the bulk viscosity (explicit.c; not filled by TslProblemExplicitForces) */
 } TslExplicitRates;
 
 /* Unconstrained nodal vectors at the current solution and time, ghost contributions summed (collective):
@@ -122,6 +129,9 @@ typedef struct {
  *   Fc  contact forces and contact heat in residual form (may be NULL when the model has no pairs).
  * The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets M a = Fe - Fi - Fc. */
 PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, TslExplicitRates *rates);
+/* Linear bulk viscosity forces (TslElementBulkViscosity with eta[e] per local element; 0 skips it) of the
+ * velocities V into Fv (ghosted, zeroed here); *power: the rate they dissipate, summed over the ranks. */
+PetscErrorCode TslProblemExplicitBulkViscosity(TslProblem prob, Vec V, const PetscReal eta[], Vec Fv, PetscReal *power);
 /* Lumped nodal mass in the displacement slots (element e's mass times scale[e]; scale NULL: 1) and lumped
  * capacity dQ/dtheta in the temperature slot, at the current temperatures (collective). An element with a
  * non-positive lumped mass at a node is a user error naming it. */

@@ -1058,11 +1058,13 @@ static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw)
   def  = ParamUpper(d, "DEFINITION", b2, sizeof(b2));
   USER_CHECK(!time || !strcmp(time, "STEP TIME") || !strcmp(time, "TOTAL TIME"),
              LOC_FMT "*AMPLITUDE, TIME=%s is not supported (STEP TIME or TOTAL TIME)", KLOC(d), time);
-  USER_CHECK(!def || !strcmp(def, "TABULAR"), LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (only TABULAR)", KLOC(d), def);
+  USER_CHECK(!def || !strcmp(def, "TABULAR") || !strcmp(def, "SMOOTH STEP"),
+             LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (TABULAR or SMOOTH STEP)", KLOC(d), def);
   PetscCall(TslDeckGrow(&m->amplitudes, sizeof(TslAmplitude), m->namplitude));
   a = &m->amplitudes[m->namplitude++];
   PetscCall(CopyName(d, d->kwloc, a->name, name));
   a->total_time = (time && !strcmp(time, "TOTAL TIME")) ? PETSC_TRUE : PETSC_FALSE;
+  a->smooth     = (def && !strcmp(def, "SMOOTH STEP")) ? PETSC_TRUE : PETSC_FALSE;
   a->loc        = d->kwloc;
   for (;;) {
     PetscCall(DataLine(d, 0, &got));
@@ -1394,6 +1396,14 @@ static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw)
   proto.type = (type && !strcmp(type, "SURFACE TO SURFACE")) ? TSL_CONTACT_SURFACE_TO_SURFACE : TSL_CONTACT_NODE_TO_SURFACE;
   USER_CHECK(!Param(d, "TIED"), LOC_FMT "*CONTACT PAIR, TIED is not supported yet", KLOC(d));
   proto.small_sliding = Param(d, "SMALL SLIDING") ? PETSC_TRUE : PETSC_FALSE;
+  {
+    /* explicit steps' enforcement (docs/explicit.md): PENALTY unless KINEMATIC is asked for */
+    char        mbuf[32];
+    const char *mc = ParamUpper(d, "MECHANICAL CONSTRAINT", mbuf, sizeof(mbuf));
+    USER_CHECK(!mc || !strcmp(mc, "PENALTY") || !strcmp(mc, "KINEMATIC"),
+               LOC_FMT "*CONTACT PAIR, MECHANICAL CONSTRAINT=%s is not supported (PENALTY or KINEMATIC)", KLOC(d), mc);
+    proto.kinematic = (PetscBool)(mc && !strcmp(mc, "KINEMATIC"));
+  }
   proto.smooth        = 0.2;
   PetscCall(ParamReal(d, "SMOOTH", &proto.smooth, NULL));
   /* the contact kinematics smooth a fraction s < 1/2 of each segment at either end (s = 1/2 would leave no straight part) */
@@ -1519,6 +1529,7 @@ static PetscErrorCode KwDynamic(Deck *d, const DeckKeyword *kw)
   PetscCall(ParamReal(d, "SCALE FACTOR", &s->dt_scale, &set));
   USER_CHECK(!set || (s->dt_scale > 0 && s->dt_scale <= 1), LOC_FMT "SCALE FACTOR must lie in (0, 1] (got %g)", KLOC(d), (double)s->dt_scale);
   if (!s->amp_given) s->amp_default = TSL_AMP_STEP;
+  if (!s->bv_given) s->bv_linear = 0.06, s->bv_quadratic = 1.2; /* Abaqus/Explicit's defaults */
   PetscCall(DataLine(d, 0, &got));
   USER_CHECK(got, LOC_FMT "*DYNAMIC TEMPERATURE-DISPLACEMENT needs a data line: [time increment], time period", KLOC(d));
   USER_CHECK(d->nfield <= 2, LOC_FMT "*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT data line: [time increment], time period", DLOC(d));
@@ -1561,6 +1572,29 @@ static PetscErrorCode KwMassScaling(Deck *d, const DeckKeyword *kw)
   USER_CHECK(ms->frequency > 0, LOC_FMT "FREQUENCY must be positive", KLOC(d));
   USER_CHECK(!ms->variable || has_dt, LOC_FMT "*VARIABLE MASS SCALING needs DT= (the target element stable increment)", KLOC(d));
   USER_CHECK(ms->variable || has_dt || has_f, LOC_FMT "*FIXED MASS SCALING needs FACTOR= or DT=", KLOC(d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *BULK VISCOSITY: b1, b2 (linear and quadratic coefficients; a blank keeps the default 0.06 / 1.2).
+ * History data of an explicit step (checked in TslModelCheck); only the linear term is applied. */
+static PetscErrorCode KwBulkViscosity(Deck *d, const DeckKeyword *kw)
+{
+  TslStep  *s = &d->m->steps[d->step];
+  PetscBool got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!s->bv_given, LOC_FMT "*BULK VISCOSITY is given twice in step %s", KLOC(d), s->name);
+  s->bv_given = PETSC_TRUE, s->bv_loc = d->kwloc;
+  s->bv_linear = 0.06, s->bv_quadratic = 1.2;
+  PetscCall(DataLine(d, 0, &got));
+  if (got) {
+    USER_CHECK(d->nfield <= 2, LOC_FMT "*BULK VISCOSITY takes b1, b2 (got %d values)", DLOC(d), (int)d->nfield);
+    if (d->nfield > 0 && d->field[0][0]) PetscCall(FieldReal(d, 0, "the linear bulk viscosity b1", &s->bv_linear));
+    if (d->nfield > 1 && d->field[1][0]) PetscCall(FieldReal(d, 1, "the quadratic bulk viscosity b2", &s->bv_quadratic));
+    USER_CHECK(s->bv_linear >= 0 && s->bv_linear < 1, LOC_FMT "the linear bulk viscosity b1 must lie in [0, 1) (got %g)", DLOC(d), (double)s->bv_linear);
+    USER_CHECK(s->bv_quadratic >= 0, LOC_FMT "the quadratic bulk viscosity b2 must not be negative (got %g)", DLOC(d), (double)s->bv_quadratic);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1870,12 +1904,13 @@ static const DeckKeyword Keywords[] = {
     {"GAP CONDUCTANCE", AT_MODEL, IN_INTERACTION, "PRESSURE|DEPENDENCIES|USER", KwGapConductance, 0, NULL},
     {"GAP RADIATION", AT_MODEL, IN_INTERACTION, "", KwGapRadiation, 0, NULL},
     {"GAP HEAT GENERATION", AT_MODEL, IN_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
-    {"CONTACT PAIR", AT_MODEL, IN_NONE, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED", KwContactPair, 0, NULL},
+    {"CONTACT PAIR", AT_MODEL, IN_NONE, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED|MECHANICAL CONSTRAINT", KwContactPair, 0, NULL},
     {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
     {"DYNAMIC TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "EXPLICIT|DIRECT USER CONTROL|ELEMENT BY ELEMENT|SCALE FACTOR", KwDynamic, 0, NULL},
     {"FIXED MASS SCALING", AT_STEP, IN_NONE, "FACTOR|DT|ELSET|TYPE", KwMassScaling, 0, NULL},
+    {"BULK VISCOSITY", AT_STEP, IN_NONE, "", KwBulkViscosity, 0, NULL},
     {"VARIABLE MASS SCALING", AT_STEP, IN_NONE, "DT|ELSET|FREQUENCY|TYPE", KwMassScaling, 1, NULL},
     {"BOUNDARY", AT_BOTH, IN_NONE, LOAD_PARAMS "|FIXED", KwLoad, TSL_LOAD_BOUNDARY, LineBoundary},
     {"CLOAD", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_CLOAD, LineConcentrated},

@@ -232,8 +232,13 @@ PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t)
   for (PetscInt i = 0; i + 1 < amp->n; i++) {
     if (t < amp->t[i + 1]) {
       PetscReal dt = amp->t[i + 1] - amp->t[i];
+      PetscReal xi;
       if (dt <= 0) return amp->a[i + 1];
-      return amp->a[i] + (amp->a[i + 1] - amp->a[i]) * (t - amp->t[i]) / dt;
+      xi = (t - amp->t[i]) / dt;
+      /* SMOOTH STEP: zero first and second derivative at every data point (Abaqus's definition), so a
+       * prescribed motion has no velocity or acceleration jumps (explicit steps: no waves from them) */
+      if (amp->smooth) xi = xi * xi * xi * (10 - 15 * xi + 6 * xi * xi);
+      return amp->a[i] + (amp->a[i + 1] - amp->a[i]) * xi;
     }
   }
   return amp->a[amp->n - 1];

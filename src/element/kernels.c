@@ -568,3 +568,37 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res
   PetscCall(Hourglass(in, R, NULL, &res->hourglass_energy));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+/* Linear bulk viscosity (explicit steps, *BULK VISCOSITY): the pressure p = eta M eps_vol_dot at the
+ * element centre, M = lambda + 2 mu the element's P-wave modulus (rho c_d^2) and eps_vol_dot the
+ * volumetric strain rate of the nodal velocities v[] (laid out as in->u; temperature slots ignored).
+ * With eta = b1 L_e / c_d this is Abaqus/Explicit's p = b1 rho c_d L_e eps_vol_dot. Its nodal forces
+ * p int B_vol dV (one point: the centre) are added to R, and *power = p eps_vol_dot V >= 0 is what it
+ * dissipates. */
+PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta, PetscReal R[], PetscReal *power)
+{
+  const TslElementType *t = in->type;
+  const TslGeometry    *g = t->geom;
+  const PetscInt        ndof = t->ndof, nu = ndof - 1, n = TslElementTypeNodes(t);
+  PetscReal             xi[3] = {0, 0, 0}, B[6][TSL_MAX_ELEM_NODES * 3], D[6][6], rate = 0, p;
+  TslElementPoint       pt;
+  TslMaterialPoint      mp;
+
+  PetscFunctionBeginUser;
+  *power = 0;
+  for (PetscInt a = 0; a < g->ncorner; a++)
+    for (PetscInt d = 0; d < g->dim; d++) xi[d] += g->node_xi[a][d] / g->ncorner;
+  PetscCheck(TslElementPointEvaluate(t, in->sec, in->x, xi, g->ref_volume, &pt), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
+  TslElementStrainMatrix(t, in->sec, in->x, &pt, B);
+  TslMaterialEval(in->sec->mat, NodalTheta(in, pt.N, in->u), &mp);
+  TslElementElasticity(t, &mp, D, NULL);
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt i = 0; i < nu; i++)
+      for (PetscInt r = 0; r < 3; r++) rate += B[r][nu * a + i] * v[ndof * a + i];
+  p = eta * D[0][0] * rate;
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt i = 0; i < nu; i++)
+      for (PetscInt r = 0; r < 3; r++) R[ndof * a + i] += p * B[r][nu * a + i] * pt.dV;
+  *power = p * rate * pt.dV;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -372,10 +372,25 @@ PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
   PetscCall(MPIU_Allreduce(&changed, &g, 1, MPIU_INT, MPI_SUM, p->comm));
   if (g) {
     PetscCall(PetscInfo(NULL, "contact pairing changed for %" PetscInt_FMT " secondary nodes\n", g));
-    PetscCall(TslProblemPreallocate(p));
+    if (!p->matrix_free) PetscCall(TslProblemPreallocate(p)); /* explicit steps build no matrix */
     *repattern = PETSC_TRUE;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Nodes (this rank) whose projection at their last evaluation left their segment: a node on a segment end
+ * may fall outside [0,1] by round-off, so only a real departure counts. */
+static PetscInt Departed(TslProblem p)
+{
+  PetscInt n = 0;
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    const TslContactNode    *cn = &p->cnode[i];
+    const TslContactSurface *cs = &p->csurf[cn->pair];
+    if (cn->seg < 0) continue;
+    if (cs->dim == 3 ? TslProblemContact3Departed(p, cn, TSL_CONTACT_DEPART_TOL) : TslContactProjectionSide(cn->out.xi_raw, TSL_CONTACT_DEPART_TOL) != 0)
+      n++;
+  }
+  return n;
 }
 
 /* Collective. After a converged solve: nodes whose projection left their segment need re-pairing, and
@@ -397,13 +412,11 @@ PetscErrorCode TslProblemContactUpdate(TslProblem p, PetscBool *again, PetscBool
     PetscCall(TslProblemContactAssemble(p, ASM_RAW, xa, NULL, NULL, NULL));
     PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
   }
+  loc[0] = Departed(p);
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode          *cn = &p->cnode[i];
     const TslContactSurface *cs = &p->csurf[cn->pair];
     if (cn->seg < 0) continue;
-    /* a node on a segment end may fall outside [0,1] by round-off: only a real departure re-pairs */
-    if (cs->dim == 3 ? TslProblemContact3Departed(p, cn, TSL_CONTACT_DEPART_TOL) : TslContactProjectionSide(cn->out.xi_raw, TSL_CONTACT_DEPART_TOL) != 0)
-      loc[0]++;
     if (cs->law.normal == TSL_CONTACT_NORMAL_AUGMENTED) {
       PetscReal c, lambda = cn->hist.lambda; /* applied below only if the increment is solved again */
       PetscCall(TslContactAugmentedUpdate(cs->law.eps_n, cn->out.gap, &lambda, &c));
@@ -469,6 +482,53 @@ PetscErrorCode TslProblemContactCommit(TslProblem p)
   }
   PetscCall(TslProblemContactS2SCommit(p));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective. An explicit increment (src/solve/explicit.c): the contact state of the forces just evaluated
+ * becomes the history of the next increment (friction anchors, slip), then the pairing search runs when
+ * asked (every few increments) or when a node's projection left its face. *nrepair: nodes re-paired. */
+PetscErrorCode TslProblemContactExplicitIncrement(TslProblem p, PetscBool search, PetscInt *nrepair)
+{
+  PetscInt  loc, g;
+  PetscReal change = 0, scale = 0;
+  PetscBool repattern;
+
+  PetscFunctionBeginUser;
+  *nrepair = 0;
+  if (!p->ncsurf) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(TslProblemContactCommit(p));
+  loc = Departed(p);
+  PetscCall(TslProblemContactS2SUpdate(p, &loc, &change, &scale));
+  PetscCall(MPIU_Allreduce(&loc, &g, 1, MPIU_INT, MPI_SUM, p->comm));
+  if (g || search) {
+    PetscCall(TslProblemContactSearch(p, &repattern));
+    *nrepair = g;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The normal penalty stiffness eps_n A of owned secondary node i (node-to-surface pairs; A its contact
+ * area: tributary length times thickness, or times 2 pi r, or the tributary area in 3D), its local node
+ * and the local nodes of its main face (-1 padded, nper of them; none while unpaired). For the explicit
+ * stable increment. */
+PetscErrorCode TslProblemContactNodePenalty(TslProblem p, PetscInt i, PetscReal *k, PetscInt *lnode, PetscInt main[], PetscInt *nmain)
+{
+  const TslContactNode    *cn = &p->cnode[i];
+  const TslContactSurface *cs = &p->csurf[cn->pair];
+  PetscReal                A  = cn->length;
+
+  PetscFunctionBeginUser;
+  if (cs->dim != 3) A *= TslKinematicsRevolves(cs->kin) ? 2 * PETSC_PI * p->m->node_xyz[3 * cn->lnode] : cs->thickness;
+  *k     = cs->law.eps_n * A;
+  *lnode = cn->lnode;
+  *nmain = cn->seg >= 0 ? cs->nper : 0;
+  for (PetscInt a = 0; a < *nmain; a++) main[a] = cs->main_lnode[cs->nper * cn->seg + a];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscInt TslProblemContactNodeCount(TslProblem p)
+{
+  return p->ncnode;
 }
 
 /* A rejected increment: back to the state at its start. Pairing that changed during the attempt left the

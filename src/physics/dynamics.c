@@ -252,3 +252,47 @@ PetscErrorCode TslProblemConstrainedMask(TslProblem p, Vec mask)
   PetscCall(VecRestoreArray(mask, &m));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+typedef struct {
+  const PetscScalar *v;
+  const PetscReal   *eta;
+  PetscScalar       *f;
+  PetscReal          power;
+} ViscCtx;
+
+static PetscErrorCode ViscElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+{
+  ViscCtx  *c = (ViscCtx *)ctx;
+  PetscReal R[TSL_MAX_ELEM_DOF] = {0}, v[TSL_MAX_ELEM_DOF], w;
+
+  PetscFunctionBeginUser;
+  (void)p, (void)stop;
+  if (!(c->eta[e] > 0)) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt r = 0; r < d->nd; r++) v[r] = PetscRealPart(c->v[d->ld[r]]);
+  PetscCall(TslElementBulkViscosity(&d->in, v, c->eta[e], R, &w));
+  for (PetscInt r = 0; r < d->nd; r++) c->f[d->ld[r]] += R[r];
+  c->power += w;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemExplicitBulkViscosity(TslProblem p, Vec V, const PetscReal eta[], Vec Fv, PetscReal *power)
+{
+  Vec                xl, vl, fl;
+  const PetscScalar *xa;
+  ViscCtx            c = {NULL, eta, NULL, 0};
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGhostUpdateBegin(V, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(V, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostGetLocalForm(V, &vl));
+  PetscCall(VecGetArrayRead(vl, &c.v));
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  PetscCall(BeginLocal(Fv, &fl, &c.f));
+  PetscCall(TslProblemElementLoop(p, xa, xa, ViscElement, &c));
+  PetscCall(EndLocal(Fv, &fl, &c.f));
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscCall(VecRestoreArrayRead(vl, &c.v));
+  PetscCall(VecGhostRestoreLocalForm(V, &vl));
+  PetscCall(MPIU_Allreduce(&c.power, power, 1, MPIU_REAL, MPIU_SUM, p->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

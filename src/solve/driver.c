@@ -25,6 +25,7 @@ const char *const TslHistoryColumns[NHISTORY] = {"step",
                                              "ALLFD",
                                              "ALLCW",
                                              "ALLMW",
+                                             "ALLVD",
                                              "ETOTAL"};
 
 
@@ -685,6 +686,7 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
   PetscCall(TslHistoryDestroy(&d.hist));
   PetscCall(SNESDestroy(&d.snes));
   PetscCall(VecDestroy(&d.velocity));
+  PetscCall(VecDestroy(&d.mass));
   PetscCall(VecDestroy(&d.F));
   for (PetscInt i = 0; i < d.ndefault; i++) PetscCall(PetscOptionsClearValue(NULL, d.defaults[i]));
   PetscFunctionReturn(ierr);

@@ -15,6 +15,7 @@
  * when the forces and the update are consistent, and ALLIE is checked against the elements' strain
  * energy (a state function) in the tests. */
 #include "solve_impl.h"
+#include <thermoslide/contact.h>
 
 #define MASS_WARN_FACTOR 100.0 /* a mass scaled by more than this is worth a warning */
 
@@ -27,12 +28,15 @@ typedef struct {
   PetscInt        ndof, nown;
   Vec             X, Xold;         /* the problem's solution and the state at the start of the increment */
   Vec             V, M, Mask;      /* half-step velocity, lumped mass / capacity, prescribed dofs */
-  Vec             Fi, Fe, Fc;      /* force vectors of the current state (Fc NULL without contact) */
-  PetscReal      *dt_mech, *dt_heat, *scale; /* [nelem] element stable increments, mass scale factors */
+  Vec             Fi, Fe, Fc, Fv;  /* force vectors of the current state (Fc NULL without contact, Fv without bulk viscosity) */
+  PetscReal      *dt_mech, *dt_heat, *scale, *eta; /* [nelem] element stable increments, mass scale factors, b1 L_e / c_d */
   PetscReal       dt_stable, dt;   /* stable increment (with safety) and the increment used */
   PetscReal       safety;          /* -tsl_explicit_safety */
   PetscInt        progress;        /* -tsl_explicit_progress: increments between progress lines */
   PetscInt        history_rows;    /* -tsl_explicit_history: history rows per step besides the frames */
+  PetscInt        search_every;    /* -tsl_explicit_contact_search: increments between pairing searches */
+  PetscInt        nrepair;         /* contact nodes re-paired because their projection left the face */
+  PetscReal       dt_forces;       /* the increment the last force evaluation measured slip over */
   PetscBool       capacity_varies; /* temperature-dependent c or rho: capacity re-lumped every increment */
   PetscReal       rates_reaction_heat, stored_rate;
   TslExplicitRates rates;
@@ -40,7 +44,7 @@ typedef struct {
 
 /* the energies since the start of the job (Driver.energy) */
 typedef struct {
-  PetscReal ke, ie, wk, fd, cw, mw;
+  PetscReal ke, ie, wk, fd, cw, mw, vd;
 } Energies;
 PetscErrorCode TslExplicitSetFromOptions(Driver *d)
 {
@@ -48,6 +52,7 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
   d->explicit_safety   = 0.9;
   d->explicit_progress = 5000;
   d->explicit_history  = 200;
+  d->explicit_search   = 10;
   PetscOptionsBegin(d->comm, NULL, "thermoslide explicit dynamics", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_safety", "explicit: factor on the element-by-element stable increment", 0, PETSC_TRUE, 1,
                            PETSC_FALSE, &d->explicit_safety));
@@ -55,6 +60,8 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
                           &d->explicit_progress));
   PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_explicit_history", "explicit: history rows per step besides those of the frames", 0,
                           PETSC_MAX_INT, &d->explicit_history));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_explicit_contact_search", "explicit: increments between contact pairing searches (besides a node leaving its face)", 1,
+                          PETSC_MAX_INT, &d->explicit_search));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -88,25 +95,78 @@ static void MassScaleFactors(Explicit *x, PetscBool variable_only)
 /* The stable increment: min over the elements of the mechanical 2/omega (with the mass scaled) and the
  * thermal 2/lambda, by one reduction (MINLOC over both, so the log names the controlling element of each);
  * times the safety factor and the step's SCALE FACTOR. */
+/* The contact penalty's limit at each owned secondary node: the spring eps_n A between the node (mass m_s)
+ * and its main face (the lightest of the face's nodes, m_m; the node's own mass while unpaired) has
+ * omega^2 = eps_n A (1/m_s + 1/m_m), so dt_c = 2 / omega. The masses are the lumped (scaled) ones of M,
+ * ghosts included (the main face's nodes are ghosts here). */
+static PetscErrorCode ContactIncrement(Explicit *x, const PetscScalar *m, PetscReal *dt, int *id)
+{
+  PetscFunctionBeginUser;
+  *dt = PETSC_MAX_REAL, *id = -1;
+  for (PetscInt i = 0; i < TslProblemContactNodeCount(x->p); i++) {
+    PetscReal k, ms, mm, dc;
+    PetscInt  s, mf[TSL_CONTACT3_MAX_FACE_NODES], nmain;
+    PetscCall(TslProblemContactNodePenalty(x->p, i, &k, &s, mf, &nmain));
+    ms = PetscRealPart(m[s * x->ndof]), mm = ms;
+    for (PetscInt a = 0; a < nmain; a++)
+      if (mf[a] >= 0) mm = PetscMin(mm, PetscRealPart(m[mf[a] * x->ndof]));
+    if (!(k > 0) || !(ms > 0) || !(mm > 0)) continue;
+    dc = 2.0 / PetscSqrtReal(k * (1 / ms + 1 / mm));
+    if (dc < *dt) *dt = dc, *id = (int)x->m->node_id[s];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The damping fraction xi of the highest element mode (b1 for the linear bulk viscosity; Abaqus
+ * documentation, "Bulk viscosity") shortens its stable increment to (2 / omega)(sqrt(1 + xi^2) - xi). */
+static PetscReal BulkViscosityFactor(PetscReal xi)
+{
+  return PetscSqrtReal(1 + xi * xi) - xi;
+}
+
 static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
 {
   struct {
     double v;
     int    id;
-  } loc[2] = {{PETSC_MAX_REAL, -1}, {PETSC_MAX_REAL, -1}}, g[2];
+  } loc[3] = {{PETSC_MAX_REAL, -1}, {PETSC_MAX_REAL, -1}, {PETSC_MAX_REAL, -1}}, g[3];
+  PetscReal dt_mech;
 
   PetscFunctionBeginUser;
   for (PetscInt e = 0; e < x->m->nelem; e++) {
     PetscReal dm = x->dt_mech[e] * PetscSqrtReal(x->scale[e]);
+    /* bulk viscosity: L_e / c_d is the element's own (mass-scaled) increment, so rho c_d L_e = (lambda + 2 mu) dt_e */
+    x->eta[e] = x->step->bv_linear * (dm < PETSC_MAX_REAL ? dm : 0);
+    dm *= BulkViscosityFactor(x->step->bv_linear);
     if (dm < loc[0].v) loc[0].v = dm, loc[0].id = (int)x->m->elem_id[e];
     if (x->dt_heat[e] < loc[1].v) loc[1].v = x->dt_heat[e], loc[1].id = (int)x->m->elem_id[e];
   }
-  PetscCallMPI(MPI_Allreduce(loc, g, 2, MPI_DOUBLE_INT, MPI_MINLOC, x->comm));
-  x->dt_stable = x->safety * x->step->dt_scale * PetscMin(g[0].v, g[1].v);
+  if (x->m->npair) {
+    Vec                ml;
+    const PetscScalar *m;
+    PetscReal          dc;
+    PetscCall(VecGhostUpdateBegin(x->M, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostUpdateEnd(x->M, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostGetLocalForm(x->M, &ml));
+    PetscCall(VecGetArrayRead(ml, &m));
+    PetscCall(ContactIncrement(x, m, &dc, &loc[2].id));
+    loc[2].v = dc;
+    PetscCall(VecRestoreArrayRead(ml, &m));
+    PetscCall(VecGhostRestoreLocalForm(x->M, &ml));
+  }
+  PetscCallMPI(MPI_Allreduce(loc, g, 3, MPI_DOUBLE_INT, MPI_MINLOC, x->comm));
+  /* a secondary node is both in its elements and on the contact spring: their eigenvalues add at most
+   * (omega^2 <= omega_e^2 + omega_c^2), so 1/dt^2 = 1/dt_e^2 + 1/dt_c^2 bounds the combined limit */
+  dt_mech      = g[2].id >= 0 ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(g[0].v) + 1.0 / PetscSqr(g[2].v)) : g[0].v;
+  x->dt_stable = x->safety * x->step->dt_scale * PetscMin(dt_mech, g[1].v);
   if (print) {
-    PetscCall(PetscPrintf(x->comm, "  stable increment %.4e (safety %g x scale factor %g): mechanical %.4e at element %d, thermal %.4e at element %d; %s controls\n",
-                          (double)x->dt_stable, (double)x->safety, (double)x->step->dt_scale, g[0].v, g[0].id, g[1].v, g[1].id,
-                          g[0].v <= g[1].v ? "the mechanical limit" : "the thermal (diffusion) limit"));
+    PetscCall(PetscPrintf(x->comm, "  stable increment %.4e (safety %g x scale factor %g): mechanical %.4e at element %d%s, thermal %.4e at element %d; %s controls\n",
+                          (double)x->dt_stable, (double)x->safety, (double)x->step->dt_scale, g[0].v, g[0].id,
+                          x->step->bv_linear > 0 ? " (with the linear bulk viscosity's damping)" : "", g[1].v, g[1].id,
+                          dt_mech <= g[1].v ? "the mechanical limit" : "the thermal (diffusion) limit"));
+    if (g[2].id >= 0)
+      PetscCall(PetscPrintf(x->comm, "  contact penalty (eps_n A on the lumped masses) %.4e at secondary node %d; with the elements' %.4e: mechanical %.4e\n", g[2].v,
+                            g[2].id, g[0].v, (double)dt_mech));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -174,11 +234,23 @@ static PetscErrorCode SetUpIncrement(Explicit *x, Energies *en, PetscBool first)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Forces(Explicit *x)
+/* Forces at the current state; with contact, its state (slip since the last increment, anchors) is
+ * committed as the history of the next increment, and pairing searched every search_every increments or
+ * when a node left its face. */
+static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
 {
+  PetscInt nrepair;
+
   PetscFunctionBeginUser;
   PetscCall(TslPhaseBegin(TSL_PHASE_ASSEMBLY));
   PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, &x->rates));
+  /* bulk viscosity of the velocity v_{n-1/2} (the latest one: central differences have no v_n) */
+  if (x->Fv) PetscCall(TslProblemExplicitBulkViscosity(x->p, x->V, x->eta, x->Fv, &x->rates.viscous));
+  x->dt_forces = dt;
+  if (x->m->npair) {
+    PetscCall(TslProblemContactExplicitIncrement(x->p, (PetscBool)(inc % x->search_every == 0), &nrepair));
+    x->nrepair += nrepair;
+  }
   PetscCall(TslPhaseEnd(TSL_PHASE_ASSEMBLY));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -187,10 +259,10 @@ static PetscErrorCode Forces(Explicit *x)
 static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal h_prev, PetscReal t_new, PetscReal total_new)
 {
   PetscScalar       *u, *v;
-  const PetscScalar *uo, *m, *mask, *fi, *fe, *fc = NULL;
+  const PetscScalar *uo, *m, *mask, *fi, *fe, *fc = NULL, *fv = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
   const PetscReal    h_avg = h_prev > 0 ? 0.5 * (h + h_prev) : 0.5 * h; /* from rest at the start: v_{1/2} = dt/2 a_0 */
-  PetscReal          loc[7] = {0, 0, 0, 0, 0, 0, 0}, g[7];
+  PetscReal          loc[8] = {0, 0, 0, 0, 0, 0, 0, 0}, g[8];
 
   PetscFunctionBeginUser;
   PetscCall(VecCopy(x->X, x->Xold));
@@ -201,8 +273,9 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArrayRead(x->Fi, &fi));
   PetscCall(VecGetArrayRead(x->Fe, &fe));
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
+  if (x->Fv) PetscCall(VecGetArrayRead(x->Fv, &fv));
   for (PetscInt i = 0; i < n; i++) { /* free dofs: the update and the forces' work */
-    PetscReal f = fe[i] - fi[i] - (fc ? fc[i] : 0), vo = v[i], w;
+    PetscReal f = fe[i] - fi[i] - (fc ? fc[i] : 0) - (fv ? fv[i] : 0), vo = v[i], w;
     if (mask[i] != 0) continue;
     if (i % x->ndof == th) {
       u[i] += h * f / m[i];
@@ -214,6 +287,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     loc[0] += fi[i] * w;
     loc[1] += fe[i] * w;
     loc[2] += (fc ? fc[i] : 0) * w;
+    loc[7] += (fv ? fv[i] : 0) * w;
   }
   PetscCall(VecRestoreArray(x->X, &u));
   /* prescribed values at t_{n+1} */
@@ -222,7 +296,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArray(x->X, &u));
   PetscCall(VecGetArrayRead(x->Xold, &uo));
   for (PetscInt i = 0; i < n; i++) { /* prescribed dofs: velocity, reaction and work; stored heat */
-    PetscReal f = fe[i] - fi[i] - (fc ? fc[i] : 0), vo = v[i], w, s;
+    PetscReal f = fe[i] - fi[i] - (fc ? fc[i] : 0) - (fv ? fv[i] : 0), vo = v[i], w, s;
     if (i % x->ndof == th) {
       PetscReal rate = m[i] * (u[i] - uo[i]) / h; /* heat stored at the node per unit time */
       loc[6] += rate;
@@ -236,10 +310,12 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     loc[0] += fi[i] * w;
     loc[1] += (fe[i] + s) * w;
     loc[2] += (fc ? fc[i] : 0) * w;
+    loc[7] += (fv ? fv[i] : 0) * w;
   }
   PetscCall(VecRestoreArrayRead(x->Xold, &uo));
   PetscCall(VecRestoreArray(x->X, &u));
   if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
+  if (x->Fv) PetscCall(VecRestoreArrayRead(x->Fv, &fv));
   PetscCall(VecRestoreArrayRead(x->Fe, &fe));
   PetscCall(VecRestoreArrayRead(x->Fi, &fi));
   PetscCall(VecRestoreArrayRead(x->Mask, &mask));
@@ -247,12 +323,15 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecRestoreArray(x->V, &v));
   PetscCall(VecGhostUpdateBegin(x->X, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostUpdateEnd(x->X, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_SUM, x->comm));
+  PetscCall(MPIU_Allreduce(loc, g, 8, MPIU_REAL, MPIU_SUM, x->comm));
   en->ie += g[0];
+  en->vd += g[7];
   en->wk += g[1];
   en->cw += g[2];
-  en->fd += x->rates.dissipation * h;
-  x->d->dissipated += x->rates.dissipation * h;
+  /* the forces of state n measured the slip over the increment that ended there (dt_forces): its
+   * dissipation; the heat they generate enters the temperatures over h (forward Euler) */
+  en->fd += x->rates.dissipation * x->dt_forces;
+  x->d->dissipated += x->rates.dissipation * x->dt_forces;
   x->d->absorbed += x->rates.friction_heat * h;
   x->rates_reaction_heat = g[5];
   x->stored_rate         = g[6];
@@ -305,7 +384,8 @@ static PetscErrorCode HistoryRow(Explicit *x, Energies *en, PetscInt s, PetscInt
   row[HIST_ENERGY + 3] = en->fd;
   row[HIST_ENERGY + 4] = en->cw;
   row[HIST_ENERGY + 5] = en->mw;
-  row[HIST_ENERGY + 6] = en->ke + en->ie + en->cw - en->wk - en->mw;
+  row[HIST_ENERGY + 6] = en->vd;
+  row[HIST_ENERGY + 7] = en->ke + en->ie + en->vd + en->cw - en->wk - en->mw;
   PetscCall(TslHistoryAppend(d->hist, row));
   d->done_step = s + 1, d->done_inc = inc, d->done_time = total, d->done_step_time = t, d->done_dt = h;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -319,7 +399,8 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fi));
   PetscCall(VecDestroy(&x->Fe));
   PetscCall(VecDestroy(&x->Fc));
-  PetscCall(PetscFree3(x->dt_mech, x->dt_heat, x->scale));
+  PetscCall(VecDestroy(&x->Fv));
+  PetscCall(PetscFree4(x->dt_mech, x->dt_heat, x->scale, x->eta));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -341,6 +422,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   x.safety       = d->explicit_safety;
   x.progress     = d->explicit_progress;
   x.history_rows = d->explicit_history;
+  x.search_every = d->explicit_search;
   PetscCall(PetscPrintf(d->comm, "step %" PetscInt_FMT " (%s): explicit dynamics, period %g%s\n", s + 1, x.step->name[0] ? x.step->name : "-",
                         (double)x.step->period, x.step->dt_user > 0 ? ", fixed increment (DIRECT USER CONTROL)" : ""));
   PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));
@@ -364,22 +446,30 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscReal se, hg;
     PetscCall(TslProblemEnergies(x.p, &se, &hg));
     en->ke = 0, en->ie = se + hg;
-    en->wk = en->ie + en->cw - en->mw;
+    en->wk = en->ie + en->vd + en->cw - en->mw;
   }
   PetscCall(VecDuplicate(x.X, &x.M));
-  PetscCall(VecZeroEntries(x.M));
+  /* the mass before this step's scaling: the last step's when the velocity carries over (only a change of
+   * mass does work on moving nodes, ALLMW), zero from rest */
+  if (d->mass && d->explicit_last == s - 1) PetscCall(VecCopy(d->mass, x.M));
+  else PetscCall(VecZeroEntries(x.M));
   PetscCall(VecDuplicate(x.X, &x.Mask));
   PetscCall(VecDuplicate(x.X, &x.Fi));
   PetscCall(VecDuplicate(x.X, &x.Fe));
   if (x.m->npair) PetscCall(VecDuplicate(x.X, &x.Fc));
-  PetscCall(PetscMalloc3(x.m->nelem, &x.dt_mech, x.m->nelem, &x.dt_heat, x.m->nelem, &x.scale));
+  if (x.step->bv_linear > 0) PetscCall(VecDuplicate(x.X, &x.Fv));
+  PetscCall(PetscMalloc4(x.m->nelem, &x.dt_mech, x.m->nelem, &x.dt_heat, x.m->nelem, &x.scale, x.m->nelem, &x.eta));
   for (PetscInt i = 0; i < x.m->nmaterial; i++)
     if (TslMaterialIsTemperatureDependent(&x.m->materials[i])) x.capacity_varies = PETSC_TRUE;
   PetscCall(TslProblemConstrainedMask(x.p, x.Mask));
   PetscCall(TslProblemSetTime(x.p, 0, 0, *total_time));
   PetscCall(TslProblemApplyPrescribed(x.p, x.X));
+  if (x.m->npair) {
+    PetscBool repattern;
+    PetscCall(TslProblemContactSearch(x.p, &repattern));
+  }
   PetscCall(SetUpIncrement(&x, en, PETSC_TRUE));
-  PetscCall(Forces(&x));
+  PetscCall(Forces(&x, 0, 0));
   PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
 
   /* output times: NUMBER INTERVAL= (default 20, as in the dialect) or TIME INTERVAL= */
@@ -419,7 +509,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
         if (x.step->dt_user <= 0) x.dt = x.dt_stable;
         break;
       }
-    PetscCall(Forces(&x));
+    PetscCall(Forces(&x, h, inc));
     frame = (PetscBool)(last || t >= t_frame - eps);
     if (frame)
       while (t_frame <= t + eps) t_frame += dt_frame;
@@ -434,17 +524,23 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
       now = MPI_Wtime();
       PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": step time %.6g (%.1f %%)  dt %.4g  ALLKE %.4g  ETOTAL %.3g  wall %.1f s, about %.1f s left\n",
                             s + 1, inc, (double)t, (double)(100 * t / x.step->period), (double)h, (double)en->ke,
-                            (double)(en->ke + en->ie + en->cw - en->wk - en->mw), now - wall0, (now - wall0) * (x.step->period - t) / t));
+                            (double)(en->ke + en->ie + en->vd + en->cw - en->wk - en->mw), now - wall0, (now - wall0) * (x.step->period - t) / t));
     }
   }
   now = MPI_Wtime();
   PetscCall(KineticEnergy(&x, &en->ke));
   PetscCall(PetscPrintf(d->comm,
-                        "  step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %.2f s (%.3g s per increment); ALLKE %.6g ALLIE %.6g ALLWK %.6g ALLFD %.6g ALLCW %.6g ALLMW %.6g ETOTAL %.3g\n",
+                        "  step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %.2f s (%.3g s per increment); ALLKE %.6g ALLIE %.6g ALLWK %.6g ALLFD %.6g ALLCW %.6g ALLMW %.6g ALLVD %.6g ETOTAL %.3g\n",
                         s + 1, inc, now - wall0, inc ? (now - wall0) / inc : 0.0, (double)en->ke, (double)en->ie, (double)en->wk, (double)en->fd, (double)en->cw,
-                        (double)en->mw, (double)(en->ke + en->ie + en->cw - en->wk - en->mw)));
+                        (double)en->mw, (double)en->vd, (double)(en->ke + en->ie + en->vd + en->cw - en->wk - en->mw)));
+  if (x.m->npair)
+    PetscCall(PetscPrintf(d->comm, "  contact: pairing searched every %" PetscInt_FMT " increments; %" PetscInt_FMT " re-pairings of nodes that left their face\n",
+                          x.search_every, x.nrepair));
   PetscCall(TslDriverPrintTables(d, x.step));
   d->explicit_last = s;
+  PetscCall(VecDestroy(&d->mass));
+  d->mass = x.M;
+  x.M     = NULL;
   PetscCall(Destroy(&x));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

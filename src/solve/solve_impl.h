@@ -10,12 +10,12 @@
  * steps; docs/explicit.md): kinetic ALLKE, internal ALLIE (work of the element forces), external work ALLWK
  * (loads and reactions at prescribed dofs), frictional dissipation ALLFD, energy absorbed by contact ALLCW
  * (ALLFD and the penalty's elastic energy), mass-scaling work ALLMW and the balance
- * ETOTAL = ALLKE + ALLIE + ALLCW - ALLWK - ALLMW. */
+ * ETOTAL = ALLKE + ALLIE + ALLVD + ALLCW - ALLWK - ALLMW. */
 #define MAX_DEFAULTS 32
 #define MAX_FIELDS   32
 
 extern const char *const TslHistoryColumns[];
-#define NHISTORY 24
+#define NHISTORY 25
 
 typedef struct {
   TslProblem prob;
@@ -48,11 +48,13 @@ typedef struct {
   /* explicit steps: the velocity and the energies carry over from one explicit step to the next (an
    * implicit step between them is static: the velocity restarts at zero) */
   Vec       velocity;
+  Vec       mass;          /* the lumped mass the last explicit step ended with (ALLMW of the next one's scaling) */
   PetscInt  explicit_last; /* last explicit step run (0-based), -1 none */
-  PetscReal energy[6];     /* ALLKE ALLIE ALLWK ALLFD ALLCW ALLMW since the start of the job */
+  PetscReal energy[7];     /* ALLKE ALLIE ALLWK ALLFD ALLCW ALLMW ALLVD since the start of the job */
   PetscReal explicit_safety;   /* -tsl_explicit_safety */
   PetscInt  explicit_progress; /* -tsl_explicit_progress */
   PetscInt  explicit_history;  /* -tsl_explicit_history */
+  PetscInt  explicit_search;   /* -tsl_explicit_contact_search */
 } Driver;
 
 #define HIST_ENERGY 17 /* first energy column */

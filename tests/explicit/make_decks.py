@@ -58,7 +58,7 @@ write("wave_bar_cpe4t", "*HEADING\n Explicit: step load on the end of a bar, fro
 """)
 # A bar stretched statically by 0.001 (implicit step), then released: free-free vibration of period
 # 2 L / c = 0.02.
-write("vibration_bar_cpe4t", "*HEADING\n Explicit: released stretched free-free bar, period 2 L / c = 0.02\n" + bar_mesh(n) + MATERIAL + """*STEP
+write("vibration_bar_cpe4t", "*HEADING\n Explicit: released stretched free-free bar, period 2 L / c = 0.02 (undamped: no bulk viscosity)\n" + bar_mesh(n) + MATERIAL + """*STEP
 *COUPLED TEMPERATURE-DISPLACEMENT
  1.0, 1.0
 *BOUNDARY
@@ -71,6 +71,8 @@ write("vibration_bar_cpe4t", "*HEADING\n Explicit: released stretched free-free 
 *STEP, NAME=RELEASE
 *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT
  , 0.03
+*BULK VISCOSITY
+ 0.0, 0.0
 *BOUNDARY, OP=NEW
 *OUTPUT, FIELD, TIME INTERVAL=0.0002
 *NODE OUTPUT
