@@ -7,4 +7,4 @@ source "$(dirname "${BASH_SOURCE[0]}")/env.sh"
 bash "$TSL_ROOT/jobs/scripts/build.sh"
 cd "$TSL_BUILD"
 # -j2: the machine's two cores; 2-rank runs claim both (PROCESSORS 2, tests/CMakeLists.txt)
-ctest --output-on-failure -LE bench -j2 "$@"
+ctest --output-on-failure -LE "bench|long" -j2 "$@"
