@@ -355,7 +355,7 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
 
 # The 3D series (issue 7): the planar blocks extruded to the spec's "three-dimensional model with width
 # 1.0" (the small block, z in [0, 1]); the large block is slightly wider (z in [-0.1, 1.1]) so that the
-# small block's edge nodes land inside its faces; two cells across each width, so the meshes do not match
+# small block's edge nodes land inside its faces; one cell across each width, so the meshes do not match
 # in z either. Hexahedra (C3D8*), wedges (C3D6T: the planar triangles extruded, quad faces on the
 # interface), tetrahedra (C3D4T: each hexahedron cut into six; C3D10MT: the same with midside nodes, tri6
 # faces on the interface). Face numbers are found from the geometry (the face whose corners lie on the
@@ -517,8 +517,8 @@ def sliding_blocks_3d(series, typ, outdir=None, surf=False):
     block's top face. Volume 6 x 1.25 x 1.2 + 2 x 0.25 x 1 = 9.5 (rho c = 1): the friction series ends at
     60 / 9.5. surf: TYPE=SURFACE TO SURFACE (job name *_surf_*)."""
     typ = typ.upper()
-    bnodes, belems, shape = mesh3d(12, 2, 2, 0.0, 6.0, 0.0, 1.25, -0.1, 1.1, typ, mirror=3.0)
-    tnodes, telems, _ = mesh3d(4, 6, 2, 2.0, 4.0, 1.25, 1.5, 0.0, 1.0, typ, 1000, 1000, mirror=3.0)
+    bnodes, belems, shape = mesh3d(12, 2, 1, 0.0, 6.0, 0.0, 1.25, -0.1, 1.1, typ, mirror=3.0)
+    tnodes, telems, _ = mesh3d(4, 6, 1, 2.0, 4.0, 1.25, 1.5, 0.0, 1.0, typ, 1000, 1000, mirror=3.0)
     main = faces_on(bnodes, belems, shape, 1.25)
     sec = faces_on(tnodes, telems, shape, 1.25)
     pressed = faces_on(tnodes, telems, shape, 1.5)
