@@ -7,8 +7,10 @@
 #     (default 32).
 # Per run: total wall time, Newton iterations, the contact phase and the search inside it (pairing and the
 # held-region check, without the matrix pattern rebuild) per Newton iteration, the search's share of the
-# run, the main faces held per rank, peak memory per rank; then the ratios to CalculiX. Figures only,
-# never pass/fail (ctest -L bench).
+# run (= its share of an iteration), the main faces held per rank, peak memory per rank, the heat crossing
+# the interface (thermoslide: history column interface_heat; CalculiX: the heat entering at the hot face,
+# *NODE PRINT RFL, which is the same in the steady state); then the ratios to CalculiX. Figures only, never
+# pass/fail (ctest -L bench).
 # usage: bench_contact3d.sh THERMOSLIDE [OUTDIR] [sizes...]   (default sizes: 16 32 64)
 set -u
 exe=$1 out=${2:-$PWD/bench-contact3d-out}
@@ -20,7 +22,7 @@ mkdir -p "$out"
 ccx_ok=1
 command -v ccx > /dev/null || { ccx_ok=0; echo "ccx not installed (apt-get install calculix-ccx): CalculiX runs skipped"; }
 
-printf "\n%-4s %8s %9s %-5s %-11s %8s %6s %12s %12s %8s %-13s %9s\n" N contacts dofs ranks code total newton contact/it search/it search% held_faces mem_MB/rank
+printf "\n%-4s %8s %9s %-5s %-11s %8s %6s %12s %12s %8s %-13s %9s %9s\n" N contacts dofs ranks code total newton contact/it search/it search% held_faces mem_MB/rank heat
 declare -A T
 for n in $sizes; do
   deck=$out/block$n.inp
@@ -38,8 +40,10 @@ for n in $sizes; do
     mem=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="memory") print $(i+1)}')
     its=$(grep -o "newton [0-9]*" "$log" | awk '{s+=$2} END {print s}')
     held=$(grep -o "main faces held by rank [0-9.]*: [0-9 ]* of" "$log" | sed 's/.*: //; s/ of//; s/ /+/g')
-    printf "%-4s %8d %9d %-5s %-11s %8s %6s %12.3g %12.3g %7.2g%% %-13s %9s\n" "$n" "$nc" "$dofs" "$np" thermoslide "$tot" "$its" \
-      "$(echo "$con / $its" | bc -l)" "$(echo "${sea:-0} / $its" | bc -l)" "$(echo "100 * ${sea:-0} / $tot" | bc -l)" "$held" "$mem"
+    heat=$(/usr/bin/python3 -c 'import csv, sys; print("%.6g" % abs(float(list(csv.DictReader(open(sys.argv[1])))[-1]["interface_heat"])))' \
+      "$out/ts$n.np$np/block$n.csv" 2> /dev/null || echo -)
+    printf "%-4s %8d %9d %-5s %-11s %8s %6s %12.3g %12.3g %7.2g%% %-13s %9s %9s\n" "$n" "$nc" "$dofs" "$np" thermoslide "$tot" "$its" \
+      "$(echo "$con / $its" | bc -l)" "$(echo "${sea:-0} / $its" | bc -l)" "$(echo "100 * ${sea:-0} / $tot" | bc -l)" "$held" "$mem" "$heat"
     T[ts,$n,$np]=$tot T[tsmem,$n,$np]=$mem
   done
   if [ $ccx_ok = 1 ] && [ "$n" -le "$ccx_max" ]; then
@@ -50,7 +54,8 @@ for n in $sizes; do
       read -r ct cm < "$cdir/time.txt"
       cm=$(echo "$cm / 1024" | bc)
       cits=$(grep -c "iteration [0-9]" "$cdir/ccx.log")
-      printf "%-4s %8d %9d %-5s %-11s %8s %6s %12s %12s %8s %-13s %9s\n" "$n" "$nc" "$dofs" 1 CalculiX "$ct" "$cits" - - - - "$cm"
+      cheat=$(grep -A2 "total heat generation for set HOT" "$cdir/block.dat" | awk 'NF == 1 {printf "%.6g", ($1 < 0 ? -$1 : $1)}')
+      printf "%-4s %8d %9d %-5s %-11s %8s %6s %12s %12s %8s %-13s %9s %9s\n" "$n" "$nc" "$dofs" 1 CalculiX "$ct" "$cits" - - - - "$cm" "${cheat:--}"
       T[ccx,$n]=$ct T[ccxmem,$n]=$cm
     else
       echo "ccx failed: $cdir/ccx.log"; tail -3 "$cdir/ccx.log"
