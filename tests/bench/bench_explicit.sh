@@ -32,7 +32,7 @@ run() {
   n=$(echo "$line" | awk '{print $3}') loop=$(echo "$line" | awk '{print $6}')
   wall=$(grep "thermoslide: wall time" "$log" | sed 's/[:,;()]/ /g')
   outp=$(echo "$wall" | awk '{for(i=1;i<=NF;i++) if($i=="output") print $(i+1)}')
-  setup=$(echo "$wall" | awk '{for(i=1;i<=NF;i++) if($i=="set-up") print $(i+1)}')
+  setup=$(echo "$wall" | awk '{for(i=1;i<=NF;i++) if($i=="set-up") {print $(i+1); exit}}')
   mem=$(echo "$wall" | awk '{for(i=1;i<=NF;i++) if($i=="memory") print $(i+1)}')
   per=$(echo "($loop - $outp) / $n" | bc -l)
   [ "$np" = 1 ] && T1=$per
