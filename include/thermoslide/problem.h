@@ -120,18 +120,18 @@ typedef struct {
   PetscReal interface_heat; /* heat crossing contact interfaces (main -> secondary) */
   PetscReal dissipation;    /* frictional dissipation */
   PetscReal friction_heat;  /* part of it converted to heat */
-  PetscReal viscous;        /* rate dissipated by the bulk viscosity (explicit.c; not filled by TslProblemExplicitForces) */
+  PetscReal viscous;        /* rate dissipated by the bulk viscosity (0 without Fv) */
 } TslExplicitRates;
 
 /* Unconstrained nodal vectors at the current solution and time, ghost contributions summed (collective):
  *   Fi  element internal forces, and every heat row (internal flow, fluxes, films) in residual form;
  *   Fe  applied mechanical loads (CLOAD, DLOAD) as forces;
- *   Fc  contact forces and contact heat in residual form (may be NULL when the model has no pairs).
- * The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets M a = Fe - Fi - Fc. */
-PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, TslExplicitRates *rates);
-/* Linear bulk viscosity forces (TslElementBulkViscosity with eta[e] per local element; 0 skips it) of the
- * velocities V into Fv (ghosted, zeroed here); *power: the rate they dissipate, summed over the ranks. */
-PetscErrorCode TslProblemExplicitBulkViscosity(TslProblem prob, Vec V, const PetscReal eta[], Vec Fv, PetscReal *power);
+ *   Fc  contact forces and contact heat in residual form (may be NULL when the model has no pairs);
+ *   Fv  linear bulk viscosity forces (TslElementBulkViscosity with eta[e] per local element, 0 skips it) of
+ *       the velocities V (may be NULL: no bulk viscosity; V and eta are then not read), computed in the
+ *       same element pass as Fi.
+ * The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets M a = Fe - Fi - Fc - Fv. */
+PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], Vec Fv, TslExplicitRates *rates);
 /* Lumped nodal mass in the displacement slots (element e's mass times scale[e]; scale NULL: 1) and lumped
  * capacity dQ/dtheta in the temperature slot, at the current temperatures (collective). An element with a
  * non-positive lumped mass at a node is a user error naming it. */

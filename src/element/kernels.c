@@ -80,8 +80,19 @@ typedef struct {
   PetscReal bz_val[TSL_MAX_ELEM_NODES * 3][6];
 } MechPoint;
 
-/* pre: the point's geometry when already evaluated (NULL: evaluate it here) */
-static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi[], PetscReal w, const TslElementPoint *pre, MechPoint *mq)
+/* The 3D solid's strain from the spatial gradients without building B (residual-only evaluations, the
+ * explicit force loop): eps = (u_x,x, u_y,y, u_z,z, u_x,y + u_y,x, u_x,z + u_z,x, u_y,z + u_z,y), each
+ * component summed in the order the B path sums it (node by node, displacement component by component),
+ * so the two give the same bits. */
+static PetscBool LeanStrain(const TslElementInput *in)
+{
+  const TslElementType *t = in->type;
+  return t->kin == TSL_KIN_SOLID3D && t->ndof == 4 && TslElementTypeNodes(t) == t->geom->nnode ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* pre: the point's geometry when already evaluated (NULL: evaluate it here); lean: no B (LeanStrain
+ * types only; the caller then forms B^T sigma from dNdx itself, MechanicsForce) */
+static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi[], PetscReal w, const TslElementPoint *pre, PetscBool lean, MechPoint *mq)
 {
   const TslElementType *t    = in->type;
   const PetscInt        ndof = t->ndof, nu = ndof - 1, n = TslElementTypeNodes(t);
@@ -92,6 +103,17 @@ static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi
   else {
     if (!TslElementPointEvaluate(t, in->sec, in->x, xi, w, &mq->own)) return PETSC_FALSE;
     mq->p = &mq->own;
+  }
+  if (lean) {
+    PetscReal *e = mq->eps;
+    for (PetscInt r = 0; r < 6; r++) e[r] = 0;
+    for (PetscInt a = 0; a < n; a++) {
+      const PetscReal *g = mq->p->dNdx[a], ux = in->u[4 * a], uy = in->u[4 * a + 1], uz = in->u[4 * a + 2];
+      e[0] += g[0] * ux, e[3] += g[1] * ux, e[4] += g[2] * ux;
+      e[1] += g[1] * uy, e[3] += g[0] * uy, e[5] += g[2] * uy;
+      e[2] += g[2] * uz, e[4] += g[0] * uz, e[5] += g[1] * uz;
+    }
+    goto material;
   }
   TslElementStrainMatrix(t, in->sec, in->x, mq->p, mq->B);
   for (PetscInt r = 0; r < 6; r++) mq->eps[r] = 0;
@@ -106,6 +128,7 @@ static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi
         mq->eps[r] += mq->B[r][c] * in->u[ndof * a + i];
       }
     }
+material:
   theta = NodalTheta(in, mq->p->N, in->u);
   TslMaterialEval(in->sec->mat, theta, &mq->mp);
   mq->eps_th = TslMaterialThermalStrain(in->sec->mat, theta, PointInitialTheta(in, mq->p), &mq->deps_th);
@@ -172,6 +195,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
   const PetscBool       hybrid      = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
   PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
+  const PetscBool       lean        = !K && !res && !hybrid && LeanStrain(in); /* forces only: no B, no tangent terms */
   MechPoint             mq;
   PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 
@@ -181,7 +205,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
     PetscReal D[6][6], dD[6][6], emech[6], sig[6], dsig[6], P[TSL_MAX_PRESSURE];
     PetscReal DB[6][TSL_MAX_ELEM_NODES * 3];
 
-    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, &mq)) return PETSC_FALSE;
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, lean, &mq)) return PETSC_FALSE;
     if (hybrid) {
       const PetscReal nuv = mq.mp.nu, E = mq.mp.E, mu = E / (2 * (1 + nuv)), kb = E / (3 * (1 - 2 * nuv));
       const PetscReal dmu = mq.mp.dE / (2 * (1 + nuv)) - mq.mp.dnu * E / (2 * (1 + nuv) * (1 + nuv));
@@ -206,8 +230,22 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         P_avg[k] += P[k] / quad->n;
       }
     } else {
-      TslElementElasticity(t, &mq.mp, D, dD);
+      TslElementElasticity(t, &mq.mp, D, K ? dD : NULL);
       for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r] - VoigtM[r] * mq.eps_th;
+    }
+    if (lean) {
+      /* R_a += B_a^T sigma dV with the nonzeros of B_a in the B path's order (rows ascending) */
+      for (PetscInt r = 0; r < 6; r++) {
+        sig[r] = 0;
+        for (PetscInt s = 0; s < 6; s++) sig[r] += D[r][s] * emech[s];
+      }
+      for (PetscInt a = 0; a < nv; a++) {
+        const PetscReal *gr = mq.p->dNdx[a];
+        R[4 * a] += (gr[0] * sig[0] + gr[1] * sig[3] + gr[2] * sig[4]) * mq.p->dV;
+        R[4 * a + 1] += (gr[1] * sig[1] + gr[0] * sig[3] + gr[2] * sig[5]) * mq.p->dV;
+        R[4 * a + 2] += (gr[2] * sig[2] + gr[0] * sig[4] + gr[1] * sig[5]) * mq.p->dV;
+      }
+      continue;
     }
     for (PetscInt r = 0; r < 6; r++) {
       sig[r] = dsig[r] = 0;
@@ -332,7 +370,7 @@ static PetscErrorCode Hourglass(const TslElementInput *in, PetscReal R[], PetscR
   PetscFunctionBeginUser;
   *energy = 0;
   if (!in->type->form->hourglass) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(MechPointEvaluate(in, quad->xi[0], quad->w[0], NULL, &mq), PETSC_COMM_SELF, PETSC_ERR_PLIB, "hourglass control of an inverted element");
+  PetscCheck(MechPointEvaluate(in, quad->xi[0], quad->w[0], NULL, LeanStrain(in), &mq), PETSC_COMM_SELF, PETSC_ERR_PLIB, "hourglass control of an inverted element");
   PetscCall(in->type->form->hourglass(in, &mq.mp, R, K, energy));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -552,7 +590,7 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res
     for (PetscInt q = 0; q < quad->n; q++) {
       MechPoint mq;
       PetscReal ratio;
-      (void)MechPointEvaluate(in, quad->xi[q], quad->w[q], NULL, &mq);
+      (void)MechPointEvaluate(in, quad->xi[q], quad->w[q], NULL, PETSC_FALSE, &mq);
       ratio = mq.mp.nu / (1 - mq.mp.nu); /* lambda / (lambda + 2 mu) */
       res->E[2] += (mq.eps_th - ratio * (mq.eps[0] + mq.eps[1] - 2 * mq.eps_th)) / quad->n;
     }

@@ -223,27 +223,23 @@ void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp
   const PetscReal dmu     = mp->dE / (2 * (1 + nu)) - mp->dnu * E / (2 * (1 + nu) * (1 + nu));
   PetscReal       D0[6][6], dD0[6][6];
 
-  Isotropic(lambda, mu, D0);
-  Isotropic(dlambda, dmu, dD0);
-  if (TslKinematicsRowGet(type->kin)->free_normal) {
-    /* sigma_33 = 0: eliminate eps_33 = -(D_3j eps_j) / D_33, D_ps = D - c c^T / d33 with c = D[:, 2];
-     * its derivative dD - (dc c^T + c dc^T) / d33 + c c^T dd33 / d33^2 */
-    const PetscReal d33 = D0[2][2], dd33 = dD0[2][2];
-    for (PetscInt i = 0; i < 6; i++)
-      for (PetscInt j = 0; j < 6; j++) {
-        const PetscReal ci = D0[i][2], cj = D0[j][2], dci = dD0[i][2], dcj = dD0[j][2];
-        D[i][j] = D0[i][j] - ci * cj / d33;
-        if (dD) dD[i][j] = dD0[i][j] - (dci * cj + ci * dcj) / d33 + ci * cj * dd33 / (d33 * d33);
-      }
-    for (PetscInt j = 0; j < 6; j++) {
-      D[2][j] = D[j][2] = 0;
-      if (dD) dD[2][j] = dD[j][2] = 0;
-    }
+  if (!TslKinematicsRowGet(type->kin)->free_normal) { /* straight into D (and dD only when asked: the explicit forces do not) */
+    Isotropic(lambda, mu, D);
+    if (dD) Isotropic(dlambda, dmu, dD);
     return;
   }
+  /* sigma_33 = 0: eliminate eps_33 = -(D_3j eps_j) / D_33, D_ps = D - c c^T / d33 with c = D[:, 2];
+   * its derivative dD - (dc c^T + c dc^T) / d33 + c c^T dd33 / d33^2 */
+  Isotropic(lambda, mu, D0);
+  if (dD) Isotropic(dlambda, dmu, dD0);
   for (PetscInt i = 0; i < 6; i++)
     for (PetscInt j = 0; j < 6; j++) {
-      D[i][j] = D0[i][j];
-      if (dD) dD[i][j] = dD0[i][j];
+      const PetscReal ci = D0[i][2], cj = D0[j][2], d33 = D0[2][2];
+      D[i][j] = D0[i][j] - ci * cj / d33;
+      if (dD) dD[i][j] = dD0[i][j] - (dD0[i][2] * cj + ci * dD0[j][2]) / d33 + ci * cj * dD0[2][2] / (d33 * d33);
     }
+  for (PetscInt j = 0; j < 6; j++) {
+    D[2][j] = D[j][2] = 0;
+    if (dD) dD[2][j] = dD[j][2] = 0;
+  }
 }

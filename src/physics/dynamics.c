@@ -14,13 +14,17 @@ PetscErrorCode TslProblemSetMatrixFree(TslProblem p, PetscBool matrix_free)
 }
 
 typedef struct {
-  PetscScalar *fi, *fe;
-  AsmHeat     *heat;
-  PetscInt     bad;
+  PetscScalar       *fi, *fe, *fv; /* fv: bulk viscosity forces (NULL: none) */
+  const PetscScalar *v;            /* local form of the half-step velocity (with fv) */
+  const PetscReal   *eta;          /* [nelem] b1 L_e / c_d (with fv) */
+  PetscReal          power;        /* rate dissipated by the bulk viscosity, this rank */
+  AsmHeat           *heat;
+  PetscInt           bad;
 } ForceCtx;
 
 /* One element's internal forces and heat flow into fi; its face loads: mechanical rows (pressure) as
- * forces into fe, heat rows (flux, film) in residual form into fi. */
+ * forces into fe, heat rows (flux, film) in residual form into fi; its bulk viscosity forces into fv (in
+ * the same pass over the elements: one gather of the element's data per increment). */
 static PetscErrorCode ForceElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
 {
   ForceCtx *c = (ForceCtx *)ctx;
@@ -36,6 +40,13 @@ static PetscErrorCode ForceElement(TslProblem p, PetscInt e, TslElemData *d, voi
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (PetscInt r = 0; r < d->nd; r++) c->fi[d->ld[r]] += R[r];
+  if (c->fv && c->eta[e] > 0) {
+    PetscReal v[TSL_MAX_ELEM_DOF], w;
+    for (PetscInt r = 0; r < d->nd; r++) v[r] = PetscRealPart(c->v[d->ld[r]]), R[r] = 0;
+    PetscCall(TslElementBulkViscosity(&d->in, v, c->eta[e], R, &w));
+    for (PetscInt r = 0; r < d->nd; r++) c->fv[d->ld[r]] += R[r];
+    c->power += w;
+  }
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
     const TslFaceRecord *rec = &p->face[i];
     PetscReal            value, sink, h = 0;
@@ -77,22 +88,29 @@ static PetscErrorCode EndLocal(Vec V, Vec *vl, PetscScalar **a)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, TslExplicitRates *rates)
+PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], Vec Fv, TslExplicitRates *rates)
 {
-  Vec                xl, il, el, cl = NULL;
+  Vec                xl, il, el, cl = NULL, vl = NULL, fl = NULL;
   const PetscScalar *xa;
   PetscScalar       *fc;
   AsmHeat            heat;
-  ForceCtx           c = {NULL, NULL, &heat, -1};
-  PetscReal          loc[5], g[5];
+  ForceCtx           c = {NULL, NULL, NULL, NULL, eta, 0, &heat, -1};
+  PetscReal          loc[6], g[6];
   TslFailure         fail;
   PetscErrorCode     ierr;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&heat, sizeof(heat)));
+  if (Fv) {
+    PetscCall(VecGhostUpdateBegin(V, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostUpdateEnd(V, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecGhostGetLocalForm(V, &vl));
+    PetscCall(VecGetArrayRead(vl, &c.v));
+  }
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
   PetscCall(BeginLocal(Fi, &il, &c.fi));
   PetscCall(BeginLocal(Fe, &el, &c.fe));
+  PetscCall(BeginLocal(Fv, &fl, &c.fv));
   PetscCall(BeginLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
   PetscCall(TslProblemElementLoop(p, xa, xa, ForceElement, &c));
   /* a contact projection that fails has no cutback to fall back on here: an error on all ranks */
@@ -109,14 +127,20 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ts
     else c.fe[dof] += v;
   }
   PetscCall(EndLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
+  PetscCall(EndLocal(Fv, &fl, &c.fv));
   PetscCall(EndLocal(Fe, &el, &c.fe));
   PetscCall(EndLocal(Fi, &il, &c.fi));
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  if (Fv) {
+    PetscCall(VecRestoreArrayRead(vl, &c.v));
+    PetscCall(VecGhostRestoreLocalForm(V, &vl));
+  }
   PetscCall(TslProblemCheckBadElement(p, c.bad));
   if (Fc && !p->ncsurf) PetscCall(VecZeroEntries(Fc));
-  loc[0] = heat.flux_in, loc[1] = -heat.film, loc[2] = heat.interface, loc[3] = heat.dissipation, loc[4] = heat.friction_heat;
-  PetscCall(MPIU_Allreduce(loc, g, 5, MPIU_REAL, MPIU_SUM, p->comm));
+  loc[0] = heat.flux_in, loc[1] = -heat.film, loc[2] = heat.interface, loc[3] = heat.dissipation, loc[4] = heat.friction_heat, loc[5] = c.power;
+  PetscCall(MPIU_Allreduce(loc, g, 6, MPIU_REAL, MPIU_SUM, p->comm));
   rates->heat_in = g[0], rates->film_out = g[1], rates->interface_heat = g[2], rates->dissipation = g[3], rates->friction_heat = g[4];
+  rates->viscous = g[5];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -250,49 +274,5 @@ PetscErrorCode TslProblemConstrainedMask(TslProblem p, Vec mask)
   PetscCall(VecGetArray(mask, &m));
   for (PetscInt d = 0; d < p->nown * p->ndof; d++) m[d] = (p->pinned[d] || p->bc[d].active) ? 1.0 : 0.0;
   PetscCall(VecRestoreArray(mask, &m));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-typedef struct {
-  const PetscScalar *v;
-  const PetscReal   *eta;
-  PetscScalar       *f;
-  PetscReal          power;
-} ViscCtx;
-
-static PetscErrorCode ViscElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
-{
-  ViscCtx  *c = (ViscCtx *)ctx;
-  PetscReal R[TSL_MAX_ELEM_DOF] = {0}, v[TSL_MAX_ELEM_DOF], w;
-
-  PetscFunctionBeginUser;
-  (void)p, (void)stop;
-  if (!(c->eta[e] > 0)) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt r = 0; r < d->nd; r++) v[r] = PetscRealPart(c->v[d->ld[r]]);
-  PetscCall(TslElementBulkViscosity(&d->in, v, c->eta[e], R, &w));
-  for (PetscInt r = 0; r < d->nd; r++) c->f[d->ld[r]] += R[r];
-  c->power += w;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode TslProblemExplicitBulkViscosity(TslProblem p, Vec V, const PetscReal eta[], Vec Fv, PetscReal *power)
-{
-  Vec                xl, vl, fl;
-  const PetscScalar *xa;
-  ViscCtx            c = {NULL, eta, NULL, 0};
-
-  PetscFunctionBeginUser;
-  PetscCall(VecGhostUpdateBegin(V, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(V, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostGetLocalForm(V, &vl));
-  PetscCall(VecGetArrayRead(vl, &c.v));
-  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
-  PetscCall(BeginLocal(Fv, &fl, &c.f));
-  PetscCall(TslProblemElementLoop(p, xa, xa, ViscElement, &c));
-  PetscCall(EndLocal(Fv, &fl, &c.f));
-  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
-  PetscCall(VecRestoreArrayRead(vl, &c.v));
-  PetscCall(VecGhostRestoreLocalForm(V, &vl));
-  PetscCall(MPIU_Allreduce(&c.power, power, 1, MPIU_REAL, MPIU_SUM, p->comm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

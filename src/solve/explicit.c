@@ -243,9 +243,9 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
 
   PetscFunctionBeginUser;
   PetscCall(TslPhaseBegin(TSL_PHASE_ASSEMBLY));
-  PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, &x->rates));
-  /* bulk viscosity of the velocity v_{n-1/2} (the latest one: central differences have no v_n) */
-  if (x->Fv) PetscCall(TslProblemExplicitBulkViscosity(x->p, x->V, x->eta, x->Fv, &x->rates.viscous));
+  /* bulk viscosity of the velocity v_{n-1/2} (the latest one: central differences have no v_n), in the
+   * same element pass */
+  PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->V, x->eta, x->Fv, &x->rates));
   x->dt_forces = dt;
   if (x->m->npair) {
     PetscCall(TslProblemContactExplicitIncrement(x->p, (PetscBool)(inc % x->search_every == 0), &nrepair));

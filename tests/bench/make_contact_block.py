@@ -6,18 +6,25 @@ its bottom (y = 0); the thin block's top face is held at temperature 100 and in 
 pressure of 100. The meshes do not match across the interface: (N+1)^2 secondary nodes (the thin block's
 bottom) against (N+1)^2 main faces (the base's top). Gap conductance against the contact pressure. One
 steady coupled increment.
-usage: make_contact_block.py N deck.inp [thermoslide|calculix]
+usage: make_contact_block.py N deck.inp [thermoslide|calculix|explicit INCREMENTS [C3D8T|C3D8RT]]
   thermoslide: C3D8T, node-to-surface (the default pair type), penalty contact with the stiffness 0.1 E / h
                (h the main face size), *GAP CONDUCTANCE, PRESSURE;
   calculix:    the same mesh with C3D8 (CalculiX's coupled temperature-displacement brick), face-to-face
                (TYPE=SURFACE TO SURFACE) with a linear pressure-overclosure of the same stiffness, and its
-               *GAP CONDUCTANCE (always by pressure).
-Both: conductance 0 at zero pressure rising linearly to 2000 at 200 (continuous at lift-off, see below).
+               *GAP CONDUCTANCE (always by pressure);
+  explicit:    the thermoslide deck as one *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT step (penalty contact,
+               the element-by-element stable increment with the penalty's share, default bulk viscosity) of
+               about INCREMENTS increments (its period: INCREMENTS x 0.6 x the smallest cell side / (c_d sqrt 3)),
+               one output frame (tests/bench/bench_explicit.sh).
+Both codes: conductance 0 at zero pressure rising linearly to 2000 at 200 (continuous at lift-off, see below).
 """
+import math
 import sys
 
 n, path = int(sys.argv[1]), sys.argv[2]
 flavour = sys.argv[3] if len(sys.argv) > 3 else "thermoslide"
+increments = int(sys.argv[4]) if flavour == "explicit" else 0
+etype = sys.argv[5] if flavour == "explicit" and len(sys.argv) > 5 else "C3D8T"
 nb = n + 1
 E = 200.0e3
 
@@ -50,7 +57,7 @@ with open(path, "w") as f:
     w("*HEADING\n 3D contact benchmark: %d secondary nodes\n*NODE, NSET=ALL\n" % ((n + 1) ** 2))
     for nd in bn + tn:
         w("%d, %.9g, %.9g, %.9g\n" % nd)
-    typ = "C3D8" if flavour == "calculix" else "C3D8T"
+    typ = "C3D8" if flavour == "calculix" else etype
     w("*ELEMENT, TYPE=%s, ELSET=BASE\n" % typ)
     for el in be:
         w(", ".join(str(v) for v in el) + "\n")
@@ -91,7 +98,13 @@ with open(path, "w") as f:
     w("*GAP CONDUCTANCE%s\n 0.0, 0.0\n 2000.0, 200.0\n" % ("" if flavour == "calculix" else ", PRESSURE"))
     w("*CONTACT PAIR, INTERACTION=IFACE%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if flavour == "calculix" else ""))
     w("*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
-    w("*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n")
+    if increments:
+        nu, rho = 0.3, 7.8e-9
+        cd = math.sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) / rho)
+        w("*STEP\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , %.6e\n" % (increments * 0.6 * min(0.1, 0.96 / n) / (cd * math.sqrt(3))))
+        w("*OUTPUT, FIELD, NUMBER INTERVAL=1\n")
+    else:
+        w("*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n")
     w("*BOUNDARY\n FIXED, 1, 3\n FIXED, 11, 11, 0.0\n HOT, 1, 1\n HOT, 3, 3\n HOT, 11, 11, 100.0\n")
     w("*DLOAD\n TOP, P2, 100.0\n")
     w("*NODE FILE\n U, NT\n")
