@@ -251,14 +251,8 @@ static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, Pe
   PetscCall(TslContactFaceBox(fc->kind, Y, box));
   c[0] = 0.5 * (box[0] + box[2]), c[1] = 0.5 * (box[1] + box[3]);
   rad  = 0.5 * PetscMax(box[2] - box[0], box[3] - box[1]) + cs->search_radius;
-  PetscCall(TslContactBinGridQuery(grid, c, rad, *cap, *cand, &ncand, NULL));
-  if (ncand > *cap) {
-    *cap = ncand;
-    PetscCall(PetscFree(*cand));
-    PetscCall(PetscMalloc1(*cap, cand));
-    PetscCall(TslContactBinGridQuery(grid, c, rad, *cap, *cand, &ncand, NULL));
-  }
-  PetscCall(PetscSortInt(ncand, *cand)); /* in face order: ties go the same way whichever faces are held here */
+  /* every candidate, in face order (the query sorts): ties go the same way whichever faces are held here */
+  PetscCall(TslContactBinGridQueryGrow(grid, c, rad, cap, cand, &ncand));
   /* the breaks: the ends of the candidate main faces (the kinks of the main surface and of its shape
    * functions; a line3 face is smooth inside) */
   PetscCall(PetscMalloc1(4 * ncand + 1, &ends));

@@ -164,13 +164,8 @@ static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, Pe
   PetscCall(TslContactFace3Box(fc->kind, Y, box));
   for (PetscInt d = 0; d < 3; d++) c[d] = 0.5 * (box[d] + box[3 + d]), rad = PetscMax(rad, 0.5 * (box[3 + d] - box[d]));
   rad += cs->search_radius;
-  PetscCall(TslContactBinGridQuery(grid, c, rad, *cap, *cand, &ncand, NULL));
-  if (ncand > *cap) {
-    *cap = ncand;
-    PetscCall(PetscFree(*cand));
-    PetscCall(PetscMalloc1(*cap, cand));
-    PetscCall(TslContactBinGridQuery(grid, c, rad, *cap, *cand, &ncand, NULL));
-  }
+  /* every candidate, in face order (the query sorts): ties go the same way whichever faces are held here */
+  PetscCall(TslContactBinGridQueryGrow(grid, c, rad, cap, cand, &ncand));
   PetscCall(PortableHistory(p, fc, old, nold, xa, fx, H, &any));
   for (PetscInt k = 0; k < ncand; k++) {
     const PetscInt m = (*cand)[k];

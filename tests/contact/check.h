@@ -4,6 +4,34 @@
 #include <string.h>
 #include "../common/tsl_check.h"
 
+/* The tangent tests' law: penalty normal contact and friction with heat generation (mu 0.3, eps_t 5e3, eta
+ * 0.9, f 0.3); open = PETSC_TRUE adds the open state's thermal laws: clearance conductance and gap
+ * radiation (the tables live here, the law points at them). */
+static inline void TestLawSetUp(TslContactLaw *law, PetscBool open)
+{
+  static const PetscReal kd[3] = {0, 0.05, 0.2}, kdv[3] = {50, 30, 4}, Fd[2] = {0, 0.1}, Fv[2] = {1, 0.5};
+
+  PetscCallAbort(PETSC_COMM_SELF, TslContactLawSetDefaults(law));
+  law->eps_n      = 2e4;
+  law->mu         = 0.3;
+  law->eps_t      = 5e3;
+  law->eta        = 0.9;
+  law->f          = 0.3;
+  law->theta_zero = -273.16;
+  if (!open) return;
+  law->conductance   = TSL_CONTACT_CONDUCTANCE_CLEARANCE;
+  law->k_n           = 3;
+  law->k_arg         = kd;
+  law->k_value       = kdv;
+  law->F_n           = 2;
+  law->F_clearance   = Fd;
+  law->F_value       = Fv;
+  law->sigma         = 5.67e-8;
+  law->eps_main      = 0.8;
+  law->eps_secondary = 0.6;
+  law->friction      = TSL_CONTACT_FRICTION_PENALTY;
+}
+
 /* A plane-strain element input with zero unknowns: s at xs, segment x1 -> x2. */
 static inline TslContactInput InputSetUp(const PetscReal xs[2], const PetscReal x1[2], const PetscReal x2[2])
 {

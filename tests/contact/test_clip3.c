@@ -245,24 +245,13 @@ static PetscErrorCode CheckTangents(TestLog *log, PetscInt mkind, PetscInt skind
 {
   TslContactLaw   law;
   Case            c;
-  const PetscReal kp[2] = {100, 400}, kv[2] = {20, 5}, kd[3] = {0, 0.05, 0.2}, kdv[3] = {50, 30, 4}, Fd[2] = {0, 0.1}, Fv[2] = {1, 0.5};
+  const PetscReal kp[2] = {100, 400}, kv[2] = {20, 5};
   const char     *fn[3] = {"tri3", "quad4", "tri6"};
   char            name[160];
   const PetscReal ds = 0.005;
 
   PetscFunctionBeginUser;
-  PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n       = 2e4;
-  law.mu          = 0.3;
-  law.eps_t       = 5e3;
-  law.eta         = 0.9;
-  law.f           = 0.3;
-  law.theta_zero  = -273.16;
-  law.conductance = TSL_CONTACT_CONDUCTANCE_CLEARANCE;
-  law.k_n = 3, law.k_arg = kd, law.k_value = kdv;
-  law.F_n = 2, law.F_clearance = Fd, law.F_value = Fv;
-  law.sigma = 5.67e-8, law.eps_main = 0.8, law.eps_secondary = 0.6;
-  law.friction = TSL_CONTACT_FRICTION_PENALTY;
+  TestLawSetUp(&law, PETSC_TRUE); /* open: clearance conductance and radiation */
   PetscCall(CaseSetUp(&c, mkind, skind, 0.04, s, ds, 0));
   snprintf(name, sizeof(name), "%s on %s%s: open, clearance conductance + radiation", fn[skind], fn[mkind], s > 0 ? " smoothed" : "");
   PetscCall(CheckTangent(log, name, &law, &c, TSL_CONTACT_OPEN));

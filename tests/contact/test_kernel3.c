@@ -165,33 +165,14 @@ static PetscErrorCode CheckTangents(TestLog *log, PetscInt kind, PetscReal s)
 {
   TslContactLaw    law;
   TslContactInput3 in;
-  const PetscReal  kp[2] = {100, 400}, kv[2] = {20, 5}, kd[3] = {0, 0.05, 0.2}, kdv[3] = {50, 30, 4};
-  const PetscReal  Fd[2] = {0, 0.1}, Fv[2] = {1, 0.5};
+  const PetscReal  kp[2] = {100, 400}, kv[2] = {20, 5};
   const PetscReal  tq[2] = {0.3, -0.8}, tt[2] = {0.25, 0.65}, *target = kind == QUAD4 ? tq : tt;
   PetscReal        ds = kind == QUAD4 ? 0.006 : 0.003; /* a slip of ~0.004 in length */
   char             name[160];
 
   PetscFunctionBeginUser;
-  PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n      = 2e4;
-  law.mu         = 0.3;
-  law.eps_t      = 5e3;
-  law.eta        = 0.9;
-  law.f          = 0.3;
-  law.theta_zero = -273.16;
-
   /* open: clearance conductance and radiation */
-  law.conductance   = TSL_CONTACT_CONDUCTANCE_CLEARANCE;
-  law.k_n           = 3;
-  law.k_arg         = kd;
-  law.k_value       = kdv;
-  law.F_n           = 2;
-  law.F_clearance   = Fd;
-  law.F_value       = Fv;
-  law.sigma         = 5.67e-8;
-  law.eps_main      = 0.8;
-  law.eps_secondary = 0.6;
-  law.friction      = TSL_CONTACT_FRICTION_PENALTY;
+  TestLawSetUp(&law, PETSC_TRUE);
   PetscCall(CaseSetUp(kind, target, 0.03, s, &in));
   PetscCall(SetHistory(&law, &in, ds, 0));
   PetscCall(CheckTangent(log, Name(name, kind, s, "open, clearance conductance + radiation"), &law, &in, TSL_CONTACT_OPEN));

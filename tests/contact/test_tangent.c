@@ -109,32 +109,13 @@ static PetscErrorCode CheckAll(TestLog *log, TslContactFaceKind face)
 {
   TslContactLaw   law;
   Case            c;
-  const PetscReal kp[2] = {100, 400}, kv[2] = {20, 5}, kd[3] = {0, 0.05, 0.2}, kdv[3] = {50, 30, 4};
-  const PetscReal Fd[2] = {0, 0.1}, Fv[2] = {1, 0.5};
+  const PetscReal kp[2] = {100, 400}, kv[2] = {20, 5};
   char            name[128];
   const char     *fam = TslContactFaceGet(face)->geom->name;
 
   PetscFunctionBeginUser;
-  PetscCall(TslContactLawSetDefaults(&law));
-  law.eps_n      = 2e4;
-  law.mu         = 0.3;
-  law.eps_t      = 5e3;
-  law.eta        = 0.9;
-  law.f          = 0.3;
-  law.theta_zero = -273.16;
-
-  /* open: clearance conductance and radiation only */
-  law.conductance   = TSL_CONTACT_CONDUCTANCE_CLEARANCE;
-  law.k_n           = 3;
-  law.k_arg         = kd;
-  law.k_value       = kdv;
-  law.F_n           = 2;
-  law.F_clearance   = Fd;
-  law.F_value       = Fv;
-  law.sigma         = 5.67e-8;
-  law.eps_main      = 0.8;
-  law.eps_secondary = 0.6;
-  law.friction      = TSL_CONTACT_FRICTION_PENALTY;
+  /* open: clearance conductance and radiation */
+  TestLawSetUp(&law, PETSC_TRUE);
   PetscCall(CaseSetUp(&c, 0.03, face));
   PetscCall(CheckCase(log, Name(name, fam, "open, clearance conductance + radiation"), &law, &c, TSL_CONTACT_OPEN));
 
