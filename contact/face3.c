@@ -88,6 +88,13 @@ void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], Pe
   }
 }
 
+void TslContactFace3ShapeValues(PetscInt kind, const PetscReal xi[2], PetscReal N[])
+{
+  const TslContactFace3 *f = TslContactFace3Get(kind);
+  PetscReal              z[3] = {xi[0], xi[1], 0}, d[TSL_MAX_ELEM_NODES * 3];
+  if (f) f->geom->shape(z, N, d);
+}
+
 /* x = x_1 + sum_{a>1} N_a (x_a - x_1) (sum N_a = 1), a_alpha = sum_{a>1} dN_a/dxi_alpha (x_a - x_1): differences
  * of nearby nodes, and the tangents of a flat tri3 are exactly its edge vectors (as the 2D faces). */
 void TslContactFace3PointDual(const TslContactFace3 *face, const TslDual x[][3], const TslDual xi[2], TslDual p[3], TslDual a[2][3], TslDual N[])

@@ -41,6 +41,13 @@ PetscErrorCode TslContactLawSetDefaults(TslContactLaw *law)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps)
+{
+  law->normal = TSL_CONTACT_NORMAL_PENALTY;
+  law->eps_n  = eps;
+  if (law->friction == TSL_CONTACT_FRICTION_PENALTY) law->eps_t = eps, law->elastic_slip = 0;
+}
+
 /* Abaqus Theory Guide, "Thermal contact properties" (radiation across a gap between surfaces A and B):
  *   q = C [(theta_A - theta_Z)^4 - (theta_B - theta_Z)^4],  C = F sigma / (1/eps_A + 1/eps_B - 1),
  * exact for two close infinite grey plates with F = 1; otherwise F scales the exchange. */

@@ -157,6 +157,13 @@ typedef struct {
  * interaction, slip_tol = 1e-12, eta = 1, f = 0.5, sigma = 0, theta_zero = 0, eps_* = 1. */
 PetscErrorCode TslContactLawSetDefaults(TslContactLaw *law);
 
+/* The law of a node of a kinematic pair (explicit steps, MECHANICAL CONSTRAINT=KINEMATIC): penalty normal
+ * with eps_n = eps (the stiffness per area that closes the node's predicted gap in one increment; no
+ * augmentation), and penalty friction's stick with the same stiffness (eps_t = eps, no elastic slip
+ * tolerance), so that a sticking node's predicted slip is undone in the same increment. The thermal
+ * interaction and LAGRANGE friction are the law's own. */
+void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps);
+
 /* Gap radiation constant (Abaqus Theory Guide, "Thermal contact properties"):
  *   C = F sigma / (1/eps_A + 1/eps_B - 1)
  * sigma Stefan-Boltzmann constant, F effective view factor (0..1), eps_A/eps_B emissivities (0..1].
@@ -354,6 +361,9 @@ PetscReal TslContactFace3HullBound(PetscInt kind);
  * four tri3, A/12 per corner and A/4 per midside node of a flat face, as the modified elements do for
  * pressure; *area = int dA (may be NULL). Sums to the face area exactly for flat faces. */
 PetscErrorCode TslContactFace3Integrate(PetscInt kind, const PetscReal x[], PetscReal w[], PetscReal *area);
+
+/* Shape functions N[] of the face family `kind` at the reference coordinates xi[2]. */
+void TslContactFace3ShapeValues(PetscInt kind, const PetscReal xi[2], PetscReal N[]);
 
 /* Input of one 3D contact element: node 0 is the secondary node s, nodes 1..nper the main face's in face
  * order. */

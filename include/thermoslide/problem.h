@@ -101,6 +101,10 @@ PetscErrorCode TslProblemContactRollback(TslProblem prob);
 PetscErrorCode TslProblemContactExplicitIncrement(TslProblem prob, PetscBool search, PetscInt *nrepair);
 PetscErrorCode TslProblemContactNodePenalty(TslProblem prob, PetscInt i, PetscReal *k, PetscInt *lnode, PetscInt main[], PetscInt *nmain);
 PetscInt       TslProblemContactNodeCount(TslProblem prob);
+/* The interface heat exchange's share of the explicit thermal limit on this rank: min over the owned
+ * secondary nodes of 2 / (k_eff A (1/C_s + 1/C_m)) (gap conductance + linearised gap radiation at the last
+ * evaluation; C the lumped capacities, local form with ghosts) and the node's global id (-1: none). */
+PetscErrorCode TslProblemContactHeatIncrement(TslProblem prob, const PetscScalar C[], PetscReal *dt, PetscInt *node);
 
 /* Largest temperature change over the increment (all ranks). */
 PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta);
@@ -132,6 +136,16 @@ typedef struct {
  *       same element pass as Fi.
  * The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets M a = Fe - Fi - Fc - Fv. */
 PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], Vec Fv, TslExplicitRates *rates);
+/* Kinematic contact (src/physics/contact_kinematic.c; docs/explicit.md). SetKinematic: the pairs with
+ * MECHANICAL CONSTRAINT=KINEMATIC become kinematic for an explicit step (explicit_step true) or ordinary
+ * again (false); *any: some pair is (the same on all ranks). Kinematic pairs are left out of
+ * TslProblemExplicitForces' Fc and of the stable increment's contact term. KinematicStiffness (collective):
+ * each kinematic node's stiffness that closes its gap in an increment with h h_avg = hh, from the lumped
+ * masses M and the prescribed-dof mask Mask (ghosts updated), W a work vector. KinematicForces (collective):
+ * the kinematic pairs' forces and heat at the current solution (the predicted state) into Fk, as Fc. */
+PetscErrorCode TslProblemContactSetKinematic(TslProblem prob, PetscBool explicit_step, PetscBool *any);
+PetscErrorCode TslProblemContactKinematicStiffness(TslProblem prob, Vec M, Vec Mask, Vec W, PetscReal hh);
+PetscErrorCode TslProblemExplicitKinematicForces(TslProblem prob, Vec Fk, TslExplicitRates *rates);
 /* Lumped nodal mass in the displacement slots (element e's mass times scale[e]; scale NULL: 1) and lumped
  * capacity dQ/dtheta in the temperature slot, at the current temperatures (collective). An element with a
  * non-positive lumped mass at a node is a user error naming it. */

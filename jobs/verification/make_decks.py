@@ -682,7 +682,9 @@ if __name__ == "__main__":
         sys.exit(0)
     if len(sys.argv) >= 2 and sys.argv[1] == "--explicit":
         for series in ("friction", "conductance"):
-            sliding_explicit(series, "PENALTY")  # KINEMATIC: not implemented yet (docs/explicit.md)
+            for constraint in ("PENALTY", "KINEMATIC"):
+                sliding_explicit(series, constraint)
+        sliding_explicit("radiation", "KINEMATIC")
         sys.exit(0)
     contact_jacobian()
     temperature_tables()

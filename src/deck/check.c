@@ -273,8 +273,6 @@ static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
   if (m->nequation) CHECK(PETSC_FALSE, m->equations[0].loc, "*EQUATION is not supported in explicit steps (step %s at %s)", s->name, where);
   /* surface-to-surface points have no penalty estimate in the stable increment yet */
   for (PetscInt k = 0; k < m->npair; k++) {
-    CHECK(!m->pairs[k].kinematic, m->pairs[k].loc,
-          "*CONTACT PAIR, MECHANICAL CONSTRAINT=KINEMATIC is not supported yet (use PENALTY, the default here; step %s at %s)", s->name, where);
     CHECK(m->pairs[k].type != TSL_CONTACT_SURFACE_TO_SURFACE, m->pairs[k].loc,
           "*CONTACT PAIR, TYPE=SURFACE TO SURFACE is not supported in explicit steps yet (node to surface is; step %s at %s)", s->name, where);
   }

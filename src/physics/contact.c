@@ -119,12 +119,21 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode          *cn = &p->cnode[i];
     const TslContactSurface *cs;
+    const TslContactLaw     *law;
+    TslContactLaw            kl;
     TslContactInput          in;
     TslContactInput3         in3;
     PetscInt                 nodes[TSL_CONTACT_MAX_NODES], n, nu, ld[TSL_CONTACT_MAX_DOF];
 
     if (cn->seg < 0) continue;
     cs = &p->csurf[cn->pair];
+    if (cs->kinematic != p->select_kinematic) continue; /* the other enforcement's evaluation */
+    if (cs->kinematic) {
+      if (!(cn->k_kin > 0)) continue; /* both sides prescribed (or no mass): nothing to correct */
+      kl  = cs->law;
+      law = &kl;
+      TslContactKinematicLaw(&kl, cn->k_kin / TslProblemContactNodeArea(p, cn));
+    } else law = &cs->law;
     nu = cs->nu;
     if (cs->dim == 3) PetscCall(TslProblemContact3Input(p, cn, xa, &in3, nodes, &n));
     else ElementInput(p, cn, xa, &in, nodes, &n, &nb);
@@ -134,8 +143,9 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
       PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, NULL, NULL));
       continue;
     }
-    if (cs->dim == 3) PetscCall(TslContactElement3(&cs->law, &in3, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
-    else PetscCall(TslContactElement(&cs->law, &in, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
+    if (cs->dim == 3) PetscCall(TslContactElement3(law, &in3, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
+    else PetscCall(TslContactElement(law, &in, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
+    cn->fresh = PETSC_TRUE;
     if (f || A) PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
     if (mode == ASM_RESIDUAL)
       PetscCall(PetscInfo(NULL, "contact node %" PetscInt_FMT ": segment %" PetscInt_FMT " xi %g gap %g p %g slip %g shear %g slip_circ %g shear_circ %g q %g status %d\n",
@@ -147,7 +157,7 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
       heat->friction_heat += cn->out.heat_generation * cn->out.area;
     }
   }
-  PetscCall(TslProblemContactS2SAssemble(p, mode, xa, f, A, heat));
+  if (!p->select_kinematic) PetscCall(TslProblemContactS2SAssemble(p, mode, xa, f, A, heat));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -472,10 +482,13 @@ PetscErrorCode TslProblemContactCommit(TslProblem p)
   }
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode *cn = &p->cnode[i];
-    if (cn->seg >= 0) {
+    /* a kinematic pair's node is evaluated by the corrector of an increment: one that was not (the first
+     * force evaluation of an explicit step, or k_kin = 0) has no new state to commit */
+    if (cn->seg >= 0 && (cn->fresh || !p->csurf[cn->pair].kinematic)) {
       PetscCall(TslContactStateUpdate(&cn->out, &cn->hist));
       cn->cslip += PetscHypotReal(cn->out.slip, cn->out.slip_circ); /* the slip vector's length (twist: 2 components) */
     }
+    cn->fresh   = PETSC_FALSE;
     cn->seg_c   = cn->seg;
     cn->hist_c  = cn->hist;
     cn->cslip_c = cn->cslip;
@@ -507,22 +520,63 @@ PetscErrorCode TslProblemContactExplicitIncrement(TslProblem p, PetscBool search
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscReal TslProblemContactNodeArea(TslProblem p, const TslContactNode *cn)
+{
+  const TslContactSurface *cs = &p->csurf[cn->pair];
+  PetscReal                A  = cn->length;
+  if (cs->dim != 3) A *= TslKinematicsRevolves(cs->kin) ? 2 * PETSC_PI * p->m->node_xyz[3 * cn->lnode] : cs->thickness;
+  return A;
+}
+
 /* The normal penalty stiffness eps_n A of owned secondary node i (node-to-surface pairs; A its contact
- * area: tributary length times thickness, or times 2 pi r, or the tributary area in 3D), its local node
- * and the local nodes of its main face (-1 padded, nper of them; none while unpaired). For the explicit
- * stable increment. */
+ * area: tributary length times thickness, or times 2 pi r, or the tributary area in 3D; 0 for a kinematic
+ * pair), its local node and the local nodes of its main face (-1 padded, nper of them; none while
+ * unpaired). For the explicit stable increment. */
 PetscErrorCode TslProblemContactNodePenalty(TslProblem p, PetscInt i, PetscReal *k, PetscInt *lnode, PetscInt main[], PetscInt *nmain)
 {
   const TslContactNode    *cn = &p->cnode[i];
   const TslContactSurface *cs = &p->csurf[cn->pair];
-  PetscReal                A  = cn->length;
 
   PetscFunctionBeginUser;
-  if (cs->dim != 3) A *= TslKinematicsRevolves(cs->kin) ? 2 * PETSC_PI * p->m->node_xyz[3 * cn->lnode] : cs->thickness;
-  *k     = cs->law.eps_n * A;
+  *k     = cs->kinematic ? 0 : cs->law.eps_n * TslProblemContactNodeArea(p, cn); /* kinematic: no spring in the stable increment */
   *lnode = cn->lnode;
   *nmain = cn->seg >= 0 ? cs->nper : 0;
   for (PetscInt a = 0; a < *nmain; a++) main[a] = cs->main_lnode[cs->nper * cn->seg + a];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The interface's share of the explicit thermal limit (forward Euler across a contact): at each owned
+ * secondary node the interface conductance kA (the gap conductance of its last evaluation plus the gap
+ * radiation's linearisation 4 C (theta - theta_Z)^3 at the hotter of the node and its main face's nodes, times
+ * the node's area) couples the node's lumped capacity C_s to the smallest of its main face's C_m:
+ * lambda = kA (1/C_s + 1/C_m), dt = 2 / lambda. Minimum over this rank's nodes and the node (global id, -1
+ * without any). C: the lumped capacities in the temperature slots (local form, ghosts included). */
+PetscErrorCode TslProblemContactHeatIncrement(TslProblem p, const PetscScalar C[], PetscReal *dt, PetscInt *node)
+{
+  Vec                xl;
+  const PetscScalar *xa;
+
+  PetscFunctionBeginUser;
+  *dt = PETSC_MAX_REAL, *node = -1;
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    const TslContactNode    *cn = &p->cnode[i];
+    const TslContactSurface *cs = &p->csurf[cn->pair];
+    const PetscInt           th = cs->slot[p->dim], *mf = &cs->main_lnode[cs->nper * PetscMax(0, cn->seg)];
+    PetscReal                theta, k, kA, Cs, Cm, dc;
+
+    if (cn->seg < 0) continue;
+    theta = PetscRealPart(xa[cn->lnode * p->ndof + th]);
+    Cs = Cm = PetscRealPart(C[cn->lnode * p->ndof + th]);
+    for (PetscInt a = 0; a < cs->nper; a++)
+      if (mf[a] >= 0) theta = PetscMax(theta, PetscRealPart(xa[mf[a] * p->ndof + th])), Cm = PetscMin(Cm, PetscRealPart(C[mf[a] * p->ndof + th]));
+    k  = cn->out.conductance + 4 * cn->out.radiation_C * PetscPowRealInt(PetscMax(0, theta - cs->law.theta_zero), 3);
+    kA = k * TslProblemContactNodeArea(p, cn);
+    if (!(kA > 0) || !(Cs > 0) || !(Cm > 0)) continue;
+    dc = 2.0 / (kA * (1 / Cs + 1 / Cm));
+    if (dc < *dt) *dt = dc, *node = p->m->node_id[cn->lnode];
+  }
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

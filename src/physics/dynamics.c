@@ -144,6 +144,36 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemExplicitKinematicForces(TslProblem p, Vec Fk, TslExplicitRates *rates)
+{
+  Vec                xl, kl;
+  const PetscScalar *xa;
+  PetscScalar       *fk;
+  AsmHeat            heat;
+  PetscReal          loc[3], g[3];
+  TslFailure         fail;
+  PetscErrorCode     ierr;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&heat, sizeof(heat)));
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  PetscCall(BeginLocal(Fk, &kl, &fk));
+  p->select_kinematic = PETSC_TRUE;
+  PetscCall(TslCaptureBegin());
+  ierr = TslProblemContactAssemble(p, ASM_RAW, xa, fk, NULL, &heat);
+  PetscCall(TslCaptureEnd());
+  p->select_kinematic = PETSC_FALSE;
+  PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
+  PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit kinematic contact: %s", p->fail_msg);
+  PetscCall(EndLocal(Fk, &kl, &fk));
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  loc[0] = heat.interface, loc[1] = heat.dissipation, loc[2] = heat.friction_heat;
+  PetscCall(MPIU_Allreduce(loc, g, 3, MPIU_REAL, MPIU_SUM, p->comm));
+  PetscCall(PetscMemzero(rates, sizeof(*rates)));
+  rates->interface_heat = g[0], rates->dissipation = g[1], rates->friction_heat = g[2];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 typedef struct {
   PetscScalar     *m;
   const PetscReal *scale;

@@ -27,6 +27,10 @@ typedef struct {
   PetscInt   dim;
   PetscInt  *kind;
   PetscReal *nnormal;
+  /* MECHANICAL CONSTRAINT=KINEMATIC in the running explicit step (TslProblemContactSetKinematic): the pair is
+   * evaluated only by the kinematic corrector (src/physics/contact_kinematic.c), each node with its own
+   * penalty k_kin / A */
+  PetscBool kinematic;
 } TslContactSurface;
 
 /* A secondary node owned by this rank: its pairing and history (current and committed). */
@@ -37,6 +41,8 @@ typedef struct {
   TslContactState hist, hist_c;
   PetscReal         cslip, cslip_c; /* accumulated slip */
   TslContactOutput  out;            /* last evaluation */
+  PetscBool         fresh;          /* evaluated since the last commit (a kinematic pair commits only such nodes) */
+  PetscReal         k_kin;          /* kinematic pairs: the stiffness that closes the node's gap in one increment */
 } TslContactNode;
 
 /* Storage of the neighbours' nodes that a TslContactInput points to (smoothing). */
@@ -115,6 +121,7 @@ struct _p_TslProblem {
   TslContactNode    *cnode;
   PetscReal          augment_tol;
   PetscBool          pattern_stale; /* a rollback changed the pairing: the matrix pattern is the failed attempt's */
+  PetscBool          select_kinematic; /* TslProblemContactAssemble evaluates the kinematic pairs (true) or the others */
   TslContactS2S      s2s;           /* surface-to-surface pairs (NULL without) */
   char              *pattern_rows;  /* [nn*ndof] kind of each row (free, prescribed, pinned, eliminated) when J's pattern was built */
   /* Direct insertion (TslProblemPreallocate): for an element whose nodes are all owned and whose rows are
@@ -167,6 +174,9 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
                                 const PetscReal K[]);
 PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);
 PetscErrorCode TslProblemContactSetUp(TslProblem p);
+/* The contact area A of a secondary node: tributary length x thickness (or x 2 pi r), or the 3D tributary area
+ * (reference configuration; the kernels' out.area). */
+PetscReal TslProblemContactNodeArea(TslProblem p, const TslContactNode *cn);
 /* 3D node-to-surface (contact3.c): the kernel input of a paired node (its local nodes in kernel order, *n of
  * them), the pairing of the pair's owned secondary nodes (*changed counts new pairings), whether a converged
  * projection left its face, and the nodal normals at the state xa (at set-up and after each accepted

@@ -29,8 +29,10 @@ typedef struct {
   Vec             X, Xold;         /* the problem's solution and the state at the start of the increment */
   Vec             V, M, Mask;      /* half-step velocity, lumped mass / capacity, prescribed dofs */
   Vec             Fi, Fe, Fc, Fv;  /* force vectors of the current state (Fc NULL without contact, Fv without bulk viscosity) */
+  Vec             Fk, W;           /* kinematic contact: the corrector's forces at the predicted state, a work vector (NULL without) */
   PetscReal      *dt_mech, *dt_heat, *scale, *eta; /* [nelem] element stable increments, mass scale factors, b1 L_e / c_d */
   PetscReal       dt_stable, dt;   /* stable increment (with safety) and the increment used */
+  PetscReal       lim_mech, lim_heat, lim_cheat; /* limits: mechanical (elements and penalty), elements' thermal, interface heat exchange */
   PetscReal       safety;          /* -tsl_explicit_safety */
   PetscInt        progress;        /* -tsl_explicit_progress: increments between progress lines */
   PetscInt        history_rows;    /* -tsl_explicit_history: history rows per step besides the frames */
@@ -40,6 +42,7 @@ typedef struct {
   PetscBool       capacity_varies; /* temperature-dependent c or rho: capacity re-lumped every increment */
   PetscReal       rates_reaction_heat, stored_rate;
   TslExplicitRates rates;
+  TslExplicitRates krates;         /* the kinematic corrector's heat rates (its slip measured over the increment it corrects) */
 } Explicit;
 
 /* the energies since the start of the job (Driver.energy) */
@@ -117,6 +120,42 @@ static PetscErrorCode ContactIncrement(Explicit *x, const PetscScalar *m, PetscR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The interface's share of the thermal limit (forward Euler across a contact; TslProblemContactHeatIncrement),
+ * the minimum over the ranks (MINLOC). It changes with the pressure and the temperatures: recomputed at every
+ * pairing search. */
+static PetscErrorCode ContactHeatIncrement(Explicit *x, PetscReal *dt, int *id)
+{
+  struct {
+    double v;
+    int    id;
+  } loc, g;
+  Vec                ml;
+  const PetscScalar *m;
+  PetscReal          dc;
+  PetscInt           node;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGhostUpdateBegin(x->M, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(x->M, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostGetLocalForm(x->M, &ml));
+  PetscCall(VecGetArrayRead(ml, &m));
+  PetscCall(TslProblemContactHeatIncrement(x->p, m, &dc, &node));
+  PetscCall(VecRestoreArrayRead(ml, &m));
+  PetscCall(VecGhostRestoreLocalForm(x->M, &ml));
+  loc.v = dc, loc.id = (int)node;
+  PetscCallMPI(MPI_Allreduce(&loc, &g, 1, MPI_DOUBLE_INT, MPI_MINLOC, x->comm));
+  *dt = g.v, *id = g.id;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The increment from the limits: the mechanical one, and the thermal one of the elements and the interface
+ * (first-order: their eigenvalues add at most, so 1/dt = 1/dt_e + 1/dt_c), times the safety and SCALE FACTOR. */
+static void CombineLimits(Explicit *x)
+{
+  const PetscReal heat = x->lim_cheat < PETSC_MAX_REAL ? 1.0 / (1.0 / x->lim_heat + 1.0 / x->lim_cheat) : x->lim_heat;
+  x->dt_stable         = x->safety * x->step->dt_scale * PetscMin(x->lim_mech, heat);
+}
+
 /* The damping fraction xi of the highest element mode (b1 for the linear bulk viscosity; Abaqus
  * documentation, "Bulk viscosity") shortens its stable increment to (2 / omega)(sqrt(1 + xi^2) - xi). */
 static PetscReal BulkViscosityFactor(PetscReal xi)
@@ -158,12 +197,22 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
   /* a secondary node is both in its elements and on the contact spring: their eigenvalues add at most
    * (omega^2 <= omega_e^2 + omega_c^2), so 1/dt^2 = 1/dt_e^2 + 1/dt_c^2 bounds the combined limit */
   dt_mech      = g[2].id >= 0 ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(g[0].v) + 1.0 / PetscSqr(g[2].v)) : g[0].v;
-  x->dt_stable = x->safety * x->step->dt_scale * PetscMin(dt_mech, g[1].v);
+  x->lim_mech  = dt_mech;
+  x->lim_heat  = g[1].v;
+  x->lim_cheat = PETSC_MAX_REAL;
+  if (x->m->npair) {
+    int id;
+    PetscCall(ContactHeatIncrement(x, &x->lim_cheat, &id));
+    if (print && id >= 0)
+      PetscCall(PetscPrintf(x->comm, "  contact heat exchange (k A on the lumped capacities) %.4e at secondary node %d; with the elements' %.4e: thermal %.4e\n",
+                            (double)x->lim_cheat, id, (double)x->lim_heat, 1.0 / (1.0 / (double)x->lim_heat + 1.0 / (double)x->lim_cheat)));
+  }
+  CombineLimits(x);
   if (print) {
     PetscCall(PetscPrintf(x->comm, "  stable increment %.4e (safety %g x scale factor %g): mechanical %.4e at element %d%s, thermal %.4e at element %d; %s controls\n",
                           (double)x->dt_stable, (double)x->safety, (double)x->step->dt_scale, g[0].v, g[0].id,
                           x->step->bv_linear > 0 ? " (with the linear bulk viscosity's damping)" : "", g[1].v, g[1].id,
-                          dt_mech <= g[1].v ? "the mechanical limit" : "the thermal (diffusion) limit"));
+                          dt_mech * x->safety * x->step->dt_scale <= x->dt_stable * (1 + 1e-12) ? "the mechanical limit" : "the thermal (diffusion) limit"));
     if (g[2].id >= 0)
       PetscCall(PetscPrintf(x->comm, "  contact penalty (eps_n A on the lumped masses) %.4e at secondary node %d; with the elements' %.4e: mechanical %.4e\n", g[2].v,
                             g[2].id, g[0].v, (double)dt_mech));
@@ -255,17 +304,59 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Kinematic contact (src/physics/contact_kinematic.c): the predictor moves the free displacement dofs to
+ *   u* = u_n + h (v_{n-1/2} + h_avg a*),   M a* = Fe - Fi - Fc - Fv   (without the kinematic pairs),
+ * prescribed dofs to t_{n+1}, temperatures kept at theta_n; the kinematic pairs are evaluated there into Fk
+ * (each node with the stiffness that closes its gap in this increment), and X is restored: Advance's update
+ * then includes Fk like any other force (a_n = a* - M^-1 Fk), so the corrected gaps close and the energy
+ * columns account for it (ALLCW). The temperatures see the contact heat at (u*, theta_n): forward Euler. */
+static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_avg, PetscReal t_new, PetscReal total_new)
+{
+  PetscScalar       *u;
+  const PetscScalar *v, *m, *mask, *fi, *fe, *fc = NULL, *fv = NULL;
+  const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemContactKinematicStiffness(x->p, x->M, x->Mask, x->W, h * h_avg));
+  PetscCall(VecGetArray(x->X, &u));
+  PetscCall(VecGetArrayRead(x->V, &v));
+  PetscCall(VecGetArrayRead(x->M, &m));
+  PetscCall(VecGetArrayRead(x->Mask, &mask));
+  PetscCall(VecGetArrayRead(x->Fi, &fi));
+  PetscCall(VecGetArrayRead(x->Fe, &fe));
+  if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
+  if (x->Fv) PetscCall(VecGetArrayRead(x->Fv, &fv));
+  for (PetscInt i = 0; i < n; i++)
+    if (mask[i] == 0 && i % x->ndof != th) u[i] += h * (v[i] + h_avg * (fe[i] - fi[i] - (fc ? fc[i] : 0) - (fv ? fv[i] : 0)) / m[i]);
+  if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
+  if (x->Fv) PetscCall(VecRestoreArrayRead(x->Fv, &fv));
+  PetscCall(VecRestoreArrayRead(x->Fe, &fe));
+  PetscCall(VecRestoreArrayRead(x->Fi, &fi));
+  PetscCall(VecRestoreArrayRead(x->Mask, &mask));
+  PetscCall(VecRestoreArrayRead(x->M, &m));
+  PetscCall(VecRestoreArrayRead(x->V, &v));
+  PetscCall(VecRestoreArray(x->X, &u));
+  PetscCall(TslProblemSetTime(x->p, t_new, h, total_new));
+  PetscCall(TslProblemApplyPrescribed(x->p, x->X));
+  PetscCall(TslPhaseBegin(TSL_PHASE_ASSEMBLY));
+  PetscCall(TslProblemExplicitKinematicForces(x->p, x->Fk, &x->krates));
+  PetscCall(TslPhaseEnd(TSL_PHASE_ASSEMBLY));
+  PetscCall(VecCopy(x->Xold, x->X));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* One increment from the state X = x_n (forces evaluated there) to x_{n+1} at step time t + h. */
 static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal h_prev, PetscReal t_new, PetscReal total_new)
 {
   PetscScalar       *u, *v;
-  const PetscScalar *uo, *m, *mask, *fi, *fe, *fc = NULL, *fv = NULL;
+  const PetscScalar *uo, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL, *fv = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
   const PetscReal    h_avg = h_prev > 0 ? 0.5 * (h + h_prev) : 0.5 * h; /* from rest at the start: v_{1/2} = dt/2 a_0 */
   PetscReal          loc[8] = {0, 0, 0, 0, 0, 0, 0, 0}, g[8];
 
   PetscFunctionBeginUser;
   PetscCall(VecCopy(x->X, x->Xold));
+  if (x->Fk) PetscCall(KinematicCorrector(x, h, h_avg, t_new, total_new));
   PetscCall(VecGetArray(x->X, &u));
   PetscCall(VecGetArray(x->V, &v));
   PetscCall(VecGetArrayRead(x->M, &m));
@@ -273,9 +364,10 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArrayRead(x->Fi, &fi));
   PetscCall(VecGetArrayRead(x->Fe, &fe));
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
+  if (x->Fk) PetscCall(VecGetArrayRead(x->Fk, &fk));
   if (x->Fv) PetscCall(VecGetArrayRead(x->Fv, &fv));
   for (PetscInt i = 0; i < n; i++) { /* free dofs: the update and the forces' work */
-    PetscReal f = fe[i] - fi[i] - (fc ? fc[i] : 0) - (fv ? fv[i] : 0), vo = v[i], w;
+    PetscReal fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon - (fv ? fv[i] : 0), vo = v[i], w;
     if (mask[i] != 0) continue;
     if (i % x->ndof == th) {
       u[i] += h * f / m[i];
@@ -286,7 +378,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     w = h_avg * 0.5 * (vo + v[i]);
     loc[0] += fi[i] * w;
     loc[1] += fe[i] * w;
-    loc[2] += (fc ? fc[i] : 0) * w;
+    loc[2] += fcon * w;
     loc[7] += (fv ? fv[i] : 0) * w;
   }
   PetscCall(VecRestoreArray(x->X, &u));
@@ -296,7 +388,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArray(x->X, &u));
   PetscCall(VecGetArrayRead(x->Xold, &uo));
   for (PetscInt i = 0; i < n; i++) { /* prescribed dofs: velocity, reaction and work; stored heat */
-    PetscReal f = fe[i] - fi[i] - (fc ? fc[i] : 0) - (fv ? fv[i] : 0), vo = v[i], w, s;
+    PetscReal fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon - (fv ? fv[i] : 0), vo = v[i], w, s;
     if (i % x->ndof == th) {
       PetscReal rate = m[i] * (u[i] - uo[i]) / h; /* heat stored at the node per unit time */
       loc[6] += rate;
@@ -309,12 +401,13 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     w    = h_avg * 0.5 * (vo + v[i]);
     loc[0] += fi[i] * w;
     loc[1] += (fe[i] + s) * w;
-    loc[2] += (fc ? fc[i] : 0) * w;
+    loc[2] += fcon * w;
     loc[7] += (fv ? fv[i] : 0) * w;
   }
   PetscCall(VecRestoreArrayRead(x->Xold, &uo));
   PetscCall(VecRestoreArray(x->X, &u));
   if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
+  if (x->Fk) PetscCall(VecRestoreArrayRead(x->Fk, &fk));
   if (x->Fv) PetscCall(VecRestoreArrayRead(x->Fv, &fv));
   PetscCall(VecRestoreArrayRead(x->Fe, &fe));
   PetscCall(VecRestoreArrayRead(x->Fi, &fi));
@@ -333,6 +426,10 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   en->fd += x->rates.dissipation * x->dt_forces;
   x->d->dissipated += x->rates.dissipation * x->dt_forces;
   x->d->absorbed += x->rates.friction_heat * h;
+  /* the kinematic corrector measured its slip over this increment */
+  en->fd += x->krates.dissipation * h;
+  x->d->dissipated += x->krates.dissipation * h;
+  x->d->absorbed += x->krates.friction_heat * h;
   x->rates_reaction_heat = g[5];
   x->stored_rate         = g[6];
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -372,11 +469,11 @@ static PetscErrorCode HistoryRow(Explicit *x, Energies *en, PetscInt s, PetscInt
   row[7]  = x->rates.film_out;
   row[8]  = x->rates_reaction_heat;
   row[9]  = x->stored_rate;
-  row[10] = x->rates.interface_heat;
-  row[11] = x->rates.dissipation;
+  row[10] = x->rates.interface_heat + x->krates.interface_heat;
+  row[11] = x->rates.dissipation + x->krates.dissipation;
   row[12] = en->fd;
   row[13] = d->absorbed;
-  row[14] = row[6] + row[8] + x->rates.friction_heat - row[7] - row[9];
+  row[14] = row[6] + row[8] + x->rates.friction_heat + x->krates.friction_heat - row[7] - row[9];
   PetscCall(TslProblemEnergies(x->p, &row[15], &row[16]));
   row[HIST_ENERGY + 0] = en->ke;
   row[HIST_ENERGY + 1] = en->ie;
@@ -400,6 +497,8 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fe));
   PetscCall(VecDestroy(&x->Fc));
   PetscCall(VecDestroy(&x->Fv));
+  PetscCall(VecDestroy(&x->Fk));
+  PetscCall(VecDestroy(&x->W));
   PetscCall(PetscFree4(x->dt_mech, x->dt_heat, x->scale, x->eta));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -456,12 +555,23 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(VecDuplicate(x.X, &x.Mask));
   PetscCall(VecDuplicate(x.X, &x.Fi));
   PetscCall(VecDuplicate(x.X, &x.Fe));
-  if (x.m->npair) PetscCall(VecDuplicate(x.X, &x.Fc));
+  if (x.m->npair) {
+    PetscBool kinematic;
+    PetscCall(VecDuplicate(x.X, &x.Fc));
+    PetscCall(TslProblemContactSetKinematic(x.p, PETSC_TRUE, &kinematic));
+    if (kinematic) {
+      PetscCall(VecDuplicate(x.X, &x.Fk));
+      PetscCall(VecDuplicate(x.X, &x.W));
+      PetscCall(VecZeroEntries(x.Fk));
+    }
+  }
   if (x.step->bv_linear > 0) PetscCall(VecDuplicate(x.X, &x.Fv));
   PetscCall(PetscMalloc4(x.m->nelem, &x.dt_mech, x.m->nelem, &x.dt_heat, x.m->nelem, &x.scale, x.m->nelem, &x.eta));
   for (PetscInt i = 0; i < x.m->nmaterial; i++)
     if (TslMaterialIsTemperatureDependent(&x.m->materials[i])) x.capacity_varies = PETSC_TRUE;
   PetscCall(TslProblemConstrainedMask(x.p, x.Mask));
+  PetscCall(VecGhostUpdateBegin(x.Mask, INSERT_VALUES, SCATTER_FORWARD)); /* the kinematic corrector reads main nodes' masks */
+  PetscCall(VecGhostUpdateEnd(x.Mask, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(TslProblemSetTime(x.p, 0, 0, *total_time));
   PetscCall(TslProblemApplyPrescribed(x.p, x.X));
   if (x.m->npair) {
@@ -510,6 +620,12 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
         break;
       }
     PetscCall(Forces(&x, h, inc));
+    if (x.m->npair && inc % x.search_every == 0) { /* the interface's conductance follows pressure and temperature */
+      int id;
+      PetscCall(ContactHeatIncrement(&x, &x.lim_cheat, &id));
+      CombineLimits(&x);
+      if (x.step->dt_user <= 0) x.dt = x.dt_stable;
+    }
     frame = (PetscBool)(last || t >= t_frame - eps);
     if (frame)
       while (t_frame <= t + eps) t_frame += dt_frame;
@@ -538,6 +654,10 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
                           x.search_every, x.nrepair));
   PetscCall(TslDriverPrintTables(d, x.step));
   d->explicit_last = s;
+  if (x.m->npair) {
+    PetscBool any;
+    PetscCall(TslProblemContactSetKinematic(x.p, PETSC_FALSE, &any)); /* implicit steps ignore the parameter */
+  }
   PetscCall(VecDestroy(&d->mass));
   d->mass = x.M;
   x.M     = NULL;

@@ -1,0 +1,134 @@
+/* Kinematic contact enforcement in explicit steps (*CONTACT PAIR, MECHANICAL CONSTRAINT=KINEMATIC;
+ * docs/explicit.md, "Kinematic contact").
+ *
+ * A predictor-corrector (src/solve/explicit.c): the increment is first advanced without the kinematic
+ * pairs' forces; their nodes are then evaluated at that predicted state by the ordinary node-to-surface
+ * kernels, each node with its own penalty k_s / A_s, and the resulting forces correct the accelerations of
+ * the same increment. With the nodal masses of the lumped mass matrix, a force f on the secondary node s
+ * (and -N_j f on the main face's nodes j) changes the gap in one increment by
+ *   f h h_avg (1/m_s + sum_j N_j^2 / m_j)   (h the new increment, h_avg the mean of the last two),
+ * i.e. the gaps of all nodes respond to their forces through the compliance matrix
+ *   A = h h_avg (M_s^-1 + B M_m^-1 B^T),   B_sj = N_j(s).
+ * Closing every gap exactly would need A^-1 (a solve coupling the nodes that share main nodes). This
+ * corrector uses A lumped by rows, k_s = 1 / (A 1)_s = 1 / (h h_avg (1/m_s + sum_j N_j(s) w_j / m_j)) with
+ * w_j = sum_s N_j(s) the load of main node j: exact for a node alone on its face and for a uniform
+ * penetration of a whole surface (the quasi-static case), and never overshooting (A has non-negative
+ * entries, so diag(A 1) - A is diagonally dominant and the remaining gap (I - A diag(A 1)^-1) g has
+ * eigenvalues in [0, 1)): what is left is closed by the next increments, and the corrector adds no spring
+ * to the stable increment. Prescribed directions count as infinitely heavy (1/m = 0).
+ *
+ * The same stiffness holds a sticking node (penalty friction's stick stiffness k_s / A_s, no elastic-slip
+ * tolerance; TslContactKinematicLaw), so its predicted slip is undone in the increment up to the Coulomb
+ * limit. The heat terms (gap conductance at the corrector's pressure, radiation at the predicted gap,
+ * frictional heat of the corrected slip) come from the same kernel evaluation. */
+#include "problem_impl.h"
+
+PetscErrorCode TslProblemContactSetKinematic(TslProblem p, PetscBool explicit_step, PetscBool *any)
+{
+  PetscFunctionBeginUser;
+  *any = PETSC_FALSE;
+  for (PetscInt k = 0; k < p->ncsurf; k++) {
+    p->csurf[k].kinematic = (PetscBool)(explicit_step && p->m->pairs[k].kinematic);
+    if (p->csurf[k].kinematic) *any = PETSC_TRUE; /* the pairs are the model's, the same on every rank */
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The face shape functions of node cn at the projection its history starts from (inside the face,
+ * non-negative, summing to 1); *n of them, main face nodes main[] (local, -1 padded). */
+static void FaceWeights(TslProblem p, const TslContactNode *cn, PetscReal N[], PetscInt main[], PetscInt *n)
+{
+  const TslContactSurface *cs  = &p->csurf[cn->pair];
+  PetscReal                sum = 0;
+
+  *n = cs->nper;
+  for (PetscInt a = 0; a < cs->nper; a++) main[a] = cs->main_lnode[cs->nper * cn->seg + a], N[a] = 0;
+  if (cs->dim == 3) {
+    PetscReal xi[2] = {cn->hist.xi_old, cn->hist.eta_old};
+    TslContactFace3ShapeValues(cs->kind[cn->seg], xi, N);
+  } else {
+    PetscReal dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES];
+    TslContactFaceShape(TslContactFaceGet(cs->face), PetscMin(1, PetscMax(0, cn->hist.xi_old)), N, dN, d2N);
+  }
+  for (PetscInt a = 0; a < cs->nper; a++) {
+    if (main[a] < 0) N[a] = 0;
+    N[a] = PetscMax(0, N[a]);
+    sum += N[a];
+  }
+  for (PetscInt a = 0; a < cs->nper; a++) N[a] = sum > 0 ? N[a] / sum : 0;
+}
+
+/* Inverse mass of local node l along the unit vector n (dim components): sum_d n_d^2 / m_d, a prescribed
+ * direction counting as infinitely heavy. */
+static PetscReal InverseMass(TslProblem p, const TslContactSurface *cs, const PetscScalar *m, const PetscScalar *mask, PetscInt l, const PetscReal n[])
+{
+  PetscReal inv = 0;
+  for (PetscInt d = 0; d < p->dim; d++) {
+    const PetscInt  i  = l * p->ndof + cs->slot[d];
+    const PetscReal md = PetscRealPart(m[i]);
+    if (PetscRealPart(mask[i]) == 0 && md > 0) inv += n[d] * n[d] / md;
+  }
+  return inv;
+}
+
+PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask, Vec W, PetscReal hh)
+{
+  Vec                ml, kl, wl;
+  const PetscScalar *m, *mask;
+  PetscScalar       *w;
+
+  PetscFunctionBeginUser;
+  /* the loads w_j of the main nodes, summed over the ranks that own secondary nodes on them */
+  PetscCall(VecGhostGetLocalForm(W, &wl));
+  PetscCall(VecZeroEntries(wl));
+  PetscCall(VecGetArray(wl, &w));
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    const TslContactNode *cn = &p->cnode[i];
+    PetscReal             N[TSL_CONTACT3_MAX_FACE_NODES];
+    PetscInt              main[TSL_CONTACT3_MAX_FACE_NODES], n;
+    if (cn->seg < 0 || !p->csurf[cn->pair].kinematic) continue;
+    FaceWeights(p, cn, N, main, &n);
+    for (PetscInt a = 0; a < n; a++)
+      if (main[a] >= 0) w[main[a] * p->ndof] += N[a];
+  }
+  PetscCall(VecRestoreArray(wl, &w));
+  PetscCall(VecGhostRestoreLocalForm(W, &wl));
+  PetscCall(VecGhostUpdateBegin(W, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateEnd(W, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateBegin(W, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(W, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateBegin(M, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(M, INSERT_VALUES, SCATTER_FORWARD));
+
+  PetscCall(VecGhostGetLocalForm(W, &wl));
+  PetscCall(VecGhostGetLocalForm(M, &ml));
+  PetscCall(VecGhostGetLocalForm(Mask, &kl));
+  PetscCall(VecGetArray(wl, &w));
+  PetscCall(VecGetArrayRead(ml, &m));
+  PetscCall(VecGetArrayRead(kl, &mask));
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    TslContactNode          *cn = &p->cnode[i];
+    const TslContactSurface *cs = &p->csurf[cn->pair];
+    PetscReal                N[TSL_CONTACT3_MAX_FACE_NODES], nrm[3], len, inv;
+    PetscInt                 main[TSL_CONTACT3_MAX_FACE_NODES], n;
+
+    cn->k_kin = 0;
+    if (cn->seg < 0 || !cs->kinematic) continue;
+    /* the direction of the correction: the normal of the node's last evaluation (any, before the first) */
+    nrm[0] = cn->out.normal[0], nrm[1] = cn->out.normal[1], nrm[2] = p->dim == 3 ? cn->out.normal_z : 0;
+    len    = PetscSqrtReal(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    for (PetscInt d = 0; d < 3; d++) nrm[d] = len > 0 ? nrm[d] / len : (d < p->dim ? 1 / PetscSqrtReal((PetscReal)p->dim) : 0);
+    FaceWeights(p, cn, N, main, &n);
+    inv = InverseMass(p, cs, m, mask, cn->lnode, nrm);
+    for (PetscInt a = 0; a < n; a++)
+      if (main[a] >= 0 && N[a] > 0) inv += N[a] * PetscRealPart(w[main[a] * p->ndof]) * InverseMass(p, cs, m, mask, main[a], nrm);
+    cn->k_kin = inv > 0 ? 1 / (hh * inv) : 0;
+  }
+  PetscCall(VecRestoreArrayRead(kl, &mask));
+  PetscCall(VecRestoreArrayRead(ml, &m));
+  PetscCall(VecRestoreArray(wl, &w));
+  PetscCall(VecGhostRestoreLocalForm(Mask, &kl));
+  PetscCall(VecGhostRestoreLocalForm(M, &ml));
+  PetscCall(VecGhostRestoreLocalForm(W, &wl));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
