@@ -410,6 +410,13 @@ def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None):
     head = head.replace("%s series\n" % series, "%s series, explicit, %s contact\n" % (series, constraint.lower()))
     shape, order, kin = family_of(typ)
     fb, ft = faces(shape)
+    # axisymmetric rings (CAX*): slide along z (dof 2), press along r (dof 1), the pressure on the inner face
+    # (r = 1) scaled so that the interface (r = 1.25) sees 100, as sliding_blocks does
+    axi = kin in ("AX", "GAX")
+    sd, pd = ("2", "1") if axi else ("1", "2")
+    pscale = (R_AXI - 1.25) / (R_AXI - 1.5) if axi else 1.0
+    p100 = "%.10g" % (100.0 * pscale)
+    p100 += "" if "." in p100 else ".0"
     T = EXPLICIT_SLIDE
     # 0 -> 1.5 -> -1.5 -> 0 as the implicit decks, each leg a smooth step: at rest at the reversals and the ends
     slide = [(0, 0), (T / 3, 1.5), (2 * T / 3, -1.5), (T, 0)]
@@ -419,22 +426,22 @@ def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None):
                    amplitude("SLIDE", slide, True) + amplitude("RAMP", [(0.0, 0.0), (0.25, 1.0)], True) +
                    "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
     if series == "friction":
-        text += ("*STEP, NAME=PRESS\n" + dyn(0.25) + "*BOUNDARY\n BASE, 1, 2\n TOPFACE, 1, 1\n"
-                 "*DLOAD, AMPLITUDE=RAMP\n PRESSED, P%s, 100.0\n*END STEP\n" % ft +
-                 "*STEP, NAME=SLIDE\n" + dyn(T) + "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, 1, 1, 1.0\n*END STEP\n"
+        text += ("*STEP, NAME=PRESS\n" + dyn(0.25) + "*BOUNDARY\n BASE, 1, 2\n TOPFACE, %s, %s\n" % (sd, sd) +
+                 "*DLOAD, AMPLITUDE=RAMP\n PRESSED, P%s, %s\n*END STEP\n" % (ft, p100) +
+                 "*STEP, NAME=SLIDE\n" + dyn(T) + "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, %s, %s, 1.0\n*END STEP\n" % (sd, sd) +
                  "*STEP, NAME=EQUILIBRATE\n" + dyn(EXPLICIT_EQUILIBRATE, True) + "*END STEP\n")
     else:
         S = EXPLICIT_STEADY
         text += (amplitude("OFF", [(0.0, 0.0), (4.0, 1.0)], True) + amplitude("FLUXDOWN", [(0.0, 1.0), (0.1, 0.0)]) +
                  amplitude("DOUBLE", [(0.0, 1.0), (0.5, 2.0)], True) +
-                 "*STEP, NAME=HEAT\n" + dyn(1.0) + "*BOUNDARY\n BASE, 1, 2\n TOPFACE, 1, 1\n"
-                 "*DLOAD, AMPLITUDE=RAMP\n PRESSED, P%s, 100.0\n*DFLUX\n PRESSED, S%s, 100.0\n*FILM\n FILMED, F%s, 0.0, 10.0\n*END STEP\n"
-                 % (ft, ft, fb) +
-                 "*STEP, NAME=SLIDE\n" + dyn(T) + "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, 1, 1, 1.0\n*END STEP\n"
+                 "*STEP, NAME=HEAT\n" + dyn(1.0) + "*BOUNDARY\n BASE, 1, 2\n TOPFACE, %s, %s\n" % (sd, sd) +
+                 "*DLOAD, AMPLITUDE=RAMP\n PRESSED, P%s, %s\n*DFLUX\n PRESSED, S%s, 100.0\n*FILM\n FILMED, F%s, 0.0, 10.0\n*END STEP\n"
+                 % (ft, p100, ft, fb) +
+                 "*STEP, NAME=SLIDE\n" + dyn(T) + "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, %s, %s, 1.0\n*END STEP\n" % (sd, sd) +
                  "*STEP, NAME=STEADY\n" + dyn(S, True) + "*END STEP\n"
-                 "*STEP, NAME=DOUBLE PRESSURE\n" + dyn(S, True) + "*DLOAD, AMPLITUDE=DOUBLE, OP=NEW\n PRESSED, P%s, 100.0\n*END STEP\n" % ft +
-                 "*STEP, NAME=SLIDE OFF\n" + dyn(4.0) + "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, 2, 2\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, 1, 1, 5.0\n"
-                 "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S%s, 100.0\n*END STEP\n" % ft)
+                 "*STEP, NAME=DOUBLE PRESSURE\n" + dyn(S, True) + "*DLOAD, AMPLITUDE=DOUBLE, OP=NEW\n PRESSED, P%s, %s\n*END STEP\n" % (ft, p100) +
+                 "*STEP, NAME=SLIDE OFF\n" + dyn(4.0) + "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, %s, %s, 5.0\n"
+                 "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S%s, 100.0\n*END STEP\n" % (pd, pd, sd, sd, ft))
     name = "sliding_%s_explicit_%s_%s.inp" % (series, constraint.lower(), typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:
         f.write(text)

@@ -335,17 +335,23 @@ PetscErrorCode TslProblemContactS2SReach(TslProblem p, PetscInt k, const PetscSc
   PetscFunctionBeginUser;
   *excess = 0, *node = -1;
   for (PetscInt i = 0; s && i < s->nface; i++) {
-    const S2SFace           *fc = &s->face[i];
-    const TslContactSurface *cs = &p->csurf[k];
-    PetscReal X[2 * TSL_CONTACT_MAX_FACE_NODES], U[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES], Y[2 * TSL_CONTACT_MAX_FACE_NODES], box[4], rad;
+    const S2SFace           *fc  = &s->face[i];
+    const TslContactSurface *cs  = &p->csurf[k];
+    const PetscInt           dim = p->dim;
+    /* sized for the 3D faces (3 coordinates and 4 unknowns per node; the 2D ones use the first 2 x 3): the
+     * 2D arrays this loop had overflowed the stack on the quad faces of a 3D pair */
+    PetscReal X[3 * TSL_CONTACT3_MAX_FACE_NODES], U[TSL_CONTACT3_NU * TSL_CONTACT3_MAX_FACE_NODES], Y[3 * TSL_CONTACT3_MAX_FACE_NODES], box[6], rad = 0;
     if (fc->pair != k) continue;
-    FaceData(p, fc, xa, X, U);
+    if (dim == 3) PetscCall(TslS2S3FaceData(p, fc, xa, X, U));
+    else FaceData(p, fc, xa, X, U);
     for (PetscInt b = 0; b < fc->nsn; b++)
-      for (PetscInt d = 0; d < 2; d++) Y[2 * b + d] = X[2 * b + d] + U[cs->nu * b + d];
-    PetscCall(TslContactFaceBox(fc->kind, Y, box));
-    rad = 0.5 * PetscMax(box[2] - box[0], box[3] - box[1]) + cs->search_radius;
-    for (PetscInt d = 0; d < 2; d++) {
-      const PetscReal c = 0.5 * (box[d] + box[2 + d]), e = PetscMax(lo[d] - (c - rad), (c + rad) - hi[d]);
+      for (PetscInt d = 0; d < dim; d++) Y[dim * b + d] = X[dim * b + d] + U[(dim == 3 ? TSL_CONTACT3_NU : cs->nu) * b + d];
+    if (dim == 3) PetscCall(TslContactFace3Box(fc->kind, Y, box));
+    else PetscCall(TslContactFaceBox(fc->kind, Y, box));
+    for (PetscInt d = 0; d < dim; d++) rad = PetscMax(rad, 0.5 * (box[dim + d] - box[d]));
+    rad += cs->search_radius;
+    for (PetscInt d = 0; d < dim; d++) {
+      const PetscReal c = 0.5 * (box[d] + box[dim + d]), e = PetscMax(lo[d] - (c - rad), (c + rad) - hi[d]);
       if (e > *excess) *excess = e, *node = p->m->node_id[fc->lnode[0]];
     }
   }
