@@ -692,6 +692,8 @@ if __name__ == "__main__":
             for constraint in ("PENALTY", "KINEMATIC"):
                 sliding_explicit(series, constraint)
         sliding_explicit("radiation", "KINEMATIC")
+        for series in ("friction", "conductance"):  # the axisymmetric rings
+            sliding_explicit(series, "KINEMATIC", typ="CAX4T")
         sys.exit(0)
     contact_jacobian()
     temperature_tables()

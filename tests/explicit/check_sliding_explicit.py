@@ -93,15 +93,22 @@ else:
 
 if series == "friction" and axi:
     # rings: the inner ring's hoop stiffness takes part of the applied pressure, so the interface force N is
-    # measured (the base's axial reaction while the ring slips, mid first leg of the slide: mu N) and the
-    # checks follow from it: dissipation mu N x slip path 6, absorbed eta x that, final temperature absorbed /
-    # (rho c V), V = pi (16 R - 10.75) = 29.25 pi (each 1 %)
+    # measured (the contact pressure over the interface, sum of CPRESS x 2 pi r x tributary length at the
+    # frames of the slide) and the checks follow from it: dissipation mu N x slip path 6, absorbed eta x
+    # that, final temperature absorbed / (rho c V), V = pi (16 R - 10.75) = 29.25 pi (each 1 %)
     s2 = last_row(2)
     frames = [i for i, f in enumerate(r.frames) if int(r.frame(i).attrs["step"]) == 2]
-    window = frames[len(frames) // 6: len(frames) // 3]
-    fr = [abs(r.field("RF", i)[:, 0][~small].sum()) for i in window]
-    friction = float(np.mean(fr))
-    print("friction force while slipping %.6g (spread %.2g), interface force N = %.6g" % (friction, (max(fr) - min(fr)) / friction, friction / 0.1))
+    forces = []
+    for i in frames:
+        cp = r.field("CPRESS", i)[:, 0]
+        sec = np.nonzero(small & (cp > 0))[0]
+        sec = sec[np.argsort(r.xyz[sec, 0])]
+        x = r.xyz[sec, 0]
+        trib = np.diff(np.concatenate([[x[0]], 0.5 * (x[1:] + x[:-1]), [x[-1]]]))
+        forces.append(float((cp[sec] * 2 * np.pi * (R_AXI - r.xyz[sec, 1]) * trib).sum()))
+    N = float(np.mean(forces))
+    friction = 0.1 * N
+    print("interface force N over the slide's frames %.6g (spread %.2g): friction force mu N = %.6g" % (N, (max(forces) - min(forces)) / N, friction))
     print("at the end of the slide: ALLKE %.4g ALLIE %.4g ALLWK %.4g ALLFD %.6g ALLCW %.6g" % tuple(h[k][s2] for k in ("ALLKE", "ALLIE", "ALLWK", "ALLFD", "ALLCW")))
     check("kinetic energy left when the slide has stopped / ALLFD", h["ALLKE"][s2] / h["ALLFD"][s2], 0.0, 0.01)
     dis = h["friction_dissipation_total"][-1]
