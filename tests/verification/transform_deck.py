@@ -27,7 +27,9 @@ import sys
 PASS = {"*HEADING", "*ELSET", "*NSET", "*SURFACE", "*MATERIAL", "*EXPANSION", "*SURFACE INTERACTION",
         "*GAP HEAT GENERATION", "*CONTACT PAIR", "*AMPLITUDE", "*INITIAL CONDITIONS", "*EQUATION", "*STEP",
         "*COUPLED TEMPERATURE-DISPLACEMENT", "*END STEP", "*ELEMENT", "*NODE OUTPUT", "*ELEMENT OUTPUT",
-        "*NODE PRINT", "*EL PRINT", "*SURFACE BEHAVIOR"}
+        "*NODE PRINT", "*EL PRINT", "*SURFACE BEHAVIOR",
+        # explicit steps: times, factors and the bulk viscosity's coefficients are unit-free here
+        "*DYNAMIC TEMPERATURE-DISPLACEMENT", "*FIXED MASS SCALING", "*VARIABLE MASS SCALING", "*BULK VISCOSITY"}
 
 
 def num(v):
