@@ -88,6 +88,12 @@ static PetscErrorCode EndLocal(Vec V, Vec *vl, PetscScalar **a)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode InjectedInternal(void)
+{
+  PetscFunctionBeginUser;
+  SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "injected internal failure (-tsl_debug_fail_kind)");
+}
+
 PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], Vec Fv, TslExplicitRates *rates)
 {
   Vec                xl, il, el, cl = NULL, vl = NULL, fl = NULL;
@@ -113,12 +119,14 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(BeginLocal(Fv, &fl, &c.fv));
   PetscCall(BeginLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
   PetscCall(TslProblemElementLoop(p, xa, xa, ForceElement, &c));
-  /* a contact projection that fails has no cutback to fall back on here: an error on all ranks */
+  /* a contact projection that fails has no cutback to fall back on here: an error on all ranks (as is a
+   * failure injected on one rank for the tests, -tsl_debug_fail_kind internal) */
   PetscCall(TslCaptureBegin());
   ierr = fc ? TslProblemContactAssemble(p, ASM_RAW, xa, fc, NULL, &heat) : PETSC_SUCCESS;
+  if (!ierr && TslInjectNow(&p->inject, TSL_INJECT_INTERNAL, p->step + 1)) ierr = InjectedInternal();
   PetscCall(TslCaptureEnd());
   PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
-  PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit contact: %s", p->fail_msg);
+  PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit increment: %s", p->fail_msg);
   for (PetscInt dof = 0; dof < p->nown * p->ndof; dof++) { /* nodal loads, owned dofs */
     PetscReal v;
     if (!p->nload[dof].active) continue;
