@@ -12,10 +12,11 @@
  * Closing every gap exactly would need A^-1 (a solve coupling the nodes that share main nodes). This
  * corrector uses A lumped by rows, k_s = 1 / (A 1)_s = 1 / (h h_avg (1/m_s + sum_j N_j(s) w_j / m_j)) with
  * w_j = sum_s N_j(s) the load of main node j: exact for a node alone on its face and for a uniform
- * penetration of a whole surface (the quasi-static case), and never overshooting (A has non-negative
- * entries, so diag(A 1) - A is diagonally dominant and the remaining gap (I - A diag(A 1)^-1) g has
- * eigenvalues in [0, 1)): what is left is closed by the next increments, and the corrector adds no spring
- * to the stable increment. Prescribed directions count as infinitely heavy (1/m = 0).
+ * penetration of a whole surface (the quasi-static case), and contracting (A has non-negative entries,
+ * so diag(A 1) - A is diagonally dominant and the remaining gap (I - A diag(A 1)^-1) g has eigenvalues in
+ * [0, 1): smaller in norm, though a node may end slightly open next to one still penetrating): what is left
+ * is closed by the next increments, and the corrector adds no spring to the stable increment. Prescribed
+ * directions count as infinitely heavy (1/m = 0).
  *
  * The same stiffness holds a sticking node (penalty friction's stick stiffness k_s / A_s, no elastic-slip
  * tolerance; TslContactKinematicLaw), so its predicted slip is undone in the increment up to the Coulomb
