@@ -48,6 +48,16 @@ void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps)
   if (law->friction == TSL_CONTACT_FRICTION_PENALTY) law->eps_t = eps, law->elastic_slip = 0;
 }
 
+void TslContactNormalOnlyLaw(TslContactLaw *law)
+{
+  law->friction    = TSL_CONTACT_FRICTION_NONE;
+  law->conductance = TSL_CONTACT_CONDUCTANCE_NONE;
+  law->k_n         = 0;
+  law->F_n         = 0;
+  law->eta         = 0;
+  law->bilateral   = PETSC_TRUE;
+}
+
 /* Abaqus Theory Guide, "Thermal contact properties" (radiation across a gap between surfaces A and B):
  *   q = C [(theta_A - theta_Z)^4 - (theta_B - theta_Z)^4],  C = F sigma / (1/eps_A + 1/eps_B - 1),
  * exact for two close infinite grey plates with F = 1; otherwise F scales the exchange. */
@@ -97,6 +107,10 @@ TslDual TslContactNormalPressure(const TslContactLaw *law, const TslContactState
   TslDual a = DScale(-law->eps_n, g);
 
   if (law->normal == TSL_CONTACT_NORMAL_AUGMENTED) a = DAddC(a, h->lambda);
+  if (law->bilateral) {
+    *closed = PETSC_TRUE;
+    return a;
+  }
   *closed = (PetscBool)(a.v >= -1e-12 * law->eps_n * L);
   return a.v >= 0 ? a : DConst(0);
 }

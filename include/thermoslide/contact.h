@@ -151,6 +151,10 @@ typedef struct {
   /* gap heat generation: eta = fraction of frictional dissipation converted to heat; f = fraction of that heat
    * into the SECONDARY surface, (1 - f) into the main surface (Abaqus *GAP HEAT GENERATION convention). */
   PetscReal eta, f;
+
+  /* bilateral normal law (the further passes of the kinematic corrector only): pN = -eps_n g for either
+   * sign of the gap, so that a pass can also take pressure back from a node that ended open */
+  PetscBool bilateral;
 } TslContactLaw;
 
 /* Fills a law with defaults: penalty normal (eps_n = 0: caller must set it), no friction, no thermal
@@ -163,6 +167,9 @@ PetscErrorCode TslContactLawSetDefaults(TslContactLaw *law);
  * tolerance), so that a sticking node's predicted slip is undone in the same increment. The thermal
  * interaction and LAGRANGE friction are the law's own. */
 void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps);
+/* The law of a further kinematic corrector pass: bilateral normal force alone (no friction, no thermal
+ * interaction). */
+void TslContactNormalOnlyLaw(TslContactLaw *law);
 
 /* Gap radiation constant (Abaqus Theory Guide, "Thermal contact properties"):
  *   C = F sigma / (1/eps_A + 1/eps_B - 1)

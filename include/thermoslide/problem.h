@@ -142,10 +142,17 @@ PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc,
  * TslProblemExplicitForces' Fc and of the stable increment's contact term. KinematicStiffness (collective):
  * each kinematic node's stiffness that closes its gap in an increment with h h_avg = hh, from the lumped
  * masses M and the prescribed-dof mask Mask (ghosts updated), W a work vector. KinematicForces (collective):
- * the kinematic pairs' forces and heat at the current solution (the predicted state) into Fk, as Fc. */
+ * the kinematic pairs' forces and heat at the current solution (the predicted state) into Fk, as Fc, and
+ * their heat rates; pass: a further corrector pass instead (projected Jacobi at the corrected state: the
+ * change of the normal forces alone, each node's pressure kept >= 0) and change[] = its largest pressure
+ * change and largest pressure over the ranks (rates not touched). */
 PetscErrorCode TslProblemContactSetKinematic(TslProblem prob, PetscBool explicit_step, PetscBool *any);
 PetscErrorCode TslProblemContactKinematicStiffness(TslProblem prob, Vec M, Vec Mask, Vec W, PetscReal hh);
-PetscErrorCode TslProblemExplicitKinematicForces(TslProblem prob, Vec Fk, TslExplicitRates *rates);
+/* Collective. What a further corrector pass would change, from the linearised gaps after the correction
+ * -hh M^-1 Fk (Fk the corrector's forces so far, summed on their owners): change[0] the largest pressure
+ * change (each node's pressure kept >= 0), change[1] the largest pressure, over the ranks. */
+PetscErrorCode TslProblemContactKinematicResidual(TslProblem prob, Vec Fk, Vec M, Vec Mask, PetscReal hh, PetscReal change[2]);
+PetscErrorCode TslProblemExplicitKinematicForces(TslProblem prob, Vec Fk, PetscBool pass, PetscReal change[2], TslExplicitRates *rates);
 /* Lumped nodal mass in the displacement slots (element e's mass times scale[e]; scale NULL: 1) and lumped
  * capacity dQ/dtheta in the temperature slot, at the current temperatures (collective). An element with a
  * non-positive lumped mass at a node is a user error naming it. */

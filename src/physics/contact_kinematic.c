@@ -35,9 +35,10 @@ PetscErrorCode TslProblemContactSetKinematic(TslProblem p, PetscBool explicit_st
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The face shape functions of node cn at the projection its history starts from (inside the face,
- * non-negative, summing to 1); *n of them, main face nodes main[] (local, -1 padded). */
-static void FaceWeights(TslProblem p, const TslContactNode *cn, PetscReal N[], PetscInt main[], PetscInt *n)
+/* The face shape functions of node cn at the projection its history starts from (last: at its last
+ * evaluation instead), inside the face, non-negative, summing to 1; *n of them, main face nodes main[]
+ * (local, -1 padded). */
+static void FaceWeights(TslProblem p, const TslContactNode *cn, PetscBool last, PetscReal N[], PetscInt main[], PetscInt *n)
 {
   const TslContactSurface *cs  = &p->csurf[cn->pair];
   PetscReal                sum = 0;
@@ -45,11 +46,11 @@ static void FaceWeights(TslProblem p, const TslContactNode *cn, PetscReal N[], P
   *n = cs->nper;
   for (PetscInt a = 0; a < cs->nper; a++) main[a] = cs->main_lnode[cs->nper * cn->seg + a], N[a] = 0;
   if (cs->dim == 3) {
-    PetscReal xi[2] = {cn->hist.xi_old, cn->hist.eta_old};
+    PetscReal xi[2] = {last ? cn->out.xi : cn->hist.xi_old, last ? cn->out.eta : cn->hist.eta_old};
     TslContactFace3ShapeValues(cs->kind[cn->seg], xi, N);
   } else {
     PetscReal dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES];
-    TslContactFaceShape(TslContactFaceGet(cs->face), PetscMin(1, PetscMax(0, cn->hist.xi_old)), N, dN, d2N);
+    TslContactFaceShape(TslContactFaceGet(cs->face), PetscMin(1, PetscMax(0, last ? cn->out.xi : cn->hist.xi_old)), N, dN, d2N);
   }
   for (PetscInt a = 0; a < cs->nper; a++) {
     if (main[a] < 0) N[a] = 0;
@@ -88,7 +89,7 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask
     PetscReal             N[TSL_CONTACT3_MAX_FACE_NODES];
     PetscInt              main[TSL_CONTACT3_MAX_FACE_NODES], n;
     if (cn->seg < 0 || !p->csurf[cn->pair].kinematic) continue;
-    FaceWeights(p, cn, N, main, &n);
+    FaceWeights(p, cn, PETSC_FALSE, N, main, &n);
     for (PetscInt a = 0; a < n; a++)
       if (main[a] >= 0) w[main[a] * p->ndof] += N[a];
   }
@@ -119,7 +120,7 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask
     nrm[0] = cn->out.normal[0], nrm[1] = cn->out.normal[1], nrm[2] = p->dim == 3 ? cn->out.normal_z : 0;
     len    = PetscSqrtReal(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
     for (PetscInt d = 0; d < 3; d++) nrm[d] = len > 0 ? nrm[d] / len : (d < p->dim ? 1 / PetscSqrtReal((PetscReal)p->dim) : 0);
-    FaceWeights(p, cn, N, main, &n);
+    FaceWeights(p, cn, PETSC_FALSE, N, main, &n);
     inv = InverseMass(p, cs, m, mask, cn->lnode, nrm);
     for (PetscInt a = 0; a < n; a++)
       if (main[a] >= 0 && N[a] > 0) inv += N[a] * PetscRealPart(w[main[a] * p->ndof]) * InverseMass(p, cs, m, mask, main[a], nrm);
@@ -131,5 +132,64 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask
   PetscCall(VecGhostRestoreLocalForm(Mask, &kl));
   PetscCall(VecGhostRestoreLocalForm(M, &ml));
   PetscCall(VecGhostRestoreLocalForm(W, &wl));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The unit normal of node cn's last evaluation. */
+static void LastNormal(TslProblem p, const TslContactNode *cn, PetscReal nrm[3])
+{
+  nrm[0] = cn->out.normal[0], nrm[1] = cn->out.normal[1], nrm[2] = p->dim == 3 ? cn->out.normal_z : 0;
+}
+
+/* Displacement correction -hh Fk / m of local node l along nrm (prescribed directions do not move). */
+static PetscReal Correction(TslProblem p, const TslContactSurface *cs, const PetscScalar *fk, const PetscScalar *m, const PetscScalar *mask, PetscInt l,
+                            const PetscReal nrm[], PetscReal hh)
+{
+  PetscReal du = 0;
+  for (PetscInt d = 0; d < p->dim; d++) {
+    const PetscInt i = l * p->ndof + cs->slot[d];
+    if (PetscRealPart(mask[i]) == 0 && PetscRealPart(m[i]) > 0) du += nrm[d] * (-hh * PetscRealPart(fk[i]) / PetscRealPart(m[i]));
+  }
+  return du;
+}
+
+PetscErrorCode TslProblemContactKinematicResidual(TslProblem p, Vec Fk, Vec M, Vec Mask, PetscReal hh, PetscReal change[2])
+{
+  Vec                fl, ml, kl;
+  const PetscScalar *fk, *m, *mask;
+  PetscReal          loc[2] = {0, 0};
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGhostUpdateBegin(Fk, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(Fk, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostGetLocalForm(Fk, &fl));
+  PetscCall(VecGhostGetLocalForm(M, &ml));
+  PetscCall(VecGhostGetLocalForm(Mask, &kl));
+  PetscCall(VecGetArrayRead(fl, &fk));
+  PetscCall(VecGetArrayRead(ml, &m));
+  PetscCall(VecGetArrayRead(kl, &mask));
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    const TslContactNode    *cn = &p->cnode[i];
+    const TslContactSurface *cs = &p->csurf[cn->pair];
+    PetscReal                N[TSL_CONTACT3_MAX_FACE_NODES], nrm[3], g, dp;
+    PetscInt                 main[TSL_CONTACT3_MAX_FACE_NODES], n;
+
+    if (cn->seg < 0 || !cs->kinematic || !(cn->k_kin > 0)) continue;
+    LastNormal(p, cn, nrm);
+    FaceWeights(p, cn, PETSC_TRUE, N, main, &n);
+    g = cn->out.gap + Correction(p, cs, fk, m, mask, cn->lnode, nrm, hh);
+    for (PetscInt a = 0; a < n; a++)
+      if (main[a] >= 0 && N[a] > 0) g -= N[a] * Correction(p, cs, fk, m, mask, main[a], nrm, hh);
+    dp     = PetscMax(-cn->k_kin / TslProblemContactNodeArea(p, cn) * g, -cn->out.pressure);
+    loc[0] = PetscMax(loc[0], PetscAbsReal(dp));
+    loc[1] = PetscMax(loc[1], cn->out.pressure);
+  }
+  PetscCall(VecRestoreArrayRead(kl, &mask));
+  PetscCall(VecRestoreArrayRead(ml, &m));
+  PetscCall(VecRestoreArrayRead(fl, &fk));
+  PetscCall(VecGhostRestoreLocalForm(Mask, &kl));
+  PetscCall(VecGhostRestoreLocalForm(M, &ml));
+  PetscCall(VecGhostRestoreLocalForm(Fk, &fl));
+  PetscCall(MPIU_Allreduce(loc, change, 2, MPIU_REAL, MPIU_MAX, p->comm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -29,7 +29,9 @@ typedef struct {
   Vec             X, Xold;         /* the problem's solution and the state at the start of the increment */
   Vec             V, M, Mask;      /* half-step velocity, lumped mass / capacity, prescribed dofs */
   Vec             Fi, Fe, Fc, Fv;  /* force vectors of the current state (Fc NULL without contact, Fv without bulk viscosity) */
-  Vec             Fk, W;           /* kinematic contact: the corrector's forces at the predicted state, a work vector (NULL without) */
+  Vec             Fk, W, Xp;       /* kinematic contact: the corrector's forces, a work vector, the predicted state (NULL without) */
+  PetscInt        kin_passes, kin_total; /* -tsl_explicit_kinematic_passes (most corrector passes per increment); passes made in the step */
+  PetscReal       kin_tol;         /* -tsl_explicit_kinematic_tol: passes stop when the pressure change is below this fraction of the largest */
   PetscReal      *dt_mech, *dt_heat, *scale, *eta; /* [nelem] element stable increments, mass scale factors, b1 L_e / c_d */
   PetscReal       dt_stable, dt;   /* stable increment (with safety) and the increment used */
   PetscReal       lim_mech, lim_heat, lim_cheat; /* limits: mechanical (elements and penalty), elements' thermal, interface heat exchange */
@@ -56,6 +58,8 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
   d->explicit_progress = 5000;
   d->explicit_history  = 200;
   d->explicit_search   = 10;
+  d->explicit_kin_passes = 20;
+  d->explicit_kin_tol    = 1e-3;
   PetscOptionsBegin(d->comm, NULL, "thermoslide explicit dynamics", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_safety", "explicit: factor on the element-by-element stable increment", 0, PETSC_TRUE, 1,
                            PETSC_FALSE, &d->explicit_safety));
@@ -65,6 +69,10 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
                           PETSC_MAX_INT, &d->explicit_history));
   PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_explicit_contact_search", "explicit: increments between contact pairing searches (besides a node leaving its face)", 1,
                           PETSC_MAX_INT, &d->explicit_search));
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_explicit_kinematic_passes", "explicit: most passes of the kinematic contact corrector per increment", 1, 1000,
+                          &d->explicit_kin_passes));
+  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_kinematic_tol", "explicit: kinematic corrector passes stop at this pressure change (fraction of the largest pressure)",
+                           0, PETSC_FALSE, 1, PETSC_FALSE, &d->explicit_kin_tol));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -339,7 +347,35 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
   PetscCall(TslProblemSetTime(x->p, t_new, h, total_new));
   PetscCall(TslProblemApplyPrescribed(x->p, x->X));
   PetscCall(TslPhaseBegin(TSL_PHASE_ASSEMBLY));
-  PetscCall(TslProblemExplicitKinematicForces(x->p, x->Fk, &x->krates));
+  PetscCall(TslProblemExplicitKinematicForces(x->p, x->Fk, PETSC_FALSE, NULL, &x->krates));
+  x->kin_total++;
+  if (x->kin_passes > 1) PetscCall(VecCopy(x->X, x->Xp));
+  for (PetscInt pass = 1; pass < x->kin_passes; pass++) {
+    /* the state the forces so far lead to, u* - h h_avg M^-1 Fk; what the lumped compliance left of a
+     * rough penetration (or the pressure of a node it opened) is corrected again, normal forces only,
+     * unless the linearised gaps there say that a pass would change no pressure by more than the tolerance
+     * (the quasi-static case: one pass) */
+    PetscScalar       *uc;
+    const PetscScalar *up, *fk, *mm, *mk;
+    PetscReal          change[2];
+    PetscCall(TslProblemContactKinematicResidual(x->p, x->Fk, x->M, x->Mask, h * h_avg, change));
+    if (change[0] <= x->kin_tol * change[1]) break;
+    PetscCall(VecGetArray(x->X, &uc));
+    PetscCall(VecGetArrayRead(x->Xp, &up));
+    PetscCall(VecGetArrayRead(x->Fk, &fk));
+    PetscCall(VecGetArrayRead(x->M, &mm));
+    PetscCall(VecGetArrayRead(x->Mask, &mk));
+    for (PetscInt i = 0; i < n; i++)
+      if (mk[i] == 0 && i % x->ndof != th) uc[i] = up[i] - h * h_avg * fk[i] / mm[i];
+    PetscCall(VecRestoreArrayRead(x->Mask, &mk));
+    PetscCall(VecRestoreArrayRead(x->M, &mm));
+    PetscCall(VecRestoreArrayRead(x->Fk, &fk));
+    PetscCall(VecRestoreArrayRead(x->Xp, &up));
+    PetscCall(VecRestoreArray(x->X, &uc));
+    PetscCall(TslProblemExplicitKinematicForces(x->p, x->W, PETSC_TRUE, change, NULL));
+    PetscCall(VecAXPY(x->Fk, 1.0, x->W));
+    x->kin_total++;
+  }
   PetscCall(TslPhaseEnd(TSL_PHASE_ASSEMBLY));
   PetscCall(VecCopy(x->Xold, x->X));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -499,6 +535,7 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fv));
   PetscCall(VecDestroy(&x->Fk));
   PetscCall(VecDestroy(&x->W));
+  PetscCall(VecDestroy(&x->Xp));
   PetscCall(PetscFree4(x->dt_mech, x->dt_heat, x->scale, x->eta));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -522,6 +559,8 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   x.progress     = d->explicit_progress;
   x.history_rows = d->explicit_history;
   x.search_every = d->explicit_search;
+  x.kin_passes   = d->explicit_kin_passes;
+  x.kin_tol      = d->explicit_kin_tol;
   PetscCall(PetscPrintf(d->comm, "step %" PetscInt_FMT " (%s): explicit dynamics, period %g%s\n", s + 1, x.step->name[0] ? x.step->name : "-",
                         (double)x.step->period, x.step->dt_user > 0 ? ", fixed increment (DIRECT USER CONTROL)" : ""));
   PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));
@@ -562,6 +601,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
     if (kinematic) {
       PetscCall(VecDuplicate(x.X, &x.Fk));
       PetscCall(VecDuplicate(x.X, &x.W));
+      PetscCall(VecDuplicate(x.X, &x.Xp));
       PetscCall(VecZeroEntries(x.Fk));
     }
   }
@@ -652,6 +692,9 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   if (x.m->npair)
     PetscCall(PetscPrintf(d->comm, "  contact: pairing searched every %" PetscInt_FMT " increments; %" PetscInt_FMT " re-pairings of nodes that left their face\n",
                           x.search_every, x.nrepair));
+  if (x.Fk && inc)
+    PetscCall(PetscPrintf(d->comm, "  kinematic contact: %.3g corrector passes per increment (at most %" PetscInt_FMT ", -tsl_explicit_kinematic_passes)\n",
+                          (double)x.kin_total / (double)inc, x.kin_passes));
   PetscCall(TslDriverPrintTables(d, x.step));
   d->explicit_last = s;
   if (x.m->npair) {

@@ -55,6 +55,8 @@ typedef struct {
   PetscInt  explicit_progress; /* -tsl_explicit_progress */
   PetscInt  explicit_history;  /* -tsl_explicit_history */
   PetscInt  explicit_search;   /* -tsl_explicit_contact_search */
+  PetscInt  explicit_kin_passes; /* -tsl_explicit_kinematic_passes */
+  PetscReal explicit_kin_tol;    /* -tsl_explicit_kinematic_tol */
 } Driver;
 
 #define HIST_ENERGY 17 /* first energy column */

@@ -3,12 +3,11 @@
 pressed by 100 onto a base block, MECHANICAL CONSTRAINT=KINEMATIC, gap conductance on pressure; docs/explicit.md):
 - the energy balance closes (|ETOTAL| below 1e-6 of the largest energy in every history row);
 - the kinematic contact does no net positive work (ALLCW >= 0: closing a gap removes the approach velocity);
-- every secondary node in contact (CPRESS > 0) lies on the base's top face (interpolated bilinearly over the
-  base's top nodes, a structured grid in x and z) within 1 % of what the deck's penalty (*SURFACE BEHAVIOR,
-  PENALTY 140000) would let it penetrate at the largest pressure, p_max / eps_n. Measured 4.5e-6 at the
-  block's corners (p_max / eps_n = 1.1e-3): in this impact the pressure is far from uniform, and the
-  corrector's lumped compliance closes a rough penetration over several increments (docs/explicit.md,
-  "Kinematic contact").
+- no secondary node in contact (CPRESS > 0) penetrates the base's top face (interpolated bilinearly over the
+  base's top nodes, a structured grid in x and z) by more than 1e-8: the corrector's passes close the rough
+  penetration of this impact within the increment (docs/explicit.md, "Kinematic contact"; measured: none,
+  every node within 1e-7 above the face; one pass left 4.5e-6 at the block's corners, and the deck's
+  penalty would allow p_max / eps_n = 1.1e-3).
 usage: check_kinematic_blocks.py OUTDIR JOB
 """
 import sys
@@ -41,5 +40,5 @@ for n in sec:
     ym = (1 - a) * (1 - b) * Y[i, k] + a * (1 - b) * Y[i + 1, k] + (1 - a) * b * Y[i, k + 1] + a * b * Y[i + 1, k + 1]
     pen.append(ym - (xyz[n, 1] + u[n, 1]))
 print("%d secondary nodes in contact, CPRESS %.4g .. %.4g; base top face: %d x %d nodes" % (len(sec), cp[sec].min(), cp[sec].max(), len(xs), len(zs)))
-check("largest penetration", max(pen), 0.0, 0.01 * cp.max() / 140000.0)
+check("largest penetration", max(max(pen), 0.0), 0.0, 1e-8)
 finish()

@@ -10,7 +10,7 @@ conductance (HEAT, SLIDE, STEADY, DOUBLE PRESSURE, SLIDE OFF): at the end of the
 (steps 3 and 4, transient steps long enough) the film takes out what the flux brings in (200) within 1 %;
 after the slide-off the small block is isothermal (spread below 1 % of its mean) and no heat crosses the
 interface.
-Both: the penetration (kinematic contact: round-off at rest, below 1e-7 while sliding; penalty: printed); the energy balance ETOTAL = ALLKE + ALLIE + ALLCW - ALLWK - ALLMW within 1e-6 of the largest
+Both: the penetration (kinematic contact: round-off at rest, below 1e-8 while sliding; penalty: printed); the energy balance ETOTAL = ALLKE + ALLIE + ALLCW - ALLWK - ALLMW within 1e-6 of the largest
 energy in every history row; quasi-static: ALLKE against ALLIE and ALLWK printed (the prescribed slide moves
 the 500-mass block rigidly, so ALLKE is the block's 1/2 M v^2 and ALLIE, the elastic energy of blocks
 pressed by 100 with E = 3e7, is tiny: the figure that tells inertia did not matter is the kinetic energy left
@@ -79,15 +79,15 @@ def penetration(steps=None):
     return worst
 
 
-# KINEMATIC closes each node's predicted gap in its increment (exactly for a uniform penetration; the
-# corrector's lumped compliance leaves a fraction of a non-uniform one to the next increments: docs/explicit.md).
-# At rest the blocks overlap by round-off; while sliding, the dent under the moving block ploughs ahead of it
-# and 1.6e-8 (pressure 100) to 3.8e-8 (200, the faster slide-off) remain, against PENALTY's p / eps_n =
-# 1.7e-7 / 4e-7 in the same decks and the small block's elastic compression p h / E = 8e-7 / 1.7e-6.
+# KINEMATIC closes each node's predicted gap in its increment (the corrector's passes until no pressure
+# changes by more than 1e-3 of the largest: docs/explicit.md). At rest the blocks overlap by round-off; while
+# sliding, the dent under the moving block ploughs ahead of it and up to 9e-10 remains (one pass left 1.6e-8
+# .. 3.8e-8), against PENALTY's p / eps_n = 1.7e-7 / 4e-7 in the same decks and the small block's elastic
+# compression p h / E = 8e-7 / 1.7e-6.
 if "kinematic" in job:
     rest = (1, 3) if series == "friction" else (1, 3, 4)
     check("kinematic contact: largest penetration at rest (steps %s)" % ", ".join(map(str, rest)), penetration(rest), 0.0, 1e-11)
-    check("kinematic contact: largest penetration over all frames", penetration(), 0.0, 1e-7)
+    check("kinematic contact: largest penetration over all frames", penetration(), 0.0, 1e-8)
 else:
     print("penalty contact: largest penetration over the frames %.4g" % penetration())
 
