@@ -41,21 +41,11 @@ PetscErrorCode TslContactLawSetDefaults(TslContactLaw *law)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps)
+void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps, PetscReal eps_t)
 {
   law->normal = TSL_CONTACT_NORMAL_PENALTY;
   law->eps_n  = eps;
-  if (law->friction == TSL_CONTACT_FRICTION_PENALTY) law->eps_t = eps, law->elastic_slip = 0;
-}
-
-void TslContactNormalOnlyLaw(TslContactLaw *law)
-{
-  law->friction    = TSL_CONTACT_FRICTION_NONE;
-  law->conductance = TSL_CONTACT_CONDUCTANCE_NONE;
-  law->k_n         = 0;
-  law->F_n         = 0;
-  law->eta         = 0;
-  law->bilateral   = PETSC_TRUE;
+  if (law->friction == TSL_CONTACT_FRICTION_PENALTY) law->eps_t = eps_t, law->elastic_slip = 0;
 }
 
 /* Abaqus Theory Guide, "Thermal contact properties" (radiation across a gap between surfaces A and B):
@@ -107,10 +97,6 @@ TslDual TslContactNormalPressure(const TslContactLaw *law, const TslContactState
   TslDual a = DScale(-law->eps_n, g);
 
   if (law->normal == TSL_CONTACT_NORMAL_AUGMENTED) a = DAddC(a, h->lambda);
-  if (law->bilateral) {
-    *closed = PETSC_TRUE;
-    return a;
-  }
   *closed = (PetscBool)(a.v >= -1e-12 * law->eps_n * L);
   return a.v >= 0 ? a : DConst(0);
 }

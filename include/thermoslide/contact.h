@@ -151,10 +151,6 @@ typedef struct {
   /* gap heat generation: eta = fraction of frictional dissipation converted to heat; f = fraction of that heat
    * into the SECONDARY surface, (1 - f) into the main surface (Abaqus *GAP HEAT GENERATION convention). */
   PetscReal eta, f;
-
-  /* bilateral normal law (the further passes of the kinematic corrector only): pN = -eps_n g for either
-   * sign of the gap, so that a pass can also take pressure back from a node that ended open */
-  PetscBool bilateral;
 } TslContactLaw;
 
 /* Fills a law with defaults: penalty normal (eps_n = 0: caller must set it), no friction, no thermal
@@ -162,14 +158,12 @@ typedef struct {
 PetscErrorCode TslContactLawSetDefaults(TslContactLaw *law);
 
 /* The law of a node of a kinematic pair (explicit steps, MECHANICAL CONSTRAINT=KINEMATIC): penalty normal
- * with eps_n = eps (the stiffness per area that closes the node's predicted gap in one increment; no
- * augmentation), and penalty friction's stick with the same stiffness (eps_t = eps, no elastic slip
- * tolerance), so that a sticking node's predicted slip is undone in the same increment. The thermal
+ * with eps_n = eps (the stiffness per area that closes the node's predicted gap in one increment, or that
+ * gives it the corrector passes' pressure; no augmentation), and penalty friction's stick with eps_t (the
+ * closing stiffness, no elastic slip tolerance), so that a sticking node's predicted slip is undone in the
+ * same increment. The thermal
  * interaction and LAGRANGE friction are the law's own. */
-void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps);
-/* The law of a further kinematic corrector pass: bilateral normal force alone (no friction, no thermal
- * interaction). */
-void TslContactNormalOnlyLaw(TslContactLaw *law);
+void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps, PetscReal eps_t);
 
 /* Gap radiation constant (Abaqus Theory Guide, "Thermal contact properties"):
  *   C = F sigma / (1/eps_A + 1/eps_B - 1)

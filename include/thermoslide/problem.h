@@ -143,16 +143,21 @@ PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc,
  * each kinematic node's stiffness that closes its gap in an increment with h h_avg = hh, from the lumped
  * masses M and the prescribed-dof mask Mask (ghosts updated), W a work vector. KinematicForces (collective):
  * the kinematic pairs' forces and heat at the current solution (the predicted state) into Fk, as Fc, and
- * their heat rates; pass: a further corrector pass instead (projected Jacobi at the corrected state: the
- * change of the normal forces alone, each node's pressure kept >= 0) and change[] = its largest pressure
- * change and largest pressure over the ranks (rates not touched). */
+ * their heat rates. */
 PetscErrorCode TslProblemContactSetKinematic(TslProblem prob, PetscBool explicit_step, PetscBool *any);
 PetscErrorCode TslProblemContactKinematicStiffness(TslProblem prob, Vec M, Vec Mask, Vec W, PetscReal hh);
-/* Collective. What a further corrector pass would change, from the linearised gaps after the correction
- * -hh M^-1 Fk (Fk the corrector's forces so far, summed on their owners): change[0] the largest pressure
- * change (each node's pressure kept >= 0), change[1] the largest pressure, over the ranks. */
-PetscErrorCode TslProblemContactKinematicResidual(TslProblem prob, Vec Fk, Vec M, Vec Mask, PetscReal hh, PetscReal change[2]);
-PetscErrorCode TslProblemExplicitKinematicForces(TslProblem prob, Vec Fk, PetscBool pass, PetscReal change[2], TslExplicitRates *rates);
+/* Collective. A further corrector pass (projected Jacobi on the contact problem, linearised): each kinematic
+ * node's gap after the correction -hh M^-1 Fk (Fk the corrector's forces so far, summed on their owners) from
+ * its predicted gap and the relative normal displacement, the pressure change -k_s g / A_s that closes it,
+ * limited so that the node's pressure stays >= 0. change[0], change[1]: the largest change and the largest
+ * pressure over the ranks. When change[0] > tol change[1] the changes are applied (CPRESS) and their forces
+ * put in W (zeroed first, summed on their owners; *applied), else nothing changes. */
+PetscErrorCode TslProblemContactKinematicPass(TslProblem prob, Vec Fk, Vec M, Vec Mask, Vec W, PetscReal hh, PetscReal tol, PetscReal change[2], PetscBool *applied);
+/* After passes: each penetrating kinematic node's normal penalty becomes the one that gives it the passes'
+ * pressure at its predicted gap, so that evaluating the kinematic pairs again at the predicted state
+ * (TslProblemExplicitKinematicForces) gives those pressures with the friction and heat that go with them. */
+PetscErrorCode TslProblemContactKinematicSettle(TslProblem prob);
+PetscErrorCode TslProblemExplicitKinematicForces(TslProblem prob, Vec Fk, TslExplicitRates *rates);
 /* Lumped nodal mass in the displacement slots (element e's mass times scale[e]; scale NULL: 1) and lumped
  * capacity dQ/dtheta in the temperature slot, at the current temperatures (collective). An element with a
  * non-positive lumped mass at a node is a user error naming it. */

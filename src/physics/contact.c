@@ -132,8 +132,8 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
       if (!(cn->k_kin > 0)) continue; /* both sides prescribed (or no mass): nothing to correct */
       kl  = cs->law;
       law = &kl;
-      TslContactKinematicLaw(&kl, cn->k_kin / TslProblemContactNodeArea(p, cn));
-      if (p->kinematic_pass) TslContactNormalOnlyLaw(&kl);
+      const PetscReal ek = cn->k_kin / TslProblemContactNodeArea(p, cn);
+      TslContactKinematicLaw(&kl, cn->has_eps_kin ? cn->eps_kin : ek, ek);
     } else law = &cs->law;
     nu = cs->nu;
     if (cs->dim == 3) PetscCall(TslProblemContact3Input(p, cn, xa, &in3, nodes, &n));
@@ -142,23 +142,6 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
       for (PetscInt c = 0; c < nu; c++) ld[nu * a + c] = nodes[a] * p->ndof + cs->slot[c];
     if (mode == ASM_PATTERN) {
       PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, NULL, NULL));
-      continue;
-    }
-    if (cs->kinematic && p->kinematic_pass) {
-      /* a further corrector pass (projected Jacobi on the contact problem): the bilateral law's pressure
-       * change at the corrected state, limited so that the node's total pressure stays >= 0; the first
-       * pass's state (anchors, heat) stands, CPRESS reports the total */
-      TslContactOutput extra;
-      PetscReal        dp, scale;
-      if (cs->dim == 3) PetscCall(TslContactElement3(law, &in3, R, NULL, &extra));
-      else PetscCall(TslContactElement(law, &in, R, NULL, &extra));
-      dp    = PetscMax(extra.pressure, -cn->out.pressure);
-      scale = extra.pressure != 0 ? dp / extra.pressure : 0;
-      for (PetscInt j = 0; j < nu * n; j++) R[j] *= scale;
-      cn->out.pressure += dp;
-      p->kin_change[0] = PetscMax(p->kin_change[0], PetscAbsReal(dp));
-      p->kin_change[1] = PetscMax(p->kin_change[1], cn->out.pressure);
-      if (f) PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, R, NULL));
       continue;
     }
     if (cs->dim == 3) PetscCall(TslContactElement3(law, &in3, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));

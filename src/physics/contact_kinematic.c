@@ -114,7 +114,8 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask
     PetscReal                N[TSL_CONTACT3_MAX_FACE_NODES], nrm[3], len, inv;
     PetscInt                 main[TSL_CONTACT3_MAX_FACE_NODES], n;
 
-    cn->k_kin = 0;
+    cn->k_kin       = 0;
+    cn->has_eps_kin = PETSC_FALSE;
     if (cn->seg < 0 || !cs->kinematic) continue;
     /* the direction of the correction: the normal of the node's last evaluation (any, before the first) */
     nrm[0] = cn->out.normal[0], nrm[1] = cn->out.normal[1], nrm[2] = p->dim == 3 ? cn->out.normal_z : 0;
@@ -153,13 +154,31 @@ static PetscReal Correction(TslProblem p, const TslContactSurface *cs, const Pet
   return du;
 }
 
-PetscErrorCode TslProblemContactKinematicResidual(TslProblem p, Vec Fk, Vec M, Vec Mask, PetscReal hh, PetscReal change[2])
+/* The linearised gap of kinematic node cn after the correction -hh M^-1 Fk (fk: its local form, ghosts
+ * updated), the node's unit normal nrm, its face weights N and main nodes main[] (*n). */
+static PetscReal LinearGap(TslProblem p, const TslContactNode *cn, const PetscScalar *fk, const PetscScalar *m, const PetscScalar *mask, PetscReal hh,
+                           PetscReal nrm[3], PetscReal N[], PetscInt main[], PetscInt *n)
 {
-  Vec                fl, ml, kl;
+  const TslContactSurface *cs = &p->csurf[cn->pair];
+  PetscReal                g;
+
+  LastNormal(p, cn, nrm);
+  FaceWeights(p, cn, PETSC_TRUE, N, main, n);
+  g = cn->out.gap + Correction(p, cs, fk, m, mask, cn->lnode, nrm, hh);
+  for (PetscInt a = 0; a < *n; a++)
+    if (main[a] >= 0 && N[a] > 0) g -= N[a] * Correction(p, cs, fk, m, mask, main[a], nrm, hh);
+  return g;
+}
+
+PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec Mask, Vec W, PetscReal hh, PetscReal tol, PetscReal change[2], PetscBool *applied)
+{
+  Vec                fl, ml, kl, wl;
   const PetscScalar *fk, *m, *mask;
+  PetscScalar       *w;
   PetscReal          loc[2] = {0, 0};
 
   PetscFunctionBeginUser;
+  *applied = PETSC_FALSE;
   PetscCall(VecGhostUpdateBegin(Fk, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostUpdateEnd(Fk, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostGetLocalForm(Fk, &fl));
@@ -168,21 +187,38 @@ PetscErrorCode TslProblemContactKinematicResidual(TslProblem p, Vec Fk, Vec M, V
   PetscCall(VecGetArrayRead(fl, &fk));
   PetscCall(VecGetArrayRead(ml, &m));
   PetscCall(VecGetArrayRead(kl, &mask));
-  for (PetscInt i = 0; i < p->ncnode; i++) {
-    const TslContactNode    *cn = &p->cnode[i];
-    const TslContactSurface *cs = &p->csurf[cn->pair];
-    PetscReal                N[TSL_CONTACT3_MAX_FACE_NODES], nrm[3], g, dp;
-    PetscInt                 main[TSL_CONTACT3_MAX_FACE_NODES], n;
+  for (PetscInt pass = 0; pass < 2; pass++) { /* the changes, then (if any is worth it) their forces */
+    if (pass == 1) {
+      PetscCall(MPIU_Allreduce(loc, change, 2, MPIU_REAL, MPIU_MAX, p->comm));
+      if (change[0] <= tol * change[1]) break;
+      *applied = PETSC_TRUE;
+      PetscCall(VecGhostGetLocalForm(W, &wl));
+      PetscCall(VecZeroEntries(wl));
+      PetscCall(VecGetArray(wl, &w));
+    }
+    for (PetscInt i = 0; i < p->ncnode; i++) {
+      TslContactNode          *cn = &p->cnode[i];
+      const TslContactSurface *cs = &p->csurf[cn->pair];
+      PetscReal                N[TSL_CONTACT3_MAX_FACE_NODES], nrm[3], A, g, dp;
+      PetscInt                 main[TSL_CONTACT3_MAX_FACE_NODES], n;
 
-    if (cn->seg < 0 || !cs->kinematic || !(cn->k_kin > 0)) continue;
-    LastNormal(p, cn, nrm);
-    FaceWeights(p, cn, PETSC_TRUE, N, main, &n);
-    g = cn->out.gap + Correction(p, cs, fk, m, mask, cn->lnode, nrm, hh);
-    for (PetscInt a = 0; a < n; a++)
-      if (main[a] >= 0 && N[a] > 0) g -= N[a] * Correction(p, cs, fk, m, mask, main[a], nrm, hh);
-    dp     = PetscMax(-cn->k_kin / TslProblemContactNodeArea(p, cn) * g, -cn->out.pressure);
-    loc[0] = PetscMax(loc[0], PetscAbsReal(dp));
-    loc[1] = PetscMax(loc[1], cn->out.pressure);
+      if (cn->seg < 0 || !cs->kinematic || !(cn->k_kin > 0)) continue;
+      A  = TslProblemContactNodeArea(p, cn);
+      g  = LinearGap(p, cn, fk, m, mask, hh, nrm, N, main, &n);
+      dp = PetscMax(-cn->k_kin / A * g, -cn->out.pressure);
+      if (pass == 0) {
+        loc[0] = PetscMax(loc[0], PetscAbsReal(dp));
+        loc[1] = PetscMax(loc[1], cn->out.pressure);
+        continue;
+      }
+      /* residual form, as the kernels: R_s = -A dp n, R_j = +A dp N_j n */
+      cn->out.pressure += dp;
+      for (PetscInt d = 0; d < p->dim; d++) {
+        w[cn->lnode * p->ndof + cs->slot[d]] -= A * dp * nrm[d];
+        for (PetscInt a = 0; a < n; a++)
+          if (main[a] >= 0) w[main[a] * p->ndof + cs->slot[d]] += A * dp * N[a] * nrm[d];
+      }
+    }
   }
   PetscCall(VecRestoreArrayRead(kl, &mask));
   PetscCall(VecRestoreArrayRead(ml, &m));
@@ -190,6 +226,23 @@ PetscErrorCode TslProblemContactKinematicResidual(TslProblem p, Vec Fk, Vec M, V
   PetscCall(VecGhostRestoreLocalForm(Mask, &kl));
   PetscCall(VecGhostRestoreLocalForm(M, &ml));
   PetscCall(VecGhostRestoreLocalForm(Fk, &fl));
-  PetscCall(MPIU_Allreduce(loc, change, 2, MPIU_REAL, MPIU_MAX, p->comm));
+  if (*applied) {
+    PetscCall(VecRestoreArray(wl, &w));
+    PetscCall(VecGhostRestoreLocalForm(W, &wl));
+    PetscCall(VecGhostUpdateBegin(W, ADD_VALUES, SCATTER_REVERSE));
+    PetscCall(VecGhostUpdateEnd(W, ADD_VALUES, SCATTER_REVERSE));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemContactKinematicSettle(TslProblem p)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < p->ncnode; i++) {
+    TslContactNode *cn = &p->cnode[i];
+    if (cn->seg < 0 || !p->csurf[cn->pair].kinematic || !(cn->k_kin > 0) || !(cn->out.gap < 0)) continue;
+    cn->has_eps_kin = PETSC_TRUE;
+    cn->eps_kin     = cn->out.pressure / -cn->out.gap;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -152,7 +152,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslProblemExplicitKinematicForces(TslProblem p, Vec Fk, PetscBool pass, PetscReal change[2], TslExplicitRates *rates)
+PetscErrorCode TslProblemExplicitKinematicForces(TslProblem p, Vec Fk, TslExplicitRates *rates)
 {
   Vec                xl, kl;
   const PetscScalar *xa;
@@ -167,23 +167,18 @@ PetscErrorCode TslProblemExplicitKinematicForces(TslProblem p, Vec Fk, PetscBool
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
   PetscCall(BeginLocal(Fk, &kl, &fk));
   p->select_kinematic = PETSC_TRUE;
-  p->kinematic_pass   = pass;
-  p->kin_change[0] = p->kin_change[1] = 0;
   PetscCall(TslCaptureBegin());
   ierr = TslProblemContactAssemble(p, ASM_RAW, xa, fk, NULL, &heat);
   PetscCall(TslCaptureEnd());
-  p->select_kinematic = p->kinematic_pass = PETSC_FALSE;
+  p->select_kinematic = PETSC_FALSE;
   PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
   PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit kinematic contact: %s", p->fail_msg);
   PetscCall(EndLocal(Fk, &kl, &fk));
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
-  if (pass) PetscCall(MPIU_Allreduce(p->kin_change, change, 2, MPIU_REAL, MPIU_MAX, p->comm));
-  else {
-    loc[0] = heat.interface, loc[1] = heat.dissipation, loc[2] = heat.friction_heat;
-    PetscCall(MPIU_Allreduce(loc, g, 3, MPIU_REAL, MPIU_SUM, p->comm));
-    PetscCall(PetscMemzero(rates, sizeof(*rates)));
-    rates->interface_heat = g[0], rates->dissipation = g[1], rates->friction_heat = g[2];
-  }
+  loc[0] = heat.interface, loc[1] = heat.dissipation, loc[2] = heat.friction_heat;
+  PetscCall(MPIU_Allreduce(loc, g, 3, MPIU_REAL, MPIU_SUM, p->comm));
+  PetscCall(PetscMemzero(rates, sizeof(*rates)));
+  rates->interface_heat = g[0], rates->dissipation = g[1], rates->friction_heat = g[2];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

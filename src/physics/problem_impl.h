@@ -43,6 +43,8 @@ typedef struct {
   TslContactOutput  out;            /* last evaluation */
   PetscBool         fresh;          /* evaluated since the last commit (a kinematic pair commits only such nodes) */
   PetscReal         k_kin;          /* kinematic pairs: the stiffness that closes the node's gap in one increment */
+  PetscBool         has_eps_kin;    /* ... and, after further corrector passes, the normal penalty eps_kin that gives the */
+  PetscReal         eps_kin;        /*     node the passes' pressure at the predicted state (friction and heat follow it) */
 } TslContactNode;
 
 /* Storage of the neighbours' nodes that a TslContactInput points to (smoothing). */
@@ -122,8 +124,6 @@ struct _p_TslProblem {
   PetscReal          augment_tol;
   PetscBool          pattern_stale; /* a rollback changed the pairing: the matrix pattern is the failed attempt's */
   PetscBool          select_kinematic; /* TslProblemContactAssemble evaluates the kinematic pairs (true) or the others */
-  PetscBool          kinematic_pass;   /* ... in a further corrector pass: the normal force's change alone (contact_kinematic.c) */
-  PetscReal          kin_change[2];    /* that pass's largest pressure change and largest pressure (this rank) */
   TslContactS2S      s2s;           /* surface-to-surface pairs (NULL without) */
   char              *pattern_rows;  /* [nn*ndof] kind of each row (free, prescribed, pinned, eliminated) when J's pattern was built */
   /* Direct insertion (TslProblemPreallocate): for an element whose nodes are all owned and whose rows are

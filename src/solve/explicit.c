@@ -29,7 +29,7 @@ typedef struct {
   Vec             X, Xold;         /* the problem's solution and the state at the start of the increment */
   Vec             V, M, Mask;      /* half-step velocity, lumped mass / capacity, prescribed dofs */
   Vec             Fi, Fe, Fc, Fv;  /* force vectors of the current state (Fc NULL without contact, Fv without bulk viscosity) */
-  Vec             Fk, W, Xp;       /* kinematic contact: the corrector's forces, a work vector, the predicted state (NULL without) */
+  Vec             Fk, W;           /* kinematic contact: the corrector's forces at the predicted state, a work vector (NULL without) */
   PetscInt        kin_passes, kin_total; /* -tsl_explicit_kinematic_passes (most corrector passes per increment); passes made in the step */
   PetscReal       kin_tol;         /* -tsl_explicit_kinematic_tol: passes stop when the pressure change is below this fraction of the largest */
   PetscReal      *dt_mech, *dt_heat, *scale, *eta; /* [nelem] element stable increments, mass scale factors, b1 L_e / c_d */
@@ -320,6 +320,7 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
  * columns account for it (ALLCW). The temperatures see the contact heat at (u*, theta_n): forward Euler. */
 static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_avg, PetscReal t_new, PetscReal total_new)
 {
+  PetscInt           passes;
   PetscScalar       *u;
   const PetscScalar *v, *m, *mask, *fi, *fe, *fc = NULL, *fv = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
@@ -347,34 +348,27 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
   PetscCall(TslProblemSetTime(x->p, t_new, h, total_new));
   PetscCall(TslProblemApplyPrescribed(x->p, x->X));
   PetscCall(TslPhaseBegin(TSL_PHASE_ASSEMBLY));
-  PetscCall(TslProblemExplicitKinematicForces(x->p, x->Fk, PETSC_FALSE, NULL, &x->krates));
+  PetscCall(TslProblemExplicitKinematicForces(x->p, x->Fk, &x->krates));
   x->kin_total++;
-  if (x->kin_passes > 1) PetscCall(VecCopy(x->X, x->Xp));
+  passes = 1;
   for (PetscInt pass = 1; pass < x->kin_passes; pass++) {
-    /* the state the forces so far lead to, u* - h h_avg M^-1 Fk; what the lumped compliance left of a
-     * rough penetration (or the pressure of a node it opened) is corrected again, normal forces only,
-     * unless the linearised gaps there say that a pass would change no pressure by more than the tolerance
-     * (the quasi-static case: one pass) */
-    PetscScalar       *uc;
-    const PetscScalar *up, *fk, *mm, *mk;
-    PetscReal          change[2];
-    PetscCall(TslProblemContactKinematicResidual(x->p, x->Fk, x->M, x->Mask, h * h_avg, change));
-    if (change[0] <= x->kin_tol * change[1]) break;
-    PetscCall(VecGetArray(x->X, &uc));
-    PetscCall(VecGetArrayRead(x->Xp, &up));
-    PetscCall(VecGetArrayRead(x->Fk, &fk));
-    PetscCall(VecGetArrayRead(x->M, &mm));
-    PetscCall(VecGetArrayRead(x->Mask, &mk));
-    for (PetscInt i = 0; i < n; i++)
-      if (mk[i] == 0 && i % x->ndof != th) uc[i] = up[i] - h * h_avg * fk[i] / mm[i];
-    PetscCall(VecRestoreArrayRead(x->Mask, &mk));
-    PetscCall(VecRestoreArrayRead(x->M, &mm));
-    PetscCall(VecRestoreArrayRead(x->Fk, &fk));
-    PetscCall(VecRestoreArrayRead(x->Xp, &up));
-    PetscCall(VecRestoreArray(x->X, &uc));
-    PetscCall(TslProblemExplicitKinematicForces(x->p, x->W, PETSC_TRUE, change, NULL));
+    /* what the lumped compliance left of a rough penetration (or the pressure of a node it opened) is
+     * corrected again from the linearised gaps, normal forces only, unless no pressure would change by
+     * more than the tolerance (the quasi-static case: one pass) */
+    PetscReal change[2];
+    PetscBool applied;
+    PetscCall(TslProblemContactKinematicPass(x->p, x->Fk, x->M, x->Mask, x->W, h * h_avg, x->kin_tol, change, &applied));
+    if (!applied) break;
     PetscCall(VecAXPY(x->Fk, 1.0, x->W));
     x->kin_total++;
+    passes++;
+  }
+  if (passes > 1) {
+    /* the passes' pressures, with the friction (Coulomb limit mu p) and heat (conductance at p) that go
+     * with them: the kernels once more at the predicted state, each node's normal penalty the one that gives
+     * it its pressure at its predicted gap */
+    PetscCall(TslProblemContactKinematicSettle(x->p));
+    PetscCall(TslProblemExplicitKinematicForces(x->p, x->Fk, &x->krates));
   }
   PetscCall(TslPhaseEnd(TSL_PHASE_ASSEMBLY));
   PetscCall(VecCopy(x->Xold, x->X));
@@ -535,7 +529,6 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fv));
   PetscCall(VecDestroy(&x->Fk));
   PetscCall(VecDestroy(&x->W));
-  PetscCall(VecDestroy(&x->Xp));
   PetscCall(PetscFree4(x->dt_mech, x->dt_heat, x->scale, x->eta));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -601,7 +594,6 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
     if (kinematic) {
       PetscCall(VecDuplicate(x.X, &x.Fk));
       PetscCall(VecDuplicate(x.X, &x.W));
-      PetscCall(VecDuplicate(x.X, &x.Xp));
       PetscCall(VecZeroEntries(x.Fk));
     }
   }
