@@ -73,11 +73,40 @@ static PetscReal InverseMass(TslProblem p, const TslContactSurface *cs, const Pe
   return inv;
 }
 
+/* The unit normal of node cn's last evaluation. */
+static void LastNormal(TslProblem p, const TslContactNode *cn, PetscReal nrm[3])
+{
+  nrm[0] = cn->out.normal[0], nrm[1] = cn->out.normal[1], nrm[2] = p->dim == 3 ? cn->out.normal_z : 0;
+}
+
+/* Read access to the local form (ghosts included) of a ghosted vector. */
+typedef struct {
+  Vec                v, l;
+  const PetscScalar *a;
+} LocalRead;
+
+static PetscErrorCode LocalReadGet(Vec v, LocalRead *r)
+{
+  PetscFunctionBeginUser;
+  r->v = v;
+  PetscCall(VecGhostGetLocalForm(v, &r->l));
+  PetscCall(VecGetArrayRead(r->l, &r->a));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode LocalReadRestore(LocalRead *r)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecRestoreArrayRead(r->l, &r->a));
+  PetscCall(VecGhostRestoreLocalForm(r->v, &r->l));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask, Vec W, PetscReal hh)
 {
-  Vec                ml, kl, wl;
-  const PetscScalar *m, *mask;
-  PetscScalar       *w;
+  Vec          wl;
+  PetscScalar *w;
+  LocalRead    m, mask, load;
 
   PetscFunctionBeginUser;
   /* the loads w_j of the main nodes, summed over the ranks that own secondary nodes on them */
@@ -102,12 +131,9 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask
   PetscCall(VecGhostUpdateBegin(M, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostUpdateEnd(M, INSERT_VALUES, SCATTER_FORWARD));
 
-  PetscCall(VecGhostGetLocalForm(W, &wl));
-  PetscCall(VecGhostGetLocalForm(M, &ml));
-  PetscCall(VecGhostGetLocalForm(Mask, &kl));
-  PetscCall(VecGetArray(wl, &w));
-  PetscCall(VecGetArrayRead(ml, &m));
-  PetscCall(VecGetArrayRead(kl, &mask));
+  PetscCall(LocalReadGet(W, &load));
+  PetscCall(LocalReadGet(M, &m));
+  PetscCall(LocalReadGet(Mask, &mask));
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode          *cn = &p->cnode[i];
     const TslContactSurface *cs = &p->csurf[cn->pair];
@@ -118,28 +144,19 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask
     cn->has_eps_kin = PETSC_FALSE;
     if (cn->seg < 0 || !cs->kinematic) continue;
     /* the direction of the correction: the normal of the node's last evaluation (any, before the first) */
-    nrm[0] = cn->out.normal[0], nrm[1] = cn->out.normal[1], nrm[2] = p->dim == 3 ? cn->out.normal_z : 0;
-    len    = PetscSqrtReal(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
+    LastNormal(p, cn, nrm);
+    len = PetscSqrtReal(nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2]);
     for (PetscInt d = 0; d < 3; d++) nrm[d] = len > 0 ? nrm[d] / len : (d < p->dim ? 1 / PetscSqrtReal((PetscReal)p->dim) : 0);
     FaceWeights(p, cn, PETSC_FALSE, N, main, &n);
-    inv = InverseMass(p, cs, m, mask, cn->lnode, nrm);
+    inv = InverseMass(p, cs, m.a, mask.a, cn->lnode, nrm);
     for (PetscInt a = 0; a < n; a++)
-      if (main[a] >= 0 && N[a] > 0) inv += N[a] * PetscRealPart(w[main[a] * p->ndof]) * InverseMass(p, cs, m, mask, main[a], nrm);
+      if (main[a] >= 0 && N[a] > 0) inv += N[a] * PetscRealPart(load.a[main[a] * p->ndof]) * InverseMass(p, cs, m.a, mask.a, main[a], nrm);
     cn->k_kin = inv > 0 ? 1 / (hh * inv) : 0;
   }
-  PetscCall(VecRestoreArrayRead(kl, &mask));
-  PetscCall(VecRestoreArrayRead(ml, &m));
-  PetscCall(VecRestoreArray(wl, &w));
-  PetscCall(VecGhostRestoreLocalForm(Mask, &kl));
-  PetscCall(VecGhostRestoreLocalForm(M, &ml));
-  PetscCall(VecGhostRestoreLocalForm(W, &wl));
+  PetscCall(LocalReadRestore(&mask));
+  PetscCall(LocalReadRestore(&m));
+  PetscCall(LocalReadRestore(&load));
   PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* The unit normal of node cn's last evaluation. */
-static void LastNormal(TslProblem p, const TslContactNode *cn, PetscReal nrm[3])
-{
-  nrm[0] = cn->out.normal[0], nrm[1] = cn->out.normal[1], nrm[2] = p->dim == 3 ? cn->out.normal_z : 0;
 }
 
 /* Displacement correction -hh Fk / m of local node l along nrm (prescribed directions do not move). */
@@ -172,21 +189,18 @@ static PetscReal LinearGap(TslProblem p, const TslContactNode *cn, const PetscSc
 
 PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec Mask, Vec W, PetscReal hh, PetscReal tol, PetscReal change[2], PetscBool *applied)
 {
-  Vec                fl, ml, kl, wl;
-  const PetscScalar *fk, *m, *mask;
-  PetscScalar       *w;
-  PetscReal          loc[2] = {0, 0};
+  Vec          wl;
+  PetscScalar *w;
+  LocalRead    fk, m, mask;
+  PetscReal    loc[2] = {0, 0};
 
   PetscFunctionBeginUser;
   *applied = PETSC_FALSE;
   PetscCall(VecGhostUpdateBegin(Fk, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostUpdateEnd(Fk, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostGetLocalForm(Fk, &fl));
-  PetscCall(VecGhostGetLocalForm(M, &ml));
-  PetscCall(VecGhostGetLocalForm(Mask, &kl));
-  PetscCall(VecGetArrayRead(fl, &fk));
-  PetscCall(VecGetArrayRead(ml, &m));
-  PetscCall(VecGetArrayRead(kl, &mask));
+  PetscCall(LocalReadGet(Fk, &fk));
+  PetscCall(LocalReadGet(M, &m));
+  PetscCall(LocalReadGet(Mask, &mask));
   for (PetscInt pass = 0; pass < 2; pass++) { /* the changes, then (if any is worth it) their forces */
     if (pass == 1) {
       PetscCall(MPIU_Allreduce(loc, change, 2, MPIU_REAL, MPIU_MAX, p->comm));
@@ -204,7 +218,7 @@ PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec M
 
       if (cn->seg < 0 || !cs->kinematic || !(cn->k_kin > 0)) continue;
       A  = TslProblemContactNodeArea(p, cn);
-      g  = LinearGap(p, cn, fk, m, mask, hh, nrm, N, main, &n);
+      g  = LinearGap(p, cn, fk.a, m.a, mask.a, hh, nrm, N, main, &n);
       dp = PetscMax(-cn->k_kin / A * g, -cn->out.pressure);
       if (pass == 0) {
         loc[0] = PetscMax(loc[0], PetscAbsReal(dp));
@@ -220,12 +234,9 @@ PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec M
       }
     }
   }
-  PetscCall(VecRestoreArrayRead(kl, &mask));
-  PetscCall(VecRestoreArrayRead(ml, &m));
-  PetscCall(VecRestoreArrayRead(fl, &fk));
-  PetscCall(VecGhostRestoreLocalForm(Mask, &kl));
-  PetscCall(VecGhostRestoreLocalForm(M, &ml));
-  PetscCall(VecGhostRestoreLocalForm(Fk, &fl));
+  PetscCall(LocalReadRestore(&mask));
+  PetscCall(LocalReadRestore(&m));
+  PetscCall(LocalReadRestore(&fk));
   if (*applied) {
     PetscCall(VecRestoreArray(wl, &w));
     PetscCall(VecGhostRestoreLocalForm(W, &wl));

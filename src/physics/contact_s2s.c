@@ -61,19 +61,29 @@ static PetscErrorCode PointInput(TslProblem p, const S2SFace *fc, const S2SPoint
   PetscReal      X[2 * TSL_CONTACT_MAX_FACE_NODES], U[TSL_CONTACT_MAX_NODE_DOF * TSL_CONTACT_MAX_FACE_NODES];
 
   PetscFunctionBeginUser;
-  memset(&cn, 0, sizeof(cn));
-  cn.pair   = fc->pair;
-  cn.lnode  = fc->lnode[0];
-  cn.length = pt->length;
-  cn.seg    = pt->seg;
-  cn.hist   = pt->hist;
+  TslS2SPointNode(fc, pt, &cn);
   TslProblemContactElementInput(p, &cn, xa, in, kn, &nk, nb);
   FaceData(p, fc, xa, X, U);
   PetscCall(TslContactPointSetUp(fc->kind, X, U, pt->zeta, in));
+  TslS2SPointNodes(fc, kn, nk, nodes, n);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+void TslS2SPointNode(const S2SFace *fc, const S2SPoint *pt, TslContactNode *cn)
+{
+  memset(cn, 0, sizeof(*cn));
+  cn->pair   = fc->pair;
+  cn->lnode  = fc->lnode[0];
+  cn->length = pt->length;
+  cn->seg    = pt->seg;
+  cn->hist   = pt->hist;
+}
+
+void TslS2SPointNodes(const S2SFace *fc, const PetscInt kn[], PetscInt nk, PetscInt nodes[], PetscInt *n)
+{
   *n = 0;
   for (PetscInt b = 0; b < fc->nsn; b++) nodes[(*n)++] = fc->lnode[b];
   for (PetscInt k = 1; k < nk; k++) nodes[(*n)++] = kn[k];
-  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat)

@@ -56,18 +56,11 @@ PetscErrorCode TslS2S3PointInput(TslProblem p, const S2SFace *fc, const S2SPoint
   PetscReal      X[3 * TSL_CONTACT3_MAX_FACE_NODES], U[TSL_CONTACT3_NU * TSL_CONTACT3_MAX_FACE_NODES];
 
   PetscFunctionBeginUser;
-  memset(&cn, 0, sizeof(cn));
-  cn.pair   = fc->pair;
-  cn.lnode  = fc->lnode[0];
-  cn.length = pt->length;
-  cn.seg    = pt->seg;
-  cn.hist   = pt->hist;
+  TslS2SPointNode(fc, pt, &cn);
   PetscCall(TslProblemContact3Input(p, &cn, xa, in, kn, &nk));
   PetscCall(TslS2S3FaceData(p, fc, xa, X, U));
   TslContactPointSetUp3(fc->nsn, pt->N, X, U, in);
-  *n = 0;
-  for (PetscInt b = 0; b < fc->nsn; b++) nodes[(*n)++] = fc->lnode[b];
-  for (PetscInt k = 1; k < nk; k++) nodes[(*n)++] = kn[k];
+  TslS2SPointNodes(fc, kn, nk, nodes, n);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

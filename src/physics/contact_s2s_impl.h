@@ -34,6 +34,11 @@ struct _n_TslContactS2S {
 
 /* Shared by both dimensions (contact_s2s.c). */
 PetscErrorCode TslS2SPush(TslContactS2S s, const S2SPoint *pt);
+/* The secondary node a point of face fc stands for in the node-to-surface kernels (its weight and history),
+ * and the local nodes of the point's expanded element: the face's, then the kernel element's others
+ * (kn[1..nk), kn[0] being that stand-in node); *n of them. */
+void TslS2SPointNode(const S2SFace *fc, const S2SPoint *pt, TslContactNode *cn);
+void TslS2SPointNodes(const S2SFace *fc, const PetscInt kn[], PetscInt nk, PetscInt nodes[], PetscInt *n);
 /* Whether the points new[0..nnew) are the old ones (same main faces, same places: *same), and whether the
  * sequence of main faces changed (a new matrix pattern: *changed). */
 void TslS2SCompareCut(const S2SPoint *old, PetscInt nold, const S2SPoint *pnew, PetscInt nnew, PetscBool *same, PetscBool *changed);
