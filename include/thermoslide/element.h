@@ -93,12 +93,12 @@ typedef struct {
   const TslFormulation *form;
   /* the kinematics and what follows from it (one macro per kinematics in catalogue.c fills these) */
   TslKinematics kin;
-  PetscInt      dim;                        /* spatial dimension of the model (2 or 3) */
-  PetscInt      ndof;                       /* unknowns per node */
-  PetscInt      node_dof[TSL_MAX_NODE_DOF]; /* the dialect's dof number of each nodal unknown: 1..3, 5, 11; 0 unused */
-  PetscInt      nextra;                     /* extra nodes at the end of the element's node list (CPEG: the reference node) */
+  PetscInt      dim;                         /* spatial dimension of the model (2 or 3) */
+  PetscInt      ndof;                        /* unknowns per node */
+  PetscInt      node_dof[TSL_MAX_NODE_DOF];  /* the dialect's dof number of each nodal unknown: 1..3, 5, 11; 0 unused */
+  PetscInt      nextra;                      /* extra nodes at the end of the element's node list (CPEG: the reference node) */
   PetscInt      extra_dof[TSL_MAX_NODE_DOF]; /* the dialect's dofs of the extra node's slots (CPEG: 3, 4, 5), 0 unused */
-  const char   *description;                /* for docs and -help */
+  const char   *description;                 /* for docs and -help */
 } TslElementType;
 
 /* Catalogue lookups. TslElementTypeFind is case-insensitive and returns -1 for an unknown name. */
@@ -154,7 +154,7 @@ typedef struct {
  * map is not valid at some point (R, K then undefined). */
 /* PETSC_FALSE for an element that TslElementInternal would report inverted (a non-positive Jacobian at a
  * point of the full or the mechanical rule), at the cost of the geometry alone. */
-PetscBool TslElementValid(const TslElementInput *in);
+PetscBool      TslElementValid(const TslElementInput *in);
 PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted);
 /* Nodes of the element's vectors: the family's nodes and the type's extra nodes. */
 static inline PetscInt TslElementTypeNodes(const TslElementType *t)
@@ -166,6 +166,32 @@ static inline PetscInt TslElementTypeNodes(const TslElementType *t)
  * the element centre (eps_vol_dot from the nodal velocities v[], laid out as in->u) added to R; *power is
  * the rate it dissipates (>= 0). eta = b1 L_e / c_d (kernels.c). */
 PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta, PetscReal R[], PetscReal *power);
+
+/* Explicit force records (fast.c). In a small-strain analysis with temperature-independent properties the
+ * geometry of an element never changes and its conduction is linear, so the explicit force loop need not
+ * re-evaluate either at every increment: an element's record holds the spatial gradients and volumes of
+ * its mechanical points, its conduction matrix, the centre point of the bulk viscosity, the hourglass
+ * vectors and its elastic constants, and TslElementFastForce computes from it what TslElementInternal and
+ * TslElementBulkViscosity would (the same formulas, to rounding), with loops of fixed length.
+ * Rows: quad4 (plane strain, axisymmetric; full and reduced) and hex8 (full and reduced); other types,
+ * temperature-dependent materials and plane stress keep the generic path.
+ *   TslElementFastShape     the type's shape values at its mechanical points (one per type, shared by its
+ *                           elements); PETSC_FALSE when the type has no fast row
+ *   TslElementFastSize      reals in the element's record; 0: no fast path for this element
+ *   TslElementFastBuild     fills the record; PETSC_FALSE for an inverted element
+ *   TslElementFastForce     R (internal force and heat flow, laid out as TslElementInternal's), Rv (bulk
+ *                           viscosity forces, when eta > 0) and the power dissipated by the viscosity
+ * u[] and v[] are laid out as in->u (theta last at each node), ti[] the nodal initial temperatures. */
+typedef struct {
+  PetscInt  row;     /* the fast row (-1: none) */
+  PetscReal N[8][8]; /* N[q][a] at the mechanical points */
+} TslElementFastShape;
+
+PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *shape);
+PetscInt  TslElementFastSize(const TslElementInput *in);
+PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[]);
+void      TslElementFastForce(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
+                              PetscReal eta, PetscReal R[], PetscReal Rv[], PetscReal *power);
 
 /* Lumped nodal quantities of the element at its current temperatures:
  *   Q[a] heat content  rho V_a e(theta_a)  (material.h: e = int c dtheta)

@@ -117,6 +117,11 @@ PetscErrorCode TslProblemResidualNorms(TslProblem prob, Vec F, PetscReal *norm_u
 /* Explicit steps set this before TslProblemSetStep: no Jacobian pattern is built for the step. */
 PetscErrorCode TslProblemSetMatrixFree(TslProblem prob, PetscBool matrix_free);
 
+/* The explicit force records of the local elements (element.h, TslElementFastForce): built once (use true;
+ * false frees them and every element takes the generic kernels, -tsl_explicit_records 0). *nfast (elements
+ * with a record, all ranks) and *mbytes (the records' memory, largest rank) may be NULL. Collective. */
+PetscErrorCode TslProblemExplicitRecords(TslProblem prob, PetscBool use, PetscInt *nfast, PetscReal *mbytes);
+
 /* Rates of the heat terms of the last force evaluation, summed over all ranks. */
 typedef struct {
   PetscReal heat_in;        /* applied heat: CFLUX + surface and body fluxes */
@@ -152,7 +157,8 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem prob, Vec M, Vec M
  * limited so that the node's pressure stays >= 0. change[0], change[1]: the largest change and the largest
  * pressure over the ranks. When change[0] > tol change[1] the changes are applied (CPRESS) and their forces
  * put in W (zeroed first, summed on their owners; *applied), else nothing changes. */
-PetscErrorCode TslProblemContactKinematicPass(TslProblem prob, Vec Fk, Vec M, Vec Mask, Vec W, PetscReal hh, PetscReal tol, PetscReal change[2], PetscBool *applied);
+PetscErrorCode TslProblemContactKinematicPass(TslProblem prob, Vec Fk, Vec M, Vec Mask, Vec W, PetscReal hh, PetscReal tol, PetscReal change[2],
+                                              PetscBool *applied);
 /* After passes: each penetrating kinematic node's normal penalty becomes the one that gives it the passes'
  * pressure at its predicted gap, so that evaluating the kinematic pairs again at the predicted state
  * (TslProblemExplicitKinematicForces) gives those pressures with the friction and heat that go with them. */

@@ -80,3 +80,9 @@ struct TslFormulation {
 
 /* The formulations (formulations.c). */
 extern const TslFormulation TslFormFull, TslFormReduced, TslFormHybrid, TslFormReducedHybrid, TslFormModified, TslFormModifiedHybrid;
+
+/* Hourglass control of the one-point quad4 and hex8 (formulations.c): the Flanagan-Belytschko vectors
+ * gamma[k][a] at the centre point p (returns their number: 1 in 2D, 4 in 3D) and bb = sum_a |grad N_a|^2;
+ * the stiffness kappa = s mu dV bb. Shared by the generic kernel and the explicit records (fast.c). */
+PetscInt  TslElementHourglassBase(const TslElementInput *in, const TslElementPoint *p, PetscReal gamma[4][TSL_MAX_ELEM_NODES], PetscReal *bb);
+PetscReal TslElementHourglassKappa(PetscReal mu, PetscReal dV, PetscReal bb);

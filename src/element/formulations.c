@@ -28,6 +28,11 @@
  * the energy, the bending that one point cannot see. The dialect's *HOURGLASS STIFFNESS is not read yet. */
 #define TSL_HOURGLASS_SCALE 0.05
 
+PetscReal TslElementHourglassKappa(PetscReal mu, PetscReal dV, PetscReal bb)
+{
+  return TSL_HOURGLASS_SCALE * mu * dV * bb;
+}
+
 static const TslQuadrature *FullRule(const TslGeometry *g)
 {
   return &g->full;
@@ -160,20 +165,12 @@ static void FaceRuleSub(const TslGeometry *g, PetscInt face, TslFaceRule *rule)
  * hourglass force. With q^k_i = sum_a gamma^k_a u_ia:
  *   f_ia = kappa sum_k gamma^k_a q^k_i,  energy = kappa/2 sum_k,i (q^k_i)^2,  kappa = s mu V sum_a |b_a|^2,
  * mu taken at the centre temperature (its derivative enters the temperature columns of the tangent). */
-static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMaterialPoint *mp, PetscReal R[], PetscReal K[], PetscReal *energy)
+PetscInt TslElementHourglassBase(const TslElementInput *in, const TslElementPoint *p, PetscReal gamma[4][TSL_MAX_ELEM_NODES], PetscReal *bb)
 {
-  const TslElementType *t   = in->type;
-  const TslGeometry    *g   = t->geom;
-  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = TslElementTypeNodes(t) * ndof;
-  const PetscBool       twist = TslKinematicsRowGet(t->kin)->twist;
-  const PetscReal       xi0[3] = {0, 0, 0};
-  TslElementPoint       p;
-  PetscReal             gamma[4][TSL_MAX_ELEM_NODES], bb = 0, kappa, dkappa, mu, dmu;
-  PetscInt              nh = 0;
+  const TslGeometry *g   = in->type->geom;
+  const PetscInt     dim = in->type->dim, n = g->nnode;
+  PetscInt           nh = 0;
 
-  PetscFunctionBeginUser;
-  PetscCheck(TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB,
-             "hourglass control of an inverted element");
   /* base vectors: products of two or more reference coordinates at the nodes */
   for (PetscInt mask = 3; mask < (1 << g->dim); mask++) {
     PetscInt bits = 0;
@@ -191,16 +188,35 @@ static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMat
     for (PetscInt b = 0; b < n; b++)
       for (PetscInt d = 0; d < dim; d++) hx[d] += gamma[k][b] * in->x[3 * b + d];
     for (PetscInt a = 0; a < n; a++) {
-      for (PetscInt d = 0; d < dim; d++) gamma[k][a] -= hx[d] * p.dNdx[a][d];
+      for (PetscInt d = 0; d < dim; d++) gamma[k][a] -= hx[d] * p->dNdx[a][d];
       gamma[k][a] /= n; /* Flanagan-Belytschko's normalisation (1/4 in 2D, 1/8 in 3D) */
     }
   }
+  *bb = 0;
   for (PetscInt a = 0; a < n; a++)
-    for (PetscInt d = 0; d < dim; d++) bb += p.dNdx[a][d] * p.dNdx[a][d];
+    for (PetscInt d = 0; d < dim; d++) *bb += p->dNdx[a][d] * p->dNdx[a][d];
+  return nh;
+}
+
+static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMaterialPoint *mp, PetscReal R[], PetscReal K[], PetscReal *energy)
+{
+  const TslElementType *t   = in->type;
+  const TslGeometry    *g   = t->geom;
+  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = TslElementTypeNodes(t) * ndof;
+  const PetscBool       twist  = TslKinematicsRowGet(t->kin)->twist;
+  const PetscReal       xi0[3] = {0, 0, 0};
+  TslElementPoint       p;
+  PetscReal             gamma[4][TSL_MAX_ELEM_NODES], bb, kappa, dkappa, mu, dmu;
+  PetscInt              nh;
+
+  PetscFunctionBeginUser;
+  PetscCheck(TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "hourglass control of an inverted element");
+  nh      = TslElementHourglassBase(in, &p, gamma, &bb);
   mu      = mp->E / (2 * (1 + mp->nu));
   dmu     = mp->dE / (2 * (1 + mp->nu)) - mp->dnu * mp->E / (2 * (1 + mp->nu) * (1 + mp->nu));
-  kappa   = TSL_HOURGLASS_SCALE * mu * p.dV * bb;
-  dkappa  = TSL_HOURGLASS_SCALE * dmu * p.dV * bb;
+  kappa   = TslElementHourglassKappa(mu, p.dV, bb);
+  dkappa  = TslElementHourglassKappa(dmu, p.dV, bb);
   *energy = 0;
   for (PetscInt k = 0; k < nh; k++)
     for (PetscInt i = 0; i < nu; i++) {

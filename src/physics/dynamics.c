@@ -22,15 +22,40 @@ typedef struct {
   PetscInt           bad;
 } ForceCtx;
 
-/* One element's internal forces and heat flow into fi; its face loads: mechanical rows (pressure) as
- * forces into fe, heat rows (flux, film) in residual form into fi; its bulk viscosity forces into fv (in
- * the same pass over the elements: one gather of the element's data per increment). */
-static PetscErrorCode ForceElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+/* One element's face loads: mechanical rows (pressure) as forces into fe, heat rows (flux, film) in
+ * residual form into fi. */
+static PetscErrorCode FaceLoads(TslProblem p, PetscInt e, TslElemData *d, ForceCtx *c)
 {
-  ForceCtx *c = (ForceCtx *)ctx;
+  PetscReal R[TSL_MAX_ELEM_DOF];
+  PetscInt  th = p->ndof - 1;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
+    const TslFaceRecord *rec = &p->face[i];
+    PetscReal            value, sink, h = 0;
+    PetscCall(TslProblemFaceLoadValue(p, rec, &value, &sink));
+    PetscCall(PetscArrayzero(R, d->nd));
+    PetscCall(TslElementFaceLoad(&d->in, rec->kind, rec->face, value, sink, R, NULL, &h));
+    for (PetscInt r = 0; r < d->nd; r++) {
+      if (r % p->ndof == th)
+        c->fi[d->ld[r]] += R[r];
+      else
+        c->fe[d->ld[r]] -= R[r];
+    }
+    if (rec->kind == TSL_FACE_FILM)
+      c->heat->film += h;
+    else if (rec->kind != TSL_FACE_PRESSURE)
+      c->heat->flux_in += h;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* One element's internal forces and heat flow into fi, its bulk viscosity forces into fv (in the same pass
+ * over the elements: one gather of the element's data per increment), by the generic kernels. */
+static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, PetscBool *stop)
+{
   PetscReal R[TSL_MAX_ELEM_DOF];
   PetscBool inverted = PETSC_FALSE;
-  PetscInt  th       = p->ndof - 1;
 
   PetscFunctionBeginUser;
   PetscCall(TslElementInternal(&d->in, R, NULL, &inverted));
@@ -47,19 +72,90 @@ static PetscErrorCode ForceElement(TslProblem p, PetscInt e, TslElemData *d, voi
     for (PetscInt r = 0; r < d->nd; r++) c->fv[d->ld[r]] += R[r];
     c->power += w;
   }
-  for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
-    const TslFaceRecord *rec = &p->face[i];
-    PetscReal            value, sink, h = 0;
-    PetscCall(TslProblemFaceLoadValue(p, rec, &value, &sink));
-    PetscCall(PetscArrayzero(R, d->nd));
-    PetscCall(TslElementFaceLoad(&d->in, rec->kind, rec->face, value, sink, R, NULL, &h));
-    for (PetscInt r = 0; r < d->nd; r++) {
-      if (r % p->ndof == th) c->fi[d->ld[r]] += R[r];
-      else c->fe[d->ld[r]] -= R[r];
-    }
-    if (rec->kind == TSL_FACE_FILM) c->heat->film += h;
-    else if (rec->kind != TSL_FACE_PRESSURE) c->heat->flux_in += h;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The same from the element's record (TslElementFastForce): a gather of the unknowns alone, no geometry. */
+static void FastElement(TslProblem p, PetscInt e, const PetscScalar *restrict xa, ForceCtx *c)
+{
+  const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0, nd = p->ndof;
+  const PetscInt *ln       = &p->elem_lnode[k0];
+  const PetscReal eta      = c->fv ? c->eta[e] : 0;
+  PetscScalar *restrict fi = c->fi, *restrict fv = c->fv;
+  const PetscScalar *restrict va = c->v;
+  PetscReal u[TSL_MAX_ELEM_DOF], v[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES], R[TSL_MAX_ELEM_DOF], Rv[TSL_MAX_ELEM_DOF], w;
+
+  for (PetscInt a = 0; a < n; a++) {
+    const PetscInt l = ln[a];
+    for (PetscInt i = 0; i < nd; i++) u[nd * a + i] = PetscRealPart(xa[nd * l + i]);
+    ti[a] = p->theta_init[l];
   }
+  if (eta > 0)
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < nd; i++) v[nd * a + i] = PetscRealPart(va[nd * ln[a] + i]);
+  TslElementFastForce(&p->fast_shape[p->m->elem_type[e]], &p->fast_rec[p->fast_off[e]], u, ti, v, eta, R, Rv, &w);
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt i = 0; i < nd; i++) fi[nd * ln[a] + i] += R[nd * a + i];
+  if (eta > 0) {
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < nd; i++) fv[nd * ln[a] + i] += Rv[nd * a + i];
+    c->power += w;
+  }
+}
+
+/* The element pass of an explicit force evaluation: records where the element has one, the generic
+ * kernels otherwise; face loads (a gather) only on elements that carry them. */
+static PetscErrorCode ForcePass(TslProblem p, const PetscScalar *xa, ForceCtx *c)
+{
+  TslElemData d;
+
+  PetscFunctionBeginUser;
+  for (PetscInt e = 0; e < p->m->nelem; e++) {
+    const PetscBool fast = p->fast_off && p->fast_off[e] >= 0 ? PETSC_TRUE : PETSC_FALSE;
+    PetscBool       stop = PETSC_FALSE;
+    if (fast) FastElement(p, e, xa, c);
+    if (!fast || p->face_start[e] < p->face_start[e + 1]) TslProblemGather(p, e, xa, xa, &d);
+    if (!fast) PetscCall(ForceElement(e, &d, c, &stop));
+    if (stop) break;
+    PetscCall(FaceLoads(p, e, &d, c));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemExplicitRecords(TslProblem p, PetscBool use, PetscInt *nfast, PetscReal *mbytes)
+{
+  const PetscInt nelem = p->m->nelem, ntype = TslElementTypeCount();
+  PetscReal      mb;
+  TslElemData    d;
+
+  PetscFunctionBeginUser;
+  if (!use) {
+    PetscCall(PetscFree3(p->fast_off, p->fast_rec, p->fast_shape));
+    p->fast_built = PETSC_FALSE, p->fast_count = p->fast_total = 0;
+  }
+  if (use && !p->fast_built) { /* the records hold for the whole job: the geometry and the materials do not change */
+    PetscInt *size, total = 0;
+    PetscCall(PetscMalloc1(nelem, &size));
+    for (PetscInt e = 0; e < nelem; e++) {
+      TslProblemGather(p, e, NULL, NULL, &d);
+      size[e] = d.in.type->ndof == p->ndof ? TslElementFastSize(&d.in) : 0;
+      total += size[e];
+    }
+    PetscCall(PetscMalloc3(nelem, &p->fast_off, total, &p->fast_rec, ntype, &p->fast_shape));
+    for (PetscInt t = 0; t < ntype; t++) (void)TslElementFastShapeGet(TslElementTypeGet(t), &p->fast_shape[t]);
+    for (PetscInt e = 0; e < nelem; e++) {
+      p->fast_off[e] = -1;
+      if (!size[e]) continue;
+      TslProblemGather(p, e, NULL, NULL, &d);
+      if (!TslElementFastBuild(&d.in, &p->fast_rec[p->fast_total])) continue; /* inverted: the generic kernel reports it */
+      p->fast_off[e] = p->fast_total, p->fast_total += size[e], p->fast_count++;
+    }
+    PetscCall(PetscFree(size));
+    p->fast_built = PETSC_TRUE;
+  }
+  if (nfast) PetscCall(MPIU_Allreduce(&p->fast_count, nfast, 1, MPIU_INT, MPI_SUM, p->comm));
+  mb = p->fast_total * sizeof(PetscReal) / 1048576.0;
+  if (mbytes) PetscCall(MPIU_Allreduce(&mb, mbytes, 1, MPIU_REAL, MPI_MAX, p->comm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -118,7 +214,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(BeginLocal(Fe, &el, &c.fe));
   PetscCall(BeginLocal(Fv, &fl, &c.fv));
   PetscCall(BeginLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
-  PetscCall(TslProblemElementLoop(p, xa, xa, ForceElement, &c));
+  PetscCall(ForcePass(p, xa, &c));
   /* a contact projection that fails has no cutback to fall back on here: an error on all ranks (as is a
    * failure injected on one rank for the tests, -tsl_debug_fail_kind internal) */
   PetscCall(TslCaptureBegin());
@@ -131,8 +227,10 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
     PetscReal v;
     if (!p->nload[dof].active) continue;
     v = TslProblemEvalLoadValue(p, &p->nload[dof]);
-    if (dof % p->ndof == p->ndof - 1) c.fi[dof] -= v, heat.flux_in += v;
-    else c.fe[dof] += v;
+    if (dof % p->ndof == p->ndof - 1)
+      c.fi[dof] -= v, heat.flux_in += v;
+    else
+      c.fe[dof] += v;
   }
   PetscCall(EndLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
   PetscCall(EndLocal(Fv, &fl, &c.fv));
@@ -212,7 +310,7 @@ PetscErrorCode TslProblemLumpedMass(TslProblem p, const PetscReal scale[], Vec M
 {
   Vec                xl, ml;
   const PetscScalar *xa;
-  MassCtx            c = {NULL, scale, -1};
+  MassCtx            c      = {NULL, scale, -1};
   PetscInt           loc[3] = {-1, -1, -1}, g[3];
 
   PetscFunctionBeginUser;

@@ -359,6 +359,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(PetscFree(p->pattern_rows));
   PetscCall(PetscFree(p->blk_ptr));
   PetscCall(PetscFree(p->blk));
+  PetscCall(PetscFree3(p->fast_off, p->fast_rec, p->fast_shape));
   PetscCall(TslProblemContactDestroy(p));
   PetscCall(TslModelDestroy(&p->m));
   PetscCall(PetscFree(p));

@@ -135,6 +135,14 @@ struct _p_TslProblem {
   PetscScalar       *jac_val;
   const PetscInt    *jac_row;
 
+  /* explicit force records (element.h, fast.c; TslProblemExplicitRecords): fast_off[e] the offset of local
+   * element e's record in fast_rec (-1: the generic kernels), fast_shape[] one per catalogue type */
+  PetscBool            fast_built;
+  PetscInt             fast_count, fast_total; /* elements with a record, reals in fast_rec */
+  PetscInt            *fast_off;
+  PetscReal           *fast_rec;
+  TslElementFastShape *fast_shape;
+
   /* failures decided by all ranks (sys.h) */
   TslInject inject;
   char      fail_msg[TSL_FAIL_MSG_LEN]; /* the last convergence-type failure */

@@ -60,6 +60,7 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
   d->explicit_search   = 10;
   d->explicit_kin_passes = 20;
   d->explicit_kin_tol    = 1e-3;
+  d->explicit_records    = PETSC_TRUE;
   PetscOptionsBegin(d->comm, NULL, "thermoslide explicit dynamics", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_safety", "explicit: factor on the element-by-element stable increment", 0, PETSC_TRUE, 1,
                            PETSC_FALSE, &d->explicit_safety));
@@ -73,6 +74,8 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
                           &d->explicit_kin_passes));
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_kinematic_tol", "explicit: kinematic corrector passes stop at this pressure change (fraction of the largest pressure)",
                            0, PETSC_FALSE, 1, PETSC_FALSE, &d->explicit_kin_tol));
+  PetscCall(PetscOptionsBool("-tsl_explicit_records", "explicit: element force records (geometry and conduction computed once; docs/explicit.md)", NULL,
+                             d->explicit_records, &d->explicit_records, NULL));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -604,6 +607,14 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslProblemConstrainedMask(x.p, x.Mask));
   PetscCall(VecGhostUpdateBegin(x.Mask, INSERT_VALUES, SCATTER_FORWARD)); /* the kinematic corrector reads main nodes' masks */
   PetscCall(VecGhostUpdateEnd(x.Mask, INSERT_VALUES, SCATTER_FORWARD));
+  {
+    PetscInt  nfast;
+    PetscReal mb;
+    PetscCall(TslProblemExplicitRecords(x.p, d->explicit_records, &nfast, &mb));
+    if (d->explicit_records)
+      PetscCall(PetscPrintf(d->comm, "  force records: %" PetscInt_FMT " of %" PetscInt_FMT " elements (%.1f MB on the largest rank); the others take the generic kernels\n",
+                            nfast, x.m->nelem_global, (double)mb));
+  }
   PetscCall(TslProblemSetTime(x.p, 0, 0, *total_time));
   PetscCall(TslProblemApplyPrescribed(x.p, x.X));
   if (x.m->npair) {

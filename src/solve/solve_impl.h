@@ -57,6 +57,7 @@ typedef struct {
   PetscInt  explicit_search;   /* -tsl_explicit_contact_search */
   PetscInt  explicit_kin_passes; /* -tsl_explicit_kinematic_passes */
   PetscReal explicit_kin_tol;    /* -tsl_explicit_kinematic_tol */
+  PetscBool explicit_records;    /* -tsl_explicit_records */
 } Driver;
 
 #define HIST_ENERGY 17 /* first energy column */

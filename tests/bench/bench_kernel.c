@@ -1,7 +1,9 @@
 /* Element kernel cost per catalogue row, in CPU time of this thread (robust to a loaded machine):
  * residual (internal force + heat flow) and residual + tangent of one element, on a mildly distorted
  * unit element with a nonzero state, plus the flop-free floor of touching the element arrays.
- * Prints figures only (ctest -L bench). usage: bench_kernel [seconds per figure, default 0.2; a negative
+ * For the types with an explicit force record (src/element/fast.c): TslElementFastForce on one record
+ * (in cache) and streamed over 64 MB of records (as the explicit loop reads them), so the difference is
+ * the memory traffic's share. Prints figures only (ctest -L bench). usage: bench_kernel [seconds per figure, default 0.2; a negative
  * value -N runs exactly N calls per figure, for instruction counts with perf stat] [TYPE] */
 #define _POSIX_C_SOURCE 200809L
 #include <thermoslide/element.h>
@@ -41,13 +43,36 @@ static PetscErrorCode Time(const TslElementInput *in, PetscBool tangent, double 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* ns per TslElementFastForce over nrec copies of rec (size reals each), for about `budget` seconds */
+static double TimeRecords(const TslElementFastShape *shape, const PetscReal *recs, PetscInt size, PetscInt nrec, const TslElementInput *in,
+                          double budget)
+{
+  static PetscReal R[TSL_MAX_ELEM_DOF], Rv[TSL_MAX_ELEM_DOF], v[TSL_MAX_ELEM_DOF];
+  PetscReal        w, sum = 0;
+  long             n  = 0;
+  double           t0 = CpuNow(), t;
+
+  for (PetscInt i = 0; i < TSL_MAX_ELEM_DOF; i++) v[i] = 1e-3 * i;
+  do {
+    for (PetscInt k = 0; k < 4096; k += nrec) /* at least 4096 calls between clock reads */
+      for (PetscInt e = 0; e < nrec; e++) {
+        TslElementFastForce(shape, recs + e * size, in->u, in->theta_init, v, 1e-6, R, Rv, &w);
+        sum += R[0];
+      }
+    n += nrec >= 4096 ? nrec : 4096;
+    t = CpuNow() - t0;
+  } while (budget > 0 ? t < budget : n < -budget);
+  if (sum == 12345.678) printf(" ");
+  return 1e9 * t / n;
+}
+
 int main(int argc, char **argv)
 {
   double budget = argc > 1 ? atof(argv[1]) : 0.2;
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %6s %5s %12s %12s %12s %12s\n", "type", "nodes", "dofs", "residual_ns", "jacobian_ns", "res_ns/node",
-                        "jac_ns/node"));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %6s %5s %12s %12s %12s %12s %10s %10s\n", "type", "nodes", "dofs", "residual_ns", "jacobian_ns",
+                        "res_ns/node", "jac_ns/node", "record_ns", "streamed"));
   for (PetscInt k = 0; k < TslElementTypeCount(); k++) {
     const TslElementType *t = TslElementTypeGet(k);
     const TslGeometry    *g = t->geom;
@@ -55,7 +80,8 @@ int main(int argc, char **argv)
     TslElementSection     sec;
     PetscReal             x[TSL_MAX_ELEM_NODES * 3] = {0}, u[TSL_MAX_ELEM_DOF] = {0}, ti[TSL_MAX_ELEM_NODES] = {0};
     TslElementInput       in;
-    double                r_ns, j_ns;
+    double                r_ns, j_ns, f_ns = 0, fs_ns = 0;
+    TslElementFastShape   shape;
     const PetscInt        nn = TslElementTypeNodes(t);
 
     if (argc > 2 && strcmp(argv[2], t->name)) continue;
@@ -75,8 +101,18 @@ int main(int argc, char **argv)
     in = (TslElementInput){.type = t, .sec = &sec, .x = x, .u = u, .theta_init = ti};
     PetscCall(Time(&in, PETSC_FALSE, budget, &r_ns));
     PetscCall(Time(&in, PETSC_TRUE, budget, &j_ns));
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %6" PetscInt_FMT " %5" PetscInt_FMT " %12.0f %12.0f %12.0f %12.0f\n", t->name, nn, nn * t->ndof, r_ns,
-                          j_ns, r_ns / nn, j_ns / nn));
+    if (TslElementFastShapeGet(t, &shape)) {
+      const PetscInt size = TslElementFastSize(&in), nrec = (64 << 20) / (size * (PetscInt)sizeof(PetscReal));
+      PetscReal     *recs;
+      PetscCall(PetscMalloc1(size * nrec, &recs));
+      PetscCheck(TslElementFastBuild(&in, recs), PETSC_COMM_SELF, PETSC_ERR_PLIB, "inverted benchmark element");
+      for (PetscInt e = 1; e < nrec; e++) PetscCall(PetscArraycpy(recs + e * size, recs, size));
+      f_ns  = TimeRecords(&shape, recs, size, 1, &in, budget);
+      fs_ns = TimeRecords(&shape, recs, size, nrec, &in, budget);
+      PetscCall(PetscFree(recs));
+    }
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %6" PetscInt_FMT " %5" PetscInt_FMT " %12.0f %12.0f %12.0f %12.0f %10.0f %10.0f\n", t->name, nn,
+                          nn * t->ndof, r_ns, j_ns, r_ns / nn, j_ns / nn, f_ns, fs_ns));
   }
   PetscCall(PetscFinalize());
   return 0;

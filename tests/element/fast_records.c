@@ -1,0 +1,89 @@
+/* The explicit force records (src/element/fast.c) against the generic kernels they replace: for every
+ * catalogue type with a fast row, on a distorted element (shifted far from the origin too, where the
+ * geometry's rounding is largest) with arbitrary displacements, temperatures and velocities, the internal
+ * force and heat flow equal TslElementInternal's, the bulk viscosity forces and power
+ * TslElementBulkViscosity's, to 1e-12 of the largest entry. The types without a row, plane stress among
+ * them, and a temperature-dependent material get no record (size 0). */
+#include "check.h"
+
+static void Constant(TslPropertyTable *t, PetscReal v0, PetscReal v1)
+{
+  t->n           = 1;
+  t->value[0][0] = v0, t->value[0][1] = v1;
+}
+
+/* Largest |a - b| over n entries, relative to the largest |b| (floor 1e-300). */
+static PetscReal RelDiff(PetscInt n, const PetscReal a[], const PetscReal b[])
+{
+  PetscReal d = 0, m = 1e-300;
+  for (PetscInt i = 0; i < n; i++) d = PetscMax(d, PetscAbsReal(a[i] - b[i])), m = PetscMax(m, PetscAbsReal(b[i]));
+  return d / m;
+}
+
+static PetscErrorCode CheckType(TestLog *log, const TslElementType *t, PetscReal offset, PetscInt *nrows)
+{
+  const TslGeometry  *g = t->geom;
+  const PetscInt      n = g->nnode, ndof = t->ndof, nd = n * ndof;
+  TslMaterial         mat;
+  TslElementSection   sec;
+  TslElementInput     in;
+  TslElementFastShape shape;
+  PetscReal           x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], v[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES], rec[512], R[TSL_MAX_ELEM_DOF],
+      Rg[TSL_MAX_ELEM_DOF], Rv[TSL_MAX_ELEM_DOF], Rvg[TSL_MAX_ELEM_DOF], w, wg;
+  PetscBool inverted;
+  PetscInt  size;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMemzero(&mat, sizeof(mat)));
+  Constant(&mat.prop[TSL_PROP_ELASTIC], 200e3, 0.3);
+  Constant(&mat.prop[TSL_PROP_CONDUCTIVITY], 10, 0);
+  Constant(&mat.prop[TSL_PROP_DENSITY], 2, 0);
+  Constant(&mat.prop[TSL_PROP_SPECIFIC_HEAT], 3, 0);
+  Constant(&mat.prop[TSL_PROP_EXPANSION], 1e-3, 0);
+  sec = (TslElementSection){&mat, 0.5};
+  for (PetscInt a = 0; a < TslElementTypeNodes(t); a++) {
+    for (PetscInt d = 0; d < 3; d++) {
+      const PetscReal lo = g->node_xi[0][d] < 0 || g->node_xi[1][d] < 0 ? -1 : 0, unit = lo < 0 ? 0.5 * (g->node_xi[a][d] + 1) : g->node_xi[a][d];
+      x[3 * a + d] = d < t->dim ? unit + 0.08 * PetscSinReal(3.1 * a + 1.3 * d + 0.7) + (d == 0 ? 1 : 0) + offset : 0;
+    }
+    ti[a] = 20 + 3 * PetscCosReal(1.7 * a);
+    for (PetscInt i = 0; i < ndof; i++) {
+      u[ndof * a + i] = i == ndof - 1 ? 40 + 7 * PetscSinReal(2.3 * a) : 1e-3 * PetscSinReal(1.9 * a + 0.6 * i + 0.2);
+      v[ndof * a + i] = i == ndof - 1 ? 0 : 0.4 * PetscCosReal(0.9 * a + 1.1 * i);
+    }
+  }
+  in = (TslElementInput){.type = t, .sec = &sec, .x = x, .u = u, .theta_init = ti};
+  if (!TslElementFastShapeGet(t, &shape)) {
+    CheckTrue(log, (PetscBool)(TslElementFastSize(&in) == 0), "%s: no fast row, no record", t->name);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  (*nrows)++;
+  size = TslElementFastSize(&in);
+  CheckTrue(log, (PetscBool)(size > 0 && size <= 512), "%s: record of %d reals", t->name, (int)size);
+  CheckTrue(log, TslElementFastBuild(&in, rec), "%s (offset %g): record built", t->name, (double)offset);
+  TslElementFastForce(&shape, rec, u, ti, v, 0.06 * 1e-4, R, Rv, &w);
+  PetscCall(TslElementInternal(&in, Rg, NULL, &inverted));
+  for (PetscInt i = 0; i < nd; i++) Rvg[i] = 0;
+  PetscCall(TslElementBulkViscosity(&in, v, 0.06 * 1e-4, Rvg, &wg));
+  CheckAtMost(log, RelDiff(nd, R, Rg), 1e-12, "%s (offset %g): internal force and heat flow against the generic kernel", t->name, (double)offset);
+  CheckAtMost(log, RelDiff(nd, Rv, Rvg), 1e-12, "%s (offset %g): bulk viscosity forces against the generic kernel", t->name, (double)offset);
+  CheckRel(log, w, wg, 1e-12, 1e-300, "%s (offset %g): bulk viscosity power", t->name, (double)offset);
+  /* a temperature-dependent property: no record */
+  mat.prop[TSL_PROP_CONDUCTIVITY].n        = 2;
+  mat.prop[TSL_PROP_CONDUCTIVITY].theta[1] = 100, mat.prop[TSL_PROP_CONDUCTIVITY].value[1][0] = 12;
+  CheckTrue(log, (PetscBool)(TslElementFastSize(&in) == 0), "%s: temperature-dependent conductivity, no record", t->name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+int main(int argc, char **argv)
+{
+  TestLog  log   = {0, 0};
+  PetscInt nrows = 0;
+
+  PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
+  for (PetscInt t = 0; t < TslElementTypeCount(); t++)
+    for (PetscInt k = 0; k < 2; k++) PetscCall(CheckType(&log, TslElementTypeGet(t), k ? 1e4 : 0, &nrows));
+  CheckTrue(&log, (PetscBool)(nrows == 2 * 6), "records for C3D8T, C3D8RT, CPE4T, CPE4RT, CAX4T, CAX4RT (%d type-offset pairs)", (int)nrows);
+  PetscCall(PetscFinalize());
+  return log.failures ? 1 : 0;
+}
