@@ -136,6 +136,11 @@ typedef struct {
  *       same element pass as Fi.
  * The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets M a = Fe - Fi - Fc - Fv. */
 PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], Vec Fv, TslExplicitRates *rates);
+/* The initial velocities of the deck (*INITIAL CONDITIONS, TYPE=VELOCITY) at the owned dofs into V (zeroed
+ * first; the temperature slots stay zero), for the first explicit step after TslProblemSetStep: a dof held by
+ * a boundary condition of that step (or pinned) keeps zero, the condition wins; *held counts those dofs where a
+ * nonzero velocity was given, over all ranks. Collective. */
+PetscErrorCode TslProblemInitialVelocity(TslProblem prob, Vec V, PetscInt *held);
 /* Kinematic contact (src/physics/contact_kinematic.c; docs/explicit.md). SetKinematic: the pairs with
  * MECHANICAL CONSTRAINT=KINEMATIC become kinematic for an explicit step (explicit_step true) or ordinary
  * again (false); *any: some pair is (the same on all ranks). Kinematic pairs are left out of
