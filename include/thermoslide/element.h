@@ -162,10 +162,12 @@ static inline PetscInt TslElementTypeNodes(const TslElementType *t)
   return t->geom->nnode + t->nextra;
 }
 
-/* Linear bulk viscosity of explicit steps: nodal forces of the pressure eta (lambda + 2 mu) eps_vol_dot at
- * the element centre (eps_vol_dot from the nodal velocities v[], laid out as in->u) added to R; *power is
- * the rate it dissipates (>= 0). eta = b1 L_e / c_d (kernels.c). */
-PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta, PetscReal R[], PetscReal *power);
+/* Bulk viscosity of explicit steps: nodal forces of the pressure (lambda + 2 mu) (eta1 eps_vol_dot - eta2
+ * eps_vol_dot^2), the quadratic term only when eps_vol_dot < 0 (compression), at the element centre
+ * (eps_vol_dot from the nodal velocities v[], laid out as in->u) added to R; *power is the rate it dissipates
+ * (>= 0). eta1 = b1 L_e / c_d, eta2 = (b2 L_e / c_d)^2, i.e. Abaqus's b1 rho c_d L_e and rho (b2 L_e)^2 (kernels.c). */
+PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta1, PetscReal eta2, PetscReal R[],
+                                       PetscReal *power);
 
 /* Lumped nodal quantities of the element at its current temperatures:
  *   Q[a] heat content  rho V_a e(theta_a)  (material.h: e = int c dtheta)

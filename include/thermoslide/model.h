@@ -305,7 +305,7 @@ typedef struct {
   PetscBool         explicit_dynamics;         /* *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT (src/solve/explicit.c) */
   PetscReal         dt_user;                   /* explicit, DIRECT USER CONTROL: the fixed increment (0: the stable increment) */
   PetscReal         dt_scale;                  /* explicit, SCALE FACTOR= on the stable increment (default 1) */
-  PetscReal         bv_linear, bv_quadratic;   /* explicit, *BULK VISCOSITY b1, b2 (defaults 0.06, 1.2; b2 is read, not applied) */
+  PetscReal         bv_linear, bv_quadratic;   /* explicit, *BULK VISCOSITY b1, b2 (defaults 0.06, 1.2) */
   PetscBool         bv_given;                  /* *BULK VISCOSITY seen in the step */
   TslLoc            bv_loc;
   PetscInt          nmass;                     /* explicit: mass scaling definitions of the step */

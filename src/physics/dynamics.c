@@ -16,7 +16,7 @@ PetscErrorCode TslProblemSetMatrixFree(TslProblem p, PetscBool matrix_free)
 typedef struct {
   PetscScalar       *fi, *fe, *fv; /* fv: bulk viscosity forces (NULL: none) */
   const PetscScalar *v;            /* local form of the half-step velocity (with fv) */
-  const PetscReal   *eta;          /* [nelem] b1 L_e / c_d (with fv) */
+  const PetscReal   *eta, *eta2;   /* [nelem] b1 L_e / c_d and (b2 L_e / c_d)^2 (with fv) */
   PetscReal          power;        /* rate dissipated by the bulk viscosity, this rank */
   AsmHeat           *heat;
   PetscInt           bad;
@@ -40,10 +40,10 @@ static PetscErrorCode ForceElement(TslProblem p, PetscInt e, TslElemData *d, voi
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (PetscInt r = 0; r < d->nd; r++) c->fi[d->ld[r]] += R[r];
-  if (c->fv && c->eta[e] > 0) {
+  if (c->fv && (c->eta[e] > 0 || c->eta2[e] > 0)) {
     PetscReal v[TSL_MAX_ELEM_DOF], w;
     for (PetscInt r = 0; r < d->nd; r++) v[r] = PetscRealPart(c->v[d->ld[r]]), R[r] = 0;
-    PetscCall(TslElementBulkViscosity(&d->in, v, c->eta[e], R, &w));
+    PetscCall(TslElementBulkViscosity(&d->in, v, c->eta[e], c->eta2[e], R, &w));
     for (PetscInt r = 0; r < d->nd; r++) c->fv[d->ld[r]] += R[r];
     c->power += w;
   }
@@ -94,13 +94,14 @@ static PetscErrorCode InjectedInternal(void)
   SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "injected internal failure (-tsl_debug_fail_kind)");
 }
 
-PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], Vec Fv, TslExplicitRates *rates)
+PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], Vec Fv,
+                                        TslExplicitRates *rates)
 {
   Vec                xl, il, el, cl = NULL, vl = NULL, fl = NULL;
   const PetscScalar *xa;
   PetscScalar       *fc;
   AsmHeat            heat;
-  ForceCtx           c = {NULL, NULL, NULL, NULL, eta, 0, &heat, -1};
+  ForceCtx           c = {NULL, NULL, NULL, NULL, eta, eta2, 0, &heat, -1};
   PetscReal          loc[6], g[6];
   TslFailure         fail;
   PetscErrorCode     ierr;
