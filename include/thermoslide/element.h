@@ -162,10 +162,12 @@ static inline PetscInt TslElementTypeNodes(const TslElementType *t)
   return t->geom->nnode + t->nextra;
 }
 
-/* Linear bulk viscosity of explicit steps: nodal forces of the pressure eta (lambda + 2 mu) eps_vol_dot at
- * the element centre (eps_vol_dot from the nodal velocities v[], laid out as in->u) added to R; *power is
- * the rate it dissipates (>= 0). eta = b1 L_e / c_d (kernels.c). */
-PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta, PetscReal R[], PetscReal *power);
+/* Bulk viscosity of explicit steps: nodal forces of the pressure (lambda + 2 mu) (eta1 eps_vol_dot - eta2
+ * eps_vol_dot^2), the quadratic term only when eps_vol_dot < 0 (compression), at the element centre
+ * (eps_vol_dot from the nodal velocities v[], laid out as in->u) added to R; *power is the rate it dissipates
+ * (>= 0). eta1 = b1 L_e / c_d, eta2 = (b2 L_e / c_d)^2, i.e. Abaqus's b1 rho c_d L_e and rho (b2 L_e)^2 (kernels.c). */
+PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta1, PetscReal eta2, PetscReal R[],
+                                       PetscReal *power);
 
 /* Explicit force records (fast.c). In a small-strain analysis with temperature-independent properties the
  * geometry of an element never changes and its conduction is linear, so the explicit force loop need not
@@ -180,7 +182,8 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
  *   TslElementFastSize      reals in the element's record; 0: no fast path for this element
  *   TslElementFastBuild     fills the record; PETSC_FALSE for an inverted element
  *   TslElementFastForce     R (internal force and heat flow, laid out as TslElementInternal's), Rv (bulk
- *                           viscosity forces, when eta > 0) and the power dissipated by the viscosity
+ *                           viscosity forces, when eta > 0 or eta2 > 0: TslElementBulkViscosity's eta1,
+ *                           eta2) and the power dissipated by the viscosity
  * u[] and v[] are laid out as in->u (theta last at each node), ti[] the nodal initial temperatures. */
 typedef struct {
   PetscInt  row;     /* the fast row (-1: none) */
@@ -191,7 +194,7 @@ PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *s
 PetscInt  TslElementFastSize(const TslElementInput *in);
 PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[]);
 void      TslElementFastForce(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
-                              PetscReal eta, PetscReal R[], PetscReal Rv[], PetscReal *power);
+                              PetscReal eta, PetscReal eta2, PetscReal R[], PetscReal Rv[], PetscReal *power);
 
 /* Lumped nodal quantities of the element at its current temperatures:
  *   Q[a] heat content  rho V_a e(theta_a)  (material.h: e = int c dtheta)

@@ -80,6 +80,17 @@ typedef struct {
   TslLoc    loc;
 } TslInitialTemperature;
 
+/* *INITIAL CONDITIONS, TYPE=VELOCITY: the velocity of displacement dof (1..3) of a node or node set at the
+ * start of the first explicit step (implicit steps are static and ignore it; a prescribed dof keeps its
+ * boundary condition). After distribution each rank keeps the lines whose node it holds or whose set has
+ * members there (TslModelSubset), so no rank holds a list the size of a per-node deck. */
+typedef struct {
+  TslTarget target; /* node or node set */
+  PetscInt  dof;
+  PetscReal value;
+  TslLoc    loc;
+} TslInitialVelocity;
+
 typedef struct {
   char       name[TSL_NAME_LEN];
   PetscInt   n;
@@ -294,7 +305,7 @@ typedef struct {
   PetscBool         explicit_dynamics;         /* *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT (src/solve/explicit.c) */
   PetscReal         dt_user;                   /* explicit, DIRECT USER CONTROL: the fixed increment (0: the stable increment) */
   PetscReal         dt_scale;                  /* explicit, SCALE FACTOR= on the stable increment (default 1) */
-  PetscReal         bv_linear, bv_quadratic;   /* explicit, *BULK VISCOSITY b1, b2 (defaults 0.06, 1.2; b2 is read, not applied) */
+  PetscReal         bv_linear, bv_quadratic;   /* explicit, *BULK VISCOSITY b1, b2 (defaults 0.06, 1.2) */
   PetscBool         bv_given;                  /* *BULK VISCOSITY seen in the step */
   TslLoc            bv_loc;
   PetscInt          nmass;                     /* explicit: mass scaling definitions of the step */
@@ -342,6 +353,8 @@ typedef struct {
   TslMaterial           *materials;
   TslSection            *sections;
   TslInitialTemperature *init;
+  PetscInt               nvinit;
+  TslInitialVelocity    *vinit; /* in deck order: a later line for the same dof wins */
   TslAmplitude          *amplitudes;
   TslEquation           *equations;
 
@@ -412,5 +425,8 @@ PetscErrorCode TslDeckRead(const char *path, TslModel **model);
 /* Consistency checks that need the whole model: undefined sets/surfaces/materials/amplitudes,
  * elements without a section, missing material properties, wrong node counts, duplicate ids,
  * element references to undefined nodes, steps without a procedure; contact pairs (interaction and
- * surfaces defined, main surface element-based, secondary != main) and the interface laws' values. */
+ * surfaces defined, main surface element-based, secondary != main) and the interface laws' values;
+ * initial velocities (a node or set defined, a displacement dof the elements carry, a node given alone
+ * belonging to an element). Prints a warning (once) when initial velocities are given but no step is
+ * explicit. */
 PetscErrorCode TslModelCheck(TslModel *model);

@@ -129,18 +129,24 @@ typedef struct {
   PetscReal interface_heat; /* heat crossing contact interfaces (main -> secondary) */
   PetscReal dissipation;    /* frictional dissipation */
   PetscReal friction_heat;  /* part of it converted to heat */
-  PetscReal viscous;        /* rate dissipated by the bulk viscosity (0 without Fv) */
+  PetscReal viscous;        /* rate dissipated by the bulk viscosity, linear and quadratic (0 without Fv) */
 } TslExplicitRates;
 
 /* Unconstrained nodal vectors at the current solution and time, ghost contributions summed (collective):
  *   Fi  element internal forces, and every heat row (internal flow, fluxes, films) in residual form;
  *   Fe  applied mechanical loads (CLOAD, DLOAD) as forces;
  *   Fc  contact forces and contact heat in residual form (may be NULL when the model has no pairs);
- *   Fv  linear bulk viscosity forces (TslElementBulkViscosity with eta[e] per local element, 0 skips it) of
- *       the velocities V (may be NULL: no bulk viscosity; V and eta are then not read), computed in the
- *       same element pass as Fi.
+ *   Fv  bulk viscosity forces (TslElementBulkViscosity with eta[e], eta2[e] per local element: the linear and
+ *       the quadratic coefficient, both 0 skips it) of the velocities V (may be NULL: no bulk viscosity; V, eta
+ *       and eta2 are then not read), computed in the same element pass as Fi.
  * The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets M a = Fe - Fi - Fc - Fv. */
-PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], Vec Fv, TslExplicitRates *rates);
+PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], Vec Fv,
+                                        TslExplicitRates *rates);
+/* The initial velocities of the deck (*INITIAL CONDITIONS, TYPE=VELOCITY) at the owned dofs into V (zeroed
+ * first; the temperature slots stay zero), for the first explicit step after TslProblemSetStep: a dof held by
+ * a boundary condition of that step (or pinned) keeps zero, the condition wins; *held counts those dofs where a
+ * nonzero velocity was given, over all ranks. Collective. */
+PetscErrorCode TslProblemInitialVelocity(TslProblem prob, Vec V, PetscInt *held);
 /* Kinematic contact (src/physics/contact_kinematic.c; docs/explicit.md). SetKinematic: the pairs with
  * MECHANICAL CONSTRAINT=KINEMATIC become kinematic for an explicit step (explicit_step true) or ordinary
  * again (false); *any: some pair is (the same on all ranks). Kinematic pairs are left out of

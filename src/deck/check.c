@@ -219,6 +219,47 @@ static PetscErrorCode CheckNodeTarget(TslModel *m, const TslTarget *t, TslLoc lo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Initial velocities: a defined node or node set and a displacement dof the model's elements carry; a node
+ * given alone must belong to an element (a node of none has no unknowns, so its velocity would silently be
+ * nothing). Members of a set that belong to no element are passed over, as loads pass them. When no step is
+ * explicit the velocities are never used: a warning (once) says so. */
+static PetscErrorCode CheckInitialVelocities(TslModel *m)
+{
+  char     *used         = NULL;
+  PetscBool any_explicit = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  if (!m->nvinit) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscCalloc1(m->nnode, &used));
+  for (PetscInt k = 0; m->elem_ptr && k < m->elem_ptr[m->nelem]; k++) {
+    PetscInt p = TslModelNodeIndex(m, m->elem_conn[k]);
+    if (p >= 0) used[p] = 1;
+  }
+  for (PetscInt i = 0; i < m->nvinit; i++) {
+    const TslInitialVelocity *iv = &m->vinit[i];
+    PetscErrorCode            ierr;
+    char                      buf[64];
+    PetscBool                 dof_ok = DofValid(m, iv->dof), node_ok = PETSC_TRUE;
+    ierr = CheckNodeTarget(m, &iv->target, iv->loc);
+    if (!ierr && !iv->target.set[0]) node_ok = (PetscBool)used[TslModelNodeIndex(m, iv->target.id)];
+    if (ierr || !dof_ok || !node_ok) PetscCall(PetscFree(used));
+    PetscCall(ierr);
+    CHECK(dof_ok, iv->loc, "*INITIAL CONDITIONS, TYPE=VELOCITY: the model's %s elements have no dof %" PetscInt_FMT " (their dofs: %s)",
+          m->nelem > 0 ? TslElementTypeGet(m->elem_type[0])->name : "", iv->dof, DofList(m, buf, sizeof(buf)));
+    CHECK(node_ok, iv->loc, "*INITIAL CONDITIONS, TYPE=VELOCITY: node %" PetscInt_FMT " belongs to no element, so it has no dof %" PetscInt_FMT,
+          iv->target.id, iv->dof);
+  }
+  PetscCall(PetscFree(used));
+  for (PetscInt i = 0; i < m->nstep; i++) any_explicit = (PetscBool)(any_explicit || m->steps[i].explicit_dynamics);
+  if (!any_explicit)
+    PetscCall(PetscPrintf(
+        PETSC_COMM_SELF,
+        TSL_LOC_FMT "warning: *INITIAL CONDITIONS, TYPE=VELOCITY is ignored: no step is explicit (*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT), "
+                    "and implicit steps are static\n",
+        TSL_LOC_ARGS(m, m->vinit[0].loc)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l)
 {
   PetscFunctionBeginUser;
@@ -468,6 +509,7 @@ PetscErrorCode TslModelCheck(TslModel *m)
   PetscCall(CheckSurfaces(m));
   PetscCall(CheckMaterialsAndSections(m));
   for (PetscInt i = 0; i < m->ninit; i++) PetscCall(CheckNodeTarget(m, &m->init[i].target, m->init[i].loc));
+  PetscCall(CheckInitialVelocities(m));
   for (PetscInt i = 0; i < m->nequation; i++) {
     const TslEquation *e = &m->equations[i];
     for (PetscInt k = 0; k < e->n; k++) {

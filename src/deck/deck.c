@@ -1017,27 +1017,69 @@ static PetscErrorCode ParseTarget(Deck *d, const char *f, TslTarget *t)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *INITIAL CONDITIONS, TYPE=TEMPERATURE data line: node or node set, temperature. */
+static PetscErrorCode InitialTemperatureLine(Deck *d)
+{
+  TslModel              *m = d->m;
+  TslInitialTemperature *it;
+
+  PetscFunctionBeginUser;
+  USER_CHECK(d->nfield == 2, LOC_FMT "*INITIAL CONDITIONS data line needs: node or node set, temperature", DLOC(d));
+  PetscCall(TslDeckGrow(&m->init, sizeof(*it), m->ninit));
+  it = &m->init[m->ninit++];
+  PetscCall(ParseTarget(d, d->field[0], &it->target));
+  PetscCall(FieldReal(d, 1, "the temperature", &it->value));
+  it->loc = d->loc;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *INITIAL CONDITIONS, TYPE=VELOCITY data line: node or node set, dof, velocity (Abaqus and CalculiX). The dof
+ * must be a displacement (1..3); whether the model's elements carry it is checked with the whole model
+ * (TslModelCheck), since the elements may come later in the deck. */
+static PetscErrorCode InitialVelocityLine(Deck *d)
+{
+  TslModel           *m = d->m;
+  TslInitialVelocity *iv;
+
+  PetscFunctionBeginUser;
+  USER_CHECK(d->nfield == 3, LOC_FMT "*INITIAL CONDITIONS, TYPE=VELOCITY data line needs: node or node set, dof (1..3), velocity", DLOC(d));
+  PetscCall(TslDeckGrow(&m->vinit, sizeof(*iv), m->nvinit));
+  iv = &m->vinit[m->nvinit++];
+  PetscCall(ParseTarget(d, d->field[0], &iv->target));
+  PetscCall(FieldInt(d, 1, "the degree of freedom", &iv->dof));
+  USER_CHECK(iv->dof >= 1 && iv->dof <= 3, LOC_FMT "an initial velocity needs a displacement degree of freedom 1..3 (got %" PetscInt_FMT ")", DLOC(d),
+             iv->dof);
+  PetscCall(FieldReal(d, 2, "the velocity", &iv->value));
+  iv->loc = d->loc;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The TYPE= values of *INITIAL CONDITIONS this reader knows, each with its data-line parser. */
+static const struct {
+  const char *type;
+  PetscErrorCode (*line)(Deck *);
+} InitialTypes[] = {
+    {"TEMPERATURE", InitialTemperatureLine},
+    {"VELOCITY", InitialVelocityLine},
+};
+
 static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw)
 {
-  TslModel   *m = d->m;
   char        buf[32];
   const char *type = ParamUpper(d, "TYPE", buf, sizeof(buf));
+  PetscInt    k    = -1;
   PetscBool   got;
 
   PetscFunctionBeginUser;
   (void)kw;
   USER_CHECK(type && type[0], LOC_FMT "*INITIAL CONDITIONS needs the parameter TYPE=", KLOC(d));
-  USER_CHECK(!strcmp(type, "TEMPERATURE"), LOC_FMT "*INITIAL CONDITIONS, TYPE=%s is not supported (only TEMPERATURE)", KLOC(d), type);
+  for (size_t i = 0; i < sizeof(InitialTypes) / sizeof(InitialTypes[0]); i++)
+    if (!strcmp(type, InitialTypes[i].type)) k = (PetscInt)i;
+  USER_CHECK(k >= 0, LOC_FMT "*INITIAL CONDITIONS, TYPE=%s is not supported (only TEMPERATURE and VELOCITY)", KLOC(d), type);
   for (;;) {
-    TslInitialTemperature *it;
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
-    USER_CHECK(d->nfield == 2, LOC_FMT "*INITIAL CONDITIONS data line needs: node or node set, temperature", DLOC(d));
-    PetscCall(TslDeckGrow(&m->init, sizeof(*it), m->ninit));
-    it = &m->init[m->ninit++];
-    PetscCall(ParseTarget(d, d->field[0], &it->target));
-    PetscCall(FieldReal(d, 1, "the temperature", &it->value));
-    it->loc = d->loc;
+    PetscCall(InitialTypes[k].line(d));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -50,6 +50,7 @@ PetscErrorCode TslModelDestroy(TslModel **model)
   PetscCall(PetscFree(m->materials));
   PetscCall(PetscFree(m->sections));
   PetscCall(PetscFree(m->init));
+  PetscCall(PetscFree(m->vinit));
   for (PetscInt i = 0; i < m->namplitude; i++) {
     PetscCall(PetscFree(m->amplitudes[i].t));
     PetscCall(PetscFree(m->amplitudes[i].a));
@@ -347,6 +348,7 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
   PetscCall(PackArray(p, &m->materials, m->nmaterial, sizeof(TslMaterial)));
   PetscCall(PackArray(p, &m->sections, m->nsection, sizeof(TslSection)));
   PetscCall(PackArray(p, &m->init, m->ninit, sizeof(TslInitialTemperature)));
+  PetscCall(PackArray(p, &m->vinit, m->nvinit, sizeof(TslInitialVelocity)));
   PetscCall(PackArray(p, &m->amplitudes, m->namplitude, sizeof(TslAmplitude)));
   for (PetscInt i = 0; i < m->namplitude; i++) {
     PetscCall(PackArray(p, &m->amplitudes[i].t, m->amplitudes[i].n, sizeof(PetscReal)));
@@ -536,6 +538,38 @@ static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The initial velocities that concern the subset's nodes (s's sets already filtered): a line for a node it
+ * holds or for a set with members among them. A deck may give one line per node, so a rank keeps only its
+ * share, as it does of the mesh. */
+static PetscErrorCode SubsetInitialVelocities(TslModel *s, PetscInt nn, const PetscInt nkeep[])
+{
+  PetscInt k = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < s->nvinit; i++) {
+    const TslTarget *t    = &s->vinit[i].target;
+    PetscBool        keep = PETSC_FALSE;
+    if (t->set[0]) {
+      PetscInt set = TslModelFindNodeSet(s, t->set);
+      keep         = (PetscBool)(set >= 0 && s->nsets[set].n > 0);
+    } else {
+      PetscInt loc;
+      PetscCall(PetscFindInt(t->id, nn, nkeep, &loc));
+      keep = (PetscBool)(loc >= 0);
+    }
+    if (keep) s->vinit[k++] = s->vinit[i];
+  }
+  if (k < s->nvinit) { /* rank 0 keeps its part: not the whole deck's list */
+    TslInitialVelocity *kept = NULL;
+    if (k) PetscCall(PetscMalloc1(k, &kept));
+    PetscCall(PetscArraycpy(kept, s->vinit, k));
+    PetscCall(PetscFree(s->vinit));
+    s->vinit = kept;
+  }
+  s->nvinit = k;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt elems[], PetscInt nn, const PetscInt nodes[], TslModel **sub)
 {
   TslModel  meta = *model, *s;
@@ -586,6 +620,7 @@ PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt
     if (keep) PetscCall(CopyEquation(e, &s->equations[k++]));
   }
   s->nequation = k;
+  PetscCall(SubsetInitialVelocities(s, nn, nkeep));
   PetscCall(PetscFree(nkeep));
   PetscCall(PetscFree(ekeep));
   PetscCall(TslModelIndex(s));

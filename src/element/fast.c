@@ -52,8 +52,8 @@ static inline Layout LayoutOf(PetscInt dim, PetscInt n, PetscInt nq, PetscInt nh
  * over the nodes is over contiguous arrays of constant length: what the vectoriser needs. */
 static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
                                                         const PetscBool axi, const TslElementFastShape *shape, const PetscReal *rec,
-                                                        const PetscReal *u, const PetscReal *ti, const PetscReal *v, PetscReal eta, PetscReal *R,
-                                                        PetscReal *Rv, PetscReal *power)
+                                                        const PetscReal *u, const PetscReal *ti, const PetscReal *v, PetscReal eta, PetscReal eta2,
+                                                        PetscReal *R, PetscReal *Rv, PetscReal *power)
 {
   const PetscInt  nd     = dim + 1;
   const Layout    L      = LayoutOf(dim, n, nq, nh, axi);
@@ -113,12 +113,13 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
     R[nd * a + dim] = Fth[a];
   }
   *power = 0;
-  if (eta > 0 && Rv) {
+  if ((eta > 0 || eta2 > 0) && Rv) {
     const PetscReal *Gc = rec + L.Gc, *Nrc = rec + L.Nrc, Vc = rec[L.Vc];
     PetscReal        rate = 0, p;
     for (PetscInt a = 0; a < n; a++)
       for (PetscInt d = 0; d < dim; d++) rate += (Gc[d * n + a] + (axi && d == 0 ? Nrc[a] : 0)) * v[nd * a + d];
     p = eta * rec[4] * rate;
+    if (rate < 0) p -= eta2 * rec[4] * rate * rate; /* the quadratic term, in compression only */
     for (PetscInt a = 0; a < n; a++) {
       for (PetscInt d = 0; d < dim; d++) Rv[nd * a + d] = p * (Gc[d * n + a] + (axi && d == 0 ? Nrc[a] : 0)) * Vc;
       Rv[nd * a + dim] = 0;
@@ -137,9 +138,9 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
 #endif
 #define FORCE_ROW(name, dim, n, nq, nh, axi)                                                                                                         \
   CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,          \
-                          PetscReal eta, PetscReal *R, PetscReal *Rv, PetscReal *power)                                                              \
+                          PetscReal eta, PetscReal eta2, PetscReal *R, PetscReal *Rv, PetscReal *power)                                              \
   {                                                                                                                                                  \
-    Force(dim, n, nq, nh, axi, sh, rec, u, ti, v, eta, R, Rv, power);                                                                                \
+    Force(dim, n, nq, nh, axi, sh, rec, u, ti, v, eta, eta2, R, Rv, power);                                                                          \
   }
 FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE)
 FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE)
@@ -148,7 +149,7 @@ FORCE_ROW(Quad4Reduced, 2, 4, 1, 1, PETSC_FALSE)
 FORCE_ROW(Quad4FullAxi, 2, 4, 4, 0, PETSC_TRUE)
 FORCE_ROW(Quad4ReducedAxi, 2, 4, 1, 1, PETSC_TRUE)
 
-typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, PetscReal,
+typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, PetscReal, PetscReal,
                         PetscReal *, PetscReal *, PetscReal *);
 
 /* The rows: which (family, formulation, kinematics) have a record, and its sizes. */
@@ -266,7 +267,7 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
 }
 
 void TslElementFastForce(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
-                         PetscReal eta, PetscReal R[], PetscReal Rv[], PetscReal *power)
+                         PetscReal eta, PetscReal eta2, PetscReal R[], PetscReal Rv[], PetscReal *power)
 {
-  Rows[shape->row].force(shape, rec, u, ti, v, eta, R, Rv, power);
+  Rows[shape->row].force(shape, rec, u, ti, v, eta, eta2, R, Rv, power);
 }

@@ -607,13 +607,17 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Linear bulk viscosity (explicit steps, *BULK VISCOSITY): the pressure p = eta M eps_vol_dot at the
- * element centre, M = lambda + 2 mu the element's P-wave modulus (rho c_d^2) and eps_vol_dot the
- * volumetric strain rate of the nodal velocities v[] (laid out as in->u; temperature slots ignored).
- * With eta = b1 L_e / c_d this is Abaqus/Explicit's p = b1 rho c_d L_e eps_vol_dot. Its nodal forces
- * p int B_vol dV (one point: the centre) are added to R, and *power = p eps_vol_dot V >= 0 is what it
- * dissipates. */
-PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta, PetscReal R[], PetscReal *power)
+/* Bulk viscosity (explicit steps, *BULK VISCOSITY; Abaqus Analysis User's Guide, "Bulk viscosity"): at the
+ * element centre the pressure (positive in tension, as the strain rate)
+ *   p = b1 rho c_d L_e eps_vol_dot + rho (b2 L_e)^2 |eps_vol_dot| min(0, eps_vol_dot),
+ * the quadratic term only in compression, with eps_vol_dot the volumetric strain rate of the nodal velocities
+ * v[] (laid out as in->u; temperature slots ignored). With L_e = c_d dt_e (dt_e the element's own stable
+ * increment, so no characteristic length is guessed) both terms are multiples of M = lambda + 2 mu = rho c_d^2:
+ *   p = M (eta1 eps_vol_dot - eta2 eps_vol_dot^2 [eps_vol_dot < 0]),  eta1 = b1 dt_e,  eta2 = (b2 dt_e)^2.
+ * Its nodal forces p int B_vol dV (one point: the centre) are added to R, and *power = p eps_vol_dot V
+ * = M (eta1 eps^2 + eta2 |eps|^3 [compression]) V >= 0 is what it dissipates. */
+PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta1, PetscReal eta2, PetscReal R[],
+                                       PetscReal *power)
 {
   const TslElementType *t = in->type;
   const TslGeometry    *g = t->geom;
@@ -633,7 +637,8 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
   for (PetscInt a = 0; a < n; a++)
     for (PetscInt i = 0; i < nu; i++)
       for (PetscInt r = 0; r < 3; r++) rate += B[r][nu * a + i] * v[ndof * a + i];
-  p = eta * D[0][0] * rate;
+  p = eta1 * D[0][0] * rate;
+  if (rate < 0) p -= eta2 * D[0][0] * rate * rate;
   for (PetscInt a = 0; a < n; a++)
     for (PetscInt i = 0; i < nu; i++)
       for (PetscInt r = 0; r < 3; r++) R[ndof * a + i] += p * B[r][nu * a + i] * pt.dV;

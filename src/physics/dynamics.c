@@ -16,7 +16,7 @@ PetscErrorCode TslProblemSetMatrixFree(TslProblem p, PetscBool matrix_free)
 typedef struct {
   PetscScalar       *fi, *fe, *fv; /* fv: bulk viscosity forces (NULL: none) */
   const PetscScalar *v;            /* local form of the half-step velocity (with fv) */
-  const PetscReal   *eta;          /* [nelem] b1 L_e / c_d (with fv) */
+  const PetscReal   *eta, *eta2;   /* [nelem] b1 L_e / c_d and (b2 L_e / c_d)^2 (with fv) */
   PetscReal          power;        /* rate dissipated by the bulk viscosity, this rank */
   AsmHeat           *heat;
   PetscInt           bad;
@@ -65,10 +65,10 @@ static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, Pets
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (PetscInt r = 0; r < d->nd; r++) c->fi[d->ld[r]] += R[r];
-  if (c->fv && c->eta[e] > 0) {
+  if (c->fv && (c->eta[e] > 0 || c->eta2[e] > 0)) {
     PetscReal v[TSL_MAX_ELEM_DOF], w;
     for (PetscInt r = 0; r < d->nd; r++) v[r] = PetscRealPart(c->v[d->ld[r]]), R[r] = 0;
-    PetscCall(TslElementBulkViscosity(&d->in, v, c->eta[e], R, &w));
+    PetscCall(TslElementBulkViscosity(&d->in, v, c->eta[e], c->eta2[e], R, &w));
     for (PetscInt r = 0; r < d->nd; r++) c->fv[d->ld[r]] += R[r];
     c->power += w;
   }
@@ -79,8 +79,9 @@ static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, Pets
 static void FastElement(TslProblem p, PetscInt e, const PetscScalar *restrict xa, ForceCtx *c)
 {
   const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0, nd = p->ndof;
-  const PetscInt *ln       = &p->elem_lnode[k0];
-  const PetscReal eta      = c->fv ? c->eta[e] : 0;
+  const PetscInt *ln  = &p->elem_lnode[k0];
+  const PetscReal eta = c->fv ? c->eta[e] : 0, eta2 = c->fv ? c->eta2[e] : 0;
+  const PetscBool bv       = eta > 0 || eta2 > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscScalar *restrict fi = c->fi, *restrict fv = c->fv;
   const PetscScalar *restrict va = c->v;
   PetscReal u[TSL_MAX_ELEM_DOF], v[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES], R[TSL_MAX_ELEM_DOF], Rv[TSL_MAX_ELEM_DOF], w;
@@ -90,13 +91,13 @@ static void FastElement(TslProblem p, PetscInt e, const PetscScalar *restrict xa
     for (PetscInt i = 0; i < nd; i++) u[nd * a + i] = PetscRealPart(xa[nd * l + i]);
     ti[a] = p->theta_init[l];
   }
-  if (eta > 0)
+  if (bv)
     for (PetscInt a = 0; a < n; a++)
       for (PetscInt i = 0; i < nd; i++) v[nd * a + i] = PetscRealPart(va[nd * ln[a] + i]);
-  TslElementFastForce(&p->fast_shape[p->m->elem_type[e]], &p->fast_rec[p->fast_off[e]], u, ti, v, eta, R, Rv, &w);
+  TslElementFastForce(&p->fast_shape[p->m->elem_type[e]], &p->fast_rec[p->fast_off[e]], u, ti, v, eta, eta2, R, Rv, &w);
   for (PetscInt a = 0; a < n; a++)
     for (PetscInt i = 0; i < nd; i++) fi[nd * ln[a] + i] += R[nd * a + i];
-  if (eta > 0) {
+  if (bv) {
     for (PetscInt a = 0; a < n; a++)
       for (PetscInt i = 0; i < nd; i++) fv[nd * ln[a] + i] += Rv[nd * a + i];
     c->power += w;
@@ -190,13 +191,14 @@ static PetscErrorCode InjectedInternal(void)
   SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "injected internal failure (-tsl_debug_fail_kind)");
 }
 
-PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], Vec Fv, TslExplicitRates *rates)
+PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], Vec Fv,
+                                        TslExplicitRates *rates)
 {
   Vec                xl, il, el, cl = NULL, vl = NULL, fl = NULL;
   const PetscScalar *xa;
   PetscScalar       *fc;
   AsmHeat            heat;
-  ForceCtx           c = {NULL, NULL, NULL, NULL, eta, 0, &heat, -1};
+  ForceCtx           c = {NULL, NULL, NULL, NULL, eta, eta2, 0, &heat, -1};
   PetscReal          loc[6], g[6];
   TslFailure         fail;
   PetscErrorCode     ierr;

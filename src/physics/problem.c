@@ -97,6 +97,37 @@ static PetscErrorCode SetUpInitialTemperature(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Abaqus/Explicit starts the central differences from the given velocities (Theory Guide, "Explicit dynamic
+ * analysis": v_{+1/2} = v_0 + dt/2 a_0); a prescribed dof moves as its boundary condition says, so the
+ * condition wins there. Lines are applied in deck order (a later one for the same dof wins); only owned
+ * nodes are written, so each dof is set and counted once. */
+PetscErrorCode TslProblemInitialVelocity(TslProblem p, Vec V, PetscInt *held)
+{
+  const TslModel *m = p->m;
+  PetscScalar    *v;
+  PetscInt        loc = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecZeroEntries(V));
+  PetscCall(VecGetArray(V, &v));
+  for (PetscInt i = 0; i < m->nvinit; i++) {
+    const TslInitialVelocity *iv  = &m->vinit[i];
+    const PetscInt            set = iv->target.set[0] ? TslModelFindNodeSet(m, iv->target.set) : -1;
+    const PetscInt            n   = iv->target.set[0] ? (set >= 0 ? m->nsets[set].n : 0) : 1;
+    for (PetscInt j = 0; j < n; j++) {
+      PetscInt l = TslModelNodeIndex(m, set >= 0 ? m->nsets[set].ids[j] : iv->target.id), slot;
+      if (l < 0 || l >= p->nown) continue;
+      slot = TslProblemNodeDofSlot(p, l, iv->dof);
+      if (slot >= 0 && slot < p->nu) v[l * p->ndof + slot] = iv->value;
+    }
+  }
+  for (PetscInt d = 0; d < p->nown * p->ndof; d++)
+    if ((p->pinned[d] || p->bc[d].active) && v[d] != 0) v[d] = 0, loc++;
+  PetscCall(VecRestoreArray(V, &v));
+  PetscCall(MPIU_Allreduce(&loc, held, 1, MPIU_INT, MPI_SUM, p->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The near-null space of the displacement block for algebraic multigrid: the rigid-body modes that the
  * element rows admit (translations and rotations), evaluated at the owned nodes relative to the model's
  * centre (coordinates far from the origin must not swamp the rotations), orthonormalised, and attached to

@@ -32,7 +32,7 @@ typedef struct {
   Vec             Fk, W;           /* kinematic contact: the corrector's forces at the predicted state, a work vector (NULL without) */
   PetscInt        kin_passes, kin_total; /* -tsl_explicit_kinematic_passes (most corrector passes per increment); passes made in the step */
   PetscReal       kin_tol;         /* -tsl_explicit_kinematic_tol: passes stop when the pressure change is below this fraction of the largest */
-  PetscReal      *dt_mech, *dt_heat, *scale, *eta; /* [nelem] element stable increments, mass scale factors, b1 L_e / c_d */
+  PetscReal       *dt_mech, *dt_heat, *scale, *eta, *eta2; /* [nelem] element stable increments, mass scale factors, b1 L_e / c_d, (b2 L_e / c_d)^2 */
   PetscReal       dt_stable, dt;   /* stable increment (with safety) and the increment used */
   PetscReal       lim_mech, lim_heat, lim_cheat; /* limits: mechanical (elements and penalty), elements' thermal, interface heat exchange */
   PetscReal       safety;          /* -tsl_explicit_safety */
@@ -167,8 +167,13 @@ static void CombineLimits(Explicit *x)
   x->dt_stable         = x->safety * x->step->dt_scale * PetscMin(x->lim_mech, heat);
 }
 
-/* The damping fraction xi of the highest element mode (b1 for the linear bulk viscosity; Abaqus
- * documentation, "Bulk viscosity") shortens its stable increment to (2 / omega)(sqrt(1 + xi^2) - xi). */
+/* The damping fraction xi of the highest element mode (Abaqus documentation, "Bulk viscosity":
+ * xi = b1 - b2^2 (L_e / c_d) min(0, eps_vol_dot)) shortens its stable increment to (2 / omega)(sqrt(1 + xi^2) - xi).
+ * Only the linear term's b1 enters here: the quadratic term's share b2^2 dt_e |eps_vol_dot| follows the strain
+ * rate of the current increment, so it would change the increment from one increment to the next (which
+ * excites the parametric instability described at the frame loop) and cost a reduction per increment. It is
+ * small where the small-strain kinematics holds: it eats the safety margin (0.9) only when an element's
+ * volume changes by 7 % per transit time of a wave (a shock of particle velocity 0.07 c_d); docs/explicit.md. */
 static PetscReal BulkViscosityFactor(PetscReal xi)
 {
   return PetscSqrtReal(1 + xi * xi) - xi;
@@ -185,8 +190,10 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
   PetscFunctionBeginUser;
   for (PetscInt e = 0; e < x->m->nelem; e++) {
     PetscReal dm = x->dt_mech[e] * PetscSqrtReal(x->scale[e]);
-    /* bulk viscosity: L_e / c_d is the element's own (mass-scaled) increment, so rho c_d L_e = (lambda + 2 mu) dt_e */
-    x->eta[e] = x->step->bv_linear * (dm < PETSC_MAX_REAL ? dm : 0);
+    /* bulk viscosity: L_e / c_d is the element's own (mass-scaled) increment, so rho c_d L_e = (lambda + 2 mu) dt_e
+     * and rho (b2 L_e)^2 = (lambda + 2 mu) (b2 dt_e)^2 (the scaled density, as Abaqus's mass scaling scales rho) */
+    x->eta[e]  = x->step->bv_linear * (dm < PETSC_MAX_REAL ? dm : 0);
+    x->eta2[e] = dm < PETSC_MAX_REAL ? PetscSqr(x->step->bv_quadratic * dm) : 0;
     dm *= BulkViscosityFactor(x->step->bv_linear);
     if (dm < loc[0].v) loc[0].v = dm, loc[0].id = (int)x->m->elem_id[e];
     if (x->dt_heat[e] < loc[1].v) loc[1].v = x->dt_heat[e], loc[1].id = (int)x->m->elem_id[e];
@@ -305,7 +312,7 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
   PetscCall(TslPhaseBegin(TSL_PHASE_ASSEMBLY));
   /* bulk viscosity of the velocity v_{n-1/2} (the latest one: central differences have no v_n), in the
    * same element pass */
-  PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->V, x->eta, x->Fv, &x->rates));
+  PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->V, x->eta, x->eta2, x->Fv, &x->rates));
   x->dt_forces = dt;
   if (x->m->npair) {
     PetscCall(TslProblemContactExplicitIncrement(x->p, (PetscBool)(inc % x->search_every == 0), &nrepair));
@@ -484,6 +491,29 @@ static PetscErrorCode KineticEnergy(Explicit *x, PetscReal *ke)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The first explicit step starts from the deck's initial velocities (v_0; the first update is
+ * v_{1/2} = v_0 + dt/2 a_0, h_prev = 0 in Advance), set after the lumped mass so that ALLMW does not book them
+ * as the work of adding mass. Their kinetic energy 1/2 v_0 M v_0 was put into the body before the step, so it
+ * is booked as work done (ALLWK) and ETOTAL starts at zero, as with the strain energy of earlier static steps.
+ * Collective (the local model may hold no lines on some ranks: the sums decide). */
+static PetscErrorCode InitialVelocity(Explicit *x, Energies *en)
+{
+  PetscInt  held, lines = x->m->nvinit, glines;
+  PetscReal ke;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Allreduce(&lines, &glines, 1, MPIU_INT, MPI_SUM, x->comm));
+  if (!glines) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(TslProblemInitialVelocity(x->p, x->V, &held));
+  PetscCall(KineticEnergy(x, &ke));
+  en->ke = ke;
+  en->wk += ke;
+  PetscCall(PetscPrintf(x->comm, "  initial velocities (*INITIAL CONDITIONS, TYPE=VELOCITY): kinetic energy %.6g", (double)ke));
+  if (held) PetscCall(PetscPrintf(x->comm, "; %" PetscInt_FMT " prescribed dofs keep their boundary condition instead", held));
+  PetscCall(PetscPrintf(x->comm, "\n"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* A history row: the heat rates of the state, the energies since the start of the job. */
 static PetscErrorCode HistoryRow(Explicit *x, Energies *en, PetscInt s, PetscInt inc, PetscReal t, PetscReal h, PetscReal total)
 {
@@ -532,7 +562,7 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fv));
   PetscCall(VecDestroy(&x->Fk));
   PetscCall(VecDestroy(&x->W));
-  PetscCall(PetscFree4(x->dt_mech, x->dt_heat, x->scale, x->eta));
+  PetscCall(PetscFree5(x->dt_mech, x->dt_heat, x->scale, x->eta, x->eta2));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -600,8 +630,8 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscCall(VecZeroEntries(x.Fk));
     }
   }
-  if (x.step->bv_linear > 0) PetscCall(VecDuplicate(x.X, &x.Fv));
-  PetscCall(PetscMalloc4(x.m->nelem, &x.dt_mech, x.m->nelem, &x.dt_heat, x.m->nelem, &x.scale, x.m->nelem, &x.eta));
+  if (x.step->bv_linear > 0 || x.step->bv_quadratic > 0) PetscCall(VecDuplicate(x.X, &x.Fv));
+  PetscCall(PetscMalloc5(x.m->nelem, &x.dt_mech, x.m->nelem, &x.dt_heat, x.m->nelem, &x.scale, x.m->nelem, &x.eta, x.m->nelem, &x.eta2));
   for (PetscInt i = 0; i < x.m->nmaterial; i++)
     if (TslMaterialIsTemperatureDependent(&x.m->materials[i])) x.capacity_varies = PETSC_TRUE;
   PetscCall(TslProblemConstrainedMask(x.p, x.Mask));
@@ -622,6 +652,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscCall(TslProblemContactSearch(x.p, &repattern));
   }
   PetscCall(SetUpIncrement(&x, en, PETSC_TRUE));
+  if (d->explicit_last < 0) PetscCall(InitialVelocity(&x, en)); /* the job's first explicit step */
   PetscCall(Forces(&x, 0, 0));
   PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
 

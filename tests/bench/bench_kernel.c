@@ -56,7 +56,7 @@ static double TimeRecords(const TslElementFastShape *shape, const PetscReal *rec
   do {
     for (PetscInt k = 0; k < 4096; k += nrec) /* at least 4096 calls between clock reads */
       for (PetscInt e = 0; e < nrec; e++) {
-        TslElementFastForce(shape, recs + e * size, in->u, in->theta_init, v, 1e-6, R, Rv, &w);
+        TslElementFastForce(shape, recs + e * size, in->u, in->theta_init, v, 1e-6, 1e-12, R, Rv, &w);
         sum += R[0];
       }
     n += nrec >= 4096 ? nrec : 4096;

@@ -96,3 +96,8 @@ tsl_deck_bad(explicit_output_interval_implicit explicit_output_interval_implicit
 # Contact in explicit steps: node-to-surface (PENALTY or KINEMATIC) only for now
 tsl_deck_bad(explicit_surface_to_surface explicit_surface_to_surface.inp "error: explicit_surface_to_surface.inp:34: *CONTACT PAIR, TYPE=SURFACE TO SURFACE is not supported in explicit steps yet")
 tsl_deck_bad(contact_pair_constraint contact_pair_constraint.inp "error: contact_pair_constraint.inp:33: *CONTACT PAIR, MECHANICAL CONSTRAINT=LAGRANGE is not supported (PENALTY or KINEMATIC)")
+# *INITIAL CONDITIONS, TYPE=VELOCITY: the dof must be a displacement, the node must belong to an element, and the
+# line needs all three fields
+tsl_deck_bad(velocity_temperature_dof velocity_temperature_dof.inp "error: velocity_temperature_dof.inp:21: an initial velocity needs a displacement degree of freedom 1..3 (got 11)")
+tsl_deck_bad(velocity_lonely_node velocity_lonely_node.inp "error: velocity_lonely_node.inp:21: *INITIAL CONDITIONS, TYPE=VELOCITY: node 5 belongs to no element, so it has no dof 1")
+tsl_deck_bad(velocity_missing_value velocity_missing_value.inp "error: velocity_missing_value.inp:21: *INITIAL CONDITIONS, TYPE=VELOCITY data line needs: node or node set, dof (1..3), velocity")
