@@ -457,6 +457,15 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGhostUpdateBegin(x->X, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostUpdateEnd(x->X, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(MPIU_Allreduce(loc, g, 8, MPIU_REAL, MPIU_SUM, x->comm));
+  /* a run that has left the stable range (a DIRECT USER CONTROL increment above the stable one, a contact
+   * spring or quadratic viscosity the estimate did not see) grows until it overflows: every rank sees the same
+   * sums, so all stop here together, before a frame of the state is written; the frames so far are kept */
+  for (PetscInt k = 0; k < 8; k++)
+    PetscCheck(!PetscIsInfOrNanReal(g[k]), x->comm, PETSC_ERR_NOT_CONVERGED,
+               "explicit step %s: the solution is no longer finite at step time %g (increment %g against the stable %g): the increment exceeds what the "
+               "model can take; lower -tsl_explicit_safety or the step's SCALE FACTOR, or the DIRECT USER CONTROL increment. The frames written before "
+               "are kept",
+               x->step->name, (double)t_new, (double)h, (double)x->dt_stable);
   en->ie += g[0];
   en->vd += g[7];
   en->wk += g[1];
