@@ -74,6 +74,8 @@ typedef struct {
   TslLoc    loc;
 } TslSection;
 
+/* *INITIAL CONDITIONS, TYPE=TEMPERATURE (target first: model.c filters both kinds of line by it, so after
+ * distribution each rank keeps the lines of the nodes it holds, as for the velocities below). */
 typedef struct {
   TslTarget target; /* node or node set */
   PetscReal value;

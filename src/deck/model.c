@@ -538,16 +538,18 @@ static PetscErrorCode SubsetMesh(const TslModel *m, PetscInt ne, const PetscInt 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The initial velocities that concern the subset's nodes (s's sets already filtered): a line for a node it
- * holds or for a set with members among them. A deck may give one line per node, so a rank keeps only its
- * share, as it does of the mesh. */
-static PetscErrorCode SubsetInitialVelocities(TslModel *s, PetscInt nn, const PetscInt nkeep[])
+/* The initial-condition lines (temperatures, velocities: arrays of structs whose first member is their
+ * TslTarget) that concern the subset's nodes (s's sets already filtered): a line for a node it holds or for
+ * a set with members among them, in deck order. A deck may give one line per node (temperatures mapped from
+ * another analysis), so a rank keeps only its share, as it does of the mesh. */
+static PetscErrorCode SubsetTargetLines(TslModel *s, void **lines, PetscInt *n, size_t size, PetscInt nn, const PetscInt nkeep[])
 {
+  char    *a = (char *)*lines;
   PetscInt k = 0;
 
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < s->nvinit; i++) {
-    const TslTarget *t    = &s->vinit[i].target;
+  for (PetscInt i = 0; i < *n; i++) {
+    const TslTarget *t    = (const TslTarget *)(a + i * size);
     PetscBool        keep = PETSC_FALSE;
     if (t->set[0]) {
       PetscInt set = TslModelFindNodeSet(s, t->set);
@@ -557,16 +559,16 @@ static PetscErrorCode SubsetInitialVelocities(TslModel *s, PetscInt nn, const Pe
       PetscCall(PetscFindInt(t->id, nn, nkeep, &loc));
       keep = (PetscBool)(loc >= 0);
     }
-    if (keep) s->vinit[k++] = s->vinit[i];
+    if (keep) memmove(a + k++ * size, a + i * size, size);
   }
-  if (k < s->nvinit) { /* rank 0 keeps its part: not the whole deck's list */
-    TslInitialVelocity *kept = NULL;
-    if (k) PetscCall(PetscMalloc1(k, &kept));
-    PetscCall(PetscArraycpy(kept, s->vinit, k));
-    PetscCall(PetscFree(s->vinit));
-    s->vinit = kept;
+  if (k < *n) { /* rank 0 keeps its part: not the whole deck's list */
+    void *kept = NULL;
+    if (k) PetscCall(PetscMalloc(k * size, &kept));
+    if (k) memcpy(kept, a, k * size);
+    PetscCall(PetscFree(*lines));
+    *lines = kept;
   }
-  s->nvinit = k;
+  *n = k;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -620,7 +622,8 @@ PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt
     if (keep) PetscCall(CopyEquation(e, &s->equations[k++]));
   }
   s->nequation = k;
-  PetscCall(SubsetInitialVelocities(s, nn, nkeep));
+  PetscCall(SubsetTargetLines(s, (void **)&s->init, &s->ninit, sizeof(TslInitialTemperature), nn, nkeep));
+  PetscCall(SubsetTargetLines(s, (void **)&s->vinit, &s->nvinit, sizeof(TslInitialVelocity), nn, nkeep));
   PetscCall(PetscFree(nkeep));
   PetscCall(PetscFree(ekeep));
   PetscCall(TslModelIndex(s));

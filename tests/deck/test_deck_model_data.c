@@ -44,7 +44,7 @@ static PetscErrorCode TestModelBoundary(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* *INITIAL CONDITIONS, TYPE=VELOCITY: the lines in deck order (node set or node, dof, value, line), whole
+/* *INITIAL CONDITIONS, TYPE=VELOCITY (and TYPE=TEMPERATURE, filtered alike): the lines in deck order (node set or node, dof, value, line), whole
  * through pack/unpack, and in a subset only those that concern its nodes (a node it holds, a set with members
  * there): a rank keeps its share of a per-node list, not the whole deck's. */
 static PetscErrorCode TestInitialVelocity(void)
@@ -55,9 +55,9 @@ static PetscErrorCode TestInitialVelocity(void)
 
   PetscFunctionBeginUser;
   PetscCall(TslDeckRead(TSL_DECK_DATA "/initial_velocity.inp", &m));
-  EXPECT(m->ninit == 1 && m->nvinit == 3);
-  EXPECT(!strcmp(m->vinit[0].target.set, "ALL") && m->vinit[0].dof == 1 && m->vinit[0].value == -1.5e3 && m->vinit[0].loc.line == 27);
-  EXPECT(!strcmp(m->vinit[1].target.set, "LEFT") && m->vinit[1].dof == 2 && m->vinit[1].value == 250 && m->vinit[1].loc.line == 28);
+  EXPECT(m->ninit == 3 && m->nvinit == 3);
+  EXPECT(!strcmp(m->vinit[0].target.set, "ALL") && m->vinit[0].dof == 1 && m->vinit[0].value == -1.5e3 && m->vinit[0].loc.line == 29);
+  EXPECT(!strcmp(m->vinit[1].target.set, "LEFT") && m->vinit[1].dof == 2 && m->vinit[1].value == 250 && m->vinit[1].loc.line == 30);
   EXPECT(!m->vinit[2].target.set[0] && m->vinit[2].target.id == 6 && m->vinit[2].dof == 1 && m->vinit[2].value == 0);
   PetscCall(TslModelPack(m, &buf, &len));
   PetscCall(TslModelUnpack(buf, len, &s));
@@ -69,6 +69,7 @@ static PetscErrorCode TestInitialVelocity(void)
     const PetscInt elems[] = {1}, nodes[] = {1, 4, 5, 2};
     PetscCall(TslModelSubset(m, 1, elems, 4, nodes, &s));
     EXPECT(s->nvinit == 2 && !strcmp(s->vinit[0].target.set, "ALL") && s->vinit[1].target.id == 6);
+    EXPECT(s->ninit == 2 && !strcmp(s->init[0].target.set, "ALL") && s->init[1].target.id == 6 && s->init[1].value == 30); /* temperatures alike */
     PetscCall(TslModelDestroy(&s));
   }
   /* node 1 alone: ALL and LEFT have it, node 6 is not held */
@@ -76,6 +77,7 @@ static PetscErrorCode TestInitialVelocity(void)
     const PetscInt one[] = {0};
     PetscCall(TslModelSubset(m, 0, NULL, 1, one, &s));
     EXPECT(s->nvinit == 2 && !strcmp(s->vinit[0].target.set, "ALL") && !strcmp(s->vinit[1].target.set, "LEFT") && s->vinit[1].dof == 2);
+    EXPECT(s->ninit == 2 && !strcmp(s->init[0].target.set, "ALL") && !strcmp(s->init[1].target.set, "LEFT") && s->init[1].value == 25);
     PetscCall(TslModelDestroy(&s));
   }
   PetscCall(TslModelDestroy(&m));
