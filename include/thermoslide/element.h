@@ -195,6 +195,10 @@ PetscInt  TslElementFastSize(const TslElementInput *in);
 PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[]);
 void      TslElementFastForce(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
                               PetscReal eta, PetscReal eta2, PetscReal R[], PetscReal Rv[], PetscReal *power);
+/* The element's strain energy int 1/2 sigma : eps_mech dV and hourglass energy from its record, as
+ * TslElementOutput's strain_energy and hourglass_energy (the explicit history rows' ALLSE). */
+void TslElementFastEnergy(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal *strain,
+                          PetscReal *hourglass);
 
 /* Lumped nodal quantities of the element at its current temperatures:
  *   Q[a] heat content  rho V_a e(theta_a)  (material.h: e = int c dtheta)

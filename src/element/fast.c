@@ -53,7 +53,7 @@ static inline Layout LayoutOf(PetscInt dim, PetscInt n, PetscInt nq, PetscInt nh
 static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
                                                         const PetscBool axi, const TslElementFastShape *shape, const PetscReal *rec,
                                                         const PetscReal *u, const PetscReal *ti, const PetscReal *v, PetscReal eta, PetscReal eta2,
-                                                        PetscReal *R, PetscReal *Rv, PetscReal *power)
+                                                        PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)
 {
   const PetscInt  nd     = dim + 1;
   const Layout    L      = LayoutOf(dim, n, nq, nh, axi);
@@ -83,6 +83,8 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
     tr = e[0] + e[1] + e[2] - 3 * eth;
     for (PetscInt r = 0; r < 3; r++) s[r] = (lambda * tr + 2 * mu * (e[r] - eth)) * dV;
     for (PetscInt r = 3; r < 6; r++) s[r] = mu * e[r] * dV;
+    if (energy) /* 1/2 sigma : eps_mech dV, as the generic output (kernels.c, Mechanics) */
+      for (PetscInt r = 0; r < 6; r++) energy[0] += 0.5 * s[r] * (r < 3 ? e[r] - eth : e[r]);
     for (PetscInt a = 0; a < n; a++) {
       if (dim == 3) {
         F[0][a] += Gx[a] * s[0] + Gy[a] * s[3] + Gz[a] * s[4];
@@ -104,6 +106,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
     for (PetscInt d = 0; d < dim; d++) {
       PetscReal qk = 0;
       for (PetscInt a = 0; a < n; a++) qk += gam[a] * U[d][a];
+      if (energy) energy[1] += 0.5 * rec[5] * qk * qk;
       qk *= rec[5];
       for (PetscInt a = 0; a < n; a++) F[d][a] += gam[a] * qk;
     }
@@ -138,9 +141,9 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
 #endif
 #define FORCE_ROW(name, dim, n, nq, nh, axi)                                                                                                         \
   CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,          \
-                          PetscReal eta, PetscReal eta2, PetscReal *R, PetscReal *Rv, PetscReal *power)                                              \
+                          PetscReal eta, PetscReal eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)                           \
   {                                                                                                                                                  \
-    Force(dim, n, nq, nh, axi, sh, rec, u, ti, v, eta, eta2, R, Rv, power);                                                                          \
+    Force(dim, n, nq, nh, axi, sh, rec, u, ti, v, eta, eta2, R, Rv, power, energy);                                                                  \
   }
 FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE)
 FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE)
@@ -150,7 +153,7 @@ FORCE_ROW(Quad4FullAxi, 2, 4, 4, 0, PETSC_TRUE)
 FORCE_ROW(Quad4ReducedAxi, 2, 4, 1, 1, PETSC_TRUE)
 
 typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, PetscReal, PetscReal,
-                        PetscReal *, PetscReal *, PetscReal *);
+                        PetscReal *, PetscReal *, PetscReal *, PetscReal *);
 
 /* The rows: which (family, formulation, kinematics) have a record, and its sizes. */
 typedef struct {
@@ -269,5 +272,14 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
 void TslElementFastForce(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
                          PetscReal eta, PetscReal eta2, PetscReal R[], PetscReal Rv[], PetscReal *power)
 {
-  Rows[shape->row].force(shape, rec, u, ti, v, eta, eta2, R, Rv, power);
+  Rows[shape->row].force(shape, rec, u, ti, v, eta, eta2, R, Rv, power, NULL);
+}
+
+void TslElementFastEnergy(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal *strain,
+                          PetscReal *hourglass)
+{
+  PetscReal R[TSL_MAX_ELEM_DOF], w, energy[2] = {0, 0};
+
+  Rows[shape->row].force(shape, rec, u, ti, NULL, 0, 0, R, NULL, &w, energy);
+  *strain = energy[0], *hourglass = energy[1];
 }

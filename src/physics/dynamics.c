@@ -75,6 +75,18 @@ static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void TslProblemFastGather(TslProblem p, PetscInt e, const PetscScalar *restrict xa, PetscReal u[], PetscReal ti[])
+{
+  const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0, nd = p->ndof;
+  const PetscInt *ln = &p->elem_lnode[k0];
+
+  for (PetscInt a = 0; a < n; a++) {
+    const PetscInt l = ln[a];
+    for (PetscInt i = 0; i < nd; i++) u[nd * a + i] = PetscRealPart(xa[nd * l + i]);
+    ti[a] = p->theta_init[l];
+  }
+}
+
 /* The same from the element's record (TslElementFastForce): a gather of the unknowns alone, no geometry. */
 static void FastElement(TslProblem p, PetscInt e, const PetscScalar *restrict xa, ForceCtx *c)
 {
@@ -86,11 +98,7 @@ static void FastElement(TslProblem p, PetscInt e, const PetscScalar *restrict xa
   const PetscScalar *restrict va = c->v;
   PetscReal u[TSL_MAX_ELEM_DOF], v[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES], R[TSL_MAX_ELEM_DOF], Rv[TSL_MAX_ELEM_DOF], w;
 
-  for (PetscInt a = 0; a < n; a++) {
-    const PetscInt l = ln[a];
-    for (PetscInt i = 0; i < nd; i++) u[nd * a + i] = PetscRealPart(xa[nd * l + i]);
-    ti[a] = p->theta_init[l];
-  }
+  TslProblemFastGather(p, e, xa, u, ti);
   if (bv)
     for (PetscInt a = 0; a < n; a++)
       for (PetscInt i = 0; i < nd; i++) v[nd * a + i] = PetscRealPart(va[nd * ln[a] + i]);

@@ -163,6 +163,9 @@ typedef struct {
 } TslElemData;
 
 void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const PetscScalar *xoa, TslElemData *d);
+/* For an element with a force record (p->fast_off[e] >= 0, dynamics.c): its unknowns u[] (laid out as
+ * TslElemData's) and initial temperatures ti[] alone, no coordinates. */
+void TslProblemFastGather(TslProblem p, PetscInt e, const PetscScalar *xa, PetscReal u[], PetscReal ti[]);
 /* A per-element computation: set *stop to end the loop early. */
 typedef PetscErrorCode (*TslElementVisitor)(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop);
 PetscErrorCode TslProblemElementLoop(TslProblem p, const PetscScalar *xa, const PetscScalar *xoa, TslElementVisitor visit, void *ctx);

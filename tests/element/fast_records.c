@@ -2,8 +2,8 @@
  * catalogue type with a fast row, on a distorted element (shifted far from the origin too, where the
  * geometry's rounding is largest) with arbitrary displacements, temperatures and velocities, the internal
  * force and heat flow equal TslElementInternal's, the bulk viscosity forces and power
- * TslElementBulkViscosity's, to 1e-12 of the largest entry. The types without a row, plane stress among
- * them, and a temperature-dependent material get no record (size 0). */
+ * TslElementBulkViscosity's, to 1e-12 of the largest entry, the strain and hourglass energies TslElementOutput's. The types without a row, plane
+ * stress among them, and a temperature-dependent material get no record (size 0). */
 #include "check.h"
 
 static void Constant(TslPropertyTable *t, PetscReal v0, PetscReal v1)
@@ -64,6 +64,15 @@ static PetscErrorCode CheckType(TestLog *log, const TslElementType *t, PetscReal
   TslElementFastForce(&shape, rec, u, ti, v, 0.06 * 1e-4, 1.44e-8, R, Rv, &w);
   PetscCall(TslElementInternal(&in, Rg, NULL, &inverted));
   CheckAtMost(log, RelDiff(nd, R, Rg), 1e-12, "%s (offset %g): internal force and heat flow against the generic kernel", t->name, (double)offset);
+  {
+    TslElementResult res;
+    PetscReal        se, hg;
+    PetscCall(TslElementOutput(&in, &res));
+    TslElementFastEnergy(&shape, rec, u, ti, &se, &hg);
+    CheckRel(log, se, res.strain_energy, 1e-12, 1e-300, "%s (offset %g): strain energy against the generic output", t->name, (double)offset);
+    CheckRel(log, hg, res.hourglass_energy, 1e-12, 1e-30 + 1e-12 * PetscAbsReal(res.strain_energy), "%s (offset %g): hourglass energy", t->name,
+             (double)offset);
+  }
   for (PetscInt sign = 1; sign >= -1; sign -= 2) { /* expansion and compression: the quadratic term in one only */
     for (PetscInt i = 0; i < nd; i++) v[i] = -v[i], Rvg[i] = 0;
     TslElementFastForce(&shape, rec, u, ti, v, 0.06 * 1e-4, 1.44e-8, R, Rv, &w);
