@@ -175,8 +175,9 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
  * its mechanical points, its conduction matrix, the centre point of the bulk viscosity, the hourglass
  * vectors and its elastic constants, and TslElementFastForce computes from it what TslElementInternal and
  * TslElementBulkViscosity would (the same formulas, to rounding), with loops of fixed length.
- * Rows: quad4 (plane strain, axisymmetric; full and reduced) and hex8 (full and reduced); other types,
- * temperature-dependent materials and plane stress keep the generic path.
+ * Rows: the displacement formulations (full, reduced with hourglass control, modified) of plane strain,
+ * axisymmetric and 3D solids, on every family (tri3, tri6, quad4, quad8, tet4, tet10, wedge6, hex8); hybrid,
+ * plane stress, generalized plane strain, twist and temperature-dependent materials keep the generic path.
  *   TslElementFastShape     the type's shape values at its mechanical points (one per type, shared by its
  *                           elements); PETSC_FALSE when the type has no fast row
  *   TslElementFastSize      reals in the element's record; 0: no fast path for this element
@@ -185,9 +186,11 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
  *                           viscosity forces, when eta > 0 or eta2 > 0: TslElementBulkViscosity's eta1,
  *                           eta2) and the power dissipated by the viscosity
  * u[] and v[] are laid out as in->u (theta last at each node), ti[] the nodal initial temperatures. */
+#define TSL_FAST_MAX_NODES 10 /* tet10 */
+#define TSL_FAST_MAX_QP    9  /* quad8's full rule */
 typedef struct {
-  PetscInt  row;     /* the fast row (-1: none) */
-  PetscReal N[8][8]; /* N[q][a] at the mechanical points */
+  PetscInt  row;                                    /* the fast row (-1: none) */
+  PetscReal N[TSL_FAST_MAX_QP][TSL_FAST_MAX_NODES]; /* N[q][a] at the mechanical points */
 } TslElementFastShape;
 
 PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *shape);

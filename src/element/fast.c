@@ -58,7 +58,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
   const PetscInt  nd     = dim + 1;
   const Layout    L      = LayoutOf(dim, n, nq, nh, axi);
   const PetscReal lambda = rec[1], mu = rec[2], alpha = rec[3];
-  PetscReal       U[3][8], th[8], dth[8], F[3][8], Fth[8];
+  PetscReal       U[3][TSL_FAST_MAX_NODES], th[TSL_FAST_MAX_NODES], dth[TSL_FAST_MAX_NODES], F[3][TSL_FAST_MAX_NODES], Fth[TSL_FAST_MAX_NODES];
 
   for (PetscInt a = 0; a < n; a++) {
     for (PetscInt d = 0; d < dim; d++) U[d][a] = u[nd * a + d], F[d][a] = 0;
@@ -151,6 +151,15 @@ FORCE_ROW(Quad4Full, 2, 4, 4, 0, PETSC_FALSE)
 FORCE_ROW(Quad4Reduced, 2, 4, 1, 1, PETSC_FALSE)
 FORCE_ROW(Quad4FullAxi, 2, 4, 4, 0, PETSC_TRUE)
 FORCE_ROW(Quad4ReducedAxi, 2, 4, 1, 1, PETSC_TRUE)
+FORCE_ROW(Tet4Full, 3, 4, 1, 0, PETSC_FALSE)
+FORCE_ROW(Tet10Full, 3, 10, 4, 0, PETSC_FALSE)
+FORCE_ROW(Wedge6Full, 3, 6, 6, 0, PETSC_FALSE)
+FORCE_ROW(Tri3Full, 2, 3, 1, 0, PETSC_FALSE)
+FORCE_ROW(Tri6Full, 2, 6, 3, 0, PETSC_FALSE)
+FORCE_ROW(Quad8Full, 2, 8, 9, 0, PETSC_FALSE)
+FORCE_ROW(Tri3FullAxi, 2, 3, 1, 0, PETSC_TRUE)
+FORCE_ROW(Tri6FullAxi, 2, 6, 3, 0, PETSC_TRUE)
+FORCE_ROW(Quad8FullAxi, 2, 8, 9, 0, PETSC_TRUE)
 
 typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, PetscReal, PetscReal,
                         PetscReal *, PetscReal *, PetscReal *, PetscReal *);
@@ -171,12 +180,23 @@ static const FastRow Rows[] = {
     {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRAIN, 1, 1, Quad4Reduced},
     {&TslGeomQuad4, &TslFormFull, TSL_KIN_AXISYMMETRIC, 4, 0, Quad4FullAxi},
     {&TslGeomQuad4, &TslFormReduced, TSL_KIN_AXISYMMETRIC, 1, 1, Quad4ReducedAxi},
+    {&TslGeomTet4, &TslFormFull, TSL_KIN_SOLID3D, 1, 0, Tet4Full},
+    {&TslGeomTet10, &TslFormModified, TSL_KIN_SOLID3D, 4, 0, Tet10Full}, /* modified: lumping and pressure faces differ, not the force */
+    {&TslGeomWedge6, &TslFormFull, TSL_KIN_SOLID3D, 6, 0, Wedge6Full},
+    {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRAIN, 1, 0, Tri3Full},
+    {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRAIN, 3, 0, Tri6Full},
+    {&TslGeomQuad8, &TslFormFull, TSL_KIN_PLANE_STRAIN, 9, 0, Quad8Full},
+    {&TslGeomTri3, &TslFormFull, TSL_KIN_AXISYMMETRIC, 1, 0, Tri3FullAxi},
+    {&TslGeomTri6, &TslFormModified, TSL_KIN_AXISYMMETRIC, 3, 0, Tri6FullAxi},
+    {&TslGeomQuad8, &TslFormFull, TSL_KIN_AXISYMMETRIC, 9, 0, Quad8FullAxi},
 };
 
 static PetscInt RowOf(const TslElementType *t)
 {
   for (PetscInt r = 0; r < (PetscInt)(sizeof(Rows) / sizeof(Rows[0])); r++)
-    if (Rows[r].geom == t->geom && Rows[r].form == t->form && Rows[r].kin == t->kin && t->nextra == 0) return r;
+    if (Rows[r].geom == t->geom && Rows[r].form == t->form && Rows[r].kin == t->kin && t->nextra == 0 &&
+        t->form->quadrature(t->geom)->n == Rows[r].nq) /* the row's compile-time point count is the rule's */
+      return r;
   return -1;
 }
 
@@ -225,13 +245,15 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   const PetscInt        r = RowOf(t), n = g->nnode, dim = g->dim;
   const PetscBool       axi    = TslKinematicsRowGet(t->kin)->revolve;
   const TslQuadrature  *quad   = t->form->quadrature(g);
-  const PetscReal       xi0[3] = {0, 0, 0};
+  PetscReal             xi0[3] = {0, 0, 0}; /* the centre: the corners' centroid, as TslElementBulkViscosity's */
   Layout                L;
   TslMaterialPoint      mp;
   TslElementPoint       p;
   PetscReal             lambda, mu;
 
   if (r < 0) return PETSC_FALSE;
+  for (PetscInt a = 0; a < g->ncorner; a++)
+    for (PetscInt d = 0; d < g->dim; d++) xi0[d] += g->node_xi[a][d] / g->ncorner;
   L = RowLayout(r);
   for (PetscInt i = 0; i < L.size; i++) rec[i] = 0;
   TslMaterialEval(in->sec->mat, 0, &mp);
@@ -252,7 +274,7 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
         rec[L.K + a * n + b] += mp.k * kab * p.dV;
       }
   }
-  /* the centre: the bulk viscosity's point and the hourglass control's (corner centroid, xi = 0 for these families) */
+  /* the centre: the bulk viscosity's point and the hourglass control's (xi = 0 for quad4 and hex8) */
   if (!TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p)) return PETSC_FALSE;
   if (quad->n > 1) {
     StorePoint(&p, n, dim, axi, &rec[L.Gc], &rec[L.Nrc]);
