@@ -47,6 +47,8 @@ PetscBool TslInjectNow(TslInject *inj, TslInjectKind kind, PetscInt step);
 PetscErrorCode TslOptionsReal(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscReal lo, PetscBool open_lo, PetscReal hi,
                               PetscBool open_hi, PetscReal *value);
 PetscErrorCode TslOptionsInt(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscInt lo, PetscInt hi, PetscInt *value);
+/* A true/false option (a bare flag is true); any other text is an error naming the option. */
+PetscErrorCode TslOptionsBool(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscBool *value);
 
 /* Options given but not read. fail: a -tsl_ option nobody read is a user error (a misspelt option of ours
  * must not silently leave a default in place); otherwise each unused option is a warning in the log

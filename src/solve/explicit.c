@@ -74,8 +74,8 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
                           &d->explicit_kin_passes));
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_kinematic_tol", "explicit: kinematic corrector passes stop at this pressure change (fraction of the largest pressure)",
                            0, PETSC_FALSE, 1, PETSC_FALSE, &d->explicit_kin_tol));
-  PetscCall(PetscOptionsBool("-tsl_explicit_records", "explicit: element force records (geometry and conduction computed once; docs/explicit.md)", NULL,
-                             d->explicit_records, &d->explicit_records, NULL));
+  PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_explicit_records", "explicit: element force records (geometry and conduction computed once; docs/explicit.md)",
+                           &d->explicit_records));
   PetscOptionsEnd();
   PetscFunctionReturn(PETSC_SUCCESS);
 }

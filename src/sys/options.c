@@ -48,6 +48,24 @@ PetscErrorCode TslOptionsInt(PetscOptionItems *PetscOptionsObject, const char *n
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslOptionsBool(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscBool *value)
+{
+  char           buf[256];
+  PetscBool      set, b;
+  PetscErrorCode e;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(NULL, NULL, name, buf, sizeof(buf), &set));
+  if (set && buf[0]) { /* a bare flag means true */
+    PetscCall(TslCaptureBegin());
+    e = PetscOptionsStringToBool(buf, &b);
+    PetscCall(TslCaptureEnd());
+    PetscCheck(!e, PETSC_COMM_WORLD, PETSC_ERR_USER_INPUT, "option %s %s: expected true or false (1 or 0, yes or no)", name, buf);
+  }
+  PetscCall(PetscOptionsBool(name, help, NULL, *value, value, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Options PETSc itself reads at start-up or in PetscFinalize: never "unused". */
 static PetscBool ReadByPetsc(const char *name)
 {
