@@ -125,21 +125,51 @@ static inline TslDual DPow4(TslDual a)
 }
 
 /* Linear combination of two dual vectors stored as [2] arrays. */
-static inline TslDual DDot(const TslDual a[2], const TslDual b[2])
+
+/* The fused forms below do in one pass over the slots what their comments' compositions do in several
+ * (with a temporary dual each): the same operations in the same order, so the same bits. The kernels
+ * spend most of their time in these (the face point's sums, dot and cross products). */
+
+/* *acc = DAdd(*acc, DMul(*a, *b)) */
+static inline void DAccMul(TslDual *acc, const TslDual *a, const TslDual *b)
 {
-  return DAdd(DMul(a[0], b[0]), DMul(a[1], b[1]));
+  acc->v += a->v * b->v;
+  for (PetscInt i = 0; i < TSL_DUAL_N; i++) acc->d[i] += a->d[i] * b->v + a->v * b->d[i];
 }
 
+/* DAdd(DMul(a[0], b[0]), DMul(a[1], b[1])) */
+static inline TslDual DDot(const TslDual a[2], const TslDual b[2])
+{
+  TslDual r;
+  r.v = a[0].v * b[0].v + a[1].v * b[1].v;
+  for (PetscInt i = 0; i < TSL_DUAL_N; i++) r.d[i] = (a[0].d[i] * b[0].v + a[0].v * b[0].d[i]) + (a[1].d[i] * b[1].v + a[1].v * b[1].d[i]);
+  return r;
+}
+
+/* DAdd(DAdd(DMul(a[0], b[0]), DMul(a[1], b[1])), DMul(a[2], b[2])) */
 static inline TslDual DDot3(const TslDual a[3], const TslDual b[3])
 {
-  return DAdd(DAdd(DMul(a[0], b[0]), DMul(a[1], b[1])), DMul(a[2], b[2]));
+  TslDual r;
+  r.v = a[0].v * b[0].v + a[1].v * b[1].v + a[2].v * b[2].v;
+  for (PetscInt i = 0; i < TSL_DUAL_N; i++)
+    r.d[i] = (a[0].d[i] * b[0].v + a[0].v * b[0].d[i]) + (a[1].d[i] * b[1].v + a[1].v * b[1].d[i]) + (a[2].d[i] * b[2].v + a[2].v * b[2].d[i]);
+  return r;
+}
+
+/* DSub(DMul(a, b), DMul(c, e)) */
+static inline TslDual DMulSubMul(const TslDual *a, const TslDual *b, const TslDual *c, const TslDual *e)
+{
+  TslDual r;
+  r.v = a->v * b->v - c->v * e->v;
+  for (PetscInt i = 0; i < TSL_DUAL_N; i++) r.d[i] = (a->d[i] * b->v + a->v * b->d[i]) - (c->d[i] * e->v + c->v * e->d[i]);
+  return r;
 }
 
 static inline void DCross(const TslDual a[3], const TslDual b[3], TslDual c[3])
 {
-  c[0] = DSub(DMul(a[1], b[2]), DMul(a[2], b[1]));
-  c[1] = DSub(DMul(a[2], b[0]), DMul(a[0], b[2]));
-  c[2] = DSub(DMul(a[0], b[1]), DMul(a[1], b[0]));
+  c[0] = DMulSubMul(&a[1], &b[2], &a[2], &b[1]);
+  c[1] = DMulSubMul(&a[2], &b[0], &a[0], &b[2]);
+  c[2] = DMulSubMul(&a[0], &b[1], &a[1], &b[0]);
 }
 
 /* ---------------------------------------------------------------------------------------------------
@@ -183,9 +213,10 @@ PetscErrorCode TslContactHeatFlux(const TslContactLaw *law, TslDual pN, PetscBoo
 /* Residual rows of a node-to-face element in duals, nper main nodes with shape functions N[], dim
  * displacement components per node followed by theta (index dim), nu unknowns per node:
  *   R_s = -A traction, R_a = A N_a traction, Rth_s = -A (q + f heat), Rth_a = A N_a (q - (1 - f) heat).
- * Rows beyond these (the twist's phi rows) are zeroed for the caller to fill. */
+ * Rows beyond these (the twist's phi rows) are zeroed for the caller to fill. values_only (no tangent
+ * wanted: residual evaluations, the explicit force loop): only the values .v are set, the same bits. */
 void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[],
-                            const TslDual traction[], TslDual q, TslDual heat, TslDual Rd[]);
+                            const TslDual traction[], TslDual q, TslDual heat, PetscBool values_only, TslDual Rd[]);
 
 /* R (values) and K = dR/du (slots 0..ndof-1), either may be NULL. */
 void TslContactDualExtract(PetscInt ndof, const TslDual Rd[], PetscReal R[], PetscReal K[]);

@@ -90,7 +90,7 @@ void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], Pe
 
 void TslContactFace3ShapeValues(PetscInt kind, const PetscReal xi[2], PetscReal N[])
 {
-  const TslContactFace3 *f = TslContactFace3Get(kind);
+  const TslContactFace3 *f    = TslContactFace3Get(kind);
   PetscReal              z[3] = {xi[0], xi[1], 0}, d[TSL_MAX_ELEM_NODES * 3];
   if (f) f->geom->shape(z, N, d);
 }
@@ -107,15 +107,16 @@ void TslContactFace3PointDual(const TslContactFace3 *face, const TslDual x[][3],
     a[0][d] = a[1][d] = DConst(0);
   }
   for (PetscInt b = 0; b < face->geom->nnode; b++) {
-    TslDual Nb = DChain2(xi[0], xi[1], Nv[b], dN[b][0], dN[b][1]);
+    TslDual Nb = DChain2(xi[0], xi[1], Nv[b], dN[b][0], dN[b][1]), dNb[2];
 
     if (N) N[b] = Nb;
     if (b == 0) continue;
+    for (PetscInt i = 0; i < 2; i++) dNb[i] = DChain2(xi[0], xi[1], dN[b][i], d2N[b][i][0], d2N[b][i][1]);
     for (PetscInt d = 0; d < 3; d++) {
       TslDual e = DSub(x[b][d], x[0][d]);
 
-      p[d] = DAdd(p[d], DMul(Nb, e));
-      for (PetscInt i = 0; i < 2; i++) a[i][d] = DAdd(a[i][d], DMul(DChain2(xi[0], xi[1], dN[b][i], d2N[b][i][0], d2N[b][i][1]), e));
+      DAccMul(&p[d], &Nb, &e);
+      for (PetscInt i = 0; i < 2; i++) DAccMul(&a[i][d], &dNb[i], &e);
     }
   }
 }

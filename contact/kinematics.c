@@ -20,15 +20,15 @@ void TslContactFacePointDual(const TslContactFace *face, const TslDual x[][2], T
 
     for (PetscInt d = 0; d < 2; d++) {
       TslDual e = DSub(x[a][d], x[0][d]);
-      p[d]      = DAdd(p[d], DMul(Na, e));
-      t[d]      = DAdd(t[d], DMul(dNa, e));
+      DAccMul(&p[d], &Na, &e);
+      DAccMul(&t[d], &dNa, &e);
     }
   }
 }
 
 static TslDual Norm(const TslDual t[2])
 {
-  return DSqrt(DAdd(DMul(t[0], t[0]), DMul(t[1], t[1])));
+  return DSqrt(DDot(t, t));
 }
 
 /* Unit outward normal of a tangent (body on the left): n = (t_y, -t_x)/|t|. */

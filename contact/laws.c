@@ -268,8 +268,18 @@ PetscErrorCode TslContactHeatFlux(const TslContactLaw *law, TslDual pN, PetscBoo
 /* Residual = internal - external: the contact force and the heat inflow are external to each node. The
  * sum of the thermal rows is -A heat: conduction and radiation move heat across, friction adds it. */
 void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[],
-                            const TslDual traction[], TslDual q, TslDual heat, TslDual Rd[])
+                            const TslDual traction[], TslDual q, TslDual heat, PetscBool values_only, TslDual Rd[])
 {
+  if (values_only) { /* the same operations on the values alone, so the same bits as the .v of the dual path */
+    for (PetscInt i = 0; i < nu * nnode; i++) Rd[i].v = 0;
+    for (PetscInt d = 0; d < dim; d++) {
+      Rd[d].v = traction[d].v * -area;
+      for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + d].v = N[a].v * traction[d].v * area;
+    }
+    Rd[dim].v = (q.v + heat.v * f) * -area;
+    for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + dim].v = N[a].v * (q.v - heat.v * (1 - f)) * area;
+    return;
+  }
   for (PetscInt i = 0; i < nu * nnode; i++) Rd[i] = DConst(0);
   for (PetscInt d = 0; d < dim; d++) {
     Rd[d] = DScale(-area, traction[d]);
@@ -375,7 +385,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
 
   /* residual. With twist the circumferential friction force -A tW on s (+A tW at the main point) does the
    * virtual work -A tW (R_s dphi_s - R_m N_a dphi_a): moments on the phi rows. */
-  TslContactResidualRows(area, law->f, 2, nu, nnode, nper, N, traction, q, heat, Rd);
+  TslContactResidualRows(area, law->f, 2, nu, nnode, nper, N, traction, q, heat, (PetscBool)!K, Rd);
   if (sl.nc == 2) {
     Rd[3] = DScale(area * in->x[0][0], fs.t[1]);
     for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + 3] = DScale(-area, DMul(DMul(N[a], Rm), fs.t[1]));
