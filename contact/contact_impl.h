@@ -137,6 +137,15 @@ static inline void DAccMul(TslDual *acc, const TslDual *a, const TslDual *b)
   for (PetscInt i = 0; i < TSL_DUAL_N; i++) acc->d[i] += a->d[i] * b->v + a->v * b->d[i];
 }
 
+/* DSub(a, DMul(b, c)) */
+static inline TslDual DSubMul(const TslDual *a, const TslDual *b, const TslDual *c)
+{
+  TslDual r;
+  r.v = a->v - b->v * c->v;
+  for (PetscInt i = 0; i < TSL_DUAL_N; i++) r.d[i] = a->d[i] - (b->d[i] * c->v + b->v * c->d[i]);
+  return r;
+}
+
 /* DAdd(DMul(a[0], b[0]), DMul(a[1], b[1])) */
 static inline TslDual DDot(const TslDual a[2], const TslDual b[2])
 {

@@ -61,7 +61,10 @@ static void Surface(const Geom3 *geo, const TslDual xi[2], TslDual p[3], TslDual
     beta = DAddC(DScale(-1, keep), 1);
     if (beta.v > 0) {
       for (PetscInt b = 0; b < geo->nper; b++)
-        for (PetscInt k = 0; k < 3; k++) m[k] = DAdd(m[k], DMul(N[b], DSub(DConst(geo->nn[b][k]), DDiv(c[k], len))));
+        for (PetscInt k = 0; k < 3; k++) {
+          TslDual e = DSub(DConst(geo->nn[b][k]), DDiv(c[k], len));
+          DAccMul(&m[k], &N[b], &e);
+        }
       for (PetscInt k = 0; k < 3; k++) c[k] = DAdd(c[k], DMul(DMul(beta, len), m[k]));
       len = DSqrt(DDot3(c, c));
     }
@@ -81,7 +84,7 @@ static PetscErrorCode ProjectionFunction(void *ctx, const PetscReal xi[2], TslDu
   for (PetscInt i = 0; i < 2; i++) {
     TslDual an = DDot3(a[i], n), t[3];
 
-    for (PetscInt d = 0; d < 3; d++) t[d] = DSub(a[i][d], DMul(an, n[d]));
+    for (PetscInt d = 0; d < 3; d++) t[d] = DSubMul(&a[i][d], &an, &n[d]);
     F[i] = DDot3(r, t);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
