@@ -124,12 +124,9 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask
   }
   PetscCall(VecRestoreArray(wl, &w));
   PetscCall(VecGhostRestoreLocalForm(W, &wl));
-  PetscCall(VecGhostUpdateBegin(W, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecGhostUpdateEnd(W, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecGhostUpdateBegin(W, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(W, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateBegin(M, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(M, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(W, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(TslGhostUpdate(W, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(M, INSERT_VALUES, SCATTER_FORWARD));
 
   PetscCall(LocalReadGet(W, &load));
   PetscCall(LocalReadGet(M, &m));
@@ -196,8 +193,7 @@ PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec M
 
   PetscFunctionBeginUser;
   *applied = PETSC_FALSE;
-  PetscCall(VecGhostUpdateBegin(Fk, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(Fk, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(Fk, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(LocalReadGet(Fk, &fk));
   PetscCall(LocalReadGet(M, &m));
   PetscCall(LocalReadGet(Mask, &mask));
@@ -240,8 +236,7 @@ PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec M
   if (*applied) {
     PetscCall(VecRestoreArray(wl, &w));
     PetscCall(VecGhostRestoreLocalForm(W, &wl));
-    PetscCall(VecGhostUpdateBegin(W, ADD_VALUES, SCATTER_REVERSE));
-    PetscCall(VecGhostUpdateEnd(W, ADD_VALUES, SCATTER_REVERSE));
+    PetscCall(TslGhostUpdate(W, ADD_VALUES, SCATTER_REVERSE));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

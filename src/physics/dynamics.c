@@ -188,8 +188,7 @@ static PetscErrorCode EndLocal(Vec V, Vec *vl, PetscScalar **a)
   if (!V) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(VecRestoreArray(*vl, a));
   PetscCall(VecGhostRestoreLocalForm(V, vl));
-  PetscCall(VecGhostUpdateBegin(V, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecGhostUpdateEnd(V, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(TslGhostUpdate(V, ADD_VALUES, SCATTER_REVERSE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -214,8 +213,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&heat, sizeof(heat)));
   if (Fv) {
-    PetscCall(VecGhostUpdateBegin(V, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecGhostUpdateEnd(V, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(TslGhostUpdate(V, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecGhostGetLocalForm(V, &vl));
     PetscCall(VecGetArrayRead(vl, &c.v));
   }

@@ -146,8 +146,7 @@ static PetscErrorCode ContactHeatIncrement(Explicit *x, PetscReal *dt, int *id)
   PetscInt           node;
 
   PetscFunctionBeginUser;
-  PetscCall(VecGhostUpdateBegin(x->M, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(x->M, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(x->M, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostGetLocalForm(x->M, &ml));
   PetscCall(VecGetArrayRead(ml, &m));
   PetscCall(TslProblemContactHeatIncrement(x->p, m, &dc, &node));
@@ -202,8 +201,7 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
     Vec                ml;
     const PetscScalar *m;
     PetscReal          dc;
-    PetscCall(VecGhostUpdateBegin(x->M, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecGhostUpdateEnd(x->M, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(TslGhostUpdate(x->M, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecGhostGetLocalForm(x->M, &ml));
     PetscCall(VecGetArrayRead(ml, &m));
     PetscCall(ContactIncrement(x, m, &dc, &loc[2].id));
@@ -454,8 +452,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecRestoreArrayRead(x->Mask, &mask));
   PetscCall(VecRestoreArrayRead(x->M, &m));
   PetscCall(VecRestoreArray(x->V, &v));
-  PetscCall(VecGhostUpdateBegin(x->X, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(x->X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(x->X, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(MPIU_Allreduce(loc, g, 8, MPIU_REAL, MPIU_SUM, x->comm));
   /* a run that has left the stable range (a DIRECT USER CONTROL increment above the stable one, a contact
    * spring or quadratic viscosity the estimate did not see) grows until it overflows: every rank sees the same
