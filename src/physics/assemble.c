@@ -405,7 +405,8 @@ PetscErrorCode TslProblemGetLocalSolution(TslProblem p, Vec *xl, const PetscScal
 {
   PetscFunctionBeginUser;
   PetscCall(VecCopy(p->X, p->Xl));
-  PetscCall(TslGhostUpdate(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateBegin(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostGetLocalForm(p->Xl, xl));
   PetscCall(VecGetArrayRead(*xl, xa));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -425,8 +426,10 @@ static PetscErrorCode GetStates(TslProblem p, Vec X, Vec *xl, Vec *xol, const Pe
   PetscFunctionBeginUser;
   if (X != p->Xl) PetscCall(VecCopy(X, p->Xl));
   /* one at a time: duplicated ghosted vectors share their scatter */
-  PetscCall(TslGhostUpdate(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(TslGhostUpdate(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateBegin(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateBegin(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostUpdateEnd(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostGetLocalForm(p->Xl, xl));
   PetscCall(VecGhostGetLocalForm(p->Xold, xol));
   PetscCall(VecGetArrayRead(*xl, xa));
@@ -461,7 +464,8 @@ static PetscErrorCode Residual(TslProblem p, AsmMode mode, Vec X, Vec F, AsmHeat
   PetscCall(VecRestoreArray(fl, &fa));
   PetscCall(VecGhostRestoreLocalForm(p->Fl, &fl));
   PetscCall(TslProblemCheckBadElement(p, bad));
-  PetscCall(TslGhostUpdate(p->Fl, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateBegin(p->Fl, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(VecGhostUpdateEnd(p->Fl, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(p->Fl, F));
   if (mode == ASM_RESIDUAL) {
     PetscCall(VecGetArray(F, &Fa));
