@@ -45,6 +45,8 @@ void TslElementStrainMatrix(const TslElementType *type, const TslElementSection 
 /* Elasticity of the kinematics at a material point: D[6][6] (plane stress: condensed so that
  * sigma_33 = 0) and its derivative dD in theta (NULL: not wanted). */
 void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp, PetscReal D[6][6], PetscReal dD[6][6]);
+/* The Lame constants of the isotropic material at a point (TslElementElasticity's, the force records'). */
+void TslElementLame(const TslMaterialPoint *mp, PetscReal *lambda, PetscReal *mu);
 
 /* Formulation: how the strain terms are integrated and what is added to them. Function pointers where
  * behaviour differs; the generic kernel (kernels.c) calls them.

@@ -7,7 +7,7 @@
  * both at every call, through loops of run-time length sized for the largest family: about 6.5 k flops and
  * 5 us per C3D8T element per increment. A record per element holds what does not change:
  *
- *   header   row, lambda, mu, alpha, lambda + 2 mu, hourglass kappa, rho
+ *   header   row, lambda, mu, alpha, lambda + 2 mu, hourglass kappa (two spare)
  *   G        spatial gradients dN_a/dx at each mechanical point, [nq][dim][n]
  *   dV       the points' volumes (thickness or 2 pi r included), [nq]
  *   Nr       N_a / r at each point (axisymmetric: the hoop strain u_r / r), [nq][n]
@@ -257,9 +257,8 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   L = RowLayout(r);
   for (PetscInt i = 0; i < L.size; i++) rec[i] = 0;
   TslMaterialEval(in->sec->mat, 0, &mp);
-  lambda = mp.E * mp.nu / ((1 + mp.nu) * (1 - 2 * mp.nu));
-  mu     = mp.E / (2 * (1 + mp.nu));
-  rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha, rec[4] = lambda + 2 * mu, rec[6] = mp.rho;
+  TslElementLame(&mp, &lambda, &mu);
+  rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha, rec[4] = lambda + 2 * mu;
   for (PetscInt q = 0; q < quad->n; q++) {
     if (!TslElementPointEvaluate(t, in->sec, in->x, quad->xi[q], quad->w[q], &p)) return PETSC_FALSE;
     StorePoint(&p, n, dim, axi, &rec[L.G + q * n * dim], &rec[L.Nr + q * n]);

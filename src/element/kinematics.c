@@ -214,15 +214,22 @@ static void Isotropic(PetscReal lambda, PetscReal mu, PetscReal D[6][6])
   }
 }
 
+void TslElementLame(const TslMaterialPoint *mp, PetscReal *lambda, PetscReal *mu)
+{
+  *lambda = mp->E * mp->nu / ((1 + mp->nu) * (1 - 2 * mp->nu));
+  *mu     = mp->E / (2 * (1 + mp->nu));
+}
+
 void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp, PetscReal D[6][6], PetscReal dD[6][6])
 {
   const PetscReal E = mp->E, nu = mp->nu, a = (1 + nu) * (1 - 2 * nu);
-  const PetscReal lambda = E * nu / a, mu = E / (2 * (1 + nu));
+  PetscReal       lambda, mu;
   /* d lambda / d nu = E (1 + 2 nu^2) / a^2, d mu / d nu = -E / (2 (1 + nu)^2) */
   const PetscReal dlambda = mp->dE * nu / a + mp->dnu * E * (1 + 2 * nu * nu) / (a * a);
   const PetscReal dmu     = mp->dE / (2 * (1 + nu)) - mp->dnu * E / (2 * (1 + nu) * (1 + nu));
   PetscReal       D0[6][6], dD0[6][6];
 
+  TslElementLame(mp, &lambda, &mu);
   if (!TslKinematicsRowGet(type->kin)->free_normal) { /* straight into D (and dD only when asked: the explicit forces do not) */
     Isotropic(lambda, mu, D);
     if (dD) Isotropic(dlambda, dmu, dD);

@@ -129,15 +129,3 @@ PetscErrorCode TslOptionsCheckUnused(MPI_Comm comm, PetscBool fail)
   PetscCall(PetscOptionsLeftRestore(NULL, &n, &names, &values));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-
-PetscErrorCode TslGhostUpdate(Vec v, InsertMode mode, ScatterMode direction)
-{
-  PetscMPIInt size;
-
-  PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_size(PetscObjectComm((PetscObject)v), &size));
-  if (size == 1) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(VecGhostUpdateBegin(v, mode, direction));
-  PetscCall(VecGhostUpdateEnd(v, mode, direction));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
