@@ -49,10 +49,8 @@ PetscErrorCode TslOptionsReal(PetscOptionItems *PetscOptionsObject, const char *
                               PetscBool open_hi, PetscReal *value);
 PetscErrorCode TslOptionsInt(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscInt lo, PetscInt hi, PetscInt *value);
 /* VecGhostUpdateBegin and End on a ghosted vector; nothing on one rank, where a vector has no ghosts (the
- * scatter's bookkeeping cost small explicit jobs 20 % of their time). Used by the explicit procedure's own
- * vectors only: skipping the implicit residual's reverse update on one rank changed the generalized plane
- * strain series (the CPEG* sliding tests: Newton steps accepted at iteration 0), for a reason not yet found,
- * so the implicit assembly keeps PETSc's calls. */
+ * scatter's bookkeeping cost small explicit jobs 20 % of their time). Used by every ghost update of the
+ * solution and residual vectors, implicit and explicit. */
 PetscErrorCode TslGhostUpdate(Vec v, InsertMode mode, ScatterMode direction);
 
 /* A true/false option (a bare flag is true); any other text is an error naming the option. */

@@ -1,9 +1,9 @@
 #!/bin/bash
 # Installs thermoslide's build and run dependencies from Debian's packages (idempotent).
 # Needs root (or sudo). Packages: PETSc 3.18 (built with hypre, MUMPS, HDF5), METIS, parallel HDF5,
-# Open MPI, CMake, Ninja, and python3-h5py/numpy for the verification checks.
+# Open MPI, CMake, Ninja, python3-h5py/numpy for the verification checks and valgrind for the memory check.
 set -euo pipefail
-PKGS="petsc-dev libmetis-dev libhdf5-openmpi-dev openmpi-bin cmake ninja-build pkg-config python3-h5py python3-numpy python3-meshio"
+PKGS="petsc-dev libmetis-dev libhdf5-openmpi-dev openmpi-bin cmake ninja-build pkg-config python3-h5py python3-numpy python3-meshio valgrind"
 missing=""
 for p in $PKGS; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

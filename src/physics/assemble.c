@@ -169,7 +169,9 @@ static PetscErrorCode AddCapacity(TslProblem p, const TslElemData *d, PetscReal 
   if (p->shift == 0) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(TslElementLumped(&d->in, Q, K ? C : NULL, NULL));
   PetscCall(TslElementLumped(&d->in_old, Qo, NULL, NULL));
-  for (PetscInt a = 0; a < d->n; a++) {
+  /* the element's own nodes: d->n also counts a generalized plane strain element's reference node, which
+   * has no capacity (TslElementLumped leaves its slot unset) */
+  for (PetscInt a = 0; a < d->in.type->geom->nnode; a++) {
     const PetscInt row = p->ndof * a + th;
     R[row] += p->shift * (Q[a] - Qo[a]);
     if (K) K[row * d->nd + row] += p->shift * C[a];
@@ -405,8 +407,7 @@ PetscErrorCode TslProblemGetLocalSolution(TslProblem p, Vec *xl, const PetscScal
 {
   PetscFunctionBeginUser;
   PetscCall(VecCopy(p->X, p->Xl));
-  PetscCall(VecGhostUpdateBegin(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostGetLocalForm(p->Xl, xl));
   PetscCall(VecGetArrayRead(*xl, xa));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -426,10 +427,8 @@ static PetscErrorCode GetStates(TslProblem p, Vec X, Vec *xl, Vec *xol, const Pe
   PetscFunctionBeginUser;
   if (X != p->Xl) PetscCall(VecCopy(X, p->Xl));
   /* one at a time: duplicated ghosted vectors share their scatter */
-  PetscCall(VecGhostUpdateBegin(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateBegin(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(p->Xl, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(p->Xold, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostGetLocalForm(p->Xl, xl));
   PetscCall(VecGhostGetLocalForm(p->Xold, xol));
   PetscCall(VecGetArrayRead(*xl, xa));
@@ -464,8 +463,7 @@ static PetscErrorCode Residual(TslProblem p, AsmMode mode, Vec X, Vec F, AsmHeat
   PetscCall(VecRestoreArray(fl, &fa));
   PetscCall(VecGhostRestoreLocalForm(p->Fl, &fl));
   PetscCall(TslProblemCheckBadElement(p, bad));
-  PetscCall(VecGhostUpdateBegin(p->Fl, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(VecGhostUpdateEnd(p->Fl, ADD_VALUES, SCATTER_REVERSE));
+  PetscCall(TslGhostUpdate(p->Fl, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(p->Fl, F));
   if (mode == ASM_RESIDUAL) {
     PetscCall(VecGetArray(F, &Fa));
@@ -686,7 +684,7 @@ PetscErrorCode TslProblemPreallocateIfChanged(TslProblem p)
 
   PetscFunctionBeginUser;
   if (!p->pattern_rows) {
-    PetscCall(PetscMalloc1(n, &p->pattern_rows));
+    PetscCall(PetscCalloc1(n, &p->pattern_rows));
     changed = 1;
   }
   for (PetscInt d = 0; d < n; d++) {
@@ -709,7 +707,7 @@ static PetscErrorCode StoredHeat(TslProblem p, PetscInt e, TslElemData *d, void 
   (void)p, (void)e, (void)stop;
   PetscCall(TslElementLumped(&d->in, Q, NULL, NULL));
   PetscCall(TslElementLumped(&d->in_old, Qo, NULL, NULL));
-  for (PetscInt a = 0; a < d->n; a++) *sum += Q[a] - Qo[a];
+  for (PetscInt a = 0; a < d->in.type->geom->nnode; a++) *sum += Q[a] - Qo[a]; /* not the reference node (AddCapacity) */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -243,8 +243,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
     p->nface = n;
   }
 
-  PetscCall(VecGhostUpdateBegin(p->X, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(p->X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(p->X, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostGetLocalForm(p->X, &xl));
   PetscCall(VecGetArrayRead(xl, &x));
   for (PetscInt i = 0; i < step->nload; i++) {
@@ -326,7 +325,6 @@ PetscErrorCode TslProblemApplyPrescribed(TslProblem p, Vec X)
   for (PetscInt d = 0; d < p->nown * p->ndof; d++)
     if (p->bc[d].active) x[d] = TslProblemEvalLoadValue(p, &p->bc[d]);
   PetscCall(VecRestoreArray(X, &x));
-  PetscCall(VecGhostUpdateBegin(X, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostUpdateEnd(X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(X, INSERT_VALUES, SCATTER_FORWARD));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
