@@ -96,15 +96,14 @@ PetscErrorCode TslProblemContactUpdate(TslProblem prob, PetscBool *again, PetscB
 PetscErrorCode TslProblemContactCommit(TslProblem prob);
 PetscErrorCode TslProblemContactRollback(TslProblem prob);
 /* Explicit steps: commit the contact state of the forces just evaluated, then re-pair when asked or when a
- * node left its face (*nrepair: how many left); and the normal penalty eps_n A of owned secondary node i
- * (i < TslProblemContactNodeCount) with its local node and its main face's local nodes (*nmain of them). */
+ * node left its face (*nrepair: how many left). */
 PetscErrorCode TslProblemContactExplicitIncrement(TslProblem prob, PetscBool search, PetscInt *nrepair);
-PetscErrorCode TslProblemContactNodePenalty(TslProblem prob, PetscInt i, PetscReal *k, PetscInt *lnode, PetscInt main[], PetscInt *nmain);
-PetscInt       TslProblemContactNodeCount(TslProblem prob);
-/* The interface heat exchange's share of the explicit thermal limit on this rank: min over the owned
- * secondary nodes of 2 / (k_eff A (1/C_s + 1/C_m)) (gap conductance + linearised gap radiation at the last
- * evaluation; C the lumped capacities, local form with ghosts) and the node's global id (-1: none). */
-PetscErrorCode TslProblemContactHeatIncrement(TslProblem prob, const PetscScalar C[], PetscReal *dt, PetscInt *node);
+/* Collective. The interface's share of the explicit stable increment (src/physics/contact_bound.c): the
+ * limits of the normal penalty on the lumped masses and of the heat exchange on the lumped capacities M
+ * (a ghosted vector of the solution's layout; W a work vector like it), nodal Gershgorin bounds over every
+ * node-to-surface and surface-to-surface point, and the global ids of the nodes that set them (-1 and
+ * PETSC_MAX_REAL: none). */
+PetscErrorCode TslProblemContactIncrements(TslProblem prob, Vec M, Vec W, PetscReal *dt_mech, PetscInt *node_mech, PetscReal *dt_heat, PetscInt *node_heat);
 
 /* Largest temperature change over the increment (all ranks). */
 PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta);

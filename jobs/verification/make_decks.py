@@ -392,7 +392,7 @@ EXPLICIT_STEADY = 5.0      # the "steady" periods: 6 time constants C / (h A) = 
 EXPLICIT_EQUILIBRATE = 2.0 # friction series: 5.5 time constants L^2 / (pi^2 k / rho c) = 0.36 of the large block's length 6
 
 
-def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None):
+def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None, surf=False):
     """The friction and conductance series of sliding_blocks as explicit steps (CPE4T): the same blocks,
     interaction and loads, with MECHANICAL CONSTRAINT=constraint (PENALTY or KINEMATIC) and these
     changes, each needed by explicit steps: no *EQUATION (the friction series' straight, non-rotating top
@@ -400,7 +400,8 @@ def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None):
     on it); the slide 0 -> 1.5 -> -1.5 -> 0 as three SMOOTH STEP legs (the same slip path 6, but no
     velocity or acceleration jumps, which would send waves through the undamped blocks: the 16-point
     tables used before rang them up to ALLIE ~ 10); loads ramped in by smooth steps; steady-state steps as transient
-    steps of EXPLICIT_STEADY; density / specific heat as above."""
+    steps of EXPLICIT_STEADY; density / specific heat as above. surf: TYPE=SURFACE TO SURFACE (PENALTY only;
+    job name *_surf_*)."""
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:  # the implicit deck of the same name must not be overwritten
         sliding_blocks(series, typ=typ, outdir=tmp, top_rows=2)
@@ -422,7 +423,8 @@ def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None):
     slide = [(0, 0), (T / 3, 1.5), (2 * T / 3, -1.5), (T, 0)]
     mass = "*FIXED MASS SCALING, DT=%g, TYPE=BELOW MIN\n" % EXPLICIT_TARGET
     dyn = lambda period, scaled=False: "*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , %g\n" % period + (mass if scaled else "")
-    text = head + ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05, MECHANICAL CONSTRAINT=%s\n SECONDARY, MAIN\n" % constraint +
+    text = head + ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05, MECHANICAL CONSTRAINT=%s%s\n SECONDARY, MAIN\n"
+                   % (constraint, ", TYPE=SURFACE TO SURFACE" if surf else "") +
                    amplitude("SLIDE", slide, True) + amplitude("RAMP", [(0.0, 0.0), (0.25, 1.0)], True) +
                    "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
     if series == "friction":
@@ -442,7 +444,7 @@ def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None):
                  "*STEP, NAME=DOUBLE PRESSURE\n" + dyn(S, True) + "*DLOAD, AMPLITUDE=DOUBLE, OP=NEW\n PRESSED, P%s, %s\n*END STEP\n" % (ft, p100) +
                  "*STEP, NAME=SLIDE OFF\n" + dyn(4.0) + "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, %s, %s, 5.0\n"
                  "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S%s, 100.0\n*END STEP\n" % (pd, pd, sd, sd, ft))
-    name = "sliding_%s_explicit_%s_%s.inp" % (series, constraint.lower(), typ.lower())
+    name = "sliding_%s_explicit_%s%s_%s.inp" % (series, constraint.lower(), "_surf" if surf else "", typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:
         f.write(text)
 
@@ -694,6 +696,8 @@ if __name__ == "__main__":
         sliding_explicit("radiation", "KINEMATIC")
         for series in ("friction", "conductance"):  # the axisymmetric rings
             sliding_explicit(series, "KINEMATIC", typ="CAX4T")
+        for series in ("friction", "conductance"):  # surface-to-surface, penalty
+            sliding_explicit(series, "PENALTY", surf=True)
         sys.exit(0)
     contact_jacobian()
     temperature_tables()

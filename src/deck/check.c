@@ -294,7 +294,7 @@ static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l)
 }
 
 /* What an explicit step cannot do: mass scaling outside one, *EQUATION (no constraint rows without a
- * matrix), surface-to-surface contact, element types without a positive lumped mass at every node (the reference node of generalized
+ * matrix), kinematic surface-to-surface contact, element types without a positive lumped mass at every node (the reference node of generalized
  * plane strain, the twist of CGAX; the element rows say so), and element sets of mass scaling defined. */
 static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
 {
@@ -312,10 +312,11 @@ static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
     CHECK(s->explicit_dynamics, s->bv_loc, "*BULK VISCOSITY belongs to an explicit step (*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT); step %s is not one", s->name);
   if (!s->explicit_dynamics) PetscFunctionReturn(PETSC_SUCCESS);
   if (m->nequation) CHECK(PETSC_FALSE, m->equations[0].loc, "*EQUATION is not supported in explicit steps (step %s at %s)", s->name, where);
-  /* surface-to-surface points have no penalty estimate in the stable increment yet */
+  /* the kinematic predictor-corrector works on secondary nodes: surface-to-surface pairs take the penalty */
   for (PetscInt k = 0; k < m->npair; k++) {
-    CHECK(m->pairs[k].type != TSL_CONTACT_SURFACE_TO_SURFACE, m->pairs[k].loc,
-          "*CONTACT PAIR, TYPE=SURFACE TO SURFACE is not supported in explicit steps yet (node to surface is; step %s at %s)", s->name, where);
+    CHECK(m->pairs[k].type != TSL_CONTACT_SURFACE_TO_SURFACE || !m->pairs[k].kinematic, m->pairs[k].loc,
+          "*CONTACT PAIR, TYPE=SURFACE TO SURFACE with MECHANICAL CONSTRAINT=KINEMATIC is not supported in explicit steps (PENALTY is, or a node-to-surface pair; step %s at %s)",
+          s->name, where);
   }
   for (PetscInt e = 0; e < m->nelem; e++) {
     const TslElementType *t = TslElementTypeGet(m->elem_type[e]);

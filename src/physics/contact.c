@@ -529,63 +529,6 @@ PetscReal TslProblemContactNodeArea(TslProblem p, const TslContactNode *cn)
   return A;
 }
 
-/* The normal penalty stiffness eps_n A of owned secondary node i (node-to-surface pairs; A its contact
- * area: tributary length times thickness, or times 2 pi r, or the tributary area in 3D; 0 for a kinematic
- * pair), its local node and the local nodes of its main face (-1 padded, nper of them; none while
- * unpaired). For the explicit stable increment. */
-PetscErrorCode TslProblemContactNodePenalty(TslProblem p, PetscInt i, PetscReal *k, PetscInt *lnode, PetscInt main[], PetscInt *nmain)
-{
-  const TslContactNode    *cn = &p->cnode[i];
-  const TslContactSurface *cs = &p->csurf[cn->pair];
-
-  PetscFunctionBeginUser;
-  *k     = cs->kinematic ? 0 : cs->law.eps_n * TslProblemContactNodeArea(p, cn); /* kinematic: no spring in the stable increment */
-  *lnode = cn->lnode;
-  *nmain = cn->seg >= 0 ? cs->nper : 0;
-  for (PetscInt a = 0; a < *nmain; a++) main[a] = cs->main_lnode[cs->nper * cn->seg + a];
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* The interface's share of the explicit thermal limit (forward Euler across a contact): at each owned
- * secondary node the interface conductance kA (the gap conductance of its last evaluation plus the gap
- * radiation's linearisation 4 C (theta - theta_Z)^3 at the hotter of the node and its main face's nodes, times
- * the node's area) couples the node's lumped capacity C_s to the smallest of its main face's C_m:
- * lambda = kA (1/C_s + 1/C_m), dt = 2 / lambda. Minimum over this rank's nodes and the node (global id, -1
- * without any). C: the lumped capacities in the temperature slots (local form, ghosts included). */
-PetscErrorCode TslProblemContactHeatIncrement(TslProblem p, const PetscScalar C[], PetscReal *dt, PetscInt *node)
-{
-  Vec                xl;
-  const PetscScalar *xa;
-
-  PetscFunctionBeginUser;
-  *dt = PETSC_MAX_REAL, *node = -1;
-  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
-  for (PetscInt i = 0; i < p->ncnode; i++) {
-    const TslContactNode    *cn = &p->cnode[i];
-    const TslContactSurface *cs = &p->csurf[cn->pair];
-    const PetscInt           th = cs->slot[p->dim], *mf = &cs->main_lnode[cs->nper * PetscMax(0, cn->seg)];
-    PetscReal                theta, k, kA, Cs, Cm, dc;
-
-    if (cn->seg < 0) continue;
-    theta = PetscRealPart(xa[cn->lnode * p->ndof + th]);
-    Cs = Cm = PetscRealPart(C[cn->lnode * p->ndof + th]);
-    for (PetscInt a = 0; a < cs->nper; a++)
-      if (mf[a] >= 0) theta = PetscMax(theta, PetscRealPart(xa[mf[a] * p->ndof + th])), Cm = PetscMin(Cm, PetscRealPart(C[mf[a] * p->ndof + th]));
-    k  = cn->out.conductance + 4 * cn->out.radiation_C * PetscPowRealInt(PetscMax(0, theta - cs->law.theta_zero), 3);
-    kA = k * TslProblemContactNodeArea(p, cn);
-    if (!(kA > 0) || !(Cs > 0) || !(Cm > 0)) continue;
-    dc = 2.0 / (kA * (1 / Cs + 1 / Cm));
-    if (dc < *dt) *dt = dc, *node = p->m->node_id[cn->lnode];
-  }
-  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscInt TslProblemContactNodeCount(TslProblem p)
-{
-  return p->ncnode;
-}
-
 /* A rejected increment: back to the state at its start. Pairing that changed during the attempt left the
  * matrix pattern of the attempt, so the next search rebuilds it. */
 PetscErrorCode TslProblemContactRollback(TslProblem p)

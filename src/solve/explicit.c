@@ -30,11 +30,13 @@ typedef struct {
   Vec             V, M, Mask;      /* half-step velocity, lumped mass / capacity, prescribed dofs */
   Vec             Fi, Fe, Fc, Fv;  /* force vectors of the current state (Fc NULL without contact, Fv without bulk viscosity) */
   Vec             Fk, W;           /* kinematic contact: the corrector's forces at the predicted state, a work vector (NULL without) */
+  Vec             Wc;              /* contact: the interface's nodal row sums for the stable increment (NULL without) */
   PetscInt        kin_passes, kin_total; /* -tsl_explicit_kinematic_passes (most corrector passes per increment); passes made in the step */
   PetscReal       kin_tol;         /* -tsl_explicit_kinematic_tol: passes stop when the pressure change is below this fraction of the largest */
   PetscReal       *dt_mech, *dt_heat, *scale, *eta, *eta2; /* [nelem] element stable increments, mass scale factors, b1 L_e / c_d, (b2 L_e / c_d)^2 */
   PetscReal       dt_stable, dt;   /* stable increment (with safety) and the increment used */
-  PetscReal       lim_mech, lim_heat, lim_cheat; /* limits: mechanical (elements and penalty), elements' thermal, interface heat exchange */
+  PetscReal       lim_mech, lim_heat;   /* limits of the elements: mechanical, thermal */
+  PetscReal       lim_cmech, lim_cheat; /* limits of the interface: normal penalty, heat exchange (PETSC_MAX_REAL: none) */
   PetscReal       safety;          /* -tsl_explicit_safety */
   PetscInt        progress;        /* -tsl_explicit_progress: increments between progress lines */
   PetscInt        history_rows;    /* -tsl_explicit_history: history rows per step besides the frames */
@@ -109,52 +111,13 @@ static void MassScaleFactors(Explicit *x, PetscBool variable_only)
 /* The stable increment: min over the elements of the mechanical 2/omega (with the mass scaled) and the
  * thermal 2/lambda, by one reduction (MINLOC over both, so the log names the controlling element of each);
  * times the safety factor and the step's SCALE FACTOR. */
-/* The contact penalty's limit at each owned secondary node: the spring eps_n A between the node (mass m_s)
- * and its main face (the lightest of the face's nodes, m_m; the node's own mass while unpaired) has
- * omega^2 = eps_n A (1/m_s + 1/m_m), so dt_c = 2 / omega. The masses are the lumped (scaled) ones of M,
- * ghosts included (the main face's nodes are ghosts here). */
-static PetscErrorCode ContactIncrement(Explicit *x, const PetscScalar *m, PetscReal *dt, int *id)
+/* The interface's limits (src/physics/contact_bound.c: Gershgorin bounds of the normal penalty on the lumped
+ * masses and of the heat exchange on the lumped capacities, every point on every node it touches). They
+ * change with the pairing, the pressure and the temperatures: recomputed at every pairing search. */
+static PetscErrorCode ContactIncrements(Explicit *x, PetscInt *node_mech, PetscInt *node_heat)
 {
   PetscFunctionBeginUser;
-  *dt = PETSC_MAX_REAL, *id = -1;
-  for (PetscInt i = 0; i < TslProblemContactNodeCount(x->p); i++) {
-    PetscReal k, ms, mm, dc;
-    PetscInt  s, mf[TSL_CONTACT3_MAX_FACE_NODES], nmain;
-    PetscCall(TslProblemContactNodePenalty(x->p, i, &k, &s, mf, &nmain));
-    ms = PetscRealPart(m[s * x->ndof]), mm = ms;
-    for (PetscInt a = 0; a < nmain; a++)
-      if (mf[a] >= 0) mm = PetscMin(mm, PetscRealPart(m[mf[a] * x->ndof]));
-    if (!(k > 0) || !(ms > 0) || !(mm > 0)) continue;
-    dc = 2.0 / PetscSqrtReal(k * (1 / ms + 1 / mm));
-    if (dc < *dt) *dt = dc, *id = (int)x->m->node_id[s];
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* The interface's share of the thermal limit (forward Euler across a contact; TslProblemContactHeatIncrement),
- * the minimum over the ranks (MINLOC). It changes with the pressure and the temperatures: recomputed at every
- * pairing search. */
-static PetscErrorCode ContactHeatIncrement(Explicit *x, PetscReal *dt, int *id)
-{
-  struct {
-    double v;
-    int    id;
-  } loc, g;
-  Vec                ml;
-  const PetscScalar *m;
-  PetscReal          dc;
-  PetscInt           node;
-
-  PetscFunctionBeginUser;
-  PetscCall(TslGhostUpdate(x->M, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(VecGhostGetLocalForm(x->M, &ml));
-  PetscCall(VecGetArrayRead(ml, &m));
-  PetscCall(TslProblemContactHeatIncrement(x->p, m, &dc, &node));
-  PetscCall(VecRestoreArrayRead(ml, &m));
-  PetscCall(VecGhostRestoreLocalForm(x->M, &ml));
-  loc.v = dc, loc.id = (int)node;
-  PetscCallMPI(MPI_Allreduce(&loc, &g, 1, MPI_DOUBLE_INT, MPI_MINLOC, x->comm));
-  *dt = g.v, *id = g.id;
+  PetscCall(TslProblemContactIncrements(x->p, x->M, x->Wc, &x->lim_cmech, node_mech, &x->lim_cheat, node_heat));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -163,7 +126,10 @@ static PetscErrorCode ContactHeatIncrement(Explicit *x, PetscReal *dt, int *id)
 static void CombineLimits(Explicit *x)
 {
   const PetscReal heat = x->lim_cheat < PETSC_MAX_REAL ? 1.0 / (1.0 / x->lim_heat + 1.0 / x->lim_cheat) : x->lim_heat;
-  x->dt_stable         = x->safety * x->step->dt_scale * PetscMin(x->lim_mech, heat);
+  /* a node is both in its elements and on the contact springs: their eigenvalues add at most
+   * (omega^2 <= omega_e^2 + omega_c^2), so 1/dt^2 = 1/dt_e^2 + 1/dt_c^2 bounds the combined limit */
+  const PetscReal mech = x->lim_cmech < PETSC_MAX_REAL ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(x->lim_mech) + 1.0 / PetscSqr(x->lim_cmech)) : x->lim_mech;
+  x->dt_stable         = x->safety * x->step->dt_scale * PetscMin(mech, heat);
 }
 
 /* The damping fraction xi of the highest element mode (Abaqus documentation, "Bulk viscosity":
@@ -183,8 +149,8 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
   struct {
     double v;
     int    id;
-  } loc[3] = {{PETSC_MAX_REAL, -1}, {PETSC_MAX_REAL, -1}, {PETSC_MAX_REAL, -1}}, g[3];
-  PetscReal dt_mech;
+  } loc[2] = {{PETSC_MAX_REAL, -1}, {PETSC_MAX_REAL, -1}}, g[2];
+  PetscInt node_mech = -1, node_heat = -1;
 
   PetscFunctionBeginUser;
   for (PetscInt e = 0; e < x->m->nelem; e++) {
@@ -197,41 +163,24 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
     if (dm < loc[0].v) loc[0].v = dm, loc[0].id = (int)x->m->elem_id[e];
     if (x->dt_heat[e] < loc[1].v) loc[1].v = x->dt_heat[e], loc[1].id = (int)x->m->elem_id[e];
   }
-  if (x->m->npair) {
-    Vec                ml;
-    const PetscScalar *m;
-    PetscReal          dc;
-    PetscCall(TslGhostUpdate(x->M, INSERT_VALUES, SCATTER_FORWARD));
-    PetscCall(VecGhostGetLocalForm(x->M, &ml));
-    PetscCall(VecGetArrayRead(ml, &m));
-    PetscCall(ContactIncrement(x, m, &dc, &loc[2].id));
-    loc[2].v = dc;
-    PetscCall(VecRestoreArrayRead(ml, &m));
-    PetscCall(VecGhostRestoreLocalForm(x->M, &ml));
-  }
-  PetscCallMPI(MPI_Allreduce(loc, g, 3, MPI_DOUBLE_INT, MPI_MINLOC, x->comm));
-  /* a secondary node is both in its elements and on the contact spring: their eigenvalues add at most
-   * (omega^2 <= omega_e^2 + omega_c^2), so 1/dt^2 = 1/dt_e^2 + 1/dt_c^2 bounds the combined limit */
-  dt_mech      = g[2].id >= 0 ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(g[0].v) + 1.0 / PetscSqr(g[2].v)) : g[0].v;
-  x->lim_mech  = dt_mech;
+  PetscCallMPI(MPI_Allreduce(loc, g, 2, MPI_DOUBLE_INT, MPI_MINLOC, x->comm));
+  x->lim_mech  = g[0].v;
   x->lim_heat  = g[1].v;
-  x->lim_cheat = PETSC_MAX_REAL;
-  if (x->m->npair) {
-    int id;
-    PetscCall(ContactHeatIncrement(x, &x->lim_cheat, &id));
-    if (print && id >= 0)
-      PetscCall(PetscPrintf(x->comm, "  contact heat exchange (k A on the lumped capacities) %.4e at secondary node %d; with the elements' %.4e: thermal %.4e\n",
-                            (double)x->lim_cheat, id, (double)x->lim_heat, 1.0 / (1.0 / (double)x->lim_heat + 1.0 / (double)x->lim_cheat)));
-  }
+  x->lim_cmech = x->lim_cheat = PETSC_MAX_REAL;
+  if (x->m->npair) PetscCall(ContactIncrements(x, &node_mech, &node_heat));
   CombineLimits(x);
   if (print) {
+    const PetscReal mech = node_mech >= 0 ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(x->lim_mech) + 1.0 / PetscSqr(x->lim_cmech)) : x->lim_mech;
     PetscCall(PetscPrintf(x->comm, "  stable increment %.4e (safety %g x scale factor %g): mechanical %.4e at element %d%s, thermal %.4e at element %d; %s controls\n",
                           (double)x->dt_stable, (double)x->safety, (double)x->step->dt_scale, g[0].v, g[0].id,
                           x->step->bv_linear > 0 ? " (with the linear bulk viscosity's damping)" : "", g[1].v, g[1].id,
-                          dt_mech * x->safety * x->step->dt_scale <= x->dt_stable * (1 + 1e-12) ? "the mechanical limit" : "the thermal (diffusion) limit"));
-    if (g[2].id >= 0)
-      PetscCall(PetscPrintf(x->comm, "  contact penalty (eps_n A on the lumped masses) %.4e at secondary node %d; with the elements' %.4e: mechanical %.4e\n", g[2].v,
-                            g[2].id, g[0].v, (double)dt_mech));
+                          mech * x->safety * x->step->dt_scale <= x->dt_stable * (1 + 1e-12) ? "the mechanical limit" : "the thermal (diffusion) limit"));
+    if (node_mech >= 0)
+      PetscCall(PetscPrintf(x->comm, "  contact penalty (eps_n A on the lumped masses, nodal bound) %.4e at node %" PetscInt_FMT "; with the elements' %.4e: mechanical %.4e\n",
+                            (double)x->lim_cmech, node_mech, (double)x->lim_mech, (double)mech));
+    if (node_heat >= 0)
+      PetscCall(PetscPrintf(x->comm, "  contact heat exchange (k A on the lumped capacities, nodal bound) %.4e at node %" PetscInt_FMT "; with the elements' %.4e: thermal %.4e\n",
+                            (double)x->lim_cheat, node_heat, (double)x->lim_heat, 1.0 / (1.0 / (double)x->lim_heat + 1.0 / (double)x->lim_cheat)));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -568,6 +517,7 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fv));
   PetscCall(VecDestroy(&x->Fk));
   PetscCall(VecDestroy(&x->W));
+  PetscCall(VecDestroy(&x->Wc));
   PetscCall(PetscFree5(x->dt_mech, x->dt_heat, x->scale, x->eta, x->eta2));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -629,6 +579,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   if (x.m->npair) {
     PetscBool kinematic;
     PetscCall(VecDuplicate(x.X, &x.Fc));
+    PetscCall(VecDuplicate(x.X, &x.Wc));
     PetscCall(TslProblemContactSetKinematic(x.p, PETSC_TRUE, &kinematic));
     if (kinematic) {
       PetscCall(VecDuplicate(x.X, &x.Fk));
@@ -700,9 +651,9 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
         break;
       }
     PetscCall(Forces(&x, h, inc));
-    if (x.m->npair && inc % x.search_every == 0) { /* the interface's conductance follows pressure and temperature */
-      int id;
-      PetscCall(ContactHeatIncrement(&x, &x.lim_cheat, &id));
+    if (x.m->npair && inc % x.search_every == 0) { /* the pairing, and the conductance following pressure and temperature */
+      PetscInt node_mech, node_heat;
+      PetscCall(ContactIncrements(&x, &node_mech, &node_heat));
       CombineLimits(&x);
       if (x.step->dt_user <= 0) x.dt = x.dt_stable;
     }

@@ -94,7 +94,7 @@ tsl_deck_bad(explicit_equation explicit_equation.inp "error: explicit_equation.i
 tsl_deck_bad(mass_scaling_implicit mass_scaling_implicit.inp "error: mass_scaling_implicit.inp:21: mass scaling belongs to an explicit step (*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT); step Step-1 is not one")
 tsl_deck_bad(explicit_output_interval_implicit explicit_output_interval_implicit.inp "error: explicit_output_interval_implicit.inp:21: NUMBER INTERVAL= and TIME INTERVAL= belong to the *OUTPUT of an explicit step")
 # Contact in explicit steps: node-to-surface (PENALTY or KINEMATIC) only for now
-tsl_deck_bad(explicit_surface_to_surface explicit_surface_to_surface.inp "error: explicit_surface_to_surface.inp:34: *CONTACT PAIR, TYPE=SURFACE TO SURFACE is not supported in explicit steps yet")
+tsl_deck_bad(explicit_surface_to_surface explicit_surface_to_surface.inp "error: explicit_surface_to_surface.inp:34: *CONTACT PAIR, TYPE=SURFACE TO SURFACE with MECHANICAL CONSTRAINT=KINEMATIC is not supported in explicit steps")
 tsl_deck_bad(contact_pair_constraint contact_pair_constraint.inp "error: contact_pair_constraint.inp:33: *CONTACT PAIR, MECHANICAL CONSTRAINT=LAGRANGE is not supported (PENALTY or KINEMATIC)")
 # *INITIAL CONDITIONS, TYPE=VELOCITY: the dof must be a displacement, the node must belong to an element, and the
 # line needs all three fields
