@@ -6,16 +6,37 @@
  * (consistent, unsymmetric) tangent at a small fixed cost (TSL_DUAL_N flops per operation), and the unit
  * tests still compare it against finite differences.
  *
- * Slots 0..TSL_CONTACT_MAX_DOF-1 are the element unknowns, slot TSL_DUAL_XI is the projection parameter xi
- * (used to get dF/dxi in the projection Newton iteration and the implicit derivative dxi/du), and slot
- * TSL_DUAL_ETA the second surface parameter of the 3D faces (unused, always zero, in 2D). Each slot is
- * computed on its own, so the extra slot leaves every 2D derivative unchanged to the last bit. */
+ * Slot TSL_DUAL_XI (0) is the projection parameter xi (used to get dF/dxi in the projection Newton
+ * iteration and the implicit derivative dxi/du), slot TSL_DUAL_ETA (1) the second surface parameter of the
+ * 3D faces (unused, always zero, in 2D), and slots TSL_DUAL_DOF + j the element unknowns j. Each slot is
+ * computed on its own, so a slot more or less leaves every other derivative unchanged to the last bit.
+ *
+ * The kernels are compiled twice: as they are, for the tangent, and for values alone with the two surface
+ * parameters' slots only (contact/values/: TSL_DUAL_VALUES, TSL_DUAL_N = 2), so that an evaluation without a
+ * tangent (explicit steps, residual evaluations, the search's projections) neither computes nor copies the
+ * unknowns' derivatives; the same operations on the values give the same bits. Seeds of slots beyond
+ * TSL_DUAL_N are ignored. */
 #pragma once
 #include <thermoslide/contact.h>
 
-#define TSL_DUAL_XI  TSL_CONTACT_MAX_DOF
-#define TSL_DUAL_ETA (TSL_CONTACT_MAX_DOF + 1)
-#define TSL_DUAL_N   (TSL_CONTACT_MAX_DOF + 2)
+#define TSL_DUAL_XI  0
+#define TSL_DUAL_ETA 1
+#define TSL_DUAL_DOF 2 /* slot of the element's unknown 0 */
+#if defined(TSL_DUAL_VALUES)
+  #define TSL_DUAL_N TSL_DUAL_DOF
+#else
+  #define TSL_DUAL_N (TSL_DUAL_DOF + TSL_CONTACT_MAX_DOF)
+#endif
+
+#if !defined(TSL_DUAL_VALUES)
+/* The values' copies (contact/values/values.h) that the public entries hand a call without a tangent to. */
+PetscErrorCode TslContactElement_Values(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
+PetscErrorCode TslContactElement3_Values(const TslContactLaw *law, const TslContactInput3 *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
+PetscErrorCode TslContactProject_Values(const TslContactInput *in, PetscReal *xi, PetscReal *g, PetscReal n[]);
+PetscErrorCode TslContactSurfacePoint_Values(const TslContactInput *in, PetscReal xi, PetscReal x[], PetscReal n[]);
+PetscErrorCode TslContactFace3Evaluate_Values(PetscInt kind, const PetscReal x[], const PetscReal xi[], PetscReal p[], PetscReal n[]);
+PetscErrorCode TslContactFace3Project_Values(PetscInt kind, const PetscReal x[], const PetscReal p[], PetscReal xi[]);
+#endif
 
 typedef struct {
   PetscReal v;
@@ -34,7 +55,7 @@ static inline TslDual DConst(PetscReal v)
 static inline TslDual DVar(PetscReal v, PetscInt slot)
 {
   TslDual r = DConst(v);
-  if (slot >= 0) r.d[slot] = 1;
+  if (slot >= 0 && slot < TSL_DUAL_N) r.d[slot] = 1;
   return r;
 }
 

@@ -220,6 +220,10 @@ PetscErrorCode TslContactFace3Evaluate(PetscInt kind, const PetscReal x[], const
   TslDual                xd[TSL_CONTACT3_MAX_FACE_NODES][3], pd[3], a[2][3], c[3], len, xv[2];
 
   PetscFunctionBeginUser;
+#if !defined(TSL_DUAL_VALUES)
+  PetscCall(TslContactFace3Evaluate_Values(kind, x, xi, p, n)); /* values alone (contact/values/) */
+  PetscFunctionReturn(PETSC_SUCCESS);
+#endif
   PetscCall(FaceGet(kind, &f));
   FaceNodes(f, x, xd);
   xv[0] = DConst(xi[0]);
@@ -262,6 +266,10 @@ PetscErrorCode TslContactFace3Project(PetscInt kind, const PetscReal x[], const 
   PetscBool    frozen;
 
   PetscFunctionBeginUser;
+#if !defined(TSL_DUAL_VALUES)
+  PetscCall(TslContactFace3Project_Values(kind, x, p, xi)); /* values alone (contact/values/) */
+  PetscFunctionReturn(PETSC_SUCCESS);
+#endif
   PetscCall(FaceGet(kind, &cp.f));
   FaceNodes(cp.f, x, cp.x);
   for (PetscInt d = 0; d < 3; d++) {

@@ -28,10 +28,10 @@ static PetscErrorCode GeomSetUp(const TslContactInput3 *in, PetscBool seed, Geom
              (double)in->smoothing);
   geo->nper = geo->face->geom->nnode;
   geo->s    = in->smoothing;
-  for (PetscInt d = 0; d < 3; d++) geo->xs[d] = DVar((in->x[0][d] - O[d]) + in->u[0][d], seed ? d : -1);
+  for (PetscInt d = 0; d < 3; d++) geo->xs[d] = DVar((in->x[0][d] - O[d]) + in->u[0][d], seed ? TSL_DUAL_DOF + d : -1);
   for (PetscInt a = 0; a < geo->nper; a++)
     for (PetscInt d = 0; d < 3; d++) {
-      geo->xm[a][d] = DVar((in->x[1 + a][d] - O[d]) + in->u[1 + a][d], seed ? NU * (1 + a) + d : -1);
+      geo->xm[a][d] = DVar((in->x[1 + a][d] - O[d]) + in->u[1 + a][d], seed ? TSL_DUAL_DOF + NU * (1 + a) + d : -1);
       geo->nn[a][d] = in->nodal_normal[a][d];
       xc[3 * a + d] = geo->xm[a][d].v;
     }
@@ -120,7 +120,7 @@ static PetscErrorCode ProjectDual(Geom3 *geo, const PetscReal start[2], TslDual 
       J[i][0] = F[i].d[TSL_DUAL_XI];
       J[i][1] = F[i].d[TSL_DUAL_ETA];
     }
-    for (PetscInt j = 0; j < TSL_CONTACT_MAX_DOF; j++) {
+    for (PetscInt j = TSL_DUAL_DOF; j < TSL_DUAL_N; j++) {
       PetscReal b[2] = {-F[0].d[j], -F[1].d[j]}, x[2];
 
       PetscCheck(TslContactSolve2(J, b, x), PETSC_COMM_SELF, PETSC_ERR_CONV_FAILED, "3D contact projection: singular derivative at the projection");
@@ -199,6 +199,12 @@ PetscErrorCode TslContactElement3(const TslContactLaw *law, const TslContactInpu
 
   PetscFunctionBeginUser;
   PetscCheck(in->area > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Tributary area must be positive");
+#if !defined(TSL_DUAL_VALUES)
+  if (!K) { /* values alone: the copy without the unknowns' derivatives (contact/values/) */
+    PetscCall(TslContactElement3_Values(law, in, R, NULL, out));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+#endif
   PetscCall(GeomSetUp(in, PETSC_TRUE, &geo));
   nnode = 1 + geo.nper;
   ndof  = NU * nnode;
@@ -234,9 +240,9 @@ PetscErrorCode TslContactElement3(const TslContactLaw *law, const TslContactInpu
   for (PetscInt d = 0; d < 3; d++) traction[d] = DSub(DMul(pN, n[d]), DAdd(DMul(fs.t[0], t[0][d]), DMul(fs.t[1], t[1][d])));
 
   /* thermal laws */
-  theta_s = DVar(in->u[0][3], 3);
+  theta_s = DVar(in->u[0][3], TSL_DUAL_DOF + 3);
   theta_m = DConst(0);
-  for (PetscInt b = 0; b < geo.nper; b++) theta_m = DAdd(theta_m, DMul(N[b], DVar(in->u[1 + b][3], NU * (1 + b) + 3)));
+  for (PetscInt b = 0; b < geo.nper; b++) theta_m = DAdd(theta_m, DMul(N[b], DVar(in->u[1 + b][3], TSL_DUAL_DOF + NU * (1 + b) + 3)));
   PetscCall(TslContactHeatFlux(law, pN, closed, g, theta_s, theta_m, &k, &C, &q));
   heat = DScale(law->eta, fs.D);
 

@@ -162,7 +162,7 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
     /* implicit function theorem at F(xi, u) = 0: dxi/du = -F_u / F_xi */
     F   = ProjectionFunction(geo, DVar(x, TSL_DUAL_XI));
     *xi = DConst(x);
-    for (PetscInt i = 0; i < TSL_DUAL_XI; i++) xi->d[i] = -F.d[i] / F.d[TSL_DUAL_XI];
+    for (PetscInt i = TSL_DUAL_DOF; i < TSL_DUAL_N; i++) xi->d[i] = -F.d[i] / F.d[TSL_DUAL_XI];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -173,7 +173,7 @@ PetscErrorCode TslContactProjectDual(const TslContactGeom *geo, TslDual *xi, Pet
  * a small length unit) gives the same contact state as the same model at the origin. */
 static void SetPoint(const PetscReal X[], const PetscReal U[], const PetscReal O[], PetscInt node, PetscInt nu, PetscBool seed, TslDual x[2])
 {
-  for (PetscInt d = 0; d < 2; d++) x[d] = DVar((X[d] - O[d]) + U[d], seed ? nu * node + d : -1);
+  for (PetscInt d = 0; d < 2; d++) x[d] = DVar((X[d] - O[d]) + U[d], seed ? TSL_DUAL_DOF + nu * node + d : -1);
 }
 
 PetscErrorCode TslContactGeomSetUp(const TslContactInput *in, PetscBool seed, TslContactGeom *geo, PetscInt *nnode)
@@ -228,6 +228,10 @@ PetscErrorCode TslContactProject(const TslContactInput *in, PetscReal *xi, Petsc
   PetscReal      raw;
 
   PetscFunctionBeginUser;
+#if !defined(TSL_DUAL_VALUES)
+  PetscCall(TslContactProject_Values(in, xi, g, n)); /* values alone (contact/values/) */
+  PetscFunctionReturn(PETSC_SUCCESS);
+#endif
   PetscCall(TslContactGeomSetUp(in, PETSC_FALSE, &geo, NULL));
   PetscCall(TslContactProjectDual(&geo, &x, &raw));
   TslContactSurfaceDual(&geo, x, xm, nn, tau);
@@ -247,6 +251,10 @@ PetscErrorCode TslContactSurfacePoint(const TslContactInput *in, PetscReal xi, P
   TslDual        xm[2], nn[2], tau[2];
 
   PetscFunctionBeginUser;
+#if !defined(TSL_DUAL_VALUES)
+  PetscCall(TslContactSurfacePoint_Values(in, xi, x, n)); /* values alone (contact/values/) */
+  PetscFunctionReturn(PETSC_SUCCESS);
+#endif
   PetscCall(TslContactGeomSetUp(in, PETSC_FALSE, &geo, NULL));
   TslContactSurfaceDual(&geo, DConst(xi), xm, nn, tau);
   for (PetscInt d = 0; d < 2; d++) {

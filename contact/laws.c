@@ -293,9 +293,13 @@ void TslContactDualExtract(PetscInt ndof, const TslDual Rd[], PetscReal R[], Pet
 {
   if (R)
     for (PetscInt i = 0; i < ndof; i++) R[i] = Rd[i].v;
+#if !defined(TSL_DUAL_VALUES) /* the values' copy has no derivatives to give */
   if (K)
     for (PetscInt i = 0; i < ndof; i++)
-      for (PetscInt j = 0; j < ndof; j++) K[i * ndof + j] = Rd[i].d[j];
+      for (PetscInt j = 0; j < ndof; j++) K[i * ndof + j] = Rd[i].d[TSL_DUAL_DOF + j];
+#else
+  (void)K;
+#endif
 }
 
 /* Contact area of the secondary node: its tributary length times the thickness (plane), or times 2 pi r
@@ -318,9 +322,9 @@ static TslDual RelativeTwist(const TslContactInput *in, PetscInt nper, const Tsl
   *Rm = DConst(0);
   for (PetscInt a = 0; a < nper; a++) {
     *Rm   = DAdd(*Rm, DScale(in->x[1 + a][0], N[a]));
-    phi_m = DAdd(phi_m, DMul(N[a], DVar(in->u[1 + a][3], seed ? nu * (1 + a) + 3 : -1)));
+    phi_m = DAdd(phi_m, DMul(N[a], DVar(in->u[1 + a][3], seed ? TSL_DUAL_DOF + nu * (1 + a) + 3 : -1)));
   }
-  return DSub(DScale(in->x[0][0], DVar(in->u[0][3], seed ? 3 : -1)), DMul(*Rm, phi_m));
+  return DSub(DScale(in->x[0][0], DVar(in->u[0][3], seed ? TSL_DUAL_DOF + 3 : -1)), DMul(*Rm, phi_m));
 }
 
 PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out)
@@ -329,7 +333,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   PetscInt           nnode, ndof, nper, nu;
   PetscReal          xi_raw, area, Nv[TSL_CONTACT_MAX_FACE_NODES], dNv[TSL_CONTACT_MAX_FACE_NODES], d2Nv[TSL_CONTACT_MAX_FACE_NODES];
   PetscReal          anchor = in->hist.xi_anchor, w_anchor = in->hist.w_anchor;
-  TslDual            xi, n[2], tau[2], r[2], xm[2], t[2], g, L, pN, traction[2], k, C, q, theta_s, theta_m, heat, w, Rm = DConst(0);
+  TslDual            xi, n[2], tau[2], r[2], xm[2], t[2], g, L, pN, traction[2], k, C, q, theta_s, theta_m, heat, w, Rm;
   TslDual            N[TSL_CONTACT_MAX_FACE_NODES], Rd[TSL_CONTACT_MAX_DOF];
   TslContactSlip     sl;
   TslContactFriction fs;
@@ -338,6 +342,13 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   PetscFunctionBeginUser;
   PetscCheck(in->length > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Tributary length must be positive");
   PetscCheck((PetscInt)in->kin >= 0 && in->kin < TSL_NKIN, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown kinematics %d", (int)in->kin);
+#if !defined(TSL_DUAL_VALUES)
+  if (!K) { /* values alone: the copy without the unknowns' derivatives (contact/values/) */
+    PetscCall(TslContactElement_Values(law, in, R, NULL, out));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+#endif
+  Rm = DConst(0);
   PetscCall(TslContactGeomSetUp(in, PETSC_TRUE, &geo, &nnode));
   nu   = geo.nu;
   ndof = nu * nnode;
@@ -377,9 +388,9 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   for (PetscInt d = 0; d < 2; d++) traction[d] = DSub(DMul(pN, n[d]), DMul(fs.t[0], tau[d]));
 
   /* thermal laws */
-  theta_s = DVar(in->u[0][2], 2);
+  theta_s = DVar(in->u[0][2], TSL_DUAL_DOF + 2);
   theta_m = DConst(0);
-  for (PetscInt a = 0; a < nper; a++) theta_m = DAdd(theta_m, DMul(N[a], DVar(in->u[1 + a][2], nu * (1 + a) + 2)));
+  for (PetscInt a = 0; a < nper; a++) theta_m = DAdd(theta_m, DMul(N[a], DVar(in->u[1 + a][2], TSL_DUAL_DOF + nu * (1 + a) + 2)));
   PetscCall(TslContactHeatFlux(law, pN, closed, g, theta_s, theta_m, &k, &C, &q));
   heat = DScale(law->eta, fs.D);
 

@@ -1,0 +1,3 @@
+/* kinematics.c for values alone (values.h). */
+#include "values.h"
+#include "../kinematics.c"
