@@ -520,14 +520,17 @@ def faces_on(nodes, elems, shape, y):
     return out
 
 
-def sliding_blocks_3d(series, typ, outdir=None, surf=False):
+def sliding_blocks_3d(series, typ, outdir=None, surf=False, explicit=None):
     """The spec's three series on 3D blocks (see above): the planar decks' loads and steps on faces of
     width 1 (small block) and 1.2 (large block), sliding along x, pressing along -y, z held on the small
     block's top face. Volume 6 x 1.25 x 1.2 + 2 x 0.25 x 1 = 9.5 (rho c = 1): the friction series ends at
-    60 / 9.5. surf: TYPE=SURFACE TO SURFACE (job name *_surf_*)."""
+    60 / 9.5. surf: TYPE=SURFACE TO SURFACE (job name *_surf_*). explicit: PENALTY or KINEMATIC, the
+    friction series as explicit steps the way sliding_explicit writes the planar ones (2 cells across the
+    small block; its top face moved along x and held in z, the force 200 as a pressure of 100 on it; job
+    name sliding_friction_explicit_<constraint>_<type>)."""
     typ = typ.upper()
     bnodes, belems, shape = mesh3d(12, 2, 1, 0.0, 6.0, 0.0, 1.25, -0.1, 1.1, typ, mirror=3.0)
-    tnodes, telems, _ = mesh3d(4, 6, 1, 2.0, 4.0, 1.25, 1.5, 0.0, 1.0, typ, 1000, 1000, mirror=3.0)
+    tnodes, telems, _ = mesh3d(4, 2 if explicit else 6, 1, 2.0, 4.0, 1.25, 1.5, 0.0, 1.0, typ, 1000, 1000, mirror=3.0)
     main = faces_on(bnodes, belems, shape, 1.25)
     sec = faces_on(tnodes, telems, shape, 1.25)
     pressed = faces_on(tnodes, telems, shape, 1.5)
@@ -550,6 +553,24 @@ def sliding_blocks_3d(series, typ, outdir=None, surf=False):
             "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
             nset("BASE", base) + nset("TOPFACE", topface) + surface("MAIN", main) + surface("SECONDARY", sec) + MAT +
             "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n")
+    if explicit:
+        assert series == "friction" and not surf
+        T = EXPLICIT_SLIDE
+        slide = [(0, 0), (T / 3, 1.5), (2 * T / 3, -1.5), (T, 0)]
+        mass = "*FIXED MASS SCALING, DT=%g, TYPE=BELOW MIN\n" % EXPLICIT_TARGET
+        dyn = lambda period, scaled=False: "*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , %g\n" % period + (mass if scaled else "")
+        text = text.replace("%s series\n" % series, "%s series, explicit, %s contact\n" % (series, explicit.lower()), 1)
+        text += (series_interaction(series).replace("SMOOTH=0.05", "SMOOTH=0.05, MECHANICAL CONSTRAINT=%s" % explicit)
+                 .replace("*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n", ""))  # the smooth legs below
+        text += (amplitude("SLIDE", slide, True) + amplitude("RAMP", [(0.0, 0.0), (0.25, 1.0)], True) +
+                 "*STEP, NAME=PRESS\n" + dyn(0.25) + "*BOUNDARY\n BASE, 1, 3\n TOPFACE, 1, 1\n TOPFACE, 3, 3\n" +
+                 "*DLOAD, AMPLITUDE=RAMP\n" + load_lines(pressed, "P", "100.0") + "*END STEP\n" +
+                 "*STEP, NAME=SLIDE\n" + dyn(T) + "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, 1, 1, 1.0\n*END STEP\n" +
+                 "*STEP, NAME=EQUILIBRATE\n" + dyn(EXPLICIT_EQUILIBRATE, True) + "*END STEP\n")
+        name = "sliding_friction_explicit_%s_%s.inp" % (explicit.lower(), typ.lower())
+        with open(os.path.join(outdir or HERE, name), "w") as f:
+            f.write(text)
+        return
     text += series_interaction(series, surf=surf)
     if series == "friction":
         ref = topface[0]
@@ -698,6 +719,11 @@ if __name__ == "__main__":
             sliding_explicit(series, "KINEMATIC", typ="CAX4T")
         for series in ("friction", "conductance"):  # surface-to-surface, penalty
             sliding_explicit(series, "PENALTY", surf=True)
+        # the 3D friction series (the spec's coupledtemplgslcont_f_c3d8t and _fpc3d8rt; its _f_c3d10mt, written
+        # by sliding_blocks_3d("friction", "C3D10MT", explicit="KINEMATIC"), does not close its energy
+        # balance yet: docs/explicit.md)
+        sliding_blocks_3d("friction", "C3D8T", explicit="KINEMATIC")
+        sliding_blocks_3d("friction", "C3D8RT", explicit="PENALTY")
         sys.exit(0)
     contact_jacobian()
     temperature_tables()

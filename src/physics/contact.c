@@ -517,6 +517,16 @@ PetscErrorCode TslProblemContactExplicitIncrement(TslProblem p, PetscBool search
   if (g || search) {
     PetscCall(TslProblemContactSearch(p, &repattern));
     *nrepair = g;
+    if (p->s2s) {
+      /* a surface-to-surface face cut anew has new points without outputs until the next force evaluation,
+       * and a frame may be written before that: evaluate them at this state (values only, nothing inserted;
+       * the history was carried over by the search) so that CPRESS, HFLA, ... are those of the state */
+      Vec                xl;
+      const PetscScalar *xa;
+      PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+      PetscCall(TslProblemContactS2SAssemble(p, ASM_RAW, xa, NULL, NULL, NULL));
+      PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+    }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
