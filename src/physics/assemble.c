@@ -54,22 +54,39 @@ PetscErrorCode TslProblemElementLoop(TslProblem p, const PetscScalar *xa, const 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Matrix entries go through here. In the pattern pass A is the node-level preallocator (one row and
- * column per node, TslProblemPreallocate): the dofs become their nodes, so a node pair is hashed once
- * rather than ndof^2 times; the matrix gets whole node blocks. */
+/* Matrix entries go through here. In the pattern pass the dofs become their nodes, so a node pair is
+ * recorded once rather than ndof^2 times (the matrix gets whole node blocks): rows of owned nodes are
+ * appended to p->pattern_pairs as one record per call, without any search (PatternRows sorts them out once
+ * at the end); rows of ghost nodes go to A, the node-level MATPREALLOCATOR, which sends them to their
+ * owners. Negative indices are ignored, as MatSetValues does. */
 static PetscErrorCode MatAdd(TslProblem p, AsmMode mode, Mat A, PetscInt nrow, const PetscInt rows[], PetscInt ncol, const PetscInt cols[],
                              const PetscScalar v[])
 {
   PetscFunctionBeginUser;
   if (mode == ASM_PATTERN) {
-    PetscInt    nr = 0, nc = 0, r[TSL_MAX_ELEM_DOF], c[TSL_MAX_ELEM_DOF];
+    PetscInt    nr = 0, ng = 0, nc = 0, r[TSL_MAX_ELEM_DOF], g[TSL_MAX_ELEM_DOF], c[TSL_MAX_ELEM_DOF], *rec;
     PetscScalar zero[TSL_MAX_ELEM_DOF] = {0};
     PetscCheck(nrow <= TSL_MAX_ELEM_DOF && ncol <= TSL_MAX_ELEM_DOF, PETSC_COMM_SELF, PETSC_ERR_PLIB, "pattern block too large");
-    for (PetscInt i = 0; i < nrow; i++)
-      if (!nr || r[nr - 1] != rows[i] / p->ndof) r[nr++] = rows[i] / p->ndof;
+    for (PetscInt i = 0; i < nrow; i++) {
+      const PetscInt n = rows[i] / p->ndof;
+      if (rows[i] < 0) continue;
+      if (n < p->nown) {
+        if (!nr || r[nr - 1] != n) r[nr++] = n;
+      } else if (!ng || g[ng - 1] != n) g[ng++] = n;
+    }
     for (PetscInt j = 0; j < ncol; j++)
-      if (!nc || c[nc - 1] != cols[j] / p->ndof) c[nc++] = cols[j] / p->ndof;
-    for (PetscInt i = 0; i < nr; i++) PetscCall(MatSetValuesLocal(A, 1, &r[i], nc, c, zero, ADD_VALUES));
+      if (cols[j] >= 0 && (!nc || c[nc - 1] != cols[j] / p->ndof)) c[nc++] = cols[j] / p->ndof;
+    for (PetscInt i = 0; i < ng; i++) PetscCall(MatSetValuesLocal(A, 1, &g[i], nc, c, zero, ADD_VALUES));
+    if (!nr || !nc) PetscFunctionReturn(PETSC_SUCCESS);
+    if (p->pattern_pairs.n + 2 + nr + nc > p->pattern_pairs.cap) {
+      p->pattern_pairs.cap = 2 * p->pattern_pairs.cap + 2 + nr + nc;
+      PetscCall(PetscRealloc(sizeof(PetscInt) * (size_t)p->pattern_pairs.cap, &p->pattern_pairs.rec));
+    }
+    rec    = p->pattern_pairs.rec + p->pattern_pairs.n;
+    rec[0] = nr, rec[1] = nc;
+    PetscCall(PetscArraycpy(rec + 2, r, nr));
+    PetscCall(PetscArraycpy(rec + 2 + nr, c, nc));
+    p->pattern_pairs.n += 2 + nr + nc;
   } else PetscCall(MatSetValuesLocal(A, nrow, rows, ncol, cols, v, ADD_VALUES));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -594,16 +611,85 @@ static PetscErrorCode BuildDirectMap(TslProblem p, Mat J)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The node graph of the owned rows from the pattern pass: the records of p->pattern_pairs (freed here)
+ * counted and copied into rows (a counting sort: two sweeps, no search), each row's duplicates dropped with
+ * a marker over the local nodes, its columns turned into global node numbers and sorted, and the rows that
+ * other ranks sent through the preallocator (G, global rows rs.. of this rank's nodes) merged in. Linear in
+ * the number of pairs; the hash of the MATPREALLOCATOR it replaces for the owned rows cost a cache miss per
+ * pair and grew faster than the mesh. ia[nown + 1], ja: CSR to free. */
+static PetscErrorCode PatternRows(TslProblem p, Mat G, PetscInt rs, PetscInt **ia, PetscInt **ja)
+{
+  const PetscInt  nown = p->nown, *gnum = p->m->node_gnum, *rec = p->pattern_pairs.rec, nrec = p->pattern_pairs.n;
+  PetscInt       *start, *pos, *col, *mark, w = 0, lo = 0, gz = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscCalloc1(nown + 1, &start));
+  for (PetscInt k = 0; k < nrec; k += 2 + rec[k] + rec[k + 1])
+    for (PetscInt i = 0; i < rec[k]; i++) start[rec[k + 2 + i] + 1] += rec[k + 1];
+  for (PetscInt r = 0; r < nown; r++) start[r + 1] += start[r];
+  PetscCall(PetscMalloc1(start[nown], &col));
+  PetscCall(PetscMalloc1(nown, &pos));
+  PetscCall(PetscArraycpy(pos, start, nown));
+  for (PetscInt k = 0; k < nrec; k += 2 + rec[k] + rec[k + 1])
+    for (PetscInt i = 0; i < rec[k]; i++) {
+      const PetscInt r = rec[k + 2 + i];
+      PetscCall(PetscArraycpy(&col[pos[r]], &rec[k + 2 + rec[k]], rec[k + 1]));
+      pos[r] += rec[k + 1];
+    }
+  PetscCall(PetscFree(pos));
+  PetscCall(PetscFree(p->pattern_pairs.rec));
+  p->pattern_pairs.n = p->pattern_pairs.cap = 0;
+  /* in place: the unique columns of row r end before its first duplicate is read */
+  PetscCall(PetscMalloc1(p->nn, &mark));
+  for (PetscInt l = 0; l < p->nn; l++) mark[l] = -1;
+  for (PetscInt r = 0; r < nown; r++) {
+    const PetscInt hi = start[r + 1], first = w;
+    PetscInt        nc;
+    for (PetscInt k = lo; k < hi; k++) {
+      const PetscInt l = col[k];
+      if (mark[l] != r) mark[l] = r, col[w++] = gnum[l];
+    }
+    PetscCall(PetscSortInt(w - first, &col[first]));
+    start[r] = first, lo = hi;
+    PetscCall(MatGetRow(G, rs + r, &nc, NULL, NULL));
+    gz += nc;
+    PetscCall(MatRestoreRow(G, rs + r, &nc, NULL, NULL));
+  }
+  start[nown] = w;
+  PetscCall(PetscFree(mark));
+  if (gz) { /* rows with contributions from other ranks: merged into a fresh array */
+    PetscInt *merged, *mstart;
+    PetscCall(PetscMalloc1(w + gz, &merged));
+    PetscCall(PetscMalloc1(nown + 1, &mstart));
+    mstart[0] = 0;
+    for (PetscInt r = 0; r < nown; r++) {
+      PetscInt        nc, n = start[r + 1] - start[r];
+      const PetscInt *gc;
+      PetscCall(PetscArraycpy(&merged[mstart[r]], &col[start[r]], n));
+      PetscCall(MatGetRow(G, rs + r, &nc, &gc, NULL));
+      PetscCall(PetscArraycpy(&merged[mstart[r] + n], gc, nc));
+      n += nc; /* before MatRestoreRow, which zeroes nc */
+      PetscCall(MatRestoreRow(G, rs + r, &nc, &gc, NULL));
+      PetscCall(PetscSortRemoveDupsInt(&n, &merged[mstart[r]]));
+      mstart[r + 1] = mstart[r] + n;
+    }
+    PetscCall(PetscFree(col));
+    PetscCall(PetscFree(start));
+    *ia = mstart, *ja = merged;
+  } else *ia = start, *ja = col;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The Jacobian's pattern, exact by construction: the pattern pass runs the very insertion code of the
- * assembly (TslProblemInsert, ConstraintRows, contact) into a node-level MATPREALLOCATOR, whose pairs
- * give the node blocks of each row (diagonal and off-process counts); the matrix is preallocated with
- * whole ndof x ndof blocks and every block filled with zeros once, so its structure never changes
- * afterwards (MatZeroEntries keeps it) and elements without constrained rows go in with one blocked
- * call. Rows of prescribed dofs carry the explicit zeros of their node's blocks. */
+ * assembly (TslProblemInsert, ConstraintRows, contact), whose node pairs give the node blocks of each row
+ * (PatternRows: the owned rows recorded locally, ghost rows through a node-level MATPREALLOCATOR to their
+ * owners); the matrix is preallocated with whole ndof x ndof blocks and every block filled with zeros once,
+ * so its structure never changes afterwards (MatZeroEntries keeps it) and elements without constrained
+ * rows go in with one blocked call. Rows of prescribed dofs carry the explicit zeros of their node's blocks. */
 PetscErrorCode TslProblemPreallocate(TslProblem p)
 {
   Mat          pre, G, J;
-  PetscInt     bad, rs, re, *dnz, *onz, maxc = 0, *pcols;
+  PetscInt     bad, rs, *dnz, *onz, maxc = 0, *pcols, *ia = NULL, *ja = NULL;
   PetscScalar *zero;
   TslFailure   fail;
 
@@ -613,6 +699,10 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   PetscCall(MatSetType(pre, MATPREALLOCATOR));
   PetscCall(MatSetLocalToGlobalMapping(pre, p->l2g_node, p->l2g_node));
   PetscCall(MatSetUp(pre));
+  /* room for one record per element node row block; contact and constraints grow it */
+  p->pattern_pairs.n   = 0;
+  p->pattern_pairs.cap = 2 * p->m->nelem + 2 * p->m->elem_ptr[p->m->nelem] + 64;
+  PetscCall(PetscMalloc1(p->pattern_pairs.cap, &p->pattern_pairs.rec));
   PetscCall(AssembleLocal(p, ASM_PATTERN, NULL, NULL, NULL, pre, NULL, &bad, &fail));
   PetscCall(ConstraintRows(p, ASM_PATTERN, NULL, NULL, pre));
   PetscCall(MatAssemblyBegin(pre, MAT_FINAL_ASSEMBLY));
@@ -622,22 +712,18 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   PetscCall(MatSetType(G, MATAIJ));
   PetscCall(MatPreallocatorPreallocate(pre, PETSC_TRUE, G));
   PetscCall(MatDestroy(&pre));
+  PetscCall(MatGetOwnershipRange(G, &rs, NULL));
+  PetscCall(PatternRows(p, G, rs, &ia, &ja));
+  PetscCall(MatDestroy(&G));
 
-  PetscCall(MatGetOwnershipRange(G, &rs, &re));
   PetscCall(PetscMalloc2(p->nown, &dnz, p->nown, &onz));
-  for (PetscInt r = rs; r < re; r++) {
-    PetscInt        nc;
-    const PetscInt *cols;
-    PetscCall(MatGetRow(G, r, &nc, &cols, NULL));
-    dnz[r - rs] = onz[r - rs] = 0;
-    for (PetscInt k = 0; k < nc; k++) {
-      if (cols[k] >= rs && cols[k] < re)
-        dnz[r - rs]++;
-      else
-        onz[r - rs]++;
+  for (PetscInt r = 0; r < p->nown; r++) {
+    dnz[r] = onz[r] = 0;
+    for (PetscInt k = ia[r]; k < ia[r + 1]; k++) {
+      if (ja[k] >= rs && ja[k] < rs + p->nown) dnz[r]++;
+      else onz[r]++;
     }
-    maxc = PetscMax(maxc, nc);
-    PetscCall(MatRestoreRow(G, r, &nc, &cols, NULL));
+    maxc = PetscMax(maxc, ia[r + 1] - ia[r]);
   }
   PetscCall(MatCreate(p->comm, &J));
   PetscCall(MatSetSizes(J, p->nown * p->ndof, p->nown * p->ndof, PETSC_DETERMINE, PETSC_DETERMINE));
@@ -650,21 +736,19 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   PetscCall(PetscCalloc2(maxc * p->ndof, &zero, maxc * p->ndof, &pcols));
   /* each point row whole, columns sorted (MAT_SORTED_FULL: a copy per row instead of a search per entry) */
   PetscCall(MatSetOption(J, MAT_SORTED_FULL, PETSC_TRUE));
-  for (PetscInt r = rs; r < re; r++) {
-    PetscInt        nc;
-    const PetscInt *cols;
-    PetscCall(MatGetRow(G, r, &nc, &cols, NULL));
+  for (PetscInt r = 0; r < p->nown; r++) {
+    const PetscInt nc = ia[r + 1] - ia[r], *cols = &ja[ia[r]];
     for (PetscInt k = 0; k < nc; k++)
       for (PetscInt j = 0; j < p->ndof; j++) pcols[k * p->ndof + j] = cols[k] * p->ndof + j;
     for (PetscInt i = 0; i < p->ndof; i++) {
-      PetscInt row = r * p->ndof + i;
+      PetscInt row = (rs + r) * p->ndof + i;
       PetscCall(MatSetValues(J, 1, &row, nc * p->ndof, pcols, zero, INSERT_VALUES));
     }
-    PetscCall(MatRestoreRow(G, r, &nc, &cols, NULL));
   }
   PetscCall(MatSetOption(J, MAT_SORTED_FULL, PETSC_FALSE));
   PetscCall(PetscFree2(zero, pcols));
-  PetscCall(MatDestroy(&G));
+  PetscCall(PetscFree(ia));
+  PetscCall(PetscFree(ja));
   PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(J, MAT_FINAL_ASSEMBLY));
   PetscCall(MatSetOption(J, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE));

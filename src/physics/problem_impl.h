@@ -126,6 +126,10 @@ struct _p_TslProblem {
   PetscBool          select_kinematic; /* TslProblemContactAssemble evaluates the kinematic pairs (true) or the others */
   TslContactS2S      s2s;           /* surface-to-surface pairs (NULL without) */
   char              *pattern_rows;  /* [nn*ndof] kind of each row (free, prescribed, pinned, eliminated) when J's pattern was built */
+  struct {                          /* the pattern pass's node pairs of owned rows (TslProblemPreallocate, MatAdd) */
+    PetscInt *rec;                  /* records {nr, nc, rows[nr], cols[nc]} in local node numbers; NULL outside the pass */
+    PetscInt  n, cap;               /* used and allocated length of rec */
+  } pattern_pairs;
   /* Direct insertion (TslProblemPreallocate): for an element whose nodes are all owned and whose rows are
    * all free, blk[blk_ptr[e] + a*nb + b] is the place of node b's block among node a's blocks in the
    * local diagonal CSR matrix (whole ndof x ndof blocks, sorted); blk_ptr[e] = blk_ptr[e+1] otherwise.
