@@ -388,6 +388,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(PetscFree(p->eq_ldof));
   PetscCall(PetscFree(p->dep));
   PetscCall(PetscFree(p->pattern_rows));
+  PetscCall(PetscFree(p->pattern_pairs.rec)); /* left by a pattern pass that failed */
   PetscCall(PetscFree(p->blk_ptr));
   PetscCall(PetscFree(p->blk));
   PetscCall(PetscFree3(p->fast_off, p->fast_rec, p->fast_shape));
