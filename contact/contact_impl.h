@@ -145,8 +145,6 @@ static inline TslDual DPow4(TslDual a)
   return DChain(a, a3 * a.v, 4 * a3);
 }
 
-/* Linear combination of two dual vectors stored as [2] arrays. */
-
 /* The fused forms below do in one pass over the slots what their comments' compositions do in several
  * (with a temporary dual each): the same operations in the same order, so the same bits. The kernels
  * spend most of their time in these (the face point's sums, dot and cross products). */
@@ -243,10 +241,10 @@ PetscErrorCode TslContactHeatFlux(const TslContactLaw *law, TslDual pN, PetscBoo
 /* Residual rows of a node-to-face element in duals, nper main nodes with shape functions N[], dim
  * displacement components per node followed by theta (index dim), nu unknowns per node:
  *   R_s = -A traction, R_a = A N_a traction, Rth_s = -A (q + f heat), Rth_a = A N_a (q - (1 - f) heat).
- * Rows beyond these (the twist's phi rows) are zeroed for the caller to fill. values_only (no tangent
- * wanted: residual evaluations, the explicit force loop): only the values .v are set, the same bits. */
+ * Rows beyond these (the twist's phi rows) are zeroed for the caller to fill. (Without a tangent the values'
+ * copy of the kernels runs this on duals of two slots: contact/values/.) */
 void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[],
-                            const TslDual traction[], TslDual q, TslDual heat, PetscBool values_only, TslDual Rd[]);
+                            const TslDual traction[], TslDual q, TslDual heat, TslDual Rd[]);
 
 /* R (values) and K = dR/du (slots 0..ndof-1), either may be NULL. */
 void TslContactDualExtract(PetscInt ndof, const TslDual Rd[], PetscReal R[], PetscReal K[]);

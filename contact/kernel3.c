@@ -246,7 +246,7 @@ PetscErrorCode TslContactElement3(const TslContactLaw *law, const TslContactInpu
   PetscCall(TslContactHeatFlux(law, pN, closed, g, theta_s, theta_m, &k, &C, &q));
   heat = DScale(law->eta, fs.D);
 
-  TslContactResidualRows(in->area, law->f, 3, NU, nnode, geo.nper, N, traction, q, heat, (PetscBool)!K, Rd);
+  TslContactResidualRows(in->area, law->f, 3, NU, nnode, geo.nper, N, traction, q, heat, Rd);
   TslContactDualExtract(ndof, Rd, R, K);
   if (out) {
     PetscCall(PetscMemzero(out, sizeof(*out)));

@@ -268,18 +268,8 @@ PetscErrorCode TslContactHeatFlux(const TslContactLaw *law, TslDual pN, PetscBoo
 /* Residual = internal - external: the contact force and the heat inflow are external to each node. The
  * sum of the thermal rows is -A heat: conduction and radiation move heat across, friction adds it. */
 void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[],
-                            const TslDual traction[], TslDual q, TslDual heat, PetscBool values_only, TslDual Rd[])
+                            const TslDual traction[], TslDual q, TslDual heat, TslDual Rd[])
 {
-  if (values_only) { /* the same operations on the values alone, so the same bits as the .v of the dual path */
-    for (PetscInt i = 0; i < nu * nnode; i++) Rd[i].v = 0;
-    for (PetscInt d = 0; d < dim; d++) {
-      Rd[d].v = traction[d].v * -area;
-      for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + d].v = N[a].v * traction[d].v * area;
-    }
-    Rd[dim].v = (q.v + heat.v * f) * -area;
-    for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + dim].v = N[a].v * (q.v - heat.v * (1 - f)) * area;
-    return;
-  }
   for (PetscInt i = 0; i < nu * nnode; i++) Rd[i] = DConst(0);
   for (PetscInt d = 0; d < dim; d++) {
     Rd[d] = DScale(-area, traction[d]);
@@ -333,7 +323,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
   PetscInt           nnode, ndof, nper, nu;
   PetscReal          xi_raw, area, Nv[TSL_CONTACT_MAX_FACE_NODES], dNv[TSL_CONTACT_MAX_FACE_NODES], d2Nv[TSL_CONTACT_MAX_FACE_NODES];
   PetscReal          anchor = in->hist.xi_anchor, w_anchor = in->hist.w_anchor;
-  TslDual            xi, n[2], tau[2], r[2], xm[2], t[2], g, L, pN, traction[2], k, C, q, theta_s, theta_m, heat, w, Rm;
+  TslDual            xi, n[2], tau[2], r[2], xm[2], t[2], g, L, pN, traction[2], k, C, q, theta_s, theta_m, heat, w, Rm = DConst(0);
   TslDual            N[TSL_CONTACT_MAX_FACE_NODES], Rd[TSL_CONTACT_MAX_DOF];
   TslContactSlip     sl;
   TslContactFriction fs;
@@ -348,7 +338,6 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
     PetscFunctionReturn(PETSC_SUCCESS);
   }
 #endif
-  Rm = DConst(0);
   PetscCall(TslContactGeomSetUp(in, PETSC_TRUE, &geo, &nnode));
   nu   = geo.nu;
   ndof = nu * nnode;
@@ -396,7 +385,7 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
 
   /* residual. With twist the circumferential friction force -A tW on s (+A tW at the main point) does the
    * virtual work -A tW (R_s dphi_s - R_m N_a dphi_a): moments on the phi rows. */
-  TslContactResidualRows(area, law->f, 2, nu, nnode, nper, N, traction, q, heat, (PetscBool)!K, Rd);
+  TslContactResidualRows(area, law->f, 2, nu, nnode, nper, N, traction, q, heat, Rd);
   if (sl.nc == 2) {
     Rd[3] = DScale(area * in->x[0][0], fs.t[1]);
     for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + 3] = DScale(-area, DMul(DMul(N[a], Rm), fs.t[1]));

@@ -56,12 +56,21 @@ static PetscReal AbsSum3(PetscInt kind)
   return best;
 }
 
-/* The main face of a pair's face seg: its nodes (-1 padded) and their count, and the largest sum of |N_a|. */
+/* The main face of a pair's face seg: its nodes (-1 padded) and their count, and the largest sum of |N_a|
+ * of its family (sampled once per family: the searches call this for every point). */
 static void MainFace(const TslContactSurface *cs, PetscInt seg, const PetscInt **nodes, PetscInt *n, PetscReal *sigma)
 {
+  static PetscReal sum2[TSL_CONTACT_FACE_NKINDS], sum3[16]; /* 0: not sampled yet (a sum is at least 1) */
+  const PetscInt   kind = cs->dim == 3 ? cs->kind[seg] : (PetscInt)cs->face;
+  PetscReal       *memo = cs->dim == 3 ? (kind >= 0 && kind < 16 ? &sum3[kind] : NULL) : (kind >= 0 && kind < TSL_CONTACT_FACE_NKINDS ? &sum2[kind] : NULL);
+
   *nodes = &cs->main_lnode[cs->nper * seg];
   *n     = cs->nper;
-  *sigma = cs->dim == 3 ? AbsSum3(cs->kind[seg]) : AbsSum2(cs->face);
+  if (memo && *memo > 0) *sigma = *memo;
+  else {
+    *sigma = cs->dim == 3 ? AbsSum3(kind) : AbsSum2(cs->face);
+    if (memo) *memo = *sigma;
+  }
 }
 
 /* Adds one point's row sums: weights ws[] at its secondary nodes sec[], |N| <= 1 at its main nodes. */

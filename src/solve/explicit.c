@@ -29,8 +29,8 @@ typedef struct {
   Vec             X, Xold;         /* the problem's solution and the state at the start of the increment */
   Vec             V, M, Mask;      /* half-step velocity, lumped mass / capacity, prescribed dofs */
   Vec             Fi, Fe, Fc, Fv;  /* force vectors of the current state (Fc NULL without contact, Fv without bulk viscosity) */
-  Vec             Fk, W;           /* kinematic contact: the corrector's forces at the predicted state, a work vector (NULL without) */
-  Vec             Wc;              /* contact: the interface's nodal row sums for the stable increment (NULL without) */
+  Vec             Fk;              /* kinematic contact: the corrector's forces at the predicted state (NULL without) */
+  Vec             W;               /* contact: a work vector (the corrector's, the interface's row sums for the stable increment; NULL without) */
   PetscInt        kin_passes, kin_total; /* -tsl_explicit_kinematic_passes (most corrector passes per increment); passes made in the step */
   PetscReal       kin_tol;         /* -tsl_explicit_kinematic_tol: passes stop when the pressure change is below this fraction of the largest */
   PetscReal       *dt_mech, *dt_heat, *scale, *eta, *eta2; /* [nelem] element stable increments, mass scale factors, b1 L_e / c_d, (b2 L_e / c_d)^2 */
@@ -108,28 +108,33 @@ static void MassScaleFactors(Explicit *x, PetscBool variable_only)
   }
 }
 
-/* The stable increment: min over the elements of the mechanical 2/omega (with the mass scaled) and the
- * thermal 2/lambda, by one reduction (MINLOC over both, so the log names the controlling element of each);
- * times the safety factor and the step's SCALE FACTOR. */
 /* The interface's limits (src/physics/contact_bound.c: Gershgorin bounds of the normal penalty on the lumped
  * masses and of the heat exchange on the lumped capacities, every point on every node it touches). They
  * change with the pairing, the pressure and the temperatures: recomputed at every pairing search. */
 static PetscErrorCode ContactIncrements(Explicit *x, PetscInt *node_mech, PetscInt *node_heat)
 {
   PetscFunctionBeginUser;
-  PetscCall(TslProblemContactIncrements(x->p, x->M, x->Wc, &x->lim_cmech, node_mech, &x->lim_cheat, node_heat));
+  PetscCall(TslProblemContactIncrements(x->p, x->M, x->W, &x->lim_cmech, node_mech, &x->lim_cheat, node_heat));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The increment from the limits: the mechanical one, and the thermal one of the elements and the interface
  * (first-order: their eigenvalues add at most, so 1/dt = 1/dt_e + 1/dt_c), times the safety and SCALE FACTOR. */
+/* a node is both in its elements and on the contact springs: their eigenvalues add at most
+ * (omega^2 <= omega_e^2 + omega_c^2), so 1/dt^2 = 1/dt_e^2 + 1/dt_c^2 bounds the combined limit */
+static PetscReal MechanicalLimit(const Explicit *x)
+{
+  return x->lim_cmech < PETSC_MAX_REAL ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(x->lim_mech) + 1.0 / PetscSqr(x->lim_cmech)) : x->lim_mech;
+}
+
+static PetscReal ThermalLimit(const Explicit *x)
+{
+  return x->lim_cheat < PETSC_MAX_REAL ? 1.0 / (1.0 / x->lim_heat + 1.0 / x->lim_cheat) : x->lim_heat;
+}
+
 static void CombineLimits(Explicit *x)
 {
-  const PetscReal heat = x->lim_cheat < PETSC_MAX_REAL ? 1.0 / (1.0 / x->lim_heat + 1.0 / x->lim_cheat) : x->lim_heat;
-  /* a node is both in its elements and on the contact springs: their eigenvalues add at most
-   * (omega^2 <= omega_e^2 + omega_c^2), so 1/dt^2 = 1/dt_e^2 + 1/dt_c^2 bounds the combined limit */
-  const PetscReal mech = x->lim_cmech < PETSC_MAX_REAL ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(x->lim_mech) + 1.0 / PetscSqr(x->lim_cmech)) : x->lim_mech;
-  x->dt_stable         = x->safety * x->step->dt_scale * PetscMin(mech, heat);
+  x->dt_stable = x->safety * x->step->dt_scale * PetscMin(MechanicalLimit(x), ThermalLimit(x));
 }
 
 /* The damping fraction xi of the highest element mode (Abaqus documentation, "Bulk viscosity":
@@ -144,6 +149,9 @@ static PetscReal BulkViscosityFactor(PetscReal xi)
   return PetscSqrtReal(1 + xi * xi) - xi;
 }
 
+/* The stable increment: min over the elements of the mechanical 2/omega (with the mass scaled) and the
+ * thermal 2/lambda, by one reduction (MINLOC over both, so the log names the controlling element of each),
+ * with the interface's limits; times the safety factor and the step's SCALE FACTOR. */
 static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
 {
   struct {
@@ -170,7 +178,7 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
   if (x->m->npair) PetscCall(ContactIncrements(x, &node_mech, &node_heat));
   CombineLimits(x);
   if (print) {
-    const PetscReal mech = node_mech >= 0 ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(x->lim_mech) + 1.0 / PetscSqr(x->lim_cmech)) : x->lim_mech;
+    const PetscReal mech = MechanicalLimit(x);
     PetscCall(PetscPrintf(x->comm, "  stable increment %.4e (safety %g x scale factor %g): mechanical %.4e at element %d%s, thermal %.4e at element %d; %s controls\n",
                           (double)x->dt_stable, (double)x->safety, (double)x->step->dt_scale, g[0].v, g[0].id,
                           x->step->bv_linear > 0 ? " (with the linear bulk viscosity's damping)" : "", g[1].v, g[1].id,
@@ -180,7 +188,7 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
                             (double)x->lim_cmech, node_mech, (double)x->lim_mech, (double)mech));
     if (node_heat >= 0)
       PetscCall(PetscPrintf(x->comm, "  contact heat exchange (k A on the lumped capacities, nodal bound) %.4e at node %" PetscInt_FMT "; with the elements' %.4e: thermal %.4e\n",
-                            (double)x->lim_cheat, node_heat, (double)x->lim_heat, 1.0 / (1.0 / (double)x->lim_heat + 1.0 / (double)x->lim_cheat)));
+                            (double)x->lim_cheat, node_heat, (double)x->lim_heat, (double)ThermalLimit(x)));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -517,7 +525,6 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fv));
   PetscCall(VecDestroy(&x->Fk));
   PetscCall(VecDestroy(&x->W));
-  PetscCall(VecDestroy(&x->Wc));
   PetscCall(PetscFree5(x->dt_mech, x->dt_heat, x->scale, x->eta, x->eta2));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -579,11 +586,10 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   if (x.m->npair) {
     PetscBool kinematic;
     PetscCall(VecDuplicate(x.X, &x.Fc));
-    PetscCall(VecDuplicate(x.X, &x.Wc));
+    PetscCall(VecDuplicate(x.X, &x.W));
     PetscCall(TslProblemContactSetKinematic(x.p, PETSC_TRUE, &kinematic));
     if (kinematic) {
       PetscCall(VecDuplicate(x.X, &x.Fk));
-      PetscCall(VecDuplicate(x.X, &x.W));
       PetscCall(VecZeroEntries(x.Fk));
     }
   }
