@@ -280,10 +280,9 @@ static PetscErrorCode AssembleLoop(TslProblem p, AsmMode mode, const PetscScalar
   PetscCall(TslProblemContactAssemble(p, mode, xa, f, A, heat));
   /* nodal loads (owned dofs only): residual = internal - external */
   if (mode == ASM_RESIDUAL || mode == ASM_RAW) {
-    for (PetscInt dof = 0; dof < p->nown * p->ndof; dof++) {
-      PetscReal v;
-      if (!p->nload[dof].active) continue;
-      v = -TslProblemEvalLoadValue(p, &p->nload[dof]);
+    for (PetscInt i = 0; i < p->nnload_own; i++) {
+      PetscInt  dof = p->nload_own[i];
+      PetscReal v   = -TslProblemEvalLoadValue(p, &p->nload[dof]);
       PetscCall(TslProblemInsert(p, mode, A, f, 1, &dof, &v, NULL));
       if (heat && dof % p->ndof == p->ndof - 1) heat->flux_in -= v;
     }

@@ -87,18 +87,26 @@ void TslProblemFastGather(TslProblem p, PetscInt e, const PetscScalar *restrict 
   }
 }
 
-/* The same from the element's record (TslElementFastForce): a gather of the unknowns alone, no geometry. */
-static void FastElement(TslProblem p, PetscInt e, const PetscScalar *restrict xa, ForceCtx *c)
+/* The same from the element's record (TslElementFastForce): a gather of the unknowns alone, no geometry.
+ * Inlined with the dofs per node a constant (FastElement3, FastElement4), so a node's unknowns move as one
+ * short copy rather than a loop of run-time length. */
+static inline __attribute__((always_inline)) void FastElementNd(TslProblem p, PetscInt e, const PetscScalar *restrict xa, ForceCtx *c,
+                                                                const PetscInt nd)
 {
-  const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0, nd = p->ndof;
+  const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0;
   const PetscInt *ln  = &p->elem_lnode[k0];
   const PetscReal eta = c->fv ? c->eta[e] : 0, eta2 = c->fv ? c->eta2[e] : 0;
   const PetscBool bv       = eta > 0 || eta2 > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscScalar *restrict fi = c->fi, *restrict fv = c->fv;
-  const PetscScalar *restrict va = c->v;
+  const PetscScalar *restrict va  = c->v;
+  const PetscReal *restrict   ti0 = p->theta_init;
   PetscReal u[TSL_MAX_ELEM_DOF], v[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES], R[TSL_MAX_ELEM_DOF], Rv[TSL_MAX_ELEM_DOF], w;
 
-  TslProblemFastGather(p, e, xa, u, ti);
+  for (PetscInt a = 0; a < n; a++) {
+    const PetscInt l = ln[a];
+    for (PetscInt i = 0; i < nd; i++) u[nd * a + i] = PetscRealPart(xa[nd * l + i]);
+    ti[a] = ti0[l];
+  }
   if (bv)
     for (PetscInt a = 0; a < n; a++)
       for (PetscInt i = 0; i < nd; i++) v[nd * a + i] = PetscRealPart(va[nd * ln[a] + i]);
@@ -110,6 +118,14 @@ static void FastElement(TslProblem p, PetscInt e, const PetscScalar *restrict xa
       for (PetscInt i = 0; i < nd; i++) fv[nd * ln[a] + i] += Rv[nd * a + i];
     c->power += w;
   }
+}
+static void FastElement3(TslProblem p, PetscInt e, const PetscScalar *xa, ForceCtx *c) { FastElementNd(p, e, xa, c, 3); }
+static void FastElement4(TslProblem p, PetscInt e, const PetscScalar *xa, ForceCtx *c) { FastElementNd(p, e, xa, c, 4); }
+static void FastElement(TslProblem p, PetscInt e, const PetscScalar *xa, ForceCtx *c)
+{
+  if (p->ndof == 4) FastElement4(p, e, xa, c);
+  else if (p->ndof == 3) FastElement3(p, e, xa, c);
+  else FastElementNd(p, e, xa, c, p->ndof);
 }
 
 /* The element pass of an explicit force evaluation: records where the element has one, the generic
@@ -217,7 +233,10 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
     PetscCall(VecGhostGetLocalForm(V, &vl));
     PetscCall(VecGetArrayRead(vl, &c.v));
   }
-  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  /* the state's own local form, ghosts updated (no copy into the problem's work vector: the state is read only) */
+  PetscCall(TslGhostUpdate(p->X, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecGhostGetLocalForm(p->X, &xl));
+  PetscCall(VecGetArrayRead(xl, &xa));
   PetscCall(BeginLocal(Fi, &il, &c.fi));
   PetscCall(BeginLocal(Fe, &el, &c.fe));
   PetscCall(BeginLocal(Fv, &fl, &c.fv));
@@ -231,10 +250,9 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(TslCaptureEnd());
   PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
   PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit increment: %s", p->fail_msg);
-  for (PetscInt dof = 0; dof < p->nown * p->ndof; dof++) { /* nodal loads, owned dofs */
-    PetscReal v;
-    if (!p->nload[dof].active) continue;
-    v = TslProblemEvalLoadValue(p, &p->nload[dof]);
+  for (PetscInt i = 0; i < p->nnload_own; i++) { /* nodal loads, owned dofs */
+    const PetscInt  dof = p->nload_own[i];
+    const PetscReal v   = TslProblemEvalLoadValue(p, &p->nload[dof]);
     if (dof % p->ndof == p->ndof - 1)
       c.fi[dof] -= v, heat.flux_in += v;
     else
@@ -244,7 +262,8 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(EndLocal(Fv, &fl, &c.fv));
   PetscCall(EndLocal(Fe, &el, &c.fe));
   PetscCall(EndLocal(Fi, &il, &c.fi));
-  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscCall(VecRestoreArrayRead(xl, &xa));
+  PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
   if (Fv) {
     PetscCall(VecRestoreArrayRead(vl, &c.v));
     PetscCall(VecGhostRestoreLocalForm(V, &vl));

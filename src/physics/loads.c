@@ -110,6 +110,26 @@ static int CompareFace(const void *a, const void *b)
 
 /* Sorts face records by element, keeps the latest definition of each (element, face, kind), and
  * builds the per-element index. A redefined load starts from the value the earlier one had. */
+/* The owned dofs with a prescribed value and those with a nodal load, as lists: the loops of every
+ * increment (TslProblemApplyPrescribed, the nodal loads of the residual and of the explicit forces) visit
+ * these alone instead of reading every dof's record (32 bytes a dof: 17 MB per pass at a million unknowns). */
+static PetscErrorCode ActiveDofs(TslProblem p)
+{
+  const PetscInt n = p->nown * p->ndof;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree2(p->bc_own, p->nload_own));
+  p->nbc_own = p->nnload_own = 0;
+  for (PetscInt d = 0; d < n; d++) p->nbc_own += p->bc[d].active ? 1 : 0, p->nnload_own += p->nload[d].active ? 1 : 0;
+  PetscCall(PetscMalloc2(p->nbc_own, &p->bc_own, p->nnload_own, &p->nload_own));
+  p->nbc_own = p->nnload_own = 0;
+  for (PetscInt d = 0; d < n; d++) {
+    if (p->bc[d].active) p->bc_own[p->nbc_own++] = d;
+    if (p->nload[d].active) p->nload_own[p->nnload_own++] = d;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CompactFaces(TslProblem p)
 {
   PetscInt n = 0;
@@ -282,6 +302,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
                m->node_id[d / p->ndof]);
   }
   PetscCall(CompactFaces(p));
+  PetscCall(ActiveDofs(p));
   PetscCall(MarkActiveAmplitudes(p));
   p->step_start_ttot = p->ttot;
   if (!p->matrix_free) PetscCall(TslProblemPreallocateIfChanged(p));
@@ -322,8 +343,10 @@ PetscErrorCode TslProblemApplyPrescribed(TslProblem p, Vec X)
 
   PetscFunctionBeginUser;
   PetscCall(VecGetArray(X, &x));
-  for (PetscInt d = 0; d < p->nown * p->ndof; d++)
-    if (p->bc[d].active) x[d] = TslProblemEvalLoadValue(p, &p->bc[d]);
+  for (PetscInt i = 0; i < p->nbc_own; i++) {
+    const PetscInt d = p->bc_own[i];
+    x[d]             = TslProblemEvalLoadValue(p, &p->bc[d]);
+  }
   PetscCall(VecRestoreArray(X, &x));
   PetscCall(TslGhostUpdate(X, INSERT_VALUES, SCATTER_FORWARD));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -381,6 +381,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(PetscFree2(p->extra, p->pinned));
   PetscCall(PetscFree(p->theta_init));
   PetscCall(PetscFree2(p->bc, p->nload));
+  PetscCall(PetscFree2(p->bc_own, p->nload_own));
   PetscCall(PetscFree(p->face));
   PetscCall(PetscFree(p->face_start));
   if (p->eq_ldof)

@@ -113,6 +113,8 @@ struct _p_TslProblem {
 
   TslLoadValue  *bc;    /* [nn*ndof] prescribed values (owned and ghost dofs) */
   TslLoadValue  *nload; /* [nn*ndof] nodal loads (CLOAD, CFLUX), owned dofs only */
+  PetscInt      *bc_own, nbc_own;       /* the owned dofs with bc[] active, ascending (TslProblemSetStep) */
+  PetscInt      *nload_own, nnload_own; /* the owned dofs with nload[] active, ascending */
   PetscInt       nface, face_seq;
   TslFaceRecord *face;       /* sorted by element */
   PetscInt      *face_start; /* [nelem+1] CSR over face[] */

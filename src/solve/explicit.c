@@ -300,8 +300,9 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
   PetscCall(VecGetArrayRead(x->Fe, &fe));
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
   if (x->Fv) PetscCall(VecGetArrayRead(x->Fv, &fv));
-  for (PetscInt i = 0; i < n; i++)
-    if (mask[i] == 0 && i % x->ndof != th) u[i] += h * (v[i] + h_avg * (fe[i] - fi[i] - (fc ? fc[i] : 0) - (fv ? fv[i] : 0)) / m[i]);
+  for (PetscInt i0 = 0; i0 < n; i0 += x->ndof) /* node by node: no division to tell a temperature dof */
+    for (PetscInt i = i0; i < i0 + th; i++)
+      if (mask[i] == 0) u[i] += h * (v[i] + h_avg * (fe[i] - fi[i] - (fc ? fc[i] : 0) - (fv ? fv[i] : 0)) / m[i]);
   if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
   if (x->Fv) PetscCall(VecRestoreArrayRead(x->Fv, &fv));
   PetscCall(VecRestoreArrayRead(x->Fe, &fe));
@@ -361,10 +362,10 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
   if (x->Fk) PetscCall(VecGetArrayRead(x->Fk, &fk));
   if (x->Fv) PetscCall(VecGetArrayRead(x->Fv, &fv));
-  for (PetscInt i = 0; i < n; i++) { /* free dofs: the update and the forces' work */
+  for (PetscInt i = 0, c = 0; i < n; i++, c = c == th ? 0 : c + 1) { /* free dofs: the update and the forces' work; c: i's slot */
     PetscReal fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon - (fv ? fv[i] : 0), vo = v[i], w;
     if (mask[i] != 0) continue;
-    if (i % x->ndof == th) {
+    if (c == th) {
       u[i] += h * f / m[i];
       continue;
     }
@@ -382,9 +383,9 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(TslProblemApplyPrescribed(x->p, x->X));
   PetscCall(VecGetArray(x->X, &u));
   PetscCall(VecGetArrayRead(x->Xold, &uo));
-  for (PetscInt i = 0; i < n; i++) { /* prescribed dofs: velocity, reaction and work; stored heat */
+  for (PetscInt i = 0, c = 0; i < n; i++, c = c == th ? 0 : c + 1) { /* prescribed dofs: velocity, reaction and work; stored heat */
     PetscReal fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon - (fv ? fv[i] : 0), vo = v[i], w, s;
-    if (i % x->ndof == th) {
+    if (c == th) {
       PetscReal rate = m[i] * (u[i] - uo[i]) / h; /* heat stored at the node per unit time */
       loc[6] += rate;
       if (mask[i] != 0) loc[5] += rate - f; /* heat the prescribed temperature brings in */
