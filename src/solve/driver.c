@@ -166,6 +166,24 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(SetDefaultOption(d, "-fieldsplit_T_pc_type", "hypre"));
   PetscCall(SetDefaultOption(d, "-fieldsplit_u_ksp_type", "preonly"));
   PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_type", "hypre"));
+  {
+    /* contact: two bodies coupled by penalty springs (a thin block held normal to the interface only
+     * through it). With the lean hierarchy below the displacement block's iterations doubled with each
+     * halving of the mesh (50 / 99 / 199 / 391 per Newton iteration at 289 / 1 089 / 4 225 / 16 641 contact
+     * nodes); without aggressive coarsening and with strong threshold 0.8 on the displacement block they
+     * take 19 / 23 / 38 / 71, and with strong threshold 0.7 on the temperature block as well (whose
+     * hierarchy, with BoomerAMG's 0.25, was what still grew: with it solved exactly the count was flat)
+     * 19 / 20 / 20 (docs/running.md, "Contact at scale"). Without contact, dropping the aggressive coarsening
+     * costs more than it saves (the steady block: 25 instead of 29 iterations for twice the set-up and a
+     * slower solve), so these are the contact models' defaults only. */
+    const TslModel *m;
+    PetscCall(TslProblemGetModel(d->prob, &m));
+    if (m->npair > 0) {
+      PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.8"));
+      PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_agg_nl", "0"));
+      PetscCall(SetDefaultOption(d, "-fieldsplit_T_pc_hypre_boomeramg_strong_threshold", "0.7"));
+    }
+  }
   PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.5"));
   /* lean hierarchies (HMIS coarsening, ext+i interpolation, one level of aggressive coarsening): on the
    * 3D benchmark 25-35 % faster and 20 % less memory than BoomerAMG's defaults, for 24-29 instead of
