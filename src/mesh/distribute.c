@@ -368,6 +368,22 @@ static PetscErrorCode FaceWeights(PetscInt dim, PetscInt family, const PetscReal
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Axisymmetric line2 face (x: r, z of its two nodes): the kernels take a node's area as w_a 2 pi r_a (r_a
+ * its reference radius), so w_a = int N_a r ds / r_a makes it the consistent int N_a 2 pi r ds =
+ * 2 pi L (2 r_a + r_b) / 6, as the face loads are integrated (the trapezoidal L / 2 loaded the outer node of a
+ * face more than the element rows do, and a uniform pressure came out non-uniform). A node on the axis
+ * (r_a = 0) keeps its L / 2 and so no area, as before. Straight line3 faces need no change: Simpson's rule on
+ * N_a r is exact. */
+static void AxisymmetricLine2Weights(const PetscReal x[], PetscReal w[])
+{
+  const PetscReal L = PetscHypotReal(x[2] - x[0], x[3] - x[1]);
+
+  for (PetscInt a = 0; a < 2; a++) {
+    const PetscReal ra = x[2 * a], rb = x[2 * (1 - a)];
+    if (ra > 0) w[a] = L * (2 * ra + rb) / (6 * ra);
+  }
+}
+
 /* Does the straight chord of secondary face xs (first two nodes) lie across the main face xm, facing it:
  * the main face's ends project onto the chord with an overlap of positive length, and the outward normals
  * (body on the left of both faces) oppose? */
@@ -519,6 +535,8 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
       for (PetscInt i = 0; i < sec->n; i++) {
         PetscCall(ContactFace(g, c, TslModelElementIndex(g, sec->elem[i]), sec->face[i], nodes, &nf, x, &family));
         PetscCall(FaceWeights(dim, family, x, w, NULL));
+        if (dim == 2 && nf == 2 && TslKinematicsRevolves(TslElementTypeGet(g->elem_type[TslModelElementIndex(g, sec->elem[i])])->kin))
+          AxisymmetricLine2Weights(x, w);
         for (PetscInt a = 0; a < nf; a++) c->sec_node[nsec] = nodes[a], c->sec_length[nsec++] = w[a];
         if (i == 0) e0 = sec->elem[i];
       }

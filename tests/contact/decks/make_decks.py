@@ -68,23 +68,24 @@ def lines(ids, per=8):
 
 def uniform(etype, x0, friction=False):
     nx, W = 3, 2.0
-    low_n, low_e, low_g = quad8_block(nx, 2, x0, x0 + W, 0.0, 1.0, 1, 1)
-    up_n, up_e, up_g = quad8_block(nx, 1, x0, x0 + W, 1.0, 1.5, 1001, 101)
+    k = 1 if etype.endswith("4T") else 2  # nodes per cell side - 1: line2 or line3 faces on the interface
+    low_n, low_e, low_g = quad_block(k, nx, 2, x0, x0 + W, 0.0, 1.0, 1, 1)
+    up_n, up_e, up_g = quad_block(k, nx, 1, x0, x0 + W, 1.0, 1.5, 1001, 101)
     plane = etype.startswith("CP")
     twist = etype.startswith("CGAX")
     out = ["*HEADING",
-           " Uniform pressure (100) and heat flux (10) through two stacked %s blocks: contact on line3 faces" % etype,
+           " Uniform pressure (100) and heat flux (10) through two stacked %s blocks: contact on line%d faces" % (etype, k + 1),
            "*NODE, NSET=ALL"]
     out += [" %d, %.17g, %.17g" % n for n in low_n + up_n]
     out.append("*ELEMENT, TYPE=%s, ELSET=LOWER" % etype)
     out += [" %d, %s" % (e, ", ".join(str(x) for x in c)) for e, c in low_e]
     out.append("*ELEMENT, TYPE=%s, ELSET=UPPER" % etype)
     out += [" %d, %s" % (e, ", ".join(str(x) for x in c)) for e, c in up_e]
-    out += ["*NSET, NSET=BASE", lines(low_g[i, 0] for i in range(2 * nx + 1))]
+    out += ["*NSET, NSET=BASE", lines(low_g[i, 0] for i in range(k * nx + 1))]
     if plane:  # symmetry plane x = 0: removes the rigid x motion of both blocks, leaves the Poisson expansion free
         out += ["*NSET, NSET=LEFT", lines([n for (i, j), n in sorted(low_g.items()) if i == 0] + [n for (i, j), n in sorted(up_g.items()) if i == 0])]
     if twist:  # the upper ring's rigid twist, which frictionless contact leaves free
-        out += ["*NSET, NSET=UPTOP", lines(up_g[i, 2] for i in range(2 * nx + 1))]
+        out += ["*NSET, NSET=UPTOP", lines(up_g[i, k] for i in range(k * nx + 1))]
     out += ["*ELSET, ELSET=LOWTOP", lines(e for e, c in low_e[nx:]),
             "*ELSET, ELSET=BODY", lines([e for e, c in low_e] + [e for e, c in up_e]),
             "*SURFACE, NAME=MAIN, TYPE=ELEMENT", " LOWTOP, S3",
@@ -103,7 +104,7 @@ def uniform(etype, x0, friction=False):
     if twist:
         out += [" BASE, 5, 5", " UPTOP, 5, 5"]
     out += ["*DLOAD", " UPPER, P3, 100.0", "*DFLUX", " UPPER, S3, 10.0", "*END STEP", ""]
-    name = "contact_%s_%s.inp" % ("twist_friction" if friction else "line3_uniform", etype.lower())
+    name = "contact_%s_%s.inp" % ("twist_friction" if friction else "line3_uniform" if k == 2 else "line2_uniform", etype.lower())
     open(os.path.join(HERE, name), "w").write("\n".join(out))
 
 
@@ -221,6 +222,7 @@ uniform("CPE8T", 0.0)
 uniform("CAX8T", 0.5)
 uniform("CGAX8T", 0.5)  # twist rows: contact acts in the r-z plane, the same answer as CAX8T
 uniform("CGAX8T", 0.5, friction=True)  # with *FRICTION: nothing slips, the frictionless answer
+uniform("CAX4T", 0.5)  # line2 faces: the consistent axisymmetric weights int N_a 2 pi r ds (src/mesh/distribute.c)
 for etype in ("CGAX4T", "CGAX8T"):
     for motion in ("axial", "twist", "combined"):
         twist_slide(etype, motion)
