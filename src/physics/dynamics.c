@@ -75,9 +75,11 @@ static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-void TslProblemFastGather(TslProblem p, PetscInt e, const PetscScalar *restrict xa, PetscReal u[], PetscReal ti[])
+/* An element's unknowns and initial temperatures, nd unknowns per node (a constant where inlined). */
+static inline __attribute__((always_inline)) void GatherNd(TslProblem p, PetscInt e, const PetscScalar *restrict xa, PetscReal u[], PetscReal ti[],
+                                                           const PetscInt nd)
 {
-  const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0, nd = p->ndof;
+  const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0;
   const PetscInt *ln = &p->elem_lnode[k0];
 
   for (PetscInt a = 0; a < n; a++) {
@@ -85,6 +87,11 @@ void TslProblemFastGather(TslProblem p, PetscInt e, const PetscScalar *restrict 
     for (PetscInt i = 0; i < nd; i++) u[nd * a + i] = PetscRealPart(xa[nd * l + i]);
     ti[a] = p->theta_init[l];
   }
+}
+
+void TslProblemFastGather(TslProblem p, PetscInt e, const PetscScalar *restrict xa, PetscReal u[], PetscReal ti[])
+{
+  GatherNd(p, e, xa, u, ti, p->ndof);
 }
 
 /* The same from the element's record (TslElementFastForce): a gather of the unknowns alone, no geometry.
@@ -98,15 +105,10 @@ static inline __attribute__((always_inline)) void FastElementNd(TslProblem p, Pe
   const PetscReal eta = c->fv ? c->eta[e] : 0, eta2 = c->fv ? c->eta2[e] : 0;
   const PetscBool bv       = eta > 0 || eta2 > 0 ? PETSC_TRUE : PETSC_FALSE;
   PetscScalar *restrict fi = c->fi, *restrict fv = c->fv;
-  const PetscScalar *restrict va  = c->v;
-  const PetscReal *restrict   ti0 = p->theta_init;
+  const PetscScalar *restrict va = c->v;
   PetscReal u[TSL_MAX_ELEM_DOF], v[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES], R[TSL_MAX_ELEM_DOF], Rv[TSL_MAX_ELEM_DOF], w;
 
-  for (PetscInt a = 0; a < n; a++) {
-    const PetscInt l = ln[a];
-    for (PetscInt i = 0; i < nd; i++) u[nd * a + i] = PetscRealPart(xa[nd * l + i]);
-    ti[a] = ti0[l];
-  }
+  GatherNd(p, e, xa, u, ti, nd);
   if (bv)
     for (PetscInt a = 0; a < n; a++)
       for (PetscInt i = 0; i < nd; i++) v[nd * a + i] = PetscRealPart(va[nd * ln[a] + i]);
