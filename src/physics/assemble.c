@@ -619,7 +619,8 @@ static PetscErrorCode BuildDirectMap(TslProblem p, Mat J)
 static PetscErrorCode PatternRows(TslProblem p, Mat G, PetscInt rs, PetscInt **ia, PetscInt **ja)
 {
   const PetscInt  nown = p->nown, *gnum = p->m->node_gnum, *rec = p->pattern_pairs.rec, nrec = p->pattern_pairs.n;
-  PetscInt       *start, *pos, *col, *mark, w = 0, lo = 0, gz = 0;
+  PetscInt       *start, *pos, *col, *mark, w = 0, lo = 0, gz;
+  MatInfo         info;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc1(nown + 1, &start));
@@ -643,19 +644,17 @@ static PetscErrorCode PatternRows(TslProblem p, Mat G, PetscInt rs, PetscInt **i
   for (PetscInt l = 0; l < p->nn; l++) mark[l] = -1;
   for (PetscInt r = 0; r < nown; r++) {
     const PetscInt hi = start[r + 1], first = w;
-    PetscInt        nc;
     for (PetscInt k = lo; k < hi; k++) {
       const PetscInt l = col[k];
       if (mark[l] != r) mark[l] = r, col[w++] = gnum[l];
     }
     PetscCall(PetscSortInt(w - first, &col[first]));
     start[r] = first, lo = hi;
-    PetscCall(MatGetRow(G, rs + r, &nc, NULL, NULL));
-    gz += nc;
-    PetscCall(MatRestoreRow(G, rs + r, &nc, NULL, NULL));
   }
   start[nown] = w;
   PetscCall(PetscFree(mark));
+  PetscCall(MatGetInfo(G, MAT_LOCAL, &info)); /* G holds only the rows other ranks sent (zeros where set) */
+  gz = (PetscInt)info.nz_used;
   if (gz) { /* rows with contributions from other ranks: merged into a fresh array */
     PetscInt *merged, *mstart;
     PetscCall(PetscMalloc1(w + gz, &merged));

@@ -60,9 +60,10 @@ static PetscReal AbsSum3(PetscInt kind)
  * of its family (sampled once per family: the searches call this for every point). */
 static void MainFace(const TslContactSurface *cs, PetscInt seg, const PetscInt **nodes, PetscInt *n, PetscReal *sigma)
 {
-  static PetscReal sum2[TSL_CONTACT_FACE_NKINDS], sum3[16]; /* 0: not sampled yet (a sum is at least 1) */
+  enum { MEMO3 = 16 }; /* 3D families memoised (more than contact/face3.c has; a larger kind is sampled each time) */
+  static PetscReal sum2[TSL_CONTACT_FACE_NKINDS], sum3[MEMO3]; /* 0: not sampled yet (a sum is at least 1) */
   const PetscInt   kind = cs->dim == 3 ? cs->kind[seg] : (PetscInt)cs->face;
-  PetscReal       *memo = cs->dim == 3 ? (kind >= 0 && kind < 16 ? &sum3[kind] : NULL) : (kind >= 0 && kind < TSL_CONTACT_FACE_NKINDS ? &sum2[kind] : NULL);
+  PetscReal       *memo = cs->dim == 3 ? (kind >= 0 && kind < MEMO3 ? &sum3[kind] : NULL) : (kind >= 0 && kind < TSL_CONTACT_FACE_NKINDS ? &sum2[kind] : NULL);
 
   *nodes = &cs->main_lnode[cs->nper * seg];
   *n     = cs->nper;

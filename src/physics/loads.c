@@ -108,8 +108,6 @@ static int CompareFace(const void *a, const void *b)
   return x->seq < y->seq ? -1 : (x->seq > y->seq);
 }
 
-/* Sorts face records by element, keeps the latest definition of each (element, face, kind), and
- * builds the per-element index. A redefined load starts from the value the earlier one had. */
 /* The owned dofs with a prescribed value and those with a nodal load, as lists: the loops of every
  * increment (TslProblemApplyPrescribed, the nodal loads of the residual and of the explicit forces) visit
  * these alone instead of reading every dof's record (32 bytes a dof: 17 MB per pass at a million unknowns). */
@@ -130,6 +128,8 @@ static PetscErrorCode ActiveDofs(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Sorts face records by element, keeps the latest definition of each (element, face, kind), and
+ * builds the per-element index. A redefined load starts from the value the earlier one had. */
 static PetscErrorCode CompactFaces(TslProblem p)
 {
   PetscInt n = 0;

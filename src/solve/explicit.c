@@ -118,20 +118,21 @@ static PetscErrorCode ContactIncrements(Explicit *x, PetscInt *node_mech, PetscI
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The increment from the limits: the mechanical one, and the thermal one of the elements and the interface
- * (first-order: their eigenvalues add at most, so 1/dt = 1/dt_e + 1/dt_c), times the safety and SCALE FACTOR. */
-/* a node is both in its elements and on the contact springs: their eigenvalues add at most
- * (omega^2 <= omega_e^2 + omega_c^2), so 1/dt^2 = 1/dt_e^2 + 1/dt_c^2 bounds the combined limit */
+/* The mechanical limit of the elements and the interface: a node is both in its elements and on the contact
+ * springs, their eigenvalues add at most (omega^2 <= omega_e^2 + omega_c^2), so 1/dt^2 = 1/dt_e^2 + 1/dt_c^2
+ * bounds the combined limit. */
 static PetscReal MechanicalLimit(const Explicit *x)
 {
   return x->lim_cmech < PETSC_MAX_REAL ? 1.0 / PetscSqrtReal(1.0 / PetscSqr(x->lim_mech) + 1.0 / PetscSqr(x->lim_cmech)) : x->lim_mech;
 }
 
+/* The thermal one (first-order: 1/dt = 1/dt_e + 1/dt_c). */
 static PetscReal ThermalLimit(const Explicit *x)
 {
   return x->lim_cheat < PETSC_MAX_REAL ? 1.0 / (1.0 / x->lim_heat + 1.0 / x->lim_cheat) : x->lim_heat;
 }
 
+/* The increment from the limits, times the safety factor and the step's SCALE FACTOR. */
 static void CombineLimits(Explicit *x)
 {
   x->dt_stable = x->safety * x->step->dt_scale * PetscMin(MechanicalLimit(x), ThermalLimit(x));
