@@ -177,6 +177,96 @@ static void SmallInverse(PetscInt n, PetscReal A[TSL_MAX_PRESSURE][TSL_MAX_PRESS
     for (PetscInt j = 0; j < n; j++) Ai[i][j] = M[i][n + j] / M[i][i];
 }
 
+/* B_a^T s dV for a 3D solid's node a with spatial gradient g and a Voigt vector s (engineering shear), the
+ * nonzeros of B_a in row order (the lean residual's and the B path's summation order: the same bits). */
+static inline void SolidBtS(const PetscReal g[3], const PetscReal s[6], PetscReal dV, PetscReal out[3])
+{
+  out[0] = (g[0] * s[0] + g[1] * s[3] + g[2] * s[4]) * dV;
+  out[1] = (g[1] * s[1] + g[0] * s[3] + g[2] * s[5]) * dV;
+  out[2] = (g[2] * s[2] + g[0] * s[4] + g[1] * s[5]) * dV;
+}
+
+/* The tangent of a 3D solid (LeanStrain types, displacement formulation) by node pairs instead of B^T D B:
+ * for isotropic D,
+ *   K_ab,ij = int lambda dN_a/dx_i dN_b/dx_j + mu dN_a/dx_j dN_b/dx_i + mu delta_ij grad N_a . grad N_b dV,
+ * so with S_ab = int dN_a/dx (x) dN_b/dx dV (nine products per pair and point) K_ab = lambda S_ab + mu S_ab^T
+ * + mu tr(S_ab) I, formed once per element while lambda and mu are those of the first point (a material
+ * without temperature dependence: every point); a point with other moduli adds its own terms at once. A
+ * third of the B^T D B path's products, without its index arrays. The residual and the temperature column
+ * K_u_theta are those of the general path: sigma, dsigma as there, R in the lean path's order (same bits). */
+static PetscBool MechanicsSolid3DTangent(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[])
+{
+  const TslElementType *t    = in->type;
+  const TslGeometry    *g    = t->geom;
+  const TslQuadrature  *quad = t->form->quadrature(g);
+  const PetscInt        n = g->nnode, nd = 4 * n;
+  PetscReal             S[TSL_MAX_ELEM_NODES][TSL_MAX_ELEM_NODES][9], lambda0 = 0, mu0 = 0;
+  MechPoint             mq;
+
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt b = a; b < n; b++)
+      for (PetscInt k = 0; k < 9; k++) S[a][b][k] = 0;
+  for (PetscInt q = 0; q < quad->n; q++) {
+    PetscReal D[6][6], dD[6][6], emech[6], sig[6], dsig[6], lambda, mu, dV, v[TSL_MAX_ELEM_NODES][3];
+
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, PETSC_TRUE, &mq)) return PETSC_FALSE;
+    dV = mq.p->dV;
+    TslElementElasticity(t, &mq.mp, D, dD);
+    TslElementLame(&mq.mp, &lambda, &mu);
+    for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r] - VoigtM[r] * mq.eps_th;
+    for (PetscInt r = 0; r < 6; r++) {
+      sig[r] = dsig[r] = 0;
+      for (PetscInt s = 0; s < 6; s++) {
+        sig[r] += D[r][s] * emech[s];
+        dsig[r] += dD[r][s] * emech[s] - D[r][s] * VoigtM[s] * mq.deps_th;
+      }
+    }
+    for (PetscInt a = 0; a < n; a++) {
+      PetscReal f[3];
+      SolidBtS(mq.p->dNdx[a], sig, dV, f);
+      for (PetscInt i = 0; i < 3; i++) R[4 * a + i] += f[i];
+      SolidBtS(mq.p->dNdx[a], dsig, dV, v[a]); /* K_u_theta: B_a^T dsigma N_b dV */
+    }
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < 3; i++) {
+        PetscReal *row = &K[(4 * a + i) * nd + 3];
+        for (PetscInt b = 0; b < n; b++) row[4 * b] += v[a][i] * mq.p->N[b];
+      }
+    if (q == 0) lambda0 = lambda, mu0 = mu;
+    if (lambda == lambda0 && mu == mu0) {
+      for (PetscInt a = 0; a < n; a++) {
+        const PetscReal ga[3] = {mq.p->dNdx[a][0] * dV, mq.p->dNdx[a][1] * dV, mq.p->dNdx[a][2] * dV};
+        for (PetscInt b = a; b < n; b++) {
+          const PetscReal *gb = mq.p->dNdx[b], g0 = gb[0], g1 = gb[1], g2 = gb[2];
+          PetscReal       *s  = S[a][b];
+          s[0] += ga[0] * g0, s[1] += ga[0] * g1, s[2] += ga[0] * g2;
+          s[3] += ga[1] * g0, s[4] += ga[1] * g1, s[5] += ga[1] * g2;
+          s[6] += ga[2] * g0, s[7] += ga[2] * g1, s[8] += ga[2] * g2;
+        }
+      }
+    } else /* moduli of their own at this point: its terms straight into K */
+      for (PetscInt a = 0; a < n; a++)
+        for (PetscInt b = 0; b < n; b++) {
+          const PetscReal *ga = mq.p->dNdx[a], *gb = mq.p->dNdx[b];
+          const PetscReal  dot = (ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2]) * mu * dV;
+          for (PetscInt i = 0; i < 3; i++)
+            for (PetscInt j = 0; j < 3; j++) K[(4 * a + i) * nd + 4 * b + j] += (lambda * ga[i] * gb[j] + mu * ga[j] * gb[i]) * dV + (i == j ? dot : 0);
+        }
+  }
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt b = a; b < n; b++) {
+      const PetscReal *s  = S[a][b];
+      const PetscReal  tr = mu0 * (s[0] + s[4] + s[8]);
+      for (PetscInt i = 0; i < 3; i++)
+        for (PetscInt j = 0; j < 3; j++) {
+          const PetscReal kij = lambda0 * s[3 * i + j] + mu0 * s[3 * j + i] + (i == j ? tr : 0);
+          K[(4 * a + i) * nd + 4 * b + j] += kij;
+          if (b != a) K[(4 * b + j) * nd + 4 * a + i] += kij;
+        }
+    }
+  return PETSC_TRUE;
+}
+
 /* Mechanical terms over the formulation's points. Displacement formulation:
  *   sigma = D (eps - eps_th m),  R_u = int B^T sigma dV,
  *   K_uu = int B^T D B dV,  K_u_theta_b = int B^T (dD (eps - eps_th m) - D m deps_th) N_b dV.
@@ -199,6 +289,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   MechPoint             mq;
   PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 
+  if (K && !res && !hybrid && LeanStrain(in)) return MechanicsSolid3DTangent(in, full, R, K);
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
   if (K) PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(Kuu, ncol * ncol));
   for (PetscInt q = 0; q < quad->n; q++) {
@@ -240,10 +331,9 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         for (PetscInt s = 0; s < 6; s++) sig[r] += D[r][s] * emech[s];
       }
       for (PetscInt a = 0; a < nv; a++) {
-        const PetscReal *gr = mq.p->dNdx[a];
-        R[4 * a] += (gr[0] * sig[0] + gr[1] * sig[3] + gr[2] * sig[4]) * mq.p->dV;
-        R[4 * a + 1] += (gr[1] * sig[1] + gr[0] * sig[3] + gr[2] * sig[5]) * mq.p->dV;
-        R[4 * a + 2] += (gr[2] * sig[2] + gr[0] * sig[4] + gr[1] * sig[5]) * mq.p->dV;
+        PetscReal f[3];
+        SolidBtS(mq.p->dNdx[a], sig, mq.p->dV, f);
+        for (PetscInt i = 0; i < 3; i++) R[4 * a + i] += f[i];
       }
       continue;
     }
