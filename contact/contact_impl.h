@@ -31,6 +31,8 @@
 #if !defined(TSL_DUAL_VALUES)
 /* The values' copies (contact/values/values.h) that the public entries hand a call without a tangent to. */
 PetscErrorCode TslContactElement_Values(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
+PetscErrorCode TslContactProject3Raw(const TslContactInput3 *in, PetscReal raw[2], PetscBool *frozen);
+PetscErrorCode TslContactProject3Raw_Values(const TslContactInput3 *in, PetscReal raw[2], PetscBool *frozen);
 PetscErrorCode TslContactElement3_Values(const TslContactLaw *law, const TslContactInput3 *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
 PetscErrorCode TslContactProject_Values(const TslContactInput *in, PetscReal *xi, PetscReal *g, PetscReal n[]);
 PetscErrorCode TslContactSurfacePoint_Values(const TslContactInput *in, PetscReal xi, PetscReal x[], PetscReal n[]);

@@ -90,27 +90,45 @@ static PetscErrorCode ProjectionFunction(void *ctx, const PetscReal xi[2], TslDu
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The projection's parameters (unclamped) and whether it froze beyond the band, from the projection at the
+ * start of the increment when that lies on the face (the node has moved little since: two Newton
+ * iterations instead of four or five from the centre). The iterations need values only: the full kernel
+ * runs them in the values copy (contact/values/), whose geometry carries no unknowns' derivatives, and
+ * evaluates the full duals once, at the converged point (ProjectDual). */
+PetscErrorCode TslContactProject3Raw(const TslContactInput3 *in, PetscReal raw[2], PetscBool *frozen)
+{
+  Geom3           geo;
+  const PetscReal start[2] = {in->hist.xi_old, in->hist.eta_old};
+  PetscReal       dist2    = 0, tol;
+
+  PetscFunctionBeginUser;
+  PetscCall(GeomSetUp(in, PETSC_FALSE, &geo));
+  for (PetscInt d = 0; d < 3; d++) dist2 += geo.xs[d].v * geo.xs[d].v;
+  tol    = 1e3 * PETSC_MACHINE_EPSILON * (1 + PetscSqrtReal(dist2) / geo.h) * geo.face->size;
+  raw[0] = geo.face->centre[0];
+  raw[1] = geo.face->centre[1];
+  if (start[0] >= geo.face->lo && start[0] <= geo.face->hi && start[1] >= geo.face->lo && start[1] <= geo.face->hi && start[0] + start[1] <= geo.face->sum)
+    raw[0] = start[0], raw[1] = start[1];
+  PetscCall(TslContactFace3Solve(geo.face, ProjectionFunction, &geo, geo.face->affine && geo.s == 0 ? PETSC_MAX_REAL : 0.25 * geo.face->size, tol, raw,
+                                 frozen));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The projection as duals carrying dxi/du = -F_xi^{-1} F_u (implicit function theorem at F = 0; zero when
  * frozen beyond the band), and the unclamped values. */
-static PetscErrorCode ProjectDual(Geom3 *geo, const PetscReal start[2], TslDual xi[2], PetscReal raw[2])
+static PetscErrorCode ProjectDual(const TslContactInput3 *in, Geom3 *geo, TslDual xi[2], PetscReal raw[2])
 {
-  PetscReal dist2 = 0, tol;
   PetscBool frozen;
 
   PetscFunctionBeginUser;
-  for (PetscInt d = 0; d < 3; d++) dist2 += geo->xs[d].v * geo->xs[d].v;
-  tol    = 1e3 * PETSC_MACHINE_EPSILON * (1 + PetscSqrtReal(dist2) / geo->h) * geo->face->size;
-  raw[0] = geo->face->centre[0];
-  raw[1] = geo->face->centre[1];
-  /* from the projection at the start of the increment when it lies on the face (the node has moved little
-   * since): two Newton iterations instead of four or five from the centre, each a full dual evaluation */
-  if (start && start[0] >= geo->face->lo && start[0] <= geo->face->hi && start[1] >= geo->face->lo && start[1] <= geo->face->hi &&
-      start[0] + start[1] <= geo->face->sum)
-    raw[0] = start[0], raw[1] = start[1];
-  PetscCall(TslContactFace3Solve(geo->face, ProjectionFunction, geo, geo->face->affine && geo->s == 0 ? PETSC_MAX_REAL : 0.25 * geo->face->size, tol,
-                                 raw, &frozen));
+#if defined(TSL_DUAL_VALUES)
+  PetscCall(TslContactProject3Raw(in, raw, &frozen));
+#else
+  PetscCall(TslContactProject3Raw_Values(in, raw, &frozen));
+#endif
   xi[0] = DConst(raw[0]);
   xi[1] = DConst(raw[1]);
+#if !defined(TSL_DUAL_VALUES) /* values alone: no derivatives to carry */
   if (!frozen) {
     TslDual   F[2];
     PetscReal J[2][2];
@@ -128,6 +146,9 @@ static PetscErrorCode ProjectDual(Geom3 *geo, const PetscReal start[2], TslDual 
       xi[1].d[j] = x[1];
     }
   }
+#else
+  (void)geo;
+#endif
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -211,10 +232,7 @@ PetscErrorCode TslContactElement3(const TslContactLaw *law, const TslContactInpu
 
   /* kinematics: projection along the smoothed normal, gap, the slip basis t1 (the part of a1 orthogonal to
    * n), t2 = n x t1 */
-  {
-    const PetscReal start[2] = {in->hist.xi_old, in->hist.eta_old};
-    PetscCall(ProjectDual(&geo, start, xi, raw));
-  }
+  PetscCall(ProjectDual(in, &geo, xi, raw));
   Surface(&geo, xi, p, a, N, n);
   for (PetscInt d = 0; d < 3; d++) r[d] = DSub(geo.xs[d], p[d]);
   g  = DDot3(r, n);

@@ -33,6 +33,7 @@
 #define TslGapRadiationCoefficient  TslGapRadiationCoefficient_Values
 #define TslTableEvaluate            TslTableEvaluate_Values
 #define TslContactElement3          TslContactElement3_Values
+#define TslContactProject3Raw       TslContactProject3Raw_Values
 #define TslContactFace3Box          TslContactFace3Box_Values
 #define TslContactFace3Evaluate     TslContactFace3Evaluate_Values
 #define TslContactFace3Find         TslContactFace3Find_Values
