@@ -81,6 +81,23 @@ static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, P
     ok_u = (PetscBool)(nu <= PetscMax(d->rtol * d->r0_u, d->atol_rel * su) || nu == 0);
     ok_t = (PetscBool)(nt <= PetscMax(d->rtol * d->r0_theta, d->atol_rel * st) || nt == 0);
     if (ok_u && ok_t && (it > 0 || (!force && nu <= d->atol_rel * su && nt <= d->atol_rel * st))) *reason = SNES_CONVERGED_FNORM_RELATIVE;
+    if (*reason == SNES_CONVERGED_ITERATING && d->forcing_max > 0) {
+      /* The linear tolerance of the next Newton step (inexact Newton): never tighter than what lands each
+       * field below its Newton tolerance with a tenth to spare (so the last step is not over-solved, nor
+       * the first of a solve that starts near the job's residual floor, e.g. after contact re-pairing);
+       * after the first step also the Eisenstat-Walker term 0.9 (|F_k| / |F_k-1|)^2, so that far from the
+       * solution the linear solve does not go beyond what the next Newton step can use; both at most
+       * forcing_max and at least -ksp_rtol. The first step of an increment is solved to -ksp_rtol (its
+       * tolerance is a 1e-9 reduction): a linear model converges in that one step. */
+      const PetscReal tol = PetscMin(PetscMax(d->rtol * d->r0_u, d->atol_rel * su), PetscMax(d->rtol * d->r0_theta, d->atol_rel * st));
+      PetscReal       eta = fnorm > 0 ? 0.1 * tol / fnorm : 0;
+      KSP             ksp;
+      if (it > 0 && fnorm > 0 && d->fnorm_prev > 0) eta = PetscMax(eta, 0.9 * PetscSqr(fnorm / d->fnorm_prev));
+      eta           = PetscMax(d->ksp_rtol, PetscMin(d->forcing_max, eta));
+      d->fnorm_prev = fnorm;
+      PetscCall(SNESGetKSP(snes, &ksp));
+      PetscCall(KSPSetTolerances(ksp, eta, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+    }
   }
   PetscCall(PetscInfo(snes, "it %" PetscInt_FMT ": |R_u| %g |R_theta| %g\n", it, (double)nu, (double)nt));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -104,7 +121,17 @@ static PetscErrorCode SetUpSolver(Driver *d)
   d->fallback_max       = -1;
   d->fallback_its       = 200;
   d->debug_diverge_step = 0;
+  d->forcing_max        = 1e-6;
+  d->ksp_rtol           = 1e-10;
   PetscOptionsBegin(d->comm, NULL, "thermoslide increment control", NULL);
+  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_linear_forcing",
+                           "loosest linear tolerance of a Newton iteration after the first (inexact Newton; 0: -ksp_rtol throughout)", 0, PETSC_FALSE, 1,
+                           PETSC_TRUE, &d->forcing_max));
+  {
+    PetscBool set;
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-ksp_rtol", &set));
+    if (set) d->forcing_max = 0; /* the user's linear tolerance holds throughout */
+  }
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_rtol", "per-field Newton residual reduction", 0, PETSC_TRUE, 1, PETSC_TRUE, &d->rtol));
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_atol_rel", "per-field residual floor relative to the job's largest", 0, PETSC_TRUE, 1,
                            PETSC_TRUE, &d->atol_rel));

@@ -29,6 +29,9 @@ typedef struct {
   PetscInt   debug_diverge_step;   /* test hook: every increment of this step is declared diverged */
   PetscReal  scale_u, scale_theta; /* largest initial residuals seen in the job */
   PetscReal  r0_u, r0_theta;       /* initial residuals of the current solve */
+  PetscReal  forcing_max;          /* -tsl_linear_forcing: loosest linear tolerance of a Newton iteration after the first (0: -ksp_rtol always) */
+  PetscReal  ksp_rtol;             /* the linear tolerance of the first Newton iteration (-ksp_rtol) */
+  PetscReal  fnorm_prev;           /* residual norm at the previous Newton iteration of the current solve */
   PetscBool  field_on[MAX_FIELDS]; /* rows of the problem's field table written in frames */
   PetscInt   frequency;
   PetscInt   frame_step, frame_inc; /* last frame written */
