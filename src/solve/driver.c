@@ -87,8 +87,9 @@ static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, P
        * the first of a solve that starts near the job's residual floor, e.g. after contact re-pairing);
        * after the first step also the Eisenstat-Walker term 0.9 (|F_k| / |F_k-1|)^2, so that far from the
        * solution the linear solve does not go beyond what the next Newton step can use; both at most
-       * forcing_max and at least -ksp_rtol. The first step of an increment is solved to -ksp_rtol (its
-       * tolerance is a 1e-9 reduction): a linear model converges in that one step. */
+       * forcing_max and at least -ksp_rtol. The first step of an increment thus gets 1e-9 (the job's first
+       * increment, whose tolerance is the 1e-8 floor) to 1e-10 (a 1e-9 reduction): a linear model converges
+       * in that one step. */
       const PetscReal tol = PetscMin(PetscMax(d->rtol * d->r0_u, d->atol_rel * su), PetscMax(d->rtol * d->r0_theta, d->atol_rel * st));
       PetscReal       eta = fnorm > 0 ? 0.1 * tol / fnorm : 0;
       KSP             ksp;
