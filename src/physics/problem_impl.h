@@ -132,10 +132,11 @@ struct _p_TslProblem {
     PetscInt *rec;                  /* records {nr, nc, rows[nr], cols[nc]} in local node numbers; NULL outside the pass */
     PetscInt  n, cap;               /* used and allocated length of rec */
   } pattern_pairs;
-  /* Direct insertion (TslProblemPreallocate): for an element whose nodes are all owned and whose rows are
-   * all free, blk[blk_ptr[e] + a*nb + b] is the place of node b's block among node a's blocks in the
-   * local diagonal CSR matrix (whole ndof x ndof blocks, sorted); blk_ptr[e] = blk_ptr[e+1] otherwise.
-   * During a Jacobian assembly jac_val / jac_row point at that matrix's values and row starts. */
+  /* Direct insertion (TslProblemPreallocate): for an element whose nodes are all owned and none of whose
+   * rows is eliminated by an equation, blk[blk_ptr[e] + a*nb + b] is the place of node b's block among
+   * node a's blocks in the local diagonal CSR matrix (whole ndof x ndof blocks, sorted; unset for a node
+   * without a free row); blk_ptr[e] = blk_ptr[e+1] otherwise. Rows of prescribed or pinned dofs are skipped
+   * when inserting. During a Jacobian assembly jac_val / jac_row point at that matrix's values and row starts. */
   PetscInt          *blk_ptr;
   unsigned short    *blk;
   PetscScalar       *jac_val;
