@@ -92,25 +92,34 @@ static PetscErrorCode ProjectionFunction(void *ctx, const PetscReal xi[2], TslDu
 
 /* The projection's parameters (unclamped) and whether it froze beyond the band, from the projection at the
  * start of the increment when that lies on the face (the node has moved little since: two Newton
- * iterations instead of four or five from the centre). The iterations need values only: the full kernel
- * runs them in the values copy (contact/values/), whose geometry carries no unknowns' derivatives, and
- * evaluates the full duals once, at the converged point (ProjectDual). */
+ * iterations instead of four or five from the centre). Values alone are needed: the full kernel runs these
+ * iterations in the values copy (contact/values/, TslContactProject3Raw), whose geometry carries no
+ * unknowns' derivatives, and evaluates the full duals once, at the converged point (ProjectDual). */
+static PetscErrorCode ProjectRaw(Geom3 *geo, const PetscReal start[2], PetscReal raw[2], PetscBool *frozen)
+{
+  PetscReal dist2 = 0, tol;
+
+  PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < 3; d++) dist2 += geo->xs[d].v * geo->xs[d].v;
+  tol    = 1e3 * PETSC_MACHINE_EPSILON * (1 + PetscSqrtReal(dist2) / geo->h) * geo->face->size;
+  raw[0] = geo->face->centre[0];
+  raw[1] = geo->face->centre[1];
+  if (start[0] >= geo->face->lo && start[0] <= geo->face->hi && start[1] >= geo->face->lo && start[1] <= geo->face->hi &&
+      start[0] + start[1] <= geo->face->sum)
+    raw[0] = start[0], raw[1] = start[1];
+  PetscCall(TslContactFace3Solve(geo->face, ProjectionFunction, geo, geo->face->affine && geo->s == 0 ? PETSC_MAX_REAL : 0.25 * geo->face->size, tol,
+                                 raw, frozen));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslContactProject3Raw(const TslContactInput3 *in, PetscReal raw[2], PetscBool *frozen)
 {
   Geom3           geo;
   const PetscReal start[2] = {in->hist.xi_old, in->hist.eta_old};
-  PetscReal       dist2    = 0, tol;
 
   PetscFunctionBeginUser;
   PetscCall(GeomSetUp(in, PETSC_FALSE, &geo));
-  for (PetscInt d = 0; d < 3; d++) dist2 += geo.xs[d].v * geo.xs[d].v;
-  tol    = 1e3 * PETSC_MACHINE_EPSILON * (1 + PetscSqrtReal(dist2) / geo.h) * geo.face->size;
-  raw[0] = geo.face->centre[0];
-  raw[1] = geo.face->centre[1];
-  if (start[0] >= geo.face->lo && start[0] <= geo.face->hi && start[1] >= geo.face->lo && start[1] <= geo.face->hi && start[0] + start[1] <= geo.face->sum)
-    raw[0] = start[0], raw[1] = start[1];
-  PetscCall(TslContactFace3Solve(geo.face, ProjectionFunction, &geo, geo.face->affine && geo.s == 0 ? PETSC_MAX_REAL : 0.25 * geo.face->size, tol, raw,
-                                 frozen));
+  PetscCall(ProjectRaw(&geo, start, raw, frozen));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -122,7 +131,10 @@ static PetscErrorCode ProjectDual(const TslContactInput3 *in, Geom3 *geo, TslDua
 
   PetscFunctionBeginUser;
 #if defined(TSL_DUAL_VALUES)
-  PetscCall(TslContactProject3Raw(in, raw, &frozen));
+  {
+    const PetscReal start[2] = {in->hist.xi_old, in->hist.eta_old};
+    PetscCall(ProjectRaw(geo, start, raw, &frozen)); /* this geometry already holds values alone */
+  }
 #else
   PetscCall(TslContactProject3Raw_Values(in, raw, &frozen));
 #endif
@@ -146,8 +158,6 @@ static PetscErrorCode ProjectDual(const TslContactInput3 *in, Geom3 *geo, TslDua
       xi[1].d[j] = x[1];
     }
   }
-#else
-  (void)geo;
 #endif
   PetscFunctionReturn(PETSC_SUCCESS);
 }
