@@ -32,7 +32,7 @@ static const char Usage[] = "usage: mpirun -n N thermoslide job.inp [-o DIR] [op
                             "  -tsl_direct_max_dofs N        direct solver by default up to N unknowns (20000 in 2D, 2000 in 3D)\n"
                             "  --help                        this text; -help lists every PETSc option as well\n"
                             "\n"
-                            "Solver defaults: -snes_type newtonls -ksp_type fgmres -pc_type fieldsplit (T, u) with BoomerAMG per field\n"
+                            "Solver defaults: -snes_type newtonls -ksp_type fgmres thermoslide's field split (T, then u) with BoomerAMG per field\n"
                             "(docs/running.md); models up to -tsl_direct_max_dofs unknowns, and on request for any model,\n"
                             "a direct solve: -pc_type lu -pc_factor_mat_solver_type mumps. -snes_monitor, -ksp_monitor, -log_view work\n"
                             "as usual. See docs/ for the keyword reference, element table and outputs.\n";

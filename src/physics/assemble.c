@@ -735,12 +735,21 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
     }
     maxc = PetscMax(maxc, ia[r + 1] - ia[r]);
   }
-  PetscCall(MatCreate(p->comm, &J));
-  PetscCall(MatSetSizes(J, p->nown * p->ndof, p->nown * p->ndof, PETSC_DETERMINE, PETSC_DETERMINE));
-  PetscCall(MatSetType(J, MATAIJ));
-  PetscCall(MatSetBlockSize(J, p->ndof));
-  PetscCall(MatSetFromOptions(J));
-  PetscCall(MatSetLocalToGlobalMapping(J, p->l2g, p->l2g));
+  if (p->J) {
+    /* a new pattern (contact pairing or constraints changed): the same matrix object preallocated again,
+     * which frees its old arrays before allocating the new ones. A second matrix beside the old one,
+     * which the solver still references until it is handed the new one, raised the peak memory of the
+     * 3D contact benchmark by the whole Jacobian (see docs/running.md "Contact at scale"). */
+    J = p->J;
+    p->J = NULL;
+  } else {
+    PetscCall(MatCreate(p->comm, &J));
+    PetscCall(MatSetSizes(J, p->nown * p->ndof, p->nown * p->ndof, PETSC_DETERMINE, PETSC_DETERMINE));
+    PetscCall(MatSetType(J, MATAIJ));
+    PetscCall(MatSetBlockSize(J, p->ndof));
+    PetscCall(MatSetFromOptions(J));
+    PetscCall(MatSetLocalToGlobalMapping(J, p->l2g, p->l2g));
+  }
   PetscCall(MatXAIJSetPreallocation(J, p->ndof, dnz, onz, NULL, NULL));
   PetscCall(PetscFree2(dnz, onz));
   PetscCall(PetscCalloc2(maxc * p->ndof, &zero, maxc * p->ndof, &pcols));

@@ -73,3 +73,11 @@ PetscErrorCode TslDriverPrintTables(Driver *d, const TslStep *step);
 PetscErrorCode TslExplicitSetFromOptions(Driver *d);
 /* One explicit step (explicit.c); *total_time advances by the step period. */
 PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time);
+
+/* thermoslide's default preconditioner (split.c): the temperature-displacement block Gauss-Seidel with the
+ * displacement block held once */
+PetscErrorCode TslSplitSetUp(PC pc, IS is_theta, IS is_u);
+PetscErrorCode TslSplitOptionType(const char *prefix, PetscBool *additive);
+PetscErrorCode TslSplitSetFromOptions(PC pc);
+PetscErrorCode TslSplitReset(PC pc);
+PetscErrorCode TslSplitIs(PC pc, PetscBool *is);
