@@ -92,6 +92,9 @@ PetscErrorCode TslProblemField(TslProblem prob, PetscInt i, PetscInt *ncomp, Pet
  * least one Newton step (otherwise the gaps, and so the next update, stay the same). Commit / Rollback:
  * accept or reject the increment's contact state. */
 PetscErrorCode TslProblemContactSearch(TslProblem prob, PetscBool *repattern);
+/* After a stop because a secondary node left its rank's held region of the main surface with
+ * -tsl_contact_rebuild left: the -tsl_contact_margin to restart the job with (0: no such stop). */
+PetscErrorCode TslProblemGetMarginRerun(TslProblem prob, PetscReal *margin);
 PetscErrorCode TslProblemContactUpdate(TslProblem prob, PetscBool *again, PetscBool *repattern, PetscBool *augmented);
 PetscErrorCode TslProblemContactCommit(TslProblem prob);
 PetscErrorCode TslProblemContactRollback(TslProblem prob);

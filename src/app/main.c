@@ -93,26 +93,19 @@ static int MakeDirectories(const char *path)
   return 0;
 }
 
-static PetscErrorCode Run(const char *deck)
+/* One attempt at the job: read, distribute, set up, run. *margin_rerun > 0 when it stopped because a contact
+ * node left its rank's held region of the main surface and the job is to restart with that margin. */
+static PetscErrorCode Attempt(const char *deck, const char *dir, const char *job, PetscReal *margin_rerun)
 {
   MPI_Comm       comm = PETSC_COMM_WORLD;
   PetscMPIInt    rank;
   TslModel      *global = NULL, *local = NULL;
   TslProblem     prob;
-  char           dir[PETSC_MAX_PATH_LEN] = ".", job[256];
-  PetscBool      set, alt_set;
   PetscErrorCode ierr = PETSC_SUCCESS;
 
   PetscFunctionBeginUser;
+  *margin_rerun = 0;
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-o", dir, sizeof(dir), &set));
-  {
-    /* both spellings are read (so neither is "unknown"); -o wins */
-    char alt[PETSC_MAX_PATH_LEN] = "";
-    PetscCall(PetscOptionsGetString(NULL, NULL, "-tsl_output_dir", alt, sizeof(alt), &alt_set));
-    if (!set && alt_set) PetscCall(PetscStrncpy(dir, alt, sizeof(dir)));
-  }
-  JobName(deck, job, sizeof(job));
   PetscCall(TslPhaseBegin(TSL_PHASE_READ));
   if (rank == 0) {
     ierr = TslDeckRead(deck, &global);
@@ -139,8 +132,65 @@ static PetscErrorCode Run(const char *deck)
   TslCallCollective(comm, TslProblemCreate(comm, local, &prob));
   PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
   ierr = TslAnalysisRun(prob, dir, job);
+  PetscCall(TslProblemGetMarginRerun(prob, margin_rerun));
   PetscCall(TslProblemDestroy(&prob));
+  if (*margin_rerun > 0) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCheck(!ierr, comm, ierr, " ");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The job. Each rank holds the part of a contact pair's main surface its secondary nodes can reach,
+ * chosen when the model is distributed (docs/contact.md, "Parallel exchange"); a node that leaves it stops
+ * the attempt (never a silent miss), and the job restarts from the deck with a larger margin, up to
+ * -tsl_contact_rebuild times: the held part is rebuilt at the cost of the increments redone. Result files
+ * of the job's own failed attempts (name.failed.*) are removed once it completes. */
+static PetscErrorCode Run(const char *deck)
+{
+  MPI_Comm  comm = PETSC_COMM_WORLD;
+  char      dir[PETSC_MAX_PATH_LEN] = ".", job[256], failed[3][PETSC_MAX_PATH_LEN + 300];
+  PetscBool set, alt_set, had_failed[3];
+  PetscInt  rebuilds = 8, attempts = 0;
+  PetscReal margin;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-o", dir, sizeof(dir), &set));
+  {
+    /* both spellings are read (so neither is "unknown"); -o wins */
+    char alt[PETSC_MAX_PATH_LEN] = "";
+    PetscCall(PetscOptionsGetString(NULL, NULL, "-tsl_output_dir", alt, sizeof(alt), &alt_set));
+    if (!set && alt_set) PetscCall(PetscStrncpy(dir, alt, sizeof(dir)));
+  }
+  PetscOptionsBegin(comm, NULL, "thermoslide job", NULL);
+  PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_contact_rebuild",
+                          "contact: restarts of the job with a larger -tsl_contact_margin when a secondary node leaves its rank's held region of "
+                          "the main surface (0: stop instead, naming the margin to rerun with)",
+                          0, 100, &rebuilds));
+  PetscOptionsEnd();
+  JobName(deck, job, sizeof(job));
+  for (PetscInt i = 0; i < 3; i++) {
+    PetscCall(PetscSNPrintf(failed[i], sizeof(failed[i]), "%s/%s.failed.%s", dir, job, (const char *[]){"h5", "xmf", "csv"}[i]));
+    PetscCall(PetscTestFile(failed[i], 'r', &had_failed[i]));
+    PetscCallMPI(MPI_Bcast(&had_failed[i], 1, MPIU_BOOL, 0, comm));
+  }
+  for (;;) {
+    char value[64];
+    PetscCall(PetscSNPrintf(value, sizeof(value), "%" PetscInt_FMT, rebuilds - attempts));
+    PetscCall(PetscOptionsSetValue(NULL, "-tsl_contact_rebuild", value));
+    PetscCall(PetscOptionsHasName(NULL, NULL, "-tsl_contact_rebuild", &set)); /* read here: a set value counts as unread */
+    PetscCall(Attempt(deck, dir, job, &margin));
+    if (margin <= 0) break;
+    attempts++;
+    PetscCall(PetscSNPrintf(value, sizeof(value), "%.17g", (double)margin));
+    PetscCall(PetscOptionsSetValue(NULL, "-tsl_contact_margin", value));
+    PetscCall(PetscPrintf(comm, "thermoslide: restart %" PetscInt_FMT " of at most %" PetscInt_FMT " (-tsl_contact_rebuild) with -tsl_contact_margin %g\n",
+                          attempts, rebuilds, (double)margin));
+  }
+  if (attempts) {
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(comm, &rank));
+    for (PetscInt i = 0; i < 3 && rank == 0; i++)
+      if (!had_failed[i]) (void)remove(failed[i]);
+  }
   PetscCall(TslOptionsCheckUnused(comm, PETSC_FALSE));
   PetscCall(TslPhasesReport(comm));
   PetscCall(PetscPrintf(comm, "thermoslide: completed\n"));

@@ -7,7 +7,8 @@
  * main-surface data it needs arrives with the ordinary ghost update in every Newton iteration, and the
  * contact blocks are inserted through the same constraint-aware path as element blocks (rows of ghost
  * nodes reach their owners through PETSc's stash). Before every search CheckHeldRegion proves that no
- * node can reach a face this rank does not hold, or stops the run naming the node.
+ * node can reach a face this rank does not hold, or stops the attempt naming the node (the job then restarts
+ * with a larger margin, src/app/main.c, or stops for good with -tsl_contact_rebuild 0).
  *
  * Pairing: a bin grid over the current main segments gives the candidates of each secondary node (never
  * a loop over all pairs); the nearest segment whose projection lies inside it wins. A node whose
@@ -284,9 +285,10 @@ static PetscErrorCode Search(TslProblem p, const PetscScalar *xa, PetscInt *chan
  * box lies within hull * D of its reference box, D the largest displacement of any main-surface node
  * (per coordinate, a maximum over the owners). The search finds the faces whose current box meets the
  * node's query box, its current position +- the search radius. So a query box inside B shrunk by hull * D
- * meets only held faces. If some query box is not, the part held would have to be rebuilt; that is not
- * implemented, so the run stops (all ranks) naming the node, the rank, the margin and the margin that
- * would have avoided it; the driver saves the last converged state. */
+ * meets only held faces. If some query box is not, the part held must be rebuilt: the run stops (all
+ * ranks) naming the node, the rank and the margin; the driver saves the last converged state, and with
+ * restarts left (-tsl_contact_rebuild) the job restarts from its start with twice the margin that would
+ * have avoided it (src/app/main.c), otherwise the message says which margin to rerun with. */
 static PetscErrorCode CheckHeldRegion(TslProblem p, const PetscScalar *xa)
 {
   const TslModel *m   = p->m;
@@ -312,6 +314,13 @@ static PetscErrorCode CheckHeldRegion(TslProblem p, const PetscScalar *xa)
     PetscReal                lo[3], hi[3], excess;
     PetscInt                 node;
     if (!pair->held) continue;
+    {
+      /* a rank that holds every face of the main surface, none of them only as a neighbour, misses none */
+      PetscBool all = (PetscBool)(pair->nmain == pair->nmain_global);
+      for (PetscInt f = 0; f < pair->nmain && all; f++)
+        if (cs->ring[f]) all = PETSC_FALSE;
+      if (all) continue;
+    }
     for (PetscInt d = 0; d < dim; d++) lo[d] = pair->held_box[d] + cs->hull * Dg[3 * k + d], hi[d] = pair->held_box[3 + d] - cs->hull * Dg[3 * k + d];
     for (PetscInt i = 0; i < p->ncnode; i++) {
       const TslContactNode *cn = &p->cnode[i];
@@ -333,26 +342,52 @@ static PetscErrorCode CheckHeldRegion(TslProblem p, const PetscScalar *xa)
     if (all[r] > 0 && (root < 0 || all[r] > all[root])) root = r;
   PetscCall(PetscFree(all));
   if (root >= 0) {
-    char     msg[1024] = "";
-    PetscInt info[2]   = {wpair, wnode};
+    char      msg[1024] = "", what[160];
+    PetscInt  info[2]   = {wpair, wnode}, rebuilds = 0;
+    PetscReal need, rerun = 0;
     PetscCallMPI(MPI_Bcast(info, 2, MPIU_INT, root, p->comm));
     PetscCallMPI(MPI_Bcast(worst, 1, MPIU_REAL, root, p->comm));
+    /* restarts left (the job's driver, src/app/main.c, counts them down) */
+    PetscCall(PetscOptionsGetInt(NULL, NULL, "-tsl_contact_rebuild", &rebuilds, NULL));
     {
       const TslContactPair *pair = &m->pairs[info[0]];
       const PetscReal      *Dk   = &Dg[3 * info[0]];
+      need                       = pair->margin + worst[0];
+      if (rebuilds > 0) {
+        /* twice what would have avoided it (the sliding may go on: doubling bounds the work redone to that
+         * of one more run), and never less than any pair's margin now (the option sets all pairs') */
+        rerun = 2 * need;
+        for (PetscInt k = 0; k < p->ncsurf; k++) rerun = PetscMax(rerun, m->pairs[k].margin);
+        PetscCall(PetscSNPrintf(what, sizeof(what), "the held part is rebuilt: the job restarts from its start with -tsl_contact_margin %g", (double)rerun));
+      } else
+        PetscCall(PetscSNPrintf(what, sizeof(what),
+                                "rerun with -tsl_contact_margin %g or more (the margin that would have avoided it here; more if the sliding goes on)",
+                                (double)need));
       PetscCall(PetscSNPrintf(msg, sizeof(msg),
                               "contact pair %" PetscInt_FMT " (%s on %s): secondary node %" PetscInt_FMT " on rank %d can reach main faces that rank does "
                               "not hold: its search box (current position +- the search radius %g) leaves the rank's held region (the reference box "
-                              "of its secondary nodes inflated by the margin %g, shrunk by the main surface's largest displacement %g) by %g. A "
-                              "rebuild of the held part during the run is not implemented: rerun with -tsl_contact_margin %g or more (the margin "
-                              "that would have avoided it here; more if the sliding goes on)",
+                              "of its secondary nodes inflated by the margin %g, shrunk by the main surface's largest displacement %g) by %g; %s",
                               info[0] + 1, pair->secondary, pair->main, info[1], (int)root, (double)p->csurf[info[0]].search_radius, (double)pair->margin,
-                              (double)PetscSqrtReal(Dk[0] * Dk[0] + Dk[1] * Dk[1] + Dk[2] * Dk[2]), (double)worst[0], (double)(pair->margin + worst[0])));
+                              (double)PetscSqrtReal(Dk[0] * Dk[0] + Dk[1] * Dk[1] + Dk[2] * Dk[2]), (double)worst[0], what));
     }
     PetscCall(PetscFree2(D, Dg));
+    if (rerun > 0) {
+      /* not an error for the user: the log says what happens, and the stop (a blank message, which the
+       * error handler does not print) unwinds to the driver, which saves the converged increments */
+      p->margin_rerun = rerun;
+      PetscCall(PetscPrintf(p->comm, "%s\n", msg));
+      SETERRQ(p->comm, PETSC_ERR_USER_INPUT, " ");
+    }
     SETERRQ(p->comm, PETSC_ERR_USER_INPUT, "%s", msg);
   }
   PetscCall(PetscFree2(D, Dg));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemGetMarginRerun(TslProblem p, PetscReal *margin)
+{
+  PetscFunctionBeginUser;
+  *margin = p->margin_rerun;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -369,7 +404,15 @@ PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
   if (!p->ncsurf) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
   PetscCall(TslPhaseBegin(TSL_PHASE_SEARCH));
-  PetscCall(CheckHeldRegion(p, xa));
+  {
+    /* a node beyond the held region stops the attempt (the job may restart): let go of the local form first */
+    PetscErrorCode ierr = CheckHeldRegion(p, xa);
+    if (ierr) {
+      PetscCall(TslPhaseEnd(TSL_PHASE_SEARCH));
+      PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+    }
+    PetscCall(ierr);
+  }
   PetscCall(Search(p, xa, &changed));
   {
     PetscInt c2;
