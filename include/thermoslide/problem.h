@@ -41,6 +41,9 @@ PetscErrorCode TslProblemGetSolution(TslProblem prob, Vec *X);
 PetscErrorCode TslProblemGetOldSolution(TslProblem prob, Vec *Xold);
 /* Matrix with the exact nonzero pattern of the current constraints (re-preallocated by SetStep). */
 PetscErrorCode TslProblemGetJacobian(TslProblem prob, Mat *J);
+/* How many patterns the Jacobian has had: a new pattern keeps the matrix object, so this is how a solver
+ * holding blocks of the old one learns of it. */
+PetscErrorCode TslProblemGetPatternGeneration(TslProblem prob, PetscInt *gen);
 /* Index sets of the displacement and temperature dofs owned here (for PCFIELDSPLIT). */
 PetscErrorCode TslProblemGetFieldIS(TslProblem prob, IS *is_u, IS *is_theta);
 

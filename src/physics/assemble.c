@@ -774,6 +774,7 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   PetscCall(BuildDirectMap(p, J));
   PetscCall(MatDestroy(&p->J));
   p->J = J;
+  p->pattern_gen++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

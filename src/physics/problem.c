@@ -442,6 +442,13 @@ PetscErrorCode TslProblemGetJacobian(TslProblem p, Mat *J)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemGetPatternGeneration(TslProblem p, PetscInt *gen)
+{
+  PetscFunctionBeginUser;
+  *gen = p->pattern_gen;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemGetFieldIS(TslProblem p, IS *is_u, IS *is_theta)
 {
   PetscFunctionBeginUser;

@@ -495,6 +495,22 @@ static PetscErrorCode ReleaseSubSolvers(Driver *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Hands the problem's Jacobian to the solver; after a new pattern (contact pairing at an increment, or
+ * constraints at a step start) the preconditioner first lets go of what it built on the old one. */
+static PetscErrorCode HandJacobian(Driver *d)
+{
+  Mat      J;
+  PetscInt gen;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetJacobian(d->prob, &J));
+  PetscCall(SNESSetJacobian(d->snes, J, J, TslProblemFormJacobian, d->prob));
+  PetscCall(TslProblemGetPatternGeneration(d->prob, &gen));
+  if (d->pattern_gen && gen != d->pattern_gen) PetscCall(ReleaseSubSolvers(d));
+  d->pattern_gen = gen;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode SolveIncrement(Driver *d, Vec X, SNESConvergedReason *reason, PetscInt *its, PetscInt *lits)
 {
   PetscBool again = PETSC_TRUE, repattern, augmented = PETSC_FALSE;
@@ -507,12 +523,7 @@ static PetscErrorCode SolveIncrement(Driver *d, Vec X, SNESConvergedReason *reas
   PetscCall(TslPhaseEnd(TSL_PHASE_CONTACT));
   while (again) {
     PetscInt i, l;
-    if (repattern) {
-      Mat J;
-      PetscCall(TslProblemGetJacobian(d->prob, &J));
-      PetscCall(SNESSetJacobian(d->snes, J, J, TslProblemFormJacobian, d->prob));
-      PetscCall(ReleaseSubSolvers(d));
-    }
+    if (repattern) PetscCall(HandJacobian(d));
     naug += augmented;
     n++;
     PetscCall(SNESSetForceIteration(d->snes, augmented));
@@ -583,7 +594,6 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   const TslModel *m;
   const TslStep  *step;
   Vec             X, Xold;
-  Mat             J;
   PetscReal       t   = 0, dt, eps;
   PetscInt        inc = 0, attempts = 0;
 
@@ -595,8 +605,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));
   TslCallCollective(d->comm, TslProblemSetStep(d->prob, s));
   PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
-  PetscCall(TslProblemGetJacobian(d->prob, &J));
-  PetscCall(SNESSetJacobian(d->snes, J, J, TslProblemFormJacobian, d->prob));
+  PetscCall(HandJacobian(d));
   PetscCall(TslDriverSetOutputRequests(d, step));
   PetscCall(TslProblemGetSolution(d->prob, &X));
   PetscCall(TslProblemGetOldSolution(d->prob, &Xold));
