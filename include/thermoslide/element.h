@@ -186,10 +186,13 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
  *                           viscosity forces, when eta > 0 or eta2 > 0: TslElementBulkViscosity's eta1,
  *                           eta2) and the power dissipated by the viscosity
  * u[] and v[] are laid out as in->u (theta last at each node), ti[] the nodal initial temperatures. */
-#define TSL_FAST_MAX_NODES 10 /* tet10 */
-#define TSL_FAST_MAX_QP    9  /* quad8's full rule */
+#define TSL_FAST_MAX_NODES 10  /* tet10 */
+#define TSL_FAST_MAX_QP    9   /* quad8's full rule */
+#define TSL_FAST_MAX_SIZE  384 /* reals in the largest record (quad8 axisymmetric: 322) */
+#define TSL_FAST_LANES     4   /* elements per batch */
 typedef struct {
   PetscInt  row;                                    /* the fast row (-1: none) */
+  PetscInt  size;                                   /* reals in its records */
   PetscReal N[TSL_FAST_MAX_QP][TSL_FAST_MAX_NODES]; /* N[q][a] at the mechanical points */
 } TslElementFastShape;
 
@@ -202,6 +205,16 @@ void      TslElementFastForce(const TslElementFastShape *shape, const PetscReal 
  * TslElementOutput's strain_energy and hourglass_energy (the explicit history rows' ALLSE). */
 void TslElementFastEnergy(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal *strain,
                           PetscReal *hourglass);
+/* The same for a batch of TSL_FAST_LANES elements of one type at once (what the explicit loop calls): every
+ * array interleaved by lane, value k of lane j at [k * TSL_FAST_LANES + j] (records, u, ti, v, R, Rv),
+ * eta[], eta2[], power[], strain[], hourglass[] one per lane. v and Rv are NULL together (no bulk
+ * viscosity: power 0); otherwise a lane with eta = eta2 = 0 gets zero forces and power.
+ * TslElementFastInterleave stores a record (or any array of size reals) as lane `lane` of a batch. */
+void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
+                              const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[], PetscReal power[]);
+void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal strain[],
+                               PetscReal hourglass[]);
+void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[], PetscReal batch[]);
 
 /* Lumped nodal quantities of the element at its current temperatures:
  *   Q[a] heat content  rho V_a e(theta_a)  (material.h: e = int c dtheta)

@@ -23,6 +23,7 @@
  * path to rounding (tests/element/fast_records.c). Memory: C3D8T 2.4 kB, C3D8RT 1.1 kB per element.
  */
 #include "element_impl.h"
+#include <string.h>
 
 #define HEADER 8
 
@@ -47,87 +48,119 @@ static inline Layout LayoutOf(PetscInt dim, PetscInt n, PetscInt nq, PetscInt nh
   return L;
 }
 
-/* The force of one element (see the file's head). Inlined into each row's function with constant sizes.
- * Gradients are stored by component ([d][a]) and the unknowns split by component first, so that every sum
- * over the nodes is over contiguous arrays of constant length: what the vectoriser needs. */
+/* Lanes: the kernel works on TSL_FAST_LANES elements of one row at a time, every real a vector of their
+ * values (GCC/Clang vector extensions: the compiler maps them on AVX2 registers in the x86-64-v3 clone, on
+ * pairs of SSE2 registers in the baseline one), so each instruction serves the batch's elements alike and
+ * the sums over an element's nodes need no horizontal adds or shuffles. A batch's records are interleaved
+ * by lane (value k of lane j at rec[k * W + j]); the unknowns and results likewise. */
+#define W TSL_FAST_LANES
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wpsabi" /* the helpers below are always inlined: no vector crosses a call */
+#endif
+typedef PetscReal V __attribute__((vector_size(W * sizeof(PetscReal))));
+typedef long long VI __attribute__((vector_size(W * sizeof(PetscReal))));
+
+static inline __attribute__((always_inline)) V Ld(const PetscReal *p)
+{
+  V v;
+  memcpy(&v, p, sizeof(v));
+  return v;
+}
+static inline __attribute__((always_inline)) void St(PetscReal *p, V v) { memcpy(p, &v, sizeof(v)); }
+
+/* The forces of one batch (see the file's head). Inlined into each row's function with constant sizes.
+ * Gradients are stored by component ([d][a]) and the unknowns split by component first. */
 static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
                                                         const PetscBool axi, const TslElementFastShape *shape, const PetscReal *rec,
-                                                        const PetscReal *u, const PetscReal *ti, const PetscReal *v, PetscReal eta, PetscReal eta2,
-                                                        PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)
+                                                        const PetscReal *u, const PetscReal *ti, const PetscReal *v, const PetscReal *eta,
+                                                        const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)
 {
-  const PetscInt  nd     = dim + 1;
-  const Layout    L      = LayoutOf(dim, n, nq, nh, axi);
-  const PetscReal lambda = rec[1], mu = rec[2], alpha = rec[3];
-  PetscReal       U[3][TSL_FAST_MAX_NODES], th[TSL_FAST_MAX_NODES], dth[TSL_FAST_MAX_NODES], F[3][TSL_FAST_MAX_NODES], Fth[TSL_FAST_MAX_NODES];
+  const PetscInt nd     = dim + 1;
+  const Layout   L      = LayoutOf(dim, n, nq, nh, axi);
+  const V        lambda = Ld(rec + 1 * W), mu = Ld(rec + 2 * W), alpha = Ld(rec + 3 * W);
+  V              U[3][TSL_FAST_MAX_NODES], th[TSL_FAST_MAX_NODES], dth[TSL_FAST_MAX_NODES], F[3][TSL_FAST_MAX_NODES], Fth[TSL_FAST_MAX_NODES];
+  V              en[2] = {{0}, {0}};
 
   for (PetscInt a = 0; a < n; a++) {
-    for (PetscInt d = 0; d < dim; d++) U[d][a] = u[nd * a + d], F[d][a] = 0;
-    th[a] = u[nd * a + dim], dth[a] = th[a] - ti[a];
+    for (PetscInt d = 0; d < dim; d++) U[d][a] = Ld(u + (nd * a + d) * W), F[d][a] = (V){0};
+    th[a] = Ld(u + (nd * a + dim) * W), dth[a] = th[a] - Ld(ti + a * W);
   }
   for (PetscInt q = 0; q < nq; q++) {
-    const PetscReal *Gx = rec + L.G + q * n * dim, *Gy = Gx + n, *Gz = Gy + n, *Nr = rec + L.Nr + q * n, *Nq = shape->N[q], dV = rec[L.dV + q];
-    PetscReal        e[6] = {0, 0, 0, 0, 0, 0}, s[6], eth = 0, tr;
+    const PetscReal *Gx = rec + (L.G + q * n * dim) * W, *Gy = Gx + n * W, *Gz = Gy + n * W, *Nr = rec + (L.Nr + q * n) * W, *Nq = shape->N[q];
+    const V          dV = Ld(rec + (L.dV + q) * W);
+    V                e[6] = {{0}, {0}, {0}, {0}, {0}, {0}}, s[6], eth = {0}, tr;
     for (PetscInt a = 0; a < n; a++) eth += Nq[a] * dth[a];
     eth *= alpha;
     for (PetscInt a = 0; a < n; a++) {
-      e[0] += Gx[a] * U[0][a];
-      e[1] += Gy[a] * U[1][a];
-      e[3] += Gy[a] * U[0][a] + Gx[a] * U[1][a];
+      const V gx = Ld(Gx + a * W), gy = Ld(Gy + a * W);
+      e[0] += gx * U[0][a];
+      e[1] += gy * U[1][a];
+      e[3] += gy * U[0][a] + gx * U[1][a];
       if (dim == 3) {
-        e[2] += Gz[a] * U[2][a];
-        e[4] += Gz[a] * U[0][a] + Gx[a] * U[2][a];
-        e[5] += Gz[a] * U[1][a] + Gy[a] * U[2][a];
+        const V gz = Ld(Gz + a * W);
+        e[2] += gz * U[2][a];
+        e[4] += gz * U[0][a] + gx * U[2][a];
+        e[5] += gz * U[1][a] + gy * U[2][a];
       } else if (axi)
-        e[2] += Nr[a] * U[0][a];
+        e[2] += Ld(Nr + a * W) * U[0][a];
     }
     tr = e[0] + e[1] + e[2] - 3 * eth;
     for (PetscInt r = 0; r < 3; r++) s[r] = (lambda * tr + 2 * mu * (e[r] - eth)) * dV;
     for (PetscInt r = 3; r < 6; r++) s[r] = mu * e[r] * dV;
     if (energy) /* 1/2 sigma : eps_mech dV, as the generic output (kernels.c, Mechanics) */
-      for (PetscInt r = 0; r < 6; r++) energy[0] += 0.5 * s[r] * (r < 3 ? e[r] - eth : e[r]);
+      for (PetscInt r = 0; r < 6; r++) en[0] += 0.5 * s[r] * (r < 3 ? e[r] - eth : e[r]);
     for (PetscInt a = 0; a < n; a++) {
+      const V gx = Ld(Gx + a * W), gy = Ld(Gy + a * W);
       if (dim == 3) {
-        F[0][a] += Gx[a] * s[0] + Gy[a] * s[3] + Gz[a] * s[4];
-        F[1][a] += Gy[a] * s[1] + Gx[a] * s[3] + Gz[a] * s[5];
-        F[2][a] += Gz[a] * s[2] + Gx[a] * s[4] + Gy[a] * s[5];
+        const V gz = Ld(Gz + a * W);
+        F[0][a] += gx * s[0] + gy * s[3] + gz * s[4];
+        F[1][a] += gy * s[1] + gx * s[3] + gz * s[5];
+        F[2][a] += gz * s[2] + gx * s[4] + gy * s[5];
       } else {
-        F[0][a] += Gx[a] * s[0] + Gy[a] * s[3] + (axi ? Nr[a] * s[2] : 0);
-        F[1][a] += Gy[a] * s[1] + Gx[a] * s[3];
+        F[0][a] += gx * s[0] + gy * s[3];
+        if (axi) F[0][a] += Ld(Nr + a * W) * s[2];
+        F[1][a] += gy * s[1] + gx * s[3];
       }
     }
   }
-  for (PetscInt a = 0; a < n; a++) Fth[a] = 0;
+  for (PetscInt a = 0; a < n; a++) Fth[a] = (V){0};
   for (PetscInt b = 0; b < n; b++) { /* K is symmetric: column b times theta_b, contiguous */
-    const PetscReal *K = rec + L.K + b * n;
-    for (PetscInt a = 0; a < n; a++) Fth[a] += K[a] * th[b];
+    const PetscReal *K = rec + (L.K + b * n) * W;
+    for (PetscInt a = 0; a < n; a++) Fth[a] += Ld(K + a * W) * th[b];
   }
   for (PetscInt k = 0; k < nh; k++) {
-    const PetscReal *gam = rec + L.gamma + k * n;
+    const PetscReal *gam   = rec + (L.gamma + k * n) * W;
+    const V          kappa = Ld(rec + 5 * W);
     for (PetscInt d = 0; d < dim; d++) {
-      PetscReal qk = 0;
-      for (PetscInt a = 0; a < n; a++) qk += gam[a] * U[d][a];
-      if (energy) energy[1] += 0.5 * rec[5] * qk * qk;
-      qk *= rec[5];
-      for (PetscInt a = 0; a < n; a++) F[d][a] += gam[a] * qk;
+      V qk = {0};
+      for (PetscInt a = 0; a < n; a++) qk += Ld(gam + a * W) * U[d][a];
+      if (energy) en[1] += 0.5 * kappa * qk * qk;
+      qk *= kappa;
+      for (PetscInt a = 0; a < n; a++) F[d][a] += Ld(gam + a * W) * qk;
     }
   }
   for (PetscInt a = 0; a < n; a++) {
-    for (PetscInt d = 0; d < dim; d++) R[nd * a + d] = F[d][a];
-    R[nd * a + dim] = Fth[a];
+    for (PetscInt d = 0; d < dim; d++) St(R + (nd * a + d) * W, F[d][a]);
+    St(R + (nd * a + dim) * W, Fth[a]);
   }
-  *power = 0;
-  if ((eta > 0 || eta2 > 0) && Rv) {
-    const PetscReal *Gc = rec + L.Gc, *Nrc = rec + L.Nrc, Vc = rec[L.Vc];
-    PetscReal        rate = 0, p;
+  if (energy) St(energy, en[0]), St(energy + W, en[1]);
+  if (Rv) { /* lanes without viscosity (eta = eta2 = 0) get zero forces and power */
+    const PetscReal *Gc = rec + L.Gc * W, *Nrc = rec + L.Nrc * W;
+    const V          Vc = Ld(rec + L.Vc * W), cd = Ld(rec + 4 * W);
+    V                rate = {0}, p, neg, gd[3][TSL_FAST_MAX_NODES];
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt d = 0; d < dim; d++) rate += (Gc[d * n + a] + (axi && d == 0 ? Nrc[a] : 0)) * v[nd * a + d];
-    p = eta * rec[4] * rate;
-    if (rate < 0) p -= eta2 * rec[4] * rate * rate; /* the quadratic term, in compression only */
+      for (PetscInt d = 0; d < dim; d++) {
+        gd[d][a] = Ld(Gc + (d * n + a) * W);
+        if (axi && d == 0) gd[d][a] += Ld(Nrc + a * W);
+        rate += gd[d][a] * Ld(v + (nd * a + d) * W);
+      }
+    neg = (V)((VI)rate & (rate < 0)); /* the quadratic term, in compression only */
+    p   = Ld(eta) * cd * rate - Ld(eta2) * cd * neg * neg;
     for (PetscInt a = 0; a < n; a++) {
-      for (PetscInt d = 0; d < dim; d++) Rv[nd * a + d] = p * (Gc[d * n + a] + (axi && d == 0 ? Nrc[a] : 0)) * Vc;
-      Rv[nd * a + dim] = 0;
+      for (PetscInt d = 0; d < dim; d++) St(Rv + (nd * a + d) * W, p * gd[d][a] * Vc);
+      St(Rv + (nd * a + dim) * W, (V){0});
     }
-    *power = p * rate * Vc;
+    St(power, p * rate * Vc);
   }
 }
 
@@ -141,7 +174,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
 #endif
 #define FORCE_ROW(name, dim, n, nq, nh, axi)                                                                                                         \
   CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,          \
-                          PetscReal eta, PetscReal eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)                           \
+                          const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)             \
   {                                                                                                                                                  \
     Force(dim, n, nq, nh, axi, sh, rec, u, ti, v, eta, eta2, R, Rv, power, energy);                                                                  \
   }
@@ -161,8 +194,8 @@ FORCE_ROW(Tri3FullAxi, 2, 3, 1, 0, PETSC_TRUE)
 FORCE_ROW(Tri6FullAxi, 2, 6, 3, 0, PETSC_TRUE)
 FORCE_ROW(Quad8FullAxi, 2, 8, 9, 0, PETSC_TRUE)
 
-typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, PetscReal, PetscReal,
-                        PetscReal *, PetscReal *, PetscReal *, PetscReal *);
+typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *,
+                        const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
 
 /* The rows: which (family, formulation, kinematics) have a record, and its sizes. */
 typedef struct {
@@ -212,8 +245,9 @@ PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *s
   const TslQuadrature *quad;
   PetscReal            dN[TSL_MAX_ELEM_NODES * 3], N[TSL_MAX_ELEM_NODES];
 
-  shape->row = r;
-  if (r < 0) return PETSC_FALSE;
+  shape->row = r, shape->size = 0;
+  if (r < 0 || RowLayout(r).size > TSL_FAST_MAX_SIZE) return PETSC_FALSE;
+  shape->size = RowLayout(r).size;
   quad = t->form->quadrature(t->geom);
   for (PetscInt q = 0; q < quad->n; q++) {
     t->geom->shape(quad->xi[q], N, dN);
@@ -290,17 +324,75 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   return PETSC_TRUE;
 }
 
+void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[], PetscReal batch[])
+{
+  for (PetscInt k = 0; k < size; k++) batch[k * W + lane] = rec[k];
+}
+
+void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
+                              const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[], PetscReal power[])
+{
+  if (!Rv)
+    for (PetscInt j = 0; j < W; j++) power[j] = 0;
+  Rows[shape->row].force(shape, rec, u, ti, v, eta, eta2, R, Rv, power, NULL);
+}
+
+void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal strain[],
+                               PetscReal hourglass[])
+{
+  PetscReal R[TSL_MAX_ELEM_DOF * W], energy[2 * W];
+
+  Rows[shape->row].force(shape, rec, u, ti, NULL, NULL, NULL, R, NULL, NULL, energy);
+  for (PetscInt j = 0; j < W; j++) strain[j] = energy[j], hourglass[j] = energy[W + j];
+}
+
+/* One element: its record and data copied into every lane of a batch (tests and benchmarks; the explicit
+ * loop calls the batch functions). */
+typedef struct {
+  PetscReal rec[TSL_FAST_MAX_SIZE * W], u[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], v[TSL_MAX_ELEM_DOF * W], R[TSL_MAX_ELEM_DOF * W],
+    Rv[TSL_MAX_ELEM_DOF * W];
+} Single;
+
+static void SingleFill(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
+                       Single *s)
+{
+  const FastRow *row = &Rows[shape->row];
+  const PetscInt n = row->geom->nnode, nd = n * (row->geom->dim + 1);
+
+  for (PetscInt j = 0; j < W; j++) {
+    TslElementFastInterleave(RowLayout(shape->row).size, j, rec, s->rec);
+    TslElementFastInterleave(nd, j, u, s->u);
+    TslElementFastInterleave(n, j, ti, s->ti);
+    if (v) TslElementFastInterleave(nd, j, v, s->v);
+  }
+}
+
 void TslElementFastForce(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
                          PetscReal eta, PetscReal eta2, PetscReal R[], PetscReal Rv[], PetscReal *power)
 {
-  Rows[shape->row].force(shape, rec, u, ti, v, eta, eta2, R, Rv, power, NULL);
+  Single         s;
+  const FastRow *row = &Rows[shape->row];
+  const PetscInt nd  = row->geom->nnode * (row->geom->dim + 1);
+  const PetscBool bv = (eta > 0 || eta2 > 0) && Rv ? PETSC_TRUE : PETSC_FALSE;
+  PetscReal      e1[W], e2[W], w[W];
+
+  for (PetscInt j = 0; j < W; j++) e1[j] = eta, e2[j] = eta2;
+  SingleFill(shape, rec, u, ti, bv ? v : NULL, &s);
+  TslElementFastForceBatch(shape, s.rec, s.u, s.ti, bv ? s.v : NULL, e1, e2, s.R, bv ? s.Rv : NULL, w);
+  for (PetscInt i = 0; i < nd; i++) {
+    R[i] = s.R[i * W];
+    if (bv) Rv[i] = s.Rv[i * W];
+  }
+  *power = w[0];
 }
 
 void TslElementFastEnergy(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal *strain,
                           PetscReal *hourglass)
 {
-  PetscReal R[TSL_MAX_ELEM_DOF], w, energy[2] = {0, 0};
+  Single    s;
+  PetscReal se[W], hg[W];
 
-  Rows[shape->row].force(shape, rec, u, ti, NULL, 0, 0, R, NULL, &w, energy);
-  *strain = energy[0], *hourglass = energy[1];
+  SingleFill(shape, rec, u, ti, NULL, &s);
+  TslElementFastEnergyBatch(shape, s.rec, s.u, s.ti, se, hg);
+  *strain = se[0], *hourglass = hg[0];
 }

@@ -75,73 +75,118 @@ static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* An element's unknowns and initial temperatures, nd unknowns per node (a constant where inlined). */
-static inline __attribute__((always_inline)) void GatherNd(TslProblem p, PetscInt e, const PetscScalar *restrict xa, PetscReal u[], PetscReal ti[],
-                                                           const PetscInt nd)
+#define W TSL_FAST_LANES
+
+/* Lane j of a batch: element e's unknowns (and initial temperatures, ti not NULL), nd unknowns per node (a
+ * constant where inlined), interleaved by lane as TslElementFastForceBatch takes them. */
+static inline __attribute__((always_inline)) void GatherLane(TslProblem p, PetscInt e, PetscInt j, const PetscScalar *restrict xa, PetscReal u[],
+                                                             PetscReal ti[], const PetscInt nd)
 {
   const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0;
   const PetscInt *ln = &p->elem_lnode[k0];
 
   for (PetscInt a = 0; a < n; a++) {
     const PetscInt l = ln[a];
-    for (PetscInt i = 0; i < nd; i++) u[nd * a + i] = PetscRealPart(xa[nd * l + i]);
-    ti[a] = p->theta_init[l];
+    for (PetscInt i = 0; i < nd; i++) u[(nd * a + i) * W + j] = PetscRealPart(xa[nd * l + i]);
+    if (ti) ti[a * W + j] = p->theta_init[l];
   }
 }
 
-void TslProblemFastGather(TslProblem p, PetscInt e, const PetscScalar *restrict xa, PetscReal u[], PetscReal ti[])
-{
-  GatherNd(p, e, xa, u, ti, p->ndof);
-}
-
-/* The same from the element's record (TslElementFastForce): a gather of the unknowns alone, no geometry.
- * Inlined with the dofs per node a constant (FastElement3, FastElement4), so a node's unknowns move as one
- * short copy rather than a loop of run-time length. */
-static inline __attribute__((always_inline)) void FastElementNd(TslProblem p, PetscInt e, const PetscScalar *restrict xa, ForceCtx *c,
-                                                                const PetscInt nd)
+/* Lane j of a batch's results added into element e's rows of f. */
+static inline __attribute__((always_inline)) void ScatterLane(TslProblem p, PetscInt e, PetscInt j, const PetscReal R[], PetscScalar *restrict f,
+                                                              const PetscInt nd)
 {
   const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0;
-  const PetscInt *ln  = &p->elem_lnode[k0];
-  const PetscReal eta = c->fv ? c->eta[e] : 0, eta2 = c->fv ? c->eta2[e] : 0;
-  const PetscBool bv       = eta > 0 || eta2 > 0 ? PETSC_TRUE : PETSC_FALSE;
-  PetscScalar *restrict fi = c->fi, *restrict fv = c->fv;
-  const PetscScalar *restrict va = c->v;
-  PetscReal u[TSL_MAX_ELEM_DOF], v[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES], R[TSL_MAX_ELEM_DOF], Rv[TSL_MAX_ELEM_DOF], w;
+  const PetscInt *ln = &p->elem_lnode[k0];
 
-  GatherNd(p, e, xa, u, ti, nd);
-  if (bv)
-    for (PetscInt a = 0; a < n; a++)
-      for (PetscInt i = 0; i < nd; i++) v[nd * a + i] = PetscRealPart(va[nd * ln[a] + i]);
-  TslElementFastForce(&p->fast_shape[p->m->elem_type[e]], &p->fast_rec[p->fast_off[e]], u, ti, v, eta, eta2, R, Rv, &w);
   for (PetscInt a = 0; a < n; a++)
-    for (PetscInt i = 0; i < nd; i++) fi[nd * ln[a] + i] += R[nd * a + i];
-  if (bv) {
-    for (PetscInt a = 0; a < n; a++)
-      for (PetscInt i = 0; i < nd; i++) fv[nd * ln[a] + i] += Rv[nd * a + i];
-    c->power += w;
+    for (PetscInt i = 0; i < nd; i++) f[nd * ln[a] + i] += R[(nd * a + i) * W + j];
+}
+
+/* The element of lane j of batch b (an empty lane computes lane 0's element again, and is not scattered) */
+static inline PetscInt LaneElement(TslProblem p, PetscInt b, PetscInt j)
+{
+  const PetscInt e = p->fast_batch[W * b + j];
+  return e >= 0 ? e : p->fast_batch[W * b];
+}
+
+void TslProblemFastBatchEnergy(TslProblem p, PetscInt b, const PetscScalar *xa, PetscReal *strain, PetscReal *hourglass)
+{
+  const PetscInt             t  = p->m->elem_type[p->fast_batch[W * b]];
+  const TslElementFastShape *sh = &p->fast_shape[t];
+  PetscReal                  u[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], se[W], hg[W];
+
+  for (PetscInt j = 0; j < W; j++) GatherLane(p, LaneElement(p, b, j), j, xa, u, ti, p->ndof);
+  TslElementFastEnergyBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, se, hg);
+  *strain = *hourglass = 0;
+  for (PetscInt j = 0; j < W; j++)
+    if (p->fast_batch[W * b + j] >= 0) *strain += se[j], *hourglass += hg[j];
+}
+
+/* One batch's forces from its records (TslElementFastForceBatch): a gather of the unknowns alone, no
+ * geometry. Inlined with the dofs per node a constant (FastBatch3, FastBatch4), so a node's unknowns move
+ * as one short copy rather than a loop of run-time length. */
+static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, PetscInt b, const PetscScalar *restrict xa, ForceCtx *c, const PetscInt nd)
+{
+  const PetscInt             t  = p->m->elem_type[p->fast_batch[W * b]];
+  const TslElementFastShape *sh = &p->fast_shape[t];
+  PetscReal u[TSL_MAX_ELEM_DOF * W], v[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], R[TSL_MAX_ELEM_DOF * W], Rv[TSL_MAX_ELEM_DOF * W], eta[W],
+    eta2[W], w[W];
+  PetscBool bv = PETSC_FALSE;
+
+  for (PetscInt j = 0; j < W; j++) {
+    const PetscInt e = LaneElement(p, b, j);
+    GatherLane(p, e, j, xa, u, ti, nd);
+    eta[j] = c->fv ? c->eta[e] : 0, eta2[j] = c->fv ? c->eta2[e] : 0;
+    if (eta[j] > 0 || eta2[j] > 0) bv = PETSC_TRUE;
+  }
+  if (bv)
+    for (PetscInt j = 0; j < W; j++) GatherLane(p, LaneElement(p, b, j), j, c->v, v, NULL, nd);
+  if (b + 1 < p->fast_nbatch) { /* the next batch: its records past the caches (non-temporal), its nodal rows into them */
+    const PetscReal *next = &p->fast_rec[p->fast_boff[b + 1]], *end = p->fast_rec + p->fast_total;
+    for (PetscInt k = 0; k < W * sh->size && next + k < end; k += 8) __builtin_prefetch(next + k, 0, 0);
+    for (PetscInt j = 0; j < W; j++) {
+      const PetscInt e = LaneElement(p, b + 1, j), k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0;
+      for (PetscInt a = 0; a < n; a++) {
+        const PetscInt l = p->elem_lnode[k0 + a];
+        __builtin_prefetch(&xa[nd * l], 0, 3);
+        __builtin_prefetch(&c->fi[nd * l], 1, 3);
+      }
+    }
+  }
+  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, bv ? v : NULL, eta, eta2, R, bv ? Rv : NULL, w);
+  for (PetscInt j = 0; j < W; j++) {
+    const PetscInt e = p->fast_batch[W * b + j];
+    if (e < 0) continue;
+    ScatterLane(p, e, j, R, c->fi, nd);
+    if (eta[j] > 0 || eta2[j] > 0) {
+      ScatterLane(p, e, j, Rv, c->fv, nd);
+      c->power += w[j];
+    }
   }
 }
-static void FastElement3(TslProblem p, PetscInt e, const PetscScalar *xa, ForceCtx *c) { FastElementNd(p, e, xa, c, 3); }
-static void FastElement4(TslProblem p, PetscInt e, const PetscScalar *xa, ForceCtx *c) { FastElementNd(p, e, xa, c, 4); }
-static void FastElement(TslProblem p, PetscInt e, const PetscScalar *xa, ForceCtx *c)
+static void FastBatch3(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c) { FastBatchNd(p, b, xa, c, 3); }
+static void FastBatch4(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c) { FastBatchNd(p, b, xa, c, 4); }
+static void FastBatch(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c)
 {
-  if (p->ndof == 4) FastElement4(p, e, xa, c);
-  else if (p->ndof == 3) FastElement3(p, e, xa, c);
-  else FastElementNd(p, e, xa, c, p->ndof);
+  if (p->ndof == 4) FastBatch4(p, b, xa, c);
+  else if (p->ndof == 3) FastBatch3(p, b, xa, c);
+  else FastBatchNd(p, b, xa, c, p->ndof);
 }
 
-/* The element pass of an explicit force evaluation: records where the element has one, the generic
- * kernels otherwise; face loads (a gather) only on elements that carry them. */
+/* The element pass of an explicit force evaluation: the record batches, then the generic kernels on the
+ * elements without a record; face loads (a gather) only on elements that carry them. */
 static PetscErrorCode ForcePass(TslProblem p, const PetscScalar *xa, ForceCtx *c)
 {
   TslElemData d;
 
   PetscFunctionBeginUser;
+  for (PetscInt b = 0; p->fast_built && b < p->fast_nbatch; b++) FastBatch(p, b, xa, c);
   for (PetscInt e = 0; e < p->m->nelem; e++) {
     const PetscBool fast = p->fast_off && p->fast_off[e] >= 0 ? PETSC_TRUE : PETSC_FALSE;
     PetscBool       stop = PETSC_FALSE;
-    if (fast) FastElement(p, e, xa, c);
-    if (!fast || p->face_start[e] < p->face_start[e + 1]) TslProblemGather(p, e, xa, xa, &d);
+    if (fast && p->face_start[e] == p->face_start[e + 1]) continue;
+    TslProblemGather(p, e, xa, xa, &d);
     if (!fast) PetscCall(ForceElement(e, &d, c, &stop));
     if (stop) break;
     PetscCall(FaceLoads(p, e, &d, c));
@@ -149,6 +194,18 @@ static PetscErrorCode ForcePass(TslProblem p, const PetscScalar *xa, ForceCtx *c
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemFastDestroy(TslProblem p)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree2(p->fast_shape, p->fast_off));
+  PetscCall(PetscFree(p->fast_rec));
+  PetscCall(PetscFree2(p->fast_batch, p->fast_boff));
+  p->fast_built = PETSC_FALSE, p->fast_count = p->fast_total = p->fast_nbatch = 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Records are built in element order into batches of one type each (an open batch per type), so a batch's
+ * elements are near one another in the mesh and successive batches walk it as the element order does. */
 PetscErrorCode TslProblemExplicitRecords(TslProblem p, PetscBool use, PetscInt *nfast, PetscReal *mbytes)
 {
   const PetscInt nelem = p->m->nelem, ntype = TslElementTypeCount();
@@ -156,28 +213,51 @@ PetscErrorCode TslProblemExplicitRecords(TslProblem p, PetscBool use, PetscInt *
   TslElemData    d;
 
   PetscFunctionBeginUser;
-  if (!use) {
-    PetscCall(PetscFree3(p->fast_off, p->fast_rec, p->fast_shape));
-    p->fast_built = PETSC_FALSE, p->fast_count = p->fast_total = 0;
-  }
+  if (!use) PetscCall(TslProblemFastDestroy(p));
   if (use && !p->fast_built) { /* the records hold for the whole job: the geometry and the materials do not change */
-    PetscInt *size, total = 0;
-    PetscCall(PetscMalloc1(nelem, &size));
-    for (PetscInt e = 0; e < nelem; e++) {
-      TslProblemGather(p, e, NULL, NULL, &d);
-      size[e] = d.in.type->ndof == p->ndof ? TslElementFastSize(&d.in) : 0;
-      total += size[e];
-    }
-    PetscCall(PetscMalloc3(nelem, &p->fast_off, total, &p->fast_rec, ntype, &p->fast_shape));
+    PetscInt *count, *open, *lanes, total = 0, maxbatch = 0;
+    PetscReal rec[TSL_FAST_MAX_SIZE];
+    PetscCall(PetscCalloc3(ntype, &count, ntype, &open, ntype, &lanes));
+    PetscCall(PetscMalloc2(ntype, &p->fast_shape, nelem, &p->fast_off));
     for (PetscInt t = 0; t < ntype; t++) (void)TslElementFastShapeGet(TslElementTypeGet(t), &p->fast_shape[t]);
-    for (PetscInt e = 0; e < nelem; e++) {
-      p->fast_off[e] = -1;
-      if (!size[e]) continue;
+    for (PetscInt e = 0; e < nelem; e++) { /* which elements may have a record: an upper bound of the storage */
+      const PetscInt t = p->m->elem_type[e];
       TslProblemGather(p, e, NULL, NULL, &d);
-      if (!TslElementFastBuild(&d.in, &p->fast_rec[p->fast_total])) continue; /* inverted: the generic kernel reports it */
-      p->fast_off[e] = p->fast_total, p->fast_total += size[e], p->fast_count++;
+      p->fast_off[e] = d.in.type->ndof == p->ndof && TslElementFastSize(&d.in) > 0 ? 0 : -1;
+      if (p->fast_off[e] == 0) count[t]++;
     }
-    PetscCall(PetscFree(size));
+    for (PetscInt t = 0; t < ntype; t++) {
+      const PetscInt nb = (count[t] + W - 1) / W;
+      total += nb * W * p->fast_shape[t].size, maxbatch += nb;
+    }
+    PetscCall(PetscMalloc1(total, &p->fast_rec));
+    PetscCall(PetscMalloc2(W * maxbatch, &p->fast_batch, maxbatch, &p->fast_boff));
+    for (PetscInt t = 0; t < ntype; t++) open[t] = -1;
+    for (PetscInt e = 0; e < nelem; e++) {
+      const PetscInt t = p->m->elem_type[e];
+      PetscInt       b;
+      if (p->fast_off[e] < 0) continue;
+      p->fast_off[e] = -1;
+      TslProblemGather(p, e, NULL, NULL, &d);
+      if (!TslElementFastBuild(&d.in, rec)) continue; /* inverted: the generic kernel reports it */
+      if (open[t] < 0) { /* a new batch: every lane empty until filled */
+        b = open[t] = p->fast_nbatch++, lanes[t] = 0;
+        p->fast_boff[b] = p->fast_total, p->fast_total += W * p->fast_shape[t].size;
+        for (PetscInt j = 0; j < W; j++) p->fast_batch[W * b + j] = -1;
+      }
+      b = open[t];
+      TslElementFastInterleave(p->fast_shape[t].size, lanes[t], rec, &p->fast_rec[p->fast_boff[b]]);
+      p->fast_batch[W * b + lanes[t]] = e, p->fast_off[e] = W * b + lanes[t], p->fast_count++;
+      if (++lanes[t] == W) open[t] = -1;
+    }
+    for (PetscInt b = 0; b < p->fast_nbatch; b++) /* empty lanes: lane 0's record again (finite, never scattered) */
+      for (PetscInt j = 1; j < W; j++)
+        if (p->fast_batch[W * b + j] < 0) {
+          const PetscInt size = p->fast_shape[p->m->elem_type[p->fast_batch[W * b]]].size;
+          PetscReal     *r    = &p->fast_rec[p->fast_boff[b]];
+          for (PetscInt k = 0; k < size; k++) r[k * W + j] = r[k * W];
+        }
+    PetscCall(PetscFree3(count, open, lanes));
     p->fast_built = PETSC_TRUE;
   }
   if (nfast) PetscCall(MPIU_Allreduce(&p->fast_count, nfast, 1, MPIU_INT, MPI_SUM, p->comm));

@@ -162,15 +162,14 @@ PetscErrorCode TslProblemEnergies(TslProblem p, PetscReal *strain, PetscReal *ho
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  for (PetscInt b = 0; p->fast_built && b < p->fast_nbatch; b++) {
+    PetscReal se, hg;
+    TslProblemFastBatchEnergy(p, b, xa, &se, &hg);
+    loc[0] += se, loc[1] += hg;
+  }
   for (PetscInt e = 0; e < p->m->nelem; e++) {
     PetscBool stop = PETSC_FALSE;
-    if (p->fast_built && p->fast_off[e] >= 0) {
-      PetscReal u[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES], se, hg;
-      TslProblemFastGather(p, e, xa, u, ti);
-      TslElementFastEnergy(&p->fast_shape[p->m->elem_type[e]], &p->fast_rec[p->fast_off[e]], u, ti, &se, &hg);
-      loc[0] += se, loc[1] += hg;
-      continue;
-    }
+    if (p->fast_built && p->fast_off[e] >= 0) continue;
     TslProblemGather(p, e, xa, xa, &d);
     PetscCall(EnergyVisit(p, e, &d, loc, &stop));
   }

@@ -392,7 +392,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(PetscFree(p->pattern_pairs.rec)); /* left by a pattern pass that failed */
   PetscCall(PetscFree(p->blk_ptr));
   PetscCall(PetscFree(p->blk));
-  PetscCall(PetscFree3(p->fast_off, p->fast_rec, p->fast_shape));
+  PetscCall(TslProblemFastDestroy(p));
   PetscCall(TslProblemContactDestroy(p));
   PetscCall(TslModelDestroy(&p->m));
   PetscCall(PetscFree(p));

@@ -144,11 +144,14 @@ struct _p_TslProblem {
   PetscScalar       *jac_val;
   const PetscInt    *jac_row;
 
-  /* explicit force records (element.h, fast.c; TslProblemExplicitRecords): fast_off[e] the offset of local
-   * element e's record in fast_rec (-1: the generic kernels), fast_shape[] one per catalogue type */
+  /* explicit force records (element.h, fast.c; TslProblemExplicitRecords), in batches of TSL_FAST_LANES
+   * elements of one type: fast_batch[W b + j] the local element in lane j of batch b (-1: an empty lane,
+   * holding a copy of lane 0's record), fast_boff[b] the offset of its interleaved records in fast_rec;
+   * fast_off[e] = W b + j for an element with a record, -1 for the generic kernels; fast_shape[] one per
+   * catalogue type */
   PetscBool            fast_built;
-  PetscInt             fast_count, fast_total; /* elements with a record, reals in fast_rec */
-  PetscInt            *fast_off;
+  PetscInt             fast_count, fast_total, fast_nbatch; /* elements with a record, reals in fast_rec, batches */
+  PetscInt            *fast_off, *fast_batch, *fast_boff;
   PetscReal           *fast_rec;
   TslElementFastShape *fast_shape;
 
@@ -172,9 +175,10 @@ typedef struct {
 } TslElemData;
 
 void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const PetscScalar *xoa, TslElemData *d);
-/* For an element with a force record (p->fast_off[e] >= 0, dynamics.c): its unknowns u[] (laid out as
- * TslElemData's) and initial temperatures ti[] alone, no coordinates. */
-void TslProblemFastGather(TslProblem p, PetscInt e, const PetscScalar *xa, PetscReal u[], PetscReal ti[]);
+/* Frees the explicit force records (dynamics.c). */
+PetscErrorCode TslProblemFastDestroy(TslProblem p);
+/* Strain and hourglass energies of the elements of force-record batch b (dynamics.c), summed over its lanes. */
+void           TslProblemFastBatchEnergy(TslProblem p, PetscInt b, const PetscScalar *xa, PetscReal *strain, PetscReal *hourglass);
 /* A per-element computation: set *stop to end the loop early. */
 typedef PetscErrorCode (*TslElementVisitor)(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop);
 PetscErrorCode TslProblemElementLoop(TslProblem p, const PetscScalar *xa, const PetscScalar *xoa, TslElementVisitor visit, void *ctx);

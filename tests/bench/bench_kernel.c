@@ -1,9 +1,9 @@
 /* Element kernel cost per catalogue row, in CPU time of this thread (robust to a loaded machine):
  * residual (internal force + heat flow) and residual + tangent of one element, on a mildly distorted
  * unit element with a nonzero state, plus the flop-free floor of touching the element arrays.
- * For the types with an explicit force record (src/element/fast.c): TslElementFastForce on one record
- * (in cache) and streamed over 64 MB of records (as the explicit loop reads them), so the difference is
- * the memory traffic's share. Prints figures only (ctest -L bench). usage: bench_kernel [seconds per figure, default 0.2; a negative
+ * For the types with an explicit force record (src/element/fast.c): TslElementFastForceBatch per element
+ * (batches of TSL_FAST_LANES), on one batch (in cache) and streamed over 64 MB of batches with the next
+ * batch prefetched as the explicit loop does, so the difference is the memory traffic's share. Prints figures only (ctest -L bench). usage: bench_kernel [seconds per figure, default 0.2; a negative
  * value -N runs exactly N calls per figure, for instruction counts with perf stat] [TYPE] */
 #define _POSIX_C_SOURCE 200809L
 #include <thermoslide/element.h>
@@ -43,27 +43,36 @@ static PetscErrorCode Time(const TslElementInput *in, PetscBool tangent, double 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* ns per TslElementFastForce over nrec copies of rec (size reals each), for about `budget` seconds */
+/* ns per element of TslElementFastForceBatch over nrec batches (size * TSL_FAST_LANES reals each: the
+ * element's record in every lane), for about `budget` seconds */
 static double TimeRecords(const TslElementFastShape *shape, const PetscReal *recs, PetscInt size, PetscInt nrec, const TslElementInput *in,
                           double budget)
 {
-  static PetscReal R[TSL_MAX_ELEM_DOF], Rv[TSL_MAX_ELEM_DOF], v[TSL_MAX_ELEM_DOF];
-  PetscReal        w, sum = 0;
-  long             n  = 0;
+  enum { W = TSL_FAST_LANES };
+  static PetscReal R[TSL_MAX_ELEM_DOF * W], Rv[TSL_MAX_ELEM_DOF * W], v[TSL_MAX_ELEM_DOF * W], u[TSL_MAX_ELEM_DOF * W], ti[TSL_MAX_ELEM_NODES * W];
+  const PetscInt   n = in->type->geom->nnode, nd = n * in->type->ndof;
+  PetscReal        w[W], eta[W] = {1e-6, 1e-6, 1e-6, 1e-6}, eta2[W] = {1e-12, 1e-12, 1e-12, 1e-12}, sum = 0;
+  long             k  = 0;
   double           t0 = CpuNow(), t;
 
-  for (PetscInt i = 0; i < TSL_MAX_ELEM_DOF; i++) v[i] = 1e-3 * i;
+  for (PetscInt j = 0; j < W; j++) {
+    for (PetscInt i = 0; i < nd; i++) v[i * W + j] = 1e-3 * i;
+    TslElementFastInterleave(nd, j, in->u, u);
+    TslElementFastInterleave(n, j, in->theta_init, ti);
+  }
   do {
-    for (PetscInt k = 0; k < 4096; k += nrec) /* at least 4096 calls between clock reads */
-      for (PetscInt e = 0; e < nrec; e++) {
-        TslElementFastForce(shape, recs + e * size, in->u, in->theta_init, v, 1e-6, 1e-12, R, Rv, &w);
+    for (PetscInt c = 0; c < 1024; c += nrec) /* at least 1024 calls between clock reads */
+      for (PetscInt b = 0; b < nrec; b++) {
+        const PetscReal *next = recs + ((b + 1) % nrec) * size * W; /* as the explicit loop: the next batch non-temporal */
+        for (PetscInt k = 0; k < size * W; k += 8) __builtin_prefetch(next + k, 0, 0);
+        TslElementFastForceBatch(shape, recs + b * size * W, u, ti, v, eta, eta2, R, Rv, w);
         sum += R[0];
       }
-    n += nrec >= 4096 ? nrec : 4096;
+    k += nrec >= 1024 ? nrec : 1024;
     t = CpuNow() - t0;
-  } while (budget > 0 ? t < budget : n < -budget);
+  } while (budget > 0 ? t < budget : k < -budget);
   if (sum == 12345.678) printf(" ");
-  return 1e9 * t / n;
+  return 1e9 * t / (k * W);
 }
 
 int main(int argc, char **argv)
@@ -102,11 +111,12 @@ int main(int argc, char **argv)
     PetscCall(Time(&in, PETSC_FALSE, budget, &r_ns));
     PetscCall(Time(&in, PETSC_TRUE, budget, &j_ns));
     if (TslElementFastShapeGet(t, &shape)) {
-      const PetscInt size = TslElementFastSize(&in), nrec = (64 << 20) / (size * (PetscInt)sizeof(PetscReal));
-      PetscReal     *recs;
-      PetscCall(PetscMalloc1(size * nrec, &recs));
-      PetscCheck(TslElementFastBuild(&in, recs), PETSC_COMM_SELF, PETSC_ERR_PLIB, "inverted benchmark element");
-      for (PetscInt e = 1; e < nrec; e++) PetscCall(PetscArraycpy(recs + e * size, recs, size));
+      const PetscInt size = TslElementFastSize(&in), nrec = (64 << 20) / (size * TSL_FAST_LANES * (PetscInt)sizeof(PetscReal));
+      PetscReal     *recs, rec[TSL_FAST_MAX_SIZE];
+      PetscCall(PetscMalloc1(size * TSL_FAST_LANES * nrec, &recs));
+      PetscCheck(TslElementFastBuild(&in, rec), PETSC_COMM_SELF, PETSC_ERR_PLIB, "inverted benchmark element");
+      for (PetscInt j = 0; j < TSL_FAST_LANES; j++) TslElementFastInterleave(size, j, rec, recs);
+      for (PetscInt b = 1; b < nrec; b++) PetscCall(PetscArraycpy(recs + b * size * TSL_FAST_LANES, recs, size * TSL_FAST_LANES));
       f_ns  = TimeRecords(&shape, recs, size, 1, &in, budget);
       fs_ns = TimeRecords(&shape, recs, size, nrec, &in, budget);
       PetscCall(PetscFree(recs));

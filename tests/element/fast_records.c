@@ -20,6 +20,47 @@ static PetscReal RelDiff(PetscInt n, const PetscReal a[], const PetscReal b[])
   return d / m;
 }
 
+/* A batch of TSL_FAST_LANES different elements of the type (geometry, unknowns, velocities and viscosity
+ * differing by lane, one lane without viscosity) gives in each lane exactly what that element's own
+ * evaluation gives: the lanes do not mix. */
+static PetscErrorCode CheckBatch(TestLog *log, const TslElementInput *in0, const TslElementFastShape *shape, const PetscReal x0[], const PetscReal u0[],
+                                 const PetscReal v0[], const PetscReal ti0[], PetscReal offset)
+{
+  enum { W = TSL_FAST_LANES };
+  const TslElementType *t = in0->type;
+  const PetscInt        n = t->geom->nnode, nd = n * t->ndof, size = shape->size;
+  PetscReal x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], v[TSL_MAX_ELEM_DOF], rec[TSL_FAST_MAX_SIZE], R[W][TSL_MAX_ELEM_DOF], Rv[W][TSL_MAX_ELEM_DOF],
+    w[W], se[W], hg[W], eta[W], eta2[W], batch[TSL_FAST_MAX_SIZE * W], ub[TSL_MAX_ELEM_DOF * W], vb[TSL_MAX_ELEM_DOF * W], tib[TSL_MAX_ELEM_NODES * W],
+    Rb[TSL_MAX_ELEM_DOF * W], Rvb[TSL_MAX_ELEM_DOF * W], wb[W], seb[W], hgb[W];
+  PetscReal       dmax = 0;
+  TslElementInput in = *in0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt j = 0; j < W; j++) {
+    for (PetscInt i = 0; i < 3 * TSL_MAX_ELEM_NODES; i++) x[i] = x0[i] + (x0[i] != 0 ? 0.02 * j * PetscSinReal(1.3 * i + j) : 0);
+    for (PetscInt i = 0; i < nd; i++) u[i] = u0[i] * (1 + 0.3 * j), v[i] = v0[i] * (j - 1.5);
+    in.x = x, in.u = u;
+    CheckTrue(log, TslElementFastBuild(&in, rec), "%s (offset %g): lane %d's record built", t->name, (double)offset, (int)j);
+    eta[j] = j == 2 ? 0 : 0.06e-4 * (1 + j), eta2[j] = j == 2 ? 0 : 1.44e-8;
+    TslElementFastForce(shape, rec, u, ti0, v, eta[j], eta2[j], R[j], Rv[j], &w[j]);
+    if (j == 2)
+      for (PetscInt i = 0; i < nd; i++) Rv[j][i] = 0;
+    TslElementFastEnergy(shape, rec, u, ti0, &se[j], &hg[j]);
+    TslElementFastInterleave(size, j, rec, batch);
+    TslElementFastInterleave(nd, j, u, ub);
+    TslElementFastInterleave(nd, j, v, vb);
+    TslElementFastInterleave(n, j, ti0, tib);
+  }
+  TslElementFastForceBatch(shape, batch, ub, tib, vb, eta, eta2, Rb, Rvb, wb);
+  TslElementFastEnergyBatch(shape, batch, ub, tib, seb, hgb);
+  for (PetscInt j = 0; j < W; j++) {
+    for (PetscInt i = 0; i < nd; i++) dmax = PetscMax(dmax, PetscMax(PetscAbsReal(Rb[i * W + j] - R[j][i]), PetscAbsReal(Rvb[i * W + j] - Rv[j][i])));
+    dmax = PetscMax(dmax, PetscMax(PetscAbsReal(wb[j] - w[j]), PetscAbsReal(seb[j] - se[j]) + PetscAbsReal(hgb[j] - hg[j])));
+  }
+  CheckAtMost(log, dmax, 0.0, "%s (offset %g): a batch of %d different elements, lane by lane, against each alone", t->name, (double)offset, (int)W);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckType(TestLog *log, const TslElementType *t, PetscReal offset, PetscInt *nrows)
 {
   const TslGeometry  *g = t->geom;
@@ -81,6 +122,7 @@ static PetscErrorCode CheckType(TestLog *log, const TslElementType *t, PetscReal
                 (double)offset, (int)sign);
     CheckRel(log, w, wg, 1e-12, 1e-300, "%s (offset %g, velocities x %d): bulk viscosity power", t->name, (double)offset, (int)sign);
   }
+  PetscCall(CheckBatch(log, &in, &shape, x, u, v, ti, offset));
   /* a temperature-dependent property: no record */
   mat.prop[TSL_PROP_CONDUCTIVITY].n        = 2;
   mat.prop[TSL_PROP_CONDUCTIVITY].theta[1] = 100, mat.prop[TSL_PROP_CONDUCTIVITY].value[1][0] = 12;
