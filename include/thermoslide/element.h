@@ -188,12 +188,15 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
  * u[] and v[] are laid out as in->u (theta last at each node), ti[] the nodal initial temperatures. */
 #define TSL_FAST_MAX_NODES 10  /* tet10 */
 #define TSL_FAST_MAX_QP    9   /* quad8's full rule */
-#define TSL_FAST_MAX_SIZE  384 /* reals in the largest record (quad8 axisymmetric: 322) */
+#define TSL_FAST_MAX_SIZE  192 /* reals in the largest record */
 #define TSL_FAST_LANES     4   /* elements per batch */
 typedef struct {
-  PetscInt  row;                                    /* the fast row (-1: none) */
-  PetscInt  size;                                   /* reals in its records */
-  PetscReal N[TSL_FAST_MAX_QP][TSL_FAST_MAX_NODES]; /* N[q][a] at the mechanical points */
+  PetscInt  row;                                       /* the fast row (-1: none) */
+  PetscInt  size;                                      /* reals in its records */
+  PetscReal N[TSL_FAST_MAX_QP][TSL_FAST_MAX_NODES];    /* N[q][a] at the mechanical points */
+  PetscReal dN[TSL_FAST_MAX_QP][3][TSL_FAST_MAX_NODES]; /* dN_a/dxi_e there, [q][e][a] */
+  PetscReal Nc[TSL_FAST_MAX_NODES], dNc[3][TSL_FAST_MAX_NODES]; /* the same at the centre (bulk viscosity) */
+  PetscReal h[4][TSL_FAST_MAX_NODES];                   /* hourglass base vectors (reduced rows) */
 } TslElementFastShape;
 
 PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *shape);

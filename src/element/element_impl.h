@@ -27,6 +27,7 @@ const struct TslKinematicsRow *TslKinematicsRowGet(TslKinematics kin);
 typedef struct {
   PetscReal N[TSL_MAX_ELEM_NODES];
   PetscReal dNdx[TSL_MAX_ELEM_NODES][3]; /* spatial gradients; third component 0 in 2D */
+  PetscReal Ji[3][3];                    /* inverse Jacobian Ji[e][d] = dxi_e/dx_d (dim x dim) */
   PetscReal x[3];                        /* position (x[0] = r for axisymmetric) */
   PetscReal xi[3];                       /* reference coordinates */
   PetscReal detJ;
@@ -84,7 +85,11 @@ struct TslFormulation {
 extern const TslFormulation TslFormFull, TslFormReduced, TslFormHybrid, TslFormReducedHybrid, TslFormModified, TslFormModifiedHybrid;
 
 /* Hourglass control of the one-point quad4 and hex8 (formulations.c): the Flanagan-Belytschko vectors
- * gamma[k][a] at the centre point p (returns their number: 1 in 2D, 4 in 3D) and bb = sum_a |grad N_a|^2;
- * the stiffness kappa = s mu dV bb. Shared by the generic kernel and the explicit records (fast.c). */
-PetscInt  TslElementHourglassBase(const TslElementInput *in, const TslElementPoint *p, PetscReal gamma[4][TSL_MAX_ELEM_NODES], PetscReal *bb);
+ * gamma[k][a] = (h_k[a] - sum_d hx[k][d] dN_a/dx_d) / n at the centre point p (returns their number: 1 in
+ * 2D, 4 in 3D; hx[k][d] = h_k . x_d, NULL: not wanted) and bb = sum_a |grad N_a|^2; the stiffness kappa =
+ * s mu dV bb. TslElementHourglassVectors: the base vectors h_k (products of reference coordinates at the
+ * nodes). Shared by the generic kernel and the explicit records (fast.c). */
+PetscInt  TslElementHourglassVectors(const TslGeometry *g, PetscReal h[4][TSL_MAX_ELEM_NODES]);
+PetscInt  TslElementHourglassBase(const TslElementInput *in, const TslElementPoint *p, PetscReal gamma[4][TSL_MAX_ELEM_NODES], PetscReal hx[4][3],
+                                  PetscReal *bb);
 PetscReal TslElementHourglassKappa(PetscReal mu, PetscReal dV, PetscReal bb);

@@ -5,46 +5,50 @@
  * volumes) is that of the reference configuration and never changes, and with temperature-independent
  * properties the conduction R_theta = K_theta theta is linear. The generic kernel (kernels.c) recomputes
  * both at every call, through loops of run-time length sized for the largest family: about 6.5 k flops and
- * 5 us per C3D8T element per increment. A record per element holds what does not change:
+ * 5 us per C3D8T element per increment. A record per element holds what does not change, as compactly as
+ * the arithmetic allows (the explicit loop streams the records from memory at every increment, and their
+ * bytes, not the flops, bound it):
  *
- *   header   row, lambda, mu, alpha, lambda + 2 mu, hourglass kappa (two spare)
- *   G        spatial gradients dN_a/dx at each mechanical point, [nq][dim][n]
- *   dV       the points' volumes (thickness or 2 pi r included), [nq]
- *   Nr       N_a / r at each point (axisymmetric: the hoop strain u_r / r), [nq][n]
- *   K        the conduction matrix k int grad N_a . grad N_b dV (full rule), [n][n]
- *   centre   the bulk viscosity's point (full rows; a reduced row's mechanical point is the centre):
- *            gradients [dim][n], volume, N_a / r (axisymmetric)
- *   gamma    the hourglass vectors of a reduced row, [nh][n]
+ *   header   row, lambda, mu, alpha, lambda + 2 mu, hourglass kappa
+ *   points   at each mechanical point: a full row's inverse Jacobian A[e][d] = dxi_e/dx_d (the gradients
+ *            dN_a/dx_d = sum_e dN_a/dxi_e A[e][d], the reference derivatives being the type's, in the
+ *            shape), a reduced row's gradients G[d][a] themselves (its hourglass vectors need them); the
+ *            volume dV (thickness or 2 pi r included); 1 / r (axisymmetric: the hoop strain N_a u_r / r)
+ *   K        the conduction matrix k int grad N_a . grad N_b dV (full rule), its strict upper triangle:
+ *            its rows sum to zero, so (K theta)_a = sum_b K_ab (theta_b - theta_a)
+ *   centre   a full row's bulk viscosity point: A, volume, 1 / r (a reduced row's point is the centre)
+ *   hx       a reduced row's hourglass products h_k . x_d (the vectors gamma_k = (h_k - sum_d hx_kd G_d) / n,
+ *            the h_k being the type's, in the shape)
  *
  * and TslElementFastForce evaluates the generic kernel's formulas from it (kernels.c, Mechanics with the
  * isotropic D written out: sigma = lambda tr(eps_mech) m + 2 mu eps_mech; Conduction; the hourglass
  * control of formulations.c; TslElementBulkViscosity), with loops whose lengths are compile-time
  * constants of each row, so the compiler unrolls and vectorises them. Results agree with the generic
- * path to rounding (tests/element/fast_records.c). Memory: C3D8T 2.4 kB, C3D8RT 1.1 kB per element.
+ * path to rounding (tests/element/fast_records.c). Memory: C3D8T 0.96 kB, C3D8RT 0.57 kB per element
+ * (2.4 and 1.0 kB with the gradients and the whole K stored).
  */
 #include "element_impl.h"
-#include <string.h>
+#include <thermoslide/lanes.h>
 
-#define HEADER 8
+#define HEADER 6
 
-/* Offsets of the record's parts (constants once the row's sizes are). */
+/* Offsets of the record's parts (constants once the row's sizes are): point q at P + q * ps (its A or G,
+ * then dV, then 1 / r), the centre at C (A, volume, 1 / r; a reduced row's: its point), K, hx. */
 typedef struct {
-  PetscInt G, dV, Nr, K, Gc, Vc, Nrc, gamma, size;
+  PetscInt P, ps, dV, ri, K, C, hx, size;
 } Layout;
 
 static inline Layout LayoutOf(PetscInt dim, PetscInt n, PetscInt nq, PetscInt nh, PetscBool axi)
 {
-  Layout L;
-  L.G     = HEADER;
-  L.dV    = L.G + nq * n * dim;
-  L.Nr    = L.dV + nq;
-  L.K     = L.Nr + (axi ? nq * n : 0);
-  L.Gc    = L.K + n * n;
-  L.Vc    = L.Gc + (nq > 1 ? n * dim : 0);
-  L.Nrc   = L.Vc + (nq > 1 ? 1 : 0);
-  L.gamma = L.Nrc + (nq > 1 && axi ? n : 0);
-  L.size  = L.gamma + nh * n;
-  if (nq == 1) L.Gc = L.G, L.Vc = L.dV, L.Nrc = L.Nr; /* the one mechanical point is the centre */
+  const PetscInt geo = nq > 1 ? dim * dim : dim * n; /* a point's A (full rows) or G (reduced rows) */
+  Layout         L;
+  L.P    = HEADER;
+  L.ps   = geo + 1 + (axi ? 1 : 0);
+  L.dV   = geo, L.ri = geo + 1; /* within a point */
+  L.K    = L.P + nq * L.ps;
+  L.C    = nq > 1 ? L.K + n * (n - 1) / 2 : L.P;
+  L.hx   = L.K + n * (n - 1) / 2 + (nq > 1 ? dim * dim + 1 + (axi ? 1 : 0) : 0);
+  L.size = L.hx + nh * dim;
   return L;
 }
 
@@ -54,22 +58,29 @@ static inline Layout LayoutOf(PetscInt dim, PetscInt n, PetscInt nq, PetscInt nh
  * the sums over an element's nodes need no horizontal adds or shuffles. A batch's records are interleaved
  * by lane (value k of lane j at rec[k * W + j]); the unknowns and results likewise. */
 #define W TSL_FAST_LANES
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wpsabi" /* the helpers below are always inlined: no vector crosses a call */
-#endif
-typedef PetscReal V __attribute__((vector_size(W * sizeof(PetscReal))));
-typedef long long VI __attribute__((vector_size(W * sizeof(PetscReal))));
+typedef TslV  V;
+typedef TslVI VI;
+#define Ld TslLd
+#define St TslSt
 
-static inline __attribute__((always_inline)) V Ld(const PetscReal *p)
+/* Gradients gd[d][a] (V) of a point held as A (full rows): sum_e dN[e][a] A[e][d]. */
+static inline __attribute__((always_inline)) void Gradients(const PetscInt dim, const PetscInt n, const PetscReal *A,
+                                                            const PetscReal (*dN)[TSL_FAST_MAX_NODES], V gd[3][TSL_FAST_MAX_NODES])
 {
-  V v;
-  memcpy(&v, p, sizeof(v));
-  return v;
+  for (PetscInt d = 0; d < dim; d++) {
+    V Aed[3];
+    for (PetscInt e = 0; e < dim; e++) Aed[e] = Ld(A + (e * dim + d) * W);
+    for (PetscInt a = 0; a < n; a++) {
+      gd[d][a] = dN[0][a] * Aed[0];
+      for (PetscInt e = 1; e < dim; e++) gd[d][a] += dN[e][a] * Aed[e];
+    }
+  }
 }
-static inline __attribute__((always_inline)) void St(PetscReal *p, V v) { memcpy(p, &v, sizeof(v)); }
 
 /* The forces of one batch (see the file's head). Inlined into each row's function with constant sizes.
- * Gradients are stored by component ([d][a]) and the unknowns split by component first. */
+ * The unknowns are split by component first, so every sum over the nodes is over arrays of constant
+ * length. A full row's point works in the reference derivatives: the displacement gradient in xi (H),
+ * mapped by A; the stress mapped back by A and spread by the same derivatives. */
 static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
                                                         const PetscBool axi, const TslElementFastShape *shape, const PetscReal *rec,
                                                         const PetscReal *u, const PetscReal *ti, const PetscReal *v, const PetscReal *eta,
@@ -86,57 +97,94 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
     th[a] = Ld(u + (nd * a + dim) * W), dth[a] = th[a] - Ld(ti + a * W);
   }
   for (PetscInt q = 0; q < nq; q++) {
-    const PetscReal *Gx = rec + (L.G + q * n * dim) * W, *Gy = Gx + n * W, *Gz = Gy + n * W, *Nr = rec + (L.Nr + q * n) * W, *Nq = shape->N[q];
-    const V          dV = Ld(rec + (L.dV + q) * W);
-    V                e[6] = {{0}, {0}, {0}, {0}, {0}, {0}}, s[6], eth = {0}, tr;
+    const PetscReal *P = rec + (L.P + q * L.ps) * W, *Nq = shape->N[q];
+    const V          dV = Ld(P + L.dV * W);
+    V                g[3][3], e[6], s[6], eth = {0}, tr, hoop = {0};
     for (PetscInt a = 0; a < n; a++) eth += Nq[a] * dth[a];
     eth *= alpha;
-    for (PetscInt a = 0; a < n; a++) {
-      const V gx = Ld(Gx + a * W), gy = Ld(Gy + a * W);
-      e[0] += gx * U[0][a];
-      e[1] += gy * U[1][a];
-      e[3] += gy * U[0][a] + gx * U[1][a];
-      if (dim == 3) {
-        const V gz = Ld(Gz + a * W);
-        e[2] += gz * U[2][a];
-        e[4] += gz * U[0][a] + gx * U[2][a];
-        e[5] += gz * U[1][a] + gy * U[2][a];
-      } else if (axi)
-        e[2] += Ld(Nr + a * W) * U[0][a];
+    if (axi) {
+      for (PetscInt a = 0; a < n; a++) hoop += Nq[a] * U[0][a];
+      hoop *= Ld(P + L.ri * W);
     }
+    if (nq > 1) { /* g[i][d] = du_i/dx_d = sum_e H[i][e] A[e][d], H[i][e] = sum_a u_ia dN_a/dxi_e */
+      const PetscReal(*dN)[TSL_FAST_MAX_NODES] = shape->dN[q];
+      V H[3][3];
+      for (PetscInt i = 0; i < dim; i++)
+        for (PetscInt ee = 0; ee < dim; ee++) {
+          H[i][ee] = dN[ee][0] * U[i][0];
+          for (PetscInt a = 1; a < n; a++) H[i][ee] += dN[ee][a] * U[i][a];
+        }
+      for (PetscInt i = 0; i < dim; i++)
+        for (PetscInt d = 0; d < dim; d++) {
+          g[i][d] = H[i][0] * Ld(P + d * W);
+          for (PetscInt ee = 1; ee < dim; ee++) g[i][d] += H[i][ee] * Ld(P + (ee * dim + d) * W);
+        }
+    } else { /* g[i][d] = sum_a u_ia G[d][a] */
+      for (PetscInt i = 0; i < dim; i++)
+        for (PetscInt d = 0; d < dim; d++) {
+          g[i][d] = (V){0};
+          for (PetscInt a = 0; a < n; a++) g[i][d] += Ld(P + (d * n + a) * W) * U[i][a];
+        }
+    }
+    e[0] = g[0][0], e[1] = g[1][1], e[3] = g[0][1] + g[1][0];
+    if (dim == 3) e[2] = g[2][2], e[4] = g[0][2] + g[2][0], e[5] = g[1][2] + g[2][1];
+    else e[2] = hoop, e[4] = e[5] = (V){0};
     tr = e[0] + e[1] + e[2] - 3 * eth;
     for (PetscInt r = 0; r < 3; r++) s[r] = (lambda * tr + 2 * mu * (e[r] - eth)) * dV;
     for (PetscInt r = 3; r < 6; r++) s[r] = mu * e[r] * dV;
     if (energy) /* 1/2 sigma : eps_mech dV, as the generic output (kernels.c, Mechanics) */
       for (PetscInt r = 0; r < 6; r++) en[0] += 0.5 * s[r] * (r < 3 ? e[r] - eth : e[r]);
-    for (PetscInt a = 0; a < n; a++) {
-      const V gx = Ld(Gx + a * W), gy = Ld(Gy + a * W);
-      if (dim == 3) {
-        const V gz = Ld(Gz + a * W);
-        F[0][a] += gx * s[0] + gy * s[3] + gz * s[4];
-        F[1][a] += gy * s[1] + gx * s[3] + gz * s[5];
-        F[2][a] += gz * s[2] + gx * s[4] + gy * s[5];
+    {
+      /* the stress as a matrix S[i][d] (dV included); F_ia += sum_d S[i][d] dN_a/dx_d */
+      const V S[3][3] = {{s[0], s[3], s[4]}, {s[3], s[1], s[5]}, {s[4], s[5], s[2]}};
+      if (nq > 1) { /* through the reference derivatives: Q[i][e] = sum_d S[i][d] A[e][d] */
+        const PetscReal(*dN)[TSL_FAST_MAX_NODES] = shape->dN[q];
+        V Q[3][3];
+        for (PetscInt i = 0; i < dim; i++)
+          for (PetscInt ee = 0; ee < dim; ee++) {
+            Q[i][ee] = S[i][0] * Ld(P + ee * dim * W);
+            for (PetscInt d = 1; d < dim; d++) Q[i][ee] += S[i][d] * Ld(P + (ee * dim + d) * W);
+          }
+        for (PetscInt i = 0; i < dim; i++)
+          for (PetscInt a = 0; a < n; a++)
+            for (PetscInt ee = 0; ee < dim; ee++) F[i][a] += dN[ee][a] * Q[i][ee];
       } else {
-        F[0][a] += gx * s[0] + gy * s[3];
-        if (axi) F[0][a] += Ld(Nr + a * W) * s[2];
-        F[1][a] += gy * s[1] + gx * s[3];
+        for (PetscInt i = 0; i < dim; i++)
+          for (PetscInt a = 0; a < n; a++)
+            for (PetscInt d = 0; d < dim; d++) F[i][a] += Ld(P + (d * n + a) * W) * S[i][d];
+      }
+      if (axi) {
+        const V sr = s[2] * Ld(P + L.ri * W);
+        for (PetscInt a = 0; a < n; a++) F[0][a] += Nq[a] * sr;
       }
     }
   }
   for (PetscInt a = 0; a < n; a++) Fth[a] = (V){0};
-  for (PetscInt b = 0; b < n; b++) { /* K is symmetric: column b times theta_b, contiguous */
-    const PetscReal *K = rec + (L.K + b * n) * W;
-    for (PetscInt a = 0; a < n; a++) Fth[a] += Ld(K + a * W) * th[b];
+  { /* (K theta)_a = sum_{b != a} K_ab (theta_b - theta_a), K's strict upper triangle row by row */
+    const PetscReal *K = rec + L.K * W;
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt b = a + 1; b < n; b++, K += W) {
+        const V f = Ld(K) * (th[b] - th[a]);
+        Fth[a] += f, Fth[b] -= f;
+      }
   }
-  for (PetscInt k = 0; k < nh; k++) {
-    const PetscReal *gam   = rec + (L.gamma + k * n) * W;
+  if (nh) { /* reduced rows: gamma_k = (h_k - sum_d hx_kd G_d) / n at the one (centre) point */
+    const PetscReal *G = rec + L.P * W, *hx = rec + L.hx * W;
     const V          kappa = Ld(rec + 5 * W);
-    for (PetscInt d = 0; d < dim; d++) {
-      V qk = {0};
-      for (PetscInt a = 0; a < n; a++) qk += Ld(gam + a * W) * U[d][a];
-      if (energy) en[1] += 0.5 * kappa * qk * qk;
-      qk *= kappa;
-      for (PetscInt a = 0; a < n; a++) F[d][a] += Ld(gam + a * W) * qk;
+    for (PetscInt k = 0; k < nh; k++) {
+      V gam[TSL_FAST_MAX_NODES];
+      for (PetscInt a = 0; a < n; a++) {
+        gam[a] = shape->h[k][a] - Ld(hx + (k * dim) * W) * Ld(G + a * W);
+        for (PetscInt d = 1; d < dim; d++) gam[a] -= Ld(hx + (k * dim + d) * W) * Ld(G + (d * n + a) * W);
+        gam[a] *= 1.0 / n;
+      }
+      for (PetscInt d = 0; d < dim; d++) {
+        V qk = {0};
+        for (PetscInt a = 0; a < n; a++) qk += gam[a] * U[d][a];
+        if (energy) en[1] += 0.5 * kappa * qk * qk;
+        qk *= kappa;
+        for (PetscInt a = 0; a < n; a++) F[d][a] += gam[a] * qk;
+      }
     }
   }
   for (PetscInt a = 0; a < n; a++) {
@@ -145,15 +193,20 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
   }
   if (energy) St(energy, en[0]), St(energy + W, en[1]);
   if (Rv) { /* lanes without viscosity (eta = eta2 = 0) get zero forces and power */
-    const PetscReal *Gc = rec + L.Gc * W, *Nrc = rec + L.Nrc * W;
-    const V          Vc = Ld(rec + L.Vc * W), cd = Ld(rec + 4 * W);
+    const PetscReal *C  = rec + L.C * W;
+    const V          Vc = Ld(C + (nq > 1 ? dim * dim : L.dV) * W), cd = Ld(rec + 4 * W);
+    const PetscReal *Nc = nq > 1 ? shape->Nc : shape->N[0];
     V                rate = {0}, p, neg, gd[3][TSL_FAST_MAX_NODES];
+    if (nq > 1) Gradients(dim, n, C, shape->dNc, gd);
+    else
+      for (PetscInt d = 0; d < dim; d++)
+        for (PetscInt a = 0; a < n; a++) gd[d][a] = Ld(C + (d * n + a) * W);
+    if (axi) {
+      const V ri = Ld(C + (nq > 1 ? dim * dim + 1 : L.ri) * W);
+      for (PetscInt a = 0; a < n; a++) gd[0][a] += Nc[a] * ri;
+    }
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt d = 0; d < dim; d++) {
-        gd[d][a] = Ld(Gc + (d * n + a) * W);
-        if (axi && d == 0) gd[d][a] += Ld(Nrc + a * W);
-        rate += gd[d][a] * Ld(v + (nd * a + d) * W);
-      }
+      for (PetscInt d = 0; d < dim; d++) rate += gd[d][a] * Ld(v + (nd * a + d) * W);
     neg = (V)((VI)rate & (rate < 0)); /* the quadratic term, in compression only */
     p   = Ld(eta) * cd * rate - Ld(eta2) * cd * neg * neg;
     for (PetscInt a = 0; a < n; a++) {
@@ -164,14 +217,8 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
   }
 }
 
-/* One function per row, each cloned for x86-64-v3 (AVX2, FMA) beside the baseline build where the
- * compiler can: the loader picks the clone the machine runs (GCC function multi-versioning), so a Debian
- * build stays portable and still uses the wide registers. */
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__)
-#define CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
-#else
-#define CLONES
-#endif
+/* One function per row, cloned for x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
+#define CLONES TSL_CLONES
 #define FORCE_ROW(name, dim, n, nq, nh, axi)                                                                                                         \
   CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,          \
                           const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)             \
@@ -239,20 +286,43 @@ static Layout RowLayout(PetscInt r)
   return LayoutOf(row->geom->dim, row->geom->nnode, row->nq, row->nh, TslKinematicsRowGet(row->kin)->revolve);
 }
 
+/* The centre of the bulk viscosity: the corners' centroid, as TslElementBulkViscosity's. */
+static void Centre(const TslGeometry *g, PetscReal xi0[3])
+{
+  xi0[0] = xi0[1] = xi0[2] = 0;
+  for (PetscInt a = 0; a < g->ncorner; a++)
+    for (PetscInt d = 0; d < g->dim; d++) xi0[d] += g->node_xi[a][d] / g->ncorner;
+}
+
 PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *shape)
 {
   const PetscInt       r = RowOf(t);
+  const TslGeometry   *g = t->geom;
   const TslQuadrature *quad;
-  PetscReal            dN[TSL_MAX_ELEM_NODES * 3], N[TSL_MAX_ELEM_NODES];
+  PetscReal            dN[TSL_MAX_ELEM_NODES * 3], N[TSL_MAX_ELEM_NODES], xi0[3], h[4][TSL_MAX_ELEM_NODES];
+  PetscInt             nh;
 
-  shape->row = r, shape->size = 0;
+  memset(shape, 0, sizeof(*shape));
+  shape->row = r;
   if (r < 0 || RowLayout(r).size > TSL_FAST_MAX_SIZE) return PETSC_FALSE;
   shape->size = RowLayout(r).size;
-  quad = t->form->quadrature(t->geom);
+  quad        = t->form->quadrature(g);
   for (PetscInt q = 0; q < quad->n; q++) {
-    t->geom->shape(quad->xi[q], N, dN);
-    for (PetscInt a = 0; a < t->geom->nnode; a++) shape->N[q][a] = N[a];
+    g->shape(quad->xi[q], N, dN);
+    for (PetscInt a = 0; a < g->nnode; a++) {
+      shape->N[q][a] = N[a];
+      for (PetscInt e = 0; e < g->dim; e++) shape->dN[q][e][a] = dN[g->dim * a + e];
+    }
   }
+  Centre(g, xi0);
+  g->shape(xi0, N, dN);
+  for (PetscInt a = 0; a < g->nnode; a++) {
+    shape->Nc[a] = N[a];
+    for (PetscInt e = 0; e < g->dim; e++) shape->dNc[e][a] = dN[g->dim * a + e];
+  }
+  nh = PetscMin(TslElementHourglassVectors(g, h), 4);
+  for (PetscInt k = 0; k < nh; k++)
+    for (PetscInt a = 0; a < PetscMin(g->nnode, TSL_FAST_MAX_NODES); a++) shape->h[k][a] = h[k][a];
   return PETSC_TRUE;
 }
 
@@ -263,13 +333,18 @@ PetscInt TslElementFastSize(const TslElementInput *in)
   return RowLayout(r).size;
 }
 
-/* Gradients (and N_a / r) of point p into G[dim][n] (and Nr[n]). */
-static void StorePoint(const TslElementPoint *p, PetscInt n, PetscInt dim, PetscBool axi, PetscReal G[], PetscReal Nr[])
+/* A point of a full row (A = its inverse Jacobian), or of a reduced row (its gradients G[d][a]), then its
+ * volume and 1 / r, at P. */
+static void StorePoint(const TslElementPoint *p, PetscInt n, PetscInt dim, PetscBool full, PetscBool axi, const Layout *L, PetscReal P[])
 {
-  for (PetscInt a = 0; a < n; a++) {
-    for (PetscInt d = 0; d < dim; d++) G[d * n + a] = p->dNdx[a][d];
-    if (axi) Nr[a] = p->N[a] / p->x[0];
-  }
+  if (full)
+    for (PetscInt e = 0; e < dim; e++)
+      for (PetscInt d = 0; d < dim; d++) P[e * dim + d] = p->Ji[e][d];
+  else
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt d = 0; d < dim; d++) P[d * n + a] = p->dNdx[a][d];
+  P[L->dV] = p->dV;
+  if (axi) P[L->ri] = 1.0 / p->x[0];
 }
 
 PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
@@ -277,17 +352,16 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   const TslElementType *t = in->type;
   const TslGeometry    *g = t->geom;
   const PetscInt        r = RowOf(t), n = g->nnode, dim = g->dim;
-  const PetscBool       axi    = TslKinematicsRowGet(t->kin)->revolve;
-  const TslQuadrature  *quad   = t->form->quadrature(g);
-  PetscReal             xi0[3] = {0, 0, 0}; /* the centre: the corners' centroid, as TslElementBulkViscosity's */
+  const PetscBool       axi  = TslKinematicsRowGet(t->kin)->revolve;
+  const TslQuadrature  *quad = t->form->quadrature(g);
+  const PetscBool       full = quad->n > 1 ? PETSC_TRUE : PETSC_FALSE;
+  PetscReal             xi0[3], K[TSL_MAX_ELEM_NODES][TSL_MAX_ELEM_NODES] = {{0}};
   Layout                L;
   TslMaterialPoint      mp;
   TslElementPoint       p;
   PetscReal             lambda, mu;
 
   if (r < 0) return PETSC_FALSE;
-  for (PetscInt a = 0; a < g->ncorner; a++)
-    for (PetscInt d = 0; d < g->dim; d++) xi0[d] += g->node_xi[a][d] / g->ncorner;
   L = RowLayout(r);
   for (PetscInt i = 0; i < L.size; i++) rec[i] = 0;
   TslMaterialEval(in->sec->mat, 0, &mp);
@@ -295,31 +369,30 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha, rec[4] = lambda + 2 * mu;
   for (PetscInt q = 0; q < quad->n; q++) {
     if (!TslElementPointEvaluate(t, in->sec, in->x, quad->xi[q], quad->w[q], &p)) return PETSC_FALSE;
-    StorePoint(&p, n, dim, axi, &rec[L.G + q * n * dim], &rec[L.Nr + q * n]);
-    rec[L.dV + q] = p.dV;
+    StorePoint(&p, n, dim, full, axi, &L, &rec[L.P + q * L.ps]);
   }
   for (PetscInt q = 0; q < g->full.n; q++) { /* conduction: the full rule in every formulation */
     if (!TslElementPointEvaluate(t, in->sec, in->x, g->full.xi[q], g->full.w[q], &p)) return PETSC_FALSE;
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt b = 0; b < n; b++) {
+      for (PetscInt b = a + 1; b < n; b++) {
         PetscReal kab = 0;
         for (PetscInt d = 0; d < dim; d++) kab += p.dNdx[a][d] * p.dNdx[b][d];
-        rec[L.K + a * n + b] += mp.k * kab * p.dV;
+        K[a][b] += mp.k * kab * p.dV;
       }
   }
+  for (PetscInt a = 0, k = L.K; a < n; a++)
+    for (PetscInt b = a + 1; b < n; b++) rec[k++] = K[a][b];
   /* the centre: the bulk viscosity's point and the hourglass control's (xi = 0 for quad4 and hex8) */
+  Centre(g, xi0);
   if (!TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p)) return PETSC_FALSE;
-  if (quad->n > 1) {
-    StorePoint(&p, n, dim, axi, &rec[L.Gc], &rec[L.Nrc]);
-    rec[L.Vc] = p.dV;
-  }
+  if (full) StorePoint(&p, n, dim, full, axi, &(Layout){.dV = dim * dim, .ri = dim * dim + 1}, &rec[L.C]);
   if (Rows[r].nh) {
-    PetscReal gamma[4][TSL_MAX_ELEM_NODES], bb;
-    PetscInt  nh = TslElementHourglassBase(in, &p, gamma, &bb);
+    PetscReal gamma[4][TSL_MAX_ELEM_NODES], hx[4][3], bb;
+    PetscInt  nh = TslElementHourglassBase(in, &p, gamma, hx, &bb);
     if (nh != Rows[r].nh) return PETSC_FALSE;
     rec[5] = TslElementHourglassKappa(mu, p.dV, bb);
     for (PetscInt k = 0; k < nh; k++)
-      for (PetscInt a = 0; a < n; a++) rec[L.gamma + k * n + a] = gamma[k][a];
+      for (PetscInt d = 0; d < dim; d++) rec[L.hx + k * dim + d] = hx[k][d];
   }
   return PETSC_TRUE;
 }

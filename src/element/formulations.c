@@ -165,11 +165,10 @@ static void FaceRuleSub(const TslGeometry *g, PetscInt face, TslFaceRule *rule)
  * hourglass force. With q^k_i = sum_a gamma^k_a u_ia:
  *   f_ia = kappa sum_k gamma^k_a q^k_i,  energy = kappa/2 sum_k,i (q^k_i)^2,  kappa = s mu V sum_a |b_a|^2,
  * mu taken at the centre temperature (its derivative enters the temperature columns of the tangent). */
-PetscInt TslElementHourglassBase(const TslElementInput *in, const TslElementPoint *p, PetscReal gamma[4][TSL_MAX_ELEM_NODES], PetscReal *bb)
+PetscInt TslElementHourglassVectors(const TslGeometry *g, PetscReal h[4][TSL_MAX_ELEM_NODES])
 {
-  const TslGeometry *g   = in->type->geom;
-  const PetscInt     dim = in->type->dim, n = g->nnode;
-  PetscInt           nh = 0;
+  const PetscInt n  = g->nnode;
+  PetscInt       nh = 0;
 
   /* base vectors: products of two or more reference coordinates at the nodes */
   for (PetscInt mask = 3; mask < (1 << g->dim); mask++) {
@@ -177,20 +176,30 @@ PetscInt TslElementHourglassBase(const TslElementInput *in, const TslElementPoin
     for (PetscInt d = 0; d < g->dim; d++) bits += (mask >> d) & 1;
     if (bits < 2) continue;
     for (PetscInt a = 0; a < n; a++) {
-      gamma[nh][a] = 1;
+      h[nh][a] = 1;
       for (PetscInt d = 0; d < g->dim; d++)
-        if ((mask >> d) & 1) gamma[nh][a] *= g->node_xi[a][d];
+        if ((mask >> d) & 1) h[nh][a] *= g->node_xi[a][d];
     }
     nh++;
   }
+  return nh;
+}
+
+PetscInt TslElementHourglassBase(const TslElementInput *in, const TslElementPoint *p, PetscReal gamma[4][TSL_MAX_ELEM_NODES], PetscReal hx[4][3],
+                                 PetscReal *bb)
+{
+  const PetscInt dim = in->type->dim, n = in->type->geom->nnode, nh = TslElementHourglassVectors(in->type->geom, gamma);
+
   for (PetscInt k = 0; k < nh; k++) {
-    PetscReal hx[3] = {0, 0, 0};
+    PetscReal hk[3] = {0, 0, 0};
     for (PetscInt b = 0; b < n; b++)
-      for (PetscInt d = 0; d < dim; d++) hx[d] += gamma[k][b] * in->x[3 * b + d];
+      for (PetscInt d = 0; d < dim; d++) hk[d] += gamma[k][b] * in->x[3 * b + d];
     for (PetscInt a = 0; a < n; a++) {
-      for (PetscInt d = 0; d < dim; d++) gamma[k][a] -= hx[d] * p->dNdx[a][d];
+      for (PetscInt d = 0; d < dim; d++) gamma[k][a] -= hk[d] * p->dNdx[a][d];
       gamma[k][a] /= n; /* Flanagan-Belytschko's normalisation (1/4 in 2D, 1/8 in 3D) */
     }
+    if (hx)
+      for (PetscInt d = 0; d < dim; d++) hx[k][d] = hk[d];
   }
   *bb = 0;
   for (PetscInt a = 0; a < n; a++)
@@ -212,7 +221,7 @@ static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMat
   PetscFunctionBeginUser;
   PetscCheck(TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "hourglass control of an inverted element");
-  nh      = TslElementHourglassBase(in, &p, gamma, &bb);
+  nh      = TslElementHourglassBase(in, &p, gamma, NULL, &bb);
   mu      = mp->E / (2 * (1 + mp->nu));
   dmu     = mp->dE / (2 * (1 + mp->nu)) - mp->dnu * mp->E / (2 * (1 + mp->nu) * (1 + mp->nu));
   kappa   = TslElementHourglassKappa(mu, p.dV, bb);

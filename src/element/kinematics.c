@@ -151,6 +151,8 @@ PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementSe
   }
   p->detJ = InvertJacobian(dim, J, Ji);
   if (!(p->detJ > 0)) return PETSC_FALSE;
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = 0; j < 3; j++) p->Ji[i][j] = Ji[i][j];
   for (PetscInt a = 0; a < n; a++) {
     for (PetscInt i = 0; i < 3; i++) p->dNdx[a][i] = 0;
     for (PetscInt i = 0; i < dim; i++)

@@ -4,6 +4,7 @@
  * loop (TslProblemElementLoop) and the time-agnostic kernels (TslElementInternal, TslElementLumped,
  * TslElementFaceLoad), as the implicit assembly does. */
 #include "problem_impl.h"
+#include <thermoslide/lanes.h>
 #include <petscblaslapack.h>
 
 PetscErrorCode TslProblemSetMatrixFree(TslProblem p, PetscBool matrix_free)
@@ -77,76 +78,106 @@ static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, Pets
 
 #define W TSL_FAST_LANES
 
-/* Lane j of a batch: element e's unknowns (and initial temperatures, ti not NULL), nd unknowns per node (a
- * constant where inlined), interleaved by lane as TslElementFastForceBatch takes them. */
-static inline __attribute__((always_inline)) void GatherLane(TslProblem p, PetscInt e, PetscInt j, const PetscScalar *restrict xa, PetscReal u[],
-                                                             PetscReal ti[], const PetscInt nd)
+/* The elements of batch b's lanes: e[j] (an empty lane computes lane 0's element again), used[j] whether
+ * lane j is an element of its own (scattered). */
+static inline void BatchElements(TslProblem p, PetscInt b, PetscInt e[W], PetscBool used[W])
 {
-  const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0;
-  const PetscInt *ln = &p->elem_lnode[k0];
-
-  for (PetscInt a = 0; a < n; a++) {
-    const PetscInt l = ln[a];
-    for (PetscInt i = 0; i < nd; i++) u[(nd * a + i) * W + j] = PetscRealPart(xa[nd * l + i]);
-    if (ti) ti[a * W + j] = p->theta_init[l];
+  for (PetscInt j = 0; j < W; j++) {
+    const PetscInt ej = p->fast_batch[W * b + j];
+    e[j] = ej >= 0 ? ej : p->fast_batch[W * b], used[j] = ej >= 0 ? PETSC_TRUE : PETSC_FALSE;
   }
 }
 
-/* Lane j of a batch's results added into element e's rows of f. */
-static inline __attribute__((always_inline)) void ScatterLane(TslProblem p, PetscInt e, PetscInt j, const PetscReal R[], PetscScalar *restrict f,
-                                                              const PetscInt nd)
+/* The batch's unknowns (and initial temperatures, ti not NULL) from the local form xa, nd unknowns per node
+ * (a constant where inlined), interleaved by lane as TslElementFastForceBatch takes them: with four
+ * unknowns per node each node's four rows are loaded whole and transposed (lanes.h). */
+static inline __attribute__((always_inline)) void GatherBatch(TslProblem p, const PetscInt e[W], const PetscScalar *restrict xa, PetscReal u[],
+                                                              PetscReal ti[], const PetscInt nd)
 {
-  const PetscInt  k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0;
-  const PetscInt *ln = &p->elem_lnode[k0];
+  const PetscInt  n = p->m->elem_ptr[e[0] + 1] - p->m->elem_ptr[e[0]];
+  const PetscInt *ln[W];
 
-  for (PetscInt a = 0; a < n; a++)
-    for (PetscInt i = 0; i < nd; i++) f[nd * ln[a] + i] += R[(nd * a + i) * W + j];
+  for (PetscInt j = 0; j < W; j++) ln[j] = &p->elem_lnode[p->m->elem_ptr[e[j]]];
+  for (PetscInt a = 0; a < n; a++) {
+#if defined(TSL_HAVE_TRANSPOSE4)
+    if (nd == 4) {
+      TslV r[4], c[4];
+      for (PetscInt j = 0; j < W; j++) r[j] = TslLd(&xa[4 * ln[j][a]]);
+      TslTranspose4(r, c);
+      for (PetscInt i = 0; i < 4; i++) TslSt(&u[(4 * a + i) * W], c[i]);
+    } else
+#endif
+      for (PetscInt j = 0; j < W; j++)
+        for (PetscInt i = 0; i < nd; i++) u[(nd * a + i) * W + j] = PetscRealPart(xa[nd * ln[j][a] + i]);
+    if (ti)
+      for (PetscInt j = 0; j < W; j++) ti[a * W + j] = p->theta_init[ln[j][a]];
+  }
 }
 
-/* The element of lane j of batch b (an empty lane computes lane 0's element again, and is not scattered) */
-static inline PetscInt LaneElement(TslProblem p, PetscInt b, PetscInt j)
+/* The used lanes' results added into their elements' rows of f (in lane order: lanes may share a node). */
+static inline __attribute__((always_inline)) void ScatterBatch(TslProblem p, const PetscInt e[W], const PetscBool used[W], const PetscReal R[],
+                                                               PetscScalar *restrict f, const PetscInt nd)
 {
-  const PetscInt e = p->fast_batch[W * b + j];
-  return e >= 0 ? e : p->fast_batch[W * b];
+  const PetscInt  n = p->m->elem_ptr[e[0] + 1] - p->m->elem_ptr[e[0]];
+  const PetscInt *ln[W];
+
+  for (PetscInt j = 0; j < W; j++) ln[j] = &p->elem_lnode[p->m->elem_ptr[e[j]]];
+  for (PetscInt a = 0; a < n; a++) {
+#if defined(TSL_HAVE_TRANSPOSE4)
+    if (nd == 4) {
+      TslV r[4], c[4];
+      for (PetscInt i = 0; i < 4; i++) c[i] = TslLd(&R[(4 * a + i) * W]);
+      TslTranspose4(c, r);
+      for (PetscInt j = 0; j < W; j++)
+        if (used[j]) TslSt(&f[4 * ln[j][a]], TslLd(&f[4 * ln[j][a]]) + r[j]);
+      continue;
+    }
+#endif
+    for (PetscInt j = 0; j < W; j++)
+      if (used[j])
+        for (PetscInt i = 0; i < nd; i++) f[nd * ln[j][a] + i] += R[(nd * a + i) * W + j];
+  }
 }
 
 void TslProblemFastBatchEnergy(TslProblem p, PetscInt b, const PetscScalar *xa, PetscReal *strain, PetscReal *hourglass)
 {
-  const PetscInt             t  = p->m->elem_type[p->fast_batch[W * b]];
-  const TslElementFastShape *sh = &p->fast_shape[t];
-  PetscReal                  u[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], se[W], hg[W];
+  PetscReal u[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], se[W], hg[W];
+  PetscInt  e[W];
+  PetscBool used[W];
 
-  for (PetscInt j = 0; j < W; j++) GatherLane(p, LaneElement(p, b, j), j, xa, u, ti, p->ndof);
-  TslElementFastEnergyBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, se, hg);
+  BatchElements(p, b, e, used);
+  GatherBatch(p, e, xa, u, ti, p->ndof);
+  TslElementFastEnergyBatch(&p->fast_shape[p->m->elem_type[e[0]]], &p->fast_rec[p->fast_boff[b]], u, ti, se, hg);
   *strain = *hourglass = 0;
   for (PetscInt j = 0; j < W; j++)
-    if (p->fast_batch[W * b + j] >= 0) *strain += se[j], *hourglass += hg[j];
+    if (used[j]) *strain += se[j], *hourglass += hg[j];
 }
 
 /* One batch's forces from its records (TslElementFastForceBatch): a gather of the unknowns alone, no
- * geometry. Inlined with the dofs per node a constant (FastBatch3, FastBatch4), so a node's unknowns move
- * as one short copy rather than a loop of run-time length. */
+ * geometry. Inlined with the dofs per node a constant (FastBatch3, FastBatch4, each cloned for AVX2), so a
+ * node's unknowns move as one short copy rather than a loop of run-time length. */
 static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, PetscInt b, const PetscScalar *restrict xa, ForceCtx *c, const PetscInt nd)
 {
-  const PetscInt             t  = p->m->elem_type[p->fast_batch[W * b]];
-  const TslElementFastShape *sh = &p->fast_shape[t];
+  const TslElementFastShape *sh;
   PetscReal u[TSL_MAX_ELEM_DOF * W], v[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], R[TSL_MAX_ELEM_DOF * W], Rv[TSL_MAX_ELEM_DOF * W], eta[W],
     eta2[W], w[W];
-  PetscBool bv = PETSC_FALSE;
+  PetscInt  e[W];
+  PetscBool used[W], visc[W], bv = PETSC_FALSE;
 
+  BatchElements(p, b, e, used);
+  sh = &p->fast_shape[p->m->elem_type[e[0]]];
+  GatherBatch(p, e, xa, u, ti, nd);
   for (PetscInt j = 0; j < W; j++) {
-    const PetscInt e = LaneElement(p, b, j);
-    GatherLane(p, e, j, xa, u, ti, nd);
-    eta[j] = c->fv ? c->eta[e] : 0, eta2[j] = c->fv ? c->eta2[e] : 0;
-    if (eta[j] > 0 || eta2[j] > 0) bv = PETSC_TRUE;
+    eta[j] = c->fv ? c->eta[e[j]] : 0, eta2[j] = c->fv ? c->eta2[e[j]] : 0;
+    visc[j] = used[j] && (eta[j] > 0 || eta2[j] > 0) ? PETSC_TRUE : PETSC_FALSE;
+    if (visc[j]) bv = PETSC_TRUE;
   }
-  if (bv)
-    for (PetscInt j = 0; j < W; j++) GatherLane(p, LaneElement(p, b, j), j, c->v, v, NULL, nd);
+  if (bv) GatherBatch(p, e, c->v, v, NULL, nd);
   if (b + 1 < p->fast_nbatch) { /* the next batch: its records past the caches (non-temporal), its nodal rows into them */
     const PetscReal *next = &p->fast_rec[p->fast_boff[b + 1]], *end = p->fast_rec + p->fast_total;
     for (PetscInt k = 0; k < W * sh->size && next + k < end; k += 8) __builtin_prefetch(next + k, 0, 0);
     for (PetscInt j = 0; j < W; j++) {
-      const PetscInt e = LaneElement(p, b + 1, j), k0 = p->m->elem_ptr[e], n = p->m->elem_ptr[e + 1] - k0;
+      const PetscInt en = p->fast_batch[W * (b + 1) + j], k0 = en >= 0 ? p->m->elem_ptr[en] : 0, n = en >= 0 ? p->m->elem_ptr[en + 1] - k0 : 0;
       for (PetscInt a = 0; a < n; a++) {
         const PetscInt l = p->elem_lnode[k0 + a];
         __builtin_prefetch(&xa[nd * l], 0, 3);
@@ -155,19 +186,16 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
     }
   }
   TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, bv ? v : NULL, eta, eta2, R, bv ? Rv : NULL, w);
-  for (PetscInt j = 0; j < W; j++) {
-    const PetscInt e = p->fast_batch[W * b + j];
-    if (e < 0) continue;
-    ScatterLane(p, e, j, R, c->fi, nd);
-    if (eta[j] > 0 || eta2[j] > 0) {
-      ScatterLane(p, e, j, Rv, c->fv, nd);
-      c->power += w[j];
-    }
+  ScatterBatch(p, e, used, R, c->fi, nd);
+  if (bv) {
+    ScatterBatch(p, e, visc, Rv, c->fv, nd);
+    for (PetscInt j = 0; j < W; j++)
+      if (visc[j]) c->power += w[j];
   }
 }
-static void FastBatch3(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c) { FastBatchNd(p, b, xa, c, 3); }
-static void FastBatch4(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c) { FastBatchNd(p, b, xa, c, 4); }
-static void FastBatch(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c)
+TSL_CLONES static void FastBatch3(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c) { FastBatchNd(p, b, xa, c, 3); }
+TSL_CLONES static void FastBatch4(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c) { FastBatchNd(p, b, xa, c, 4); }
+static void            FastBatch(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c)
 {
   if (p->ndof == 4) FastBatch4(p, b, xa, c);
   else if (p->ndof == 3) FastBatch3(p, b, xa, c);
