@@ -84,3 +84,9 @@ PetscErrorCode TslPhaseBegin(TslPhase phase);
 PetscErrorCode TslPhaseEnd(TslPhase phase);
 /* Collective: one line "time ...; memory ..." on rank 0 (total: wall time since TslPhasesInitialize). */
 PetscErrorCode TslPhasesReport(MPI_Comm comm);
+
+/* Largest eigenvalue of the symmetric n x n matrix S (row-major, n <= TSL_EIGEN_MAX_N, overwritten), from
+ * above: within a relative 1e-12 and never below it (src/sys/eigen.c). */
+#define TSL_EIGEN_MAX_N 64
+PetscReal TslLargestEigenvalue(PetscInt n, PetscReal S[]);
+

@@ -5,7 +5,6 @@
  * TslElementFaceLoad), as the implicit assembly does. */
 #include "problem_impl.h"
 #include <thermoslide/lanes.h>
-#include <petscblaslapack.h>
 
 PetscErrorCode TslProblemSetMatrixFree(TslProblem p, PetscBool matrix_free)
 {
@@ -470,27 +469,20 @@ PetscErrorCode TslProblemLumpedMass(TslProblem p, const PetscReal scale[], Vec M
 }
 
 /* Largest eigenvalue of the symmetric part of D^-1/2 A D^-1/2 (A: the n x n block of the element matrix at
- * rows/columns idx[], leading dimension lda; D: diagonal w), exactly (LAPACK syev): by Irons' theorem no
- * eigenvalue of the assembled lumped-mass problem exceeds the largest element one, so the increment is
- * stable with it; an iterative estimate from below (power iteration) was not, by 10 % on a bar. */
-static PetscErrorCode LargestEigenvalue(PetscInt n, const PetscInt idx[], const PetscReal A[], PetscInt lda, const PetscReal w[], PetscReal *lambda)
+ * rows/columns idx[], leading dimension lda; D: diagonal w), from above (TslLargestEigenvalue): by Irons'
+ * theorem no eigenvalue of the assembled lumped-mass problem exceeds the largest element one, so the
+ * increment is stable with it (an iterative estimate from below, power iteration, was not, by 10 % on a
+ * bar). */
+static void LargestEigenvalue(PetscInt n, const PetscInt idx[], const PetscReal A[], PetscInt lda, const PetscReal w[], PetscReal *lambda)
 {
-  PetscScalar  S[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF], work[8 * TSL_MAX_ELEM_DOF];
-  PetscReal    ev[TSL_MAX_ELEM_DOF], s[TSL_MAX_ELEM_DOF];
-  PetscBLASInt bn, lwork = 8 * TSL_MAX_ELEM_DOF, info;
+  PetscReal S[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF], s[TSL_MAX_ELEM_DOF];
 
-  PetscFunctionBeginUser;
-  *lambda = 0;
-  if (n == 0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscBLASIntCast(n, &bn));
   for (PetscInt i = 0; i < n; i++) s[i] = 1.0 / PetscSqrtReal(w[i]);
   for (PetscInt i = 0; i < n; i++)
     for (PetscInt j = 0; j < n; j++) S[i * n + j] = 0.5 * (A[idx[i] * lda + idx[j]] + A[idx[j] * lda + idx[i]]) * s[i] * s[j];
-  PetscCallBLAS("LAPACKsyev", LAPACKsyev_("N", "U", &bn, S, &bn, ev, work, &lwork, &info));
-  PetscCheck(!info, PETSC_COMM_SELF, PETSC_ERR_LIB, "LAPACK syev failed: %d", (int)info);
-  *lambda = ev[n - 1];
-  PetscFunctionReturn(PETSC_SUCCESS);
+  *lambda = n > 0 ? TslLargestEigenvalue(n, S) : 0;
 }
+
 
 typedef struct {
   PetscReal *R, *K, *dt_mech, *dt_heat;
@@ -515,10 +507,10 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
   for (PetscInt a = 0; a < nnode; a++)
     for (PetscInt i = 0; i < th; i++)
       if (!p->pinned[d->ld[a * p->ndof + i]]) idx[n] = a * p->ndof + i, w[n++] = M[a];
-  PetscCall(LargestEigenvalue(n, idx, c->K, d->nd, w, &lam));
+  LargestEigenvalue(n, idx, c->K, d->nd, w, &lam);
   c->dt_mech[e] = lam > 0 ? 2.0 / PetscSqrtReal(lam) : PETSC_MAX_REAL;
   for (PetscInt a = 0; a < nnode; a++) idx[a] = a * p->ndof + th, w[a] = C[a];
-  PetscCall(LargestEigenvalue(nnode, idx, c->K, d->nd, w, &lam));
+  LargestEigenvalue(nnode, idx, c->K, d->nd, w, &lam);
   c->dt_heat[e] = lam > 0 ? 2.0 / lam : PETSC_MAX_REAL;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
