@@ -2,27 +2,34 @@
  *
  * The matrix is reduced to tridiagonal form by Householder reflections (S <- H S H, H = I - beta v v^T,
  * applied as S <- S - v p^T - p v^T), whose eigenvalues are S's own to rounding; the largest lies between
- * the largest diagonal entry and Gershgorin's bound, and is bracketed by bisection on the Sturm count (the
+ * the largest diagonal entry and Gershgorin's bound, and is bracketed by multisection on the Sturm count (the
  * number of negative pivots of T - x I is the number of eigenvalues below x). The bracket's upper end is
  * returned, so a stable increment computed from it is never too long. The explicit procedure takes one per
  * element and field (dynamics.c); LAPACK's syev, which computes all eigenvalues, was most of an explicit
  * step's set-up (88 s for a million C3D8T elements). */
 #include <thermoslide/sys.h>
 
-/* Number of eigenvalues below x of the symmetric tridiagonal matrix (diagonal d[n], off-diagonal e[n-1])
- * (Sturm sequence: the negative pivots of T - x I). */
-static PetscInt SturmCount(PetscInt n, const PetscReal d[], const PetscReal e2[], PetscReal x)
+/* How many of the points x[0..M-1] have every eigenvalue of the symmetric tridiagonal matrix (diagonal
+ * d[n], squared off-diagonal e2[n-1]) below them: the Sturm count, the number of negative pivots of
+ * T - x I, equals n. The M recurrences run side by side: each is a chain of dependent divisions, so
+ * interleaved they cost about what one costs alone. */
+#define M 8
+static PetscInt CountAbove(PetscInt n, const PetscReal d[], const PetscReal e2[], const PetscReal x[M])
 {
-  PetscInt  count = 0;
-  PetscReal q     = d[0] - x;
+  PetscReal q[M];
+  PetscInt  count[M], above = 0;
 
+  for (PetscInt m = 0; m < M; m++) q[m] = d[0] - x[m], count[m] = 0;
   for (PetscInt i = 0;; i++) {
-    if (q == 0) q = -PETSC_SMALL * (PetscAbsReal(x) + PETSC_SMALL); /* a zero pivot: perturbed, counted as below */
-    if (q < 0) count++;
+    for (PetscInt m = 0; m < M; m++) {
+      if (q[m] == 0) q[m] = -PETSC_SMALL * (PetscAbsReal(x[m]) + PETSC_SMALL); /* a zero pivot: perturbed, counted as below */
+      count[m] += q[m] < 0 ? 1 : 0;
+    }
     if (i == n - 1) break;
-    q = d[i + 1] - x - e2[i] / q;
+    for (PetscInt m = 0; m < M; m++) q[m] = d[i + 1] - x[m] - e2[i] / q[m];
   }
-  return count;
+  for (PetscInt m = 0; m < M; m++) above += count[m] == n ? 1 : 0;
+  return above;
 }
 
 PetscReal TslLargestEigenvalue(PetscInt n, PetscReal S[])
@@ -63,11 +70,15 @@ PetscReal TslLargestEigenvalue(PetscInt n, PetscReal S[])
     lo = PetscMax(lo, d[i]), hi = PetscMax(hi, d[i] + r);
   }
   hi += 1e-12 * (PetscAbsReal(hi) + PetscAbsReal(lo)); /* above the bound's rounding */
-  for (PetscInt it = 0; it < 200 && hi - lo > 1e-12 * PetscMax(PetscAbsReal(hi), PetscAbsReal(lo)); it++) {
-    const PetscReal mid = 0.5 * (lo + hi);
-    if (mid <= lo || mid >= hi) break;
-    if (SturmCount(n, d, e2, mid) == n) hi = mid; /* every eigenvalue below mid */
-    else lo = mid;
+  for (PetscInt it = 0; it < 100 && hi - lo > 1e-12 * PetscMax(PetscAbsReal(hi), PetscAbsReal(lo)); it++) {
+    /* multisection: M points split [lo, hi] into M + 1 parts; the count is monotone in x, so the points
+     * above every eigenvalue are the last `above` ones */
+    PetscReal x[M];
+    PetscInt  above;
+    for (PetscInt m = 0; m < M; m++) x[m] = lo + (hi - lo) * (m + 1) / (M + 1);
+    above = CountAbove(n, d, e2, x);
+    if (above > 0) hi = x[M - above];
+    if (above < M) lo = x[M - above - 1];
   }
   return hi;
 }
