@@ -171,15 +171,17 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
 
 /* Explicit force records (fast.c). In a small-strain analysis with temperature-independent properties the
  * geometry of an element never changes and its conduction is linear, so the explicit force loop need not
- * re-evaluate either at every increment: an element's record holds the spatial gradients and volumes of
- * its mechanical points, its conduction matrix, the centre point of the bulk viscosity, the hourglass
- * vectors and its elastic constants, and TslElementFastForce computes from it what TslElementInternal and
- * TslElementBulkViscosity would (the same formulas, to rounding), with loops of fixed length.
+ * re-evaluate either at every increment: an element's record holds its points' inverse Jacobians (or, for
+ * one-point rows, gradients) and volumes, its conduction matrix's upper triangle, the centre point of the
+ * bulk viscosity, the hourglass products and its elastic constants, and TslElementFastForce computes from it
+ * what TslElementInternal and TslElementBulkViscosity would (the same formulas, to rounding), with loops of
+ * fixed length, four elements at a time (TslElementFastForceBatch).
  * Rows: the displacement formulations (full, reduced with hourglass control, modified) of plane strain,
  * axisymmetric and 3D solids, on every family (tri3, tri6, quad4, quad8, tet4, tet10, wedge6, hex8); hybrid,
  * plane stress, generalized plane strain, twist and temperature-dependent materials keep the generic path.
- *   TslElementFastShape     the type's shape values at its mechanical points (one per type, shared by its
- *                           elements); PETSC_FALSE when the type has no fast row
+ *   TslElementFastShape     the type's shape values and reference derivatives at its mechanical points and
+ *                           centre, and its hourglass base vectors (one per type, shared by its elements);
+ *                           PETSC_FALSE when the type has no fast row
  *   TslElementFastSize      reals in the element's record; 0: no fast path for this element
  *   TslElementFastBuild     fills the record; PETSC_FALSE for an inverted element
  *   TslElementFastForce     R (internal force and heat flow, laid out as TslElementInternal's), Rv (bulk

@@ -347,6 +347,17 @@ static void StorePoint(const TslElementPoint *p, PetscInt n, PetscInt dim, Petsc
   if (axi) P[L->ri] = 1.0 / p->x[0];
 }
 
+/* Point p's share of the conduction matrix's strict upper triangle: k grad N_a . grad N_b dV, a < b. */
+static void ConductionAdd(const TslElementPoint *p, PetscInt n, PetscInt dim, PetscReal k, PetscReal K[TSL_MAX_ELEM_NODES][TSL_MAX_ELEM_NODES])
+{
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt b = a + 1; b < n; b++) {
+      PetscReal kab = 0;
+      for (PetscInt d = 0; d < dim; d++) kab += p->dNdx[a][d] * p->dNdx[b][d];
+      K[a][b] += k * kab * p->dV;
+    }
+}
+
 PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
 {
   const TslElementType *t = in->type;
@@ -367,18 +378,16 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   TslMaterialEval(in->sec->mat, 0, &mp);
   TslElementLame(&mp, &lambda, &mu);
   rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha, rec[4] = lambda + 2 * mu;
+  /* the mechanical points, and the conduction by the full rule in every formulation: the same points when
+   * the mechanical rule is the full one (each evaluated once) */
   for (PetscInt q = 0; q < quad->n; q++) {
     if (!TslElementPointEvaluate(t, in->sec, in->x, quad->xi[q], quad->w[q], &p)) return PETSC_FALSE;
     StorePoint(&p, n, dim, full, axi, &L, &rec[L.P + q * L.ps]);
+    if (quad == &g->full) ConductionAdd(&p, n, dim, mp.k, K);
   }
-  for (PetscInt q = 0; q < g->full.n; q++) { /* conduction: the full rule in every formulation */
+  for (PetscInt q = 0; quad != &g->full && q < g->full.n; q++) {
     if (!TslElementPointEvaluate(t, in->sec, in->x, g->full.xi[q], g->full.w[q], &p)) return PETSC_FALSE;
-    for (PetscInt a = 0; a < n; a++)
-      for (PetscInt b = a + 1; b < n; b++) {
-        PetscReal kab = 0;
-        for (PetscInt d = 0; d < dim; d++) kab += p.dNdx[a][d] * p.dNdx[b][d];
-        K[a][b] += mp.k * kab * p.dV;
-      }
+    ConductionAdd(&p, n, dim, mp.k, K);
   }
   for (PetscInt a = 0, k = L.K; a < n; a++)
     for (PetscInt b = a + 1; b < n; b++) rec[k++] = K[a][b];
