@@ -199,6 +199,12 @@ typedef struct {
   PetscReal dN[TSL_FAST_MAX_QP][3][TSL_FAST_MAX_NODES]; /* dN_a/dxi_e there, [q][e][a] */
   PetscReal Nc[TSL_FAST_MAX_NODES], dNc[3][TSL_FAST_MAX_NODES]; /* the same at the centre (bulk viscosity) */
   PetscReal h[4][TSL_FAST_MAX_NODES];                   /* hourglass base vectors (reduced rows) */
+  /* hex8's full rule, sum-factorised (fast.c, SumFactors): along reference direction e the nodes pair up,
+   * sf_pair[e][p] = {node at xi_e = +1, node at xi_e = -1}, and dN_a/dxi_e at point q is +-sf_w[e][c][p] with
+   * c = sf_class[e][q] one of the 4 classes of points sharing their other two coordinates */
+  PetscBool sf;
+  PetscInt  sf_pair[3][4][2], sf_class[3][8];
+  PetscReal sf_w[3][4][4];
 } TslElementFastShape;
 
 PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *shape);

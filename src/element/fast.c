@@ -82,7 +82,7 @@ static inline __attribute__((always_inline)) void Gradients(const PetscInt dim, 
  * length. A full row's point works in the reference derivatives: the displacement gradient in xi (H),
  * mapped by A; the stress mapped back by A and spread by the same derivatives. */
 static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
-                                                        const PetscBool axi, const TslElementFastShape *shape, const PetscReal *rec,
+                                                        const PetscBool axi, const PetscBool sf0, const TslElementFastShape *shape, const PetscReal *rec,
                                                         const PetscReal *u, const PetscReal *ti, const PetscReal *v, const PetscReal *eta,
                                                         const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)
 {
@@ -92,10 +92,24 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
   V              U[3][TSL_FAST_MAX_NODES], th[TSL_FAST_MAX_NODES], dth[TSL_FAST_MAX_NODES], F[3][TSL_FAST_MAX_NODES], Fth[TSL_FAST_MAX_NODES];
   V              en[2] = {{0}, {0}};
 
+  const PetscBool sf = sf0 && shape->sf ? PETSC_TRUE : PETSC_FALSE;
+  V               Hc[3][3][4], Qs[3][3][4]; /* sum factorisation: H per class of points, Q summed per class */
+
   for (PetscInt a = 0; a < n; a++) {
     for (PetscInt d = 0; d < dim; d++) U[d][a] = Ld(u + (nd * a + d) * W), F[d][a] = (V){0};
     th[a] = Ld(u + (nd * a + dim) * W), dth[a] = th[a] - Ld(ti + a * W);
   }
+  if (sf0 && sf) /* H[i][e] at the 4 classes of points from the 4 differences along e */
+    for (PetscInt e = 0; e < 3; e++)
+      for (PetscInt i = 0; i < 3; i++) {
+        V D[4];
+        for (PetscInt p = 0; p < 4; p++) D[p] = U[i][shape->sf_pair[e][p][0]] - U[i][shape->sf_pair[e][p][1]];
+        for (PetscInt c = 0; c < 4; c++) {
+          Hc[e][i][c] = shape->sf_w[e][c][0] * D[0];
+          for (PetscInt p = 1; p < 4; p++) Hc[e][i][c] += shape->sf_w[e][c][p] * D[p];
+          Qs[e][i][c] = (V){0};
+        }
+      }
   for (PetscInt q = 0; q < nq; q++) {
     const PetscReal *P = rec + (L.P + q * L.ps) * W, *Nq = shape->N[q];
     const V          dV = Ld(P + L.dV * W);
@@ -111,6 +125,10 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       V H[3][3];
       for (PetscInt i = 0; i < dim; i++)
         for (PetscInt ee = 0; ee < dim; ee++) {
+          if (sf0 && sf) {
+            H[i][ee] = Hc[ee][i][shape->sf_class[ee][q]];
+            continue;
+          }
           H[i][ee] = dN[ee][0] * U[i][0];
           for (PetscInt a = 1; a < n; a++) H[i][ee] += dN[ee][a] * U[i][a];
         }
@@ -145,9 +163,13 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
             Q[i][ee] = S[i][0] * Ld(P + ee * dim * W);
             for (PetscInt d = 1; d < dim; d++) Q[i][ee] += S[i][d] * Ld(P + (ee * dim + d) * W);
           }
-        for (PetscInt i = 0; i < dim; i++)
-          for (PetscInt a = 0; a < n; a++)
-            for (PetscInt ee = 0; ee < dim; ee++) F[i][a] += dN[ee][a] * Q[i][ee];
+        if (sf0 && sf)
+          for (PetscInt i = 0; i < 3; i++)
+            for (PetscInt ee = 0; ee < 3; ee++) Qs[ee][i][shape->sf_class[ee][q]] += Q[i][ee];
+        else
+          for (PetscInt i = 0; i < dim; i++)
+            for (PetscInt a = 0; a < n; a++)
+              for (PetscInt ee = 0; ee < dim; ee++) F[i][a] += dN[ee][a] * Q[i][ee];
       } else {
         for (PetscInt i = 0; i < dim; i++)
           for (PetscInt a = 0; a < n; a++)
@@ -159,6 +181,14 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       }
     }
   }
+  if (sf0 && sf) /* the classes' summed Q spread to the pairs: +- along e */
+    for (PetscInt e = 0; e < 3; e++)
+      for (PetscInt i = 0; i < 3; i++)
+        for (PetscInt p = 0; p < 4; p++) {
+          V G = shape->sf_w[e][0][p] * Qs[e][i][0];
+          for (PetscInt c = 1; c < 4; c++) G += shape->sf_w[e][c][p] * Qs[e][i][c];
+          F[i][shape->sf_pair[e][p][0]] += G, F[i][shape->sf_pair[e][p][1]] -= G;
+        }
   for (PetscInt a = 0; a < n; a++) Fth[a] = (V){0};
   { /* (K theta)_a = sum_{b != a} K_ab (theta_b - theta_a), K's strict upper triangle row by row */
     const PetscReal *K = rec + L.K * W;
@@ -219,27 +249,27 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
 
 /* One function per row, cloned for x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
 #define CLONES TSL_CLONES
-#define FORCE_ROW(name, dim, n, nq, nh, axi)                                                                                                         \
+#define FORCE_ROW(name, dim, n, nq, nh, axi, sf)                                                                                                     \
   CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,          \
                           const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)             \
   {                                                                                                                                                  \
-    Force(dim, n, nq, nh, axi, sh, rec, u, ti, v, eta, eta2, R, Rv, power, energy);                                                                  \
+    Force(dim, n, nq, nh, axi, sf, sh, rec, u, ti, v, eta, eta2, R, Rv, power, energy);                                                              \
   }
-FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE)
-FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE)
-FORCE_ROW(Quad4Full, 2, 4, 4, 0, PETSC_FALSE)
-FORCE_ROW(Quad4Reduced, 2, 4, 1, 1, PETSC_FALSE)
-FORCE_ROW(Quad4FullAxi, 2, 4, 4, 0, PETSC_TRUE)
-FORCE_ROW(Quad4ReducedAxi, 2, 4, 1, 1, PETSC_TRUE)
-FORCE_ROW(Tet4Full, 3, 4, 1, 0, PETSC_FALSE)
-FORCE_ROW(Tet10Full, 3, 10, 4, 0, PETSC_FALSE)
-FORCE_ROW(Wedge6Full, 3, 6, 6, 0, PETSC_FALSE)
-FORCE_ROW(Tri3Full, 2, 3, 1, 0, PETSC_FALSE)
-FORCE_ROW(Tri6Full, 2, 6, 3, 0, PETSC_FALSE)
-FORCE_ROW(Quad8Full, 2, 8, 9, 0, PETSC_FALSE)
-FORCE_ROW(Tri3FullAxi, 2, 3, 1, 0, PETSC_TRUE)
-FORCE_ROW(Tri6FullAxi, 2, 6, 3, 0, PETSC_TRUE)
-FORCE_ROW(Quad8FullAxi, 2, 8, 9, 0, PETSC_TRUE)
+FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE, PETSC_TRUE)
+FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4Full, 2, 4, 4, 0, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4Reduced, 2, 4, 1, 1, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4FullAxi, 2, 4, 4, 0, PETSC_TRUE, PETSC_FALSE)
+FORCE_ROW(Quad4ReducedAxi, 2, 4, 1, 1, PETSC_TRUE, PETSC_FALSE)
+FORCE_ROW(Tet4Full, 3, 4, 1, 0, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tet10Full, 3, 10, 4, 0, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Wedge6Full, 3, 6, 6, 0, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri3Full, 2, 3, 1, 0, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri6Full, 2, 6, 3, 0, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad8Full, 2, 8, 9, 0, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri3FullAxi, 2, 3, 1, 0, PETSC_TRUE, PETSC_FALSE)
+FORCE_ROW(Tri6FullAxi, 2, 6, 3, 0, PETSC_TRUE, PETSC_FALSE)
+FORCE_ROW(Quad8FullAxi, 2, 8, 9, 0, PETSC_TRUE, PETSC_FALSE)
 
 typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *,
                         const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
@@ -251,24 +281,25 @@ typedef struct {
   TslKinematics         kin;
   PetscInt              nq, nh;
   ForceFn               force;
+  PetscBool             sf; /* sum-factorised (hex8's full rule) */
 } FastRow;
 
 static const FastRow Rows[] = {
-    {&TslGeomHex8, &TslFormFull, TSL_KIN_SOLID3D, 8, 0, Hex8Full},
-    {&TslGeomHex8, &TslFormReduced, TSL_KIN_SOLID3D, 1, 4, Hex8Reduced},
-    {&TslGeomQuad4, &TslFormFull, TSL_KIN_PLANE_STRAIN, 4, 0, Quad4Full},
-    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRAIN, 1, 1, Quad4Reduced},
-    {&TslGeomQuad4, &TslFormFull, TSL_KIN_AXISYMMETRIC, 4, 0, Quad4FullAxi},
-    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_AXISYMMETRIC, 1, 1, Quad4ReducedAxi},
-    {&TslGeomTet4, &TslFormFull, TSL_KIN_SOLID3D, 1, 0, Tet4Full},
-    {&TslGeomTet10, &TslFormModified, TSL_KIN_SOLID3D, 4, 0, Tet10Full}, /* modified: lumping and pressure faces differ, not the force */
-    {&TslGeomWedge6, &TslFormFull, TSL_KIN_SOLID3D, 6, 0, Wedge6Full},
-    {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRAIN, 1, 0, Tri3Full},
-    {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRAIN, 3, 0, Tri6Full},
-    {&TslGeomQuad8, &TslFormFull, TSL_KIN_PLANE_STRAIN, 9, 0, Quad8Full},
-    {&TslGeomTri3, &TslFormFull, TSL_KIN_AXISYMMETRIC, 1, 0, Tri3FullAxi},
-    {&TslGeomTri6, &TslFormModified, TSL_KIN_AXISYMMETRIC, 3, 0, Tri6FullAxi},
-    {&TslGeomQuad8, &TslFormFull, TSL_KIN_AXISYMMETRIC, 9, 0, Quad8FullAxi},
+    {&TslGeomHex8, &TslFormFull, TSL_KIN_SOLID3D, 8, 0, Hex8Full, PETSC_TRUE},
+    {&TslGeomHex8, &TslFormReduced, TSL_KIN_SOLID3D, 1, 4, Hex8Reduced, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormFull, TSL_KIN_PLANE_STRAIN, 4, 0, Quad4Full, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRAIN, 1, 1, Quad4Reduced, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormFull, TSL_KIN_AXISYMMETRIC, 4, 0, Quad4FullAxi, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_AXISYMMETRIC, 1, 1, Quad4ReducedAxi, PETSC_FALSE},
+    {&TslGeomTet4, &TslFormFull, TSL_KIN_SOLID3D, 1, 0, Tet4Full, PETSC_FALSE},
+    {&TslGeomTet10, &TslFormModified, TSL_KIN_SOLID3D, 4, 0, Tet10Full, PETSC_FALSE}, /* modified: lumping and pressure faces differ, not the force */
+    {&TslGeomWedge6, &TslFormFull, TSL_KIN_SOLID3D, 6, 0, Wedge6Full, PETSC_FALSE},
+    {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRAIN, 1, 0, Tri3Full, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRAIN, 3, 0, Tri6Full, PETSC_FALSE},
+    {&TslGeomQuad8, &TslFormFull, TSL_KIN_PLANE_STRAIN, 9, 0, Quad8Full, PETSC_FALSE},
+    {&TslGeomTri3, &TslFormFull, TSL_KIN_AXISYMMETRIC, 1, 0, Tri3FullAxi, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormModified, TSL_KIN_AXISYMMETRIC, 3, 0, Tri6FullAxi, PETSC_FALSE},
+    {&TslGeomQuad8, &TslFormFull, TSL_KIN_AXISYMMETRIC, 9, 0, Quad8FullAxi, PETSC_FALSE},
 };
 
 static PetscInt RowOf(const TslElementType *t)
@@ -284,6 +315,43 @@ static Layout RowLayout(PetscInt r)
 {
   const FastRow *row = &Rows[r];
   return LayoutOf(row->geom->dim, row->geom->nnode, row->nq, row->nh, TslKinematicsRowGet(row->kin)->revolve);
+}
+
+/* The sum factorisation of hex8's full rule (the shape's sf_* fields): derived from the shape functions and
+ * the rule, and used only when every derivative matches it exactly (shape->sf). */
+static void SumFactors(const TslGeometry *g, const TslQuadrature *quad, TslElementFastShape *shape)
+{
+  shape->sf = PETSC_FALSE;
+  if (g->dim != 3 || g->nnode != 8 || quad->n != 8) return;
+  for (PetscInt e = 0; e < 3; e++) {
+    const PetscInt f = (e + 1) % 3, h = (e + 2) % 3;
+    PetscInt       np = 0, nc = 0, qc[4];
+    for (PetscInt a = 0; a < 8; a++) { /* pairs: the two nodes differing in xi_e alone */
+      if (!(g->node_xi[a][e] > 0)) continue;
+      for (PetscInt b = 0; b < 8; b++)
+        if (g->node_xi[b][e] < 0 && g->node_xi[b][f] == g->node_xi[a][f] && g->node_xi[b][h] == g->node_xi[a][h] && np < 4)
+          shape->sf_pair[e][np][0] = a, shape->sf_pair[e][np][1] = b, np++;
+    }
+    if (np != 4) return;
+    for (PetscInt q = 0; q < 8; q++) { /* classes: the points sharing (xi_f, xi_h) */
+      PetscInt c = 0;
+      while (c < nc && !(quad->xi[qc[c]][f] == quad->xi[q][f] && quad->xi[qc[c]][h] == quad->xi[q][h])) c++;
+      if (c == nc) {
+        if (nc == 4) return;
+        qc[nc++] = q;
+      }
+      shape->sf_class[e][q] = c;
+    }
+    if (nc != 4) return;
+    for (PetscInt c = 0; c < 4; c++)
+      for (PetscInt p = 0; p < 4; p++) shape->sf_w[e][c][p] = shape->dN[qc[c]][e][shape->sf_pair[e][p][0]];
+    for (PetscInt q = 0; q < 8; q++) /* every derivative as the factorisation says, exactly */
+      for (PetscInt p = 0; p < 4; p++) {
+        const PetscReal w = shape->sf_w[e][shape->sf_class[e][q]][p];
+        if (shape->dN[q][e][shape->sf_pair[e][p][0]] != w || shape->dN[q][e][shape->sf_pair[e][p][1]] != -w) return;
+      }
+  }
+  shape->sf = PETSC_TRUE;
 }
 
 /* The centre of the bulk viscosity: the corners' centroid, as TslElementBulkViscosity's. */
@@ -320,6 +388,7 @@ PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *s
     shape->Nc[a] = N[a];
     for (PetscInt e = 0; e < g->dim; e++) shape->dNc[e][a] = dN[g->dim * a + e];
   }
+  if (Rows[r].sf) SumFactors(g, quad, shape);
   nh = PetscMin(TslElementHourglassVectors(g, h), 4);
   for (PetscInt k = 0; k < nh; k++)
     for (PetscInt a = 0; a < PetscMin(g->nnode, TSL_FAST_MAX_NODES); a++) shape->h[k][a] = h[k][a];

@@ -99,6 +99,8 @@ static PetscErrorCode CheckType(TestLog *log, const TslElementType *t, PetscReal
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   (*nrows)++;
+  if (!strcmp(t->name, "C3D8T")) /* hex8, full rule */
+    CheckTrue(log, shape.sf, "%s: the full rule's sum factorisation applies (checked against every derivative)", t->name);
   size = TslElementFastSize(&in);
   CheckTrue(log, (PetscBool)(size > 0 && size <= 1024), "%s: record of %d reals", t->name, (int)size);
   CheckTrue(log, TslElementFastBuild(&in, rec), "%s (offset %g): record built", t->name, (double)offset);
