@@ -398,7 +398,7 @@ PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *s
 PetscInt TslElementFastSize(const TslElementInput *in)
 {
   const PetscInt r = RowOf(in->type);
-  if (r < 0 || TslMaterialIsTemperatureDependent(in->sec->mat)) return 0;
+  if (r < 0 || TslMaterialIsTemperatureDependent(in->sec->mat) || RowLayout(r).size > TSL_FAST_MAX_SIZE) return 0;
   return RowLayout(r).size;
 }
 
