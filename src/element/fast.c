@@ -99,7 +99,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
     for (PetscInt d = 0; d < dim; d++) U[d][a] = Ld(u + (nd * a + d) * W), F[d][a] = (V){0};
     th[a] = Ld(u + (nd * a + dim) * W), dth[a] = th[a] - Ld(ti + a * W);
   }
-  if (sf0 && sf) /* H[i][e] at the 4 classes of points from the 4 differences along e */
+  if (sf) /* H[i][e] at the 4 classes of points from the 4 differences along e */
     for (PetscInt e = 0; e < 3; e++)
       for (PetscInt i = 0; i < 3; i++) {
         V D[4];
@@ -125,7 +125,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       V H[3][3];
       for (PetscInt i = 0; i < dim; i++)
         for (PetscInt ee = 0; ee < dim; ee++) {
-          if (sf0 && sf) {
+          if (sf) {
             H[i][ee] = Hc[ee][i][shape->sf_class[ee][q]];
             continue;
           }
@@ -163,7 +163,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
             Q[i][ee] = S[i][0] * Ld(P + ee * dim * W);
             for (PetscInt d = 1; d < dim; d++) Q[i][ee] += S[i][d] * Ld(P + (ee * dim + d) * W);
           }
-        if (sf0 && sf)
+        if (sf)
           for (PetscInt i = 0; i < 3; i++)
             for (PetscInt ee = 0; ee < 3; ee++) Qs[ee][i][shape->sf_class[ee][q]] += Q[i][ee];
         else
@@ -181,7 +181,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       }
     }
   }
-  if (sf0 && sf) /* the classes' summed Q spread to the pairs: +- along e */
+  if (sf) /* the classes' summed Q spread to the pairs: +- along e */
     for (PetscInt e = 0; e < 3; e++)
       for (PetscInt i = 0; i < 3; i++)
         for (PetscInt p = 0; p < 4; p++) {
@@ -224,7 +224,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
   if (energy) St(energy, en[0]), St(energy + W, en[1]);
   if (Rv) { /* lanes without viscosity (eta = eta2 = 0) get zero forces and power */
     const PetscReal *C  = rec + L.C * W;
-    const V          Vc = Ld(C + (nq > 1 ? dim * dim : L.dV) * W), cd = Ld(rec + 4 * W);
+    const V          Vc = Ld(C + L.dV * W), cd = Ld(rec + 4 * W);
     const PetscReal *Nc = nq > 1 ? shape->Nc : shape->N[0];
     V                rate = {0}, p, neg, gd[3][TSL_FAST_MAX_NODES];
     if (nq > 1) Gradients(dim, n, C, shape->dNc, gd);
@@ -232,7 +232,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       for (PetscInt d = 0; d < dim; d++)
         for (PetscInt a = 0; a < n; a++) gd[d][a] = Ld(C + (d * n + a) * W);
     if (axi) {
-      const V ri = Ld(C + (nq > 1 ? dim * dim + 1 : L.ri) * W);
+      const V ri = Ld(C + L.ri * W);
       for (PetscInt a = 0; a < n; a++) gd[0][a] += Nc[a] * ri;
     }
     for (PetscInt a = 0; a < n; a++)
@@ -248,9 +248,8 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
 }
 
 /* One function per row, cloned for x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
-#define CLONES TSL_CLONES
 #define FORCE_ROW(name, dim, n, nq, nh, axi, sf)                                                                                                     \
-  CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,          \
+  TSL_CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,          \
                           const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)             \
   {                                                                                                                                                  \
     Force(dim, n, nq, nh, axi, sf, sh, rec, u, ti, v, eta, eta2, R, Rv, power, energy);                                                              \
@@ -463,7 +462,7 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   /* the centre: the bulk viscosity's point and the hourglass control's (xi = 0 for quad4 and hex8) */
   Centre(g, xi0);
   if (!TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p)) return PETSC_FALSE;
-  if (full) StorePoint(&p, n, dim, full, axi, &(Layout){.dV = dim * dim, .ri = dim * dim + 1}, &rec[L.C]);
+  if (full) StorePoint(&p, n, dim, full, axi, &L, &rec[L.C]);
   if (Rows[r].nh) {
     PetscReal gamma[4][TSL_MAX_ELEM_NODES], hx[4][3], bb;
     PetscInt  nh = TslElementHourglassBase(in, &p, gamma, hx, &bb);

@@ -87,16 +87,22 @@ static inline void BatchElements(TslProblem p, PetscInt b, PetscInt e[W], PetscB
   }
 }
 
+/* The local nodes of the batch's lanes' elements (ln[j] for lane j); returns the nodes per element. */
+static inline PetscInt BatchNodes(TslProblem p, const PetscInt e[W], const PetscInt *ln[W])
+{
+  for (PetscInt j = 0; j < W; j++) ln[j] = &p->elem_lnode[p->m->elem_ptr[e[j]]];
+  return p->m->elem_ptr[e[0] + 1] - p->m->elem_ptr[e[0]];
+}
+
 /* The batch's unknowns (and initial temperatures, ti not NULL) from the local form xa, nd unknowns per node
  * (a constant where inlined), interleaved by lane as TslElementFastForceBatch takes them: with four
  * unknowns per node each node's four rows are loaded whole and transposed (lanes.h). */
 static inline __attribute__((always_inline)) void GatherBatch(TslProblem p, const PetscInt e[W], const PetscScalar *restrict xa, PetscReal u[],
                                                               PetscReal ti[], const PetscInt nd)
 {
-  const PetscInt  n = p->m->elem_ptr[e[0] + 1] - p->m->elem_ptr[e[0]];
   const PetscInt *ln[W];
+  const PetscInt  n = BatchNodes(p, e, ln);
 
-  for (PetscInt j = 0; j < W; j++) ln[j] = &p->elem_lnode[p->m->elem_ptr[e[j]]];
   for (PetscInt a = 0; a < n; a++) {
 #if defined(TSL_HAVE_TRANSPOSE4)
     if (nd == 4) {
@@ -117,10 +123,9 @@ static inline __attribute__((always_inline)) void GatherBatch(TslProblem p, cons
 static inline __attribute__((always_inline)) void ScatterBatch(TslProblem p, const PetscInt e[W], const PetscBool used[W], const PetscReal R[],
                                                                PetscScalar *restrict f, const PetscInt nd)
 {
-  const PetscInt  n = p->m->elem_ptr[e[0] + 1] - p->m->elem_ptr[e[0]];
   const PetscInt *ln[W];
+  const PetscInt  n = BatchNodes(p, e, ln);
 
-  for (PetscInt j = 0; j < W; j++) ln[j] = &p->elem_lnode[p->m->elem_ptr[e[j]]];
   for (PetscInt a = 0; a < n; a++) {
 #if defined(TSL_HAVE_TRANSPOSE4)
     if (nd == 4) {

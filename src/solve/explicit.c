@@ -385,15 +385,17 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArray(x->X, &u));
   PetscCall(VecGetArrayRead(x->Xold, &uo));
   for (PetscInt i = 0, c = 0; i < n; i++, c = c == th ? 0 : c + 1) { /* prescribed dofs: velocity, reaction and work; stored heat */
-    PetscReal fcon, f, vo, w, s;
-    if (c == th) { /* (the forces are read only where needed: most of their cache lines are not touched) */
-      PetscReal rate = m[i] * (u[i] - uo[i]) / h; /* heat stored at the node per unit time */
+    PetscReal fcon, f, vo, w, s, rate = 0;
+    if (c == th) {
+      rate = m[i] * (u[i] - uo[i]) / h; /* heat stored at the node per unit time */
       loc[6] += rate;
-      if (mask[i] != 0) loc[5] += rate - (fe[i] - fi[i] - ((fc ? fc[i] : 0) + (fk ? fk[i] : 0)) - (fv ? fv[i] : 0)); /* heat the prescribed temperature brings in */
+    }
+    if (mask[i] == 0) continue; /* the forces are read only at prescribed dofs: most of their cache lines are not touched */
+    fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon - (fv ? fv[i] : 0), vo = v[i];
+    if (c == th) {
+      loc[5] += rate - f; /* heat the prescribed temperature brings in */
       continue;
     }
-    if (mask[i] == 0) continue;
-    fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon - (fv ? fv[i] : 0), vo = v[i];
     v[i] = (u[i] - uo[i]) / h;
     s    = m[i] * (v[i] - vo) / h_avg - f; /* the support's force at time n */
     w    = h_avg * 0.5 * (vo + v[i]);
