@@ -293,6 +293,73 @@ static PetscErrorCode HypreBlock(PC pc, Split *s, Mat P, Mat *H)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* New values of the Jacobian into the displacement block H that HypreBlock made on the same pattern: each row's
+ * values in the Jacobian's order, then the diagonal swapped first as HypreBlock placed it. H's state is raised,
+ * so that BoomerAMG builds its next hierarchy on it (freeing the previous one as it starts). Set-ups after the
+ * first of a pattern (the Newton iterations of an increment, the increments of a step) so skip the block's
+ * allocation, whose pages the kernel clears on first touch, and the column pass. */
+static PetscErrorCode HypreValues(Split *s, Mat P, Mat H)
+{
+  const PetscInt      bs = s->ndof, nr = s->nslot[1], *pos = s->pos[1];
+  Mat                 Ad, Ao = NULL;
+  const PetscInt     *garray = NULL, *ia, *ja, *oia = NULL, *oja = NULL;
+  const PetscScalar  *aa, *oaa = NULL;
+  PetscInt            n, nn, rs, re;
+  PetscBool           mpi, done;
+  hypre_ParCSRMatrix *A;
+  HYPRE_Complex      *da, *oa;
+  const HYPRE_Int    *di, *oi;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscLogEventBegin(ExtractEvent, P, 0, 0, 0));
+  PetscCall(MatGetOwnershipRange(P, &rs, &re));
+  nn = (re - rs) / bs;
+  PetscCall(PetscObjectBaseTypeCompare((PetscObject)P, MATMPIAIJ, &mpi));
+  if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(P, &Ad, &Ao, &garray));
+  else Ad = P;
+  PetscCall(MatGetRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no row structure of the operator");
+  PetscCall(MatSeqAIJGetArrayRead(Ad, &aa));
+  if (Ao) {
+    PetscCall(MatGetRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &n, &oia, &oja, &done));
+    PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no row structure of the operator");
+    PetscCall(MatSeqAIJGetArrayRead(Ao, &oaa));
+  }
+  PetscCall(MatHYPREGetParCSR(H, &A));
+  di = hypre_CSRMatrixI(hypre_ParCSRMatrixDiag(A)), da = hypre_CSRMatrixData(hypre_ParCSRMatrixDiag(A));
+  oi = hypre_CSRMatrixI(hypre_ParCSRMatrixOffd(A)), oa = hypre_CSRMatrixData(hypre_ParCSRMatrixOffd(A));
+  for (PetscInt q = 0, row = 0; q < nn; q++)
+    for (PetscInt k = 0; k < nr; k++, row++) {
+      const PetscInt r = q * bs + s->slot[1][k], d0 = di[row];
+      PetscInt       d = d0, o = oi[row], dg = -1;
+      for (PetscInt e = ia[r]; e < ia[r + 1]; e++) {
+        const PetscInt c = ja[e], p = pos[c % bs];
+        if (p < 0) continue;
+        if (dg < 0 && (c / bs) * nr + p == row) dg = d;
+        da[d++] = aa[e];
+      }
+      PetscCheck(d == di[row + 1], PETSC_COMM_SELF, PETSC_ERR_PLIB, "operator pattern changed under its block");
+      if (dg > d0) {
+        const HYPRE_Complex t = da[dg];
+        da[dg] = da[d0], da[d0] = t;
+      }
+      for (PetscInt e = Ao ? oia[r] : 0; Ao && e < oia[r + 1]; e++)
+        if (pos[garray[oja[e]] % bs] >= 0) oa[o++] = oaa[e];
+      PetscCheck(o == oi[row + 1], PETSC_COMM_SELF, PETSC_ERR_PLIB, "operator pattern changed under its block");
+    }
+  PetscCall(MatSeqAIJRestoreArrayRead(Ad, &aa));
+  PetscCall(MatRestoreRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  if (Ao) {
+    PetscCall(MatSeqAIJRestoreArrayRead(Ao, &oaa));
+    PetscCall(MatRestoreRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &n, &oia, &oja, &done));
+  }
+  PetscCall(PetscLogEventEnd(ExtractEvent, P, 0, 0, 0));
+  /* raises H's state (hypre's assembly of an assembled matrix changes nothing) */
+  PetscCall(MatAssemblyBegin(H, MAT_FINAL_ASSEMBLY));
+  PetscCall(MatAssemblyEnd(H, MAT_FINAL_ASSEMBLY));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The block (rows rf, columns cf) as an AIJ matrix on arrays b: made at the first call, its values
  * refreshed in place afterwards. */
 static PetscErrorCode Block(PC pc, Split *s, Mat P, PetscInt rf, PetscInt cf, Arrays *b, Mat *B)
@@ -409,7 +476,8 @@ static PetscErrorCode SetUp(PC pc)
   {
     MatNullSpace sp = NULL;
     PetscCall(PetscObjectQuery((PetscObject)s->is[1], "nearnullspace", (PetscObject *)&sp));
-    if (hypre) {
+    if (hypre && s->direct && s->A[1]) PetscCall(HypreValues(s, P, s->A[1])); /* the same pattern: new values in place */
+    else if (hypre) {
       /* the previous hierarchy and hypre copy go first (a new solver object: PCHYPRE frees its hierarchy
        * only when it builds the next one), then the extract lives only until it is converted */
       PetscCall(KSPDestroy(&s->ksp[1]));
