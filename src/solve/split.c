@@ -121,77 +121,106 @@ static PetscErrorCode CheckDirect(Split *s, Mat P)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Rows of field rf and columns of field cf of P into b. fill: 0 counts the rows (b->i, b->oi), 1 fills the
- * columns and values, 2 the values alone (the pattern of an earlier fill). */
+/* The operator's local CSR arrays, read-only: the diagonal part (local columns) and, on several ranks, the
+ * off-diagonal part (columns through garray, increasing in global order); nn owned nodes. The extraction
+ * (the AIJ blocks, hypre's displacement block and its refresh) reads them, nothing writes them. */
+typedef struct {
+  Mat                Ad, Ao;
+  const PetscInt    *garray, *ia, *ja, *oia, *oja;
+  const PetscScalar *aa, *oaa;
+  PetscInt           rs, re, nn;
+  PetscBool          mpi;
+} Csr;
+
 static PetscLogEvent ExtractEvent;
 
-static PetscErrorCode Extract(Split *s, Mat P, PetscInt rf, PetscInt cf, PetscInt fill, Arrays *b)
+/* Opens P's arrays and starts the extraction's log event (CsrRestore ends both). */
+static PetscErrorCode CsrGet(const Split *s, Mat P, Csr *c)
 {
-  const PetscInt     bs = s->ndof, nr = s->nslot[rf], nc = s->nslot[cf], *pc = s->pos[cf];
-  Mat                Ad, Ao = NULL;
-  const PetscInt    *garray = NULL, *ia, *ja, *oia = NULL, *oja = NULL;
-  const PetscScalar *aa, *oaa = NULL;
-  PetscInt           n, nn, rs, re;
-  PetscBool          mpi, done;
+  PetscInt  n;
+  PetscBool done;
 
   PetscFunctionBeginUser;
   if (!ExtractEvent) PetscCall(PetscLogEventRegister("TslSplitExtract", MAT_CLASSID, &ExtractEvent));
   PetscCall(PetscLogEventBegin(ExtractEvent, P, 0, 0, 0));
-  PetscCall(MatGetOwnershipRange(P, &rs, &re));
-  nn = (re - rs) / bs;
-  PetscCall(PetscObjectBaseTypeCompare((PetscObject)P, MATMPIAIJ, &mpi));
-  if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(P, &Ad, &Ao, &garray));
-  else Ad = P;
-  PetscCall(MatGetRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
+  PetscCall(PetscMemzero(c, sizeof(*c)));
+  PetscCall(MatGetOwnershipRange(P, &c->rs, &c->re));
+  c->nn = (c->re - c->rs) / s->ndof;
+  PetscCall(PetscObjectBaseTypeCompare((PetscObject)P, MATMPIAIJ, &c->mpi));
+  if (c->mpi) PetscCall(MatMPIAIJGetSeqAIJ(P, &c->Ad, &c->Ao, &c->garray));
+  else c->Ad = P;
+  PetscCall(MatGetRowIJ(c->Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &c->ia, &c->ja, &done));
   PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no row structure of the operator");
-  PetscCall(MatSeqAIJGetArrayRead(Ad, &aa));
-  if (Ao) {
-    PetscCall(MatGetRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &n, &oia, &oja, &done));
+  PetscCall(MatSeqAIJGetArrayRead(c->Ad, &c->aa));
+  if (c->Ao) {
+    PetscCall(MatGetRowIJ(c->Ao, 0, PETSC_FALSE, PETSC_FALSE, &n, &c->oia, &c->oja, &done));
     PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no row structure of the operator");
-    PetscCall(MatSeqAIJGetArrayRead(Ao, &oaa));
+    PetscCall(MatSeqAIJGetArrayRead(c->Ao, &c->oaa));
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode CsrRestore(Mat P, Csr *c)
+{
+  PetscInt  n;
+  PetscBool done;
+
+  PetscFunctionBeginUser;
+  PetscCall(MatSeqAIJRestoreArrayRead(c->Ad, &c->aa));
+  PetscCall(MatRestoreRowIJ(c->Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &c->ia, &c->ja, &done));
+  if (c->Ao) {
+    PetscCall(MatSeqAIJRestoreArrayRead(c->Ao, &c->oaa));
+    PetscCall(MatRestoreRowIJ(c->Ao, 0, PETSC_FALSE, PETSC_FALSE, &n, &c->oia, &c->oja, &done));
+  }
+  PetscCall(PetscLogEventEnd(ExtractEvent, P, 0, 0, 0));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Rows of field rf and columns of field cf of P into b. fill: 0 counts the rows (b->i, b->oi), 1 fills the
+ * columns and values, 2 the values alone (the pattern of an earlier fill). */
+static PetscErrorCode Extract(Split *s, Mat P, PetscInt rf, PetscInt cf, PetscInt fill, Arrays *b)
+{
+  const PetscInt bs = s->ndof, nr = s->nslot[rf], nc = s->nslot[cf], *pc = s->pos[cf];
+  Csr            c;
+
+  PetscFunctionBeginUser;
+  PetscCall(CsrGet(s, P, &c));
   if (fill == 0) {
-    b->m = nn * nr;
+    b->m = c.nn * nr;
     PetscCall(PetscMalloc1(b->m + 1, &b->i));
-    if (mpi) PetscCall(PetscMalloc1(b->m + 1, &b->oi));
+    if (c.mpi) PetscCall(PetscMalloc1(b->m + 1, &b->oi));
     b->i[0] = 0;
-    if (mpi) b->oi[0] = 0;
+    if (c.mpi) b->oi[0] = 0;
   } else if (fill == 1) {
     PetscCall(PetscMalloc1(b->i[b->m], &b->j));
     PetscCall(PetscMalloc1(b->i[b->m], &b->a));
-    if (mpi) PetscCall(PetscMalloc1(b->oi[b->m], &b->oj));
-    if (mpi) PetscCall(PetscMalloc1(b->oi[b->m], &b->oa));
+    if (c.mpi) PetscCall(PetscMalloc1(b->oi[b->m], &b->oj));
+    if (c.mpi) PetscCall(PetscMalloc1(b->oi[b->m], &b->oa));
   }
-  for (PetscInt q = 0, row = 0; q < nn; q++)
+  for (PetscInt q = 0, row = 0; q < c.nn; q++)
     for (PetscInt k = 0; k < nr; k++, row++) {
       const PetscInt r = q * bs + s->slot[rf][k];
-      PetscInt       d = fill ? b->i[row] : 0, o = fill && mpi ? b->oi[row] : 0;
-      for (PetscInt e = ia[r]; e < ia[r + 1]; e++) {
-        const PetscInt c = ja[e], p = pc[c % bs];
+      PetscInt       d = fill ? b->i[row] : 0, o = fill && c.mpi ? b->oi[row] : 0;
+      for (PetscInt e = c.ia[r]; e < c.ia[r + 1]; e++) {
+        const PetscInt col = c.ja[e], p = pc[col % bs];
         if (p < 0) continue;
-        if (fill == 1) b->j[d] = (c / bs) * nc + p;
-        if (fill) b->a[d] = aa[e];
+        if (fill == 1) b->j[d] = (col / bs) * nc + p;
+        if (fill) b->a[d] = c.aa[e];
         d++;
       }
-      for (PetscInt e = Ao ? oia[r] : 0; Ao && e < oia[r + 1]; e++) {
-        const PetscInt g = garray[oja[e]], p = pc[g % bs];
+      for (PetscInt e = c.Ao ? c.oia[r] : 0; c.Ao && e < c.oia[r + 1]; e++) {
+        const PetscInt g = c.garray[c.oja[e]], p = pc[g % bs];
         if (p < 0) continue;
         if (fill == 1) b->oj[o] = (g / bs) * nc + p;
-        if (fill) b->oa[o] = oaa[e];
+        if (fill) b->oa[o] = c.oaa[e];
         o++;
       }
       if (fill == 0) {
         b->i[row + 1] = b->i[row] + d;
-        if (mpi) b->oi[row + 1] = b->oi[row] + o;
-      } else PetscCheck(d == b->i[row + 1] && (!mpi || o == b->oi[row + 1]), PETSC_COMM_SELF, PETSC_ERR_PLIB, "operator pattern changed under its block");
+        if (c.mpi) b->oi[row + 1] = b->oi[row] + o;
+      } else PetscCheck(d == b->i[row + 1] && (!c.mpi || o == b->oi[row + 1]), PETSC_COMM_SELF, PETSC_ERR_PLIB, "operator pattern changed under its block");
     }
-  PetscCall(MatSeqAIJRestoreArrayRead(Ad, &aa));
-  PetscCall(MatRestoreRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  if (Ao) {
-    PetscCall(MatSeqAIJRestoreArrayRead(Ao, &oaa));
-    PetscCall(MatRestoreRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &n, &oia, &oja, &done));
-  }
-  PetscCall(PetscLogEventEnd(ExtractEvent, P, 0, 0, 0));
+  PetscCall(CsrRestore(P, &c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -205,48 +234,34 @@ static PetscErrorCode Extract(Split *s, Mat P, PetscInt rf, PetscInt cf, PetscIn
 static PetscErrorCode HypreBlock(PC pc, Split *s, Mat P, Mat *H)
 {
   const PetscInt      bs = s->ndof, nr = s->nslot[1], *pos = s->pos[1];
-  Mat                 Ad, Ao = NULL;
-  const PetscInt     *garray = NULL, *ia, *ja, *oia = NULL, *oja = NULL;
-  const PetscScalar  *aa, *oaa = NULL;
-  PetscInt            n, nn, rs, re, N, nB = 0, nd = 0, no = 0, ncol = 0, *lk = NULL;
-  PetscBool           mpi, done;
+  PetscInt            N, nB = 0, nd = 0, no = 0, ncol = 0, *lk = NULL;
   HYPRE_BigInt        range[2];
   hypre_ParCSRMatrix *A;
   hypre_CSRMatrix    *D, *O;
   HYPRE_Int          *di, *dj, *oi, *oj;
   HYPRE_Complex      *da, *oa;
   HYPRE_BigInt       *cmap;
+  Csr                 c;
 
   PetscFunctionBeginUser;
-  if (!ExtractEvent) PetscCall(PetscLogEventRegister("TslSplitExtract", MAT_CLASSID, &ExtractEvent));
-  PetscCall(PetscLogEventBegin(ExtractEvent, P, 0, 0, 0));
-  PetscCall(MatGetOwnershipRange(P, &rs, &re));
   PetscCall(MatGetSize(P, &N, NULL));
-  nn = (re - rs) / bs;
-  PetscCall(PetscObjectBaseTypeCompare((PetscObject)P, MATMPIAIJ, &mpi));
-  if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(P, &Ad, &Ao, &garray));
-  else Ad = P;
-  PetscCall(MatGetRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no row structure of the operator");
-  PetscCall(MatSeqAIJGetArrayRead(Ad, &aa));
-  if (Ao) {
-    PetscCall(MatGetRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &n, &oia, &oja, &done));
-    PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no row structure of the operator");
-    PetscCall(MatSeqAIJGetArrayRead(Ao, &oaa));
-    PetscCall(MatGetSize(Ao, NULL, &nB));
+  PetscCall(CsrGet(s, P, &c));
+  if (c.Ao) {
+    PetscCall(MatGetSize(c.Ao, NULL, &nB));
     PetscCall(PetscCalloc1(nB, &lk));
   }
   /* counts, and the off-rank columns the block uses (numbered in garray's, i.e. increasing global, order) */
-  for (PetscInt q = 0; q < nn; q++)
+  for (PetscInt q = 0; q < c.nn; q++)
     for (PetscInt k = 0; k < nr; k++) {
       const PetscInt r = q * bs + s->slot[1][k];
-      for (PetscInt e = ia[r]; e < ia[r + 1]; e++) nd += pos[ja[e] % bs] >= 0;
-      for (PetscInt e = Ao ? oia[r] : 0; Ao && e < oia[r + 1]; e++)
-        if (pos[garray[oja[e]] % bs] >= 0) no++, lk[oja[e]] = 1;
+      for (PetscInt e = c.ia[r]; e < c.ia[r + 1]; e++) nd += pos[c.ja[e] % bs] >= 0;
+      for (PetscInt e = c.Ao ? c.oia[r] : 0; c.Ao && e < c.oia[r + 1]; e++)
+        if (pos[c.garray[c.oja[e]] % bs] >= 0) no++, lk[c.oja[e]] = 1;
     }
   for (PetscInt k = 0; k < nB; k++) lk[k] = lk[k] ? ncol++ : -1;
-  range[0] = rs / bs * nr, range[1] = re / bs * nr;
-  A = hypre_ParCSRMatrixCreate(PetscObjectComm((PetscObject)pc), N / bs * nr, N / bs * nr, range, range, (HYPRE_Int)ncol, (HYPRE_Int)nd, (HYPRE_Int)no);
+  range[0] = c.rs / bs * nr, range[1] = c.re / bs * nr;
+  A = hypre_ParCSRMatrixCreate(PetscObjectComm((PetscObject)pc), N / bs * nr, N / bs * nr, range, range, (HYPRE_Int)ncol, (HYPRE_Int)nd,
+                               (HYPRE_Int)no);
   PetscCheck(A, PETSC_COMM_SELF, PETSC_ERR_LIB, "hypre could not create the displacement block");
   PetscCallExternal(hypre_ParCSRMatrixInitialize_v2, A, HYPRE_MEMORY_HOST);
   D = hypre_ParCSRMatrixDiag(A), O = hypre_ParCSRMatrixOffd(A);
@@ -254,15 +269,15 @@ static PetscErrorCode HypreBlock(PC pc, Split *s, Mat P, Mat *H)
   oi = hypre_CSRMatrixI(O), oj = hypre_CSRMatrixJ(O), oa = hypre_CSRMatrixData(O);
   cmap = hypre_ParCSRMatrixColMapOffd(A);
   for (PetscInt k = 0; k < nB; k++)
-    if (lk[k] >= 0) cmap[lk[k]] = (HYPRE_BigInt)((garray[k] / bs) * nr + pos[garray[k] % bs]);
+    if (lk[k] >= 0) cmap[lk[k]] = (HYPRE_BigInt)((c.garray[k] / bs) * nr + pos[c.garray[k] % bs]);
   di[0] = oi[0] = 0;
-  for (PetscInt q = 0, row = 0, d = 0, o = 0; q < nn; q++)
+  for (PetscInt q = 0, row = 0, d = 0, o = 0; q < c.nn; q++)
     for (PetscInt k = 0; k < nr; k++, row++) {
       const PetscInt r = q * bs + s->slot[1][k], d0 = d;
-      for (PetscInt e = ia[r]; e < ia[r + 1]; e++) {
-        const PetscInt c = ja[e], p = pos[c % bs];
+      for (PetscInt e = c.ia[r]; e < c.ia[r + 1]; e++) {
+        const PetscInt col = c.ja[e], p = pos[col % bs];
         if (p < 0) continue;
-        dj[d] = (HYPRE_Int)((c / bs) * nr + p), da[d] = aa[e];
+        dj[d] = (HYPRE_Int)((col / bs) * nr + p), da[d] = c.aa[e];
         d++;
       }
       for (PetscInt e = d0; e < d; e++) /* hypre's convention: the diagonal first, swapped with the first entry */
@@ -272,9 +287,9 @@ static PetscErrorCode HypreBlock(PC pc, Split *s, Mat P, Mat *H)
           break;
         }
       di[row + 1] = (HYPRE_Int)d;
-      for (PetscInt e = Ao ? oia[r] : 0; Ao && e < oia[r + 1]; e++) {
-        if (pos[garray[oja[e]] % bs] < 0) continue;
-        oj[o] = (HYPRE_Int)lk[oja[e]], oa[o] = oaa[e];
+      for (PetscInt e = c.Ao ? c.oia[r] : 0; c.Ao && e < c.oia[r + 1]; e++) {
+        if (pos[c.garray[c.oja[e]] % bs] < 0) continue;
+        oj[o] = (HYPRE_Int)lk[c.oja[e]], oa[o] = c.oaa[e];
         o++;
       }
       oi[row + 1] = (HYPRE_Int)o;
@@ -282,13 +297,7 @@ static PetscErrorCode HypreBlock(PC pc, Split *s, Mat P, Mat *H)
   PetscCallExternal(hypre_CSRMatrixSetRownnz, D);
   PetscCallExternal(hypre_CSRMatrixSetRownnz, O);
   PetscCall(PetscFree(lk));
-  PetscCall(MatSeqAIJRestoreArrayRead(Ad, &aa));
-  PetscCall(MatRestoreRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  if (Ao) {
-    PetscCall(MatSeqAIJRestoreArrayRead(Ao, &oaa));
-    PetscCall(MatRestoreRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &n, &oia, &oja, &done));
-  }
-  PetscCall(PetscLogEventEnd(ExtractEvent, P, 0, 0, 0));
+  PetscCall(CsrRestore(P, &c));
   PetscCall(MatCreateFromParCSR(A, MATHYPRE, PETSC_OWN_POINTER, H));
   PetscCall(MatSetBlockSizes(*H, nr, nr));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -302,59 +311,36 @@ static PetscErrorCode HypreBlock(PC pc, Split *s, Mat P, Mat *H)
 static PetscErrorCode HypreValues(Split *s, Mat P, Mat H)
 {
   const PetscInt      bs = s->ndof, nr = s->nslot[1], *pos = s->pos[1];
-  Mat                 Ad, Ao = NULL;
-  const PetscInt     *garray = NULL, *ia, *ja, *oia = NULL, *oja = NULL;
-  const PetscScalar  *aa, *oaa = NULL;
-  PetscInt            n, nn, rs, re;
-  PetscBool           mpi, done;
   hypre_ParCSRMatrix *A;
   HYPRE_Complex      *da, *oa;
   const HYPRE_Int    *di, *oi;
+  Csr                 c;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscLogEventBegin(ExtractEvent, P, 0, 0, 0));
-  PetscCall(MatGetOwnershipRange(P, &rs, &re));
-  nn = (re - rs) / bs;
-  PetscCall(PetscObjectBaseTypeCompare((PetscObject)P, MATMPIAIJ, &mpi));
-  if (mpi) PetscCall(MatMPIAIJGetSeqAIJ(P, &Ad, &Ao, &garray));
-  else Ad = P;
-  PetscCall(MatGetRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no row structure of the operator");
-  PetscCall(MatSeqAIJGetArrayRead(Ad, &aa));
-  if (Ao) {
-    PetscCall(MatGetRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &n, &oia, &oja, &done));
-    PetscCheck(done, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no row structure of the operator");
-    PetscCall(MatSeqAIJGetArrayRead(Ao, &oaa));
-  }
   PetscCall(MatHYPREGetParCSR(H, &A));
   di = hypre_CSRMatrixI(hypre_ParCSRMatrixDiag(A)), da = hypre_CSRMatrixData(hypre_ParCSRMatrixDiag(A));
   oi = hypre_CSRMatrixI(hypre_ParCSRMatrixOffd(A)), oa = hypre_CSRMatrixData(hypre_ParCSRMatrixOffd(A));
-  for (PetscInt q = 0, row = 0; q < nn; q++)
+  PetscCall(CsrGet(s, P, &c));
+  for (PetscInt q = 0, row = 0; q < c.nn; q++)
     for (PetscInt k = 0; k < nr; k++, row++) {
       const PetscInt r = q * bs + s->slot[1][k], d0 = di[row];
       PetscInt       d = d0, o = oi[row], dg = -1;
-      for (PetscInt e = ia[r]; e < ia[r + 1]; e++) {
-        const PetscInt c = ja[e], p = pos[c % bs];
+      for (PetscInt e = c.ia[r]; e < c.ia[r + 1]; e++) {
+        const PetscInt col = c.ja[e], p = pos[col % bs];
         if (p < 0) continue;
-        if (dg < 0 && (c / bs) * nr + p == row) dg = d;
-        da[d++] = aa[e];
+        if (dg < 0 && (col / bs) * nr + p == row) dg = d;
+        da[d++] = c.aa[e];
       }
       PetscCheck(d == di[row + 1], PETSC_COMM_SELF, PETSC_ERR_PLIB, "operator pattern changed under its block");
       if (dg > d0) {
         const HYPRE_Complex t = da[dg];
         da[dg] = da[d0], da[d0] = t;
       }
-      for (PetscInt e = Ao ? oia[r] : 0; Ao && e < oia[r + 1]; e++)
-        if (pos[garray[oja[e]] % bs] >= 0) oa[o++] = oaa[e];
+      for (PetscInt e = c.Ao ? c.oia[r] : 0; c.Ao && e < c.oia[r + 1]; e++)
+        if (pos[c.garray[c.oja[e]] % bs] >= 0) oa[o++] = c.oaa[e];
       PetscCheck(o == oi[row + 1], PETSC_COMM_SELF, PETSC_ERR_PLIB, "operator pattern changed under its block");
     }
-  PetscCall(MatSeqAIJRestoreArrayRead(Ad, &aa));
-  PetscCall(MatRestoreRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &n, &ia, &ja, &done));
-  if (Ao) {
-    PetscCall(MatSeqAIJRestoreArrayRead(Ao, &oaa));
-    PetscCall(MatRestoreRowIJ(Ao, 0, PETSC_FALSE, PETSC_FALSE, &n, &oia, &oja, &done));
-  }
-  PetscCall(PetscLogEventEnd(ExtractEvent, P, 0, 0, 0));
+  PetscCall(CsrRestore(P, &c));
   /* raises H's state (hypre's assembly of an assembled matrix changes nothing) */
   PetscCall(MatAssemblyBegin(H, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(H, MAT_FINAL_ASSEMBLY));
