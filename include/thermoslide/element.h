@@ -110,6 +110,11 @@ static inline PetscInt TslElementTypeThetaSlot(const TslElementType *t)
 {
   return t->ndof - 1;
 }
+/* Does the type take pressure loads on the linear subdivision of its face `face` (0-based) rather than on
+ * the face's own shape functions? The modified types on their quadratic 3D faces (tri6 -> 4 tri3), where the
+ * quadratic corner weights would be zero or negative. Contact follows it: such a face on a main surface is
+ * its sub-faces (src/mesh/distribute.c). */
+PetscBool TslElementTypeSubdividedFace(const TslElementType *t, PetscInt face);
 /* Short names of the type's formulation and kinematics (docs, messages). */
 const char *TslElementTypeFormulationName(const TslElementType *t);
 const char *TslElementTypeKinematicsName(const TslElementType *t);

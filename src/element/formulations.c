@@ -257,6 +257,12 @@ const TslFormulation TslFormModified       = {"modified second order", FullRule,
 const TslFormulation TslFormModifiedHybrid = {
     "modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn};
 
+PetscBool TslElementTypeSubdividedFace(const TslElementType *t, PetscInt face)
+{
+  const TslGeometry *fg = face >= 0 && face < t->geom->nface ? t->geom->face_geom[face] : NULL;
+  return (PetscBool)(t->form->pressure_face_rule == FaceRuleSub && fg && fg->nsub > 0 && fg->dim >= 2);
+}
+
 const char *TslElementTypeFormulationName(const TslElementType *t)
 {
   return t->form->name;

@@ -358,6 +358,44 @@ static PetscErrorCode ContactFace(const TslModel *g, const TslContactPair *c, Pe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The contact faces of main-surface face f (1-based) of element e: the face itself or, where the element's
+ * type takes pressure on the face's linear subdivision (the modified types' tri6 faces: 4 tri3), its
+ * sub-faces, each with its own nodes (corner and midside nodes of the parent), coordinates and family, in
+ * the order of the geometry's sub_node table. The quadratic tri6 functions are negative near the corners:
+ * contact forces spread with them load the corners against the element's own pressure weights, and the
+ * explicit kinematic corrector, whose convergence rests on non-negative face weights, needed 6.45 passes per
+ * increment at rest instead of 4.35 (docs/contact.md "3D pairs"). Returns the number of parts in *np. */
+static PetscErrorCode MainFaceParts(const TslModel *g, const TslContactPair *c, PetscInt e, PetscInt f, PetscInt *np, PetscInt nodes[][TSL_MAX_FACE_NODES],
+                                    PetscInt nf[], PetscReal x[][3 * TSL_MAX_FACE_NODES], PetscInt family[])
+{
+  const TslElementType *t = TslElementTypeGet(g->elem_type[e]);
+  const TslGeometry    *fg;
+  PetscInt              pn[TSL_MAX_FACE_NODES], pnf, pfam;
+  PetscReal             px[3 * TSL_MAX_FACE_NODES];
+
+  PetscFunctionBeginUser;
+  PetscCall(ContactFace(g, c, e, f, pn, &pnf, px, &pfam));
+  if (g->dim != 3 || !TslElementTypeSubdividedFace(t, f - 1)) {
+    *np = 1, nf[0] = pnf, family[0] = pfam;
+    for (PetscInt a = 0; a < pnf; a++) nodes[0][a] = pn[a];
+    for (PetscInt a = 0; a < 3 * pnf; a++) x[0][a] = px[a];
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  fg  = t->geom->face_geom[f - 1];
+  *np = fg->nsub;
+  for (PetscInt s = 0; s < fg->nsub; s++) {
+    family[s] = TslContactFace3Find(fg->sub_geom->name);
+    nf[s]     = fg->sub_geom->nnode;
+    PetscCheck(family[s] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "no contact family for the sub-faces of %s", fg->name);
+    for (PetscInt a = 0; a < nf[s]; a++) {
+      const PetscInt k = fg->sub_node[s][a];
+      nodes[s][a]      = pn[k];
+      for (PetscInt d = 0; d < 3; d++) x[s][3 * a + d] = px[3 * k + d];
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Tributary weights w[] of the nodes of a face (int N_a ds in 2D, int N_a dA in 3D) and its size (length
  * or area). */
 static PetscErrorCode FaceWeights(PetscInt dim, PetscInt family, const PetscReal x[], PetscReal w[], PetscReal *size)
@@ -469,36 +507,46 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
     TslContactPair   *c    = &g->pairs[k];
     const TslSurface *main = &g->surfaces[TslModelFindSurface(g, c->main)];
     const TslSurface *sec  = &g->surfaces[TslModelFindSurface(g, c->secondary)];
-    PetscInt         *first, *perm, nsec = 0, e0 = -1, nf, family;
-    PetscInt          nodes[TSL_MAX_FACE_NODES];
-    PetscReal         Lsum = 0, x[3 * TSL_MAX_FACE_NODES], w[TSL_MAX_FACE_NODES], L;
+    PetscInt         *first, *perm, nsec = 0, e0 = -1, nf, family, np, pnf[TSL_MAX_SUB], pfam[TSL_MAX_SUB];
+    PetscInt          nodes[TSL_MAX_FACE_NODES], pnodes[TSL_MAX_SUB][TSL_MAX_FACE_NODES];
+    PetscReal         Lsum = 0, x[3 * TSL_MAX_FACE_NODES], w[TSL_MAX_FACE_NODES], L, px[TSL_MAX_SUB][3 * TSL_MAX_FACE_NODES];
 
     /* main faces: in 2D one family per pair (the first face's); nper nodes each (3D: the most of any face,
      * shorter faces padded with -1), in face order */
-    c->nmain        = main->n;
+    c->nmain        = 0;
     c->main_face    = 0;
     c->main_element = main->n ? main->elem[0] : -1;
     c->nper         = 0;
-    PetscCall(PetscMalloc1(c->nmain, &c->main_kind));
     for (PetscInt i = 0; i < main->n; i++) {
-      PetscCall(ContactFace(g, c, TslModelElementIndex(g, main->elem[i]), main->face[i], nodes, &nf, x, &family));
-      if (i == 0) c->main_face = family;
-      c->main_kind[i] = family;
-      c->nper         = PetscMax(c->nper, nf);
-      PetscCheck(dim == 3 || family == c->main_face, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-                 "%s: the main surface %s mixes %s and %s faces: contact needs one face family per main surface",
-                 TslLocString(g, c->loc, loc, sizeof(loc)), c->main, TslContactFaceGet((TslContactFaceKind)c->main_face)->geom->name,
-                 TslContactFaceGet((TslContactFaceKind)family)->geom->name);
+      PetscCall(MainFaceParts(g, c, TslModelElementIndex(g, main->elem[i]), main->face[i], &np, pnodes, pnf, px, pfam));
+      c->nmain += np;
+    }
+    PetscCall(PetscMalloc1(c->nmain, &c->main_kind));
+    for (PetscInt i = 0, j = 0; i < main->n; i++) {
+      PetscCall(MainFaceParts(g, c, TslModelElementIndex(g, main->elem[i]), main->face[i], &np, pnodes, pnf, px, pfam));
+      for (PetscInt s = 0; s < np; s++, j++) {
+        if (j == 0) c->main_face = pfam[s];
+        c->main_kind[j] = pfam[s];
+        c->nper         = PetscMax(c->nper, pnf[s]);
+        PetscCheck(dim == 3 || pfam[s] == c->main_face, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                   "%s: the main surface %s mixes %s and %s faces: contact needs one face family per main surface",
+                   TslLocString(g, c->loc, loc, sizeof(loc)), c->main, TslContactFaceGet((TslContactFaceKind)c->main_face)->geom->name,
+                   TslContactFaceGet((TslContactFaceKind)pfam[s])->geom->name);
+      }
     }
     if (dim == 2 && !main->n) c->nper = TslContactFaceGet(TSL_CONTACT_FACE_LINE2)->geom->nnode;
     PetscCall(PetscMalloc1(c->nper * c->nmain, &c->main_node));
     PetscCall(PetscMalloc1(c->nmain, &c->main_prev));
     PetscCall(PetscMalloc1(c->nmain, &c->main_next));
     PetscCall(PetscCalloc1(c->nmain + 1, &c->main_ring));
-    for (PetscInt i = 0; i < main->n; i++) {
-      PetscCall(ContactFace(g, c, TslModelElementIndex(g, main->elem[i]), main->face[i], nodes, &nf, x, &family));
-      for (PetscInt a = 0; a < c->nper; a++) c->main_node[c->nper * i + a] = a < nf ? nodes[a] : -1;
-      c->main_prev[i] = c->main_next[i] = -1;
+    for (PetscInt i = 0, j = 0; i < main->n; i++) {
+      const PetscInt e = TslModelElementIndex(g, main->elem[i]);
+      PetscCall(MainFaceParts(g, c, e, main->face[i], &np, pnodes, pnf, px, pfam));
+      for (PetscInt s = 0; s < np; s++, j++) {
+        for (PetscInt a = 0; a < c->nper; a++) c->main_node[c->nper * j + a] = a < pnf[s] ? pnodes[s][a] : -1;
+        c->main_prev[j] = c->main_next[j] = -1;
+      }
+      PetscCall(ContactFace(g, c, e, main->face[i], nodes, &nf, x, &family));
       PetscCall(FaceWeights(dim, family, x, w, &L));
       Lsum += dim == 2 ? L : PetscSqrtReal(L);
     }
@@ -515,7 +563,7 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
       }
       PetscCall(PetscFree2(first, perm));
     }
-    c->mean_length = c->nmain ? Lsum / c->nmain : 0;
+    c->mean_length = main->n ? Lsum / main->n : 0;
 
     /* secondary nodes and their tributary lengths or areas: int N_a ds (dA) over each face, corner and
      * midside nodes alike (line3: L/6, L/6, 2L/3; tri6: the weights of its linear subdivision), so that a

@@ -28,7 +28,10 @@ import sys
 import numpy as np
 
 sys.path.insert(0, sys.path[0] + "/../tools")
-from tslcheck import Result, check, check_true, finish
+from tslcheck import Result, check, check_true, contact_faces, finish, locate, plane_faces
+
+sys.path.insert(0, sys.path[1] + "/../../jobs/verification")
+from make_decks import FACES_3D, TET10_EDGES
 
 outdir, job, series = sys.argv[1:4]
 r = Result(outdir, job)
@@ -36,6 +39,7 @@ h, ids = r.history, r.node_ids
 small = ids > 1000
 R_AXI = 2.5
 axi = "_cax" in job
+three_d = "_c3d" in job
 if axi:
     # the rings of make_decks.py (r = 2.5 - y, z = x) back in the planar picture: x = z, y = R - r; U and RF
     # likewise (u_x = u_z, u_y = -u_r), so that every check below reads the same
@@ -63,7 +67,8 @@ print("quasi-static: largest ALLKE %.4g, ALLIE at that row %.4g (ALLKE / ALLIE %
 
 def penetration(steps=None):
     """Largest penetration over the frames (of the given steps) of the secondary nodes in contact (CPRESS > 0)
-    into the large block's top face (its nodes at the interface's reference height, interpolated along x)."""
+    into the large block's top face (2D: its nodes at the interface's reference height, interpolated along x;
+    3D: its faces, located under the node's x and z)."""
     worst = 0.0
     for i in range(len(r.frames)):
         if steps and int(r.frame(i).attrs["step"]) not in steps:
@@ -73,11 +78,28 @@ def penetration(steps=None):
         if not len(sec):
             continue
         y0 = r.xyz[sec[0], 1]
+        if three_d:  # the height of the main faces (as contact sees them) under each node's current (x, z)
+            pos = r.xyz + u
+            for i in sec:
+                f, N = locate(mains(y0), pos[:, [0, 2]], pos[i, [0, 2]])
+                if f is not None:
+                    worst = max(worst, float(N @ pos[f, 1]) - pos[i, 1])
+            continue
         top = np.nonzero(~small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0]
         pos = r.xyz[:, :2] + u[:, :2]
         top = top[np.argsort(pos[top, 0])]
         worst = max(worst, (np.interp(pos[sec, 0], pos[top, 0], pos[top, 1]) - pos[sec, 1]).max())
     return worst
+
+
+_mains = {}
+
+
+def mains(y0):
+    """3D: the large block's faces on its top plane y0, as contact sees them (tslcheck.contact_faces)."""
+    if y0 not in _mains:
+        _mains[y0] = contact_faces(plane_faces(r, ~small, y0, FACES_3D, TET10_EDGES))
+    return _mains[y0]
 
 
 # KINEMATIC closes each node's predicted gap in its increment (the corrector's passes until no pressure
@@ -130,7 +152,7 @@ if series == "friction":
     check("heat absorbed by the blocks (eta = 0.5)", h["friction_heat_total"][-1], 60.0, 0.01, relative=True)
     nt = r.field("NT")[:, 0]
     # the planar blocks' volume is 8 (unit thickness), the 3D blocks' 9.5 (make_decks.py, sliding_blocks_3d)
-    volume, vname = (9.5, "9.5") if "_c3d" in job else (8.0, "8")
+    volume, vname = (9.5, "9.5") if three_d else (8.0, "8")
     check("final temperature, coldest node (60 / %s)" % vname, nt.min(), 60.0 / volume, 0.01, relative=True)
     check("final temperature, hottest node (60 / %s)" % vname, nt.max(), 60.0 / volume, 0.01, relative=True)
     finish()

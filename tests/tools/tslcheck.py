@@ -47,6 +47,68 @@ class Result:
         return out
 
 
+def face_shape(n, a, b):
+    """Shape functions of a quad4 ((a, b) in [-1, 1]^2), tri3 or tri6 (the unit triangle) face and their
+    derivatives, nodes in the catalogue's face order (corners, then the midsides 1-2, 2-3, 3-1)."""
+    if n == 4:
+        sa, sb = [-1, 1, 1, -1], [-1, -1, 1, 1]
+        N = np.array([0.25 * (1 + sa[k] * a) * (1 + sb[k] * b) for k in range(4)])
+        dN = np.array([[0.25 * sa[k] * (1 + sb[k] * b), 0.25 * sb[k] * (1 + sa[k] * a)] for k in range(4)])
+        return N, dN
+    L = [1 - a - b, a, b]
+    dL = [[-1, -1], [1, 0], [0, 1]]
+    if n == 3:
+        return np.array(L), np.array(dL, dtype=float)
+    N = [L[k] * (2 * L[k] - 1) for k in range(3)] + [4 * L[p] * L[q] for p, q in ((0, 1), (1, 2), (2, 0))]
+    dN = [[(4 * L[k] - 1) * dL[k][c] for c in range(2)] for k in range(3)]
+    dN += [[4 * (dL[p][c] * L[q] + L[p] * dL[q][c]) for c in range(2)] for p, q in ((0, 1), (1, 2), (2, 0))]
+    return np.array(N), np.array(dN)
+
+
+def plane_faces(r, which, y0, faces_3d, tet10_edges):
+    """3D: the element faces on the plane y = y0 (reference) of the elements whose first node is in the mask
+    `which`, as natural node indices in the catalogue's face order (corners, then midsides); faces_3d and
+    tet10_edges are make_decks.py's tables."""
+    out = []
+    for conn in r.elements():
+        conn = list(conn)
+        if not which[conn[0]]:
+            continue
+        shape = {8: "hex", 6: "wedge", 4: "tet", 10: "tet"}[len(conn)]
+        for corners in faces_3d[shape]:
+            if all(abs(r.xyz[conn[c], 1] - y0) < 1e-9 for c in corners):
+                face = [conn[c] for c in corners]
+                if len(conn) == 10:  # tet10: the midside nodes of the face's edges
+                    edge = {frozenset(e): 4 + k for k, e in enumerate(tet10_edges)}
+                    face += [conn[edge[frozenset((corners[k], corners[(k + 1) % 3]))]] for k in range(3)]
+                out.append(face)
+    return out
+
+
+def contact_faces(faces):
+    """A main surface's faces as contact sees them: a tri6 face (C3D10MT) is its four tri3 sub-faces, as its
+    pressure loads are (docs/contact.md, "3D pairs")."""
+    return [g for f in faces for g in ([[f[0], f[3], f[5]], [f[3], f[1], f[4]], [f[5], f[4], f[2]], [f[3], f[4], f[5]]] if len(f) == 6 else [f])]
+
+
+def locate(faces, xz, p):
+    """The face of `faces` (node lists) whose (x, z) positions xz[face] contain the point p = (x, z), and its
+    shape functions there: (face, N), or (None, None)."""
+    for f in faces:
+        X = xz[f]
+        if p[0] < X[:, 0].min() - 1e-9 or p[0] > X[:, 0].max() + 1e-9 or p[1] < X[:, 1].min() - 1e-9 or p[1] > X[:, 1].max() + 1e-9:
+            continue
+        a = np.array([0.0, 0.0]) if len(f) == 4 else np.array([1 / 3, 1 / 3])
+        for _ in range(30):
+            N, dN = face_shape(len(f), *a)
+            a = a + np.linalg.solve(X.T @ dN, p - N @ X)
+        N, _ = face_shape(len(f), *a)
+        inside = (abs(a) <= 1 + 1e-9).all() if len(f) == 4 else (a.min() >= -1e-9 and a.sum() <= 1 + 1e-9)
+        if inside:
+            return f, N
+    return None, None
+
+
 def check(name, value, expected, tol, relative=False):
     """|value - expected| <= tol (absolute) or <= tol*|expected| (relative)."""
     err = abs(value - expected)

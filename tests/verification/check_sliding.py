@@ -42,7 +42,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, sys.path[0] + "/../tools")
-from tslcheck import Result, check, check_true, finish
+from tslcheck import Result, check, check_true, contact_faces, finish, locate, plane_faces
 
 sys.path.insert(0, sys.path[1] + "/../../jobs/verification")
 from make_decks import FACES_3D, TET10_EDGES
@@ -167,41 +167,9 @@ def interface(frame):
     return nt[sec], tm, cp[sec], q[sec], w
 
 
-def face_shape(n, a, b):
-    """Shape functions of a quad4 ((a, b) in [-1, 1]^2), tri3 or tri6 (the unit triangle) face and their
-    derivatives, nodes in the catalogue's face order (corners, then the midsides 1-2, 2-3, 3-1)."""
-    if n == 4:
-        sa, sb = [-1, 1, 1, -1], [-1, -1, 1, 1]
-        N = np.array([0.25 * (1 + sa[k] * a) * (1 + sb[k] * b) for k in range(4)])
-        dN = np.array([[0.25 * sa[k] * (1 + sb[k] * b), 0.25 * sb[k] * (1 + sa[k] * a)] for k in range(4)])
-        return N, dN
-    L = [1 - a - b, a, b]
-    dL = [[-1, -1], [1, 0], [0, 1]]
-    if n == 3:
-        return np.array(L), np.array(dL, dtype=float)
-    N = [L[k] * (2 * L[k] - 1) for k in range(3)] + [4 * L[p] * L[q] for p, q in ((0, 1), (1, 2), (2, 0))]
-    dN = [[(4 * L[k] - 1) * dL[k][c] for c in range(2)] for k in range(3)]
-    dN += [[4 * (dL[p][c] * L[q] + L[p] * dL[q][c]) for c in range(2)] for p, q in ((0, 1), (1, 2), (2, 0))]
-    return np.array(N), np.array(dN)
-
-
 def interface_faces(which, y0):
-    """Faces on the plane y = y0 of the small (which = True) or large block: natural node indices in the
-    face order of the catalogue (corners, then midsides), from the elements of the .h5."""
-    out = []
-    for conn in r.elements():
-        conn = list(conn)
-        if bool(small[conn[0]]) != which:
-            continue
-        shape = {8: "hex", 6: "wedge", 4: "tet", 10: "tet"}[len(conn)]
-        for corners in FACES_3D[shape]:
-            if all(abs(xyz[conn[c], 1] - y0) < 1e-9 for c in corners):
-                face = [conn[c] for c in corners]
-                if len(conn) == 10:  # tet10: the midside nodes of the face's edges
-                    edge = {frozenset(e): 4 + k for k, e in enumerate(TET10_EDGES)}
-                    face += [conn[edge[frozenset((corners[k], corners[(k + 1) % 3]))]] for k in range(3)]
-                out.append(face)
-    return out
+    """Faces on the plane y = y0 of the small (which = True) or large block (tslcheck.plane_faces)."""
+    return plane_faces(r, small if which else ~small, y0, FACES_3D, TET10_EDGES)
 
 
 def interface3d(frame):
@@ -220,25 +188,11 @@ def interface3d(frame):
         for i, s in zip(f, share):
             w[i] = w.get(i, 0.0) + s
     sec = sorted(w)
-    mains = interface_faces(False, y0)
+    mains = contact_faces(interface_faces(False, y0))
     tm = []
     for i in sec:
-        p = cur[i, [0, 2]]
-        found = None
-        for f in mains:
-            X = cur[f][:, [0, 2]]
-            if p[0] < X[:, 0].min() - 1e-9 or p[0] > X[:, 0].max() + 1e-9 or p[1] < X[:, 1].min() - 1e-9 or p[1] > X[:, 1].max() + 1e-9:
-                continue
-            a = np.array([0.0, 0.0]) if len(f) == 4 else np.array([1 / 3, 1 / 3])
-            for _ in range(30):
-                N, dN = face_shape(len(f), *a)
-                a = a + np.linalg.solve(X.T @ dN, p - N @ X)
-            N, _ = face_shape(len(f), *a)
-            inside = (abs(a) <= 1 + 1e-9).all() if len(f) == 4 else (a.min() >= -1e-9 and a.sum() <= 1 + 1e-9)
-            if inside:
-                found = float(N @ nt[f])
-                break
-        tm.append(found)
+        f, N = locate(mains, cur[:, [0, 2]], cur[i, [0, 2]])
+        tm.append(None if f is None else float(N @ nt[f]))
     return nt[sec], np.array(tm), cp[sec], q[sec], np.array([w[i] for i in sec])
 
 
