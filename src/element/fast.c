@@ -9,7 +9,7 @@
  * the arithmetic allows (the explicit loop streams the records from memory at every increment, and their
  * bytes, not the flops, bound it):
  *
- *   header   row, lambda, mu, alpha, lambda + 2 mu, hourglass kappa
+ *   header   row, lambda, mu, alpha, D_11 (lambda + 2 mu; plane stress 4 mu (lambda + mu) / (lambda + 2 mu)), hourglass kappa
  *   points   at each mechanical point: a full row's inverse Jacobian A[e][d] = dxi_e/dx_d (the gradients
  *            dN_a/dx_d = sum_e dN_a/dxi_e A[e][d], the reference derivatives being the type's, in the
  *            shape), a reduced row's gradients G[d][a] themselves (its hourglass vectors need them); the
@@ -82,7 +82,7 @@ static inline __attribute__((always_inline)) void Gradients(const PetscInt dim, 
  * length. A full row's point works in the reference derivatives: the displacement gradient in xi (H),
  * mapped by A; the stress mapped back by A and spread by the same derivatives. */
 static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
-                                                        const PetscBool axi, const PetscBool sf0, const TslElementFastShape *shape, const PetscReal *rec,
+                                                        const PetscBool axi, const PetscBool ps, const PetscBool sf0, const TslElementFastShape *shape, const PetscReal *rec,
                                                         const PetscReal *u, const PetscReal *ti, const PetscReal *v, const PetscReal *eta,
                                                         const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)
 {
@@ -91,6 +91,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
   const V        lambda = Ld(rec + 1 * W), mu = Ld(rec + 2 * W), alpha = Ld(rec + 3 * W);
   V              U[3][TSL_FAST_MAX_NODES], th[TSL_FAST_MAX_NODES], dth[TSL_FAST_MAX_NODES], F[3][TSL_FAST_MAX_NODES], Fth[TSL_FAST_MAX_NODES];
   V              en[2] = {{0}, {0}};
+  const V        lps = ps ? lambda / (lambda + 2 * mu) : (V){0}; /* plane stress: eps33 from sigma33 = 0 */
 
   const PetscBool sf = sf0 && shape->sf ? PETSC_TRUE : PETSC_FALSE;
   V               Hc[3][3][4], Qs[3][3][4]; /* sum factorisation: H per class of points, Q summed per class */
@@ -146,7 +147,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
     }
     e[0] = g[0][0], e[1] = g[1][1], e[3] = g[0][1] + g[1][0];
     if (dim == 3) e[2] = g[2][2], e[4] = g[0][2] + g[2][0], e[5] = g[1][2] + g[2][1];
-    else e[2] = hoop, e[4] = e[5] = (V){0};
+    else e[2] = ps ? eth - lps * (e[0] + e[1] - 2 * eth) : hoop, e[4] = e[5] = (V){0};
     tr = e[0] + e[1] + e[2] - 3 * eth;
     for (PetscInt r = 0; r < 3; r++) s[r] = (lambda * tr + 2 * mu * (e[r] - eth)) * dV;
     for (PetscInt r = 3; r < 6; r++) s[r] = mu * e[r] * dV;
@@ -248,27 +249,31 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
 }
 
 /* One function per row, cloned for x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
-#define FORCE_ROW(name, dim, n, nq, nh, axi, sf)                                                                                                     \
+#define FORCE_ROW(name, dim, n, nq, nh, axi, ps, sf)                                                                                                 \
   TSL_CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,          \
                           const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)             \
   {                                                                                                                                                  \
-    Force(dim, n, nq, nh, axi, sf, sh, rec, u, ti, v, eta, eta2, R, Rv, power, energy);                                                              \
+    Force(dim, n, nq, nh, axi, ps, sf, sh, rec, u, ti, v, eta, eta2, R, Rv, power, energy);                                                              \
   }
-FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE, PETSC_TRUE)
-FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad4Full, 2, 4, 4, 0, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad4Reduced, 2, 4, 1, 1, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad4FullAxi, 2, 4, 4, 0, PETSC_TRUE, PETSC_FALSE)
-FORCE_ROW(Quad4ReducedAxi, 2, 4, 1, 1, PETSC_TRUE, PETSC_FALSE)
-FORCE_ROW(Tet4Full, 3, 4, 1, 0, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Tet10Full, 3, 10, 4, 0, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Wedge6Full, 3, 6, 6, 0, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Tri3Full, 2, 3, 1, 0, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Tri6Full, 2, 6, 3, 0, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad8Full, 2, 8, 9, 0, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Tri3FullAxi, 2, 3, 1, 0, PETSC_TRUE, PETSC_FALSE)
-FORCE_ROW(Tri6FullAxi, 2, 6, 3, 0, PETSC_TRUE, PETSC_FALSE)
-FORCE_ROW(Quad8FullAxi, 2, 8, 9, 0, PETSC_TRUE, PETSC_FALSE)
+FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
+FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4Full, 2, 4, 4, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4Reduced, 2, 4, 1, 1, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4FullAxi, 2, 4, 4, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4ReducedAxi, 2, 4, 1, 1, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tet4Full, 3, 4, 1, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tet10Full, 3, 10, 4, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Wedge6Full, 3, 6, 6, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri3Full, 2, 3, 1, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri6Full, 2, 6, 3, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad8Full, 2, 8, 9, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri3FullAxi, 2, 3, 1, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri6FullAxi, 2, 6, 3, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad8FullAxi, 2, 8, 9, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4FullPs, 2, 4, 4, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
+FORCE_ROW(Quad4ReducedPs, 2, 4, 1, 1, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
+FORCE_ROW(Tri3FullPs, 2, 3, 1, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
+FORCE_ROW(Tri6FullPs, 2, 6, 3, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
 
 typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *,
                         const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
@@ -299,6 +304,10 @@ static const FastRow Rows[] = {
     {&TslGeomTri3, &TslFormFull, TSL_KIN_AXISYMMETRIC, 1, 0, Tri3FullAxi, PETSC_FALSE},
     {&TslGeomTri6, &TslFormModified, TSL_KIN_AXISYMMETRIC, 3, 0, Tri6FullAxi, PETSC_FALSE},
     {&TslGeomQuad8, &TslFormFull, TSL_KIN_AXISYMMETRIC, 9, 0, Quad8FullAxi, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormFull, TSL_KIN_PLANE_STRESS, 4, 0, Quad4FullPs, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRESS, 1, 1, Quad4ReducedPs, PETSC_FALSE},
+    {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRESS, 1, 0, Tri3FullPs, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, PETSC_FALSE},
 };
 
 static PetscInt RowOf(const TslElementType *t)
@@ -445,7 +454,9 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   for (PetscInt i = 0; i < L.size; i++) rec[i] = 0;
   TslMaterialEval(in->sec->mat, 0, &mp);
   TslElementLame(&mp, &lambda, &mu);
-  rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha, rec[4] = lambda + 2 * mu;
+  /* rec[4]: the bulk viscosity's modulus D_11 (plane stress: lambda* + 2 mu, lambda* = 2 lambda mu / (lambda + 2 mu)) */
+  rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha;
+  rec[4] = t->kin == TSL_KIN_PLANE_STRESS ? 4 * mu * (lambda + mu) / (lambda + 2 * mu) : lambda + 2 * mu;
   /* the mechanical points, and the conduction by the full rule in every formulation: the same points when
    * the mechanical rule is the full one (each evaluated once) */
   for (PetscInt q = 0; q < quad->n; q++) {
