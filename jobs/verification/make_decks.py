@@ -392,6 +392,36 @@ EXPLICIT_STEADY = 5.0      # the "steady" periods: 6 time constants C / (h A) = 
 EXPLICIT_EQUILIBRATE = 2.0 # friction series: 5.5 time constants L^2 / (pi^2 k / rho c) = 0.36 of the large block's length 6
 
 
+def explicit_steps(series, hold, sd, pd, pressed, film, p100):
+    """The explicit steps of the spec's series (planar and 3D decks alike; see sliding_explicit): the
+    amplitudes and the steps. hold: the *BOUNDARY lines of the first step (base fixed, the small block's top
+    face held along the slide dof sd, and in 3D across z); pd: the pressing dof; pressed(kind, value): the
+    load lines on the pressed face (kind P or S); film: the film lines; p100: the pressure giving 100 at the
+    interface."""
+    T = EXPLICIT_SLIDE
+    # 0 -> 1.5 -> -1.5 -> 0 as the implicit decks, each leg a smooth step: at rest at the reversals and the ends
+    slide = [(0, 0), (T / 3, 1.5), (2 * T / 3, -1.5), (T, 0)]
+    mass = "*FIXED MASS SCALING, DT=%g, TYPE=BELOW MIN\n" % EXPLICIT_TARGET
+    dyn = lambda period, scaled=False: "*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , %g\n" % period + (mass if scaled else "")
+    text = amplitude("SLIDE", slide, True) + amplitude("RAMP", [(0.0, 0.0), (0.25, 1.0)], True)
+    move = "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, %s, %s, 1.0\n*END STEP\n" % (sd, sd)
+    if series == "friction":
+        return text + ("*STEP, NAME=PRESS\n" + dyn(0.25) + "*BOUNDARY\n" + hold + "*DLOAD, AMPLITUDE=RAMP\n" + pressed("P", p100) +
+                       "*END STEP\n*STEP, NAME=SLIDE\n" + dyn(T) + move +
+                       "*STEP, NAME=EQUILIBRATE\n" + dyn(EXPLICIT_EQUILIBRATE, True) + "*END STEP\n")
+    S = EXPLICIT_STEADY
+    return text + (amplitude("OFF", [(0.0, 0.0), (4.0, 1.0)], True) + amplitude("FLUXDOWN", [(0.0, 1.0), (0.1, 0.0)]) +
+                   amplitude("DOUBLE", [(0.0, 1.0), (0.5, 2.0)], True) +
+                   "*STEP, NAME=HEAT\n" + dyn(1.0) + "*BOUNDARY\n" + hold + "*DLOAD, AMPLITUDE=RAMP\n" + pressed("P", p100) +
+                   "*DFLUX\n" + pressed("S", "100.0") + "*FILM\n" + film + "*END STEP\n" +
+                   "*STEP, NAME=SLIDE\n" + dyn(T) + move +
+                   "*STEP, NAME=STEADY\n" + dyn(S, True) + "*END STEP\n"
+                   "*STEP, NAME=DOUBLE PRESSURE\n" + dyn(S, True) + "*DLOAD, AMPLITUDE=DOUBLE, OP=NEW\n" + pressed("P", p100) + "*END STEP\n"
+                   "*STEP, NAME=SLIDE OFF\n" + dyn(4.0) + "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n"
+                   "*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, %s, %s, 5.0\n*DFLUX, AMPLITUDE=FLUXDOWN\n" % (pd, pd, sd, sd) +
+                   pressed("S", "100.0") + "*END STEP\n")
+
+
 def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None, surf=False):
     """The friction and conductance series of sliding_blocks as explicit steps (CPE4T): the same blocks,
     interaction and loads, with MECHANICAL CONSTRAINT=constraint (PENALTY or KINEMATIC) and these
@@ -418,32 +448,10 @@ def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None, sur
     pscale = (R_AXI - 1.25) / (R_AXI - 1.5) if axi else 1.0
     p100 = "%.10g" % (100.0 * pscale)
     p100 += "" if "." in p100 else ".0"
-    T = EXPLICIT_SLIDE
-    # 0 -> 1.5 -> -1.5 -> 0 as the implicit decks, each leg a smooth step: at rest at the reversals and the ends
-    slide = [(0, 0), (T / 3, 1.5), (2 * T / 3, -1.5), (T, 0)]
-    mass = "*FIXED MASS SCALING, DT=%g, TYPE=BELOW MIN\n" % EXPLICIT_TARGET
-    dyn = lambda period, scaled=False: "*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , %g\n" % period + (mass if scaled else "")
     text = head + ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05, MECHANICAL CONSTRAINT=%s%s\n SECONDARY, MAIN\n"
-                   % (constraint, ", TYPE=SURFACE TO SURFACE" if surf else "") +
-                   amplitude("SLIDE", slide, True) + amplitude("RAMP", [(0.0, 0.0), (0.25, 1.0)], True) +
-                   "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
-    if series == "friction":
-        text += ("*STEP, NAME=PRESS\n" + dyn(0.25) + "*BOUNDARY\n BASE, 1, 2\n TOPFACE, %s, %s\n" % (sd, sd) +
-                 "*DLOAD, AMPLITUDE=RAMP\n PRESSED, P%s, %s\n*END STEP\n" % (ft, p100) +
-                 "*STEP, NAME=SLIDE\n" + dyn(T) + "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, %s, %s, 1.0\n*END STEP\n" % (sd, sd) +
-                 "*STEP, NAME=EQUILIBRATE\n" + dyn(EXPLICIT_EQUILIBRATE, True) + "*END STEP\n")
-    else:
-        S = EXPLICIT_STEADY
-        text += (amplitude("OFF", [(0.0, 0.0), (4.0, 1.0)], True) + amplitude("FLUXDOWN", [(0.0, 1.0), (0.1, 0.0)]) +
-                 amplitude("DOUBLE", [(0.0, 1.0), (0.5, 2.0)], True) +
-                 "*STEP, NAME=HEAT\n" + dyn(1.0) + "*BOUNDARY\n BASE, 1, 2\n TOPFACE, %s, %s\n" % (sd, sd) +
-                 "*DLOAD, AMPLITUDE=RAMP\n PRESSED, P%s, %s\n*DFLUX\n PRESSED, S%s, 100.0\n*FILM\n FILMED, F%s, 0.0, 10.0\n*END STEP\n"
-                 % (ft, p100, ft, fb) +
-                 "*STEP, NAME=SLIDE\n" + dyn(T) + "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, %s, %s, 1.0\n*END STEP\n" % (sd, sd) +
-                 "*STEP, NAME=STEADY\n" + dyn(S, True) + "*END STEP\n"
-                 "*STEP, NAME=DOUBLE PRESSURE\n" + dyn(S, True) + "*DLOAD, AMPLITUDE=DOUBLE, OP=NEW\n PRESSED, P%s, %s\n*END STEP\n" % (ft, p100) +
-                 "*STEP, NAME=SLIDE OFF\n" + dyn(4.0) + "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, %s, %s, 5.0\n"
-                 "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S%s, 100.0\n*END STEP\n" % (pd, pd, sd, sd, ft))
+                   % (constraint, ", TYPE=SURFACE TO SURFACE" if surf else "") + "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+    text += explicit_steps(series, " BASE, 1, 2\n TOPFACE, %s, %s\n" % (sd, sd), sd, pd,
+                           lambda kind, value: " PRESSED, %s%s, %s\n" % (kind, ft, value), " FILMED, F%s, 0.0, 10.0\n" % fb, p100)
     name = "sliding_%s_explicit_%s%s_%s.inp" % (series, constraint.lower(), "_surf" if surf else "", typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:
         f.write(text)
@@ -554,20 +562,13 @@ def sliding_blocks_3d(series, typ, outdir=None, surf=False, explicit=None):
             nset("BASE", base) + nset("TOPFACE", topface) + surface("MAIN", main) + surface("SECONDARY", sec) + MAT +
             "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n")
     if explicit:
-        assert series == "friction" and not surf
-        T = EXPLICIT_SLIDE
-        slide = [(0, 0), (T / 3, 1.5), (2 * T / 3, -1.5), (T, 0)]
-        mass = "*FIXED MASS SCALING, DT=%g, TYPE=BELOW MIN\n" % EXPLICIT_TARGET
-        dyn = lambda period, scaled=False: "*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , %g\n" % period + (mass if scaled else "")
+        assert not surf
         text = text.replace("%s series\n" % series, "%s series, explicit, %s contact\n" % (series, explicit.lower()), 1)
         text += (series_interaction(series).replace("SMOOTH=0.05", "SMOOTH=0.05, MECHANICAL CONSTRAINT=%s" % explicit)
                  .replace("*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n", ""))  # the smooth legs below
-        text += (amplitude("SLIDE", slide, True) + amplitude("RAMP", [(0.0, 0.0), (0.25, 1.0)], True) +
-                 "*STEP, NAME=PRESS\n" + dyn(0.25) + "*BOUNDARY\n BASE, 1, 3\n TOPFACE, 1, 1\n TOPFACE, 3, 3\n" +
-                 "*DLOAD, AMPLITUDE=RAMP\n" + load_lines(pressed, "P", "100.0") + "*END STEP\n" +
-                 "*STEP, NAME=SLIDE\n" + dyn(T) + "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, 1, 1, 1.0\n*END STEP\n" +
-                 "*STEP, NAME=EQUILIBRATE\n" + dyn(EXPLICIT_EQUILIBRATE, True) + "*END STEP\n")
-        name = "sliding_friction_explicit_%s_%s.inp" % (explicit.lower(), typ.lower())
+        text += explicit_steps(series, " BASE, 1, 3\n TOPFACE, 1, 1\n TOPFACE, 3, 3\n", "1", "2",
+                               lambda kind, value: load_lines(pressed, kind, value), load_lines(filmed, "F", "0.0, 10.0"), "100.0")
+        name = "sliding_%s_explicit_%s_%s.inp" % (series, explicit.lower(), typ.lower())
         with open(os.path.join(outdir or HERE, name), "w") as f:
             f.write(text)
         return
@@ -709,6 +710,14 @@ if __name__ == "__main__":
         else:
             sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr="--auglagr" in flags, surf="--surf" in flags,
                            refine=refine[0] if refine else 1)
+        sys.exit(0)
+    if len(sys.argv) == 6 and sys.argv[1] == "--explicit-series":
+        # the spec's explicit decks per type: make_decks.py --explicit-series TYPE SERIES PENALTY|KINEMATIC OUTDIR
+        typ, series, constraint, outdir = sys.argv[2].upper(), sys.argv[3], sys.argv[4].upper(), sys.argv[5]
+        if typ.startswith("C3D"):
+            sliding_blocks_3d(series, typ, outdir=outdir, explicit=constraint)
+        else:
+            sliding_explicit(series, constraint, typ=typ, outdir=outdir)
         sys.exit(0)
     if len(sys.argv) >= 2 and sys.argv[1] == "--explicit":
         for series in ("friction", "conductance"):

@@ -1,8 +1,11 @@
 #!/usr/bin/python3
 """The spec's sliding series as explicit steps (jobs/verification/sliding_*_explicit_*_cpe4t.inp, written by
-make_decks.py --explicit; docs/explicit.md, "Contact"): a 2 x 0.25 block (node ids > 1000) pressed with 200
-on a 6 x 1.25 block fixed at its bottom, rho c = 1, total area 8; the 3D decks (sliding_*_explicit_*_c3d*.inp,
-make_decks.py sliding_blocks_3d) the same blocks 1 and 1.2 wide: total volume 9.5, final temperature 60 / 9.5.
+make_decks.py --explicit, and any type's by make_decks.py --explicit-series; docs/explicit.md, "Contact"): a
+2 x 0.25 block (node ids > 1000) pressed with 200 on a 6 x 1.25 block fixed at its bottom, rho c = 1, total
+area 8; the 3D decks (sliding_*_explicit_*_c3d*.inp, make_decks.py sliding_blocks_3d) the same blocks 1 and
+1.2 wide: total volume 9.5, final temperature 60 / 9.5. Gaps and main temperatures are read on the faces as
+contact sees them: 2D line2, or line3 for the modified triangles (CPE6MT, CPS6MT, CAX6MT); 3D
+tslcheck.contact_faces.
 
 friction (PRESS, SLIDE, EQUILIBRATE): the slide's slip path 6 under mu N = 0.1 x 200 dissipates 120 (ALLFD
 and the history's friction_dissipation_total), of which eta = 0.5 heats the blocks: 60 absorbed, and after
@@ -19,10 +22,12 @@ when the slide has stopped, checked below 1 % of the frictional work).
 radiation (the conductance series' steps with gap radiation): the same checks, and the step 4 drop equal to
 step 3's (1 %), where conductance's lies within the bounds its pressure spread allows around 4.
 Axisymmetric rings (job *_cax*, make_decks.py's rings r = 2.5 - y, z = x): turned back into the planar
-picture; the flux in is 100 x 2 pi x 1 x 2, and friction is checked against the measured interface force
-(dissipation = mu N x 6, absorbed = eta x dissipation, final temperature = absorbed / 29.25 pi; 1 %).
+picture; the flux in is 100 x 2 pi x 1 x 2, and friction is checked against the interface force N measured
+at the end of the press (dissipation = mu N x 6, absorbed = eta x dissipation, final temperature = absorbed
+/ 29.25 pi; 1 %).
 usage: check_sliding_explicit.py OUTDIR JOB friction|conductance|radiation
 """
+import re
 import sys
 
 import numpy as np
@@ -50,6 +55,51 @@ if axi:
         v = field_raw(name, index)
         return np.column_stack([v[:, 1], -v[:, 0], v[:, 2]]) if name in ("U", "RF") else v
     r.field = turned
+
+
+# the modified triangles (CPE6MT, CPS6MT, CAX6MT): the interface faces are line3 (corner, midside, corner)
+quadratic = bool(re.search(r"_c(pe|ps|ax)6", job))
+
+
+def line_faces(nodes):
+    """2D: the faces along a line of nodes at the interface, sorted by reference x: pairs, or (corner,
+    midside, corner) triples on quadratic meshes."""
+    nodes = nodes[np.argsort(r.xyz[nodes, 0])]
+    k = 2 if quadratic else 1
+    return [nodes[i:i + k + 1] for i in range(0, len(nodes) - 1, k)]
+
+
+def line_shape(n, a):
+    """Shape functions of a line2 or line3 face (a in [-1, 1]; nodes end, [midside,] end in the order of
+    line_faces)."""
+    if n == 2:
+        return np.array([0.5 * (1 - a), 0.5 * (1 + a)]), np.array([-0.5, 0.5])
+    return np.array([0.5 * a * (a - 1), 1 - a * a, 0.5 * a * (a + 1)]), np.array([a - 0.5, -2 * a, a + 0.5])
+
+
+def line_locate(faces, pos, x):
+    """The face of `faces` whose current x range holds x and its shape functions there (x(a) = x by
+    Newton): (face, N), or (None, None)."""
+    for f in faces:
+        X = pos[f, 0]
+        if x < X.min() - 1e-12 or x > X.max() + 1e-12:
+            continue
+        a = 0.0
+        for _ in range(30):
+            N, dN = line_shape(len(f), a)
+            a += (x - N @ X) / (dN @ X)
+        return f, line_shape(len(f), a)[0]
+    return None, None
+
+
+def line_weights(faces):
+    """Nodal lengths int N_a ds of the faces (reference lengths: line2 1/2, 1/2; line3 1/6, 4/6, 1/6)."""
+    w = {}
+    for f in faces:
+        L = abs(r.xyz[f[-1], 0] - r.xyz[f[0], 0])
+        for n, c in zip(f, [0.5, 0.5] if len(f) == 2 else [1 / 6, 4 / 6, 1 / 6]):
+            w[n] = w.get(n, 0.0) + c * L
+    return w
 
 
 def last_row(step):
@@ -85,10 +135,12 @@ def penetration(steps=None):
                 if f is not None:
                     worst = max(worst, float(N @ pos[f, 1]) - pos[i, 1])
             continue
-        top = np.nonzero(~small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0]
+        faces = line_faces(np.nonzero(~small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0])
         pos = r.xyz[:, :2] + u[:, :2]
-        top = top[np.argsort(pos[top, 0])]
-        worst = max(worst, (np.interp(pos[sec, 0], pos[top, 0], pos[top, 1]) - pos[sec, 1]).max())
+        for i in sec:
+            f, N = line_locate(faces, pos, pos[i, 0])
+            if f is not None:
+                worst = max(worst, float(N @ pos[f, 1]) - pos[i, 1])
     return worst
 
 
@@ -116,22 +168,26 @@ else:
 
 if series == "friction" and axi:
     # rings: the inner ring's hoop stiffness takes part of the applied pressure, so the interface force N is
-    # measured (the contact pressure over the interface, sum of CPRESS x 2 pi r x tributary length at the
-    # frames of the slide) and the checks follow from it: dissipation mu N x slip path 6, absorbed eta x
-    # that, final temperature absorbed / (rho c V), V = pi (16 R - 10.75) = 29.25 pi (each 1 %)
+    # measured (the contact pressure over the interface, sum of CPRESS x 2 pi r x the nodes' lengths
+    # int N_a ds) at the end of the press, at rest, and the checks follow from it: dissipation mu N x slip
+    # path 6, absorbed eta x that, final temperature absorbed / (rho c V), V = pi (16 R - 10.75) = 29.25 pi
+    # (each 1 %). The slide's frames are printed beside it: kinematic contact's pressures on triangles
+    # chatter as the nodes cross the faces (a frame's force is a sample of that), while their time
+    # integral, the dissipation, does not.
     s2 = last_row(2)
-    frames = [i for i, f in enumerate(r.frames) if int(r.frame(i).attrs["step"]) == 2]
-    forces = []
-    for i in frames:
+
+    def interface_force(i):
         cp = r.field("CPRESS", i)[:, 0]
-        sec = np.nonzero(small & (cp > 0))[0]
-        sec = sec[np.argsort(r.xyz[sec, 0])]
-        x = r.xyz[sec, 0]
-        trib = np.diff(np.concatenate([[x[0]], 0.5 * (x[1:] + x[:-1]), [x[-1]]]))
-        forces.append(float((cp[sec] * 2 * np.pi * (R_AXI - r.xyz[sec, 1]) * trib).sum()))
-    N = float(np.mean(forces))
+        y0 = r.xyz[np.nonzero(small & (cp > 0))[0][0], 1]
+        w = line_weights(line_faces(np.nonzero(small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0]))
+        return sum(cp[n] * 2 * np.pi * (R_AXI - r.xyz[n, 1]) * L for n, L in w.items())
+
+    N = interface_force(r.frame_of_step(1))
+    forces = [interface_force(i) for i in range(len(r.frames)) if int(r.frame(i).attrs["step"]) == 2]
+    print("interface force N at the end of the press %.6g; over the slide's frames mean %.6g, spread %.2g"
+          % (N, np.mean(forces), (max(forces) - min(forces)) / N))
     friction = 0.1 * N
-    print("interface force N over the slide's frames %.6g (spread %.2g): friction force mu N = %.6g" % (N, (max(forces) - min(forces)) / N, friction))
+    print("friction force mu N = %.6g" % friction)
     print("at the end of the slide: ALLKE %.4g ALLIE %.4g ALLWK %.4g ALLFD %.6g ALLCW %.6g" % tuple(h[k][s2] for k in ("ALLKE", "ALLIE", "ALLWK", "ALLFD", "ALLCW")))
     check("kinetic energy left when the slide has stopped / ALLFD", h["ALLKE"][s2] / h["ALLFD"][s2], 0.0, 0.01)
     dis = h["friction_dissipation_total"][-1]
@@ -171,10 +227,21 @@ def interface_drop(step):
     i = r.frame_of_step(step)
     cp, u, nt = r.field("CPRESS", i)[:, 0], r.field("U", i), r.field("NT", i)[:, 0]
     sec = np.nonzero(small & (cp > 0))[0]
-    top = np.nonzero(~small & (abs(r.xyz[:, 1] - r.xyz[sec[0], 1]) < 1e-9))[0]
+    y0 = r.xyz[sec[0], 1]
+    if three_d:  # the main temperature on the faces under each node's current (x, z)
+        pos = r.xyz + u
+        tm = []
+        for n in sec:
+            f, N = locate(mains(y0), pos[:, [0, 2]], pos[n, [0, 2]])
+            tm.append(np.nan if f is None else float(N @ nt[f]))
+        return np.nanmean(np.array(tm) - nt[sec]), cp[sec].min(), cp[sec].max()
+    faces = line_faces(np.nonzero(~small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0])
     pos = r.xyz[:, :2] + u[:, :2]
-    top = top[np.argsort(pos[top, 0])]
-    return (np.interp(pos[sec, 0], pos[top, 0], nt[top]) - nt[sec]).mean(), cp[sec].min(), cp[sec].max()
+    tm = []
+    for n in sec:
+        f, N = line_locate(faces, pos, pos[n, 0])
+        tm.append(np.nan if f is None else float(N @ nt[f]))
+    return np.nanmean(np.array(tm) - nt[sec]), cp[sec].min(), cp[sec].max()
 
 
 # step 4 doubles the pressure: the conductance table (20 at 100, 5 at 200, clipped) makes the drop 4 times
