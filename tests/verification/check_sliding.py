@@ -80,9 +80,21 @@ def last_row(step):
     return [i for i in range(len(h["step"])) if h["step"][i] == step][-1]
 
 
-if re.search(r"_c(pe|peg|ps|ax|gax)4r", job):  # reduced integration: the hourglass control stays small
-    worst = max(h["hourglass_energy"][i] / h["strain_energy"][i] for i in range(len(h["step"])) if h["strain_energy"][i] > 0)
-    check("hourglass energy / strain energy, worst increment", worst, 0.0, 0.01)
+if re.search(r"_c(pe|peg|ps|ax|gax)4r", job):
+    # reduced integration: the hourglass control stays small while the blocks are pressed (every step of the
+    # friction series; steps 1-4 of the others). In the slide-off step the small block, off the large one,
+    # hangs from its top face held where the pressure left it: its strain energy falls to about 2 % of the
+    # pressed state's while the hourglass energy stays at that state's level (CPE4RT conductance: 5.6e-7
+    # pressed, 1.0e-6 after, against 3.5e-4 and 6.5e-6 of strain energy), so the ratio there (0.04 .. 0.7) is
+    # printed, not checked
+    pressed = [i for i in range(len(h["step"])) if h["strain_energy"][i] > 0 and (series == "friction" or h["step"][i] < 5)]
+    worst = max(h["hourglass_energy"][i] / h["strain_energy"][i] for i in pressed)
+    check("hourglass energy / strain energy, worst increment while pressed", worst, 0.0, 0.01)
+    off = [i for i in range(len(h["step"])) if h["strain_energy"][i] > 0 and i not in pressed]
+    if off:
+        print("after the slide-off: hourglass energy / strain energy up to %.4g (strain energy %.3g, %.3g of the largest)"
+              % (max(h["hourglass_energy"][i] / h["strain_energy"][i] for i in off), h["strain_energy"][off[-1]],
+                 h["strain_energy"][off[-1]] / h["strain_energy"].max()))
 
 balance_scale = max(abs(h["heat_in"]).max(), abs(h["friction_dissipation_rate"]).max(), 1e-300)
 check("worst energy balance residual over all increments", abs(h["balance_residual"]).max(), 0.0, 1e-6 * balance_scale)
@@ -215,8 +227,13 @@ for step in (3, 4):
 if series == "conductance":
     ratio = drops[4] / drops[3]
     print("contact pressure under the block: step 3 %.2f to %.2f, step 4 %.2f to %.2f (nominal 100, 200)" % (prange[3] + prange[4]))
-    check("step 4 / step 3 mean drop = ratio of mean conductances at the nodal pressures", ratio, kmean[3] / kmean[4], 0.03 if surf else 0.01,
-          relative=True)
+    # surface to surface: CPRESS and HFLA are averages over each node's faces, which smear the table's kinks
+    # (100, 200) where the pressure crosses them within a face; with two line3 faces across the block the
+    # effective nodal conductance HFLA / drop exceeds k(CPRESS) by up to 5 % at the interior nodes (CPE6MT step
+    # 4: 5.24 .. 5.29 against 5.0), so quadratic faces get 5 % (measured: CPE6MT 3.8 %, CPEG6MT 3.0 %, CPE8T
+    # 2.5 %, CPEG8T 1.6 %, CAX6MT 0.2 %), linear ones 3 % (CPE4T 2.2 %, C3D8T 1.7 %)
+    tol = (0.05 if quadratic else 0.03) if surf else 0.01
+    check("step 4 / step 3 mean drop = ratio of mean conductances at the nodal pressures", ratio, kmean[3] / kmean[4], tol, relative=True)
     lo, hi = k_table(prange[3][1]) / k_table(prange[4][0]), k_table(prange[3][0]) / k_table(prange[4][1])
     check_true("step 4 / step 3 mean drop = 4 within the pressure-spread bounds", lo * 0.99 <= ratio <= hi * 1.01,
                "%.4f in [%.4f, %.4f] (nominal 4)" % (ratio, lo, hi))
