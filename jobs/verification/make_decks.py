@@ -423,15 +423,15 @@ def explicit_steps(series, hold, sd, pd, pressed, film, p100):
 
 
 def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None, surf=False):
-    """The friction and conductance series of sliding_blocks as explicit steps (CPE4T): the same blocks,
+    """The three series of sliding_blocks as explicit steps (any planar or axisymmetric type): the same blocks,
     interaction and loads, with MECHANICAL CONSTRAINT=constraint (PENALTY or KINEMATIC) and these
     changes, each needed by explicit steps: no *EQUATION (the friction series' straight, non-rotating top
     face becomes a prescribed horizontal motion of the top face with the force 200 as a pressure of 100
     on it); the slide 0 -> 1.5 -> -1.5 -> 0 as three SMOOTH STEP legs (the same slip path 6, but no
     velocity or acceleration jumps, which would send waves through the undamped blocks: the 16-point
     tables used before rang them up to ALLIE ~ 10); loads ramped in by smooth steps; steady-state steps as transient
-    steps of EXPLICIT_STEADY; density / specific heat as above. surf: TYPE=SURFACE TO SURFACE (PENALTY only;
-    job name *_surf_*)."""
+    steps of EXPLICIT_STEADY; density / specific heat as above (the steps: explicit_steps). surf: TYPE=SURFACE
+    TO SURFACE (PENALTY only; job name *_surf_*)."""
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:  # the implicit deck of the same name must not be overwritten
         sliding_blocks(series, typ=typ, outdir=tmp, top_rows=2)
@@ -533,9 +533,9 @@ def sliding_blocks_3d(series, typ, outdir=None, surf=False, explicit=None):
     width 1 (small block) and 1.2 (large block), sliding along x, pressing along -y, z held on the small
     block's top face. Volume 6 x 1.25 x 1.2 + 2 x 0.25 x 1 = 9.5 (rho c = 1): the friction series ends at
     60 / 9.5. surf: TYPE=SURFACE TO SURFACE (job name *_surf_*). explicit: PENALTY or KINEMATIC, the
-    friction series as explicit steps the way sliding_explicit writes the planar ones (2 cells across the
-    small block; its top face moved along x and held in z, the force 200 as a pressure of 100 on it; job
-    name sliding_friction_explicit_<constraint>_<type>)."""
+    series as explicit steps the way sliding_explicit writes the planar ones (2 cells across the small block;
+    its top face moved along x and held in z, the friction series' force 200 as a pressure of 100 on it; job
+    name sliding_<series>_explicit_<constraint>_<type>)."""
     typ = typ.upper()
     bnodes, belems, shape = mesh3d(12, 2, 1, 0.0, 6.0, 0.0, 1.25, -0.1, 1.1, typ, mirror=3.0)
     tnodes, telems, _ = mesh3d(4, 2 if explicit else 6, 1, 2.0, 4.0, 1.25, 1.5, 0.0, 1.0, typ, 1000, 1000, mirror=3.0)
