@@ -9,7 +9,7 @@
  * the arithmetic allows (the explicit loop streams the records from memory at every increment, and their
  * bytes, not the flops, bound it):
  *
- *   header   row, lambda, mu, alpha, D_11 (lambda + 2 mu; plane stress 4 mu (lambda + mu) / (lambda + 2 mu)), hourglass kappa
+ *   header   row, lambda, mu, alpha, D_11 (lambda + 2 mu; plane stress condensed), hourglass kappa
  *   points   at each mechanical point: a full row's inverse Jacobian A[e][d] = dxi_e/dx_d (the gradients
  *            dN_a/dx_d = sum_e dN_a/dxi_e A[e][d], the reference derivatives being the type's, in the
  *            shape), a reduced row's gradients G[d][a] themselves (its hourglass vectors need them); the
@@ -447,16 +447,17 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   Layout                L;
   TslMaterialPoint      mp;
   TslElementPoint       p;
-  PetscReal             lambda, mu;
+  PetscReal             lambda, mu, D[6][6];
 
   if (r < 0) return PETSC_FALSE;
   L = RowLayout(r);
   for (PetscInt i = 0; i < L.size; i++) rec[i] = 0;
   TslMaterialEval(in->sec->mat, 0, &mp);
   TslElementLame(&mp, &lambda, &mu);
-  /* rec[4]: the bulk viscosity's modulus D_11 (plane stress: lambda* + 2 mu, lambda* = 2 lambda mu / (lambda + 2 mu)) */
-  rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha;
-  rec[4] = t->kin == TSL_KIN_PLANE_STRESS ? 4 * mu * (lambda + mu) / (lambda + 2 * mu) : lambda + 2 * mu;
+  /* rec[4]: the bulk viscosity's modulus, D_11 of the kinematics' elasticity as the generic kernel takes it
+   * (lambda + 2 mu; plane stress condensed) */
+  TslElementElasticity(t, &mp, D, NULL);
+  rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha, rec[4] = D[0][0];
   /* the mechanical points, and the conduction by the full rule in every formulation: the same points when
    * the mechanical rule is the full one (each evaluated once) */
   for (PetscInt q = 0; q < quad->n; q++) {

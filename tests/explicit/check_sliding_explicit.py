@@ -33,7 +33,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, sys.path[0] + "/../tools")
-from tslcheck import Result, check, check_true, contact_faces, finish, locate, plane_faces
+from tslcheck import Result, check, check_true, contact_faces, finish, line_faces, line_locate, line_weights, locate, plane_faces
 
 sys.path.insert(0, sys.path[1] + "/../../jobs/verification")
 from make_decks import FACES_3D, TET10_EDGES
@@ -59,47 +59,6 @@ if axi:
 
 # the modified triangles (CPE6MT, CPS6MT, CAX6MT): the interface faces are line3 (corner, midside, corner)
 quadratic = bool(re.search(r"_c(pe|ps|ax)6", job))
-
-
-def line_faces(nodes):
-    """2D: the faces along a line of nodes at the interface, sorted by reference x: pairs, or (corner,
-    midside, corner) triples on quadratic meshes."""
-    nodes = nodes[np.argsort(r.xyz[nodes, 0])]
-    k = 2 if quadratic else 1
-    return [nodes[i:i + k + 1] for i in range(0, len(nodes) - 1, k)]
-
-
-def line_shape(n, a):
-    """Shape functions of a line2 or line3 face (a in [-1, 1]; nodes end, [midside,] end in the order of
-    line_faces)."""
-    if n == 2:
-        return np.array([0.5 * (1 - a), 0.5 * (1 + a)]), np.array([-0.5, 0.5])
-    return np.array([0.5 * a * (a - 1), 1 - a * a, 0.5 * a * (a + 1)]), np.array([a - 0.5, -2 * a, a + 0.5])
-
-
-def line_locate(faces, pos, x):
-    """The face of `faces` whose current x range holds x and its shape functions there (x(a) = x by
-    Newton): (face, N), or (None, None)."""
-    for f in faces:
-        X = pos[f, 0]
-        if x < X.min() - 1e-12 or x > X.max() + 1e-12:
-            continue
-        a = 0.0
-        for _ in range(30):
-            N, dN = line_shape(len(f), a)
-            a += (x - N @ X) / (dN @ X)
-        return f, line_shape(len(f), a)[0]
-    return None, None
-
-
-def line_weights(faces):
-    """Nodal lengths int N_a ds of the faces (reference lengths: line2 1/2, 1/2; line3 1/6, 4/6, 1/6)."""
-    w = {}
-    for f in faces:
-        L = abs(r.xyz[f[-1], 0] - r.xyz[f[0], 0])
-        for n, c in zip(f, [0.5, 0.5] if len(f) == 2 else [1 / 6, 4 / 6, 1 / 6]):
-            w[n] = w.get(n, 0.0) + c * L
-    return w
 
 
 def last_row(step):
@@ -135,10 +94,10 @@ def penetration(steps=None):
                 if f is not None:
                     worst = max(worst, float(N @ pos[f, 1]) - pos[i, 1])
             continue
-        faces = line_faces(np.nonzero(~small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0])
+        faces = line_faces(r.xyz, np.nonzero(~small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0], quadratic)
         pos = r.xyz[:, :2] + u[:, :2]
         for i in sec:
-            f, N = line_locate(faces, pos, pos[i, 0])
+            f, N = line_locate(faces, pos[:, 0], pos[i, 0])
             if f is not None:
                 worst = max(worst, float(N @ pos[f, 1]) - pos[i, 1])
     return worst
@@ -179,7 +138,7 @@ if series == "friction" and axi:
     def interface_force(i):
         cp = r.field("CPRESS", i)[:, 0]
         y0 = r.xyz[np.nonzero(small & (cp > 0))[0][0], 1]
-        w = line_weights(line_faces(np.nonzero(small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0]))
+        w = line_weights(r.xyz, line_faces(r.xyz, np.nonzero(small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0], quadratic))
         return sum(cp[n] * 2 * np.pi * (R_AXI - r.xyz[n, 1]) * L for n, L in w.items())
 
     N = interface_force(r.frame_of_step(1))
@@ -235,11 +194,11 @@ def interface_drop(step):
             f, N = locate(mains(y0), pos[:, [0, 2]], pos[n, [0, 2]])
             tm.append(np.nan if f is None else float(N @ nt[f]))
         return np.nanmean(np.array(tm) - nt[sec]), cp[sec].min(), cp[sec].max()
-    faces = line_faces(np.nonzero(~small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0])
+    faces = line_faces(r.xyz, np.nonzero(~small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0], quadratic)
     pos = r.xyz[:, :2] + u[:, :2]
     tm = []
     for n in sec:
-        f, N = line_locate(faces, pos, pos[n, 0])
+        f, N = line_locate(faces, pos[:, 0], pos[n, 0])
         tm.append(np.nan if f is None else float(N @ nt[f]))
     return np.nanmean(np.array(tm) - nt[sec]), cp[sec].min(), cp[sec].max()
 

@@ -109,6 +109,48 @@ def locate(faces, xz, p):
     return None, None
 
 
+def line_faces(xyz, nodes, quadratic):
+    """2D: the faces along a line of interface nodes, sorted by reference x: pairs, or (corner, midside,
+    corner) triples on quadratic meshes (line3)."""
+    nodes = np.asarray(nodes)[np.argsort(xyz[nodes, 0])]
+    k = 2 if quadratic else 1
+    return [nodes[i:i + k + 1] for i in range(0, len(nodes) - 1, k)]
+
+
+def line_shape(n, a):
+    """Shape functions of a line2 or line3 face (a in [-1, 1]; nodes end, [midside,] end as line_faces
+    orders them) and their derivatives."""
+    if n == 2:
+        return np.array([0.5 * (1 - a), 0.5 * (1 + a)]), np.array([-0.5, 0.5])
+    return np.array([0.5 * a * (a - 1), 1 - a * a, 0.5 * a * (a + 1)]), np.array([a - 0.5, -2 * a, a + 0.5])
+
+
+def line_locate(faces, x, p):
+    """The face of `faces` whose current x positions x[face] hold p and its shape functions there (x(a) = p
+    by Newton, as contact projects): (face, N), or (None, None)."""
+    for f in faces:
+        X = x[f]
+        if p < X.min() - 1e-12 or p > X.max() + 1e-12:
+            continue
+        a = 0.0
+        for _ in range(30):
+            N, dN = line_shape(len(f), a)
+            a += (p - N @ X) / (dN @ X)
+        return f, line_shape(len(f), a)[0]
+    return None, None
+
+
+def line_weights(xyz, faces):
+    """Nodal lengths int N_a ds of the faces, by node (reference lengths: line2 1/2, 1/2; line3 1/6, 4/6,
+    1/6 of the face)."""
+    w = {}
+    for f in faces:
+        L = abs(xyz[f[-1], 0] - xyz[f[0], 0])
+        for n, c in zip(f, [0.5, 0.5] if len(f) == 2 else [1 / 6, 4 / 6, 1 / 6]):
+            w[n] = w.get(n, 0.0) + c * L
+    return w
+
+
 def check(name, value, expected, tol, relative=False):
     """|value - expected| <= tol (absolute) or <= tol*|expected| (relative)."""
     err = abs(value - expected)

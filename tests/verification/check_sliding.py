@@ -42,7 +42,7 @@ import sys
 import numpy as np
 
 sys.path.insert(0, sys.path[0] + "/../tools")
-from tslcheck import Result, check, check_true, contact_faces, finish, locate, plane_faces
+from tslcheck import Result, check, check_true, contact_faces, finish, line_faces, line_locate, line_weights, locate, plane_faces
 
 sys.path.insert(0, sys.path[1] + "/../../jobs/verification")
 from make_decks import FACES_3D, TET10_EDGES
@@ -159,23 +159,17 @@ def interface(frame):
     y0 = xyz[small, 1].min()  # the interface
     sec = sorted([i for i in range(len(ids)) if small[i] and abs(xyz[i, 1] - y0) < 1e-9], key=lambda i: xyz[i, 0])
     top = sorted([i for i in range(len(ids)) if large[i] and abs(xyz[i, 1] - y0) < 1e-9], key=lambda i: xyz[i, 0])
-    xm = np.array([xyz[i, 0] + u[i, 0] for i in top])
-    xs = [xyz[i, 0] + u[i, 0] for i in sec]
-    if quadratic:  # the main temperature is quadratic along each line3 face (nodes k, k+1, k+2, k even)
-        tm = []
-        for x in xs:
-            k = min(max(0, 2 * ((int(np.searchsorted(xm, x)) - 1) // 2)), len(xm) - 3)
-            xa, xb, xc = xm[k:k + 3]
-            ta, tb, tc = nt[top][k:k + 3]
-            tm.append(ta * (x - xb) * (x - xc) / ((xa - xb) * (xa - xc)) + tb * (x - xa) * (x - xc) / ((xb - xa) * (xb - xc))
-                      + tc * (x - xa) * (x - xb) / ((xc - xa) * (xc - xb)))
-        tm = np.array(tm)
-    else:
-        tm = np.interp(xs, xm, nt[top])
-    if quadratic:  # line3 faces: Simpson weights (corner, midside, corner, ...)
-        w = np.array([1.0 if k in (0, len(sec) - 1) else (4.0 if k % 2 else 2.0) for k in range(len(sec))])
-    else:  # line2 faces, uniform spacing
-        w = np.array([0.5 if k in (0, len(sec) - 1) else 1.0 for k in range(len(sec))])
+    # the main temperature on the main face (line2, or line3 on second-order meshes) under each node's
+    # current x, as contact projects; the secondary nodes' lengths int N_a ds as weights
+    x = xyz[:, 0] + u[:, 0]
+    faces = line_faces(xyz, top, quadratic)
+    tm = []
+    for i in sec:
+        f, N = line_locate(faces, x, x[i])
+        tm.append(float(N @ nt[f]))
+    tm = np.array(tm)
+    lengths = line_weights(xyz, line_faces(xyz, sec, quadratic))
+    w = np.array([lengths[i] for i in sec])
     return nt[sec], tm, cp[sec], q[sec], w
 
 
