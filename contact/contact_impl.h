@@ -11,19 +11,23 @@
  * 3D faces (unused, always zero, in 2D), and slots TSL_DUAL_DOF + j the element unknowns j. Each slot is
  * computed on its own, so a slot more or less leaves every other derivative unchanged to the last bit.
  *
- * The kernels are compiled twice: as they are, for the tangent, and for values alone with the two surface
- * parameters' slots only (contact/values/: TSL_DUAL_VALUES, TSL_DUAL_N = 2), so that an evaluation without a
- * tangent (explicit steps, residual evaluations, the search's projections) neither computes nor copies the
- * unknowns' derivatives; the same operations on the values give the same bits. Seeds of slots beyond
- * TSL_DUAL_N are ignored. */
+ * The kernels are compiled three times (contact/variant.h): as they are, for the tangent of any element; for
+ * values alone with the two surface parameters' slots only (contact/values/: TSL_DUAL_VALUES, TSL_DUAL_N = 2),
+ * so that an evaluation without a tangent (explicit steps, residual evaluations, the search's projections)
+ * neither computes nor copies the unknowns' derivatives; and for the tangent of an element with at most
+ * TSL_DUAL_SHORT_DOF unknowns (contact/short/: TSL_DUAL_SHORT), whose derivatives need no more slots. The same
+ * operations on the slots in use give the same bits. Seeds of slots beyond TSL_DUAL_N are ignored. */
 #pragma once
 #include <thermoslide/contact.h>
 
 #define TSL_DUAL_XI  0
 #define TSL_DUAL_ETA 1
 #define TSL_DUAL_DOF 2 /* slot of the element's unknown 0 */
+#define TSL_DUAL_SHORT_DOF 20 /* 2D linear faces (5 nodes with the neighbours, 4 unknowns with twist), 3D quad4 faces */
 #if defined(TSL_DUAL_VALUES)
   #define TSL_DUAL_N TSL_DUAL_DOF
+#elif defined(TSL_DUAL_SHORT)
+  #define TSL_DUAL_N (TSL_DUAL_DOF + TSL_DUAL_SHORT_DOF)
 #else
   #define TSL_DUAL_N (TSL_DUAL_DOF + TSL_CONTACT_MAX_DOF)
 #endif
@@ -35,6 +39,8 @@ PetscErrorCode TslContactProject3Raw(const TslContactInput3 *in, PetscReal raw[2
 PetscErrorCode TslContactProject3Raw_Values(const TslContactInput3 *in, PetscReal raw[2], PetscBool *frozen);
 PetscErrorCode TslContactElement3_Values(const TslContactLaw *law, const TslContactInput3 *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
 PetscErrorCode TslContactProject_Values(const TslContactInput *in, PetscReal *xi, PetscReal *g, PetscReal n[]);
+PetscErrorCode TslContactElement_Short(const TslContactLaw *law, const TslContactInput *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
+PetscErrorCode TslContactElement3_Short(const TslContactLaw *law, const TslContactInput3 *in, PetscReal R[], PetscReal K[], TslContactOutput *out);
 PetscErrorCode TslContactSurfacePoint_Values(const TslContactInput *in, PetscReal xi, PetscReal x[], PetscReal n[]);
 PetscErrorCode TslContactFace3Evaluate_Values(PetscInt kind, const PetscReal x[], const PetscReal xi[], PetscReal p[], PetscReal n[]);
 PetscErrorCode TslContactFace3Project_Values(PetscInt kind, const PetscReal x[], const PetscReal p[], PetscReal xi[]);

@@ -235,6 +235,20 @@ PetscErrorCode TslContactElement3(const TslContactLaw *law, const TslContactInpu
     PetscCall(TslContactElement3_Values(law, in, R, NULL, out));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  {
+    const TslContactFace3 *f = TslContactFace3Get(in->face);
+    if (f) { /* the element's unknowns: the secondary node and the face's */
+      const PetscInt nd = NU * (1 + f->geom->nnode);
+  #if defined(TSL_DUAL_SHORT)
+      PetscCheck(nd <= TSL_DUAL_SHORT_DOF, PETSC_COMM_SELF, PETSC_ERR_PLIB, "3D contact element with %" PetscInt_FMT " unknowns in the short kernels", nd);
+  #else
+      if (nd <= TSL_DUAL_SHORT_DOF) { /* its tangent fits fewer slots (contact/short/) */
+        PetscCall(TslContactElement3_Short(law, in, R, K, out));
+        PetscFunctionReturn(PETSC_SUCCESS);
+      }
+  #endif
+    }
+  }
 #endif
   PetscCall(GeomSetUp(in, PETSC_TRUE, &geo));
   nnode = 1 + geo.nper;

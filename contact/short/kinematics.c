@@ -1,0 +1,3 @@
+/* kinematics.c for the small elements' tangent (short.h). */
+#include "short.h"
+#include "../kinematics.c"

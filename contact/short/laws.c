@@ -1,0 +1,3 @@
+/* laws.c for the small elements' tangent (short.h). */
+#include "short.h"
+#include "../laws.c"
