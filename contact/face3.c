@@ -67,18 +67,18 @@ static PetscErrorCode FaceGet(PetscInt kind, const TslContactFace3 **f)
 }
 
 /* Second derivatives, which TslGeometry does not give, by the central difference of dN with a unit step
- * in each reference coordinate: exact (to round-off) while dN is a polynomial of degree <= 2 in it, i.e.
- * for tri3, quad4 (bilinear) and tri6 (as face.c does for the lines). */
-void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], PetscReal N[], PetscReal dN[][2], PetscReal d2N[][2][2])
+ * in each reference coordinate: exact (to round-off) while dN is a polynomial of degree <= 2 in it. For the
+ * three families dN is of degree <= 1 in each coordinate (tri3 constant, quad4 bilinear, tri6 linear), so the
+ * second derivatives are constants: they are taken once per family at the reference origin, where the
+ * differences evaluate the shape functions at integer points (exactly), and checked at a second point; a
+ * family whose second derivatives vary (none today) is differenced at every point. The projection's Newton
+ * iterations evaluated the shape functions five times per call for them. */
+static void Difference(const TslGeometry *g, const PetscReal xi[2], PetscReal d2N[][2][2])
 {
-  const TslGeometry *g = face->geom;
-  PetscReal z[3]       = {xi[0], xi[1], 0}, Nz[TSL_MAX_ELEM_NODES], d[TSL_MAX_ELEM_NODES * 3], dp[TSL_MAX_ELEM_NODES * 3], dm[TSL_MAX_ELEM_NODES * 3];
+  PetscReal z[3], Nz[TSL_MAX_ELEM_NODES], dp[TSL_MAX_ELEM_NODES * 3], dm[TSL_MAX_ELEM_NODES * 3];
 
-  g->shape(z, N, d);
-  for (PetscInt a = 0; a < g->nnode; a++)
-    for (PetscInt i = 0; i < 2; i++) dN[a][i] = d[2 * a + i];
   for (PetscInt j = 0; j < 2; j++) {
-    z[0] = xi[0], z[1] = xi[1];
+    z[0] = xi[0], z[1] = xi[1], z[2] = 0;
     z[j] = xi[j] + 1;
     g->shape(z, Nz, dp);
     z[j] = xi[j] - 1;
@@ -86,6 +86,35 @@ void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], Pe
     for (PetscInt a = 0; a < g->nnode; a++)
       for (PetscInt i = 0; i < 2; i++) d2N[a][i][j] = 0.5 * (dp[2 * a + i] - dm[2 * a + i]);
   }
+}
+
+void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], PetscReal N[], PetscReal dN[][2], PetscReal d2N[][2][2])
+{
+  static PetscReal   D2[NFACE3][TSL_CONTACT3_MAX_FACE_NODES][2][2];
+  static PetscInt    known[NFACE3]; /* 0 not yet, 1 constant (D2), 2 varies */
+  const TslGeometry *g = face->geom;
+  const PetscInt     k = (PetscInt)(face - Faces);
+  PetscReal          z[3] = {xi[0], xi[1], 0}, d[TSL_MAX_ELEM_NODES * 3];
+
+  g->shape(z, N, d);
+  for (PetscInt a = 0; a < g->nnode; a++)
+    for (PetscInt i = 0; i < 2; i++) dN[a][i] = d[2 * a + i];
+  if (!known[k]) {
+    const PetscReal origin[2] = {0, 0}, other[2] = {0.3, 0.2};
+    PetscReal       e[TSL_CONTACT3_MAX_FACE_NODES][2][2];
+    Difference(g, origin, D2[k]);
+    Difference(g, other, e);
+    known[k] = 1;
+    for (PetscInt a = 0; a < g->nnode; a++)
+      for (PetscInt i = 0; i < 2; i++)
+        for (PetscInt j = 0; j < 2; j++)
+          if (PetscAbsReal(e[a][i][j] - D2[k][a][i][j]) > 1e-12) known[k] = 2;
+  }
+  if (known[k] == 2) Difference(g, xi, d2N);
+  else
+    for (PetscInt a = 0; a < g->nnode; a++)
+      for (PetscInt i = 0; i < 2; i++)
+        for (PetscInt j = 0; j < 2; j++) d2N[a][i][j] = D2[k][a][i][j];
 }
 
 void TslContactFace3ShapeValues(PetscInt kind, const PetscReal xi[2], PetscReal N[])
