@@ -150,7 +150,7 @@ static PetscErrorCode Eval(const TslContactLaw *law, Case *c, PetscReal R[], Pet
 
 /* Main face (body below): a warped quad4 or a tri3 around the origin; secondary face above it (normal down),
  * at height gap + the main face's height, small displacements and temperatures; the point is the fourth
- * of the overlap's points (the ninth with smoothing, off the centre). History: the start of the increment ds away (reference units), the anchor
+ * of the overlap's points (with smoothing the one nearest the secondary face's first corner). History: the start of the increment ds away (reference units), the anchor
  * `anchor` beyond it. */
 static PetscErrorCode CaseSetUp(Case *c, PetscInt mkind, PetscInt skind, PetscReal gap, PetscReal smoothing, PetscReal ds, PetscReal anchor)
 {
@@ -190,7 +190,18 @@ static PetscErrorCode CaseSetUp(Case *c, PetscInt mkind, PetscInt skind, PetscRe
   PetscCall(TslContactOverlap3(skind, c->X, y, mkind, ym, CAP, Pts, &n, NULL));
   PetscCheck(n > 3, PETSC_COMM_SELF, PETSC_ERR_PLIB, "test faces do not overlap");
   {
-    PetscInt q = smoothing > 0 ? 8 : 3; /* smoothed: a point near a corner of the overlap, in the rounded zone */
+    /* smoothed: the point nearest the secondary face's first corner, towards the main face's edges (tri6 on
+     * tri3: in the rounded zone, barycentric 0.18 < s); otherwise one off the centre. Chosen by position, not
+     * by the rule's order (which depends on the overlap's shape). */
+    PetscInt  q = PetscMin(3, n - 1);
+    PetscReal best = PETSC_MAX_REAL;
+    for (PetscInt k = 0; smoothing > 0 && k < n; k++) {
+      PetscReal x[3] = {0, 0, 0}, d2 = 0;
+      for (PetscInt b = 0; b < c->nsn; b++)
+        for (PetscInt d = 0; d < 3; d++) x[d] += Pts[k].N[b] * c->X[3 * b + d];
+      for (PetscInt d = 0; d < 2; d++) d2 += (x[d] - c->X[d]) * (x[d] - c->X[d]);
+      if (d2 < best) best = d2, q = k;
+    }
     for (PetscInt b = 0; b < c->nsn; b++) c->N[b] = Pts[q].N[b];
     c->in.area = Pts[q].w;
   }
