@@ -2,7 +2,8 @@
 # Contact at scale (issue 7): the two-block C3D8T deck of make_contact_block.py N ((N+1)^2 secondary nodes
 # against (N+1)^2 main faces, non-matching meshes, one steady coupled increment) solved by
 #   - thermoslide on 1 and 2 ranks (-tsl_partition axis_x, so that both ranks own secondary nodes and each
-#     holds its own part of the main surface),
+#     holds its own part of the main surface), with the node-to-surface pair ("thermoslide") and with the
+#     surface-to-surface pair ("ts s2s", the kind of pair CalculiX runs below; S2S=0 leaves it out),
 #   - CalculiX 2.20 (ccx, face-to-face contact, its default direct solver, one thread) up to CCX_MAX_N
 #     (default 32).
 # Per run: total wall time, Newton iterations, the contact phase and the search inside it (pairing and the
@@ -25,26 +26,31 @@ command -v ccx > /dev/null || { ccx_ok=0; echo "ccx not installed (apt-get insta
 printf "\n%-4s %8s %9s %-5s %-11s %8s %6s %12s %12s %8s %-13s %9s %9s\n" N contacts dofs ranks code total newton contact/it search/it search% held_faces mem_MB/rank heat
 declare -A T
 for n in $sizes; do
-  deck=$out/block$n.inp
-  /usr/bin/python3 "$here/make_contact_block.py" "$n" "$deck"
   nc=$(( (n+1)*(n+1) ))
   # base (n+2) x 3 x (n+2) nodes, thin block (n+1) x 2 x (n+1) nodes, 4 unknowns each
   dofs=$(( ((n+2)*3*(n+2) + (n+1)*2*(n+1)) * 4 ))
-  for np in 1 2; do
-    log=$out/block$n.np$np.log
-    mpirun -n $np "$exe" "$deck" -o "$out/ts$n.np$np" -tsl_partition axis_x > "$log" 2>&1 || { echo "thermoslide failed: $log"; tail -3 "$log"; continue; }
-    w=$(grep "thermoslide: wall time" "$log" | sed 's/[:,;()]/ /g')
-    tot=$(echo "$w" | awk '{print $4}')
-    con=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="contact" && $(i+1)!="search") {print $(i+1); exit}}')
-    sea=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="contact" && $(i+1)=="search") print $(i+2)}')
-    mem=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="memory") print $(i+1)}')
-    its=$(grep -o "newton [0-9]*" "$log" | awk '{s+=$2} END {print s}')
-    held=$(grep -o "main faces held by rank [0-9.]*: [0-9 ]* of" "$log" | sed 's/.*: //; s/ of//; s/ /+/g')
-    heat=$(/usr/bin/python3 -c 'import csv, sys; print("%.6g" % abs(float(list(csv.DictReader(open(sys.argv[1])))[-1]["interface_heat"])))' \
-      "$out/ts$n.np$np/block$n.csv" 2> /dev/null || echo -)
-    printf "%-4s %8d %9d %-5s %-11s %8s %6s %12.3g %12.3g %7.2g%% %-13s %9s %9s\n" "$n" "$nc" "$dofs" "$np" thermoslide "$tot" "$its" \
-      "$(echo "$con / $its" | bc -l)" "$(echo "${sea:-0} / $its" | bc -l)" "$(echo "100 * ${sea:-0} / $tot" | bc -l)" "$held" "$mem" "$heat"
-    T[ts,$n,$np]=$tot T[tsmem,$n,$np]=$mem
+  for pair in n2s s2s; do
+    [ "$pair" = s2s ] && [ "${S2S:-1}" = 0 ] && continue
+    name=block$n tag=ts code=thermoslide flavour=thermoslide
+    [ "$pair" = s2s ] && name=block${n}s2s tag=s2s code="ts s2s" flavour=s2s
+    deck=$out/$name.inp
+    /usr/bin/python3 "$here/make_contact_block.py" "$n" "$deck" "$flavour"
+    for np in 1 2; do
+      log=$out/$name.np$np.log
+      mpirun -n $np "$exe" "$deck" -o "$out/$tag$n.np$np" -tsl_partition axis_x > "$log" 2>&1 || { echo "thermoslide failed: $log"; tail -3 "$log"; continue; }
+      w=$(grep "thermoslide: wall time" "$log" | sed 's/[:,;()]/ /g')
+      tot=$(echo "$w" | awk '{print $4}')
+      con=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="contact" && $(i+1)!="search") {print $(i+1); exit}}')
+      sea=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="contact" && $(i+1)=="search") print $(i+2)}')
+      mem=$(echo "$w" | awk '{for(i=1;i<=NF;i++) if($i=="memory") print $(i+1)}')
+      its=$(grep -o "newton [0-9]*" "$log" | awk '{s+=$2} END {print s}')
+      held=$(grep -o "main faces held by rank [0-9.]*: [0-9 ]* of" "$log" | sed 's/.*: //; s/ of//; s/ /+/g')
+      heat=$(/usr/bin/python3 -c 'import csv, sys; print("%.6g" % abs(float(list(csv.DictReader(open(sys.argv[1])))[-1]["interface_heat"])))' \
+        "$out/$tag$n.np$np/$name.csv" 2> /dev/null || echo -)
+      printf "%-4s %8d %9d %-5s %-11s %8s %6s %12.3g %12.3g %7.2g%% %-13s %9s %9s\n" "$n" "$nc" "$dofs" "$np" "$code" "$tot" "$its" \
+        "$(echo "$con / $its" | bc -l)" "$(echo "${sea:-0} / $its" | bc -l)" "$(echo "100 * ${sea:-0} / $tot" | bc -l)" "$held" "$mem" "$heat"
+      T[$tag,$n,$np]=$tot T[${tag}mem,$n,$np]=$mem
+    done
   done
   if [ $ccx_ok = 1 ] && [ "$n" -le "$ccx_max" ]; then
     cdir=$out/ccx$n
@@ -64,14 +70,21 @@ for n in $sizes; do
 done
 
 echo
-echo "ratios (CalculiX / thermoslide): time on 1 rank, memory on 1 rank; memory per rank 2 ranks / 1 rank"
+echo "ratios (CalculiX / thermoslide): time on 1 rank, memory on 1 rank, node-to-surface (and surface-to-surface); memory per rank 2 ranks / 1 rank"
 for n in $sizes; do
   r="N=$n:"
-  if [ -n "${T[ccx,$n]:-}" ] && [ -n "${T[ts,$n,1]:-}" ]; then
-    r="$r time x$(echo "${T[ccx,$n]} / ${T[ts,$n,1]}" | bc -l | xargs printf %.2g), memory x$(echo "${T[ccxmem,$n]} / ${T[tsmem,$n,1]}" | bc -l | xargs printf %.2g)"
-  fi
-  if [ -n "${T[tsmem,$n,2]:-}" ] && [ -n "${T[tsmem,$n,1]:-}" ]; then
-    r="$r; memory per rank 2/1 ranks $(echo "${T[tsmem,$n,2]} / ${T[tsmem,$n,1]}" | bc -l | xargs printf %.2g)"
-  fi
+  for tag in ts s2s; do
+    [ -n "${T[$tag,$n,1]:-}" ] || continue
+    label=node-to-surface
+    [ $tag = s2s ] && label=surface-to-surface
+    r="$r $label"
+    if [ -n "${T[ccx,$n]:-}" ]; then
+      r="$r time x$(echo "${T[ccx,$n]} / ${T[$tag,$n,1]}" | bc -l | xargs printf %.2g), memory x$(echo "${T[ccxmem,$n]} / ${T[${tag}mem,$n,1]}" | bc -l | xargs printf %.2g)"
+    fi
+    if [ -n "${T[${tag}mem,$n,2]:-}" ]; then
+      r="$r, memory per rank 2/1 ranks $(echo "${T[${tag}mem,$n,2]} / ${T[${tag}mem,$n,1]}" | bc -l | xargs printf %.2g)"
+    fi
+    r="$r;"
+  done
   echo "$r"
 done

@@ -6,9 +6,11 @@ its bottom (y = 0); the thin block's top face is held at temperature 100 and in 
 pressure of 100. The meshes do not match across the interface: (N+1)^2 secondary nodes (the thin block's
 bottom) against (N+1)^2 main faces (the base's top). Gap conductance against the contact pressure. One
 steady coupled increment.
-usage: make_contact_block.py N deck.inp [thermoslide|calculix|explicit INCREMENTS [C3D8T|C3D8RT]]
+usage: make_contact_block.py N deck.inp [thermoslide|s2s|calculix|explicit INCREMENTS [C3D8T|C3D8RT]]
   thermoslide: C3D8T, node-to-surface (the default pair type), penalty contact with the stiffness 0.1 E / h
                (h the main face size), *GAP CONDUCTANCE, PRESSURE;
+  s2s:         the same with TYPE=SURFACE TO SURFACE (contact at the overlap's integration points, as
+               CalculiX's face-to-face pair below);
   calculix:    the same mesh with C3D8 (CalculiX's coupled temperature-displacement brick), face-to-face
                (TYPE=SURFACE TO SURFACE) with a linear pressure-overclosure of the same stiffness, and its
                *GAP CONDUCTANCE (always by pressure);
@@ -96,7 +98,7 @@ with open(path, "w") as f:
     # jumped from 1000 A dT to 0 on opening; Newton then cycled between two states (thermoslide at N = 16:
     # residual 141 / 335 alternately, cutbacks down to the minimum increment; CalculiX likewise at N = 8).
     w("*GAP CONDUCTANCE%s\n 0.0, 0.0\n 2000.0, 200.0\n" % ("" if flavour == "calculix" else ", PRESSURE"))
-    w("*CONTACT PAIR, INTERACTION=IFACE%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if flavour == "calculix" else ""))
+    w("*CONTACT PAIR, INTERACTION=IFACE%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if flavour in ("calculix", "s2s") else ""))
     w("*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
     if increments:
         nu, rho = 0.3, 7.8e-9
