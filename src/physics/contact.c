@@ -421,6 +421,20 @@ PetscErrorCode TslProblemContactSearch(TslProblem p, PetscBool *repattern)
   }
   PetscCall(TslPhaseEnd(TSL_PHASE_SEARCH));
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  if (!p->s2s_reported) { /* what a surface-to-surface pair costs: its points, each a kernel evaluation */
+    PetscInt *cnt, *sum;
+    p->s2s_reported = PETSC_TRUE;
+    PetscCall(PetscMalloc2(2 * p->ncsurf, &cnt, 2 * p->ncsurf, &sum));
+    TslProblemContactS2SCount(p, cnt);
+    PetscCall(MPIU_Allreduce(cnt, sum, (PetscMPIInt)(2 * p->ncsurf), MPIU_INT, MPI_SUM, p->comm));
+    for (PetscInt k = 0; k < p->ncsurf; k++)
+      if (sum[2 * k])
+        PetscCall(PetscPrintf(p->comm,
+                              "contact pair %" PetscInt_FMT ": surface to surface, %" PetscInt_FMT " integration points on %" PetscInt_FMT
+                              " secondary faces at the first search (%.1f per face; each point is one evaluation of the contact kernel)\n",
+                              k + 1, sum[2 * k + 1], sum[2 * k], (double)sum[2 * k + 1] / (double)sum[2 * k]));
+    PetscCall(PetscFree2(cnt, sum));
+  }
   if (p->pattern_stale) changed++;
   p->pattern_stale = PETSC_FALSE;
   PetscCall(MPIU_Allreduce(&changed, &g, 1, MPIU_INT, MPI_SUM, p->comm));

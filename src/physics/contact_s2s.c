@@ -454,6 +454,20 @@ PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, P
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void TslProblemContactS2SCount(TslProblem p, PetscInt counts[])
+{
+  TslContactS2S s = p->s2s;
+
+  for (PetscInt k = 0; k < 2 * p->ncsurf; k++) counts[k] = 0;
+  for (PetscInt i = 0; s && i < s->nface; i++) {
+    const S2SFace *fc = &s->face[i];
+    if (!fc->assemble) continue; /* held here for its nodes' outputs, counted where it is inserted */
+    counts[2 * fc->pair]++;
+    for (PetscInt q = fc->first; q < fc->first + fc->npt; q++)
+      if (s->pt[q].seg >= 0) counts[2 * fc->pair + 1]++;
+  }
+}
+
 PetscErrorCode TslProblemContactS2SUpdate(TslProblem p, PetscInt *depart, PetscReal *change, PetscReal *scale)
 {
   TslContactS2S s = p->s2s;

@@ -129,6 +129,7 @@ struct _p_TslProblem {
   PetscReal          margin_rerun;  /* > 0: a node left its rank's held region; the job restarts with this -tsl_contact_margin */
   PetscBool          select_kinematic; /* TslProblemContactAssemble evaluates the kinematic pairs (true) or the others */
   TslContactS2S      s2s;           /* surface-to-surface pairs (NULL without) */
+  PetscBool          s2s_reported;  /* the first search's points per surface-to-surface pair are in the log */
   char              *pattern_rows;  /* [nn*ndof] kind of each row (free, prescribed, pinned, eliminated) when J's pattern was built */
   struct {                          /* the pattern pass's node pairs of owned rows (TslProblemPreallocate, MatAdd) */
     PetscInt *rec;                  /* records {nr, nc, rows[nr], cols[nc]} in local node numbers; NULL outside the pass */
@@ -230,6 +231,9 @@ PetscErrorCode TslProblemContactS2SSetUp(TslProblem p);
 PetscErrorCode TslProblemContactS2SDestroy(TslProblem p);
 PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);
 PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, PetscInt *changed);
+/* The secondary faces this rank inserts and their points in contact reach, per pair: counts[2 k], counts[2 k + 1]
+ * (zeros without surface-to-surface pairs). */
+void TslProblemContactS2SCount(TslProblem p, PetscInt counts[]);
 PetscErrorCode TslProblemContactS2SReach(TslProblem p, PetscInt k, const PetscScalar *xa, const PetscReal lo[], const PetscReal hi[], PetscReal *excess,
                                          PetscInt *node);
 PetscErrorCode TslProblemContactS2SUpdate(TslProblem p, PetscInt *depart, PetscReal *change, PetscReal *scale);
