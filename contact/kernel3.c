@@ -73,20 +73,34 @@ static void Surface(const Geom3 *geo, const TslDual xi[2], TslDual p[3], TslDual
 }
 
 /* F_alpha = (x_s - x_m) . (a_alpha - (a_alpha . n) n): zero at the projection along the smoothed normal. */
-static PetscErrorCode ProjectionFunction(void *ctx, const PetscReal xi[2], TslDual F[2])
+/* The face's point, tangents, shape functions and smoothed normal at a parameter (Surface's results). */
+typedef struct {
+  TslDual p[3], a[2][3], N[TSL_CONTACT3_MAX_FACE_NODES], n[3];
+} FacePoint;
+
+/* The projection's function F_c = (x_s - x_m(xi)) . t_c (t_c the part of a_c orthogonal to n) at xi, seeded in
+ * the parameters' slots; S not NULL: the face point it was evaluated on, with the same seeds. */
+static PetscErrorCode ProjectionEval(const Geom3 *geo, const PetscReal xi[2], TslDual F[2], FacePoint *S)
 {
-  const Geom3 *geo   = (const Geom3 *)ctx;
-  TslDual      xv[2] = {DVar(xi[0], TSL_DUAL_XI), DVar(xi[1], TSL_DUAL_ETA)}, p[3], a[2][3], N[TSL_CONTACT3_MAX_FACE_NODES], n[3], r[3];
+  TslDual   xv[2] = {DVar(xi[0], TSL_DUAL_XI), DVar(xi[1], TSL_DUAL_ETA)}, r[3];
+  FacePoint local, *f = S ? S : &local;
 
   PetscFunctionBeginUser;
-  Surface(geo, xv, p, a, N, n);
-  for (PetscInt d = 0; d < 3; d++) r[d] = DSub(geo->xs[d], p[d]);
+  Surface(geo, xv, f->p, f->a, f->N, f->n);
+  for (PetscInt d = 0; d < 3; d++) r[d] = DSub(geo->xs[d], f->p[d]);
   for (PetscInt i = 0; i < 2; i++) {
-    TslDual an = DDot3(a[i], n), t[3];
+    TslDual an = DDot3(f->a[i], f->n), t[3];
 
-    for (PetscInt d = 0; d < 3; d++) t[d] = DSubMul(&a[i][d], &an, &n[d]);
+    for (PetscInt d = 0; d < 3; d++) t[d] = DSubMul(&f->a[i][d], &an, &f->n[d]);
     F[i] = DDot3(r, t);
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode ProjectionFunction(void *ctx, const PetscReal xi[2], TslDual F[2])
+{
+  PetscFunctionBeginUser;
+  PetscCall(ProjectionEval((const Geom3 *)ctx, xi, F, NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -124,13 +138,18 @@ PetscErrorCode TslContactProject3Raw(const TslContactInput3 *in, PetscReal raw[2
 }
 
 /* The projection as duals carrying dxi/du = -F_xi^{-1} F_u (implicit function theorem at F = 0; zero when
- * frozen beyond the band), and the unclamped values. */
-static PetscErrorCode ProjectDual(const TslContactInput3 *in, Geom3 *geo, TslDual xi[2], PetscReal raw[2])
+ * frozen beyond the band), and the unclamped values. With the tangent and not frozen, *have: S holds the face
+ * point at the projection as Surface would give it for these xi, by the chain rule from the evaluation of F
+ * (its derivatives in the parameters' slots composed with dxi/du): the same first derivatives without a
+ * second evaluation of the face in every slot. */
+static PetscErrorCode ProjectDual(const TslContactInput3 *in, Geom3 *geo, TslDual xi[2], PetscReal raw[2], FacePoint *S, PetscBool *have)
 {
   PetscBool frozen;
 
   PetscFunctionBeginUser;
+  *have = PETSC_FALSE;
 #if defined(TSL_DUAL_VALUES)
+  (void)S;
   {
     const PetscReal start[2] = {in->hist.xi_old, in->hist.eta_old};
     PetscCall(ProjectRaw(geo, start, raw, &frozen)); /* this geometry already holds values alone */
@@ -145,7 +164,7 @@ static PetscErrorCode ProjectDual(const TslContactInput3 *in, Geom3 *geo, TslDua
     TslDual   F[2];
     PetscReal J[2][2];
 
-    PetscCall(ProjectionFunction(geo, raw, F));
+    PetscCall(ProjectionEval(geo, raw, F, S));
     for (PetscInt i = 0; i < 2; i++) {
       J[i][0] = F[i].d[TSL_DUAL_XI];
       J[i][1] = F[i].d[TSL_DUAL_ETA];
@@ -157,7 +176,22 @@ static PetscErrorCode ProjectDual(const TslContactInput3 *in, Geom3 *geo, TslDua
       xi[0].d[j] = x[0];
       xi[1].d[j] = x[1];
     }
+    {
+      TslDual *q[3 + 6 + TSL_CONTACT3_MAX_FACE_NODES + 3];
+      PetscInt nq = 0;
+      for (PetscInt d = 0; d < 3; d++) q[nq++] = &S->p[d], q[nq++] = &S->a[0][d], q[nq++] = &S->a[1][d], q[nq++] = &S->n[d];
+      for (PetscInt b = 0; b < geo->nper; b++) q[nq++] = &S->N[b];
+      for (PetscInt k = 0; k < nq; k++) {
+        TslDual        *v = q[k];
+        const PetscReal dx = v->d[TSL_DUAL_XI], de = v->d[TSL_DUAL_ETA];
+        for (PetscInt j = TSL_DUAL_DOF; j < TSL_DUAL_N; j++) v->d[j] += dx * xi[0].d[j] + de * xi[1].d[j];
+        v->d[TSL_DUAL_XI] = v->d[TSL_DUAL_ETA] = 0;
+      }
+    }
+    *have = PETSC_TRUE;
   }
+#else
+  (void)S;
 #endif
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -256,8 +290,15 @@ PetscErrorCode TslContactElement3(const TslContactLaw *law, const TslContactInpu
 
   /* kinematics: projection along the smoothed normal, gap, the slip basis t1 (the part of a1 orthogonal to
    * n), t2 = n x t1 */
-  PetscCall(ProjectDual(in, &geo, xi, raw));
-  Surface(&geo, xi, p, a, N, n);
+  {
+    FacePoint fp;
+    PetscBool have;
+    PetscCall(ProjectDual(in, &geo, xi, raw, &fp, &have));
+    if (have) {
+      for (PetscInt d = 0; d < 3; d++) p[d] = fp.p[d], a[0][d] = fp.a[0][d], a[1][d] = fp.a[1][d], n[d] = fp.n[d];
+      for (PetscInt b = 0; b < geo.nper; b++) N[b] = fp.N[b];
+    } else Surface(&geo, xi, p, a, N, n);
+  }
   for (PetscInt d = 0; d < 3; d++) r[d] = DSub(geo.xs[d], p[d]);
   g  = DDot3(r, n);
   an = DDot3(a[0], n);
