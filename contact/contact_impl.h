@@ -314,6 +314,10 @@ void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], Pe
  * xi[2]: derivatives flow through the nodes and through xi (with the second derivatives of N). */
 void TslContactFace3PointDual(const TslContactFace3 *face, const TslDual x[][3], const TslDual xi[2], TslDual p[3], TslDual a[2][3], TslDual N[]);
 
+/* The position alone at fixed parameters xi[2] (a history point): derivatives through the nodes only, the same
+ * bits as TslContactFace3PointDual's p at DConst(xi) without its tangents and the parameters' chain rule. */
+void TslContactFace3PointAt(const TslContactFace3 *face, const TslDual x[][3], const PetscReal xi[2], TslDual p[3]);
+
 /* A root of F(xi) = 0 for two face parameters by Newton, with dF/dxi from the dual slots TSL_DUAL_XI,
  * TSL_DUAL_ETA of fn's F: from xi[] as given, steps limited to `step` (reference units), a step down
  * the gradient of |x_s - x|^2 where -dF/dxi is not positive definite (far on the concave side), and

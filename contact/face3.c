@@ -150,6 +150,20 @@ void TslContactFace3PointDual(const TslContactFace3 *face, const TslDual x[][3],
   }
 }
 
+void TslContactFace3PointAt(const TslContactFace3 *face, const TslDual x[][3], const PetscReal xi[2], TslDual p[3])
+{
+  PetscReal z[3] = {xi[0], xi[1], 0}, Nv[TSL_MAX_ELEM_NODES], d[TSL_MAX_ELEM_NODES * 3];
+
+  face->geom->shape(z, Nv, d);
+  for (PetscInt k = 0; k < 3; k++) p[k] = x[0][k];
+  for (PetscInt b = 1; b < face->geom->nnode; b++)
+    for (PetscInt k = 0; k < 3; k++) { /* DAccMul(&p[k], &DConst(N_b), &e) with e = x_b - x_0: N_b's zero slots add nothing */
+      TslDual e = DSub(x[b][k], x[0][k]);
+      p[k].v += Nv[b] * e.v;
+      for (PetscInt i = 0; i < TSL_DUAL_N; i++) p[k].d[i] += Nv[b] * e.d[i];
+    }
+}
+
 PetscBool TslContactSolve2(const PetscReal A[2][2], const PetscReal b[2], PetscReal x[2])
 {
   PetscReal det = A[0][0] * A[1][1] - A[0][1] * A[1][0], scale = PetscAbsReal(A[0][0] * A[1][1]) + PetscAbsReal(A[0][1] * A[1][0]);

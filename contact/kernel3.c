@@ -244,9 +244,10 @@ static PetscErrorCode AnchorSolve(const Geom3 *geo, const TslDual xi[2], const T
 /* Tangential components of x_m(xi) - x_m(xi_b) along t1, t2 (xi_b a history point on the current face). */
 static void SlipFrom(const Geom3 *geo, const TslDual p[3], PetscReal xb, PetscReal eb, const TslDual t[2][3], TslDual s[2])
 {
-  TslDual xv[2] = {DConst(xb), DConst(eb)}, q[3], a[2][3], dx[3];
+  const PetscReal xv[2] = {xb, eb};
+  TslDual         q[3], dx[3];
 
-  TslContactFace3PointDual(geo->face, (const TslDual(*)[3])geo->xm, xv, q, a, NULL);
+  TslContactFace3PointAt(geo->face, (const TslDual(*)[3])geo->xm, xv, q);
   for (PetscInt d = 0; d < 3; d++) dx[d] = DSub(p[d], q[d]);
   for (PetscInt c = 0; c < 2; c++) s[c] = DDot3(dx, t[c]);
 }

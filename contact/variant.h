@@ -41,6 +41,7 @@
 #define TslContactFace3Integrate   TSL_VARIANT(TslContactFace3Integrate)
 #define TslContactFace3Nodes       TSL_VARIANT(TslContactFace3Nodes)
 #define TslContactFace3PointDual   TSL_VARIANT(TslContactFace3PointDual)
+#define TslContactFace3PointAt     TSL_VARIANT(TslContactFace3PointAt)
 #define TslContactFace3Project     TSL_VARIANT(TslContactFace3Project)
 #define TslContactFace3Shape       TSL_VARIANT(TslContactFace3Shape)
 #define TslContactFace3ShapeValues TSL_VARIANT(TslContactFace3ShapeValues)
