@@ -166,8 +166,8 @@ static PetscBool Parallelogram(const PetscReal V[8])
 /* A point of the overlap at plane coordinates q with plane weight w: its parameters on the piece (P its
  * corners in the plane, Xp in the reference configuration, idx its nodes on the face), the face's shape
  * functions there and its weight as a reference area (w dA_ref / dA_plane). */
-static PetscErrorCode AddPoint(const TslGeometry *sg, const TslGeometry *pg, PetscInt nc, const PetscInt idx[], const PetscReal P[], const PetscReal Xp[],
-                               const PetscReal q[2], PetscReal w, PetscInt cap, TslContactOverlapPoint pt[], PetscInt *npt)
+static PetscErrorCode AddPoint(const TslGeometry *sg, const TslGeometry *pg, PetscInt nc, const PetscInt idx[], const PetscReal P[],
+                               const PetscReal Xp[], const PetscReal q[2], PetscReal w, PetscInt cap, TslContactOverlapPoint pt[], PetscInt *npt)
 {
   PetscReal               xi[2], N[4], dN[8], Jp, a1[3] = {0, 0, 0}, a2[3] = {0, 0, 0}, cr[3];
   TslContactOverlapPoint *o;
@@ -263,11 +263,12 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
     for (PetscInt i = 0; i < nq; i++)
       for (PetscInt d = 0; d < 2; d++) qm[d] += Q[2 * i + d] / nq;
     {
-      PetscReal V[2 * TSL_CONTACT_CLIP_MAX_VERTICES];
-      PetscInt  nv = Corners(nq, Q, aq, V);
+      PetscReal       V[2 * TSL_CONTACT_CLIP_MAX_VERTICES];
+      const PetscInt  nv    = Corners(nq, Q, aq, V);
+      const PetscBool whole = (PetscBool)(nv == 3 || (nv == 4 && Parallelogram(V)));
 
-      if (nv == 3 || (nv == 4 && Parallelogram(V))) {
-        const PetscInt  nr = nv == 3 ? TSL_CONTACT_TRI_GAUSS : 9;
+      if (whole) {
+        const PetscInt  nr    = nv == 3 ? TSL_CONTACT_TRI_GAUSS : 9;
         const PetscReal g3[3] = {-0.77459666924148337704, 0, 0.77459666924148337704}, w3[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
         for (PetscInt g = 0; g < nr; g++) {
           PetscReal q[2], w;
@@ -288,7 +289,7 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
 
         if (at <= 1e-14 * aq) continue; /* a repeated or collinear vertex of the clipped polygon */
         for (PetscInt d = 0; d < 2; d++) qc[d] += at * (q0[d] + q1[d] + q2[d]) / 3;
-        if (nv == 3 || (nv == 4 && Parallelogram(V))) continue; /* its points are above */
+        if (whole) continue; /* its points are above */
         for (PetscInt g = 0; g < TSL_CONTACT_TRI_GAUSS; g++) {
           PetscReal q[2];
           for (PetscInt d = 0; d < 2; d++) q[d] = TriL[g][0] * q0[d] + TriL[g][1] * q1[d] + TriL[g][2] * q2[d];

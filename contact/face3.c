@@ -92,8 +92,8 @@ void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], Pe
 {
   static PetscReal   D2[NFACE3][TSL_CONTACT3_MAX_FACE_NODES][2][2];
   static PetscInt    known[NFACE3]; /* 0 not yet, 1 constant (D2), 2 varies */
-  const TslGeometry *g = face->geom;
-  const PetscInt     k = (PetscInt)(face - Faces);
+  const TslGeometry *g    = face->geom;
+  const PetscInt     k    = (PetscInt)(face - Faces);
   PetscReal          z[3] = {xi[0], xi[1], 0}, d[TSL_MAX_ELEM_NODES * 3];
 
   g->shape(z, N, d);
@@ -110,7 +110,8 @@ void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], Pe
         for (PetscInt j = 0; j < 2; j++)
           if (PetscAbsReal(e[a][i][j] - D2[k][a][i][j]) > 1e-12) known[k] = 2;
   }
-  if (known[k] == 2) Difference(g, xi, d2N);
+  if (known[k] == 2)
+    Difference(g, xi, d2N);
   else
     for (PetscInt a = 0; a < g->nnode; a++)
       for (PetscInt i = 0; i < 2; i++)

@@ -182,7 +182,7 @@ static PetscErrorCode ProjectDual(const TslContactInput3 *in, Geom3 *geo, TslDua
       for (PetscInt d = 0; d < 3; d++) q[nq++] = &S->p[d], q[nq++] = &S->a[0][d], q[nq++] = &S->a[1][d], q[nq++] = &S->n[d];
       for (PetscInt b = 0; b < geo->nper; b++) q[nq++] = &S->N[b];
       for (PetscInt k = 0; k < nq; k++) {
-        TslDual        *v = q[k];
+        TslDual        *v  = q[k];
         const PetscReal dx = v->d[TSL_DUAL_XI], de = v->d[TSL_DUAL_ETA];
         for (PetscInt j = TSL_DUAL_DOF; j < TSL_DUAL_N; j++) v->d[j] += dx * xi[0].d[j] + de * xi[1].d[j];
         v->d[TSL_DUAL_XI] = v->d[TSL_DUAL_ETA] = 0;
@@ -274,14 +274,15 @@ PetscErrorCode TslContactElement3(const TslContactLaw *law, const TslContactInpu
     const TslContactFace3 *f = TslContactFace3Get(in->face);
     if (f) { /* the element's unknowns: the secondary node and the face's */
       const PetscInt nd = NU * (1 + f->geom->nnode);
-  #if defined(TSL_DUAL_SHORT)
-      PetscCheck(nd <= TSL_DUAL_SHORT_DOF, PETSC_COMM_SELF, PETSC_ERR_PLIB, "3D contact element with %" PetscInt_FMT " unknowns in the short kernels", nd);
-  #else
+#if defined(TSL_DUAL_SHORT)
+      PetscCheck(nd <= TSL_DUAL_SHORT_DOF, PETSC_COMM_SELF, PETSC_ERR_PLIB, "3D contact element with %" PetscInt_FMT " unknowns in the short kernels",
+                 nd);
+#else
       if (nd <= TSL_DUAL_SHORT_DOF) { /* its tangent fits fewer slots (contact/short/) */
         PetscCall(TslContactElement3_Short(law, in, R, K, out));
         PetscFunctionReturn(PETSC_SUCCESS);
       }
-  #endif
+#endif
     }
   }
 #endif
@@ -298,7 +299,8 @@ PetscErrorCode TslContactElement3(const TslContactLaw *law, const TslContactInpu
     if (have) {
       for (PetscInt d = 0; d < 3; d++) p[d] = fp.p[d], a[0][d] = fp.a[0][d], a[1][d] = fp.a[1][d], n[d] = fp.n[d];
       for (PetscInt b = 0; b < geo.nper; b++) N[b] = fp.N[b];
-    } else Surface(&geo, xi, p, a, N, n);
+    } else
+      Surface(&geo, xi, p, a, N, n);
   }
   for (PetscInt d = 0; d < 3; d++) r[d] = DSub(geo.xs[d], p[d]);
   g  = DDot3(r, n);

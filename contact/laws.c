@@ -341,15 +341,15 @@ PetscErrorCode TslContactElement(const TslContactLaw *law, const TslContactInput
     const TslContactFace *f = TslContactFaceGet(in->face);
     if (f) { /* the element's unknowns: the secondary node, the segment, the neighbours' other nodes */
       const PetscInt np = f->geom->nnode, nn = 1 + np + (in->x_prev ? np - 1 : 0) + (in->x_next ? np - 1 : 0);
-  #if defined(TSL_DUAL_SHORT)
-      PetscCheck(nn * TslContactNodeUnknowns(in->kin) <= TSL_DUAL_SHORT_DOF, PETSC_COMM_SELF, PETSC_ERR_PLIB, "contact element with %" PetscInt_FMT " unknowns in the short kernels",
-                 nn * TslContactNodeUnknowns(in->kin));
-  #else
+#if defined(TSL_DUAL_SHORT)
+      PetscCheck(nn * TslContactNodeUnknowns(in->kin) <= TSL_DUAL_SHORT_DOF, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "contact element with %" PetscInt_FMT " unknowns in the short kernels", nn * TslContactNodeUnknowns(in->kin));
+#else
       if (nn * TslContactNodeUnknowns(in->kin) <= TSL_DUAL_SHORT_DOF) { /* its tangent fits fewer slots (contact/short/) */
         PetscCall(TslContactElement_Short(law, in, R, K, out));
         PetscFunctionReturn(PETSC_SUCCESS);
       }
-  #endif
+#endif
     }
   }
 #endif

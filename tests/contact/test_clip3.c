@@ -150,8 +150,8 @@ static PetscErrorCode Eval(const TslContactLaw *law, Case *c, PetscReal R[], Pet
 
 /* Main face (body below): a warped quad4 or a tri3 around the origin; secondary face above it (normal down),
  * at height gap + the main face's height, small displacements and temperatures; the point is the fourth
- * of the overlap's points (with smoothing the one nearest the secondary face's first corner). History: the start of the increment ds away (reference units), the anchor
- * `anchor` beyond it. */
+ * of the overlap's points (with smoothing the one nearest the secondary face's first corner). History: the start of the increment ds away (reference
+ * units), the anchor `anchor` beyond it. */
 static PetscErrorCode CaseSetUp(Case *c, PetscInt mkind, PetscInt skind, PetscReal gap, PetscReal smoothing, PetscReal ds, PetscReal anchor)
 {
   const PetscReal quad[4][3] = {{-0.6, -0.6, 0}, {0.6, -0.54, 0.05}, {0.66, 0.6, -0.05}, {-0.54, 0.66, 0.04}}, tri[3][3] = {{-0.6, -0.6, 0}, {0.8, -0.5, 0.05}, {-0.4, 0.9, -0.05}};
@@ -193,7 +193,7 @@ static PetscErrorCode CaseSetUp(Case *c, PetscInt mkind, PetscInt skind, PetscRe
     /* smoothed: the point nearest the secondary face's first corner, towards the main face's edges (tri6 on
      * tri3: in the rounded zone, barycentric 0.18 < s); otherwise one off the centre. Chosen by position, not
      * by the rule's order (which depends on the overlap's shape). */
-    PetscInt  q = PetscMin(3, n - 1);
+    PetscInt  q    = PetscMin(3, n - 1);
     PetscReal best = PETSC_MAX_REAL;
     for (PetscInt k = 0; smoothing > 0 && k < n; k++) {
       PetscReal x[3] = {0, 0, 0}, d2 = 0;
