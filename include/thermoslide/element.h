@@ -161,6 +161,9 @@ typedef struct {
  * point of the full or the mechanical rule), at the cost of the geometry alone. */
 PetscBool      TslElementValid(const TslElementInput *in);
 PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted);
+/* The same, and energy[0], energy[1] the element's strain energy int 1/2 sigma : eps_mech dV and hourglass energy
+ * as TslElementOutput's (at no extra element pass: the implicit history takes them from its heat-balance residual). */
+PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted, PetscReal energy[2]);
 /* Nodes of the element's vectors: the family's nodes and the type's extra nodes. */
 static inline PetscInt TslElementTypeNodes(const TslElementType *t)
 {

@@ -29,6 +29,7 @@ typedef struct {
   PetscReal dissipation;    /* frictional dissipation rate */
   PetscReal friction_heat;  /* part of the dissipation converted to heat (eta) */
   PetscReal balance;        /* heat_in + reaction_heat + friction_heat - film_out - stored_rate */
+  PetscReal strain_energy, hourglass_energy; /* of the elements, as TslProblemEnergies (from the same pass) */
 } TslHeatBalance;
 
 /* Takes ownership of the local model. */

@@ -277,7 +277,8 @@ static PetscBool MechanicsSolid3DTangent(const TslElementInput *in, const TslEle
  *   only through the pressure equation. Nearly incompressible material does not lock: the volumetric
  *   constraint is imposed on the pressure space only (one term per linear element, 1 + dim per
  *   quadratic one). If res is given, stresses, strains and the strain energy are averaged into it. */
-static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], Hybrid *hy, TslElementResult *res)
+static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], Hybrid *hy, TslElementResult *res,
+                           PetscReal *energy)
 {
   const TslElementType *t    = in->type;
   const TslGeometry    *g    = t->geom;
@@ -286,10 +287,11 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   const PetscBool       hybrid      = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
   PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
   const PetscBool       lean        = !K && !res && !hybrid && LeanStrain(in); /* forces only: no B, no tangent terms */
+  PetscReal            *se          = res ? &res->strain_energy : energy; /* int 1/2 sigma : eps_mech dV, when wanted */
   MechPoint             mq;
   PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 
-  if (K && !res && !hybrid && LeanStrain(in)) return MechanicsSolid3DTangent(in, full, R, K);
+  if (K && !se && !hybrid && LeanStrain(in)) return MechanicsSolid3DTangent(in, full, R, K);
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
   if (K) PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(Kuu, ncol * ncol));
   for (PetscInt q = 0; q < quad->n; q++) {
@@ -335,6 +337,8 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         SolidBtS(mq.p->dNdx[a], sig, mq.p->dV, f);
         for (PetscInt i = 0; i < 3; i++) R[4 * a + i] += f[i];
       }
+      if (se)
+        for (PetscInt r = 0; r < 6; r++) *se += 0.5 * sig[r] * emech[r] * mq.p->dV;
       continue;
     }
     for (PetscInt r = 0; r < 6; r++) {
@@ -359,10 +363,12 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         else
           res->S[r] += sig[r] / quad->n;
       }
+    }
+    if (se) {
       if (!hybrid)
-        for (PetscInt r = 0; r < 6; r++) res->strain_energy += 0.5 * sig[r] * emech[r] * mq.p->dV;
+        for (PetscInt r = 0; r < 6; r++) *se += 0.5 * sig[r] * emech[r] * mq.p->dV;
       else
-        for (PetscInt r = 0; r < 6; r++) res->strain_energy += 0.5 * sig[r] * mq.eps[r] * mq.p->dV;
+        for (PetscInt r = 0; r < 6; r++) *se += 0.5 * sig[r] * mq.eps[r] * mq.p->dV;
     }
     if (!K) continue;
     /* DB = D B dV (rows of D skip its zeros; contiguous in the columns), then the upper triangle of
@@ -410,13 +416,15 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
       for (PetscInt i = 0; i < nu; i++)
         for (PetscInt k = 0; k < np; k++) R[ndof * a + i] += hy->G[nu * a + i][k] * hy->p[k];
     if (res) {
-      PetscReal pm = 0, vol_energy = 0;
+      PetscReal pm = 0;
       for (PetscInt k = 0; k < np; k++) pm += hy->p[k] * P_avg[k];
       for (PetscInt r = 0; r < 6; r++) res->S[r] = sdev_avg[r] + VoigtM[r] * pm; /* point averages, as for the other formulations */
-      /* volumetric energy: 1/2 p_hat^T H p_hat */
+    }
+    if (se) {
+      PetscReal vol_energy = 0; /* volumetric energy: 1/2 p_hat^T H p_hat */
       for (PetscInt k = 0; k < np; k++)
         for (PetscInt l = 0; l < np; l++) vol_energy += 0.5 * hy->p[k] * hy->H[k][l] * hy->p[l];
-      res->strain_energy += vol_energy;
+      *se += vol_energy;
     }
     if (K) {
       PetscReal GHi[TSL_MAX_ELEM_NODES * 3][TSL_MAX_PRESSURE];
@@ -480,6 +488,13 @@ PetscBool TslElementValid(const TslElementInput *in)
 
 PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted)
 {
+  PetscFunctionBeginUser;
+  PetscCall(TslElementInternalEnergy(in, R, K, inverted, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted, PetscReal energy[2])
+{
   const PetscInt  nd = TslElementTypeNodes(in->type) * in->type->ndof;
   Hybrid          hy;
   PetscReal       ehg;
@@ -487,6 +502,7 @@ PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], Pets
 
   PetscFunctionBeginUser;
   *inverted = PETSC_FALSE;
+  if (energy) energy[0] = energy[1] = 0;
   PetscCall(PetscArrayzero(R, nd));
   if (K) PetscCall(PetscArrayzero(K, nd * nd));
   if (!FullPoints(in, full)) {
@@ -494,11 +510,12 @@ PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], Pets
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   Conduction(in, full, R, K);
-  if (!Mechanics(in, full, R, K, &hy, NULL)) {
+  if (!Mechanics(in, full, R, K, &hy, NULL, energy)) {
     *inverted = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(Hourglass(in, R, K, &ehg));
+  if (energy) energy[1] = ehg;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -673,7 +690,7 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(res, sizeof(*res)));
   for (PetscInt i = 0; i < TslElementTypeNodes(t) * ndof; i++) R[i] = 0;
-  PetscCheck(Mechanics(in, NULL, R, NULL, &hy, res), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
+  PetscCheck(Mechanics(in, NULL, R, NULL, &hy, res, NULL), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
   if (TslKinematicsRowGet(t->kin)->free_normal) {
     const TslQuadrature *quad = t->form->quadrature(g);
     res->E[2]                 = 0;

@@ -177,7 +177,7 @@ PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, Pet
 
 /* Capacity term of the time discretisation chosen by the solver: R_theta(a) += shift (Q_a - Q_old_a),
  * K += shift C_a (backward Euler: shift = 1/dt; steady state: 0, skipped). */
-static PetscErrorCode AddCapacity(TslProblem p, const TslElemData *d, PetscReal R[], PetscReal K[])
+static PetscErrorCode AddCapacity(TslProblem p, const TslElemData *d, PetscReal R[], PetscReal K[], AsmHeat *heat)
 {
   PetscReal Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES];
   PetscInt  th = p->ndof - 1;
@@ -192,6 +192,7 @@ static PetscErrorCode AddCapacity(TslProblem p, const TslElemData *d, PetscReal 
     const PetscInt row = p->ndof * a + th;
     R[row] += p->shift * (Q[a] - Qo[a]);
     if (K) K[row * d->nd + row] += p->shift * C[a];
+    if (heat) heat->stored += Q[a] - Qo[a];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -246,12 +247,16 @@ static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, 
     PetscCall(TslProblemInsert(p, c->mode, c->A, c->f, d->nd, d->ld, NULL, NULL));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(TslElementInternal(&d->in, R, K, &inverted));
+  if (c->heat) { /* the heat balance's pass: the history's energies come with it */
+    PetscReal energy[2];
+    PetscCall(TslElementInternalEnergy(&d->in, R, K, &inverted, energy));
+    c->heat->energy[0] += energy[0], c->heat->energy[1] += energy[1];
+  } else PetscCall(TslElementInternal(&d->in, R, K, &inverted));
   if (inverted) {
     if (*c->bad_elem < 0) *c->bad_elem = e;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(AddCapacity(p, d, R, K));
+  PetscCall(AddCapacity(p, d, R, K, c->heat));
   PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
     const TslFaceRecord *r = &p->face[i];
@@ -801,25 +806,16 @@ PetscErrorCode TslProblemPreallocateIfChanged(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Heat stored over the increment by one element: sum_a Q(theta_a) - Q(theta_old_a), the same lumped
- * content as in the residual, so that heat in - heat out - stored closes to solver tolerance. */
-static PetscErrorCode StoredHeat(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
-{
-  PetscReal *sum = (PetscReal *)ctx, Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES];
-
-  PetscFunctionBeginUser;
-  (void)p, (void)e, (void)stop;
-  PetscCall(TslElementLumped(&d->in, Q, NULL, NULL));
-  PetscCall(TslElementLumped(&d->in_old, Qo, NULL, NULL));
-  for (PetscInt a = 0; a < d->in.type->geom->nnode; a++) *sum += Q[a] - Qo[a]; /* not the reference node (AddCapacity) */
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
+/* The totals of the solved state from one raw residual pass (every element row, prescribed ones too): the
+ * reactions at prescribed temperatures, the face, nodal and contact heat, the heat stored over the increment,
+ * sum_a Q(theta_a) - Q(theta_old_a) (the residual's own lumped content, so that heat in - heat out - stored
+ * closes to solver tolerance), and the elements' strain and hourglass energies (TslElementInternalEnergy:
+ * an implicit increment's history row costs one element pass, not three). */
 PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
 {
   AsmHeat            heat;
   const PetscScalar *r;
-  PetscReal          loc[7] = {0, 0, 0, 0, 0, 0, 0}, g[7];
+  PetscReal          loc[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, g[9];
   TslFailure         fail;
 
   PetscFunctionBeginUser;
@@ -837,15 +833,10 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
   loc[4] = heat.interface;
   loc[5] = heat.dissipation;
   loc[6] = heat.friction_heat;
-  if (p->shift != 0) {
-    Vec                xl, xol;
-    const PetscScalar *xa, *xoa;
-    PetscCall(GetStates(p, p->X, &xl, &xol, &xa, &xoa));
-    PetscCall(TslProblemElementLoop(p, xa, xoa, StoredHeat, &loc[3]));
-    PetscCall(RestoreStates(p, &xl, &xol, &xa, &xoa));
-    loc[3] *= p->shift;
-  }
-  PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_SUM, p->comm));
+  loc[3] = heat.stored * p->shift;
+  loc[7] = heat.energy[0];
+  loc[8] = heat.energy[1];
+  PetscCall(MPIU_Allreduce(loc, g, 9, MPIU_REAL, MPIU_SUM, p->comm));
   hb->heat_in        = g[0];
   hb->film_out       = g[1];
   hb->reaction_heat  = g[2];
@@ -854,5 +845,7 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
   hb->dissipation    = g[5];
   hb->friction_heat  = g[6];
   hb->balance        = g[0] + g[2] + g[6] - g[1] - g[3];
+  hb->strain_energy    = g[7];
+  hb->hourglass_energy = g[8];
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -192,6 +192,8 @@ typedef struct {
   PetscReal interface;     /* heat conducted and radiated across contact interfaces (main -> secondary) */
   PetscReal dissipation;   /* frictional dissipation rate */
   PetscReal friction_heat; /* part of it converted to heat (eta) */
+  PetscReal stored;        /* sum of the lumped heat contents' change over the increment (Q - Q_old) */
+  PetscReal energy[2];     /* the elements' strain and hourglass energies (TslElementInternalEnergy) */
 } AsmHeat;
 
 /* Local form (owned + ghosts) of the current solution, ghosts updated; restore when done. */
