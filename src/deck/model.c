@@ -196,7 +196,8 @@ PetscErrorCode TslModelIndex(TslModel *model)
 static PetscInt IndexLookup(PetscInt n, const PetscInt *sid, const PetscInt *pos, PetscInt nidx, const PetscInt *ids, PetscInt id)
 {
   if (sid && nidx == n) {
-    PetscInt lo = 0, hi = n - 1;
+    PetscInt lo = 0, hi = n - 1, k = n > 0 ? id - sid[0] : -1;
+    if (k >= 0 && k < n && sid[k] == id) return pos[k]; /* ids numbered without gaps from the first (most decks): no search */
     while (lo <= hi) {
       PetscInt mid = lo + (hi - lo) / 2;
       if (sid[mid] == id) return pos[mid];
