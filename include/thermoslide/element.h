@@ -173,9 +173,11 @@ static inline PetscInt TslElementTypeNodes(const TslElementType *t)
 /* Bulk viscosity of explicit steps: nodal forces of the pressure (lambda + 2 mu) (eta1 eps_vol_dot - eta2
  * eps_vol_dot^2), the quadratic term only when eps_vol_dot < 0 (compression), at the element centre
  * (eps_vol_dot from the nodal velocities v[], laid out as in->u) added to R; *power is the rate it dissipates
- * (>= 0). eta1 = b1 L_e / c_d, eta2 = (b2 L_e / c_d)^2, i.e. Abaqus's b1 rho c_d L_e and rho (b2 L_e)^2 (kernels.c). */
+ * (>= 0). eta1 = b1 L_e / c_d, eta2 = (b2 L_e / c_d)^2, i.e. Abaqus's b1 rho c_d L_e and rho (b2 L_e)^2 (kernels.c).
+ * qr (NULL: not wanted) gets the pressure times the centre's volume, q = p V, and eps_vol_dot (power = q eps_vol_dot):
+ * the explicit loop books the viscous work per element from them (docs/explicit.md "Bulk viscosity"). */
 PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta1, PetscReal eta2, PetscReal R[],
-                                       PetscReal *power);
+                                       PetscReal *power, PetscReal qr[2]);
 
 /* Explicit force records (fast.c). In a small-strain analysis with temperature-independent properties the
  * geometry of an element never changes and its conduction is linear, so the explicit force loop need not
@@ -227,10 +229,11 @@ void TslElementFastEnergy(const TslElementFastShape *shape, const PetscReal rec[
 /* The same for a batch of TSL_FAST_LANES elements of one type at once (what the explicit loop calls): every
  * array interleaved by lane, value k of lane j at [k * TSL_FAST_LANES + j] (records, u, ti, v, R, Rv),
  * eta[], eta2[], power[], strain[], hourglass[] one per lane. v and Rv are NULL together (no bulk
- * viscosity: power 0); otherwise a lane with eta = eta2 = 0 gets zero forces and power.
+ * viscosity: power 0); otherwise a lane with eta = eta2 = 0 gets zero forces and power. qr (NULL: not
+ * wanted; 2 per lane) gets each lane's q = p V in qr[j] and eps_vol_dot in qr[W + j], as TslElementBulkViscosity's.
  * TslElementFastInterleave stores a record (or any array of size reals) as lane `lane` of a batch. */
 void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
-                              const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[], PetscReal power[]);
+                              const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[], PetscReal power[], PetscReal qr[]);
 void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal strain[],
                                PetscReal hourglass[]);
 void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[], PetscReal batch[]);

@@ -135,18 +135,20 @@ typedef struct {
   PetscReal interface_heat; /* heat crossing contact interfaces (main -> secondary) */
   PetscReal dissipation;    /* frictional dissipation */
   PetscReal friction_heat;  /* part of it converted to heat */
-  PetscReal viscous;        /* rate dissipated by the bulk viscosity, linear and quadratic (0 without Fv) */
+  PetscReal viscous;        /* rate dissipated by the bulk viscosity, sum of q eps_vol_dot (0 without viscosity) */
+  PetscReal viscous_prev;   /* the previous evaluation's q times this one's eps_vol_dot (its work's second half) */
 } TslExplicitRates;
 
 /* Unconstrained nodal vectors at the current solution and time, ghost contributions summed (collective):
  *   Fi  element internal forces, and every heat row (internal flow, fluxes, films) in residual form;
  *   Fe  applied mechanical loads (CLOAD, DLOAD) as forces;
  *   Fc  contact forces and contact heat in residual form (may be NULL when the model has no pairs);
- *   Fv  bulk viscosity forces (TslElementBulkViscosity with eta[e], eta2[e] per local element: the linear and
- *       the quadratic coefficient, both 0 skips it) of the velocities V (may be NULL: no bulk viscosity; V, eta
- *       and eta2 are then not read), computed in the same element pass as Fi.
- * The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets M a = Fe - Fi - Fc - Fv. */
-PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], Vec Fv,
+ * Fi also holds the bulk viscosity forces (TslElementBulkViscosity with eta[e], eta2[e] per local element: the
+ * linear and the quadratic coefficient, both 0 skips it) of the velocities V, computed in the same element pass;
+ * q[e] (NULL: no bulk viscosity; V, eta and eta2 are then not read) is each element's q = p V, read as the
+ * previous evaluation's (for rates->viscous_prev) and overwritten with this one's (zero it to start).
+ * The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets M a = Fe - Fi - Fc. */
+PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], PetscReal q[],
                                         TslExplicitRates *rates);
 /* The initial velocities of the deck (*INITIAL CONDITIONS, TYPE=VELOCITY) at the owned dofs into V (zeroed
  * first; the temperature slots stay zero), for the first explicit step after TslProblemSetStep: a dof held by

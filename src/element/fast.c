@@ -84,7 +84,7 @@ static inline __attribute__((always_inline)) void Gradients(const PetscInt dim, 
 static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
                                                         const PetscBool axi, const PetscBool ps, const PetscBool sf0, const TslElementFastShape *shape, const PetscReal *rec,
                                                         const PetscReal *u, const PetscReal *ti, const PetscReal *v, const PetscReal *eta,
-                                                        const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)
+                                                        const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *qr, PetscReal *energy)
 {
   const PetscInt nd     = dim + 1;
   const Layout   L      = LayoutOf(dim, n, nq, nh, axi);
@@ -245,15 +245,16 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       St(Rv + (nd * a + dim) * W, (V){0});
     }
     St(power, p * rate * Vc);
+    if (qr) St(qr, p * Vc), St(qr + W, rate);
   }
 }
 
 /* One function per row, cloned for x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
 #define FORCE_ROW(name, dim, n, nq, nh, axi, ps, sf)                                                                                                 \
   TSL_CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,          \
-                          const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *energy)             \
+                          const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *qr, PetscReal *energy) \
   {                                                                                                                                                  \
-    Force(dim, n, nq, nh, axi, ps, sf, sh, rec, u, ti, v, eta, eta2, R, Rv, power, energy);                                                              \
+    Force(dim, n, nq, nh, axi, ps, sf, sh, rec, u, ti, v, eta, eta2, R, Rv, power, qr, energy);                                                          \
   }
 FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
 FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
@@ -276,7 +277,7 @@ FORCE_ROW(Tri3FullPs, 2, 3, 1, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
 FORCE_ROW(Tri6FullPs, 2, 6, 3, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
 
 typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *,
-                        const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
+                        const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
 
 /* The rows: which (family, formulation, kinematics) have a record, and its sizes. */
 typedef struct {
@@ -492,11 +493,14 @@ void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[
 }
 
 void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
-                              const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[], PetscReal power[])
+                              const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[], PetscReal power[], PetscReal qr[])
 {
   if (!Rv)
-    for (PetscInt j = 0; j < W; j++) power[j] = 0;
-  Rows[shape->row].force(shape, rec, u, ti, v, eta, eta2, R, Rv, power, NULL);
+    for (PetscInt j = 0; j < W; j++) {
+      power[j] = 0;
+      if (qr) qr[j] = qr[W + j] = 0;
+    }
+  Rows[shape->row].force(shape, rec, u, ti, v, eta, eta2, R, Rv, power, qr, NULL);
 }
 
 void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal strain[],
@@ -504,7 +508,7 @@ void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal
 {
   PetscReal R[TSL_MAX_ELEM_DOF * W], energy[2 * W];
 
-  Rows[shape->row].force(shape, rec, u, ti, NULL, NULL, NULL, R, NULL, NULL, energy);
+  Rows[shape->row].force(shape, rec, u, ti, NULL, NULL, NULL, R, NULL, NULL, NULL, energy);
   for (PetscInt j = 0; j < W; j++) strain[j] = energy[j], hourglass[j] = energy[W + j];
 }
 
@@ -540,7 +544,7 @@ void TslElementFastForce(const TslElementFastShape *shape, const PetscReal rec[]
 
   for (PetscInt j = 0; j < W; j++) e1[j] = eta, e2[j] = eta2;
   SingleFill(shape, rec, u, ti, bv ? v : NULL, &s);
-  TslElementFastForceBatch(shape, s.rec, s.u, s.ti, bv ? s.v : NULL, e1, e2, s.R, bv ? s.Rv : NULL, w);
+  TslElementFastForceBatch(shape, s.rec, s.u, s.ti, bv ? s.v : NULL, e1, e2, s.R, bv ? s.Rv : NULL, w, NULL);
   for (PetscInt i = 0; i < nd; i++) {
     R[i] = s.R[i * W];
     if (bv) Rv[i] = s.Rv[i * W];

@@ -724,7 +724,7 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res
  * Its nodal forces p int B_vol dV (one point: the centre) are added to R, and *power = p eps_vol_dot V
  * = M (eta1 eps^2 + eta2 |eps|^3 [compression]) V >= 0 is what it dissipates. */
 PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta1, PetscReal eta2, PetscReal R[],
-                                       PetscReal *power)
+                                       PetscReal *power, PetscReal qr[2])
 {
   const TslElementType *t = in->type;
   const TslGeometry    *g = t->geom;
@@ -750,5 +750,6 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
     for (PetscInt i = 0; i < nu; i++)
       for (PetscInt r = 0; r < 3; r++) R[ndof * a + i] += p * B[r][nu * a + i] * pt.dV;
   *power = p * rate * pt.dV;
+  if (qr) qr[0] = p * pt.dV, qr[1] = rate;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

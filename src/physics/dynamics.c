@@ -14,10 +14,11 @@ PetscErrorCode TslProblemSetMatrixFree(TslProblem p, PetscBool matrix_free)
 }
 
 typedef struct {
-  PetscScalar       *fi, *fe, *fv; /* fv: bulk viscosity forces (NULL: none) */
-  const PetscScalar *v;            /* local form of the half-step velocity (with fv) */
-  const PetscReal   *eta, *eta2;   /* [nelem] b1 L_e / c_d and (b2 L_e / c_d)^2 (with fv) */
-  PetscReal          power;        /* rate dissipated by the bulk viscosity, this rank */
+  PetscScalar       *fi, *fe;
+  const PetscScalar *v;           /* local form of the half-step velocity (NULL: no bulk viscosity) */
+  const PetscReal   *eta, *eta2;  /* [nelem] b1 L_e / c_d and (b2 L_e / c_d)^2 (with v) */
+  PetscReal         *q;           /* [nelem] q = p V of each element's viscosity: the last pass's in, this pass's out (with v) */
+  PetscReal          power, prev; /* this rank's sum of q eps_vol_dot, and of the last pass's q times this pass's eps_vol_dot */
   AsmHeat           *heat;
   PetscInt           bad;
 } ForceCtx;
@@ -50,8 +51,8 @@ static PetscErrorCode FaceLoads(TslProblem p, PetscInt e, TslElemData *d, ForceC
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* One element's internal forces and heat flow into fi, its bulk viscosity forces into fv (in the same pass
- * over the elements: one gather of the element's data per increment), by the generic kernels. */
+/* One element's internal forces and heat flow, and its bulk viscosity forces added to them, into fi (one
+ * gather of the element's data per increment and one scatter), by the generic kernels. */
 static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, PetscBool *stop)
 {
   PetscReal R[TSL_MAX_ELEM_DOF];
@@ -64,14 +65,13 @@ static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, Pets
     *stop  = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  for (PetscInt r = 0; r < d->nd; r++) c->fi[d->ld[r]] += R[r];
-  if (c->fv && (c->eta[e] > 0 || c->eta2[e] > 0)) {
-    PetscReal v[TSL_MAX_ELEM_DOF], w;
-    for (PetscInt r = 0; r < d->nd; r++) v[r] = PetscRealPart(c->v[d->ld[r]]), R[r] = 0;
-    PetscCall(TslElementBulkViscosity(&d->in, v, c->eta[e], c->eta2[e], R, &w));
-    for (PetscInt r = 0; r < d->nd; r++) c->fv[d->ld[r]] += R[r];
-    c->power += w;
+  if (c->v && (c->eta[e] > 0 || c->eta2[e] > 0)) {
+    PetscReal v[TSL_MAX_ELEM_DOF], w, qr[2];
+    for (PetscInt r = 0; r < d->nd; r++) v[r] = PetscRealPart(c->v[d->ld[r]]);
+    PetscCall(TslElementBulkViscosity(&d->in, v, c->eta[e], c->eta2[e], R, &w, qr)); /* added to R */
+    c->power += w, c->prev += c->q[e] * qr[1], c->q[e] = qr[0];
   }
+  for (PetscInt r = 0; r < d->nd; r++) c->fi[d->ld[r]] += R[r];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -164,7 +164,7 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
 {
   const TslElementFastShape *sh;
   PetscReal u[TSL_MAX_ELEM_DOF * W], v[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], R[TSL_MAX_ELEM_DOF * W], Rv[TSL_MAX_ELEM_DOF * W], eta[W],
-    eta2[W], w[W];
+    eta2[W], w[W], qr[2 * W];
   PetscInt  e[W];
   PetscBool used[W], visc[W], bv = PETSC_FALSE;
 
@@ -172,7 +172,7 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
   sh = &p->fast_shape[p->m->elem_type[e[0]]];
   GatherBatch(p, e, xa, u, ti, nd);
   for (PetscInt j = 0; j < W; j++) {
-    eta[j] = c->fv ? c->eta[e[j]] : 0, eta2[j] = c->fv ? c->eta2[e[j]] : 0;
+    eta[j] = c->v ? c->eta[e[j]] : 0, eta2[j] = c->v ? c->eta2[e[j]] : 0;
     visc[j] = used[j] && (eta[j] > 0 || eta2[j] > 0) ? PETSC_TRUE : PETSC_FALSE;
     if (visc[j]) bv = PETSC_TRUE;
   }
@@ -189,13 +189,14 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
       }
     }
   }
-  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, bv ? v : NULL, eta, eta2, R, bv ? Rv : NULL, w);
-  ScatterBatch(p, e, used, R, c->fi, nd);
-  if (bv) {
-    ScatterBatch(p, e, visc, Rv, c->fv, nd);
+  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, bv ? v : NULL, eta, eta2, R, bv ? Rv : NULL, w, bv ? qr : NULL);
+  if (bv) { /* the viscous forces into the internal ones (zero in lanes without viscosity): one scatter */
+    const PetscInt nr = nd * (p->m->elem_ptr[e[0] + 1] - p->m->elem_ptr[e[0]]) * W;
+    for (PetscInt k = 0; k < nr; k++) R[k] += Rv[k];
     for (PetscInt j = 0; j < W; j++)
-      if (visc[j]) c->power += w[j];
+      if (visc[j]) c->power += w[j], c->prev += c->q[e[j]] * qr[W + j], c->q[e[j]] = qr[j];
   }
+  ScatterBatch(p, e, used, R, c->fi, nd);
 }
 TSL_CLONES static void FastBatch3(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c) { FastBatchNd(p, b, xa, c, 3); }
 TSL_CLONES static void FastBatch4(TslProblem p, PetscInt b, const PetscScalar *xa, ForceCtx *c) { FastBatchNd(p, b, xa, c, 4); }
@@ -328,21 +329,21 @@ static PetscErrorCode InjectedInternal(void)
   SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "injected internal failure (-tsl_debug_fail_kind)");
 }
 
-PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], Vec Fv,
+PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], PetscReal q[],
                                         TslExplicitRates *rates)
 {
-  Vec                xl, il, el, cl = NULL, vl = NULL, fl = NULL;
+  Vec                xl, il, el, cl = NULL, vl = NULL;
   const PetscScalar *xa;
   PetscScalar       *fc;
   AsmHeat            heat;
-  ForceCtx           c = {NULL, NULL, NULL, NULL, eta, eta2, 0, &heat, -1};
-  PetscReal          loc[6], g[6];
+  ForceCtx           c = {NULL, NULL, NULL, eta, eta2, q, 0, 0, &heat, -1};
+  PetscReal          loc[7], g[7];
   TslFailure         fail;
   PetscErrorCode     ierr;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&heat, sizeof(heat)));
-  if (Fv) {
+  if (q) {
     PetscCall(TslGhostUpdate(V, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecGhostGetLocalForm(V, &vl));
     PetscCall(VecGetArrayRead(vl, &c.v));
@@ -353,7 +354,6 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(VecGetArrayRead(xl, &xa));
   PetscCall(BeginLocal(Fi, &il, &c.fi));
   PetscCall(BeginLocal(Fe, &el, &c.fe));
-  PetscCall(BeginLocal(Fv, &fl, &c.fv));
   PetscCall(BeginLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
   PetscCall(ForcePass(p, xa, &c));
   /* a contact projection that fails has no cutback to fall back on here: an error on all ranks (as is a
@@ -373,21 +373,21 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
       c.fe[dof] += v;
   }
   PetscCall(EndLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
-  PetscCall(EndLocal(Fv, &fl, &c.fv));
   PetscCall(EndLocal(Fe, &el, &c.fe));
   PetscCall(EndLocal(Fi, &il, &c.fi));
   PetscCall(VecRestoreArrayRead(xl, &xa));
   PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
-  if (Fv) {
+  if (q) {
     PetscCall(VecRestoreArrayRead(vl, &c.v));
     PetscCall(VecGhostRestoreLocalForm(V, &vl));
   }
   PetscCall(TslProblemCheckBadElement(p, c.bad));
   if (Fc && !p->ncsurf) PetscCall(VecZeroEntries(Fc));
   loc[0] = heat.flux_in, loc[1] = -heat.film, loc[2] = heat.interface, loc[3] = heat.dissipation, loc[4] = heat.friction_heat, loc[5] = c.power;
-  PetscCall(MPIU_Allreduce(loc, g, 6, MPIU_REAL, MPIU_SUM, p->comm));
+  loc[6] = c.prev;
+  PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_SUM, p->comm));
   rates->heat_in = g[0], rates->film_out = g[1], rates->interface_heat = g[2], rates->dissipation = g[3], rates->friction_heat = g[4];
-  rates->viscous = g[5];
+  rates->viscous = g[5], rates->viscous_prev = g[6];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

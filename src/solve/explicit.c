@@ -28,7 +28,9 @@ typedef struct {
   PetscInt        ndof, nown;
   Vec             X, Xold;         /* the problem's solution and the state at the start of the increment */
   Vec             V, M, Mask;      /* half-step velocity, lumped mass / capacity, prescribed dofs */
-  Vec             Fi, Fe, Fc, Fv;  /* force vectors of the current state (Fc NULL without contact, Fv without bulk viscosity) */
+  Vec             Fi, Fe, Fc;      /* force vectors of the current state (Fi with the bulk viscosity's forces; Fc NULL without contact) */
+  PetscReal      *qv, vd_h;        /* bulk viscosity: q = p V per element (NULL: none); h_avg of the last increment, whose
+                                      viscous work's second half the next force evaluation books */
   Vec             Fk;              /* kinematic contact: the corrector's forces at the predicted state (NULL without) */
   Vec             W;               /* contact: a work vector (the corrector's, the interface's row sums for the stable increment; NULL without) */
   PetscInt        kin_passes, kin_total; /* -tsl_explicit_kinematic_passes (most corrector passes per increment); passes made in the step */
@@ -267,8 +269,15 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
   PetscFunctionBeginUser;
   PetscCall(TslPhaseBegin(TSL_PHASE_ASSEMBLY));
   /* bulk viscosity of the velocity v_{n-1/2} (the latest one: central differences have no v_n), in the
-   * same element pass */
-  PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->V, x->eta, x->eta2, x->Fv, &x->rates));
+   * same element pass, its forces in Fi. The viscous work over the last increment, q (eps_n + eps_{n+1}) / 2
+   * h_avg per element, is booked in two halves: q_n eps_n by Advance, q_n eps_{n+1} here, at the next
+   * evaluation (ALLVD; ALLIE is the internal forces' work less it) */
+  PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->V, x->eta, x->eta2, x->qv, &x->rates));
+  if (x->qv) {
+    Energies       *en = (Energies *)x->d->energy;
+    const PetscReal w  = 0.5 * x->vd_h * x->rates.viscous_prev;
+    en->vd += w, en->ie -= w;
+  }
   x->dt_forces = dt;
   if (x->m->npair) {
     PetscCall(TslProblemContactExplicitIncrement(x->p, (PetscBool)(inc % x->search_every == 0), &nrepair));
@@ -279,7 +288,7 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
 }
 
 /* Kinematic contact (src/physics/contact_kinematic.c): the predictor moves the free displacement dofs to
- *   u* = u_n + h (v_{n-1/2} + h_avg a*),   M a* = Fe - Fi - Fc - Fv   (without the kinematic pairs),
+ *   u* = u_n + h (v_{n-1/2} + h_avg a*),   M a* = Fe - Fi - Fc   (without the kinematic pairs),
  * prescribed dofs to t_{n+1}, temperatures kept at theta_n; the kinematic pairs are evaluated there into Fk
  * (each node with the stiffness that closes its gap in this increment), and X is restored: Advance's update
  * then includes Fk like any other force (a_n = a* - M^-1 Fk), so the corrected gaps close and the energy
@@ -288,7 +297,7 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
 {
   PetscInt           passes;
   PetscScalar       *u;
-  const PetscScalar *v, *m, *mask, *fi, *fe, *fc = NULL, *fv = NULL;
+  const PetscScalar *v, *m, *mask, *fi, *fe, *fc = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
 
   PetscFunctionBeginUser;
@@ -300,12 +309,10 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
   PetscCall(VecGetArrayRead(x->Fi, &fi));
   PetscCall(VecGetArrayRead(x->Fe, &fe));
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
-  if (x->Fv) PetscCall(VecGetArrayRead(x->Fv, &fv));
   for (PetscInt i0 = 0; i0 < n; i0 += x->ndof) /* node by node: no division to tell a temperature dof */
     for (PetscInt i = i0; i < i0 + th; i++)
-      if (mask[i] == 0) u[i] += h * (v[i] + h_avg * (fe[i] - fi[i] - (fc ? fc[i] : 0) - (fv ? fv[i] : 0)) / m[i]);
+      if (mask[i] == 0) u[i] += h * (v[i] + h_avg * (fe[i] - fi[i] - (fc ? fc[i] : 0)) / m[i]);
   if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
-  if (x->Fv) PetscCall(VecRestoreArrayRead(x->Fv, &fv));
   PetscCall(VecRestoreArrayRead(x->Fe, &fe));
   PetscCall(VecRestoreArrayRead(x->Fi, &fi));
   PetscCall(VecRestoreArrayRead(x->Mask, &mask));
@@ -346,10 +353,10 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
 static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal h_prev, PetscReal t_new, PetscReal total_new)
 {
   PetscScalar       *u, *v;
-  const PetscScalar *uo, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL, *fv = NULL;
+  const PetscScalar *uo, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
   const PetscReal    h_avg = h_prev > 0 ? 0.5 * (h + h_prev) : 0.5 * h; /* from rest at the start: v_{1/2} = dt/2 a_0 */
-  PetscReal          loc[8] = {0, 0, 0, 0, 0, 0, 0, 0}, g[8];
+  PetscReal          loc[7] = {0, 0, 0, 0, 0, 0, 0}, g[7];
 
   PetscFunctionBeginUser;
   PetscCall(VecCopy(x->X, x->Xold));
@@ -362,9 +369,8 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArrayRead(x->Fe, &fe));
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
   if (x->Fk) PetscCall(VecGetArrayRead(x->Fk, &fk));
-  if (x->Fv) PetscCall(VecGetArrayRead(x->Fv, &fv));
   for (PetscInt i = 0, c = 0; i < n; i++, c = c == th ? 0 : c + 1) { /* free dofs: the update and the forces' work; c: i's slot */
-    PetscReal fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon - (fv ? fv[i] : 0), vo = v[i], w;
+    PetscReal fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon, vo = v[i], w;
     if (mask[i] != 0) continue;
     if (c == th) {
       u[i] += h * f / m[i];
@@ -376,7 +382,6 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     loc[0] += fi[i] * w;
     loc[1] += fe[i] * w;
     loc[2] += fcon * w;
-    loc[7] += (fv ? fv[i] : 0) * w;
   }
   PetscCall(VecRestoreArray(x->X, &u));
   /* prescribed values at t_{n+1} */
@@ -391,7 +396,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
       loc[6] += rate;
     }
     if (mask[i] == 0) continue; /* the forces are read only at prescribed dofs: most of their cache lines are not touched */
-    fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon - (fv ? fv[i] : 0), vo = v[i];
+    fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon, vo = v[i];
     if (c == th) {
       loc[5] += rate - f; /* heat the prescribed temperature brings in */
       continue;
@@ -402,31 +407,32 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     loc[0] += fi[i] * w;
     loc[1] += (fe[i] + s) * w;
     loc[2] += fcon * w;
-    loc[7] += (fv ? fv[i] : 0) * w;
   }
   PetscCall(VecRestoreArrayRead(x->Xold, &uo));
   PetscCall(VecRestoreArray(x->X, &u));
   if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
   if (x->Fk) PetscCall(VecRestoreArrayRead(x->Fk, &fk));
-  if (x->Fv) PetscCall(VecRestoreArrayRead(x->Fv, &fv));
   PetscCall(VecRestoreArrayRead(x->Fe, &fe));
   PetscCall(VecRestoreArrayRead(x->Fi, &fi));
   PetscCall(VecRestoreArrayRead(x->Mask, &mask));
   PetscCall(VecRestoreArrayRead(x->M, &m));
   PetscCall(VecRestoreArray(x->V, &v));
   PetscCall(TslGhostUpdate(x->X, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(MPIU_Allreduce(loc, g, 8, MPIU_REAL, MPIU_SUM, x->comm));
+  PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_SUM, x->comm));
   /* a run that has left the stable range (a DIRECT USER CONTROL increment above the stable one, a contact
    * spring or quadratic viscosity the estimate did not see) grows until it overflows: every rank sees the same
    * sums, so all stop here together, before a frame of the state is written; the frames so far are kept */
-  for (PetscInt k = 0; k < 8; k++)
+  for (PetscInt k = 0; k < 7; k++)
     PetscCheck(!PetscIsInfOrNanReal(g[k]), x->comm, PETSC_ERR_NOT_CONVERGED,
                "explicit step %s: the solution is no longer finite at step time %g (increment %g against the stable %g): the increment exceeds what the "
                "model can take; lower -tsl_explicit_safety or the step's SCALE FACTOR, or the DIRECT USER CONTROL increment. The frames written before "
                "are kept",
                x->step->name, (double)t_new, (double)h, (double)x->dt_stable);
-  en->ie += g[0];
-  en->vd += g[7];
+  /* g[0] is the work of Fi, the bulk viscosity's forces included: the first half of their work over this
+   * increment, q_n eps_n h_avg / 2 per element, is ALLVD's now, the second half at the next evaluation (Forces) */
+  x->vd_h = h_avg;
+  en->ie += g[0] - 0.5 * h_avg * x->rates.viscous;
+  en->vd += 0.5 * h_avg * x->rates.viscous;
   en->wk += g[1];
   en->cw += g[2];
   /* the forces of state n measured the slip over the increment that ended there (dt_forces): its
@@ -527,7 +533,7 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fi));
   PetscCall(VecDestroy(&x->Fe));
   PetscCall(VecDestroy(&x->Fc));
-  PetscCall(VecDestroy(&x->Fv));
+  PetscCall(PetscFree(x->qv));
   PetscCall(VecDestroy(&x->Fk));
   PetscCall(VecDestroy(&x->W));
   PetscCall(PetscFree5(x->dt_mech, x->dt_heat, x->scale, x->eta, x->eta2));
@@ -598,7 +604,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscCall(VecZeroEntries(x.Fk));
     }
   }
-  if (x.step->bv_linear > 0 || x.step->bv_quadratic > 0) PetscCall(VecDuplicate(x.X, &x.Fv));
+  if (x.step->bv_linear > 0 || x.step->bv_quadratic > 0) PetscCall(PetscCalloc1(x.m->nelem, &x.qv)); /* q of no earlier evaluation: 0 */
   PetscCall(PetscMalloc5(x.m->nelem, &x.dt_mech, x.m->nelem, &x.dt_heat, x.m->nelem, &x.scale, x.m->nelem, &x.eta, x.m->nelem, &x.eta2));
   for (PetscInt i = 0; i < x.m->nmaterial; i++)
     if (TslMaterialIsTemperatureDependent(&x.m->materials[i])) x.capacity_varies = PETSC_TRUE;

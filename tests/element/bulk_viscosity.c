@@ -92,7 +92,7 @@ static PetscErrorCode Viscosity(Case *c, const PetscReal v[], PetscReal eta1, Pe
 {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < TslElementTypeNodes(c->type) * c->type->ndof; i++) R[i] = 0;
-  PetscCall(TslElementBulkViscosity(&c->in, v, eta1, eta2, R, power));
+  PetscCall(TslElementBulkViscosity(&c->in, v, eta1, eta2, R, power, NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

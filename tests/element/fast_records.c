@@ -51,7 +51,7 @@ static PetscErrorCode CheckBatch(TestLog *log, const TslElementInput *in0, const
     TslElementFastInterleave(nd, j, v, vb);
     TslElementFastInterleave(n, j, ti0, tib);
   }
-  TslElementFastForceBatch(shape, batch, ub, tib, vb, eta, eta2, Rb, Rvb, wb);
+  TslElementFastForceBatch(shape, batch, ub, tib, vb, eta, eta2, Rb, Rvb, wb, NULL);
   TslElementFastEnergyBatch(shape, batch, ub, tib, seb, hgb);
   for (PetscInt j = 0; j < W; j++) {
     for (PetscInt i = 0; i < nd; i++) dmax = PetscMax(dmax, PetscMax(PetscAbsReal(Rb[i * W + j] - R[j][i]), PetscAbsReal(Rvb[i * W + j] - Rv[j][i])));
@@ -119,7 +119,7 @@ static PetscErrorCode CheckType(TestLog *log, const TslElementType *t, PetscReal
   for (PetscInt sign = 1; sign >= -1; sign -= 2) { /* expansion and compression: the quadratic term in one only */
     for (PetscInt i = 0; i < nd; i++) v[i] = -v[i], Rvg[i] = 0;
     TslElementFastForce(&shape, rec, u, ti, v, 0.06 * 1e-4, 1.44e-8, R, Rv, &w);
-    PetscCall(TslElementBulkViscosity(&in, v, 0.06 * 1e-4, 1.44e-8, Rvg, &wg));
+    PetscCall(TslElementBulkViscosity(&in, v, 0.06 * 1e-4, 1.44e-8, Rvg, &wg, NULL));
     CheckAtMost(log, RelDiff(nd, Rv, Rvg), 1e-12, "%s (offset %g, velocities x %d): bulk viscosity forces against the generic kernel", t->name,
                 (double)offset, (int)sign);
     CheckRel(log, w, wg, 1e-12, 1e-300, "%s (offset %g, velocities x %d): bulk viscosity power", t->name, (double)offset, (int)sign);
