@@ -82,9 +82,10 @@ static inline __attribute__((always_inline)) void Gradients(const PetscInt dim, 
  * length. A full row's point works in the reference derivatives: the displacement gradient in xi (H),
  * mapped by A; the stress mapped back by A and spread by the same derivatives. */
 static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
-                                                        const PetscBool axi, const PetscBool ps, const PetscBool sf0, const TslElementFastShape *shape, const PetscReal *rec,
-                                                        const PetscReal *u, const PetscReal *ti, const PetscReal *v, const PetscReal *eta,
-                                                        const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *qr, PetscReal *energy)
+                                                        const PetscBool axi, const PetscBool ps, const PetscBool sf0,
+                                                        const TslElementFastShape *shape, const PetscReal *rec, const PetscReal *u,
+                                                        const PetscReal *ti, const PetscReal *v, const PetscReal *eta, const PetscReal *eta2,
+                                                        PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *qr, PetscReal *energy)
 {
   const PetscInt nd     = dim + 1;
   const Layout   L      = LayoutOf(dim, n, nq, nh, axi);
@@ -251,10 +252,11 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
 
 /* One function per row, cloned for x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
 #define FORCE_ROW(name, dim, n, nq, nh, axi, ps, sf)                                                                                                 \
-  TSL_CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,          \
-                          const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *qr, PetscReal *energy) \
+  TSL_CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,      \
+                              const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *qr,             \
+                              PetscReal *energy)                                                                                                     \
   {                                                                                                                                                  \
-    Force(dim, n, nq, nh, axi, ps, sf, sh, rec, u, ti, v, eta, eta2, R, Rv, power, qr, energy);                                                          \
+    Force(dim, n, nq, nh, axi, ps, sf, sh, rec, u, ti, v, eta, eta2, R, Rv, power, qr, energy);                                                      \
   }
 FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
 FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)

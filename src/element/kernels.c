@@ -287,7 +287,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   const PetscBool       hybrid      = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
   PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
   const PetscBool       lean        = !K && !res && !hybrid && LeanStrain(in); /* forces only: no B, no tangent terms */
-  PetscReal            *se          = res ? &res->strain_energy : energy; /* int 1/2 sigma : eps_mech dV, when wanted */
+  PetscReal            *se          = res ? &res->strain_energy : energy;      /* int 1/2 sigma : eps_mech dV, when wanted */
   MechPoint             mq;
   PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 

@@ -251,7 +251,8 @@ static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, 
     PetscReal energy[2];
     PetscCall(TslElementInternalEnergy(&d->in, R, K, &inverted, energy));
     c->heat->energy[0] += energy[0], c->heat->energy[1] += energy[1];
-  } else PetscCall(TslElementInternal(&d->in, R, K, &inverted));
+  } else
+    PetscCall(TslElementInternal(&d->in, R, K, &inverted));
   if (inverted) {
     if (*c->bad_elem < 0) *c->bad_elem = e;
     PetscFunctionReturn(PETSC_SUCCESS);
@@ -730,7 +731,8 @@ static PetscErrorCode FillPattern(TslProblem p, Mat J, PetscInt rs, const PetscI
     const PetscInt *cols = &ja[ia[r]], nc = ia[r + 1] - ia[r];
     PetscInt        d0 = 0, d1, no = 0;
     while (d0 < nc && cols[d0] < rs) d0++;
-    for (d1 = d0; d1 < nc && cols[d1] < rs + p->nown; d1++) {}
+    for (d1 = d0; d1 < nc && cols[d1] < rs + p->nown; d1++) {
+    }
     for (PetscInt k = d0; k < d1; k++) /* the diagonal block: local point columns */
       for (PetscInt j = 0; j < bs; j++) pcols[(k - d0) * bs + j] = (cols[k] - rs) * bs + j;
     for (PetscInt i = 0; i < bs; i++) {

@@ -164,7 +164,7 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
 {
   const TslElementFastShape *sh;
   PetscReal u[TSL_MAX_ELEM_DOF * W], v[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], R[TSL_MAX_ELEM_DOF * W], Rv[TSL_MAX_ELEM_DOF * W], eta[W],
-    eta2[W], w[W], qr[2 * W];
+      eta2[W], w[W], qr[2 * W];
   PetscInt  e[W];
   PetscBool used[W], visc[W], bv = PETSC_FALSE;
 
