@@ -239,7 +239,7 @@ static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, 
 {
   AsmCtx    *c      = (AsmCtx *)ctx;
   PetscBool  need_k = (c->mode == ASM_JACOBIAN), inverted = PETSC_FALSE;
-  PetscReal *R = c->R, *K = need_k ? c->K : NULL;
+  PetscReal *R = c->R, *K = need_k ? c->K : NULL, energy[2];
 
   PetscFunctionBeginUser;
   (void)stop;
@@ -247,16 +247,12 @@ static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, 
     PetscCall(TslProblemInsert(p, c->mode, c->A, c->f, d->nd, d->ld, NULL, NULL));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  if (c->heat) { /* the heat balance's pass: the history's energies come with it */
-    PetscReal energy[2];
-    PetscCall(TslElementInternalEnergy(&d->in, R, K, &inverted, energy));
-    c->heat->energy[0] += energy[0], c->heat->energy[1] += energy[1];
-  } else
-    PetscCall(TslElementInternal(&d->in, R, K, &inverted));
+  PetscCall(TslElementInternalEnergy(&d->in, R, K, &inverted, c->heat ? energy : NULL)); /* the heat balance's pass: with the energies */
   if (inverted) {
     if (*c->bad_elem < 0) *c->bad_elem = e;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  if (c->heat) c->heat->energy[0] += energy[0], c->heat->energy[1] += energy[1];
   PetscCall(AddCapacity(p, d, R, K, c->heat));
   PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
@@ -697,58 +693,50 @@ static PetscErrorCode PatternRows(TslProblem p, Mat G, PetscInt rs, PetscInt **i
 }
 
 /* The pattern's zeros written into the preallocated J, each point row whole with its columns sorted
- * (MAT_SORTED_FULL: a copy per row instead of a search per entry). On several ranks straight into the
- * parallel matrix's two local blocks, the diagonal one (local columns) and the off-diagonal one (global columns
+ * (MAT_SORTED_FULL: a copy per row instead of a search per entry). A parallel AIJ matrix takes them straight
+ * into its two local blocks, the diagonal one (local rows and columns) and the off-diagonal one (global columns
  * until the assembly compacts them), as MatSetValues would put them entry by entry after a range test and a
- * search each (a third of the set-up phase of the 283 k peer block on 2 ranks). ja: sorted global nodes. */
+ * search each (a third of the set-up phase of the 283 k peer block on 2 ranks); any other matrix (one rank)
+ * takes global rows and columns. ja: sorted global nodes. */
 static PetscErrorCode FillPattern(TslProblem p, Mat J, PetscInt rs, const PetscInt ia[], const PetscInt ja[], const PetscScalar zero[],
                                   PetscInt pcols[])
 {
   const PetscInt bs = p->ndof;
   PetscBool      mpi;
-  Mat            Ad, Ao;
+  Mat            B[2] = {J, NULL}; /* where the diagonal and the off-diagonal columns go */
+  PetscInt       ro = rs, co = 0;  /* row and diagonal column offsets (global node numbers to B's) */
 
   PetscFunctionBeginUser;
   PetscCall(PetscObjectTypeCompare((PetscObject)J, MATMPIAIJ, &mpi));
-  if (!mpi) {
-    PetscCall(MatSetOption(J, MAT_SORTED_FULL, PETSC_TRUE));
-    for (PetscInt r = 0; r < p->nown; r++) {
-      const PetscInt nc = ia[r + 1] - ia[r], *cols = &ja[ia[r]];
-      for (PetscInt k = 0; k < nc; k++)
-        for (PetscInt j = 0; j < bs; j++) pcols[k * bs + j] = cols[k] * bs + j;
-      for (PetscInt i = 0; i < bs; i++) {
-        PetscInt row = (rs + r) * bs + i;
-        PetscCall(MatSetValues(J, 1, &row, nc * bs, pcols, zero, INSERT_VALUES));
-      }
-    }
-    PetscCall(MatSetOption(J, MAT_SORTED_FULL, PETSC_FALSE));
-    PetscFunctionReturn(PETSC_SUCCESS);
+  if (mpi) {
+    PetscCall(MatMPIAIJGetSeqAIJ(J, &B[0], &B[1], NULL));
+    ro = 0, co = rs;
   }
-  PetscCall(MatMPIAIJGetSeqAIJ(J, &Ad, &Ao, NULL));
-  PetscCall(MatSetOption(Ad, MAT_SORTED_FULL, PETSC_TRUE));
-  PetscCall(MatSetOption(Ao, MAT_SORTED_FULL, PETSC_TRUE));
+  for (PetscInt b = 0; b < 2; b++)
+    if (B[b]) PetscCall(MatSetOption(B[b], MAT_SORTED_FULL, PETSC_TRUE));
   for (PetscInt r = 0; r < p->nown; r++) {
     const PetscInt *cols = &ja[ia[r]], nc = ia[r + 1] - ia[r];
-    PetscInt        d0 = 0, d1, no = 0;
-    while (d0 < nc && cols[d0] < rs) d0++;
-    for (d1 = d0; d1 < nc && cols[d1] < rs + p->nown; d1++) {
+    PetscInt        d0 = 0, d1 = nc; /* cols[d0..d1) are the diagonal block's */
+    if (mpi) {
+      while (d0 < nc && cols[d0] < rs) d0++;
+      d1 = d0;
+      while (d1 < nc && cols[d1] < rs + p->nown) d1++;
     }
-    for (PetscInt k = d0; k < d1; k++) /* the diagonal block: local point columns */
-      for (PetscInt j = 0; j < bs; j++) pcols[(k - d0) * bs + j] = (cols[k] - rs) * bs + j;
-    for (PetscInt i = 0; i < bs; i++) {
-      PetscInt row = r * bs + i;
-      if (d1 > d0) PetscCall(MatSetValues(Ad, 1, &row, (d1 - d0) * bs, pcols, zero, INSERT_VALUES));
-    }
-    for (PetscInt k = 0; k < nc; k++) /* the off-diagonal block: global point columns, still sorted */
-      if (k < d0 || k >= d1)
-        for (PetscInt j = 0; j < bs; j++) pcols[no++] = cols[k] * bs + j;
-    for (PetscInt i = 0; i < bs; i++) {
-      PetscInt row = r * bs + i;
-      if (no) PetscCall(MatSetValues(Ao, 1, &row, no, pcols, zero, INSERT_VALUES));
+    for (PetscInt b = 0; b < 2; b++) {
+      PetscInt n = 0;
+      for (PetscInt k = 0; k < nc; k++) {
+        const PetscBool diag = k >= d0 && k < d1 ? PETSC_TRUE : PETSC_FALSE;
+        if (diag != (b == 0)) continue;
+        for (PetscInt j = 0; j < bs; j++) pcols[n++] = (diag ? cols[k] - co : cols[k]) * bs + j;
+      }
+      for (PetscInt i = 0; i < bs && n; i++) {
+        PetscInt row = (ro + r) * bs + i;
+        PetscCall(MatSetValues(B[b], 1, &row, n, pcols, zero, INSERT_VALUES));
+      }
     }
   }
-  PetscCall(MatSetOption(Ad, MAT_SORTED_FULL, PETSC_FALSE));
-  PetscCall(MatSetOption(Ao, MAT_SORTED_FULL, PETSC_FALSE));
+  for (PetscInt b = 0; b < 2; b++)
+    if (B[b]) PetscCall(MatSetOption(B[b], MAT_SORTED_FULL, PETSC_FALSE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
