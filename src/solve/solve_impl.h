@@ -31,6 +31,7 @@ typedef struct {
   PetscReal  r0_u, r0_theta;       /* initial residuals of the current solve */
   PetscReal  forcing_max;          /* -tsl_linear_forcing: loosest linear tolerance of a Newton iteration after the first (0: -ksp_rtol always) */
   PetscReal  ksp_rtol;             /* the linear tolerance of the first Newton iteration (-ksp_rtol) */
+  PetscBool  block_solves;         /* -tsl_block_solves: a block-triangular operator's blocks solved by CG (split.c) */
   PetscReal  fnorm_prev;           /* residual norm at the previous Newton iteration of the current solve */
   PetscBool  field_on[MAX_FIELDS]; /* rows of the problem's field table written in frames */
   PetscInt   frequency;
@@ -82,3 +83,5 @@ PetscErrorCode TslSplitOptionType(const char *prefix, PetscBool *additive);
 PetscErrorCode TslSplitSetFromOptions(PC pc);
 PetscErrorCode TslSplitReset(PC pc);
 PetscErrorCode TslSplitIs(PC pc, PetscBool *is);
+PetscErrorCode TslSplitSetTriangular(PC pc, KSP outer, PetscBool allowed);
+PetscErrorCode TslSplitTakeExtraCycles(PC pc, PetscInt *extra);
