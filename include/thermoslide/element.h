@@ -236,6 +236,10 @@ void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal 
                               const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[], PetscReal power[], PetscReal qr[]);
 void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal strain[],
                                PetscReal hourglass[]);
+/* An implicit residual's part of a batch: R (interleaved) and, when energy is not NULL, each lane's strain
+ * energy in energy[j] and hourglass energy in energy[TSL_FAST_LANES + j], from one evaluation. */
+void TslElementFastResidualBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal R[],
+                                 PetscReal energy[]);
 void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[], PetscReal batch[]);
 
 /* Lumped nodal quantities of the element at its current temperatures:

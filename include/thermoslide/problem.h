@@ -127,6 +127,10 @@ PetscErrorCode TslProblemSetMatrixFree(TslProblem prob, PetscBool matrix_free);
  * false frees them and every element takes the generic kernels, -tsl_explicit_records 0). *nfast (elements
  * with a record, all ranks) and *mbytes (the records' memory, largest rank) may be NULL. Collective. */
 PetscErrorCode TslProblemExplicitRecords(TslProblem prob, PetscBool use, PetscInt *nfast, PetscReal *mbytes);
+/* The same records for the implicit residuals (internal force, heat flow and the history's energies; the
+ * tangent stays the generic kernels'): use builds them if no explicit step has (collective: *nfast, *mbytes
+ * as above), false leaves them to explicit steps. */
+PetscErrorCode TslProblemImplicitRecords(TslProblem prob, PetscBool use, PetscInt *nfast, PetscReal *mbytes);
 
 /* Rates of the heat terms of the last force evaluation, summed over all ranks. */
 typedef struct {

@@ -505,6 +505,12 @@ void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal 
   Rows[shape->row].force(shape, rec, u, ti, v, eta, eta2, R, Rv, power, qr, NULL);
 }
 
+void TslElementFastResidualBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal R[],
+                                 PetscReal energy[])
+{
+  Rows[shape->row].force(shape, rec, u, ti, NULL, NULL, NULL, R, NULL, NULL, NULL, energy);
+}
+
 void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal strain[],
                                PetscReal hourglass[])
 {

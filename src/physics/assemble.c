@@ -235,24 +235,13 @@ typedef struct {
   PetscInt    *bad_elem;
 } AsmCtx;
 
-static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+/* An element's work after its internal force (and tangent) are in c->R (c->K): the capacity term, the
+ * insertion, its face loads. */
+static PetscErrorCode ElementRest(TslProblem p, PetscInt e, const TslElemData *d, AsmCtx *c)
 {
-  AsmCtx    *c      = (AsmCtx *)ctx;
-  PetscBool  need_k = (c->mode == ASM_JACOBIAN), inverted = PETSC_FALSE;
-  PetscReal *R = c->R, *K = need_k ? c->K : NULL, energy[2];
+  PetscReal *R = c->R, *K = c->mode == ASM_JACOBIAN ? c->K : NULL;
 
   PetscFunctionBeginUser;
-  (void)stop;
-  if (c->mode == ASM_PATTERN) {
-    PetscCall(TslProblemInsert(p, c->mode, c->A, c->f, d->nd, d->ld, NULL, NULL));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  PetscCall(TslElementInternalEnergy(&d->in, R, K, &inverted, c->heat ? energy : NULL)); /* the heat balance's pass: with the energies */
-  if (inverted) {
-    if (*c->bad_elem < 0) *c->bad_elem = e;
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  if (c->heat) c->heat->energy[0] += energy[0], c->heat->energy[1] += energy[1];
   PetscCall(AddCapacity(p, d, R, K, c->heat));
   PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
@@ -273,15 +262,80 @@ static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
+{
+  AsmCtx   *c        = (AsmCtx *)ctx;
+  PetscBool inverted = PETSC_FALSE;
+  PetscReal energy[2];
+
+  PetscFunctionBeginUser;
+  (void)stop;
+  if (c->mode == ASM_PATTERN) {
+    PetscCall(TslProblemInsert(p, c->mode, c->A, c->f, d->nd, d->ld, NULL, NULL));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  /* the heat balance's pass: with the energies */
+  PetscCall(TslElementInternalEnergy(&d->in, c->R, c->mode == ASM_JACOBIAN ? c->K : NULL, &inverted, c->heat ? energy : NULL));
+  if (inverted) {
+    if (*c->bad_elem < 0) *c->bad_elem = e;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (c->heat) c->heat->energy[0] += energy[0], c->heat->energy[1] += energy[1];
+  PetscCall(ElementRest(p, e, d, c));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The residual of the elements with a force record (TslProblemRecords: small strain, temperature-independent
+ * properties, so an element's geometry and conduction never change): internal force, heat flow and, in the
+ * heat balance's pass, the energies from the record, a batch of TSL_FAST_LANES elements of one type per
+ * kernel call (docs/explicit.md "Element force records"; the same formulas as TslElementInternal to
+ * rounding), the rest of each element's work as for the others. An inverted element has no record. */
+static PetscErrorCode AssembleRecords(TslProblem p, const PetscScalar *xa, const PetscScalar *xoa, AsmCtx *c)
+{
+  enum { W = TSL_FAST_LANES };
+  TslElemData d[W];
+  PetscReal   u[TSL_MAX_ELEM_DOF * W], ti[TSL_MAX_ELEM_NODES * W], R[TSL_MAX_ELEM_DOF * W], energy[2 * W];
+
+  PetscFunctionBeginUser;
+  for (PetscInt b = 0; b < p->fast_nbatch; b++) {
+    const PetscInt            *lane  = &p->fast_batch[W * b];
+    const TslElementFastShape *shape = &p->fast_shape[p->m->elem_type[lane[0]]];
+    for (PetscInt j = 0; j < W; j++) { /* an empty lane repeats lane 0 (computed, never inserted) */
+      TslProblemGather(p, lane[j] >= 0 ? lane[j] : lane[0], xa, xoa, &d[j]);
+      TslElementFastInterleave(d[j].nd, j, d[j].u, u);
+      TslElementFastInterleave(d[j].n, j, d[j].ti, ti);
+    }
+    TslElementFastResidualBatch(shape, &p->fast_rec[p->fast_boff[b]], u, ti, R, c->heat ? energy : NULL);
+    for (PetscInt j = 0; j < W; j++) {
+      if (lane[j] < 0) continue;
+      for (PetscInt i = 0; i < d[j].nd; i++) c->R[i] = R[i * W + j];
+      if (c->heat) c->heat->energy[0] += energy[j], c->heat->energy[1] += energy[W + j];
+      PetscCall(ElementRest(p, lane[j], &d[j], c));
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The element, contact and nodal-load contributions. xa, xoa: local forms of the current and old
  * solution; f: local form of the residual; R, K: work arrays of TSL_MAX_ELEM_DOF and its square. */
 static PetscErrorCode AssembleLoop(TslProblem p, AsmMode mode, const PetscScalar *xa, const PetscScalar *xoa, PetscScalar *f, Mat A, AsmHeat *heat,
                                    PetscReal *R, PetscReal *K, PetscInt *bad_elem)
 {
-  AsmCtx ctx = {mode, A, f, heat, R, K, bad_elem};
+  AsmCtx          ctx     = {mode, A, f, heat, R, K, bad_elem};
+  const PetscBool records = (mode == ASM_RESIDUAL || mode == ASM_RAW) && p->fast_implicit && p->fast_built;
 
   PetscFunctionBeginUser;
-  PetscCall(TslProblemElementLoop(p, xa, xoa, AssembleElement, &ctx));
+  if (records) {
+    PetscCall(AssembleRecords(p, xa, xoa, &ctx));
+    for (PetscInt e = 0; e < p->m->nelem; e++) {
+      TslElemData d;
+      PetscBool   stop = PETSC_FALSE;
+      if (p->fast_off[e] >= 0) continue;
+      TslProblemGather(p, e, xa, xoa, &d);
+      PetscCall(AssembleElement(p, e, &d, &ctx, &stop));
+    }
+  } else
+    PetscCall(TslProblemElementLoop(p, xa, xoa, AssembleElement, &ctx));
   PetscCall(TslProblemContactAssemble(p, mode, xa, f, A, heat));
   /* nodal loads (owned dofs only): residual = internal - external */
   if (mode == ASM_RESIDUAL || mode == ASM_RAW) {

@@ -237,6 +237,14 @@ PetscErrorCode TslProblemFastDestroy(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemImplicitRecords(TslProblem p, PetscBool use, PetscInt *nfast, PetscReal *mbytes)
+{
+  PetscFunctionBeginUser;
+  p->fast_implicit = use;
+  if (use) PetscCall(TslProblemExplicitRecords(p, PETSC_TRUE, nfast, mbytes));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Records are built in element order into batches of one type each (an open batch per type), so a batch's
  * elements are near one another in the mesh and successive batches walk it as the element order does. */
 PetscErrorCode TslProblemExplicitRecords(TslProblem p, PetscBool use, PetscInt *nfast, PetscReal *mbytes)

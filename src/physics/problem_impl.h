@@ -151,6 +151,7 @@ struct _p_TslProblem {
    * fast_off[e] = W b + j for an element with a record, -1 for the generic kernels; fast_shape[] one per
    * catalogue type */
   PetscBool            fast_built;
+  PetscBool            fast_implicit;                       /* implicit residuals take the records too (TslProblemImplicitRecords) */
   PetscInt             fast_count, fast_total, fast_nbatch; /* elements with a record, reals in fast_rec, batches */
   PetscInt            *fast_off, *fast_batch, *fast_boff;
   PetscReal           *fast_rec;

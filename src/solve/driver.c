@@ -125,6 +125,7 @@ static PetscErrorCode SetUpSolver(Driver *d)
   d->forcing_max        = 1e-6;
   d->ksp_rtol           = 1e-10;
   d->block_solves       = PETSC_TRUE;
+  d->implicit_records   = PETSC_TRUE;
   PetscOptionsBegin(d->comm, NULL, "thermoslide increment control", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_linear_forcing",
                            "loosest linear tolerance of a Newton iteration after the first (inexact Newton; 0: -ksp_rtol throughout)", 0, PETSC_FALSE, 1,
@@ -138,6 +139,9 @@ static PetscErrorCode SetUpSolver(Driver *d)
                              "a block-triangular Jacobian (no contact): each field's block solved by CG to the linear tolerance, instead of one AMG "
                              "cycle per outer iteration",
                              NULL, d->block_solves, &d->block_solves, NULL));
+  PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_implicit_records",
+                           "implicit residuals from the element force records (geometry and conduction computed once; docs/running.md)",
+                           &d->implicit_records));
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_rtol", "per-field Newton residual reduction", 0, PETSC_TRUE, 1, PETSC_TRUE, &d->rtol));
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_atol_rel", "per-field residual floor relative to the job's largest", 0, PETSC_TRUE, 1,
                            PETSC_TRUE, &d->atol_rel));
@@ -632,6 +636,18 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
                         step->steady ? "steady state" : "transient", (double)step->period, (double)step->dt0));
   PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));
   TslCallCollective(d->comm, TslProblemSetStep(d->prob, s));
+  if (!d->records_done) {
+    /* the residuals' element force records, once for the job (the geometry and the materials do not change) */
+    PetscInt  nfast;
+    PetscReal mb;
+    d->records_done = PETSC_TRUE;
+    PetscCall(TslProblemImplicitRecords(d->prob, d->implicit_records, &nfast, &mb));
+    if (d->implicit_records)
+      PetscCall(PetscPrintf(d->comm,
+                            "  force records: %" PetscInt_FMT " of %" PetscInt_FMT " elements (%.1f MB on the largest rank) for the residuals; the "
+                            "others and every tangent take the generic kernels\n",
+                            nfast, m->nelem_global, (double)mb));
+  }
   PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
   PetscCall(HandJacobian(d));
   PetscCall(TslDriverSetOutputRequests(d, step));
