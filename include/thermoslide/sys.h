@@ -53,6 +53,12 @@ PetscErrorCode TslOptionsInt(PetscOptionItems *PetscOptionsObject, const char *n
  * solution and residual vectors, implicit and explicit. */
 PetscErrorCode TslGhostUpdate(Vec v, InsertMode mode, ScatterMode direction);
 
+/* Faults in the pages of a large array just allocated (at least 4 MB; anything smaller is left alone) with one
+ * system call (madvise MADV_POPULATE_WRITE, Linux 5.14), instead of one page fault per 4 kB page on first
+ * touch: in a process of 1.5 GB on this machine 400 MB took 1.3 s of faults against 0.16 s. The contents are
+ * unchanged; a kernel without the call leaves the pages to fault in as before. */
+void TslPrefault(void *p, size_t bytes);
+
 /* A true/false option (a bare flag is true); any other text is an error naming the option. */
 PetscErrorCode TslOptionsBool(PetscOptionItems *PetscOptionsObject, const char *name, const char *help, PetscBool *value);
 

@@ -272,6 +272,7 @@ PetscErrorCode TslProblemExplicitRecords(TslProblem p, PetscBool use, PetscInt *
       total += nb * W * p->fast_shape[t].size, maxbatch += nb;
     }
     PetscCall(PetscMalloc1(total, &p->fast_rec));
+    TslPrefault(p->fast_rec, sizeof(*p->fast_rec) * (size_t)total);
     PetscCall(PetscMalloc2(W * maxbatch, &p->fast_batch, maxbatch, &p->fast_boff));
     for (PetscInt t = 0; t < ntype; t++) open[t] = -1;
     for (PetscInt e = 0; e < nelem; e++) {

@@ -204,6 +204,8 @@ static PetscErrorCode Extract(Split *s, Mat P, PetscInt rf, PetscInt cf, PetscIn
     PetscCall(PetscMalloc1(b->i[b->m], &b->a));
     if (c.mpi) PetscCall(PetscMalloc1(b->oi[b->m], &b->oj));
     if (c.mpi) PetscCall(PetscMalloc1(b->oi[b->m], &b->oa));
+    TslPrefault(b->j, sizeof(*b->j) * (size_t)b->i[b->m]), TslPrefault(b->a, sizeof(*b->a) * (size_t)b->i[b->m]);
+    if (c.mpi) TslPrefault(b->oj, sizeof(*b->oj) * (size_t)b->oi[b->m]), TslPrefault(b->oa, sizeof(*b->oa) * (size_t)b->oi[b->m]);
   }
   for (PetscInt q = 0, row = 0; q < c.nn; q++)
     for (PetscInt k = 0; k < nr; k++, row++) {
@@ -321,6 +323,8 @@ static PetscErrorCode HypreBlock(PC pc, Split *s, Mat P, Mat *H)
   di = hypre_CSRMatrixI(D), dj = hypre_CSRMatrixJ(D), da = hypre_CSRMatrixData(D);
   oi = hypre_CSRMatrixI(O), oj = hypre_CSRMatrixJ(O), oa = hypre_CSRMatrixData(O);
   cmap = hypre_ParCSRMatrixColMapOffd(A);
+  TslPrefault(dj, sizeof(*dj) * (size_t)nd), TslPrefault(da, sizeof(*da) * (size_t)nd);
+  TslPrefault(oj, sizeof(*oj) * (size_t)no), TslPrefault(oa, sizeof(*oa) * (size_t)no);
   for (PetscInt k = 0; k < nB; k++)
     if (lk[k] >= 0) cmap[lk[k]] = (HYPRE_BigInt)((c.garray[k] / bs) * nr + pos[c.garray[k] % bs]);
   di[0] = oi[0] = 0;
