@@ -135,10 +135,10 @@ static PetscErrorCode SetUpSolver(Driver *d)
     PetscCall(PetscOptionsHasName(NULL, NULL, "-ksp_rtol", &set));
     if (set) d->forcing_max = 0; /* the user's linear tolerance holds throughout */
   }
-  PetscCall(PetscOptionsBool("-tsl_block_solves",
-                             "a block-triangular Jacobian (no contact): each field's block solved by CG to the linear tolerance, instead of one AMG "
-                             "cycle per outer iteration",
-                             NULL, d->block_solves, &d->block_solves, NULL));
+  PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_block_solves",
+                           "a block-triangular Jacobian (no contact): each field's block solved by CG to the linear tolerance, instead of one AMG "
+                           "cycle per outer iteration",
+                           &d->block_solves));
   PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_implicit_records",
                            "implicit residuals from the element force records (geometry and conduction computed once; docs/running.md)",
                            &d->implicit_records));
