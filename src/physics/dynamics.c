@@ -106,10 +106,9 @@ static inline __attribute__((always_inline)) void GatherBatch(TslProblem p, cons
   for (PetscInt a = 0; a < n; a++) {
 #if defined(TSL_HAVE_TRANSPOSE4)
     if (nd == 4) {
-      TslV r[4], c[4];
-      for (PetscInt j = 0; j < W; j++) r[j] = TslLd(&xa[4 * ln[j][a]]);
-      TslTranspose4(r, c);
-      for (PetscInt i = 0; i < 4; i++) TslSt(&u[(4 * a + i) * W], c[i]);
+      const TslV r0 = TslLd(&xa[4 * ln[0][a]]), r1 = TslLd(&xa[4 * ln[1][a]]), r2 = TslLd(&xa[4 * ln[2][a]]), r3 = TslLd(&xa[4 * ln[3][a]]);
+      TSL_TRANSPOSE4(r0, r1, r2, r3, c0, c1, c2, c3);
+      TslStA(&u[(4 * a + 0) * W], c0), TslStA(&u[(4 * a + 1) * W], c1), TslStA(&u[(4 * a + 2) * W], c2), TslStA(&u[(4 * a + 3) * W], c3);
     } else
 #endif
       for (PetscInt j = 0; j < W; j++)
@@ -129,11 +128,14 @@ static inline __attribute__((always_inline)) void ScatterBatch(TslProblem p, con
   for (PetscInt a = 0; a < n; a++) {
 #if defined(TSL_HAVE_TRANSPOSE4)
     if (nd == 4) {
-      TslV r[4], c[4];
-      for (PetscInt i = 0; i < 4; i++) c[i] = TslLd(&R[(4 * a + i) * W]);
-      TslTranspose4(c, r);
-      for (PetscInt j = 0; j < W; j++)
-        if (used[j]) TslSt(&f[4 * ln[j][a]], TslLd(&f[4 * ln[j][a]]) + r[j]);
+      const TslV c0 = TslLdA(&R[(4 * a + 0) * W]), c1 = TslLdA(&R[(4 * a + 1) * W]), c2 = TslLdA(&R[(4 * a + 2) * W]),
+                 c3 = TslLdA(&R[(4 * a + 3) * W]);
+      TSL_TRANSPOSE4(c0, c1, c2, c3, r0, r1, r2, r3);
+      /* in lane order (lanes may share a node) */
+      if (used[0]) TslSt(&f[4 * ln[0][a]], TslLd(&f[4 * ln[0][a]]) + r0);
+      if (used[1]) TslSt(&f[4 * ln[1][a]], TslLd(&f[4 * ln[1][a]]) + r1);
+      if (used[2]) TslSt(&f[4 * ln[2][a]], TslLd(&f[4 * ln[2][a]]) + r2);
+      if (used[3]) TslSt(&f[4 * ln[3][a]], TslLd(&f[4 * ln[3][a]]) + r3);
       continue;
     }
 #endif
@@ -145,7 +147,7 @@ static inline __attribute__((always_inline)) void ScatterBatch(TslProblem p, con
 
 void TslProblemFastBatchEnergy(TslProblem p, PetscInt b, const PetscScalar *xa, PetscReal *strain, PetscReal *hourglass)
 {
-  PetscReal u[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], se[W], hg[W];
+  PetscReal u[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, ti[TSL_FAST_MAX_NODES * W], se[W], hg[W];
   PetscInt  e[W];
   PetscBool used[W];
 
@@ -163,8 +165,9 @@ void TslProblemFastBatchEnergy(TslProblem p, PetscInt b, const PetscScalar *xa, 
 static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, PetscInt b, const PetscScalar *restrict xa, ForceCtx *c, const PetscInt nd)
 {
   const TslElementFastShape *sh;
-  PetscReal u[TSL_MAX_ELEM_DOF * W], v[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], R[TSL_MAX_ELEM_DOF * W], Rv[TSL_MAX_ELEM_DOF * W], eta[W],
-      eta2[W], w[W], qr[2 * W];
+  /* the batch's arrays aligned to a vector: the gather's and scatter's transposes move whole vectors */
+  PetscReal u[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, v[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, ti[TSL_FAST_MAX_NODES * W] TSL_LANES_ALIGNED,
+      R[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, Rv[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, eta[W], eta2[W], w[W], qr[2 * W];
   PetscInt  e[W];
   PetscBool used[W], visc[W], bv = PETSC_FALSE;
 
