@@ -516,7 +516,7 @@ void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal
 {
   PetscReal R[TSL_MAX_ELEM_DOF * W], energy[2 * W];
 
-  Rows[shape->row].force(shape, rec, u, ti, NULL, NULL, NULL, R, NULL, NULL, NULL, energy);
+  TslElementFastResidualBatch(shape, rec, u, ti, R, energy);
   for (PetscInt j = 0; j < W; j++) strain[j] = energy[j], hourglass[j] = energy[W + j];
 }
 

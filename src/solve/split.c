@@ -57,6 +57,7 @@ typedef struct {
   PetscBool tri_allowed; /* the sub-solvers' Krylov types are thermoslide's defaults (preonly) */
   PetscBool tri;         /* this operator is block triangular: the blocks are solved by CG */
   PetscBool tri_failed;  /* a CG block solve failed on this pattern: one cycle per block until it changes */
+  PetscBool coupled;     /* a displacement entry in a temperature row here (the temperature block's extraction) */
   PetscInt  extra;       /* displacement cycles beyond one per application, since TslSplitTakeExtraCycles */
 } Split;
 
@@ -188,10 +189,12 @@ static PetscErrorCode CsrRestore(Mat P, Csr *c)
  * columns and values, 2 the values alone (the pattern of an earlier fill). */
 static PetscErrorCode Extract(Split *s, Mat P, PetscInt rf, PetscInt cf, PetscInt fill, Arrays *b)
 {
-  const PetscInt bs = s->ndof, nr = s->nslot[rf], nc = s->nslot[cf], *pc = s->pos[cf];
-  Csr            c;
+  const PetscInt  bs = s->ndof, nr = s->nslot[rf], nc = s->nslot[cf], *pc = s->pos[cf];
+  const PetscBool tcoupling = rf == 0 && cf == 0 && fill > 0; /* the temperature block's values: also watch its rows' other entries */
+  Csr             c;
 
   PetscFunctionBeginUser;
+  if (tcoupling) s->coupled = PETSC_FALSE;
   PetscCall(CsrGet(s, P, &c));
   if (fill == 0) {
     b->m = c.nn * nr;
@@ -213,14 +216,20 @@ static PetscErrorCode Extract(Split *s, Mat P, PetscInt rf, PetscInt cf, PetscIn
       PetscInt       d = fill ? b->i[row] : 0, o = fill && c.mpi ? b->oi[row] : 0;
       for (PetscInt e = c.ia[r]; e < c.ia[r + 1]; e++) {
         const PetscInt col = c.ja[e], p = pc[col % bs];
-        if (p < 0) continue;
+        if (p < 0) {
+          if (tcoupling && c.aa[e] != 0 && s->pos[1][col % bs] >= 0) s->coupled = PETSC_TRUE;
+          continue;
+        }
         if (fill == 1) b->j[d] = (col / bs) * nc + p;
         if (fill) b->a[d] = c.aa[e];
         d++;
       }
       for (PetscInt e = c.Ao ? c.oia[r] : 0; c.Ao && e < c.oia[r + 1]; e++) {
         const PetscInt g = c.garray[c.oja[e]], p = pc[g % bs];
-        if (p < 0) continue;
+        if (p < 0) {
+          if (tcoupling && c.oaa[e] != 0 && s->pos[1][g % bs] >= 0) s->coupled = PETSC_TRUE;
+          continue;
+        }
         if (fill == 1) b->oj[o] = (g / bs) * nc + p;
         if (fill) b->oa[o] = c.oaa[e];
         o++;
@@ -234,28 +243,18 @@ static PetscErrorCode Extract(Split *s, Mat P, PetscInt rf, PetscInt cf, PetscIn
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Whether every temperature row of P has only zeros in displacement columns (on every rank): then P is block
- * triangular (temperature first) and the multiplicative split with exact block solves is its inverse. That holds
- * for any model without contact (the heat equation does not depend on the displacements in small strain);
- * a contact pair's conductance or frictional heat puts displacement entries in the temperature rows. */
-static PetscErrorCode Triangular(Split *s, Mat P, PetscBool *tri)
+/* Whether every temperature row of the operator has only zeros in displacement columns (on every rank), as the
+ * temperature block's extraction of this set-up found (Extract): then the operator is block triangular
+ * (temperature first) and the multiplicative split with exact block solves is its inverse. That holds for any
+ * model without contact (the heat equation does not depend on the displacements in small strain); a contact
+ * pair's conductance or frictional heat puts displacement entries in the temperature rows. Collective. */
+static PetscErrorCode Triangular(Split *s, MPI_Comm comm, PetscBool *tri)
 {
-  const PetscInt bs = s->ndof, *pu = s->pos[1];
-  PetscBool      found = PETSC_FALSE;
-  Csr            c;
+  PetscBool coupled = s->coupled;
 
   PetscFunctionBeginUser;
-  PetscCall(CsrGet(s, P, &c));
-  for (PetscInt q = 0; q < c.nn && !found; q++)
-    for (PetscInt k = 0; k < s->nslot[0] && !found; k++) {
-      const PetscInt r = q * bs + s->slot[0][k];
-      for (PetscInt e = c.ia[r]; e < c.ia[r + 1] && !found; e++) found = (PetscBool)(pu[c.ja[e] % bs] >= 0 && c.aa[e] != 0);
-      for (PetscInt e = c.Ao ? c.oia[r] : 0; c.Ao && e < c.oia[r + 1] && !found; e++)
-        found = (PetscBool)(pu[c.garray[c.oja[e]] % bs] >= 0 && c.oaa[e] != 0);
-    }
-  PetscCall(CsrRestore(P, &c));
-  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &found, 1, MPIU_BOOL, MPI_LOR, PetscObjectComm((PetscObject)P)));
-  *tri = (PetscBool)!found;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &coupled, 1, MPIU_BOOL, MPI_LOR, comm));
+  *tri = (PetscBool)!coupled;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -545,7 +544,7 @@ static PetscErrorCode SetUp(PC pc)
   PetscCall(KSPSetOperators(s->ksp[1], s->A[1], s->A[1]));
   {
     PetscBool tri = PETSC_FALSE;
-    if (s->tri_allowed && s->direct && !s->additive && !s->tri_failed) PetscCall(Triangular(s, P, &tri));
+    if (s->tri_allowed && s->direct && !s->additive && !s->tri_failed) PetscCall(Triangular(s, PetscObjectComm((PetscObject)P), &tri));
     if (tri != s->tri) PetscCall(SubSolverMode(s, tri));
   }
   for (PetscInt i = 0; i < 2; i++) {
@@ -635,7 +634,9 @@ static PetscErrorCode View(PC pc, PetscViewer v)
   if (!ascii) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscViewerASCIIPrintf(v, "thermoslide field split (%s): temperature block, then displacement block%s\n",
                                    s->additive ? "additive" : "multiplicative", s->additive ? "" : " with the coupling block's update"));
-  if (s->tri) PetscCall(PetscViewerASCIIPrintf(v, "block-triangular operator: each block solved by CG to half the outer tolerance\n"));
+  if (s->tri)
+    PetscCall(PetscViewerASCIIPrintf(v, "block-triangular operator: each block solved by CG (temperature to a tenth, displacement to half the outer "
+                                        "tolerance)\n"));
   for (PetscInt i = 0; i < 2; i++) {
     PetscCall(PetscViewerASCIIPrintf(v, "%s block solver (options prefix %s):\n", i ? "displacement" : "temperature", prefix[i]));
     PetscCall(PetscViewerASCIIPushTab(v));
