@@ -229,7 +229,8 @@ void TslElementFastEnergy(const TslElementFastShape *shape, const PetscReal rec[
 /* The same for a batch of TSL_FAST_LANES elements of one type at once (what the explicit loop calls): every
  * array interleaved by lane, value k of lane j at [k * TSL_FAST_LANES + j] (records, u, ti, v, R, Rv),
  * eta[], eta2[], power[], strain[], hourglass[] one per lane. v and Rv are NULL together (no bulk
- * viscosity: power 0); otherwise a lane with eta = eta2 = 0 gets zero forces and power. qr (NULL: not
+ * viscosity: power 0); otherwise a lane with eta = eta2 = 0 gets zero forces and power, and Rv may be R itself
+ * (the viscous forces added to the internal ones, as the explicit loop takes them). qr (NULL: not
  * wanted; 2 per lane) gets each lane's q = p V in qr[j] and eps_vol_dot in qr[W + j], as TslElementBulkViscosity's.
  * TslElementFastInterleave stores a record (or any array of size reals) as lane `lane` of a batch. */
 void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],

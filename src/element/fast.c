@@ -219,12 +219,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       }
     }
   }
-  for (PetscInt a = 0; a < n; a++) {
-    for (PetscInt d = 0; d < dim; d++) St(R + (nd * a + d) * W, F[d][a]);
-    St(R + (nd * a + dim) * W, Fth[a]);
-  }
-  if (energy) St(energy, en[0]), St(energy + W, en[1]);
-  if (Rv) { /* lanes without viscosity (eta = eta2 = 0) get zero forces and power */
+  if (Rv) { /* lanes without viscosity (eta = eta2 = 0) get zero forces and power; Rv == R: added to R's forces */
     const PetscReal *C  = rec + L.C * W;
     const V          Vc = Ld(C + L.dV * W), cd = Ld(rec + 4 * W);
     const PetscReal *Nc = nq > 1 ? shape->Nc : shape->N[0];
@@ -241,13 +236,22 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       for (PetscInt d = 0; d < dim; d++) rate += gd[d][a] * Ld(v + (nd * a + d) * W);
     neg = (V)((VI)rate & (rate < 0)); /* the quadratic term, in compression only */
     p   = Ld(eta) * cd * rate - Ld(eta2) * cd * neg * neg;
-    for (PetscInt a = 0; a < n; a++) {
-      for (PetscInt d = 0; d < dim; d++) St(Rv + (nd * a + d) * W, p * gd[d][a] * Vc);
-      St(Rv + (nd * a + dim) * W, (V){0});
-    }
+    if (Rv == R)
+      for (PetscInt a = 0; a < n; a++)
+        for (PetscInt d = 0; d < dim; d++) F[d][a] += p * gd[d][a] * Vc;
+    else
+      for (PetscInt a = 0; a < n; a++) {
+        for (PetscInt d = 0; d < dim; d++) St(Rv + (nd * a + d) * W, p * gd[d][a] * Vc);
+        St(Rv + (nd * a + dim) * W, (V){0});
+      }
     St(power, p * rate * Vc);
     if (qr) St(qr, p * Vc), St(qr + W, rate);
   }
+  for (PetscInt a = 0; a < n; a++) {
+    for (PetscInt d = 0; d < dim; d++) St(R + (nd * a + d) * W, F[d][a]);
+    St(R + (nd * a + dim) * W, Fth[a]);
+  }
+  if (energy) St(energy, en[0]), St(energy + W, en[1]);
 }
 
 /* One function per row, cloned for x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */

@@ -167,7 +167,7 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
   const TslElementFastShape *sh;
   /* the batch's arrays aligned to a vector: the gather's and scatter's transposes move whole vectors */
   PetscReal u[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, v[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, ti[TSL_FAST_MAX_NODES * W] TSL_LANES_ALIGNED,
-      R[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, Rv[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, eta[W], eta2[W], w[W], qr[2 * W];
+      R[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, eta[W], eta2[W], w[W], qr[2 * W];
   PetscInt  e[W];
   PetscBool used[W], visc[W], bv = PETSC_FALSE;
 
@@ -189,13 +189,13 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
         const PetscInt l = p->elem_lnode[k0 + a];
         __builtin_prefetch(&xa[nd * l], 0, 3);
         __builtin_prefetch(&c->fi[nd * l], 1, 3);
+        __builtin_prefetch(&p->theta_init[l], 0, 3);
       }
     }
   }
-  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, bv ? v : NULL, eta, eta2, R, bv ? Rv : NULL, w, bv ? qr : NULL);
-  if (bv) { /* the viscous forces into the internal ones (zero in lanes without viscosity): one scatter */
-    const PetscInt nr = nd * (p->m->elem_ptr[e[0] + 1] - p->m->elem_ptr[e[0]]) * W;
-    for (PetscInt k = 0; k < nr; k++) R[k] += Rv[k];
+  /* the viscous forces added to the internal ones in R (Rv = R; zero in lanes without viscosity): one scatter */
+  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, bv ? v : NULL, eta, eta2, R, bv ? R : NULL, w, bv ? qr : NULL);
+  if (bv) {
     for (PetscInt j = 0; j < W; j++)
       if (visc[j]) c->power += w[j], c->prev += c->q[e[j]] * qr[W + j], c->q[e[j]] = qr[j];
   }
