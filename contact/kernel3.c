@@ -126,12 +126,20 @@ static PetscErrorCode ProjectRaw(Geom3 *geo, const PetscReal start[2], PetscReal
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Where the projection starts: the caller's guess, or the history's projection at the increment's start. */
+static void ProjectStart(const TslContactInput3 *in, PetscReal start[2])
+{
+  start[0] = in->has_guess ? in->guess[0] : in->hist.xi_old;
+  start[1] = in->has_guess ? in->guess[1] : in->hist.eta_old;
+}
+
 PetscErrorCode TslContactProject3Raw(const TslContactInput3 *in, PetscReal raw[2], PetscBool *frozen)
 {
-  Geom3           geo;
-  const PetscReal start[2] = {in->hist.xi_old, in->hist.eta_old};
+  Geom3     geo;
+  PetscReal start[2];
 
   PetscFunctionBeginUser;
+  ProjectStart(in, start);
   PetscCall(GeomSetUp(in, PETSC_FALSE, &geo));
   PetscCall(ProjectRaw(&geo, start, raw, frozen));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -151,7 +159,8 @@ static PetscErrorCode ProjectDual(const TslContactInput3 *in, Geom3 *geo, TslDua
 #if defined(TSL_DUAL_VALUES)
   (void)S;
   {
-    const PetscReal start[2] = {in->hist.xi_old, in->hist.eta_old};
+    PetscReal start[2];
+    ProjectStart(in, start);
     PetscCall(ProjectRaw(geo, start, raw, &frozen)); /* this geometry already holds values alone */
   }
 #else

@@ -382,6 +382,12 @@ typedef struct {
   PetscReal smoothing;
   PetscReal dt;   /* increment (time), > 0 when friction heats */
   TslContactState hist; /* xi_old, eta_old, xi_anchor, eta_anchor, lambda (w_* unused) */
+  /* Where the projection's Newton iterations start when has_guess is set and it lies inside the face (else
+   * at xi_old, eta_old, or the face's centre): the same face's last projection, one iteration from converged
+   * when the state has not moved since (a Jacobian after the residual at the same state). The result is the
+   * same projection to its tolerance. */
+  PetscReal guess[2];
+  PetscBool has_guess;
 } TslContactInput3;
 
 /* Residual R[4*(1 + nper)] and consistent tangent K = dR/du (row-major, may be NULL) of one 3D node-to-face

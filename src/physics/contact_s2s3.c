@@ -58,6 +58,10 @@ PetscErrorCode TslS2S3PointInput(TslProblem p, const S2SFace *fc, const S2SPoint
   PetscFunctionBeginUser;
   TslS2SPointNode(fc, pt, &cn);
   PetscCall(TslProblemContact3Input(p, &cn, xa, in, kn, &nk));
+  if (pt->out.nnode > 0) { /* evaluated before, on this main face (a point keeps its face): start from there */
+    in->guess[0] = pt->out.xi_raw, in->guess[1] = pt->out.eta_raw;
+    in->has_guess = PETSC_TRUE;
+  }
   PetscCall(TslS2S3FaceData(p, fc, xa, X, U));
   TslContactPointSetUp3(fc->nsn, pt->N, X, U, in);
   TslS2SPointNodes(fc, kn, nk, nodes, n);
