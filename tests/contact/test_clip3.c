@@ -2,7 +2,7 @@
  *  - clipping: overlap areas of known configurations (offset squares, a square turned by 45 degrees: the
  *    regular octagon, triangles on squares, a tri6 face) equal the sum of the points' weights to 1e-12;
  *    faces that do not face each other give no points; reference areas (the weights) differ from the
- *    current ones by the area ratio;
+ *    current ones by the area ratio; a trapezoid overlap takes one 3 x 3 rule, exact for its area and moments;
  *  - a secondary face covered by four main faces: the weights of each node summed over the four overlaps
  *    (sum of N_b w) equal its tributary area (TslContactFace3Integrate), for tri3, quad4 and tri6;
  *  - the expanded element's tangent against central differences (open, stick, slip with heating, LAGRANGE,
@@ -82,6 +82,28 @@ static PetscErrorCode CheckAreas(TestLog *log)
   for (PetscInt i = 0; i < 18; i++) X2[i] = 2 * xs[i];
   PetscCall(Overlap(TRI6, X2, xs, QUAD4, xm, &sum, &n));
   Check(log, sum, 2.0, 1e-12, "tri6 covered, reference face twice the current: reference area 2");
+  /* a trapezoid overlap (a main quad whose slanted edge crosses the unit square's bottom and top): one 3 x 3
+   * rule through its bilinear map, 9 points, exact for the area and the moments the map keeps polynomial
+   * (int x dA, int x^2 y dA, int x^4 dA; the fan of four 7-point triangles gave 28 points) */
+  {
+    const PetscReal trap[4][2] = {{-0.5, -0.5}, {0.9, -0.5}, {0.6, 1.5}, {-0.5, 1.5}};
+    PetscReal       mx = 0, mxxy = 0, mx4 = 0, xq[12], xt[12];
+    Flat(QUAD4, sq, 0, PETSC_TRUE, xq);
+    Flat(QUAD4, trap, -0.01, PETSC_FALSE, xt);
+    PetscCall(Overlap(QUAD4, xq, xq, QUAD4, xt, &sum, &n));
+    for (PetscInt q = 0; q < n; q++) {
+      PetscReal x = 0, y = 0;
+      for (PetscInt b = 0; b < 4; b++) x += Pts[q].N[b] * xq[3 * b], y += Pts[q].N[b] * xq[3 * b + 1];
+      mx += Pts[q].w * x, mxxy += Pts[q].w * x * x * y, mx4 += Pts[q].w * PetscPowRealInt(x, 4);
+    }
+    /* the overlap: 0 <= y <= 1, 0 <= x <= a - b y with a = 0.825, b = 0.15 */
+    Check(log, (PetscReal)n, 9, 0, "trapezoid overlap: one 3 x 3 rule (9 points)");
+    Check(log, sum, 0.75, 1e-12, "trapezoid overlap: sum of weights = its area 0.75");
+    Check(log, mx, (PetscPowRealInt(0.825, 3) - PetscPowRealInt(0.675, 3)) / (6 * 0.15), 1e-12, "trapezoid overlap: int x dA");
+    Check(log, mxxy, (PetscPowRealInt(0.825, 5) - 5 * 0.825 * PetscPowRealInt(0.675, 4) + 4 * PetscPowRealInt(0.675, 5)) / (60 * 0.15 * 0.15), 1e-12,
+          "trapezoid overlap: int x^2 y dA");
+    Check(log, mx4, (PetscPowRealInt(0.825, 6) - PetscPowRealInt(0.675, 6)) / (30 * 0.15), 1e-12, "trapezoid overlap: int x^4 dA");
+  }
   /* same orientation (not facing): nothing */
   Flat(QUAD4, big, -0.01, PETSC_TRUE, xm);
   PetscCall(Overlap(TRI6, xs, xs, QUAD4, xm, &sum, &n));
