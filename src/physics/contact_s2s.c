@@ -416,9 +416,9 @@ PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, P
   if (!s || !s->nface) PetscFunctionReturn(PETSC_SUCCESS);
   /* the old list moves aside; the new one is built face by face into one allocation sized for more points
    * than it will likely hold (a quarter more than the old list; at the first search 40 per face held, the
-   * 3D benchmark's non-matching faces taking 34): the pages it
-   * leaves untouched are never resident, where growing by doubling copies (at 138 k points the search had
-   * raised the job's peak by 285 MB for 50 MB of points: the old list, the copy and its doubled successor) */
+   * 3D benchmark's non-matching faces taking 34): the pages it leaves untouched are never resident, where
+   * growing by doubling copies (at 138 k points the search had raised the malloc high-water mark by 285 MB
+   * for 50 MB of points: the old list, the copy and its doubled successor) */
   old    = s->pt;
   nold   = s->npt;
   s->npt = 0;
