@@ -45,6 +45,10 @@ PetscErrorCode TslProblemGetJacobian(TslProblem prob, Mat *J);
 /* How many patterns the Jacobian has had: a new pattern keeps the matrix object, so this is how a solver
  * holding blocks of the old one learns of it. */
 PetscErrorCode TslProblemGetPatternGeneration(TslProblem prob, PetscInt *gen);
+/* fn(ctx) is called before the Jacobian gets a new pattern (its old arrays are then freed, the new ones
+ * allocated): a solver lets go of what it built on the old pattern there, so that the new matrix does not
+ * come on top of the old preconditioner. */
+PetscErrorCode TslProblemSetRepatternCallback(TslProblem prob, PetscErrorCode (*fn)(void *), void *ctx);
 /* Index sets of the displacement and temperature dofs owned here (for PCFIELDSPLIT). */
 PetscErrorCode TslProblemGetFieldIS(TslProblem prob, IS *is_u, IS *is_theta);
 

@@ -828,6 +828,9 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   TslFailure   fail;
 
   PetscFunctionBeginUser;
+  /* the solver's preconditioner of the old pattern goes first (TslProblemSetRepatternCallback): the pattern
+   * pass and the new matrix then come in its place, not on top of it */
+  if (p->J && p->repattern) PetscCall(p->repattern(p->repattern_ctx));
   PetscCall(MatCreate(p->comm, &pre));
   PetscCall(MatSetSizes(pre, p->nown, p->nown, PETSC_DETERMINE, PETSC_DETERMINE));
   PetscCall(MatSetType(pre, MATPREALLOCATOR));

@@ -449,6 +449,14 @@ PetscErrorCode TslProblemGetPatternGeneration(TslProblem p, PetscInt *gen)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemSetRepatternCallback(TslProblem p, PetscErrorCode (*fn)(void *), void *ctx)
+{
+  PetscFunctionBeginUser;
+  p->repattern     = fn;
+  p->repattern_ctx = ctx;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemGetFieldIS(TslProblem p, IS *is_u, IS *is_theta)
 {
   PetscFunctionBeginUser;
