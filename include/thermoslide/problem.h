@@ -42,12 +42,9 @@ PetscErrorCode TslProblemGetSolution(TslProblem prob, Vec *X);
 PetscErrorCode TslProblemGetOldSolution(TslProblem prob, Vec *Xold);
 /* Matrix with the exact nonzero pattern of the current constraints (re-preallocated by SetStep). */
 PetscErrorCode TslProblemGetJacobian(TslProblem prob, Mat *J);
-/* How many patterns the Jacobian has had: a new pattern keeps the matrix object, so this is how a solver
- * holding blocks of the old one learns of it. */
-PetscErrorCode TslProblemGetPatternGeneration(TslProblem prob, PetscInt *gen);
-/* fn(ctx) is called before the Jacobian gets a new pattern (its old arrays are then freed, the new ones
- * allocated): a solver lets go of what it built on the old pattern there, so that the new matrix does not
- * come on top of the old preconditioner. */
+/* fn(ctx) is called before the Jacobian gets a new pattern (the matrix object stays; its old arrays are then
+ * freed, the new ones allocated): a solver holding blocks of the old pattern lets go of them there, so that the
+ * new matrix does not come on top of the old preconditioner. */
 PetscErrorCode TslProblemSetRepatternCallback(TslProblem prob, PetscErrorCode (*fn)(void *), void *ctx);
 /* Index sets of the displacement and temperature dofs owned here (for PCFIELDSPLIT). */
 PetscErrorCode TslProblemGetFieldIS(TslProblem prob, IS *is_u, IS *is_theta);

@@ -890,7 +890,6 @@ PetscErrorCode TslProblemPreallocate(TslProblem p)
   PetscCall(BuildDirectMap(p, J));
   PetscCall(MatDestroy(&p->J));
   p->J = J;
-  p->pattern_gen++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -442,13 +442,6 @@ PetscErrorCode TslProblemGetJacobian(TslProblem p, Mat *J)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslProblemGetPatternGeneration(TslProblem p, PetscInt *gen)
-{
-  PetscFunctionBeginUser;
-  *gen = p->pattern_gen;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 PetscErrorCode TslProblemSetRepatternCallback(TslProblem p, PetscErrorCode (*fn)(void *), void *ctx)
 {
   PetscFunctionBeginUser;

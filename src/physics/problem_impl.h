@@ -124,8 +124,7 @@ struct _p_TslProblem {
   TslContactSurface *csurf;
   TslContactNode    *cnode;
   PetscReal          augment_tol;
-  PetscBool          pattern_stale; /* a rollback changed the pairing: the matrix pattern is the failed attempt's */
-  PetscInt           pattern_gen;   /* patterns built so far (TslProblemPreallocate): a change tells the solver to let go of the old one */
+  PetscBool          pattern_stale;    /* a rollback changed the pairing: the matrix pattern is the failed attempt's */
   PetscErrorCode (*repattern)(void *); /* called before a new pattern replaces the old one (TslProblemSetRepatternCallback) */
   void              *repattern_ctx;
   PetscReal          margin_rerun;  /* > 0: a node left its rank's held region; the job restarts with this -tsl_contact_margin */

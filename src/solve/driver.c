@@ -31,7 +31,6 @@ const char *const TslHistoryColumns[NHISTORY] = {"step",
                                              "ALLVD",
                                              "ETOTAL"};
 
-
 /* Default solver choices, entered only where the user gave none, and remembered: a default that the
  * user's own choice makes irrelevant (fieldsplit options under -pc_type lu) is removed again at the end,
  * so that the unused-option warnings speak of the user's options only. */
@@ -107,7 +106,34 @@ static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, P
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode ReleaseSubSolvers(Driver *d);
+/* Before a new Jacobian pattern (the same matrix object, preallocated again; Repattern below): the
+ * preconditioner lets go of everything built on the old pattern before it builds anew, so that old and new
+ * blocks are never held at once (the 3D contact benchmark's peak at N = 64: the displacement block, 41 MB,
+ * twice), and a factorisation starts from a new symbolic phase. PETSc's field split (-pc_type fieldsplit)
+ * frees its own blocks before extracting new ones; its sub-solvers release theirs here. */
+static PetscErrorCode ReleaseSubSolvers(Driver *d)
+{
+  KSP       ksp;
+  PC        pc;
+  PetscBool fs, ours;
+
+  PetscFunctionBeginUser;
+  PetscCall(SNESGetKSP(d->snes, &ksp));
+  PetscCall(KSPGetPC(ksp, &pc));
+  PetscCall(TslSplitIs(pc, &ours));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
+  if (ours)
+    PetscCall(TslSplitReset(pc));
+  else if (fs) {
+    KSP     *sub;
+    PetscInt n;
+    PetscCall(PCFieldSplitGetSubKSP(pc, &n, &sub));
+    for (PetscInt i = 0; i < n; i++) PetscCall(KSPReset(sub[i]));
+    PetscCall(PetscFree(sub));
+  } else
+    PetscCall(KSPReset(ksp));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 /* The problem's new-pattern callback (TslProblemSetRepatternCallback): the preconditioner lets go of its
  * blocks and hierarchies before the new matrix is allocated, so the two are never held together. hypre's
@@ -507,46 +533,15 @@ static PetscErrorCode FallBackToDirect(Driver *d, Vec X, PetscInt s, PetscInt in
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* After a new Jacobian pattern (the same matrix object, preallocated again): the preconditioner lets go of
- * everything built on the old pattern before it builds anew, so that old and new blocks are never held at
- * once (the 3D contact benchmark's peak at N = 64: the displacement block, 41 MB, twice), and a
- * factorisation starts from a new symbolic phase. PETSc's field split (-pc_type fieldsplit) frees its own
- * blocks before extracting new ones; its sub-solvers release theirs here. */
-static PetscErrorCode ReleaseSubSolvers(Driver *d)
-{
-  KSP       ksp;
-  PC        pc;
-  PetscBool fs, ours;
-
-  PetscFunctionBeginUser;
-  PetscCall(SNESGetKSP(d->snes, &ksp));
-  PetscCall(KSPGetPC(ksp, &pc));
-  PetscCall(TslSplitIs(pc, &ours));
-  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
-  if (ours) PetscCall(TslSplitReset(pc));
-  else if (fs) {
-    KSP     *sub;
-    PetscInt n;
-    PetscCall(PCFieldSplitGetSubKSP(pc, &n, &sub));
-    for (PetscInt i = 0; i < n; i++) PetscCall(KSPReset(sub[i]));
-    PetscCall(PetscFree(sub));
-  } else PetscCall(KSPReset(ksp));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Hands the problem's Jacobian to the solver; after a new pattern (contact pairing at an increment, or
- * constraints at a step start) the preconditioner first lets go of what it built on the old one. */
+/* Hands the problem's Jacobian to the solver. A new pattern (contact pairing at an increment, or constraints
+ * at a step start) has already made the preconditioner let go of what it built on the old one (Repattern). */
 static PetscErrorCode HandJacobian(Driver *d)
 {
-  Mat      J;
-  PetscInt gen;
+  Mat J;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetJacobian(d->prob, &J));
   PetscCall(SNESSetJacobian(d->snes, J, J, TslProblemFormJacobian, d->prob));
-  PetscCall(TslProblemGetPatternGeneration(d->prob, &gen));
-  if (d->pattern_gen && gen != d->pattern_gen) PetscCall(ReleaseSubSolvers(d));
-  d->pattern_gen = gen;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -46,7 +46,6 @@ typedef struct {
   PetscInt   fallback_max;  /* -tsl_fallback_max_dofs: a failed iterative solve switches to MUMPS up to this size */
   PetscInt   fallback_its;  /* -tsl_fallback_its: ... or an increment needs more linear iterations per Newton iteration */
   PetscBool  fell_back;     /* the switch happened (once per job) */
-  PetscInt   pattern_gen;   /* the Jacobian pattern the solver was last handed (TslProblemGetPatternGeneration) */
   PetscReal  done_time, done_step_time, done_dt;
   PetscBool  trial;     /* X holds an unconverged trial state (Xold the last converged one) */
   PetscBool  in_output; /* inside a frame: a failure there leaves the output unusable */
