@@ -130,6 +130,62 @@ static PetscBool FreeNodeBlocks(TslProblem p, PetscInt n, const PetscInt ld[], P
   return PETSC_TRUE;
 }
 
+/* A block of whole node blocks (ld = node-major dofs) straight into the CSR values of the Jacobian being
+ * assembled (p->jac_val): every node owned here and no row eliminated by an equation, else false and nothing
+ * added. Each node block's place among a row's blocks is found by binary search in the row's columns (the
+ * elements' map, BuildDirectMap, keeps them; a contact block's nodes change with the pairing): a few searches
+ * per node pair instead of MatSetValues's search per entry. Rows of prescribed or pinned dofs are dropped, as
+ * TslProblemInsert drops them. */
+static PetscBool InsertDirect(TslProblem p, PetscInt n, const PetscInt ld[], const PetscReal K[])
+{
+  const PetscInt bs = p->ndof, nb = n / bs, *ja = p->jac_col;
+  PetscInt       ln[TSL_MAX_ELEM_NODES + 1], place[(TSL_MAX_ELEM_NODES + 1) * (TSL_MAX_ELEM_NODES + 1)];
+  PetscBool      any[TSL_MAX_ELEM_NODES + 1];
+
+  if (!p->jac_val || n % bs || nb > TSL_MAX_ELEM_NODES + 1) return PETSC_FALSE;
+  for (PetscInt a = 0; a < nb; a++) {
+    const PetscInt r0 = ld[a * bs];
+    if (r0 < 0 || r0 % bs || r0 / bs >= p->nown) return PETSC_FALSE;
+    any[a] = PETSC_FALSE;
+    for (PetscInt i = 0; i < bs; i++) {
+      if (ld[a * bs + i] != r0 + i || RowKind(p, r0 + i) == 'e') return PETSC_FALSE;
+      if (RowKind(p, r0 + i) == 'f') any[a] = PETSC_TRUE;
+    }
+    ln[a] = r0 / bs;
+  }
+  for (PetscInt a = 0; a < nb; a++) { /* every place first: nothing is added unless all are found */
+    const PetscInt lo0 = p->jac_row[ln[a] * bs], hi0 = p->jac_row[ln[a] * bs + 1];
+    if (!any[a]) continue; /* a node without a free row: only its diagonal is in the pattern */
+    for (PetscInt b = 0; b < nb; b++) {
+      PetscInt lo = lo0, hi = hi0, col = ln[b] * bs;
+      while (lo < hi) { /* first entry >= col */
+        PetscInt mid = (lo + hi) / 2;
+        if (ja[mid] < col)
+          lo = mid + 1;
+        else
+          hi = mid;
+      }
+      if (lo >= hi0 || ja[lo] != col) return PETSC_FALSE; /* not in the pattern (TslProblemInsert then reports it) */
+      place[a * nb + b] = lo - lo0;
+    }
+  }
+  for (PetscInt a = 0; a < nb; a++) {
+    if (!any[a]) continue;
+    for (PetscInt i = 0; i < bs; i++) {
+      const PetscInt r = ln[a] * bs + i;
+      PetscScalar   *row;
+      if (p->pinned[r] || p->bc[r].active) continue;
+      row = p->jac_val + p->jac_row[r];
+      for (PetscInt b = 0; b < nb; b++) {
+        const PetscReal *src = &K[(a * bs + i) * n + b * bs];
+        PetscScalar     *dst = row + place[a * nb + b];
+        for (PetscInt j = 0; j < bs; j++) dst[j] += src[j];
+      }
+    }
+  }
+  return PETSC_TRUE;
+}
+
 /* Inserts an element block, applying the constraints: rows of prescribed dofs are dropped, rows of
  * dofs eliminated by an equation go to the other terms' rows with weight -c_k/c_0 (T^T R, T^T K). */
 PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[],
@@ -138,6 +194,7 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
   PetscInt bidx[TSL_MAX_ELEM_NODES + 1];
 
   PetscFunctionBeginUser;
+  if (mode == ASM_JACOBIAN && K && InsertDirect(p, n, ld, K)) PetscFunctionReturn(PETSC_SUCCESS);
   if (((mode == ASM_JACOBIAN && K) || mode == ASM_PATTERN) && FreeNodeBlocks(p, n, ld, TSL_MAX_ELEM_NODES + 1, bidx)) {
     if (mode == ASM_PATTERN) PetscCall(MatAdd(p, mode, A, n, ld, n, ld, NULL)); /* every node pair once */
     else PetscCall(MatSetValuesBlockedLocal(A, n / p->ndof, bidx, n / p->ndof, bidx, K, ADD_VALUES));
@@ -581,6 +638,7 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
     PetscCall(DiagonalBlock(P, &Ad));
     PetscCall(MatSeqAIJGetArray(Ad, &p->jac_val));
     PetscCall(MatGetRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &nrow, &p->jac_row, &ja, &done));
+    p->jac_col = ja;
   }
   PetscCall(AssembleLocal(p, ASM_JACOBIAN, xa, xoa, NULL, P, NULL, &bad, &fail));
   if (p->jac_val) {
@@ -588,7 +646,7 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
     PetscBool done;
     PetscCall(MatSeqAIJRestoreArray(Ad, &p->jac_val));
     PetscCall(MatRestoreRowIJ(Ad, 0, PETSC_FALSE, PETSC_FALSE, &nrow, &p->jac_row, &ja, &done));
-    p->jac_val = NULL, p->jac_row = NULL;
+    p->jac_val = NULL, p->jac_row = NULL, p->jac_col = NULL;
   }
   PetscCall(ConstraintRows(p, ASM_JACOBIAN, xa, NULL, P));
   PetscCall(RestoreStates(p, &xl, &xol, &xa, &xoa));

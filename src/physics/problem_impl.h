@@ -140,11 +140,12 @@ struct _p_TslProblem {
    * rows is eliminated by an equation, blk[blk_ptr[e] + a*nb + b] is the place of node b's block among
    * node a's blocks in the local diagonal CSR matrix (whole ndof x ndof blocks, sorted; unset for a node
    * without a free row); blk_ptr[e] = blk_ptr[e+1] otherwise. Rows of prescribed or pinned dofs are skipped
-   * when inserting. During a Jacobian assembly jac_val / jac_row point at that matrix's values and row starts. */
+   * when inserting. During a Jacobian assembly jac_val / jac_row / jac_col point at that matrix's values, row
+   * starts and column indices (the other blocks, contact's, find their places by search: InsertDirect). */
   PetscInt          *blk_ptr;
   unsigned short    *blk;
   PetscScalar       *jac_val;
-  const PetscInt    *jac_row;
+  const PetscInt    *jac_row, *jac_col;
 
   /* explicit force records (element.h, fast.c; TslProblemExplicitRecords), in batches of TSL_FAST_LANES
    * elements of one type: fast_batch[W b + j] the local element in lane j of batch b (-1: an empty lane,
