@@ -80,22 +80,37 @@ PetscErrorCode TslContactPointSetUp(TslContactFaceKind kind, const PetscReal X[]
 PetscErrorCode TslContactPointExpand(PetscInt nu, PetscInt nk, PetscInt nsn, const PetscReal N[], const PetscReal Rk[], const PetscReal Kk[], PetscReal R[],
                                      PetscReal K[])
 {
-  /* expanded dof i is kernel dof row[i] times fac[i]: the secondary face's dofs take the virtual node's
-   * with factor N_b, the others are the kernel's own */
-  PetscInt  row[TSL_CONTACT_S2S3_MAX_DOF];
-  PetscReal fac[TSL_CONTACT_S2S3_MAX_DOF];
-  PetscInt  ne = nu * (nsn + nk - 1), nkd = nu * nk;
+  /* expanded dofs: the secondary face's nu*nsn (node b's unknown c is the virtual node's c with factor N_b), then
+   * the kernel's own nu*(nk - 1) others; row and column blocks by the same rule, each product formed as
+   * (N_b N_b') K_cc' so that the values are those of a factor table fac[ii] fac[jj] K */
+  const PetscInt ns = nu * nsn, nkd = nu * nk, nm = nkd - nu, ne = ns + nm;
 
   PetscFunctionBeginUser;
   PetscCheck(ne <= TSL_CONTACT_S2S3_MAX_DOF, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Expanded contact element too large");
-  for (PetscInt b = 0; b < nsn; b++)
-    for (PetscInt c = 0; c < nu; c++) row[nu * b + c] = c, fac[nu * b + c] = N[b];
-  for (PetscInt i = nu; i < nkd; i++) row[nu * (nsn - 1) + i] = i, fac[nu * (nsn - 1) + i] = 1;
-  if (R)
-    for (PetscInt ii = 0; ii < ne; ii++) R[ii] = fac[ii] * Rk[row[ii]];
-  if (K)
-    for (PetscInt ii = 0; ii < ne; ii++)
-      for (PetscInt jj = 0; jj < ne; jj++) K[ii * ne + jj] = fac[ii] * fac[jj] * Kk[row[ii] * nkd + row[jj]];
+  if (R) {
+    for (PetscInt b = 0; b < nsn; b++)
+      for (PetscInt c = 0; c < nu; c++) R[nu * b + c] += N[b] * Rk[c];
+    for (PetscInt i = 0; i < nm; i++) R[ns + i] += Rk[nu + i];
+  }
+  if (K) {
+    for (PetscInt b = 0; b < nsn; b++)
+      for (PetscInt c = 0; c < nu; c++) {
+        PetscReal       *row = &K[(nu * b + c) * ne];
+        const PetscReal *kr  = &Kk[c * nkd];
+        for (PetscInt bb = 0; bb < nsn; bb++) {
+          const PetscReal w = N[b] * N[bb];
+          for (PetscInt cc = 0; cc < nu; cc++) row[nu * bb + cc] += w * kr[cc];
+        }
+        for (PetscInt j = 0; j < nm; j++) row[ns + j] += N[b] * kr[nu + j];
+      }
+    for (PetscInt i = 0; i < nm; i++) {
+      PetscReal       *row = &K[(ns + i) * ne];
+      const PetscReal *kr  = &Kk[(nu + i) * nkd];
+      for (PetscInt bb = 0; bb < nsn; bb++)
+        for (PetscInt cc = 0; cc < nu; cc++) row[nu * bb + cc] += N[bb] * kr[cc];
+      for (PetscInt j = 0; j < nm; j++) row[ns + j] += kr[nu + j];
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

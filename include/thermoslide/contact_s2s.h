@@ -54,15 +54,17 @@ PetscErrorCode TslContactPointSetUp(TslContactFaceKind kind, const PetscReal X[]
 /* Residual and tangent of a contact point at zeta of a secondary face of family kind: TslContactElement
  * of the input (its node 0 the virtual node set by TslContactPointSetUp) expanded to the element of the
  * secondary face's nodes (first, in face order) and the kernel's other nodes (main segment, smoothing
- * neighbours, in kernel order): R[nu*(nsn + nnode - 1)], K likewise square (row-major, may be NULL).
- * out as TslContactElement's, with out->nnode = nsn + nnode - 1. */
+ * neighbours, in kernel order) and *added* to R[nu*(nsn + nnode - 1)], K likewise square (row-major, may be
+ * NULL): the points of one face pair sum into one block without a copy each. out as TslContactElement's,
+ * with out->nnode = nsn + nnode - 1. */
 PetscErrorCode TslContactPointElement(const TslContactLaw *law, const TslContactInput *in, TslContactFaceKind kind, PetscReal zeta, PetscReal R[],
                                       PetscReal K[], TslContactOutput *out);
 
 /* The chain rule of a contact point: R, K of a kernel element with nk nodes of nu unknowns, node 0 the
  * virtual secondary node x_p = sum_b N_b x_b, expanded to the element of the secondary face's nsn nodes
  * (first) and the kernel's other nodes: R_b = N_b R_s, K_bj = N_b K_sj, K_ib = K_is N_b,
- * K_bb' = N_b K_ss N_b'. R[nu*(nsn + nk - 1)], K likewise square (either may be NULL; Kk then unused). */
+ * K_bb' = N_b K_ss N_b', added to R[nu*(nsn + nk - 1)], K likewise square (either may be NULL; Kk then
+ * unused). */
 PetscErrorCode TslContactPointExpand(PetscInt nu, PetscInt nk, PetscInt nsn, const PetscReal N[], const PetscReal Rk[], const PetscReal Kk[], PetscReal R[],
                                      PetscReal K[]);
 
@@ -119,6 +121,6 @@ void TslContactPointSetUp3(PetscInt nsn, const PetscReal N[], const PetscReal X[
 
 /* Residual and tangent of a 3D contact point: TslContactElement3 of the input (node 0 the virtual node of
  * TslContactPointSetUp3, area = the point's weight) expanded to the secondary face's nsn nodes, then the main
- * face's (TslContactPointExpand): R[4*(nsn + nper)], K square (may be NULL); out->nnode = nsn + nper. */
+ * face's (TslContactPointExpand), added to R[4*(nsn + nper)], K square (may be NULL); out->nnode = nsn + nper. */
 PetscErrorCode TslContactPointElement3(const TslContactLaw *law, const TslContactInput3 *in, PetscInt nsn, const PetscReal N[], PetscReal R[],
                                        PetscReal K[], TslContactOutput *out);

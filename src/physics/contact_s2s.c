@@ -102,29 +102,24 @@ static PetscErrorCode Flush(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, S
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode Accumulate(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[],
-                                 const PetscReal K[], S2SBlock *b)
+/* The block the point with unknowns ld[n] adds to: the current one when it has the same unknowns (the points of
+ * one face pair come one after the other), else a zeroed one after the current is inserted. */
+static PetscErrorCode BlockFor(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], S2SBlock *b)
 {
   PetscFunctionBeginUser;
-  if (b->n != n || memcmp(b->ld, ld, (size_t)n * sizeof(PetscInt))) {
-    PetscCall(Flush(p, mode, A, f, b));
-    b->n = n;
-    memcpy(b->ld, ld, (size_t)n * sizeof(PetscInt));
-    memcpy(b->R, R, (size_t)n * sizeof(PetscReal));
-    if (K) memcpy(b->K, K, (size_t)n * n * sizeof(PetscReal));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  for (PetscInt k = 0; k < n; k++) b->R[k] += R[k];
-  if (K)
-    for (PetscInt k = 0; k < n * n; k++) b->K[k] += K[k];
+  if (b->n == n && !memcmp(b->ld, ld, (size_t)n * sizeof(PetscInt))) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(Flush(p, mode, A, f, b));
+  b->n = n;
+  memcpy(b->ld, ld, (size_t)n * sizeof(PetscInt));
+  PetscCall(PetscArrayzero(b->R, n));
+  if (mode == ASM_JACOBIAN) PetscCall(PetscArrayzero(b->K, n * n));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat)
 {
   TslContactS2S           s = p->s2s;
-  static PetscReal        R[TSL_CONTACT_S2S3_MAX_DOF], K[TSL_CONTACT_S2S3_MAX_DOF * TSL_CONTACT_S2S3_MAX_DOF];
-  static S2SBlock         block;
+  static S2SBlock         block, scratch;
   TslContactNeighbourData nb;
 
   PetscFunctionBeginUser;
@@ -151,10 +146,23 @@ PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const Pe
         PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, NULL, NULL));
         continue;
       }
-      if (p->dim == 3) PetscCall(TslContactPointElement3(&cs->law, &in3, fc->nsn, pt->N, R, mode == ASM_JACOBIAN ? K : NULL, &pt->out));
-      else PetscCall(TslContactPointElement(&cs->law, &in, fc->kind, pt->zeta, R, mode == ASM_JACOBIAN ? K : NULL, &pt->out));
-      if (!fc->assemble) continue; /* another rank inserts this face; the outputs are kept here too */
-      if (f || A) PetscCall(Accumulate(p, mode, A, f, nu * n, ld, R, mode == ASM_JACOBIAN ? K : NULL, &block));
+      {
+        /* the point adds to its face pair's block, or (another rank inserts this face, or nothing is assembled)
+         * to a scratch block: the outputs are kept here too */
+        S2SBlock *b = &block;
+        if (fc->assemble && (f || A))
+          PetscCall(BlockFor(p, mode, A, f, nu * n, ld, b));
+        else {
+          b = &scratch, b->n = 0; /* never inserted */
+          PetscCall(PetscArrayzero(b->R, nu * n));
+          if (mode == ASM_JACOBIAN) PetscCall(PetscArrayzero(b->K, nu * n * nu * n));
+        }
+        if (p->dim == 3)
+          PetscCall(TslContactPointElement3(&cs->law, &in3, fc->nsn, pt->N, b->R, mode == ASM_JACOBIAN ? b->K : NULL, &pt->out));
+        else
+          PetscCall(TslContactPointElement(&cs->law, &in, fc->kind, pt->zeta, b->R, mode == ASM_JACOBIAN ? b->K : NULL, &pt->out));
+      }
+      if (!fc->assemble) continue;
       if (heat) {
         heat->interface += pt->out.heat_flux * pt->out.area;
         heat->dissipation += pt->out.dissipation_rate * pt->out.area;

@@ -166,6 +166,8 @@ static PetscErrorCode Eval(const TslContactLaw *law, Case *c, PetscReal R[], Pet
 {
   PetscFunctionBeginUser;
   TslContactPointSetUp3(c->nsn, c->N, c->X, c->U, &c->in);
+  if (R) PetscCall(PetscArrayzero(R, MAXD)); /* the point's block is added to R, K */
+  if (K) PetscCall(PetscArrayzero(K, MAXD * MAXD));
   PetscCall(TslContactPointElement3(law, &c->in, c->nsn, c->N, R, K, out));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

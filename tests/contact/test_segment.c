@@ -39,6 +39,8 @@ static PetscErrorCode Eval(const TslContactLaw *law, Case *c, PetscReal R[], Pet
 {
   PetscFunctionBeginUser;
   PetscCall(TslContactPointSetUp(c->skind, c->X, c->U, c->zeta, &c->in));
+  if (R) PetscCall(PetscArrayzero(R, TSL_CONTACT_S2S_MAX_DOF)); /* the point's block is added to R, K */
+  if (K) PetscCall(PetscArrayzero(K, TSL_CONTACT_S2S_MAX_DOF * TSL_CONTACT_S2S_MAX_DOF));
   PetscCall(TslContactPointElement(law, &c->in, c->skind, c->zeta, R, K, out));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
