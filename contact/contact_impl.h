@@ -314,9 +314,16 @@ void TslContactFace3Shape(const TslContactFace3 *face, const PetscReal xi[2], Pe
  * xi[2]: derivatives flow through the nodes and through xi (with the second derivatives of N). */
 void TslContactFace3PointDual(const TslContactFace3 *face, const TslDual x[][3], const TslDual xi[2], TslDual p[3], TslDual a[2][3], TslDual N[]);
 
-/* The position alone at fixed parameters xi[2] (a history point): derivatives through the nodes only, the same
- * bits as TslContactFace3PointDual's p at DConst(xi) without its tangents and the parameters' chain rule. */
-void TslContactFace3PointAt(const TslContactFace3 *face, const TslDual x[][3], const PetscReal xi[2], TslDual p[3]);
+/* TslContactFace3PointDual for the kernels' face geometry: node coordinates that are seeded variables (values
+ * x[b][d], derivative 1 in slot slot0 + TSL_CONTACT3_NU b + d; slot0 < 0: constants) at parameters seeded in the
+ * parameters' slots (seed) or constant. The same values and derivatives formed directly: each output's
+ * derivatives are nonzero in the parameters' and the nodes' slots only, where the generic products spend
+ * TSL_DUAL_N operations per term (with the position below, a tenth of a 3D surface-to-surface run). */
+void TslContactFace3PointSeeded(const TslContactFace3 *face, const PetscReal x[][3], PetscInt slot0, const PetscReal xi[2], PetscBool seed,
+                                TslDual p[3], TslDual a[2][3], TslDual N[]);
+/* The position alone at fixed parameters xi[2] (a history point), from the same seeded node coordinates:
+ * derivatives through the nodes only. */
+void TslContactFace3PointAtSeeded(const TslContactFace3 *face, const PetscReal x[][3], PetscInt slot0, const PetscReal xi[2], TslDual p[3]);
 
 /* A root of F(xi) = 0 for two face parameters by Newton, with dF/dxi from the dual slots TSL_DUAL_XI,
  * TSL_DUAL_ETA of fn's F: from xi[] as given, steps limited to `step` (reference units), a step down

@@ -151,18 +151,59 @@ void TslContactFace3PointDual(const TslContactFace3 *face, const TslDual x[][3],
   }
 }
 
-void TslContactFace3PointAt(const TslContactFace3 *face, const TslDual x[][3], const PetscReal xi[2], TslDual p[3])
+/* Zero derivatives but in the slot when it is one the variant carries. */
+static inline void SetSlot(TslDual *r, PetscInt slot, PetscReal v)
 {
-  PetscReal z[3] = {xi[0], xi[1], 0}, Nv[TSL_MAX_ELEM_NODES], d[TSL_MAX_ELEM_NODES * 3];
+  if (slot >= 0 && slot < TSL_DUAL_N) r->d[slot] = v;
+}
 
-  face->geom->shape(z, Nv, d);
-  for (PetscInt k = 0; k < 3; k++) p[k] = x[0][k];
-  for (PetscInt b = 1; b < face->geom->nnode; b++)
-    for (PetscInt k = 0; k < 3; k++) { /* DAccMul(&p[k], &DConst(N_b), &e) with e = x_b - x_0: N_b's zero slots add nothing */
-      TslDual e = DSub(x[b][k], x[0][k]);
-      p[k].v += Nv[b] * e.v;
-      for (PetscInt i = 0; i < TSL_DUAL_N; i++) p[k].d[i] += Nv[b] * e.d[i];
+void TslContactFace3PointSeeded(const TslContactFace3 *face, const PetscReal x[][3], PetscInt slot0, const PetscReal xi[2], PetscBool seed,
+                                TslDual p[3], TslDual a[2][3], TslDual N[])
+{
+  const PetscInt nn = face->geom->nnode;
+  PetscReal      Nv[TSL_CONTACT3_MAX_FACE_NODES], dN[TSL_CONTACT3_MAX_FACE_NODES][2], d2N[TSL_CONTACT3_MAX_FACE_NODES][2][2];
+
+  TslContactFace3Shape(face, xi, Nv, dN, d2N);
+  for (PetscInt b = 0; N && b < nn; b++) {
+    N[b] = DConst(Nv[b]);
+    if (seed) N[b].d[TSL_DUAL_XI] = dN[b][0], N[b].d[TSL_DUAL_ETA] = dN[b][1];
+  }
+  for (PetscInt d = 0; d < 3; d++) {
+    TslDual  *q[3]  = {&p[d], &a[0][d], &a[1][d]};
+    PetscReal s0[3] = {1, 0, 0};
+
+    p[d] = DConst(x[0][d]), a[0][d] = DConst(0), a[1][d] = DConst(0);
+    for (PetscInt b = 1; b < nn; b++) {
+      const PetscReal e = x[b][d] - x[0][d], f[3] = {Nv[b], dN[b][0], dN[b][1]};
+      for (PetscInt k = 0; k < 3; k++) { /* p, a_1, a_2: the values f_b e_b, the parameters' slots from the next derivatives */
+        q[k]->v += f[k] * e;
+        s0[k] -= f[k];
+        SetSlot(q[k], slot0 < 0 ? -1 : slot0 + TSL_CONTACT3_NU * b + d, f[k]);
+      }
+      if (seed) {
+        p[d].d[TSL_DUAL_XI] += dN[b][0] * e, p[d].d[TSL_DUAL_ETA] += dN[b][1] * e;
+        for (PetscInt i = 0; i < 2; i++) a[i][d].d[TSL_DUAL_XI] += d2N[b][i][0] * e, a[i][d].d[TSL_DUAL_ETA] += d2N[b][i][1] * e;
+      }
     }
+    for (PetscInt k = 0; k < 3; k++) SetSlot(q[k], slot0 < 0 ? -1 : slot0 + d, s0[k]);
+  }
+}
+
+void TslContactFace3PointAtSeeded(const TslContactFace3 *face, const PetscReal x[][3], PetscInt slot0, const PetscReal xi[2], TslDual p[3])
+{
+  PetscReal z[3] = {xi[0], xi[1], 0}, Nv[TSL_MAX_ELEM_NODES], dz[TSL_MAX_ELEM_NODES * 3];
+
+  face->geom->shape(z, Nv, dz);
+  for (PetscInt k = 0; k < 3; k++) {
+    PetscReal s0 = 1;
+    p[k]         = DConst(x[0][k]);
+    for (PetscInt b = 1; b < face->geom->nnode; b++) {
+      p[k].v += Nv[b] * (x[b][k] - x[0][k]);
+      s0 -= Nv[b];
+      SetSlot(&p[k], slot0 < 0 ? -1 : slot0 + TSL_CONTACT3_NU * b + k, Nv[b]);
+    }
+    SetSlot(&p[k], slot0 < 0 ? -1 : slot0 + k, s0);
+  }
 }
 
 PetscBool TslContactSolve2(const PetscReal A[2][2], const PetscReal b[2], PetscReal x[2])

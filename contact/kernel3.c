@@ -11,6 +11,8 @@ typedef struct {
   const TslContactFace3 *face;
   PetscInt               nper;
   TslDual                xs[3], xm[TSL_CONTACT3_MAX_FACE_NODES][3];
+  PetscReal              xmv[TSL_CONTACT3_MAX_FACE_NODES][3]; /* xm's values */
+  PetscInt               slot0;                               /* xm[a][d] is seeded in slot slot0 + NU a + d (-1: constants) */
   PetscReal              nn[TSL_CONTACT3_MAX_FACE_NODES][3]; /* nodal normals of the smoothing */
   PetscReal              s;                                  /* smoothing fraction */
   PetscReal              h;                                  /* face size (current): tolerances */
@@ -27,13 +29,14 @@ static PetscErrorCode GeomSetUp(const TslContactInput3 *in, PetscBool seed, Geom
   PetscCheck(in->smoothing >= 0 && in->smoothing < 0.5, PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Contact smoothing fraction %g outside [0, 0.5)",
              (double)in->smoothing);
   geo->nper = geo->face->geom->nnode;
-  geo->s    = in->smoothing;
+  geo->s     = in->smoothing;
+  geo->slot0 = seed ? TSL_DUAL_DOF + NU : -1;
   for (PetscInt d = 0; d < 3; d++) geo->xs[d] = DVar((in->x[0][d] - O[d]) + in->u[0][d], seed ? TSL_DUAL_DOF + d : -1);
   for (PetscInt a = 0; a < geo->nper; a++)
     for (PetscInt d = 0; d < 3; d++) {
       geo->xm[a][d] = DVar((in->x[1 + a][d] - O[d]) + in->u[1 + a][d], seed ? TSL_DUAL_DOF + NU * (1 + a) + d : -1);
       geo->nn[a][d] = in->nodal_normal[a][d];
-      xc[3 * a + d] = geo->xm[a][d].v;
+      xc[3 * a + d] = geo->xmv[a][d] = geo->xm[a][d].v;
     }
   geo->h = TslContactFace3Size(geo->face, xc);
   PetscCheck(geo->h > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "3D contact face with coincident nodes");
@@ -46,11 +49,34 @@ static PetscErrorCode GeomSetUp(const TslContactInput3 *in, PetscBool seed, Geom
  * Written as c + beta |c| sum_a N_a (nn_a - n_f), c = a1 x a2 (the same direction, as sum N_a = 1): with
  * nodal normals equal to the face normal the smoothing term is exactly zero and n is the face normal to
  * the last bit. */
+/* Whether the parameters' derivatives are those of seeded parameters (*seed) or none: the face point can then be
+ * formed from the seeded node coordinates directly (TslContactFace3PointSeeded). */
+static PetscBool PlainParameters(const TslDual xi[2], PetscBool *seed)
+{
+  *seed = (PetscBool)(xi[0].d[TSL_DUAL_XI] == 1 && xi[1].d[TSL_DUAL_ETA] == 1);
+  for (PetscInt i = 0; i < 2; i++)
+    for (PetscInt j = 0; j < TSL_DUAL_N; j++)
+      if (xi[i].d[j] != (*seed && j == TSL_DUAL_XI + i ? 1 : 0)) return PETSC_FALSE;
+  return PETSC_TRUE;
+}
+
+/* The face point, tangents and shape functions at xi (TslContactFace3PointDual), through the seeded form when it applies. */
+static void FacePoint3(const Geom3 *geo, const TslDual xi[2], TslDual p[3], TslDual a[2][3], TslDual N[])
+{
+  PetscBool seed;
+
+  if (PlainParameters(xi, &seed)) {
+    const PetscReal xv[2] = {xi[0].v, xi[1].v};
+    TslContactFace3PointSeeded(geo->face, (const PetscReal(*)[3])geo->xmv, geo->slot0, xv, seed, p, a, N);
+  } else
+    TslContactFace3PointDual(geo->face, (const TslDual(*)[3])geo->xm, xi, p, a, N);
+}
+
 static void Surface(const Geom3 *geo, const TslDual xi[2], TslDual p[3], TslDual a[2][3], TslDual N[], TslDual n[3])
 {
   TslDual c[3], len;
 
-  TslContactFace3PointDual(geo->face, (const TslDual(*)[3])geo->xm, xi, p, a, N);
+  FacePoint3(geo, xi, p, a, N);
   DCross(a[0], a[1], c);
   len = DSqrt(DDot3(c, c));
   if (geo->s > 0) {
@@ -60,9 +86,12 @@ static void Surface(const Geom3 *geo, const TslDual xi[2], TslDual p[3], TslDual
     for (PetscInt i = 0; i < nd; i++) keep = DMul(keep, DAddC(DScale(-1, DSmoothStep(DAddC(DScale(-1 / geo->s, d[i]), 1))), 1));
     beta = DAddC(DScale(-1, keep), 1);
     if (beta.v > 0) {
+      TslDual nf[3]; /* the face normal */
+      for (PetscInt k = 0; k < 3; k++) nf[k] = DDiv(c[k], len);
       for (PetscInt b = 0; b < geo->nper; b++)
         for (PetscInt k = 0; k < 3; k++) {
-          TslDual e = DSub(DConst(geo->nn[b][k]), DDiv(c[k], len));
+          TslDual e = DScale(-1, nf[k]);
+          e.v += geo->nn[b][k]; /* nn - nf, as DSub(DConst(nn), nf) forms it */
           DAccMul(&m[k], &N[b], &e);
         }
       for (PetscInt k = 0; k < 3; k++) c[k] = DAdd(c[k], DMul(DMul(beta, len), m[k]));
@@ -220,7 +249,7 @@ static PetscErrorCode AnchorFunction(void *ctx, const PetscReal xi[2], TslDual G
   TslDual       xv[2] = {DVar(xi[0], TSL_DUAL_XI), DVar(xi[1], TSL_DUAL_ETA)}, q[3], a[2][3];
 
   PetscFunctionBeginUser;
-  TslContactFace3PointDual(an->geo->face, (const TslDual(*)[3])an->geo->xm, xv, q, a, NULL);
+  FacePoint3(an->geo, xv, q, a, NULL);
   for (PetscInt c = 0; c < 2; c++) {
     G[c] = DConst(-an->r[c]);
     for (PetscInt d = 0; d < 3; d++) G[c] = DAdd(G[c], DScale(an->t[c][d], DAddC(DScale(-1, q[d]), an->p[d])));
@@ -256,7 +285,7 @@ static void SlipFrom(const Geom3 *geo, const TslDual p[3], PetscReal xb, PetscRe
   const PetscReal xv[2] = {xb, eb};
   TslDual         q[3], dx[3];
 
-  TslContactFace3PointAt(geo->face, (const TslDual(*)[3])geo->xm, xv, q);
+  TslContactFace3PointAtSeeded(geo->face, (const PetscReal(*)[3])geo->xmv, geo->slot0, xv, q);
   for (PetscInt d = 0; d < 3; d++) dx[d] = DSub(p[d], q[d]);
   for (PetscInt c = 0; c < 2; c++) s[c] = DDot3(dx, t[c]);
 }

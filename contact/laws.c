@@ -270,13 +270,24 @@ PetscErrorCode TslContactHeatFlux(const TslContactLaw *law, TslDual pN, PetscBoo
 void TslContactResidualRows(PetscReal area, PetscReal f, PetscInt dim, PetscInt nu, PetscInt nnode, PetscInt nper, const TslDual N[],
                             const TslDual traction[], TslDual q, TslDual heat, TslDual Rd[])
 {
-  for (PetscInt i = 0; i < nu * nnode; i++) Rd[i] = DConst(0);
-  for (PetscInt d = 0; d < dim; d++) {
-    Rd[d] = DScale(-area, traction[d]);
-    for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + d] = DScale(area, DMul(N[a], traction[d]));
+  const TslDual qs = DAdd(q, DScale(f, heat)), qm = DSub(q, DScale(1 - f, heat));
+
+  /* each row formed in place, the operations of DScale(area, DMul(N_a, x)) (the temporaries were most of its cost) */
+  for (PetscInt a = 0; a < nnode; a++) /* rows no law writes: twist, and the smoothing neighbours' nodes */
+    for (PetscInt k = a > nper ? 0 : dim + 1; k < nu; k++) Rd[nu * a + k] = DConst(0);
+  for (PetscInt c = 0; c <= dim; c++) {
+    const TslDual *x = c < dim ? &traction[c] : &qs;
+    TslDual       *r = &Rd[c];
+    r->v             = -area * x->v;
+    for (PetscInt i = 0; i < TSL_DUAL_N; i++) r->d[i] = -area * x->d[i];
+    if (c == dim) x = &qm;
+    for (PetscInt a = 0; a < nper; a++) {
+      const TslDual *n = &N[a];
+      r                = &Rd[nu * (a + 1) + c];
+      r->v             = area * (n->v * x->v);
+      for (PetscInt i = 0; i < TSL_DUAL_N; i++) r->d[i] = area * (n->d[i] * x->v + n->v * x->d[i]);
+    }
   }
-  Rd[dim] = DScale(-area, DAdd(q, DScale(f, heat)));
-  for (PetscInt a = 0; a < nper; a++) Rd[nu * (a + 1) + dim] = DScale(area, DMul(N[a], DSub(q, DScale(1 - f, heat))));
 }
 
 void TslContactDualExtract(PetscInt ndof, const TslDual Rd[], PetscReal R[], PetscReal K[])
