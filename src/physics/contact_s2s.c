@@ -120,11 +120,13 @@ PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const Pe
 {
   TslContactS2S           s = p->s2s;
   static S2SBlock         block, scratch;
+  static S2S3InputCache   cache; /* emptied below: xa changes between calls */
   TslContactNeighbourData nb;
 
   PetscFunctionBeginUser;
   if (!s) PetscFunctionReturn(PETSC_SUCCESS);
-  block.n = 0;
+  block.n  = 0;
+  cache.fc = NULL;
   for (PetscInt i = 0; i < s->nface; i++) {
     const S2SFace           *fc = &s->face[i];
     const TslContactSurface *cs = &p->csurf[fc->pair];
@@ -138,7 +140,8 @@ PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const Pe
       PetscInt         nodes[TSL_CONTACT_S2S3_MAX_NODES], n, ld[TSL_CONTACT_S2S3_MAX_DOF];
 
       if (pt->seg < 0) continue;
-      if (p->dim == 3) PetscCall(TslS2S3PointInput(p, fc, pt, xa, &in3, nodes, &n));
+      if (p->dim == 3)
+        PetscCall(TslS2S3PointInput(p, fc, pt, xa, &cache, &in3, nodes, &n));
       else PetscCall(PointInput(p, fc, pt, xa, &in, nodes, &n, &nb));
       for (PetscInt a = 0; a < n; a++)
         for (PetscInt c = 0; c < nu; c++) ld[nu * a + c] = nodes[a] * p->ndof + cs->slot[c];

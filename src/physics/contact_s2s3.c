@@ -48,23 +48,39 @@ static void MainFace(TslProblem p, const TslContactSurface *cs, const PetscScala
   }
 }
 
-PetscErrorCode TslS2S3PointInput(TslProblem p, const S2SFace *fc, const S2SPoint *pt, const PetscScalar *xa, TslContactInput3 *in, PetscInt nodes[],
-                                 PetscInt *n)
+PetscErrorCode TslS2S3PointInput(TslProblem p, const S2SFace *fc, const S2SPoint *pt, const PetscScalar *xa, S2S3InputCache *cache,
+                                 TslContactInput3 *in, PetscInt nodes[], PetscInt *n)
 {
-  TslContactNode cn;
-  PetscInt       kn[1 + TSL_CONTACT3_MAX_FACE_NODES], nk;
-  PetscReal      X[3 * TSL_CONTACT3_MAX_FACE_NODES], U[TSL_CONTACT3_NU * TSL_CONTACT3_MAX_FACE_NODES];
-
   PetscFunctionBeginUser;
-  TslS2SPointNode(fc, pt, &cn);
-  PetscCall(TslProblemContact3Input(p, &cn, xa, in, kn, &nk));
+  if (cache && cache->fc == fc && cache->seg == pt->seg) { /* the same face pair as the last point */
+    *in      = cache->in;
+    in->area = pt->length;
+    in->hist = pt->hist;
+    *n       = cache->n;
+    PetscCall(PetscArraycpy(nodes, cache->nodes, cache->n));
+  } else {
+    TslContactNode cn;
+    PetscInt       kn[1 + TSL_CONTACT3_MAX_FACE_NODES], nk;
+    PetscReal      X[3 * TSL_CONTACT3_MAX_FACE_NODES], U[TSL_CONTACT3_NU * TSL_CONTACT3_MAX_FACE_NODES];
+
+    TslS2SPointNode(fc, pt, &cn);
+    PetscCall(TslProblemContact3Input(p, &cn, xa, in, kn, &nk));
+    PetscCall(TslS2S3FaceData(p, fc, xa, X, U));
+    TslS2SPointNodes(fc, kn, nk, nodes, n);
+    if (cache) {
+      cache->fc = fc, cache->seg = pt->seg, cache->in = *in, cache->n = *n;
+      PetscCall(PetscArraycpy(cache->nodes, nodes, *n));
+      PetscCall(PetscArraycpy(cache->X, X, 3 * fc->nsn));
+      PetscCall(PetscArraycpy(cache->U, U, TSL_CONTACT3_NU * fc->nsn));
+    }
+    if (!cache) TslContactPointSetUp3(fc->nsn, pt->N, X, U, in);
+  }
+  if (cache) TslContactPointSetUp3(fc->nsn, pt->N, cache->X, cache->U, in); /* the point's own place */
+  in->has_guess = PETSC_FALSE;
   if (pt->out.nnode > 0) { /* evaluated before, on this main face (a point keeps its face): start from there */
     in->guess[0] = pt->out.xi_raw, in->guess[1] = pt->out.eta_raw;
     in->has_guess = PETSC_TRUE;
   }
-  PetscCall(TslS2S3FaceData(p, fc, xa, X, U));
-  TslContactPointSetUp3(fc->nsn, pt->N, X, U, in);
-  TslS2SPointNodes(fc, kn, nk, nodes, n);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -116,7 +132,7 @@ static PetscErrorCode PortableHistory(TslProblem p, const S2SFace *fc, const S2S
     if (pt->seg < 0) continue;
     kind = cs->kind[pt->seg];
     ym   = &fx[3 * cs->nper * pt->seg];
-    PetscCall(TslS2S3PointInput(p, fc, pt, xa, &in, nodes, &n));
+    PetscCall(TslS2S3PointInput(p, fc, pt, xa, NULL, &in, nodes, &n));
     PetscCall(TslContactElement3(&cs->law, &in, NULL, NULL, &out));
     xi[0] = out.xi, xi[1] = out.eta;
     PetscCall(TslContactFace3Evaluate(kind, ym, xi, x0, NULL));
@@ -194,7 +210,7 @@ static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, Pe
       pt->out  = old[q - start].out;
       continue;
     }
-    PetscCall(TslS2S3PointInput(p, fc, pt, xa, &in, nodes, &n));
+    PetscCall(TslS2S3PointInput(p, fc, pt, xa, NULL, &in, nodes, &n));
     for (PetscInt d = 0; d < 3; d++) yp[d] = in.x[0][d] + in.u[0][d];
     PetscCall(TslContactFace3Project(kind, ym, yp, xi));
     PetscCall(TslContactStateStart3(xi, &pt->hist));

@@ -45,8 +45,17 @@ void TslS2SCompareCut(const S2SPoint *old, PetscInt nold, const S2SPoint *pnew, 
 
 /* 3D (contact_s2s3.c). */
 PetscErrorCode TslS2S3FaceData(TslProblem p, const S2SFace *fc, const PetscScalar *xa, PetscReal X[], PetscReal U[]);
-PetscErrorCode TslS2S3PointInput(TslProblem p, const S2SFace *fc, const S2SPoint *pt, const PetscScalar *xa, TslContactInput3 *in, PetscInt nodes[],
-                                 PetscInt *n);
+/* The kernel input of the last point's face pair (TslS2S3PointInput): the points of one pair come one after the
+ * other and share everything but their own place, weight, history and projection start. fc = NULL: empty; the
+ * caller empties it whenever the state xa changes. */
+typedef struct {
+  const S2SFace   *fc;
+  PetscInt         seg, n, nodes[TSL_CONTACT_S2S3_MAX_NODES];
+  TslContactInput3 in;
+  PetscReal        X[3 * TSL_CONTACT3_MAX_FACE_NODES], U[TSL_CONTACT3_NU * TSL_CONTACT3_MAX_FACE_NODES];
+} S2S3InputCache;
+PetscErrorCode TslS2S3PointInput(TslProblem p, const S2SFace *fc, const S2SPoint *pt, const PetscScalar *xa, S2S3InputCache *cache,
+                                 TslContactInput3 *in, PetscInt nodes[], PetscInt *n);
 PetscErrorCode TslS2S3SearchPair(TslProblem p, PetscInt k, S2SPoint *old, PetscInt nold, const PetscScalar *xa, PetscInt *changed);
 PetscBool      TslS2S3Departed(TslProblem p, const S2SPoint *pt, PetscInt pair);
 PetscErrorCode TslS2S3Normals(TslProblem p, const PetscScalar *xa);
