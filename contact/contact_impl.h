@@ -322,7 +322,8 @@ void TslContactFace3PointDual(const TslContactFace3 *face, const TslDual x[][3],
 void TslContactFace3PointSeeded(const TslContactFace3 *face, const PetscReal x[][3], PetscInt slot0, const PetscReal xi[2], PetscBool seed,
                                 TslDual p[3], TslDual a[2][3], TslDual N[]);
 /* The position alone at fixed parameters xi[2] (a history point), from the same seeded node coordinates:
- * derivatives through the nodes only. */
+ * derivatives through the nodes only. Kept apart from TslContactFace3PointSeeded (a NULL a there): the tangents'
+ * loop bound and the second derivatives it would then carry cost 2 % of a 3D surface-to-surface run. */
 void TslContactFace3PointAtSeeded(const TslContactFace3 *face, const PetscReal x[][3], PetscInt slot0, const PetscReal xi[2], TslDual p[3]);
 
 /* A root of F(xi) = 0 for two face parameters by Newton, with dF/dxi from the dual slots TSL_DUAL_XI,

@@ -130,59 +130,73 @@ static PetscBool FreeNodeBlocks(TslProblem p, PetscInt n, const PetscInt ld[], P
   return PETSC_TRUE;
 }
 
+/* The place of node column block `col` (its first column) among the blocks of the CSR row ja[lo0..hi0) (whole
+ * node blocks, sorted), or -1 when the row does not hold it. */
+static PetscInt BlockPlace(const PetscInt ja[], PetscInt lo0, PetscInt hi0, PetscInt bs, PetscInt col)
+{
+  PetscInt lo = lo0, hi = hi0;
+
+  while (lo < hi) { /* first entry >= col */
+    PetscInt mid = (lo + hi) / 2;
+    if (ja[mid] < col)
+      lo = mid + 1;
+    else
+      hi = mid;
+  }
+  return lo < hi0 && ja[lo] == col && (lo - lo0) % bs == 0 ? (lo - lo0) / bs : -1;
+}
+
+/* Adds the block K (nb node blocks, node-major, ld = ln[a]*bs + i) to the Jacobian's CSR values (p->jac_val):
+ * node b's block of node a's rows at block place pos[a*nb + b]. Rows of prescribed or pinned dofs are dropped,
+ * as TslProblemInsert drops them (a node without a free row has no places: all its rows are dropped). */
+static void AddNodeBlocks(TslProblem p, PetscInt nb, const PetscInt ln[], const unsigned short pos[], const PetscReal K[])
+{
+  const PetscInt bs = p->ndof, nd = nb * bs;
+
+  for (PetscInt a = 0; a < nb; a++)
+    for (PetscInt i = 0; i < bs; i++) {
+      const PetscInt   lr  = ln[a] * bs + i;
+      const PetscReal *src = &K[(a * bs + i) * nd];
+      PetscScalar     *row;
+      if (p->pinned[lr] || p->bc[lr].active) continue;
+      row = p->jac_val + p->jac_row[lr];
+      for (PetscInt b = 0; b < nb; b++) {
+        PetscScalar *dst = row + bs * pos[a * nb + b];
+        for (PetscInt j = 0; j < bs; j++) dst[j] += src[b * bs + j];
+      }
+    }
+}
+
 /* A block of whole node blocks (ld = node-major dofs) straight into the CSR values of the Jacobian being
  * assembled (p->jac_val): every node owned here and no row eliminated by an equation, else false and nothing
- * added. Each node block's place among a row's blocks is found by binary search in the row's columns (the
- * elements' map, BuildDirectMap, keeps them; a contact block's nodes change with the pairing): a few searches
- * per node pair instead of MatSetValues's search per entry. Rows of prescribed or pinned dofs are dropped, as
- * TslProblemInsert drops them. */
+ * added. The places are found by binary search in the rows (the elements' map, BuildDirectMap, keeps them; a
+ * contact block's nodes change with the pairing): a search per node pair instead of MatSetValues's per entry. */
 static PetscBool InsertDirect(TslProblem p, PetscInt n, const PetscInt ld[], const PetscReal K[])
 {
-  const PetscInt bs = p->ndof, nb = n / bs, *ja = p->jac_col;
-  PetscInt       ln[TSL_MAX_ELEM_NODES + 1], place[(TSL_MAX_ELEM_NODES + 1) * (TSL_MAX_ELEM_NODES + 1)];
-  PetscBool      any[TSL_MAX_ELEM_NODES + 1];
+  const PetscInt bs = p->ndof, nb = n / bs;
+  PetscInt       ln[TSL_MAX_ELEM_NODES + 1];
+  unsigned short pos[(TSL_MAX_ELEM_NODES + 1) * (TSL_MAX_ELEM_NODES + 1)];
 
   if (!p->jac_val || n % bs || nb > TSL_MAX_ELEM_NODES + 1) return PETSC_FALSE;
   for (PetscInt a = 0; a < nb; a++) {
     const PetscInt r0 = ld[a * bs];
     if (r0 < 0 || r0 % bs || r0 / bs >= p->nown) return PETSC_FALSE;
-    any[a] = PETSC_FALSE;
-    for (PetscInt i = 0; i < bs; i++) {
+    for (PetscInt i = 0; i < bs; i++)
       if (ld[a * bs + i] != r0 + i || RowKind(p, r0 + i) == 'e') return PETSC_FALSE;
-      if (RowKind(p, r0 + i) == 'f') any[a] = PETSC_TRUE;
-    }
     ln[a] = r0 / bs;
   }
   for (PetscInt a = 0; a < nb; a++) { /* every place first: nothing is added unless all are found */
-    const PetscInt lo0 = p->jac_row[ln[a] * bs], hi0 = p->jac_row[ln[a] * bs + 1];
-    if (!any[a]) continue; /* a node without a free row: only its diagonal is in the pattern */
+    PetscBool free = PETSC_FALSE;
+    for (PetscInt i = 0; i < bs; i++)
+      if (RowKind(p, ln[a] * bs + i) == 'f') free = PETSC_TRUE;
+    if (!free) continue; /* only its diagonal is in the pattern, and all its rows are dropped */
     for (PetscInt b = 0; b < nb; b++) {
-      PetscInt lo = lo0, hi = hi0, col = ln[b] * bs;
-      while (lo < hi) { /* first entry >= col */
-        PetscInt mid = (lo + hi) / 2;
-        if (ja[mid] < col)
-          lo = mid + 1;
-        else
-          hi = mid;
-      }
-      if (lo >= hi0 || ja[lo] != col) return PETSC_FALSE; /* not in the pattern (TslProblemInsert then reports it) */
-      place[a * nb + b] = lo - lo0;
+      const PetscInt k = BlockPlace(p->jac_col, p->jac_row[ln[a] * bs], p->jac_row[ln[a] * bs + 1], bs, ln[b] * bs);
+      if (k < 0 || k >= 65536) return PETSC_FALSE; /* not in the pattern (TslProblemInsert then reports it) */
+      pos[a * nb + b] = (unsigned short)k;
     }
   }
-  for (PetscInt a = 0; a < nb; a++) {
-    if (!any[a]) continue;
-    for (PetscInt i = 0; i < bs; i++) {
-      const PetscInt r = ln[a] * bs + i;
-      PetscScalar   *row;
-      if (p->pinned[r] || p->bc[r].active) continue;
-      row = p->jac_val + p->jac_row[r];
-      for (PetscInt b = 0; b < nb; b++) {
-        const PetscReal *src = &K[(a * bs + i) * n + b * bs];
-        PetscScalar     *dst = row + place[a * nb + b];
-        for (PetscInt j = 0; j < bs; j++) dst[j] += src[j];
-      }
-    }
-  }
+  AddNodeBlocks(p, nb, ln, pos, K);
   return PETSC_TRUE;
 }
 
@@ -261,22 +275,9 @@ static PetscErrorCode InsertElement(TslProblem p, AsmMode mode, Mat A, PetscScal
 {
   PetscFunctionBeginUser;
   if (mode == ASM_JACOBIAN && K && p->jac_val && p->blk_ptr[e + 1] > p->blk_ptr[e]) {
-    const PetscInt        bs = p->ndof, nb = d->n, nd = d->nd;
-    const unsigned short *pos = &p->blk[p->blk_ptr[e]];
-    for (PetscInt a = 0; a < nb; a++) {
-      const PetscInt la = d->ld[a * bs] / bs;
-      for (PetscInt i = 0; i < bs; i++) {
-        const PetscInt   lr = la * bs + i;
-        PetscScalar     *row;
-        const PetscReal *src = &K[(a * bs + i) * nd];
-        if (p->pinned[lr] || p->bc[lr].active) continue; /* a constrained row: dropped, as TslProblemInsert drops it */
-        row = p->jac_val + p->jac_row[lr];
-        for (PetscInt b = 0; b < nb; b++) {
-          PetscScalar *dst = row + bs * pos[a * nb + b];
-          for (PetscInt j = 0; j < bs; j++) dst[j] += src[b * bs + j];
-        }
-      }
-    }
+    PetscInt ln[TSL_MAX_ELEM_NODES + 1];
+    for (PetscInt a = 0; a < d->n; a++) ln[a] = d->ld[a * p->ndof] / p->ndof;
+    AddNodeBlocks(p, d->n, ln, &p->blk[p->blk_ptr[e]], K);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(TslProblemInsert(p, mode, A, f, d->nd, d->ld, R, K));
@@ -720,15 +721,9 @@ static PetscErrorCode BuildDirectMap(TslProblem p, Mat J)
         if (RowKind(p, r + i) == 'f') free = PETSC_TRUE;
       if (!free) continue; /* all rows skipped at insertion */
       for (PetscInt b = 0; b < nb; b++) {
-        PetscInt lo = lo0, hi = hi0, col = ln[b] * bs;
-        while (lo < hi) { /* first entry >= col */
-          PetscInt mid = (lo + hi) / 2;
-          if (ja[mid] < col) lo = mid + 1;
-          else hi = mid;
-        }
-        PetscCheck(lo < hi0 && ja[lo] == col && (lo - lo0) % bs == 0 && (lo - lo0) / bs < 65536, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                   "Jacobian pattern without the element's node block");
-        p->blk[p->blk_ptr[e] + a * nb + b] = (unsigned short)((lo - lo0) / bs);
+        const PetscInt place = BlockPlace(ja, lo0, hi0, bs, ln[b] * bs);
+        PetscCheck(place >= 0 && place < 65536, PETSC_COMM_SELF, PETSC_ERR_PLIB, "Jacobian pattern without the element's node block");
+        p->blk[p->blk_ptr[e] + a * nb + b] = (unsigned short)place;
       }
     }
   }

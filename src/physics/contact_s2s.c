@@ -145,12 +145,8 @@ PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const Pe
       else PetscCall(PointInput(p, fc, pt, xa, &in, nodes, &n, &nb));
       for (PetscInt a = 0; a < n; a++)
         for (PetscInt c = 0; c < nu; c++) ld[nu * a + c] = nodes[a] * p->ndof + cs->slot[c];
-      if (mode == ASM_PATTERN) { /* the node pairs once per run of points on one main face */
-        if (block.n != nu * n || memcmp(block.ld, ld, (size_t)(nu * n) * sizeof(PetscInt))) {
-          PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, NULL, NULL));
-          block.n = nu * n;
-          memcpy(block.ld, ld, (size_t)(nu * n) * sizeof(PetscInt));
-        }
+      if (mode == ASM_PATTERN) { /* a face pair's node pairs once, when its block is flushed */
+        PetscCall(BlockFor(p, mode, A, f, nu * n, ld, &block));
         continue;
       }
       {
@@ -176,7 +172,7 @@ PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const Pe
         heat->friction_heat += pt->out.heat_generation * pt->out.area;
       }
     }
-    if ((f || A) && mode != ASM_PATTERN) PetscCall(Flush(p, mode, A, f, &block));
+    if (f || A) PetscCall(Flush(p, mode, A, f, &block));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -51,36 +51,29 @@ static void MainFace(TslProblem p, const TslContactSurface *cs, const PetscScala
 PetscErrorCode TslS2S3PointInput(TslProblem p, const S2SFace *fc, const S2SPoint *pt, const PetscScalar *xa, S2S3InputCache *cache,
                                  TslContactInput3 *in, PetscInt nodes[], PetscInt *n)
 {
+  S2S3InputCache local, *c = cache ? cache : &local;
+
   PetscFunctionBeginUser;
-  if (cache && cache->fc == fc && cache->seg == pt->seg) { /* the same face pair as the last point */
-    *in      = cache->in;
-    in->area = pt->length;
-    in->hist = pt->hist;
-    *n       = cache->n;
-    PetscCall(PetscArraycpy(nodes, cache->nodes, cache->n));
-  } else {
+  if (!cache || c->fc != fc || c->seg != pt->seg) { /* another face pair than the last point's */
     TslContactNode cn;
     PetscInt       kn[1 + TSL_CONTACT3_MAX_FACE_NODES], nk;
-    PetscReal      X[3 * TSL_CONTACT3_MAX_FACE_NODES], U[TSL_CONTACT3_NU * TSL_CONTACT3_MAX_FACE_NODES];
 
     TslS2SPointNode(fc, pt, &cn);
-    PetscCall(TslProblemContact3Input(p, &cn, xa, in, kn, &nk));
-    PetscCall(TslS2S3FaceData(p, fc, xa, X, U));
-    TslS2SPointNodes(fc, kn, nk, nodes, n);
-    if (cache) {
-      cache->fc = fc, cache->seg = pt->seg, cache->in = *in, cache->n = *n;
-      PetscCall(PetscArraycpy(cache->nodes, nodes, *n));
-      PetscCall(PetscArraycpy(cache->X, X, 3 * fc->nsn));
-      PetscCall(PetscArraycpy(cache->U, U, TSL_CONTACT3_NU * fc->nsn));
-    }
-    if (!cache) TslContactPointSetUp3(fc->nsn, pt->N, X, U, in);
+    PetscCall(TslProblemContact3Input(p, &cn, xa, &c->in, kn, &nk));
+    PetscCall(TslS2S3FaceData(p, fc, xa, c->X, c->U));
+    TslS2SPointNodes(fc, kn, nk, c->nodes, &c->n);
+    c->fc = fc, c->seg = pt->seg;
   }
-  if (cache) TslContactPointSetUp3(fc->nsn, pt->N, cache->X, cache->U, in); /* the point's own place */
-  in->has_guess = PETSC_FALSE;
+  *in      = c->in; /* then the point's own weight, history, place and projection start */
+  in->area = pt->length;
+  in->hist = pt->hist;
+  TslContactPointSetUp3(fc->nsn, pt->N, c->X, c->U, in);
   if (pt->out.nnode > 0) { /* evaluated before, on this main face (a point keeps its face): start from there */
     in->guess[0] = pt->out.xi_raw, in->guess[1] = pt->out.eta_raw;
     in->has_guess = PETSC_TRUE;
   }
+  *n = c->n;
+  PetscCall(PetscArraycpy(nodes, c->nodes, c->n));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
