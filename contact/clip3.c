@@ -15,6 +15,9 @@
 static const PetscReal TriL[TSL_CONTACT_TRI_GAUSS][3] = {{1.0 / 3, 1.0 / 3, 1.0 / 3}, {R7A1, R7A1, R7B1}, {R7A1, R7B1, R7A1}, {R7B1, R7A1, R7A1},
                                                          {R7A2, R7A2, R7B2},          {R7A2, R7B2, R7A2}, {R7B2, R7A2, R7A2}};
 static const PetscReal TriW[TSL_CONTACT_TRI_GAUSS] = {0.225, R7W1, R7W1, R7W1, R7W2, R7W2, R7W2};
+/* Gauss-Legendre on [-1, 1]: 2 points (degree 3) and 3 points (degree 5) */
+static const PetscReal G2[2] = {-0.57735026918962576451, 0.57735026918962576451}, W2[2] = {1, 1};
+static const PetscReal G3[3] = {-0.77459666924148337704, 0, 0.77459666924148337704}, W3[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
 
 void TslContactTriangleRule(const PetscReal (**L)[3], const PetscReal **w)
 {
@@ -191,6 +194,7 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
   const TslContactFace3 *sf = TslContactFace3Get(skind), *mf = TslContactFace3Get(mkind);
   const TslGeometry     *sg, *pg;
   PetscInt               npiece, mc;
+  PetscBool              mlin;
   PetscReal              Am[3], nm[3], cm[3] = {0, 0, 0}, lm, dsum = 0, asum = 0;
 
   PetscFunctionBeginUser;
@@ -199,6 +203,7 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
   pg     = sg->nsub ? sg->sub_geom : sg; /* the linear pieces: the face itself, or tri6's sub-triangles */
   npiece = sg->nsub ? sg->nsub : 1;
   mc     = mf->geom->ncorner;
+  mlin   = (PetscBool)(mf->geom->nnode == mc);
   *npt   = 0;
   AreaVector(mc, ym, Am);
   lm = PetscSqrtReal(Dot(Am, Am));
@@ -258,11 +263,13 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
      * mirror-symmetric points (a fan from a vertex integrated the nonlinear laws asymmetrically). An overlap
      * that is a triangle or a quadrilateral (after dropping repeated and collinear vertices; aligned
      * rectangular faces overlap in rectangles) takes one rule on the whole of it instead, as symmetric:
-     * Radon's rule on the triangle (7 points instead of 21), the 3 x 3 Gauss rule on the quadrilateral (9
-     * instead of 28): degree 5 in each direction of a parallelogram's affine map, and of any other
-     * quadrilateral's bilinear map, its Jacobian (linear in each direction) in the weights. A deformed
-     * configuration rarely leaves the overlaps exact parallelograms: with those alone taking the 3 x 3 rule,
-     * a search after a converged solve of the benchmark block (N = 64) had made 444 528 points of 138 384. */
+     * Radon's rule on the triangle (7 points instead of 21), a Gauss rule on the quadrilateral through its
+     * bilinear map (its Jacobian, linear in each direction, in the weights): 2 x 2 points on a linear main face
+     * (4 instead of 28; N_b N_a on flat parallelogram faces is of degree <= 3 in each direction of a
+     * parallelogram overlap, so a uniform pressure and heat flux are integrated exactly), 3 x 3 on a quadratic
+     * one. A deformed configuration rarely leaves the overlaps exact parallelograms: with those alone taking
+     * one rule, a search after a converged solve of the benchmark block (N = 64) had made 444 528 points of
+     * 138 384 (docs/contact.md, "3D surface-to-surface"). */
     for (PetscInt i = 0; i < nq; i++)
       for (PetscInt d = 0; d < 2; d++) qm[d] += Q[2 * i + d] / nq;
     {
@@ -271,19 +278,20 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
       const PetscBool whole = (PetscBool)(nv == 3 || nv == 4), affine = (PetscBool)(nv == 4 && Parallelogram(V));
 
       if (whole) {
-        const PetscInt  nr    = nv == 3 ? TSL_CONTACT_TRI_GAUSS : 9;
-        const PetscReal g3[3] = {-0.77459666924148337704, 0, 0.77459666924148337704}, w3[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
+        /* quadrilaterals: 2 x 2 Gauss points when the main face is linear, 3 x 3 for a quadratic one */
+        const PetscInt   ng = mlin ? 2 : 3, nr = nv == 3 ? TSL_CONTACT_TRI_GAUSS : ng * ng;
+        const PetscReal *g3 = mlin ? G2 : G3, *w3 = mlin ? W2 : W3;
         for (PetscInt g = 0; g < nr; g++) {
           PetscReal q[2], w;
           if (nv == 3) {
             for (PetscInt d = 0; d < 2; d++) q[d] = TriL[g][0] * V[d] + TriL[g][1] * V[2 + d] + TriL[g][2] * V[4 + d];
             w = TriW[g] * aq;
           } else if (affine) { /* q = V0 + (1 + s)/2 (V1 - V0) + (1 + t)/2 (V3 - V0): affine, |det| = area / 4 */
-            const PetscReal gs = g3[g % 3], gt = g3[g / 3];
+            const PetscReal gs = g3[g % ng], gt = g3[g / ng];
             for (PetscInt d = 0; d < 2; d++) q[d] = V[d] + 0.5 * (1 + gs) * (V[2 + d] - V[d]) + 0.5 * (1 + gt) * (V[6 + d] - V[d]);
-            w = w3[g % 3] * w3[g / 3] * aq / 4;
+            w = w3[g % ng] * w3[g / ng] * aq / 4;
           } else { /* any other (convex) quadrilateral: its bilinear map from the square, the Jacobian in the weight */
-            const PetscReal gs = g3[g % 3], gt = g3[g / 3],
+            const PetscReal gs = g3[g % ng], gt = g3[g / ng],
                             Ns[4] = {(1 - gs) * (1 - gt), (1 + gs) * (1 - gt), (1 + gs) * (1 + gt), (1 - gs) * (1 + gt)};
             PetscReal xs[2], xt[2];
             for (PetscInt d = 0; d < 2; d++) {
@@ -291,7 +299,7 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
               xs[d] = 0.25 * ((1 - gt) * (V[2 + d] - V[d]) + (1 + gt) * (V[4 + d] - V[6 + d]));
               xt[d] = 0.25 * ((1 - gs) * (V[6 + d] - V[d]) + (1 + gs) * (V[4 + d] - V[2 + d]));
             }
-            w = w3[g % 3] * w3[g / 3] * (xs[0] * xt[1] - xs[1] * xt[0]);
+            w = w3[g % ng] * w3[g / ng] * (xs[0] * xt[1] - xs[1] * xt[0]);
           }
           PetscCall(AddPoint(sg, pg, nc, idx, P, Xp, q, w, cap, pt, npt));
         }
