@@ -4,14 +4,14 @@
 #include <thermoslide/contact_s2s.h>
 
 /* Gauss-Legendre on [0, 1] */
+static const PetscReal G2x[2] = {0.21132486540518711775, 0.78867513459481288225}; /* (1 -+ sqrt(1/3))/2 */
+static const PetscReal G2w[2] = {0.5, 0.5};
 static const PetscReal G3x[3] = {0.11270166537925831148, 0.5, 0.88729833462074168852}; /* (1 -+ sqrt(3/5))/2 */
 static const PetscReal G3w[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
-static const PetscReal G4x[4] = {0.06943184420297371239, 0.33000947820757186760, 0.66999052179242813240, 0.93056815579702628761};
-static const PetscReal G4w[4] = {0.17392742256872692869, 0.32607257743127307131, 0.32607257743127307131, 0.17392742256872692869};
 
 PetscInt TslContactSegmentGaussPoints(TslContactFaceKind kind)
 {
-  return kind == TSL_CONTACT_FACE_LINE2 ? 3 : 4;
+  return kind == TSL_CONTACT_FACE_LINE2 ? 2 : 3;
 }
 
 PetscErrorCode TslContactSegmentBreaks(TslContactFaceKind kind, const PetscReal y[], PetscInt np, const PetscReal pts[], PetscReal tol, PetscInt cap,
@@ -46,7 +46,7 @@ PetscErrorCode TslContactSegmentBreaks(TslContactFaceKind kind, const PetscReal 
 PetscErrorCode TslContactSegmentRule(TslContactFaceKind kind, const PetscReal X[], PetscReal z0, PetscReal z1, PetscInt *nq, PetscReal zeta[],
                                      PetscReal w[])
 {
-  const PetscReal *gx = kind == TSL_CONTACT_FACE_LINE2 ? G3x : G4x, *gw = kind == TSL_CONTACT_FACE_LINE2 ? G3w : G4w;
+  const PetscReal *gx = kind == TSL_CONTACT_FACE_LINE2 ? G2x : G3x, *gw = kind == TSL_CONTACT_FACE_LINE2 ? G2w : G3w;
 
   PetscFunctionBeginUser;
   *nq = TslContactSegmentGaussPoints(kind);

@@ -26,9 +26,9 @@
 #define TSL_CONTACT_S2S3_MAX_NODES (2 * TSL_CONTACT3_MAX_FACE_NODES)
 #define TSL_CONTACT_S2S3_MAX_DOF   (TSL_CONTACT_S2S3_MAX_NODES * TSL_CONTACT3_NU) /* also bounds the 2D element's */
 
-/* Gauss points per piece of a secondary face family: 3 for line2 and 4 for line3, exact (degree 5 and 7)
- * for N_b N_a (pressure, heat flux) 2 pi r on flat faces with a linear pressure, the integrands of the
- * patch test in plane and axisymmetric models. */
+/* Gauss points per piece of a secondary face family: 2 for line2 and 3 for line3, exact (degree 3 and 5)
+ * for N_b N_a 2 pi r on flat faces (a uniform pressure and heat flux), the integrands of the patch test in
+ * plane and axisymmetric models. */
 PetscInt TslContactSegmentGaussPoints(TslContactFaceKind kind);
 
 /* The break parameters of a secondary face (current coordinates y[2*b + d], family kind): the closest

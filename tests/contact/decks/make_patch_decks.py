@@ -11,6 +11,11 @@ With --3d: the same test with two C3D8T blocks 1 x 0.5 x 1 (y up), the lower (ma
 the interface, the upper (secondary) 4 x 5, both 2 high; x = 0 held in x and z = 0 in z (symmetry planes),
 writes contact_patch_s2s_c3d8t.inp and _n2s_. Same exact state (the heat flux over an interface of area 1).
 usage: make_patch_decks.py OUTDIR --3d
+
+With --axi: the 2D decks as CAX4T rings, the radius r = x + 1 (1 to 2), no edge held in r (the uniform state has
+u_r = -nu S22 r / E, which CAX4T represents exactly); the heat across the interface is q x pi (2^2 - 1^2).
+Writes contact_patch_s2s_cax4t.inp and _n2s_.
+usage: make_patch_decks.py OUTDIR --axi
 """
 import os
 import sys
@@ -49,14 +54,17 @@ if "--3d" in sys.argv:
         d += [" %d, P%d, 100.0" % f for f in faces_on(un, ue, shape, 1.0)] + ["*END STEP"]
         open("%s/contact_patch_%s_c3d8t.inp" % (out, kind), "w").write("\n".join(d) + "\n")
     sys.exit(0)
-NL, NU = (int(sys.argv[2]), int(sys.argv[3])) if len(sys.argv) > 3 else (5, 3)
+axi = "--axi" in sys.argv
+args = [a for a in sys.argv[2:] if not a.startswith("--")]
+NL, NU = (int(args[0]), int(args[1])) if len(args) > 1 else (5, 3)
+etype, r0 = ("CAX4T", 1.0) if axi else ("CPE4T", 0.0)
 
 
 def block(first_node, first_elem, nx, y0):
     nodes, elems = [], []
     for j in range(3):
         for i in range(nx + 1):
-            nodes.append((first_node + j * (nx + 1) + i, i / nx, y0 + 0.25 * j))
+            nodes.append((first_node + j * (nx + 1) + i, r0 + i / nx, y0 + 0.25 * j))
     for j in range(2):
         for i in range(nx):
             a = first_node + j * (nx + 1) + i
@@ -71,14 +79,15 @@ def lines(ids, per=8):
 ln, le = block(1, 1, NL, 0.0)
 un, ue = block(1001, 101, NU, 0.5)
 for kind, param in (("s2s", ", TYPE=SURFACE TO SURFACE"), ("n2s", "")):
-    d = ["*HEADING", " Contact patch test (%s): uniform pressure and heat flux through a non-matching interface, %d vs %d CPE4T"
-         % (kind, NL, NU), "*NODE, NSET=ALL"]
+    d = ["*HEADING", " Contact patch test (%s): uniform pressure and heat flux through a non-matching interface, %d vs %d %s"
+         % (kind, NL, NU, etype), "*NODE, NSET=ALL"]
     d += [" %d, %.17g, %.17g" % n for n in ln + un]
-    d += ["*ELEMENT, TYPE=CPE4T, ELSET=LOWER"] + [" %d, %d, %d, %d, %d" % e for e in le]
-    d += ["*ELEMENT, TYPE=CPE4T, ELSET=UPPER"] + [" %d, %d, %d, %d, %d" % e for e in ue]
+    d += ["*ELEMENT, TYPE=%s, ELSET=LOWER" % etype] + [" %d, %d, %d, %d, %d" % e for e in le]
+    d += ["*ELEMENT, TYPE=%s, ELSET=UPPER" % etype] + [" %d, %d, %d, %d, %d" % e for e in ue]
     d += ["*NSET, NSET=BASE", lines([n[0] for n in ln if n[2] == 0.0])]
     d += ["*NSET, NSET=TOP", lines([n[0] for n in un if n[2] == 1.0])]
-    d += ["*NSET, NSET=LEFT", lines([n[0] for n in ln + un if n[1] == 0.0])]
+    if not axi:
+        d += ["*NSET, NSET=LEFT", lines([n[0] for n in ln + un if n[1] == 0.0])]
     d += ["*ELSET, ELSET=LOWTOP", lines([e[0] for e in le[NL:]])]
     d += ["*ELSET, ELSET=UPBOT", lines([e[0] for e in ue[:NU]])]
     d += ["*ELSET, ELSET=UPTOP", lines([e[0] for e in ue[NU:]])]
@@ -90,5 +99,5 @@ for kind, param in (("s2s", ", TYPE=SURFACE TO SURFACE"), ("n2s", "")):
     d += ["*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.2" + param, " SECONDARY, MAIN"]
     d += ["*INITIAL CONDITIONS, TYPE=TEMPERATURE", " ALL, 0.0"]
     d += ["*STEP, NAME=PRESS AND HEAT", "*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE", "*BOUNDARY", " BASE, 2, 2", " BASE, 11, 11, 0.0",
-          " TOP, 11, 11, 100.0", " LEFT, 1, 1", "*DLOAD", " UPTOP, P3, 100.0", "*END STEP"]
-    open("%s/contact_patch_%s_cpe4t.inp" % (out, kind), "w").write("\n".join(d) + "\n")
+          " TOP, 11, 11, 100.0"] + ([] if axi else [" LEFT, 1, 1"]) + ["*DLOAD", " UPTOP, P3, 100.0", "*END STEP"]
+    open("%s/contact_patch_%s_%s.inp" % (out, kind, etype.lower()), "w").write("\n".join(d) + "\n")
