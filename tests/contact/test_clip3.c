@@ -3,7 +3,8 @@
  *    regular octagon, triangles on squares, a tri6 face) equal the sum of the points' weights to 1e-12;
  *    faces that do not face each other give no points; reference areas (the weights) differ from the
  *    current ones by the area ratio; a trapezoid overlap takes one 2 x 2 rule, exact for its area and moments
- *    up to degree 3 in each direction of its bilinear map;
+ *    up to degree 3 in each direction of its bilinear map; a sheared parallelogram overlap's int N_b N_a dA (a
+ *    uniform pressure's integrand) exact with its 2 x 2 rule;
  *  - a secondary face covered by four main faces: the weights of each node summed over the four overlaps
  *    (sum of N_b w) equal its tributary area (TslContactFace3Integrate), for tri3, quad4 and tri6;
  *  - the expanded element's tangent against central differences (open, stick, slip with heating, LAGRANGE,
@@ -34,6 +35,16 @@ static void Flat(PetscInt kind, const PetscReal c[][2], PetscReal h, PetscBool d
   if (kind == TRI6)
     for (PetscInt m = 0; m < 3; m++)
       for (PetscInt d = 0; d < 3; d++) x[3 * (3 + m) + d] = 0.5 * (x[3 * e[m][0] + d] + x[3 * e[m][1] + d]);
+}
+
+/* The bilinear shape functions of a flat parallelogram main face (corners xp[3 a + d], a = 0..3 counter-
+ * clockwise) at the plane point x: its affine map x = P0 + xi (P1 - P0) + eta (P3 - P0) inverted. */
+static void MainShape(const PetscReal xp[12], const PetscReal x[2], PetscReal Na[4])
+{
+  const PetscReal e1[2] = {xp[3] - xp[0], xp[4] - xp[1]}, e2[2] = {xp[9] - xp[0], xp[10] - xp[1]}, r[2] = {x[0] - xp[0], x[1] - xp[1]};
+  const PetscReal det = e1[0] * e2[1] - e1[1] * e2[0], xi = (r[0] * e2[1] - r[1] * e2[0]) / det, eta = (e1[0] * r[1] - e1[1] * r[0]) / det;
+
+  Na[0] = (1 - xi) * (1 - eta), Na[1] = xi * (1 - eta), Na[2] = xi * eta, Na[3] = (1 - xi) * eta;
 }
 
 static PetscErrorCode Overlap(PetscInt skind, const PetscReal X[], const PetscReal y[], PetscInt mkind, const PetscReal ym[], PetscReal *sum, PetscInt *n)
@@ -106,6 +117,42 @@ static PetscErrorCode CheckAreas(TestLog *log)
     Check(log, mxx, (PetscPowRealInt(a, 4) - PetscPowRealInt(a - b, 4)) / (12 * b), 1e-12, "trapezoid overlap: int x^2 dA");
     Check(log, mxy, 0.5 * (a * a / 2 - 2 * a * b / 3 + b * b / 4), 1e-12, "trapezoid overlap: int x y dA");
     Check(log, PetscAbsReal(mxxy - exy) / exy > 1e-6 ? 1.0 : 0.0, 1, 0, "trapezoid overlap: int x^2 y dA (degree 4) is not exact");
+  }
+  /* a parallelogram overlap with one pair of edges from each face (the square's sides x = 0, 1 and a sheared
+   * main face's sides of slope 0.2): int N_b N_a dA, the integrand of a uniform pressure, is of degree <= 3 in
+   * each direction of the overlap, so the 2 x 2 rule gives all 16 products exactly (reference: 5 x 5 Gauss
+   * on the overlap's affine map x = s, y = 0.3 + 0.2 s + 0.3 t) */
+  {
+    const PetscReal par[4][2] = {{-0.5, 0.2}, {1.5, 0.6}, {1.5, 0.9}, {-0.5, 0.5}};
+    const PetscReal g5[5]     = {0.04691007703066800360, 0.23076534494715845448, 0.5, 0.76923465505284154552, 0.95308992296933199640};
+    const PetscReal w5[5] = {0.11846344252809454376, 0.23931433524968323402, 0.28444444444444444444, 0.23931433524968323402, 0.11846344252809454376};
+    PetscReal       xq[12], xp[12], M[4][4] = {{0}}, R[4][4] = {{0}}, err = 0, scale = 0;
+
+    Flat(QUAD4, sq, 0, PETSC_TRUE, xq);
+    Flat(QUAD4, par, -0.01, PETSC_FALSE, xp);
+    PetscCall(Overlap(QUAD4, xq, xq, QUAD4, xp, &sum, &n));
+    Check(log, (PetscReal)n, 4, 0, "sheared parallelogram overlap: one 2 x 2 rule (4 points)");
+    for (PetscInt q = 0; q < n; q++) {
+      PetscReal x[2] = {0, 0}, Na[4];
+      for (PetscInt b = 0; b < 4; b++)
+        for (PetscInt d = 0; d < 2; d++) x[d] += Pts[q].N[b] * xq[3 * b + d];
+      MainShape(xp, x, Na);
+      for (PetscInt b = 0; b < 4; b++)
+        for (PetscInt a = 0; a < 4; a++) M[b][a] += Pts[q].w * Pts[q].N[b] * Na[a];
+    }
+    for (PetscInt i = 0; i < 5; i++)
+      for (PetscInt j = 0; j < 5; j++) {
+        const PetscReal x[2] = {g5[i], 0.3 + 0.2 * g5[i] + 0.3 * g5[j]}, wq = w5[i] * w5[j] * 0.3;
+        PetscReal       Nb[4], Na[4];
+        for (PetscInt b = 0; b < 4; b++) /* the square's bilinear functions, its corners as Flat() put them */
+          Nb[b] = (xq[3 * b] > 0.5 ? x[0] : 1 - x[0]) * (xq[3 * b + 1] > 0.5 ? x[1] : 1 - x[1]);
+        MainShape(xp, x, Na);
+        for (PetscInt b = 0; b < 4; b++)
+          for (PetscInt a = 0; a < 4; a++) R[b][a] += wq * Nb[b] * Na[a];
+      }
+    for (PetscInt b = 0; b < 4; b++)
+      for (PetscInt a = 0; a < 4; a++) err = PetscMax(err, PetscAbsReal(M[b][a] - R[b][a])), scale = PetscMax(scale, PetscAbsReal(R[b][a]));
+    Check(log, err / scale, 0, 1e-13, "sheared parallelogram overlap: int N_b N_a dA, all 16, 2 x 2 rule against 5 x 5");
   }
   /* same orientation (not facing): nothing */
   Flat(QUAD4, big, -0.01, PETSC_TRUE, xm);
