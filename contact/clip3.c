@@ -5,25 +5,20 @@
 #include <thermoslide/contact_s2s.h>
 #include "contact_impl.h"
 
-/* Radon's 7-point rule (degree 5) on the triangle: the centroid and two orbits (a, a, 1 - 2a). */
-#define R7A1 0.10128650732345633880 /* (6 - sqrt(15))/21 */
-#define R7B1 0.79742698535308732240 /* 1 - 2 R7A1 */
-#define R7A2 0.47014206410511508977 /* (6 + sqrt(15))/21 */
-#define R7B2 0.05971587178976982046 /* 1 - 2 R7A2 */
-#define R7W1 0.12593918054482715260 /* (155 - sqrt(15))/1200 */
-#define R7W2 0.13239415278850618074 /* (155 + sqrt(15))/1200 */
-static const PetscReal TriL[TSL_CONTACT_TRI_GAUSS][3] = {{1.0 / 3, 1.0 / 3, 1.0 / 3}, {R7A1, R7A1, R7B1}, {R7A1, R7B1, R7A1}, {R7B1, R7A1, R7A1},
-                                                         {R7A2, R7A2, R7B2},          {R7A2, R7B2, R7A2}, {R7B2, R7A2, R7A2}};
-static const PetscReal TriW[TSL_CONTACT_TRI_GAUSS] = {0.225, R7W1, R7W1, R7W1, R7W2, R7W2, R7W2};
+/* The 6-point rule of degree 4 on the triangle (Strang & Fix; Dunavant): two orbits (a, a, 1 - 2a), positive
+ * weights (relative to the triangle's area). */
+#define T6A1 0.44594849091596488632
+#define T6B1 0.10810301816807022736 /* 1 - 2 T6A1 */
+#define T6W1 0.22338158967801146594
+#define T6A2 0.09157621350977074346
+#define T6B2 0.81684757298045851308 /* 1 - 2 T6A2 */
+#define T6W2 0.10995174365532186739
+static const PetscReal TriL[TSL_CONTACT_TRI_GAUSS][3] = {{T6A1, T6A1, T6B1}, {T6A1, T6B1, T6A1}, {T6B1, T6A1, T6A1},
+                                                         {T6A2, T6A2, T6B2}, {T6A2, T6B2, T6A2}, {T6B2, T6A2, T6A2}};
+static const PetscReal TriW[TSL_CONTACT_TRI_GAUSS]    = {T6W1, T6W1, T6W1, T6W2, T6W2, T6W2};
 /* Gauss-Legendre on [-1, 1]: 2 points (degree 3) and 3 points (degree 5) */
 static const PetscReal G2[2] = {-0.57735026918962576451, 0.57735026918962576451}, W2[2] = {1, 1};
 static const PetscReal G3[3] = {-0.77459666924148337704, 0, 0.77459666924148337704}, W3[3] = {5.0 / 9, 8.0 / 9, 5.0 / 9};
-
-void TslContactTriangleRule(const PetscReal (**L)[3], const PetscReal **w)
-{
-  *L = TriL;
-  *w = TriW;
-}
 
 PetscReal TslContactPolygonArea(PetscInt n, const PetscReal P[])
 {
@@ -263,13 +258,15 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
      * mirror-symmetric points (a fan from a vertex integrated the nonlinear laws asymmetrically). An overlap
      * that is a triangle or a quadrilateral (after dropping repeated and collinear vertices; aligned
      * rectangular faces overlap in rectangles) takes one rule on the whole of it instead, as symmetric:
-     * Radon's rule on the triangle (7 points instead of 21), a Gauss rule on the quadrilateral through its
-     * bilinear map (its Jacobian, linear in each direction, in the weights): 2 x 2 points on a linear main face
-     * (4 instead of 28; N_b N_a on flat parallelogram faces is of degree <= 3 in each direction of a
-     * parallelogram overlap, so a uniform pressure and heat flux are integrated exactly), 3 x 3 on a quadratic
-     * one. A deformed configuration rarely leaves the overlaps exact parallelograms: with those alone taking
-     * one rule, a search after a converged solve of the benchmark block (N = 64) had made 444 528 points of
-     * 138 384 (docs/contact.md, "3D surface-to-surface"). */
+     * the 6-point rule on the triangle (6 instead of 18), a Gauss rule on the quadrilateral through its
+     * bilinear map (its Jacobian, linear in each direction, in the weights): 2 x 2 points (4 instead of 24),
+     * 3 x 3 for a quad4 piece on a quadratic (tri6) main face. The rules integrate N_b N_a, what a uniform
+     * pressure and heat flux need, exactly on flat faces: on a triangle of the overlap it is of total degree
+     * <= 4 (N_b of degree <= 2, bilinear; N_a <= 2, bilinear or quadratic), on a parallelogram of degree <= 3
+     * in each direction (one face's parameters are affine along each of its directions, the other's constant
+     * or affine), but 4 for a quad4 piece on a quadratic face. A deformed configuration rarely leaves the overlaps exact parallelograms: with those
+     * alone taking one rule, a search after a converged solve of the benchmark block (N = 64) had made 444 528 points of 138 384 (docs/contact.md,
+     * "3D surface-to-surface"). */
     for (PetscInt i = 0; i < nq; i++)
       for (PetscInt d = 0; d < 2; d++) qm[d] += Q[2 * i + d] / nq;
     {
@@ -278,9 +275,10 @@ PetscErrorCode TslContactOverlap3(PetscInt skind, const PetscReal X[], const Pet
       const PetscBool whole = (PetscBool)(nv == 3 || nv == 4), affine = (PetscBool)(nv == 4 && Parallelogram(V));
 
       if (whole) {
-        /* quadrilaterals: 2 x 2 Gauss points when the main face is linear, 3 x 3 for a quadratic one */
-        const PetscInt   ng = mlin ? 2 : 3, nr = nv == 3 ? TSL_CONTACT_TRI_GAUSS : ng * ng;
-        const PetscReal *g3 = mlin ? G2 : G3, *w3 = mlin ? W2 : W3;
+        /* quadrilaterals: 2 x 2 Gauss points, 3 x 3 for a quad4 piece on a quadratic main face */
+        const PetscBool  q2 = (PetscBool)(!mlin && nc == 4);
+        const PetscInt   ng = q2 ? 3 : 2, nr = nv == 3 ? TSL_CONTACT_TRI_GAUSS : ng * ng;
+        const PetscReal *g3 = q2 ? G3 : G2, *w3 = q2 ? W3 : W2;
         for (PetscInt g = 0; g < nr; g++) {
           PetscReal q[2], w;
           if (nv == 3) {

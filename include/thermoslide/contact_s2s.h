@@ -74,7 +74,7 @@ PetscErrorCode TslContactPointExpand(PetscInt nu, PetscInt nk, PetscInt nsn, con
  * "3D surface-to-surface".
  * ------------------------------------------------------------------------------------------------- */
 #define TSL_CONTACT_CLIP_MAX_VERTICES 16 /* a convex n-gon clipped by a convex m-gon has at most n + m vertices */
-#define TSL_CONTACT_TRI_GAUSS         7  /* points of the triangle rule (degree 5) */
+#define TSL_CONTACT_TRI_GAUSS         6  /* points of the triangle rule (degree 4) */
 /* points of one (secondary face, main face) overlap: up to 4 linear pieces (tri6), each polygon fanned into
  * at most TSL_CONTACT_CLIP_MAX_VERTICES triangles (a fan from its centroid) */
 #define TSL_CONTACT_OVERLAP_MAX_POINTS (4 * TSL_CONTACT_CLIP_MAX_VERTICES * TSL_CONTACT_TRI_GAUSS)
@@ -86,10 +86,6 @@ PetscErrorCode TslContactClipPolygon(PetscInt n, const PetscReal P[], PetscInt m
 
 /* Signed area of the polygon P (n vertices P[2*i + d]): > 0 counter-clockwise. */
 PetscReal TslContactPolygonArea(PetscInt n, const PetscReal P[]);
-
-/* The degree-5 rule on the unit triangle (Radon; Strang & Fix): barycentric coordinates L[q][3] and weights
- * w[q] summing to 1 (multiply by the triangle's area). */
-void TslContactTriangleRule(const PetscReal (**L)[3], const PetscReal **w);
 
 /* One integration point on a secondary face: the face's interpolation N_b at the point (its own shape
  * functions for tri3 and quad4; for tri6 those of the linear sub-triangle holding the point, as the modified
@@ -103,12 +99,13 @@ typedef struct {
  * current y[3*b + d]) with a main face (mkind, current ym[]): each linear piece of the secondary face (the
  * face, or tri6's four sub-triangles) is flattened onto its plane (centroid, area normal n_s), the main
  * face's corners are projected onto that plane along n_s, the main polygon is clipped by the piece's
- * (Sutherland-Hodgman) and the overlap fanned from its vertex centroid into triangles, each with the degree-5 rule. A point's
- * parameters on the piece come from the plane coordinates (affine for triangles, the bilinear inverse for
- * quads) and its weight is the plane weight times the reference-to-plane area ratio dA_ref/dA_plane there,
- * so the weights are reference areas: their sum is the reference area of the overlap (the whole face's
- * area when the main face covers it). Exact integration of N_b N_a p on flat faces with affine parameter
- * maps (triangles, parallelograms) and p linear. Faces whose normals do not oppose (n_s . n_m >= 0), or with
+ * (Sutherland-Hodgman) and the overlap fanned from its vertex centroid into triangles, each with the
+ * 6-point rule of degree 4 (a triangle or quadrilateral overlap takes one rule on the whole: docs/contact.md).
+ * A point's parameters on the piece come from the plane coordinates (affine for triangles, the bilinear
+ * inverse for quads) and its weight is the plane weight times the reference-to-plane area ratio
+ * dA_ref/dA_plane there, so the weights are reference areas: their sum is the reference area of the overlap
+ * (the whole face's area when the main face covers it). Exact integration of N_b N_a (a uniform pressure and
+ * heat flux) on flat faces with affine parameter maps (triangles, parallelograms). Faces whose normals do not oppose (n_s . n_m >= 0), or with
  * no overlap, give *npt = 0. *dist (may be NULL): the signed distance along n_s from the secondary face's
  * plane to the main face's plane at the overlap's centroid (> 0 open; meaningless when *npt = 0). Writes at
  * most cap points. */

@@ -4,13 +4,13 @@
  *
  * At every search each secondary face held here (tri3, quad4, tri6) is clipped against every nearby main
  * face (contact/clip3.c: the main face's corners projected onto the plane of the secondary face, or of each
- * of tri6's linear sub-triangles, Sutherland-Hodgman, the overlap fanned into triangles with a degree-5
- * rule). Every overlap with a facing main face not behind the secondary face by more than the search radius
- * gives points on that main face; parts of a secondary face over no main face get none (no force, no heat,
- * as a node beyond the main surface). A point is the 3D node-to-surface kernel's secondary node at
- * x = sum_b N_b x_b, with its weight (reference area) as area, expanded to the face's nodes
- * (TslContactPointElement3). Cut and pairing are frozen during a Newton solve; a point whose projection
- * leaves its main face after convergence asks for a new search and another solve.
+ * of tri6's linear sub-triangles, Sutherland-Hodgman, the overlap fanned into triangles with a degree-4
+ * rule, or one rule on a triangle or quadrilateral overlap). Every overlap with a facing main face not behind
+ * the secondary face by more than the search radius gives points on that main face; parts of a secondary
+ * face over no main face get none (no force, no heat, as a node beyond the main surface). A point is the 3D
+ * node-to-surface kernel's secondary node at x = sum_b N_b x_b, with its weight (reference area) as area,
+ * expanded to the face's nodes (TslContactPointElement3). Cut and pairing are frozen during a Newton solve;
+ * a point whose projection leaves its main face after convergence asks for a new search and another solve.
  *
  * History across a new cut (the 3D form of 2D's): at the search state each old point in contact gives the
  * vectors from the start-of-increment point and from the anchor to its current point on the main face,

@@ -77,6 +77,41 @@ static PetscErrorCode CheckAreas(TestLog *log)
   Flat(QUAD4, rot, -0.01, PETSC_FALSE, xm);
   PetscCall(Overlap(QUAD4, xs, xs, QUAD4, xm, &sum, &n));
   Check(log, sum, 2 * (PetscSqrtReal(2) - 1), 1e-12, "unit squares, one turned by 45 degrees: the octagon 2 (sqrt 2 - 1)");
+  /* the octagon is fanned into 8 triangles, each with the 6-point rule: int N_b N_a dA (total degree 4 on each
+   * triangle) exact for all 16 pairs against a conical 5 x 5 Gauss product rule on the same 8 triangles */
+  {
+    const PetscReal g5[5] = {0.04691007703066800360, 0.23076534494715845448, 0.5, 0.76923465505284154552, 0.95308992296933199640};
+    const PetscReal w5[5] = {0.11846344252809454376, 0.23931433524968323402, 0.28444444444444444444, 0.23931433524968323402, 0.11846344252809454376};
+    const PetscReal a = 1 - r, oct[8][2] = {{a, 0}, {r, 0}, {1, a}, {1, r}, {r, 1}, {a, 1}, {0, r}, {0, a}};
+    PetscReal       M[4][4] = {{0}}, R[4][4] = {{0}}, err = 0, scale = 0;
+
+    for (PetscInt q = 0; q < n; q++) {
+      PetscReal x[2] = {0, 0}, Na[4];
+      for (PetscInt b = 0; b < 4; b++)
+        for (PetscInt d = 0; d < 2; d++) x[d] += Pts[q].N[b] * xs[3 * b + d];
+      MainShape(xm, x, Na);
+      for (PetscInt b = 0; b < 4; b++)
+        for (PetscInt c = 0; c < 4; c++) M[b][c] += Pts[q].w * Pts[q].N[b] * Na[c];
+    }
+    for (PetscInt t = 0; t < 8; t++) {
+      const PetscReal *p1 = oct[t], *p2 = oct[(t + 1) % 8], p0[2] = {0.5, 0.5};
+      const PetscReal  area = 0.5 * PetscAbsReal((p1[0] - p0[0]) * (p2[1] - p0[1]) - (p2[0] - p0[0]) * (p1[1] - p0[1]));
+      for (PetscInt i = 0; i < 5; i++)
+        for (PetscInt j = 0; j < 5; j++) { /* x = p0 + u (p1 - p0) + u v (p2 - p1), dA = 2 area u du dv */
+          const PetscReal u = g5[i], v = g5[j], wq = w5[i] * w5[j] * 2 * area * u;
+          PetscReal       x[2], Nb[4], Na[4];
+          for (PetscInt d = 0; d < 2; d++) x[d] = p0[d] + u * (p1[d] - p0[d]) + u * v * (p2[d] - p1[d]);
+          for (PetscInt b = 0; b < 4; b++) Nb[b] = (xs[3 * b] > 0.5 ? x[0] : 1 - x[0]) * (xs[3 * b + 1] > 0.5 ? x[1] : 1 - x[1]);
+          MainShape(xm, x, Na);
+          for (PetscInt b = 0; b < 4; b++)
+            for (PetscInt c = 0; c < 4; c++) R[b][c] += wq * Nb[b] * Na[c];
+        }
+    }
+    for (PetscInt b = 0; b < 4; b++)
+      for (PetscInt c = 0; c < 4; c++) err = PetscMax(err, PetscAbsReal(M[b][c] - R[b][c])), scale = PetscMax(scale, PetscAbsReal(R[b][c]));
+    Check(log, (PetscReal)n, 8 * TSL_CONTACT_TRI_GAUSS, 0, "the octagon: 8 fan triangles x the 6-point rule");
+    Check(log, err / scale, 0, 1e-13, "the octagon: int N_b N_a dA, all 16, against a conical 5 x 5 Gauss rule on its fan");
+  }
   Flat(TRI3, tri, -0.01, PETSC_FALSE, xm);
   PetscCall(Overlap(QUAD4, xs, xs, TRI3, xm, &sum, &n));
   Check(log, sum, 0.5, 1e-12, "tri3 main on the unit quad4: 1/2");
