@@ -47,6 +47,25 @@ static void MainShape(const PetscReal xp[12], const PetscReal x[2], PetscReal Na
   Na[0] = (1 - xi) * (1 - eta), Na[1] = xi * (1 - eta), Na[2] = xi * eta, Na[3] = (1 - xi) * eta;
 }
 
+/* Gauss-Legendre on [0, 1], 5 points (degree 9): the references of the exactness checks */
+static const PetscReal G5[5] = {0.04691007703066800360, 0.23076534494715845448, 0.5, 0.76923465505284154552, 0.95308992296933199640};
+static const PetscReal W5[5] = {0.11846344252809454376, 0.23931433524968323402, 0.28444444444444444444, 0.23931433524968323402,
+                                0.11846344252809454376};
+
+/* M[b][a] += sum over the n points of Pts of w N_b N_a: N_b the quad4 secondary face's (corners xs), N_a the
+ * parallelogram main face's (corners xm) at the point's place in the plane */
+static void PointProducts(PetscInt n, const PetscReal xs[12], const PetscReal xm[12], PetscReal M[4][4])
+{
+  for (PetscInt q = 0; q < n; q++) {
+    PetscReal x[2] = {0, 0}, Na[4];
+    for (PetscInt b = 0; b < 4; b++)
+      for (PetscInt d = 0; d < 2; d++) x[d] += Pts[q].N[b] * xs[3 * b + d];
+    MainShape(xm, x, Na);
+    for (PetscInt b = 0; b < 4; b++)
+      for (PetscInt a = 0; a < 4; a++) M[b][a] += Pts[q].w * Pts[q].N[b] * Na[a];
+  }
+}
+
 static PetscErrorCode Overlap(PetscInt skind, const PetscReal X[], const PetscReal y[], PetscInt mkind, const PetscReal ym[], PetscReal *sum, PetscInt *n)
 {
   PetscFunctionBeginUser;
@@ -80,25 +99,16 @@ static PetscErrorCode CheckAreas(TestLog *log)
   /* the octagon is fanned into 8 triangles, each with the 6-point rule: int N_b N_a dA (total degree 4 on each
    * triangle) exact for all 16 pairs against a conical 5 x 5 Gauss product rule on the same 8 triangles */
   {
-    const PetscReal g5[5] = {0.04691007703066800360, 0.23076534494715845448, 0.5, 0.76923465505284154552, 0.95308992296933199640};
-    const PetscReal w5[5] = {0.11846344252809454376, 0.23931433524968323402, 0.28444444444444444444, 0.23931433524968323402, 0.11846344252809454376};
     const PetscReal a = 1 - r, oct[8][2] = {{a, 0}, {r, 0}, {1, a}, {1, r}, {r, 1}, {a, 1}, {0, r}, {0, a}};
     PetscReal       M[4][4] = {{0}}, R[4][4] = {{0}}, err = 0, scale = 0;
 
-    for (PetscInt q = 0; q < n; q++) {
-      PetscReal x[2] = {0, 0}, Na[4];
-      for (PetscInt b = 0; b < 4; b++)
-        for (PetscInt d = 0; d < 2; d++) x[d] += Pts[q].N[b] * xs[3 * b + d];
-      MainShape(xm, x, Na);
-      for (PetscInt b = 0; b < 4; b++)
-        for (PetscInt c = 0; c < 4; c++) M[b][c] += Pts[q].w * Pts[q].N[b] * Na[c];
-    }
+    PointProducts(n, xs, xm, M);
     for (PetscInt t = 0; t < 8; t++) {
       const PetscReal *p1 = oct[t], *p2 = oct[(t + 1) % 8], p0[2] = {0.5, 0.5};
       const PetscReal  area = 0.5 * PetscAbsReal((p1[0] - p0[0]) * (p2[1] - p0[1]) - (p2[0] - p0[0]) * (p1[1] - p0[1]));
       for (PetscInt i = 0; i < 5; i++)
         for (PetscInt j = 0; j < 5; j++) { /* x = p0 + u (p1 - p0) + u v (p2 - p1), dA = 2 area u du dv */
-          const PetscReal u = g5[i], v = g5[j], wq = w5[i] * w5[j] * 2 * area * u;
+          const PetscReal u = G5[i], v = G5[j], wq = W5[i] * W5[j] * 2 * area * u;
           PetscReal       x[2], Nb[4], Na[4];
           for (PetscInt d = 0; d < 2; d++) x[d] = p0[d] + u * (p1[d] - p0[d]) + u * v * (p2[d] - p1[d]);
           for (PetscInt b = 0; b < 4; b++) Nb[b] = (xs[3 * b] > 0.5 ? x[0] : 1 - x[0]) * (xs[3 * b + 1] > 0.5 ? x[1] : 1 - x[1]);
@@ -159,25 +169,16 @@ static PetscErrorCode CheckAreas(TestLog *log)
    * on the overlap's affine map x = s, y = 0.3 + 0.2 s + 0.3 t) */
   {
     const PetscReal par[4][2] = {{-0.5, 0.2}, {1.5, 0.6}, {1.5, 0.9}, {-0.5, 0.5}};
-    const PetscReal g5[5]     = {0.04691007703066800360, 0.23076534494715845448, 0.5, 0.76923465505284154552, 0.95308992296933199640};
-    const PetscReal w5[5] = {0.11846344252809454376, 0.23931433524968323402, 0.28444444444444444444, 0.23931433524968323402, 0.11846344252809454376};
     PetscReal       xq[12], xp[12], M[4][4] = {{0}}, R[4][4] = {{0}}, err = 0, scale = 0;
 
     Flat(QUAD4, sq, 0, PETSC_TRUE, xq);
     Flat(QUAD4, par, -0.01, PETSC_FALSE, xp);
     PetscCall(Overlap(QUAD4, xq, xq, QUAD4, xp, &sum, &n));
     Check(log, (PetscReal)n, 4, 0, "sheared parallelogram overlap: one 2 x 2 rule (4 points)");
-    for (PetscInt q = 0; q < n; q++) {
-      PetscReal x[2] = {0, 0}, Na[4];
-      for (PetscInt b = 0; b < 4; b++)
-        for (PetscInt d = 0; d < 2; d++) x[d] += Pts[q].N[b] * xq[3 * b + d];
-      MainShape(xp, x, Na);
-      for (PetscInt b = 0; b < 4; b++)
-        for (PetscInt a = 0; a < 4; a++) M[b][a] += Pts[q].w * Pts[q].N[b] * Na[a];
-    }
+    PointProducts(n, xq, xp, M);
     for (PetscInt i = 0; i < 5; i++)
       for (PetscInt j = 0; j < 5; j++) {
-        const PetscReal x[2] = {g5[i], 0.3 + 0.2 * g5[i] + 0.3 * g5[j]}, wq = w5[i] * w5[j] * 0.3;
+        const PetscReal x[2] = {G5[i], 0.3 + 0.2 * G5[i] + 0.3 * G5[j]}, wq = W5[i] * W5[j] * 0.3;
         PetscReal       Nb[4], Na[4];
         for (PetscInt b = 0; b < 4; b++) /* the square's bilinear functions, its corners as Flat() put them */
           Nb[b] = (xq[3 * b] > 0.5 ? x[0] : 1 - x[0]) * (xq[3 * b + 1] > 0.5 ? x[1] : 1 - x[1]);
