@@ -43,12 +43,6 @@ static PetscErrorCode GeomSetUp(const TslContactInput3 *in, PetscBool seed, Geom
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Position p, tangents a, shape functions N and the smoothed unit normal n at dual parameters xi:
- *   n = normalise((1 - beta) n_f + beta sum_a N_a nn_a),  beta = 1 - prod_i (1 - h(1 - d_i/s)),
- * d_i the distances from the edges in units of the face (TslContactFace3.edge_distance), h the C1 ramp.
- * Written as c + beta |c| sum_a N_a (nn_a - n_f), c = a1 x a2 (the same direction, as sum N_a = 1): with
- * nodal normals equal to the face normal the smoothing term is exactly zero and n is the face normal to
- * the last bit. */
 /* Whether the parameters' derivatives are those of seeded parameters (*seed) or none: the face point can then be
  * formed from the seeded node coordinates directly (TslContactFace3PointSeeded). */
 static PetscBool PlainParameters(const TslDual xi[2], PetscBool *seed)
@@ -72,6 +66,12 @@ static void FacePoint3(const Geom3 *geo, const TslDual xi[2], TslDual p[3], TslD
     TslContactFace3PointDual(geo->face, (const TslDual(*)[3])geo->xm, xi, p, a, N);
 }
 
+/* Position p, tangents a, shape functions N and the smoothed unit normal n at dual parameters xi:
+ *   n = normalise((1 - beta) n_f + beta sum_a N_a nn_a),  beta = 1 - prod_i (1 - h(1 - d_i/s)),
+ * d_i the distances from the edges in units of the face (TslContactFace3.edge_distance), h the C1 ramp.
+ * Written as c + beta |c| sum_a N_a (nn_a - n_f), c = a1 x a2 (the same direction, as sum N_a = 1): with
+ * nodal normals equal to the face normal the smoothing term is exactly zero and n is the face normal to
+ * the last bit. */
 static void Surface(const Geom3 *geo, const TslDual xi[2], TslDual p[3], TslDual a[2][3], TslDual N[], TslDual n[3])
 {
   TslDual c[3], len;

@@ -175,21 +175,23 @@ static PetscBool InsertDirect(TslProblem p, PetscInt n, const PetscInt ld[], con
 {
   const PetscInt bs = p->ndof, nb = n / bs;
   PetscInt       ln[TSL_MAX_ELEM_NODES + 1];
+  PetscBool      free[TSL_MAX_ELEM_NODES + 1];
   unsigned short pos[(TSL_MAX_ELEM_NODES + 1) * (TSL_MAX_ELEM_NODES + 1)];
 
   if (!p->jac_val || n % bs || nb > TSL_MAX_ELEM_NODES + 1) return PETSC_FALSE;
   for (PetscInt a = 0; a < nb; a++) {
     const PetscInt r0 = ld[a * bs];
     if (r0 < 0 || r0 % bs || r0 / bs >= p->nown) return PETSC_FALSE;
-    for (PetscInt i = 0; i < bs; i++)
-      if (ld[a * bs + i] != r0 + i || RowKind(p, r0 + i) == 'e') return PETSC_FALSE;
+    free[a] = PETSC_FALSE;
+    for (PetscInt i = 0; i < bs; i++) {
+      const char kind = ld[a * bs + i] == r0 + i ? RowKind(p, r0 + i) : 0;
+      if (!kind || kind == 'e') return PETSC_FALSE;
+      if (kind == 'f') free[a] = PETSC_TRUE;
+    }
     ln[a] = r0 / bs;
   }
   for (PetscInt a = 0; a < nb; a++) { /* every place first: nothing is added unless all are found */
-    PetscBool free = PETSC_FALSE;
-    for (PetscInt i = 0; i < bs; i++)
-      if (RowKind(p, ln[a] * bs + i) == 'f') free = PETSC_TRUE;
-    if (!free) continue; /* only its diagonal is in the pattern, and all its rows are dropped */
+    if (!free[a]) continue;           /* only its diagonal is in the pattern, and all its rows are dropped */
     for (PetscInt b = 0; b < nb; b++) {
       const PetscInt k = BlockPlace(p->jac_col, p->jac_row[ln[a] * bs], p->jac_row[ln[a] * bs + 1], bs, ln[b] * bs);
       if (k < 0 || k >= 65536) return PETSC_FALSE; /* not in the pattern (TslProblemInsert then reports it) */
