@@ -74,6 +74,7 @@ typedef enum {
   TSL_KIN_AXISYMMETRIC,
   TSL_KIN_AXISYMMETRIC_TWIST,
   TSL_KIN_SOLID3D,
+  TSL_KIN_CONTINUUM_SHELL,
   TSL_NKIN
 } TslKinematics;
 
@@ -133,12 +134,19 @@ const char *TslElementTypeDofList(const TslElementType *t, char *buf, size_t len
  * displacement components; returns their number (3 plane, 1 axisymmetric, 6 in 3D). */
 PetscInt TslElementTypeRigidModes(const TslElementType *t, const PetscReal x[3], PetscReal modes[6][3]);
 
-/* Section data an element needs: its material (property tables, material.h) and the out-of-plane
- * thickness of plane elements (1 when not given; ignored otherwise). */
+/* Section data an element needs: its material (property tables, material.h), the out-of-plane
+ * thickness of plane elements (1 when not given; ignored otherwise) and, for continuum shells
+ * (*SHELL SECTION), the number of Simpson points through the thickness (0: the default 5) and the
+ * thickness modulus (0: the default, twice the shear modulus at the point's temperature). */
 typedef struct {
   const TslMaterial *mat;
   PetscReal          thickness;
+  PetscInt           shell_points;
+  PetscReal          thickness_modulus;
 } TslElementSection;
+
+/* The section keyword a type takes: "SHELL SECTION" (continuum shells) or "SOLID SECTION". */
+const char *TslElementTypeSectionKeyword(const TslElementType *t);
 
 /* Everything a kernel needs for one element: no time step, no old state (time discretisation is the
  * solver's business, src/solve/):

@@ -71,6 +71,9 @@ typedef struct {
   PetscInt  material_index; /* resolved by TslModelCheck, index into materials[] */
   PetscReal thickness;      /* data line; plane elements' out-of-plane thickness (default 1) */
   TslTarget ref_node;       /* REF NODE= (generalized plane strain): a node id or a node set of one node; id -1 and no set: none */
+  PetscBool shell;          /* *SHELL SECTION (continuum shells) rather than *SOLID SECTION */
+  PetscInt  shell_points;   /* *SHELL SECTION: Simpson points through the thickness (data line; default 5) */
+  PetscReal thickness_modulus; /* *SHELL SECTION, THICKNESS MODULUS= (0: the default, 2 G) */
   TslLoc    loc;
 } TslSection;
 

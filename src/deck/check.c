@@ -196,16 +196,24 @@ static PetscErrorCode CheckMaterialsAndSections(TslModel *m)
   }
   PetscCall(PetscCalloc1(m->nelem, &covered));
   for (PetscInt s = 0; s < m->nsection; s++) {
-    const TslSet *set = &m->elsets[TslModelFindElementSet(m, m->sections[s].elset)];
+    const TslSection *sec = &m->sections[s];
+    const TslSet     *set = &m->elsets[TslModelFindElementSet(m, sec->elset)];
+    const char       *kw  = sec->shell ? "SHELL SECTION" : "SOLID SECTION";
     for (PetscInt k = 0; k < set->n; k++) {
-      PetscInt e = TslModelElementIndex(m, set->ids[k]);
-      if (e >= 0) covered[e] = PETSC_TRUE;
+      PetscInt              e = TslModelElementIndex(m, set->ids[k]);
+      const TslElementType *t = e >= 0 ? TslElementTypeGet(m->elem_type[e]) : NULL;
+      if (e < 0) continue;
+      covered[e] = PETSC_TRUE;
+      if (!strcmp(TslElementTypeSectionKeyword(t), kw)) continue;
+      PetscCall(PetscFree(covered));
+      CHECK(PETSC_FALSE, sec->loc, "*%s on element %" PetscInt_FMT " of type %s (%s): its section is *%s", kw, m->elem_id[e], t->name,
+            TslElementTypeKinematicsName(t), TslElementTypeSectionKeyword(t));
     }
   }
   for (PetscInt e = 0; e < m->nelem && bad < 0; e++)
     if (!covered[e]) bad = e;
   PetscCall(PetscFree(covered));
-  CHECK(bad < 0, ElemLoc(m, bad), "element %" PetscInt_FMT " is not in any *SOLID SECTION", m->elem_id[bad]);
+  CHECK(bad < 0, ElemLoc(m, bad), "element %" PetscInt_FMT " is not in any section (*SOLID SECTION or *SHELL SECTION)", m->elem_id[bad]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -963,26 +963,38 @@ static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
+/* A new section from ELSET= and MATERIAL= (both keywords). */
+static PetscErrorCode NewSection(Deck *d, TslSection **sp)
 {
   TslModel   *m = d->m;
   const char *elset, *mat;
+  TslSection *s;
+
+  PetscFunctionBeginUser;
+  PetscCall(ParamRequired(d, "ELSET", &elset));
+  PetscCall(ParamRequired(d, "MATERIAL", &mat));
+  PetscCall(TslDeckGrow(&m->sections, sizeof(TslSection), m->nsection));
+  s = &m->sections[m->nsection++];
+  PetscCall(PetscMemzero(s, sizeof(*s)));
+  PetscCall(CopyName(d, d->kwloc, s->elset, elset));
+  PetscCall(CopyName(d, d->kwloc, s->material, mat));
+  s->material_index  = -1;
+  s->thickness       = 1.0;
+  s->loc             = d->kwloc;
+  s->ref_node.id     = -1;
+  s->ref_node.set[0] = 0;
+  *sp                = s;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
+{
   TslSection *s;
   PetscBool   got;
 
   PetscFunctionBeginUser;
   (void)kw;
-  PetscCall(ParamRequired(d, "ELSET", &elset));
-  PetscCall(ParamRequired(d, "MATERIAL", &mat));
-  PetscCall(TslDeckGrow(&m->sections, sizeof(TslSection), m->nsection));
-  s = &m->sections[m->nsection++];
-  PetscCall(CopyName(d, d->kwloc, s->elset, elset));
-  PetscCall(CopyName(d, d->kwloc, s->material, mat));
-  s->material_index = -1;
-  s->thickness      = 1.0;
-  s->loc            = d->kwloc;
-  s->ref_node.id     = -1;
-  s->ref_node.set[0] = 0;
+  PetscCall(NewSection(d, &s));
   {
     const char *ref = Param(d, "REF NODE");
     if (ref) {
@@ -998,6 +1010,49 @@ static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
     USER_CHECK(d->nfield <= 1, LOC_FMT "*SOLID SECTION data line needs only the thickness", DLOC(d));
     PetscCall(FieldRealDefault(d, 0, "the thickness", 1.0, &s->thickness));
     USER_CHECK(s->thickness > 0, LOC_FMT "the thickness must be positive", DLOC(d));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *SHELL SECTION for continuum shells (SC8RT, SC6RT): the thickness comes from the nodes, so the data
+ * line's thickness is checked and otherwise ignored, as are OFFSET= and NODAL THICKNESS (the dialect ignores
+ * them for continuum shells); its second field is the number of Simpson points through the thickness (odd,
+ * 3 to 15, default 5). STACK DIRECTION=3 (the element's own third direction: face 1 at the bottom) and
+ * SECTION INTEGRATION=SIMPSON are the only values supported (Gauss is not allowed for coupled shells in the
+ * dialect either). */
+static PetscErrorCode KwShellSection(Deck *d, const DeckKeyword *kw)
+{
+  TslSection *s;
+  PetscBool   got, set;
+  char        buf[64];
+  const char *v;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  PetscCall(NewSection(d, &s));
+  s->shell        = PETSC_TRUE;
+  s->shell_points = 5;
+  PetscCall(ParamReal(d, "THICKNESS MODULUS", &s->thickness_modulus, &set));
+  USER_CHECK(!set || s->thickness_modulus > 0, LOC_FMT "THICKNESS MODULUS= must be positive", KLOC(d));
+  v = ParamUpper(d, "STACK DIRECTION", buf, sizeof(buf));
+  USER_CHECK(!v || !strcmp(v, "3"),
+             LOC_FMT "STACK DIRECTION=%s is not supported: number the elements' nodes so that the stack direction is their third (the default, 3)",
+             KLOC(d), v);
+  v = ParamUpper(d, "SECTION INTEGRATION", buf, sizeof(buf));
+  USER_CHECK(!v || !strcmp(v, "SIMPSON"),
+             LOC_FMT "SECTION INTEGRATION=%s is not supported: SIMPSON only (the dialect allows no Gauss rule for coupled temperature shells)",
+             KLOC(d), v);
+  USER_CHECK(!Param(d, "POISSON"), LOC_FMT "POISSON= is not supported: the thickness behaviour is given by THICKNESS MODULUS=", KLOC(d));
+  PetscCall(DataLine(d, 0, &got));
+  if (got) {
+    PetscReal t;
+    USER_CHECK(d->nfield <= 2, LOC_FMT "*SHELL SECTION data line takes the thickness and the number of integration points", DLOC(d));
+    PetscCall(FieldRealDefault(d, 0, "the thickness", 1.0, &t));
+    USER_CHECK(t > 0, LOC_FMT "the thickness must be positive", DLOC(d));
+    if (d->nfield > 1 && d->field[1][0]) PetscCall(FieldInt(d, 1, "the number of integration points", &s->shell_points));
+    USER_CHECK(s->shell_points >= 3 && s->shell_points <= 15 && s->shell_points % 2 == 1,
+               LOC_FMT "the number of integration points through the thickness must be odd, 3 to 15 (Simpson's rule), got %" PetscInt_FMT, DLOC(d),
+               s->shell_points);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -1935,6 +1990,8 @@ static const DeckKeyword Keywords[] = {
     {"SPECIFIC HEAT", AT_MODEL, IN_MATERIAL, "", KwProperty, TSL_PROP_SPECIFIC_HEAT, NULL},
     {"EXPANSION", AT_MODEL, IN_MATERIAL, "TYPE|ZERO", KwProperty, TSL_PROP_EXPANSION, NULL},
     {"SOLID SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL|REF NODE", KwSolidSection, 0, NULL},
+    {"SHELL SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL|THICKNESS MODULUS|STACK DIRECTION|SECTION INTEGRATION|POISSON|OFFSET|NODAL THICKNESS",
+     KwShellSection, 0, NULL},
     {"INITIAL CONDITIONS", AT_MODEL, IN_NONE, "TYPE", KwInitial, 0, NULL},
     {"AMPLITUDE", AT_BOTH, IN_NONE, "NAME|TIME|DEFINITION", KwAmplitude, 0, NULL},
     {"PHYSICAL CONSTANTS", AT_MODEL, IN_NONE, "ABSOLUTE ZERO|STEFAN BOLTZMANN", KwPhysical, 0, NULL},

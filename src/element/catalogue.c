@@ -19,6 +19,7 @@
 #define AXISYMMETRIC TSL_KIN_AXISYMMETRIC, 2, 3, {1, 2, 11}, 0, {0}
 #define AXITWIST     TSL_KIN_AXISYMMETRIC_TWIST, 2, 4, {1, 2, 5, 11}, 0, {0}
 #define SOLID        TSL_KIN_SOLID3D, 3, 4, {1, 2, 3, 11}, 0, {0}
+#define CSHELL       TSL_KIN_CONTINUUM_SHELL, 3, 4, {1, 2, 3, 11}, 0, {0}
 
 static const TslElementType Catalogue[] = {
     {"CPE3T",   &TslGeomTri3,   &TslFormFull,           PLANE_STRAIN, "3-node plane strain"},
@@ -58,6 +59,8 @@ static const TslElementType Catalogue[] = {
     {"C3D8RT",  &TslGeomHex8,   &TslFormReduced,        SOLID,        "8-node brick, reduced integration, hourglass control"},
     {"C3D8RHT", &TslGeomHex8,   &TslFormReducedHybrid,  SOLID,        "8-node brick, reduced integration, hourglass control, hybrid"},
     {"C3D10MT", &TslGeomTet10,  &TslFormModified,       SOLID,        "10-node modified second-order tetrahedron"},
+    {"SC6RT",   &TslGeomWedge6, &TslFormContinuumShell, CSHELL,       "6-node triangular in-plane continuum shell, reduced integration"},
+    {"SC8RT",   &TslGeomHex8,   &TslFormContinuumShell, CSHELL,       "8-node hexahedral continuum shell, reduced integration, hourglass control"},
 };
 // clang-format on
 

@@ -18,6 +18,8 @@ struct TslKinematicsRow {
   PetscBool   thickness;   /* dV = t dA (plane elements) */
   PetscBool   twist;       /* a third displacement unknown, the twist phi about the axis (u_theta = r phi) */
   PetscBool   reference;   /* eps_33 from the reference node (generalized plane strain) */
+  PetscBool   shell;       /* continuum shell: plane stress in the plane normal to the stack direction,
+                              sigma_nn from the thickness modulus (TslElementElasticity) */
   PetscInt (*rigid_modes)(const PetscReal x[3], PetscReal modes[6][3]);
 };
 
@@ -44,8 +46,14 @@ void TslElementStrainMatrix(const TslElementType *type, const TslElementSection 
                             PetscReal B[6][TSL_MAX_ELEM_NODES * 3]);
 
 /* Elasticity of the kinematics at a material point: D[6][6] (plane stress: condensed so that
- * sigma_33 = 0) and its derivative dD in theta (NULL: not wanted). */
-void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp, PetscReal D[6][6], PetscReal dD[6][6]);
+ * sigma_33 = 0) and its derivative dD in theta (NULL: not wanted). A continuum shell's D depends on the
+ * stack direction at the point p (its section: the thickness modulus); p and sec may be NULL for the
+ * other kinematics. */
+void TslElementElasticity(const TslElementType *type, const TslElementSection *sec, const TslElementPoint *p, const TslMaterialPoint *mp,
+                          PetscReal D[6][6], PetscReal dD[6][6]);
+/* The modulus of the kinematics' dilatational waves, rho c_d^2: lambda + 2 mu, or E / (1 - nu^2) where the
+ * normal stress is free (plane stress) or given by the thickness modulus (continuum shells). */
+PetscReal TslElementWaveModulus(const TslElementType *type, const TslMaterialPoint *mp);
 /* The Lame constants of the isotropic material at a point (TslElementElasticity's, the force records'). */
 void TslElementLame(const TslMaterialPoint *mp, PetscReal *lambda, PetscReal *mu);
 
@@ -70,7 +78,7 @@ typedef struct {
 
 struct TslFormulation {
   const char *name;
-  const TslQuadrature *(*quadrature)(const TslGeometry *g);
+  const TslQuadrature *(*quadrature)(const TslGeometry *g, const TslElementSection *sec); /* sec may be NULL: its defaults */
   PetscInt (*pressure)(const TslGeometry *g, const TslElementPoint *p, PetscReal P[]);
   PetscErrorCode (*hourglass)(const TslElementInput *in, const TslMaterialPoint *mp, PetscReal R[], PetscReal K[], PetscReal *energy);
   PetscBool (*nodal_volume)(const TslElementInput *in, PetscReal vol[]);
@@ -82,7 +90,8 @@ struct TslFormulation {
 #define TSL_MAX_PRESSURE 4
 
 /* The formulations (formulations.c). */
-extern const TslFormulation TslFormFull, TslFormReduced, TslFormHybrid, TslFormReducedHybrid, TslFormModified, TslFormModifiedHybrid;
+extern const TslFormulation TslFormFull, TslFormReduced, TslFormHybrid, TslFormReducedHybrid, TslFormModified, TslFormModifiedHybrid,
+    TslFormContinuumShell;
 
 /* Hourglass control of the one-point quad4 and hex8 (formulations.c): the Flanagan-Belytschko vectors
  * gamma[k][a] = (h_k[a] - sum_d hx[k][d] dN_a/dx_d) / n at the centre point p (returns their number: 1 in

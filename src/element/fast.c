@@ -321,7 +321,7 @@ static PetscInt RowOf(const TslElementType *t)
 {
   for (PetscInt r = 0; r < (PetscInt)(sizeof(Rows) / sizeof(Rows[0])); r++)
     if (Rows[r].geom == t->geom && Rows[r].form == t->form && Rows[r].kin == t->kin && t->nextra == 0 &&
-        t->form->quadrature(t->geom)->n == Rows[r].nq) /* the row's compile-time point count is the rule's */
+        t->form->quadrature(t->geom, NULL)->n == Rows[r].nq) /* the row's compile-time point count is the rule's */
       return r;
   return -1;
 }
@@ -389,7 +389,7 @@ PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *s
   shape->row = r;
   if (r < 0 || RowLayout(r).size > TSL_FAST_MAX_SIZE) return PETSC_FALSE;
   shape->size = RowLayout(r).size;
-  quad        = t->form->quadrature(g);
+  quad        = t->form->quadrature(g, NULL);
   for (PetscInt q = 0; q < quad->n; q++) {
     g->shape(quad->xi[q], N, dN);
     for (PetscInt a = 0; a < g->nnode; a++) {
@@ -448,23 +448,22 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   const TslGeometry    *g = t->geom;
   const PetscInt        r = RowOf(t), n = g->nnode, dim = g->dim;
   const PetscBool       axi  = TslKinematicsRowGet(t->kin)->revolve;
-  const TslQuadrature  *quad = t->form->quadrature(g);
+  const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
   const PetscBool       full = quad->n > 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscReal             xi0[3], K[TSL_MAX_ELEM_NODES][TSL_MAX_ELEM_NODES] = {{0}};
   Layout                L;
   TslMaterialPoint      mp;
   TslElementPoint       p;
-  PetscReal             lambda, mu, D[6][6];
+  PetscReal             lambda, mu;
 
   if (r < 0) return PETSC_FALSE;
   L = RowLayout(r);
   for (PetscInt i = 0; i < L.size; i++) rec[i] = 0;
   TslMaterialEval(in->sec->mat, 0, &mp);
   TslElementLame(&mp, &lambda, &mu);
-  /* rec[4]: the bulk viscosity's modulus, D_11 of the kinematics' elasticity as the generic kernel takes it
-   * (lambda + 2 mu; plane stress condensed) */
-  TslElementElasticity(t, &mp, D, NULL);
-  rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha, rec[4] = D[0][0];
+  /* rec[4]: the bulk viscosity's modulus, the kinematics' wave modulus as the generic kernel takes it
+   * (lambda + 2 mu; plane stress E / (1 - nu^2)) */
+  rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha, rec[4] = TslElementWaveModulus(t, &mp);
   /* the mechanical points, and the conduction by the full rule in every formulation: the same points when
    * the mechanical rule is the full one (each evaluated once) */
   for (PetscInt q = 0; q < quad->n; q++) {

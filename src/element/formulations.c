@@ -6,6 +6,8 @@
  *              conduction keeps the full rule, so there is no thermal hourglass mode
  *   hybrid     an independent pressure, constant (linear families) or linear (quadratic families),
  *              condensed in the element (kernels.c)
+ *   continuum shell  one point in the shell plane, Simpson points along the stack direction, hourglass
+ *              control of the modes they miss (ShellHourglass); conduction keeps the full rule
  *   modified   second-order triangles and tetrahedra that behave well in contact: capacity, mass and 3D
  *              pressure loads are lumped over the linear sub-elements (tri6 -> 4 tri3, tet10 -> 8 tet4),
  *              so every nodal weight is positive (the plain tet10 face gives zero corner forces under a
@@ -33,14 +35,43 @@ PetscReal TslElementHourglassKappa(PetscReal mu, PetscReal dV, PetscReal bb)
   return TSL_HOURGLASS_SCALE * mu * dV * bb;
 }
 
-static const TslQuadrature *FullRule(const TslGeometry *g)
+static const TslQuadrature *FullRule(const TslGeometry *g, const TslElementSection *sec)
 {
+  (void)sec;
   return &g->full;
 }
 
-static const TslQuadrature *ReducedRule(const TslGeometry *g)
+static const TslQuadrature *ReducedRule(const TslGeometry *g, const TslElementSection *sec)
 {
+  (void)sec;
   return &g->reduced;
+}
+
+/* Continuum shell: the centre of the reference surface (hex8: (0, 0); wedge6: the triangle's centroid) times
+ * n Simpson points along the stack direction, the third reference coordinate (the section's points, odd, 3
+ * to TSL_SHELL_MAX_POINTS; 5 by default as in Abaqus). Built once per family and count. */
+#define TSL_SHELL_MAX_POINTS 15
+static const TslQuadrature *ShellRule(const TslGeometry *g, const TslElementSection *sec)
+{
+  static TslQuadrature rules[2][TSL_SHELL_MAX_POINTS + 1];
+  static PetscBool     built[2][TSL_SHELL_MAX_POINTS + 1];
+  const PetscInt       n = sec && sec->shell_points > 0 ? sec->shell_points : 5, f = g->nnode == 8 ? 0 : 1;
+  TslQuadrature       *q;
+
+  PetscCheckAbort(n >= 3 && n <= TSL_SHELL_MAX_POINTS && n % 2 == 1 && g->dim == 3, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                  "continuum shell rule with %d points", (int)n);
+  q = &rules[f][n];
+  if (built[f][n]) return q;
+  q->n      = n;
+  q->degree = 1; /* in the shell plane; Simpson's rule is exact for cubics along the stack direction */
+  for (PetscInt k = 0; k < n; k++) {
+    const PetscReal h = 2.0 / (n - 1), s = k == 0 || k == n - 1 ? 1 : (k % 2 ? 4 : 2);
+    q->xi[k][0] = q->xi[k][1] = f == 0 ? 0 : 1.0 / 3;
+    q->xi[k][2]               = -1 + k * h;
+    q->w[k]                   = (f == 0 ? 4 : 0.5) * h / 3 * s;
+  }
+  built[f][n] = PETSC_TRUE;
+  return q;
 }
 
 /* Pressure space of a hybrid element: constant for linear families, 1 + xi (complete linear in the
@@ -207,30 +238,35 @@ PetscInt TslElementHourglassBase(const TslElementInput *in, const TslElementPoin
   return nh;
 }
 
-static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMaterialPoint *mp, PetscReal R[], PetscReal K[], PetscReal *energy)
+/* The centre of the reference element (the average of its corners): the point of the stabilisation. */
+static void Centre(const TslGeometry *g, PetscReal xi[3])
+{
+  for (PetscInt d = 0; d < 3; d++) xi[d] = 0;
+  for (PetscInt a = 0; a < g->ncorner; a++)
+    for (PetscInt d = 0; d < g->dim; d++) xi[d] += g->node_xi[a][d] / g->ncorner;
+}
+
+/* f_ia = kappa sum_k gamma^k_a q^k_i for the vectors gamma[0..nh) (a zero vector skipped), kappa from bb. */
+static PetscErrorCode HourglassApply(const TslElementInput *in, const TslMaterialPoint *mp, const TslElementPoint *p,
+                                     PetscReal gamma[4][TSL_MAX_ELEM_NODES], PetscInt nh, PetscReal bb, PetscReal R[], PetscReal K[],
+                                     PetscReal *energy)
 {
   const TslElementType *t   = in->type;
-  const TslGeometry    *g   = t->geom;
-  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = TslElementTypeNodes(t) * ndof;
-  const PetscBool       twist  = TslKinematicsRowGet(t->kin)->twist;
-  const PetscReal       xi0[3] = {0, 0, 0};
-  TslElementPoint       p;
-  PetscReal             gamma[4][TSL_MAX_ELEM_NODES], bb, kappa, dkappa, mu, dmu;
-  PetscInt              nh;
+  const PetscInt        dim = t->dim, ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = t->geom->nnode, nd = TslElementTypeNodes(t) * ndof;
+  const PetscBool       twist = TslKinematicsRowGet(t->kin)->twist;
+  const PetscReal       mu    = mp->E / (2 * (1 + mp->nu));
+  const PetscReal       dmu   = mp->dE / (2 * (1 + mp->nu)) - mp->dnu * mp->E / (2 * (1 + mp->nu) * (1 + mp->nu));
+  const PetscReal       kappa = TslElementHourglassKappa(mu, p->dV, bb), dkappa = TslElementHourglassKappa(dmu, p->dV, bb);
 
   PetscFunctionBeginUser;
-  PetscCheck(TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB,
-             "hourglass control of an inverted element");
-  nh      = TslElementHourglassBase(in, &p, gamma, NULL, &bb);
-  mu      = mp->E / (2 * (1 + mp->nu));
-  dmu     = mp->dE / (2 * (1 + mp->nu)) - mp->dnu * mp->E / (2 * (1 + mp->nu) * (1 + mp->nu));
-  kappa   = TslElementHourglassKappa(mu, p.dV, bb);
-  dkappa  = TslElementHourglassKappa(dmu, p.dV, bb);
   *energy = 0;
-  for (PetscInt k = 0; k < nh; k++)
+  for (PetscInt k = 0; k < nh; k++) {
+    PetscReal gg = 0;
+    for (PetscInt a = 0; a < n; a++) gg += gamma[k][a] * gamma[k][a];
+    if (gg == 0) continue; /* a product of coordinates that vanishes at every node (wedge6: xi eta) */
     for (PetscInt i = 0; i < nu; i++) {
       /* a twist unknown is an angle: its hourglass displacement is r phi (r at the centre) */
-      const PetscReal s  = i < dim ? 1 : p.x[0] * p.x[0];
+      const PetscReal s  = i < dim ? 1 : p->x[0] * p->x[0];
       PetscReal       qk = 0;
       if (i >= dim && !twist) continue; /* an unused slot (generalized plane strain) */
       for (PetscInt a = 0; a < n; a++) qk += gamma[k][a] * in->u[ndof * a + i];
@@ -240,10 +276,59 @@ static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMat
         if (!K) continue;
         for (PetscInt b = 0; b < n; b++) {
           K[(ndof * a + i) * nd + ndof * b + i] += s * kappa * gamma[k][a] * gamma[k][b];
-          K[(ndof * a + i) * nd + ndof * b + th] += s * dkappa * gamma[k][a] * qk * p.N[b];
+          K[(ndof * a + i) * nd + ndof * b + th] += s * dkappa * gamma[k][a] * qk * p->N[b];
         }
       }
     }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The control at the element centre; inplane: bb over the gradients' parts normal to the continuum shell's
+ * stack direction (ShellHourglass), else the whole gradients. */
+static PetscErrorCode HourglassAtCentre(const TslElementInput *in, const TslMaterialPoint *mp, PetscBool inplane, PetscReal R[], PetscReal K[],
+                                        PetscReal *energy)
+{
+  const TslGeometry *g = in->type->geom;
+  PetscReal          xi0[3], gamma[4][TSL_MAX_ELEM_NODES], bb, nrm[3], len = 0;
+  TslElementPoint    p;
+  PetscInt           nh;
+
+  PetscFunctionBeginUser;
+  Centre(g, xi0);
+  PetscCheck(TslElementPointEvaluate(in->type, in->sec, in->x, xi0, g->ref_volume, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "hourglass control of an inverted element");
+  nh = TslElementHourglassBase(in, &p, gamma, NULL, &bb);
+  if (inplane) {
+    for (PetscInt d = 0; d < 3; d++) nrm[d] = p.Ji[2][d], len += nrm[d] * nrm[d];
+    len = PetscSqrtReal(len);
+    bb  = 0;
+    for (PetscInt a = 0; a < g->nnode; a++) {
+      PetscReal gn = 0, gg = 0;
+      for (PetscInt d = 0; d < 3; d++) gn += p.dNdx[a][d] * nrm[d] / len, gg += p.dNdx[a][d] * p.dNdx[a][d];
+      bb += gg - gn * gn;
+    }
+  }
+  PetscCall(HourglassApply(in, mp, &p, gamma, nh, bb, R, K, energy));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode HourglassStiffness(const TslElementInput *in, const TslMaterialPoint *mp, PetscReal R[], PetscReal K[], PetscReal *energy)
+{
+  PetscFunctionBeginUser;
+  PetscCall(HourglassAtCentre(in, mp, PETSC_FALSE, R, K, energy));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A continuum shell's points lie on the line through the centre along the stack direction: besides the
+ * in-plane hourglass modes (xi eta, xi eta zeta) the twist of the element about that line strains none of
+ * them. All the Flanagan-Belytschko vectors are stabilised, but with bb summed over the gradients' in-plane
+ * parts only: with the whole |grad N|^2, ~ 1/t^2, the control of a thin element would stiffen its
+ * bending (the xi zeta, eta zeta modes the points do see) by (L/t)^2; in-plane it adds a few percent. */
+static PetscErrorCode ShellHourglass(const TslElementInput *in, const TslMaterialPoint *mp, PetscReal R[], PetscReal K[], PetscReal *energy)
+{
+  PetscFunctionBeginUser;
+  PetscCall(HourglassAtCentre(in, mp, PETSC_TRUE, R, K, energy));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -256,6 +341,13 @@ const TslFormulation TslFormReducedHybrid = {
 const TslFormulation TslFormModified       = {"modified second order", FullRule, NULL, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn};
 const TslFormulation TslFormModifiedHybrid = {
     "modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn};
+const TslFormulation TslFormContinuumShell = {"continuum shell: reduced in-plane, Simpson through the thickness, hourglass control",
+                                              ShellRule,
+                                              NULL,
+                                              ShellHourglass,
+                                              Lump,
+                                              FaceRuleOwn,
+                                              FaceRuleOwn};
 
 PetscBool TslElementTypeSubdividedFace(const TslElementType *t, PetscInt face)
 {

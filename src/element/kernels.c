@@ -198,7 +198,7 @@ static PetscBool MechanicsSolid3DTangent(const TslElementInput *in, const TslEle
 {
   const TslElementType *t    = in->type;
   const TslGeometry    *g    = t->geom;
-  const TslQuadrature  *quad = t->form->quadrature(g);
+  const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
   const PetscInt        n = g->nnode, nd = 4 * n;
   PetscReal             S[TSL_MAX_ELEM_NODES][TSL_MAX_ELEM_NODES][9], lambda0 = 0, mu0 = 0;
   MechPoint             mq;
@@ -211,7 +211,7 @@ static PetscBool MechanicsSolid3DTangent(const TslElementInput *in, const TslEle
 
     if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, PETSC_TRUE, &mq)) return PETSC_FALSE;
     dV = mq.p->dV;
-    TslElementElasticity(t, &mq.mp, D, dD);
+    TslElementElasticity(t, in->sec, mq.p, &mq.mp, D, dD);
     TslElementLame(&mq.mp, &lambda, &mu);
     for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r] - VoigtM[r] * mq.eps_th;
     for (PetscInt r = 0; r < 6; r++) {
@@ -282,7 +282,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
 {
   const TslElementType *t    = in->type;
   const TslGeometry    *g    = t->geom;
-  const TslQuadrature  *quad = t->form->quadrature(g);
+  const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
   const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
   const PetscBool       hybrid      = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
   PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
@@ -323,7 +323,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         P_avg[k] += P[k] / quad->n;
       }
     } else {
-      TslElementElasticity(t, &mq.mp, D, K ? dD : NULL);
+      TslElementElasticity(t, in->sec, mq.p, &mq.mp, D, K ? dD : NULL);
       for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r] - VoigtM[r] * mq.eps_th;
     }
     if (lean) {
@@ -459,16 +459,20 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
 }
 
 /* The stabilisation of a reduced-integration element is evaluated with the material at the element
- * centre (the single mechanical point). */
+ * centre (the single mechanical point; a continuum shell's points lie above and below it). */
 static PetscErrorCode Hourglass(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscReal *energy)
 {
-  const TslQuadrature *quad = in->type->form->quadrature(in->type->geom);
-  MechPoint            mq;
+  const TslGeometry *g      = in->type->geom;
+  PetscReal          xi0[3] = {0, 0, 0};
+  MechPoint          mq;
 
   PetscFunctionBeginUser;
   *energy = 0;
   if (!in->type->form->hourglass) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCheck(MechPointEvaluate(in, quad->xi[0], quad->w[0], NULL, LeanStrain(in), &mq), PETSC_COMM_SELF, PETSC_ERR_PLIB, "hourglass control of an inverted element");
+  for (PetscInt a = 0; a < g->ncorner; a++)
+    for (PetscInt d = 0; d < g->dim; d++) xi0[d] += g->node_xi[a][d] / g->ncorner;
+  PetscCheck(MechPointEvaluate(in, xi0, g->ref_volume, NULL, LeanStrain(in), &mq), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+             "hourglass control of an inverted element");
   PetscCall(in->type->form->hourglass(in, &mq.mp, R, K, energy));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -476,7 +480,7 @@ static PetscErrorCode Hourglass(const TslElementInput *in, PetscReal R[], PetscR
 PetscBool TslElementValid(const TslElementInput *in)
 {
   const TslGeometry   *g    = in->type->geom;
-  const TslQuadrature *quad = in->type->form->quadrature(g);
+  const TslQuadrature *quad = in->type->form->quadrature(g, in->sec);
   TslElementPoint      full[TSL_MAX_QP], p;
 
   if (!FullPoints(in, full)) return PETSC_FALSE;
@@ -692,7 +696,7 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res
   for (PetscInt i = 0; i < TslElementTypeNodes(t) * ndof; i++) R[i] = 0;
   PetscCheck(Mechanics(in, NULL, R, NULL, &hy, res, NULL), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
   if (TslKinematicsRowGet(t->kin)->free_normal) {
-    const TslQuadrature *quad = t->form->quadrature(g);
+    const TslQuadrature *quad = t->form->quadrature(g, in->sec);
     res->E[2]                 = 0;
     for (PetscInt q = 0; q < quad->n; q++) {
       MechPoint mq;
@@ -729,7 +733,7 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
   const TslElementType *t = in->type;
   const TslGeometry    *g = t->geom;
   const PetscInt        ndof = t->ndof, nu = ndof - 1, n = TslElementTypeNodes(t);
-  PetscReal             xi[3] = {0, 0, 0}, B[6][TSL_MAX_ELEM_NODES * 3], D[6][6], rate = 0, p;
+  PetscReal             xi[3] = {0, 0, 0}, B[6][TSL_MAX_ELEM_NODES * 3], M, rate = 0, p;
   TslElementPoint       pt;
   TslMaterialPoint      mp;
 
@@ -740,12 +744,12 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
   PetscCheck(TslElementPointEvaluate(t, in->sec, in->x, xi, g->ref_volume, &pt), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
   TslElementStrainMatrix(t, in->sec, in->x, &pt, B);
   TslMaterialEval(in->sec->mat, NodalTheta(in, pt.N, in->u), &mp);
-  TslElementElasticity(t, &mp, D, NULL);
+  M = TslElementWaveModulus(t, &mp);
   for (PetscInt a = 0; a < n; a++)
     for (PetscInt i = 0; i < nu; i++)
       for (PetscInt r = 0; r < 3; r++) rate += B[r][nu * a + i] * v[ndof * a + i];
-  p = eta1 * D[0][0] * rate;
-  if (rate < 0) p -= eta2 * D[0][0] * rate * rate;
+  p = eta1 * M * rate;
+  if (rate < 0) p -= eta2 * M * rate * rate;
   for (PetscInt a = 0; a < n; a++)
     for (PetscInt i = 0; i < nu; i++)
       for (PetscInt r = 0; r < 3; r++) R[ndof * a + i] += p * B[r][nu * a + i] * pt.dV;

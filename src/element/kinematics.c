@@ -6,6 +6,8 @@
  *   plane stress   sigma_33 = 0 by static condensation of D (D_ps), thermal stress D_ps eps_th [1,1,0]
  *   axisymmetric   x = r, y = z, eps_33 = u_r / r (hoop), dV = 2 pi r dA
  *   3D             all six components
+ *   continuum shell  all six components of the strain; plane stress in the plane normal to the stack
+ *                  direction and the thickness modulus along it (ShellLocal, rotated to the global axes)
  */
 #include "element_impl.h"
 #include <stdio.h>
@@ -43,14 +45,19 @@ static PetscInt RigidSolid(const PetscReal x[3], PetscReal modes[6][3])
   return 6;
 }
 
-/* columns: name, hoop, free_normal, revolve, thickness, twist, reference, rigid modes */
+/* columns: name, hoop, free_normal, revolve, thickness, twist, reference, shell, rigid modes */
 static const struct TslKinematicsRow KinematicsTable[TSL_NKIN] = {
-    [TSL_KIN_PLANE_STRAIN]             = {"plane strain", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, RigidPlane},
-    [TSL_KIN_PLANE_STRESS]             = {"plane stress", PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, RigidPlane},
-    [TSL_KIN_GENERALIZED_PLANE_STRAIN] = {"generalized plane strain", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, RigidPlane},
-    [TSL_KIN_AXISYMMETRIC]             = {"axisymmetric", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidAxisymmetric},
-    [TSL_KIN_AXISYMMETRIC_TWIST]       = {"axisymmetric with twist", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, RigidTwist},
-    [TSL_KIN_SOLID3D]                  = {"3D", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidSolid},
+    [TSL_KIN_PLANE_STRAIN] = {"plane strain", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidPlane},
+    [TSL_KIN_PLANE_STRESS] = {"plane stress", PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidPlane},
+    [TSL_KIN_GENERALIZED_PLANE_STRAIN] = {"generalized plane strain", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE,
+                                          PETSC_FALSE, RigidPlane},
+    [TSL_KIN_AXISYMMETRIC]             = {"axisymmetric", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE,
+                                          RigidAxisymmetric},
+    [TSL_KIN_AXISYMMETRIC_TWIST] = {"axisymmetric with twist", PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE,
+                                    RigidTwist},
+    [TSL_KIN_SOLID3D]            = {"3D", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, RigidSolid},
+    [TSL_KIN_CONTINUUM_SHELL]    = {"continuum shell", PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE,
+                                    RigidSolid},
 };
 
 const struct TslKinematicsRow *TslKinematicsRowGet(TslKinematics kin)
@@ -63,9 +70,16 @@ const char *TslElementTypeKinematicsName(const TslElementType *t)
   return KinematicsTable[t->kin].name;
 }
 
+/* 3D kinematics differ only in the constitutive assumption (a continuum shell glued to a solid is a common
+ * model), so any two of them may share nodes. */
 PetscBool TslElementTypeSameKinematics(const TslElementType *a, const TslElementType *b)
 {
-  return a->kin == b->kin ? PETSC_TRUE : PETSC_FALSE;
+  return a->kin == b->kin || (a->dim == 3 && b->dim == 3) ? PETSC_TRUE : PETSC_FALSE;
+}
+
+const char *TslElementTypeSectionKeyword(const TslElementType *t)
+{
+  return KinematicsTable[t->kin].shell ? "SHELL SECTION" : "SOLID SECTION";
 }
 
 PetscBool TslElementTypeSameModel(const TslElementType *a, const TslElementType *b)
@@ -222,7 +236,88 @@ void TslElementLame(const TslMaterialPoint *mp, PetscReal *lambda, PetscReal *mu
   *mu     = mp->E / (2 * (1 + mp->nu));
 }
 
-void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp, PetscReal D[6][6], PetscReal dD[6][6])
+/* A continuum shell's elasticity in the frame (e1, e2, n) of its stack direction n (Abaqus's SC8R, SC6R):
+ * plane stress in the shell plane, sigma_nn = E_t eps_nn uncoupled from it (E_t the section's thickness
+ * modulus, by default 2 G, Abaqus's default), transverse shear k G with k = 5/6 (the shear correction of a
+ * homogeneous section). The thermal strain acts in every direction through D (eps - eps_th m). */
+static void ShellLocal(const TslElementSection *sec, const TslMaterialPoint *mp, PetscReal D[6][6], PetscReal dD[6][6])
+{
+  const PetscReal E = mp->E, nu = mp->nu, c = 1 / (1 - nu * nu), G = E / (2 * (1 + nu));
+  const PetscReal dG    = mp->dE / (2 * (1 + nu)) - mp->dnu * E / (2 * (1 + nu) * (1 + nu));
+  const PetscBool given = sec && sec->thickness_modulus > 0 ? PETSC_TRUE : PETSC_FALSE;
+  const PetscReal k     = 5.0 / 6.0;
+
+  PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(&D[0][0], 36));
+  D[0][0] = D[1][1] = E * c;
+  D[0][1] = D[1][0] = nu * E * c;
+  D[2][2]           = given ? sec->thickness_modulus : 2 * G;
+  D[3][3]           = G;
+  D[4][4] = D[5][5] = k * G;
+  if (!dD) return;
+  PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(&dD[0][0], 36));
+  dD[0][0] = dD[1][1] = mp->dE * c + E * 2 * nu * c * c * mp->dnu;
+  dD[0][1] = dD[1][0] = (mp->dnu * E + nu * mp->dE) * c + nu * E * 2 * nu * c * c * mp->dnu;
+  dD[2][2]            = given ? 0 : 2 * dG;
+  dD[3][3]            = dG;
+  dD[4][4] = dD[5][5] = k * dG;
+}
+
+/* The shell frame at a point: n the unit gradient of the third reference coordinate (the stack direction,
+ * normal to the element's reference surfaces), e1 the global axis least aligned with n projected onto the
+ * shell plane, e2 = n x e1; rows of Q. For an isotropic material the choice of e1 does not matter. */
+static void ShellFrame(const TslElementPoint *p, PetscReal Q[3][3])
+{
+  PetscReal n[3] = {p->Ji[2][0], p->Ji[2][1], p->Ji[2][2]}, len = PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), e1[3], dot;
+  PetscInt  k = 0;
+
+  for (PetscInt d = 0; d < 3; d++) n[d] /= len;
+  for (PetscInt d = 1; d < 3; d++)
+    if (PetscAbsReal(n[d]) < PetscAbsReal(n[k])) k = d;
+  dot = n[k];
+  for (PetscInt d = 0; d < 3; d++) e1[d] = (d == k) - dot * n[d];
+  len = PetscSqrtReal(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+  for (PetscInt d = 0; d < 3; d++) Q[0][d] = e1[d] / len, Q[2][d] = n[d];
+  Q[1][0] = n[1] * Q[0][2] - n[2] * Q[0][1];
+  Q[1][1] = n[2] * Q[0][0] - n[0] * Q[0][2];
+  Q[1][2] = n[0] * Q[0][1] - n[1] * Q[0][0];
+}
+
+/* D = T^T D_l T with T the Voigt (engineering shear) map of global strains to the frame's, eps_l = T eps:
+ * eps'_ij = Q_ik Q_jl eps_kl, a global shear component counted for both its orders, a local one doubled. */
+static void Rotate(const PetscReal Q[3][3], PetscReal D[6][6])
+{
+  static const PetscInt vi[6] = {0, 1, 2, 0, 0, 1}, vj[6] = {0, 1, 2, 1, 2, 2};
+  PetscReal             T[6][6], TD[6][6];
+
+  for (PetscInt r = 0; r < 6; r++)
+    for (PetscInt s = 0; s < 6; s++) {
+      const PetscInt i = vi[r], j = vj[r], k = vi[s], l = vj[s];
+      T[r][s] = (k == l ? Q[i][k] * Q[j][k] : 0.5 * (Q[i][k] * Q[j][l] + Q[i][l] * Q[j][k])) * (r < 3 ? 1 : 2);
+    }
+  for (PetscInt r = 0; r < 6; r++)
+    for (PetscInt s = 0; s < 6; s++) {
+      TD[r][s] = 0;
+      for (PetscInt m = 0; m < 6; m++) TD[r][s] += T[m][r] * D[m][s];
+    }
+  for (PetscInt r = 0; r < 6; r++)
+    for (PetscInt s = 0; s < 6; s++) {
+      D[r][s] = 0;
+      for (PetscInt m = 0; m < 6; m++) D[r][s] += TD[r][m] * T[m][s];
+    }
+}
+
+PetscReal TslElementWaveModulus(const TslElementType *type, const TslMaterialPoint *mp)
+{
+  const struct TslKinematicsRow *info = TslKinematicsRowGet(type->kin);
+  PetscReal                      lambda, mu;
+
+  if (info->free_normal || info->shell) return mp->E / (1 - mp->nu * mp->nu);
+  TslElementLame(mp, &lambda, &mu);
+  return lambda + 2 * mu;
+}
+
+void TslElementElasticity(const TslElementType *type, const TslElementSection *sec, const TslElementPoint *p, const TslMaterialPoint *mp,
+                          PetscReal D[6][6], PetscReal dD[6][6])
 {
   const PetscReal E = mp->E, nu = mp->nu, a = (1 + nu) * (1 - 2 * nu);
   PetscReal       lambda, mu;
@@ -231,6 +326,14 @@ void TslElementElasticity(const TslElementType *type, const TslMaterialPoint *mp
   const PetscReal dmu     = mp->dE / (2 * (1 + nu)) - mp->dnu * E / (2 * (1 + nu) * (1 + nu));
   PetscReal       D0[6][6], dD0[6][6];
 
+  if (TslKinematicsRowGet(type->kin)->shell) {
+    PetscReal Q[3][3];
+    ShellLocal(sec, mp, D, dD);
+    ShellFrame(p, Q);
+    Rotate(Q, D);
+    if (dD) Rotate(Q, dD);
+    return;
+  }
   TslElementLame(mp, &lambda, &mu);
   if (!TslKinematicsRowGet(type->kin)->free_normal) { /* straight into D (and dD only when asked: the explicit forces do not) */
     Isotropic(lambda, mu, D);

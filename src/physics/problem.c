@@ -15,11 +15,14 @@ static PetscErrorCode SetUpSections(TslProblem p)
     if (k < 0) continue; /* the set has no element on this rank */
     for (PetscInt i = 0; i < m->elsets[k].n; i++) {
       PetscInt e = TslModelElementIndex(m, m->elsets[k].ids[i]);
-      if (e >= 0) p->esec[e] = (TslElementSection){&m->materials[sec->material_index], sec->thickness > 0 ? sec->thickness : 1.0};
+      if (e >= 0)
+        p->esec[e] = (TslElementSection){&m->materials[sec->material_index], sec->thickness > 0 ? sec->thickness : 1.0, sec->shell_points,
+                                         sec->thickness_modulus};
     }
   }
   for (PetscInt e = 0; e < m->nelem; e++)
-    PetscCheck(p->esec[e].mat, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "element %" PetscInt_FMT " has no *SOLID SECTION", m->elem_id[e]);
+    PetscCheck(p->esec[e].mat, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "element %" PetscInt_FMT " has no section (*SOLID SECTION or *SHELL SECTION)",
+               m->elem_id[e]);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

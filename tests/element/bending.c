@@ -31,6 +31,7 @@ typedef struct {
   PetscReal nu;
   PetscBool fixed_sides; /* 3D: u_z = 0 on z = 0 and z = 1 (plane strain) */
   PetscBool clamped;     /* every displacement held on the root face, not only u_x */
+  PetscInt  height;      /* the axis of the height H and of the load: 1 (y), or 2 (z: a continuum shell's stack direction) */
 } Beam;
 
 typedef struct {
@@ -45,9 +46,11 @@ static PetscReal Origin(const TslElementType *t)
   return t->kin == TSL_KIN_AXISYMMETRIC ? R0_AXI : 0;
 }
 
-/* Is the out-of-plane strain held (E' = E / (1 - nu^2)) or free (E)? */
+/* Is the out-of-plane strain held (E' = E / (1 - nu^2)) or free (E)? A continuum shell's normal stress
+ * does not couple to its in-plane strains, and its plane is in plane stress: free either way. */
 static PetscBool OutOfPlaneHeld(const TslElementType *t, const Beam *b)
 {
+  if (t->kin == TSL_KIN_CONTINUUM_SHELL) return PETSC_FALSE;
   if (t->kin == TSL_KIN_SOLID3D) return b->fixed_sides;
   return (PetscBool)(t->kin != TSL_KIN_PLANE_STRESS);
 }
@@ -132,7 +135,7 @@ static PetscErrorCode ZeroEnergyModes(const Grid *grid, const PetscBool fixed[],
       PetscBool inverted;
       PetscCall(TslElementInternal(&in, Re, Ke, &inverted));
     } else {
-      const TslQuadrature *quad = t->form->quadrature(g);
+      const TslQuadrature *quad = t->form->quadrature(g, &grid->sec);
       for (PetscInt i = 0; i < nd * nd; i++) Ke[i] = 0;
       for (PetscInt q = 0; q < quad->n; q++) {
         PetscReal        B[6][TSL_MAX_ELEM_NODES * 3], D[6][6];
@@ -141,7 +144,7 @@ static PetscErrorCode ZeroEnergyModes(const Grid *grid, const PetscBool fixed[],
         PetscCheck(TslElementPointEvaluate(t, &grid->sec, xe, quad->xi[q], quad->w[q], &p), PETSC_COMM_SELF, PETSC_ERR_PLIB, "invalid map");
         TslElementStrainMatrix(t, &grid->sec, xe, &p, B);
         TslMaterialEval(&grid->mat, 0, &mp);
-        TslElementElasticity(t, &mp, D, NULL);
+        TslElementElasticity(t, &grid->sec, &p, &mp, D, NULL);
         for (PetscInt a = 0; a < nen; a++)
           for (PetscInt i = 0; i < dim; i++)
             for (PetscInt b = 0; b < nen; b++)
@@ -178,8 +181,8 @@ static PetscErrorCode ZeroEnergyModes(const Grid *grid, const PetscBool fixed[],
  * one LU solve; deflection, energies and (modes) the zero-energy mode counts. */
 static PetscErrorCode Cantilever(const TslElementType *t, const Beam *b, PetscBool modes, BeamResult *res)
 {
-  const PetscInt  dim = t->dim, ndof = t->ndof;
-  const PetscReal x0 = Origin(t), lo[3] = {x0, 0, 0}, hi[3] = {x0 + L, H, 1};
+  const PetscInt  dim = t->dim, ndof = t->ndof, hd = b->height ? b->height : 1, wd = 3 - hd;
+  const PetscReal x0 = Origin(t), lo[3] = {x0, 0, 0}, hi[3] = {x0 + L, hd == 1 ? H : 1, hd == 1 ? 1 : H};
   Grid            grid;
   PetscReal      *F, *u, *w, wsum = 0;
   PetscInt       *fix, nfix = 0;
@@ -195,17 +198,17 @@ static PetscErrorCode Cantilever(const TslElementType *t, const Beam *b, PetscBo
     fixed[ndof * a + dim] = PETSC_TRUE;
     if (GridOnPlane(&grid, a, 0, x0)) {
       fixed[ndof * a + 0] = PETSC_TRUE;
-      if (b->clamped || GridOnPlane(&grid, a, 1, 0.5 * H))
+      if (b->clamped || GridOnPlane(&grid, a, hd, 0.5 * H))
         for (PetscInt i = 1; i < dim; i++) fixed[ndof * a + i] = PETSC_TRUE;
     }
-    if (dim == 3 && b->fixed_sides && (GridOnPlane(&grid, a, 2, 0) || GridOnPlane(&grid, a, 2, 1))) fixed[ndof * a + 2] = PETSC_TRUE;
+    if (dim == 3 && b->fixed_sides && (GridOnPlane(&grid, a, wd, 0) || GridOnPlane(&grid, a, wd, 1))) fixed[ndof * a + wd] = PETSC_TRUE;
   }
   for (PetscInt i = 0; i < grid.nnode * ndof; i++)
     if (fixed[i]) fix[nfix++] = i;
   PetscCheck(nfix > grid.nnode + 1, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s: no root node at mid-height (odd cell count through H)", t->name);
   PetscCall(GridFaceWeights(&grid, 0, x0 + L, w));
   for (PetscInt a = 0; a < grid.nnode; a++) wsum += w[a];
-  for (PetscInt a = 0; a < grid.nnode; a++) F[ndof * a + 1] = -P * w[a] / wsum;
+  for (PetscInt a = 0; a < grid.nnode; a++) F[ndof * a + hd] = -P * w[a] / wsum;
   PetscCall(GridSolve(&grid, F, nfix, fix, u, &res->info));
   res->work = 0;
   for (PetscInt i = 0; i < grid.nnode * ndof; i++) res->work += F[i] * u[i];
@@ -236,7 +239,7 @@ static PetscErrorCode Locking(TestLog *log)
 
     if (t->kin != TSL_KIN_PLANE_STRAIN && t->kin != TSL_KIN_SOLID3D) continue;
     for (PetscInt k = 0; k < 3; k++) {
-      const Beam b = {{8, 2, 1}, k ? 0.4999 : 0.3, PETSC_TRUE, (PetscBool)(k == 2)};
+      const Beam b = {{8, 2, 1}, k ? 0.4999 : 0.3, PETSC_TRUE, (PetscBool)(k == 2), 1};
       PetscCall(Cantilever(t, &b, PETSC_FALSE, &r[k]));
       Check(log, r[k].info.factored, PETSC_TRUE, 0, "%s nu=%g%s LU solve (%s)", t->name, (double)b.nu, b.clamped ? " clamped" : "",
             r[k].info.failure);
@@ -247,7 +250,7 @@ static PetscErrorCode Locking(TestLog *log)
       /* one mechanical point: two layers miss the in-element bending share (1/n^2 of the energy) whatever
        * the volumetric treatment, so the absolute accuracy is asked of four layers; the ratio below, on
        * two layers, is what isolates volumetric locking */
-      const Beam b4 = {{8, 4, 1}, 0.4999, PETSC_TRUE, PETSC_FALSE};
+      const Beam b4 = {{8, 4, 1}, 0.4999, PETSC_TRUE, PETSC_FALSE, 1};
       BeamResult r4;
       PetscCall(Cantilever(t, &b4, PETSC_FALSE, &r4));
       printf("  %-8s 8 x 4 cells, nu=0.4999: tip/beam %.4f\n", t->name, (double)(r4.deflection / r4.reference));
@@ -277,7 +280,7 @@ static PetscErrorCode Hourglass(TestLog *log)
     if (!t->form->hourglass) continue;
     if (t->kin == TSL_KIN_AXISYMMETRIC_TWIST || t->nextra) continue; /* the same in-plane hourglass control as CAX4RT; the twist part is checked in element_coupled_kernels */
     for (PetscInt fine = 0; fine < 2; fine++) {
-      const Beam b = {{fine ? 16 : 6, fine ? 4 : 2, fine ? 2 : 1}, 0.3, PETSC_FALSE, PETSC_FALSE};
+      const Beam b = {{fine ? 16 : 6, fine ? 4 : 2, fine ? 2 : 1}, 0.3, PETSC_FALSE, PETSC_FALSE, 1};
       BeamResult r;
       char       cells[32];
 
@@ -295,14 +298,50 @@ static PetscErrorCode Hourglass(TestLog *log)
              (double)r.hourglass, (double)(r.hourglass / r.strain));
       Check(log, r.info.factored, PETSC_TRUE, 0, "%s %s LU solve without zero pivot (%s)", t->name, cells, r.info.failure);
       Check(log, r.strain + r.hourglass, 0.5 * r.work, 1e-8 * r.work, "%s %s strain + hourglass energy = work / 2", t->name, cells);
+      /* SC6RT: the triangle's in-plane field has no hourglass mode (its control is for the twist about the
+       * stack line, which its neighbours restrain in a mesh), and as the linear triangle's it is stiff in
+       * in-plane bending, like CPS3T: only printed here; its bending is the shell's, below */
+      const PetscBool triangle = t->geom->nnode == 6 ? PETSC_TRUE : PETSC_FALSE;
       if (!fine) {
-        CheckAtLeast(log, r.zero_modes[0], 1, "%s %s zero-energy modes of the one-point stiffness (hourglass control needed)", t->name, cells);
+        if (!triangle)
+          CheckAtLeast(log, r.zero_modes[0], 1, "%s %s zero-energy modes of the one-point stiffness (hourglass control needed)", t->name, cells);
         Check(log, r.zero_modes[1], 0, 0, "%s %s zero-energy modes with hourglass control", t->name, cells);
       } else {
-        Check(log, r.deflection / r.reference, 1, 0.15, "%s %s tip deflection / beam", t->name, cells);
+        if (!triangle) Check(log, r.deflection / r.reference, 1, 0.15, "%s %s tip deflection / beam", t->name, cells);
         CheckAtMost(log, r.hourglass / r.strain, 0.01, "%s %s hourglass / strain energy", t->name, cells);
       }
     }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* 3. Continuum shells bent through their thickness: the cantilever's height along the stack direction (z),
+ *    ONE element through it, 16 along the length, free sides. The points through the thickness see the
+ *    bending strain and the transverse shear is k G with k = 5/6, Timoshenko's, so the beam's deflection is
+ *    the reference (E: the plane stress of the shell's plane) up to the root, clamped here since no node lies
+ *    at mid-height (SC8RT 0.986, SC6RT 0.966; 5 % asked). The control of the twist about the stack line also
+ *    sees the bending modes xi zeta, eta zeta: 1.3 % of the strain energy in pure bending whatever the
+ *    thickness (0.05 mu / (4/3 E'), docs/elements.md), 2 % asked. A C3D8RT column of one element bends only
+ *    through its hourglass control: printed beside it (91 times the beam). */
+static PetscErrorCode Shells(TestLog *log)
+{
+  const PetscInt c3d8rt = TslElementTypeFind("C3D8RT");
+
+  PetscFunctionBeginUser;
+  printf("==== Continuum shells: end shear on a cantilever 8 x 1, its height along the stack direction, one element through it, nu = 0.3\n");
+  printf("  type     cells      tip/beam  E_hg/E_strain\n");
+  for (PetscInt ti = 0; ti < TslElementTypeCount(); ti++) {
+    const TslElementType *t = TslElementTypeGet(ti);
+    const Beam            b = {{16, 1, 1}, 0.3, PETSC_FALSE, PETSC_TRUE, 2}; /* clamped: no node at mid-height */
+    BeamResult            r;
+
+    if (t->kin != TSL_KIN_CONTINUUM_SHELL && ti != c3d8rt) continue;
+    PetscCall(Cantilever(t, &b, PETSC_FALSE, &r));
+    printf("  %-8s 16x1x1   %9.4f %12.2e\n", t->name, (double)(r.deflection / r.reference), (double)(r.hourglass / r.strain));
+    if (t->kin != TSL_KIN_CONTINUUM_SHELL) continue;
+    Check(log, r.info.factored, PETSC_TRUE, 0, "%s shell LU solve (%s)", t->name, r.info.failure);
+    Check(log, r.deflection / r.reference, 1, 0.05, "%s one element through the thickness: tip deflection / beam", t->name);
+    CheckAtMost(log, r.hourglass / r.strain, 0.02, "%s shell hourglass / strain energy", t->name);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -314,6 +353,7 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(Locking(&log));
   PetscCall(Hourglass(&log));
+  PetscCall(Shells(&log));
   PetscCall(PetscFinalize());
   return Summary(&log);
 }

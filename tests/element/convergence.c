@@ -103,6 +103,28 @@ static void Source(const TslElementType *t, const Moduli *m, const PetscReal x[3
     *q   = -m->k * (HT[0][0] + gT[0] / r + HT[1][1]);
     return;
   }
+  if (t->kin == TSL_KIN_CONTINUUM_SHELL) {
+    /* the shell's law with its stack direction z (the grid's third reference direction): plane stress in
+     * x-y, sigma_zz = 2 G eps_zz, transverse shear 5/6 G, all of eps - alpha theta m; b_i = -d_j sigma_ij */
+    static const PetscInt vi[6] = {0, 1, 2, 0, 0, 1}, vj[6] = {0, 1, 2, 1, 2, 2};
+    const PetscReal       G = E / (2 * (1 + NU)), c = E / (1 - NU * NU);
+    PetscReal             D[6][6] = {{0}};
+    D[0][0] = D[1][1] = c, D[0][1] = D[1][0] = NU * c, D[2][2] = 2 * G, D[3][3] = G, D[4][4] = D[5][5] = 5.0 / 6 * G;
+    for (PetscInt i = 0; i < 3; i++) b[i] = 0;
+    for (PetscInt r = 0; r < 6; r++)
+      for (PetscInt j = 0; j < 3; j++) {
+        PetscReal dsig = 0; /* d_j sigma_r */
+        for (PetscInt s = 0; s < 6; s++) {
+          const PetscInt  k = vi[s], l = vj[s];
+          const PetscReal deps = (k == l ? Hu[k][k][j] : Hu[k][l][j] + Hu[l][k][j]) - (s < 3 ? ALPHA * gT[j] : 0);
+          dsig += D[r][s] * deps;
+        }
+        if (vj[r] == j) b[vi[r]] -= dsig;
+        if (vi[r] == j && vi[r] != vj[r]) b[vj[r]] -= dsig;
+      }
+    *q = -m->k * (HT[0][0] + HT[1][1] + HT[2][2]);
+    return;
+  }
   *q = 0;
   for (PetscInt i = 0; i < dim; i++) {
     PetscReal ddiv = 0, lap = 0;

@@ -81,7 +81,7 @@ static PetscErrorCode CheckType(TestLog *log, const TslElementType *t, PetscReal
   Constant(&mat.prop[TSL_PROP_DENSITY], 2, 0);
   Constant(&mat.prop[TSL_PROP_SPECIFIC_HEAT], 3, 0);
   Constant(&mat.prop[TSL_PROP_EXPANSION], 1e-3, 0);
-  sec = (TslElementSection){&mat, 0.5};
+  sec = (TslElementSection){&mat, 0.5, 0, 0};
   for (PetscInt a = 0; a < TslElementTypeNodes(t); a++) {
     for (PetscInt d = 0; d < 3; d++) {
       const PetscReal lo = g->node_xi[0][d] < 0 || g->node_xi[1][d] < 0 ? -1 : 0, unit = lo < 0 ? 0.5 * (g->node_xi[a][d] + 1) : g->node_xi[a][d];

@@ -5,7 +5,7 @@ tsl_deck_bad(bad_poisson bad_poisson.inp "error: bad_poisson.inp:10: material ST
 tsl_deck_bad(cflux_dof cflux_dof.inp "error: cflux_dof.inp:24: bad degree of freedom 2 for *CFLUX (must be 11)")
 tsl_deck_bad(duplicate_element duplicate_element.inp "error: duplicate_element.inp:8: duplicate element id 1 (first defined at duplicate_element.inp:7)")
 tsl_deck_bad(duplicate_node duplicate_node.inp "error: duplicate_node.inp:6: duplicate node id 2 (first defined at duplicate_node.inp:3)")
-tsl_deck_bad(element_without_section element_without_section.inp "error: element_without_section.inp:8: element 2 is not in any *SOLID SECTION")
+tsl_deck_bad(element_without_section element_without_section.inp "error: element_without_section.inp:8: element 2 is not in any section (*SOLID SECTION or *SHELL SECTION)")
 tsl_deck_bad(end_step_without_step end_step_without_step.inp "error: end_step_without_step.inp:24: *END STEP without *STEP")
 tsl_deck_bad(equation_nset equation_nset.inp "error: equation_nset.inp:10: *EQUATION with a node set (NALL) is not supported yet; give node ids")
 tsl_deck_bad(load_outside_step load_outside_step.inp "error: load_outside_step.inp:18: *CLOAD is history data: it belongs inside a step (*STEP ... *END STEP) (here it comes before the first *STEP)")
@@ -101,3 +101,12 @@ tsl_deck_bad(contact_pair_constraint contact_pair_constraint.inp "error: contact
 tsl_deck_bad(velocity_temperature_dof velocity_temperature_dof.inp "error: velocity_temperature_dof.inp:21: an initial velocity needs a displacement degree of freedom 1..3 (got 11)")
 tsl_deck_bad(velocity_lonely_node velocity_lonely_node.inp "error: velocity_lonely_node.inp:21: *INITIAL CONDITIONS, TYPE=VELOCITY: node 5 belongs to no element, so it has no dof 1")
 tsl_deck_bad(velocity_missing_value velocity_missing_value.inp "error: velocity_missing_value.inp:21: *INITIAL CONDITIONS, TYPE=VELOCITY data line needs: node or node set, dof (1..3), velocity")
+# *SHELL SECTION (continuum shells, docs/keywords.md): the section keyword must match the element type, and
+# what is not supported is named
+tsl_deck_bad(shell_solid_section shell_solid_section.inp "error: shell_solid_section.inp:21: *SOLID SECTION on element 1 of type SC8RT (continuum shell): its section is *SHELL SECTION")
+tsl_deck_bad(solid_shell_section solid_shell_section.inp "error: solid_shell_section.inp:21: *SHELL SECTION on element 1 of type C3D8T (3D): its section is *SOLID SECTION")
+tsl_deck_bad(shell_stack_direction shell_stack_direction.inp "error: shell_stack_direction.inp:21: STACK DIRECTION=1 is not supported: number the elements' nodes so that the stack direction is their third (the default, 3)")
+tsl_deck_bad(shell_gauss shell_gauss.inp "error: shell_gauss.inp:21: SECTION INTEGRATION=GAUSS is not supported: SIMPSON only")
+tsl_deck_bad(shell_even_points shell_even_points.inp "error: shell_even_points.inp:22: the number of integration points through the thickness must be odd, 3 to 15 (Simpson's rule), got 4")
+tsl_deck_bad(shell_thickness_modulus shell_thickness_modulus.inp "error: shell_thickness_modulus.inp:21: THICKNESS MODULUS= must be positive")
+tsl_deck_bad(shell_poisson shell_poisson.inp "error: shell_poisson.inp:21: POISSON= is not supported: the thickness behaviour is given by THICKNESS MODULUS=")
