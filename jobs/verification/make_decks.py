@@ -458,8 +458,20 @@ def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None, sur
 
 
 def family_3d(typ):
-    m = re.match(r"C3D(\d+)", typ.upper())
+    m = re.match(r"(?:C3D|SC)(\d+)", typ.upper())
     return {"8": "hex", "6": "wedge", "4": "tet", "10": "tet"}[m.group(1)], 2 if m.group(1) == "10" else 1
+
+
+def is_shell(typ):
+    """A continuum shell (SC8RT, SC6RT): its elements are numbered with the stack direction, their third, along
+    y (the blocks' height), and its section is *SHELL SECTION."""
+    return typ.upper().startswith("SC")
+
+
+def section(typ, elset):
+    if is_shell(typ):
+        return "*SHELL SECTION, ELSET=%s, MATERIAL=STEEL\n 1.0, 5\n" % elset
+    return "*SOLID SECTION, ELSET=%s, MATERIAL=STEEL\n" % elset
 
 
 def mesh3d(nx, ny, nz, x0, x1, y0, y1, z0, z1, typ, nid0=0, eid0=0, mirror=None):
@@ -491,10 +503,16 @@ def mesh3d(nx, ny, nz, x0, x1, y0, y1, z0, z1, typ, nid0=0, eid0=0, mirror=None)
     for k in range(nz):
         for j in range(ny):
             for i in range(nx):
-                h = [nid(i, j, k), nid(i + 1, j, k), nid(i + 1, j + 1, k), nid(i, j + 1, k),
-                     nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j + 1, k + 1), nid(i, j + 1, k + 1)]
+                if is_shell(typ):  # the third direction (faces 1-2-3-4 to 5-6-7-8) along y, the stack direction
+                    h = [nid(i, j, k), nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j, k),
+                         nid(i, j + 1, k), nid(i, j + 1, k + 1), nid(i + 1, j + 1, k + 1), nid(i + 1, j + 1, k)]
+                    mirrored = [h[3], h[2], h[1], h[0], h[7], h[6], h[5], h[4]]
+                else:
+                    h = [nid(i, j, k), nid(i + 1, j, k), nid(i + 1, j + 1, k), nid(i, j + 1, k),
+                         nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j + 1, k + 1), nid(i, j + 1, k + 1)]
+                    mirrored = [h[1], h[0], h[3], h[2], h[5], h[4], h[7], h[6]]
                 if shape != "hex" and mirror is not None and x0 + (x1 - x0) * (i + 0.5) / nx > mirror:
-                    h = [h[1], h[0], h[3], h[2], h[5], h[4], h[7], h[6]]  # the cut of the mirror image (left-handed)
+                    h = mirrored  # the cut of the mirror image (left-handed)
                 if shape == "hex":
                     cells = [h]
                 elif shape == "wedge":  # the planar triangles (c1, c2, c3), (c1, c3, c4) extruded along z
@@ -560,7 +578,7 @@ def sliding_blocks_3d(series, typ, outdir=None, surf=False, explicit=None):
             "*ELEMENT, TYPE=%s, ELSET=LARGE\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
             "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
             nset("BASE", base) + nset("TOPFACE", topface) + surface("MAIN", main) + surface("SECONDARY", sec) + MAT +
-            "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n")
+            section(typ, "LARGE") + section(typ, "SMALL"))
     if explicit:
         assert not surf
         text = text.replace("%s series\n" % series, "%s series, explicit, %s contact\n" % (series, explicit.lower()), 1)
@@ -705,7 +723,7 @@ if __name__ == "__main__":
         # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR [--auglagr] [--surf] [--refine=N]
         flags = sys.argv[5:]
         refine = [int(f.split("=")[1]) for f in flags if f.startswith("--refine=")]
-        if sys.argv[2].upper().startswith("C3D"):
+        if sys.argv[2].upper().startswith(("C3D", "SC")):
             sliding_blocks_3d(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], surf="--surf" in flags)
         else:
             sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr="--auglagr" in flags, surf="--surf" in flags,
@@ -714,7 +732,7 @@ if __name__ == "__main__":
     if len(sys.argv) == 6 and sys.argv[1] == "--explicit-series":
         # the spec's explicit decks per type: make_decks.py --explicit-series TYPE SERIES PENALTY|KINEMATIC OUTDIR
         typ, series, constraint, outdir = sys.argv[2].upper(), sys.argv[3], sys.argv[4].upper(), sys.argv[5]
-        if typ.startswith("C3D"):
+        if typ.startswith(("C3D", "SC")):
             sliding_blocks_3d(series, typ, outdir=outdir, explicit=constraint)
         else:
             sliding_explicit(series, constraint, typ=typ, outdir=outdir)

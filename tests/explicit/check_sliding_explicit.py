@@ -2,7 +2,7 @@
 """The spec's sliding series as explicit steps (jobs/verification/sliding_*_explicit_*_cpe4t.inp, written by
 make_decks.py --explicit, and any type's by make_decks.py --explicit-series; docs/explicit.md, "Contact"): a
 2 x 0.25 block (node ids > 1000) pressed with 200 on a 6 x 1.25 block fixed at its bottom, rho c = 1, total
-area 8; the 3D decks (sliding_*_explicit_*_c3d*.inp, make_decks.py sliding_blocks_3d) the same blocks 1 and
+area 8; the 3D decks (sliding_*_explicit_*_c3d*.inp and *_sc*.inp, make_decks.py sliding_blocks_3d) the same blocks 1 and
 1.2 wide: total volume 9.5, final temperature 60 / 9.5. Gaps and main temperatures are read on the faces as
 contact sees them: 2D line2, or line3 for the modified triangles (CPE6MT, CPS6MT, CAX6MT); 3D
 tslcheck.contact_faces.
@@ -44,7 +44,7 @@ h, ids = r.history, r.node_ids
 small = ids > 1000
 R_AXI = 2.5
 axi = "_cax" in job
-three_d = "_c3d" in job
+three_d = "_c3d" in job or "_sc" in job  # the 3D blocks: solids and continuum shells
 if axi:
     # the rings of make_decks.py (r = 2.5 - y, z = x) back in the planar picture: x = z, y = R - r; U and RF
     # likewise (u_x = u_z, u_y = -u_r), so that every check below reads the same

@@ -55,7 +55,7 @@ small = (ids > 1000) & ~refs
 large = (ids <= 1000)
 axi = "_cax" in job or "_cgax" in job
 quadratic = bool(re.search(r"_c(pe|ps|ax|peg|gax)[68]", job))
-three_d = "_c3d" in job
+three_d = "_c3d" in job or "_sc" in job  # the 3D blocks: solids and continuum shells
 # TYPE=SURFACE TO SURFACE (job *_surf_*): the law holds at the integration points; CPRESS and HFLA are their
 # nodal averages (sum N_b w v / int N_b ds), and the average of k(p) dtheta (or of the radiation law) is
 # not the law at the averaged values where pressure and temperature vary along the interface (the block's
