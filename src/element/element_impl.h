@@ -54,6 +54,13 @@ void TslElementElasticity(const TslElementType *type, const TslElementSection *s
 /* The modulus of the kinematics' dilatational waves, rho c_d^2: lambda + 2 mu, or E / (1 - nu^2) where the
  * normal stress is free (plane stress) or given by the thickness modulus (continuum shells). */
 PetscReal TslElementWaveModulus(const TslElementType *type, const TslMaterialPoint *mp);
+/* A continuum shell at a point: the frame Q (rows e1, e2, n; n the unit gradient of the stack coordinate) and
+ * the thickness modulus of its section (the default 2 G from the material point). */
+void      TslElementShellFrame(const TslElementPoint *p, PetscReal Q[3][3]);
+PetscReal TslElementShellThicknessModulus(const TslElementSection *sec, const TslMaterialPoint *mp);
+/* The continuum shell's hourglass sum bb = sum_a |grad N_a|^2 over the gradients' parts in the shell plane
+ * (formulations.c, ShellHourglass). */
+PetscReal TslElementShellHourglassSum(const TslGeometry *g, const TslElementPoint *p);
 /* The Lame constants of the isotropic material at a point (TslElementElasticity's, the force records'). */
 void TslElementLame(const TslMaterialPoint *mp, PetscReal *lambda, PetscReal *mu);
 

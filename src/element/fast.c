@@ -9,11 +9,14 @@
  * the arithmetic allows (the explicit loop streams the records from memory at every increment, and their
  * bytes, not the flops, bound it):
  *
- *   header   row, lambda, mu, alpha, D_11 (lambda + 2 mu; plane stress condensed), hourglass kappa
+ *   header   row, lambda, mu, alpha, the wave modulus (lambda + 2 mu; E / (1 - nu^2) in plane stress), hourglass
+ *            kappa, the thickness modulus E_t (continuum shells: lambda and mu are then the shell plane's,
+ *            nu E / (1 - nu^2) and G)
  *   points   at each mechanical point: a full row's inverse Jacobian A[e][d] = dxi_e/dx_d (the gradients
  *            dN_a/dx_d = sum_e dN_a/dxi_e A[e][d], the reference derivatives being the type's, in the
  *            shape), a reduced row's gradients G[d][a] themselves (its hourglass vectors need them); the
- *            volume dV (thickness or 2 pi r included); 1 / r (axisymmetric: the hoop strain N_a u_r / r)
+ *            volume dV (thickness or 2 pi r included); 1 / r (axisymmetric: the hoop strain N_a u_r / r);
+ *            a continuum shell's frame Q (rows e1, e2, n; its points are stored as a full row's)
  *   K        the conduction matrix k int grad N_a . grad N_b dV (full rule), its strict upper triangle:
  *            its rows sum to zero, so (K theta)_a = sum_b K_ab (theta_b - theta_a)
  *   centre   a full row's bulk viscosity point: A, volume, 1 / r (a reduced row's point is the centre)
@@ -30,21 +33,21 @@
 #include "element_impl.h"
 #include <thermoslide/lanes.h>
 
-#define HEADER 6
+#define HEADER 7
 
 /* Offsets of the record's parts (constants once the row's sizes are): point q at P + q * ps (its A or G,
  * then dV, then 1 / r), the centre at C (A, volume, 1 / r; a reduced row's: its point), K, hx. */
 typedef struct {
-  PetscInt P, ps, dV, ri, K, C, hx, size;
+  PetscInt P, ps, dV, ri, fr, K, C, hx, size;
 } Layout;
 
-static inline Layout LayoutOf(PetscInt dim, PetscInt n, PetscInt nq, PetscInt nh, PetscBool axi)
+static inline Layout LayoutOf(PetscInt dim, PetscInt n, PetscInt nq, PetscInt nh, PetscBool axi, PetscBool shell)
 {
   const PetscInt geo = nq > 1 ? dim * dim : dim * n; /* a point's A (full rows) or G (reduced rows) */
   Layout         L;
   L.P    = HEADER;
-  L.ps   = geo + 1 + (axi ? 1 : 0);
-  L.dV   = geo, L.ri = geo + 1; /* within a point */
+  L.ps   = geo + 1 + (axi ? 1 : 0) + (shell ? 9 : 0);
+  L.dV = geo, L.ri = geo + 1, L.fr = geo + 1 + (axi ? 1 : 0); /* within a point */
   L.K    = L.P + nq * L.ps;
   L.C    = nq > 1 ? L.K + n * (n - 1) / 2 : L.P;
   L.hx   = L.K + n * (n - 1) / 2 + (nq > 1 ? dim * dim + 1 + (axi ? 1 : 0) : 0);
@@ -82,13 +85,13 @@ static inline __attribute__((always_inline)) void Gradients(const PetscInt dim, 
  * length. A full row's point works in the reference derivatives: the displacement gradient in xi (H),
  * mapped by A; the stress mapped back by A and spread by the same derivatives. */
 static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
-                                                        const PetscBool axi, const PetscBool ps, const PetscBool sf0,
+                                                        const PetscBool axi, const PetscBool ps, const PetscBool sf0, const PetscBool shell,
                                                         const TslElementFastShape *shape, const PetscReal *rec, const PetscReal *u,
                                                         const PetscReal *ti, const PetscReal *v, const PetscReal *eta, const PetscReal *eta2,
                                                         PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *qr, PetscReal *energy)
 {
   const PetscInt nd     = dim + 1;
-  const Layout   L      = LayoutOf(dim, n, nq, nh, axi);
+  const Layout   L      = LayoutOf(dim, n, nq, nh, axi, shell);
   const V        lambda = Ld(rec + 1 * W), mu = Ld(rec + 2 * W), alpha = Ld(rec + 3 * W);
   V              U[3][TSL_FAST_MAX_NODES], th[TSL_FAST_MAX_NODES], dth[TSL_FAST_MAX_NODES], F[3][TSL_FAST_MAX_NODES], Fth[TSL_FAST_MAX_NODES];
   V              en[2] = {{0}, {0}};
@@ -146,14 +149,45 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
           for (PetscInt a = 0; a < n; a++) g[i][d] += Ld(P + (d * n + a) * W) * U[i][a];
         }
     }
-    e[0] = g[0][0], e[1] = g[1][1], e[3] = g[0][1] + g[1][0];
-    if (dim == 3) e[2] = g[2][2], e[4] = g[0][2] + g[2][0], e[5] = g[1][2] + g[2][1];
-    else e[2] = ps ? eth - lps * (e[0] + e[1] - 2 * eth) : hoop, e[4] = e[5] = (V){0};
-    tr = e[0] + e[1] + e[2] - 3 * eth;
-    for (PetscInt r = 0; r < 3; r++) s[r] = (lambda * tr + 2 * mu * (e[r] - eth)) * dV;
-    for (PetscInt r = 3; r < 6; r++) s[r] = mu * e[r] * dV;
-    if (energy) /* 1/2 sigma : eps_mech dV, as the generic output (kernels.c, Mechanics) */
-      for (PetscInt r = 0; r < 6; r++) en[0] += 0.5 * s[r] * (r < 3 ? e[r] - eth : e[r]);
+    if (shell) {
+      /* the continuum shell (kinematics.c, ShellLocal): the gradient in the frame, gl = Q g Q^T, the shell's
+       * law there (lambda, mu the shell plane's; E_t; 5/6 mu across), and the stress back, Q^T S_l Q */
+      const PetscReal *F  = P + L.fr * W;
+      const V          Et = Ld(rec + 6 * W), ks = (5.0 / 6.0) * mu;
+      V                Qf[3][3], t[3][3], gl[3][3], Sl[3][3];
+      for (PetscInt i = 0; i < 3; i++)
+        for (PetscInt d = 0; d < 3; d++) Qf[i][d] = Ld(F + (3 * i + d) * W);
+      for (PetscInt i = 0; i < 3; i++)
+        for (PetscInt d = 0; d < 3; d++) t[i][d] = Qf[i][0] * g[0][d] + Qf[i][1] * g[1][d] + Qf[i][2] * g[2][d];
+      for (PetscInt i = 0; i < 3; i++)
+        for (PetscInt j = 0; j < 3; j++) gl[i][j] = t[i][0] * Qf[j][0] + t[i][1] * Qf[j][1] + t[i][2] * Qf[j][2];
+      e[0] = gl[0][0], e[1] = gl[1][1], e[2] = gl[2][2], e[3] = gl[0][1] + gl[1][0], e[4] = gl[0][2] + gl[2][0], e[5] = gl[1][2] + gl[2][1];
+      tr   = e[0] + e[1] - 2 * eth;
+      s[0] = (lambda * tr + 2 * mu * (e[0] - eth)) * dV, s[1] = (lambda * tr + 2 * mu * (e[1] - eth)) * dV, s[2] = Et * (e[2] - eth) * dV;
+      s[3] = mu * e[3] * dV, s[4] = ks * e[4] * dV, s[5] = ks * e[5] * dV;
+      if (energy)
+        for (PetscInt r = 0; r < 6; r++) en[0] += 0.5 * s[r] * (r < 3 ? e[r] - eth : e[r]);
+      Sl[0][0] = s[0], Sl[1][1] = s[1], Sl[2][2] = s[2], Sl[0][1] = Sl[1][0] = s[3], Sl[0][2] = Sl[2][0] = s[4], Sl[1][2] = Sl[2][1] = s[5];
+      for (PetscInt i = 0; i < 3; i++)
+        for (PetscInt d = 0; d < 3; d++) t[i][d] = Sl[i][0] * Qf[0][d] + Sl[i][1] * Qf[1][d] + Sl[i][2] * Qf[2][d];
+      s[0] = Qf[0][0] * t[0][0] + Qf[1][0] * t[1][0] + Qf[2][0] * t[2][0];
+      s[1] = Qf[0][1] * t[0][1] + Qf[1][1] * t[1][1] + Qf[2][1] * t[2][1];
+      s[2] = Qf[0][2] * t[0][2] + Qf[1][2] * t[1][2] + Qf[2][2] * t[2][2];
+      s[3] = Qf[0][0] * t[0][1] + Qf[1][0] * t[1][1] + Qf[2][0] * t[2][1];
+      s[4] = Qf[0][0] * t[0][2] + Qf[1][0] * t[1][2] + Qf[2][0] * t[2][2];
+      s[5] = Qf[0][1] * t[0][2] + Qf[1][1] * t[1][2] + Qf[2][1] * t[2][2];
+    } else {
+      e[0] = g[0][0], e[1] = g[1][1], e[3] = g[0][1] + g[1][0];
+      if (dim == 3)
+        e[2] = g[2][2], e[4] = g[0][2] + g[2][0], e[5] = g[1][2] + g[2][1];
+      else
+        e[2] = ps ? eth - lps * (e[0] + e[1] - 2 * eth) : hoop, e[4] = e[5] = (V){0};
+      tr = e[0] + e[1] + e[2] - 3 * eth;
+      for (PetscInt r = 0; r < 3; r++) s[r] = (lambda * tr + 2 * mu * (e[r] - eth)) * dV;
+      for (PetscInt r = 3; r < 6; r++) s[r] = mu * e[r] * dV;
+      if (energy) /* 1/2 sigma : eps_mech dV, as the generic output (kernels.c, Mechanics) */
+        for (PetscInt r = 0; r < 6; r++) en[0] += 0.5 * s[r] * (r < 3 ? e[r] - eth : e[r]);
+    }
     {
       /* the stress as a matrix S[i][d] (dV included); F_ia += sum_d S[i][d] dN_a/dx_d */
       const V S[3][3] = {{s[0], s[3], s[4]}, {s[3], s[1], s[5]}, {s[4], s[5], s[2]}};
@@ -200,14 +234,21 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
         Fth[a] += f, Fth[b] -= f;
       }
   }
-  if (nh) { /* reduced rows: gamma_k = (h_k - sum_d hx_kd G_d) / n at the one (centre) point */
+  if (nh) { /* reduced rows: gamma_k = (h_k - sum_d hx_kd G_d) / n at the one (centre) point; a continuum
+             * shell's centre gradients from its centre's A */
     const PetscReal *G = rec + L.P * W, *hx = rec + L.hx * W;
     const V          kappa = Ld(rec + 5 * W);
+    V                Gc[3][TSL_FAST_MAX_NODES];
+    if (nq > 1)
+      Gradients(dim, n, rec + L.C * W, shape->dNc, Gc);
+    else
+      for (PetscInt d = 0; d < dim; d++)
+        for (PetscInt a = 0; a < n; a++) Gc[d][a] = Ld(G + (d * n + a) * W);
     for (PetscInt k = 0; k < nh; k++) {
       V gam[TSL_FAST_MAX_NODES];
       for (PetscInt a = 0; a < n; a++) {
-        gam[a] = shape->h[k][a] - Ld(hx + (k * dim) * W) * Ld(G + a * W);
-        for (PetscInt d = 1; d < dim; d++) gam[a] -= Ld(hx + (k * dim + d) * W) * Ld(G + (d * n + a) * W);
+        gam[a] = shape->h[k][a] - Ld(hx + (k * dim) * W) * Gc[0][a];
+        for (PetscInt d = 1; d < dim; d++) gam[a] -= Ld(hx + (k * dim + d) * W) * Gc[d][a];
         gam[a] *= 1.0 / n;
       }
       for (PetscInt d = 0; d < dim; d++) {
@@ -255,32 +296,33 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
 }
 
 /* One function per row, cloned for x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
-#define FORCE_ROW(name, dim, n, nq, nh, axi, ps, sf)                                                                                                 \
+#define FORCE_ROW(name, dim, n, nq, nh, axi, ps, sf, shell)                                                                                          \
   TSL_CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,      \
                               const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *qr,             \
                               PetscReal *energy)                                                                                                     \
   {                                                                                                                                                  \
-    Force(dim, n, nq, nh, axi, ps, sf, sh, rec, u, ti, v, eta, eta2, R, Rv, power, qr, energy);                                                      \
+    Force(dim, n, nq, nh, axi, ps, sf, shell, sh, rec, u, ti, v, eta, eta2, R, Rv, power, qr, energy);                                               \
   }
-FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
-FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad4Full, 2, 4, 4, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad4Reduced, 2, 4, 1, 1, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad4FullAxi, 2, 4, 4, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad4ReducedAxi, 2, 4, 1, 1, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Tet4Full, 3, 4, 1, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Tet10Full, 3, 10, 4, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Wedge6Full, 3, 6, 6, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Tri3Full, 2, 3, 1, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Tri6Full, 2, 6, 3, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad8Full, 2, 8, 9, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Tri3FullAxi, 2, 3, 1, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Tri6FullAxi, 2, 6, 3, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad8FullAxi, 2, 8, 9, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
-FORCE_ROW(Quad4FullPs, 2, 4, 4, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
-FORCE_ROW(Quad4ReducedPs, 2, 4, 1, 1, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
-FORCE_ROW(Tri3FullPs, 2, 3, 1, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
-FORCE_ROW(Tri6FullPs, 2, 6, 3, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
+FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
+FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4Full, 2, 4, 4, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4Reduced, 2, 4, 1, 1, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4FullAxi, 2, 4, 4, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4ReducedAxi, 2, 4, 1, 1, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tet4Full, 3, 4, 1, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tet10Full, 3, 10, 4, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Wedge6Full, 3, 6, 6, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri3Full, 2, 3, 1, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri6Full, 2, 6, 3, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad8Full, 2, 8, 9, 0, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri3FullAxi, 2, 3, 1, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri6FullAxi, 2, 6, 3, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad8FullAxi, 2, 8, 9, 0, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4FullPs, 2, 4, 4, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Quad4ReducedPs, 2, 4, 1, 1, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri3FullPs, 2, 3, 1, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Tri6FullPs, 2, 6, 3, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
+FORCE_ROW(Hex8Shell, 3, 8, 5, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
 
 typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *,
                         const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
@@ -315,6 +357,7 @@ static const FastRow Rows[] = {
     {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRESS, 1, 1, Quad4ReducedPs, PETSC_FALSE},
     {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRESS, 1, 0, Tri3FullPs, PETSC_FALSE},
     {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, PETSC_FALSE},
+    {&TslGeomHex8, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Hex8Shell, PETSC_FALSE}, /* the default 5 Simpson points */
 };
 
 static PetscInt RowOf(const TslElementType *t)
@@ -329,7 +372,7 @@ static PetscInt RowOf(const TslElementType *t)
 static Layout RowLayout(PetscInt r)
 {
   const FastRow *row = &Rows[r];
-  return LayoutOf(row->geom->dim, row->geom->nnode, row->nq, row->nh, TslKinematicsRowGet(row->kin)->revolve);
+  return LayoutOf(row->geom->dim, row->geom->nnode, row->nq, row->nh, TslKinematicsRowGet(row->kin)->revolve, TslKinematicsRowGet(row->kin)->shell);
 }
 
 /* The sum factorisation of hex8's full rule (the shape's sf_* fields): derived from the shape functions and
@@ -414,13 +457,21 @@ PetscInt TslElementFastSize(const TslElementInput *in)
 {
   const PetscInt r = RowOf(in->type);
   if (r < 0 || TslMaterialIsTemperatureDependent(in->sec->mat) || RowLayout(r).size > TSL_FAST_MAX_SIZE) return 0;
+  if (in->type->form->quadrature(in->type->geom, in->sec)->n != Rows[r].nq) return 0; /* a shell section's own point count */
   return RowLayout(r).size;
 }
 
 /* A point of a full row (A = its inverse Jacobian), or of a reduced row (its gradients G[d][a]), then its
- * volume and 1 / r, at P. */
-static void StorePoint(const TslElementPoint *p, PetscInt n, PetscInt dim, PetscBool full, PetscBool axi, const Layout *L, PetscReal P[])
+ * volume, 1 / r and a continuum shell's frame, at P. */
+static void StorePoint(const TslElementPoint *p, PetscInt n, PetscInt dim, PetscBool full, PetscBool axi, PetscBool shell, const Layout *L,
+                       PetscReal P[])
 {
+  if (shell) {
+    PetscReal Q[3][3];
+    TslElementShellFrame(p, Q);
+    for (PetscInt i = 0; i < 3; i++)
+      for (PetscInt d = 0; d < 3; d++) P[L->fr + 3 * i + d] = Q[i][d];
+  }
   if (full)
     for (PetscInt e = 0; e < dim; e++)
       for (PetscInt d = 0; d < dim; d++) P[e * dim + d] = p->Ji[e][d];
@@ -447,7 +498,7 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   const TslElementType *t = in->type;
   const TslGeometry    *g = t->geom;
   const PetscInt        r = RowOf(t), n = g->nnode, dim = g->dim;
-  const PetscBool       axi  = TslKinematicsRowGet(t->kin)->revolve;
+  const PetscBool       axi = TslKinematicsRowGet(t->kin)->revolve, shell = TslKinematicsRowGet(t->kin)->shell;
   const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
   const PetscBool       full = quad->n > 1 ? PETSC_TRUE : PETSC_FALSE;
   PetscReal             xi0[3], K[TSL_MAX_ELEM_NODES][TSL_MAX_ELEM_NODES] = {{0}};
@@ -456,11 +507,15 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   TslElementPoint       p;
   PetscReal             lambda, mu;
 
-  if (r < 0) return PETSC_FALSE;
+  if (r < 0 || quad->n != Rows[r].nq) return PETSC_FALSE;
   L = RowLayout(r);
   for (PetscInt i = 0; i < L.size; i++) rec[i] = 0;
   TslMaterialEval(in->sec->mat, 0, &mp);
   TslElementLame(&mp, &lambda, &mu);
+  if (shell) { /* the shell plane's: plane stress lambda nu E / (1 - nu^2), and G */
+    lambda = mp.nu * mp.E / (1 - mp.nu * mp.nu);
+    rec[6] = TslElementShellThicknessModulus(in->sec, &mp);
+  }
   /* rec[4]: the bulk viscosity's modulus, the kinematics' wave modulus as the generic kernel takes it
    * (lambda + 2 mu; plane stress E / (1 - nu^2)) */
   rec[0] = (PetscReal)r, rec[1] = lambda, rec[2] = mu, rec[3] = mp.alpha, rec[4] = TslElementWaveModulus(t, &mp);
@@ -468,7 +523,7 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
    * the mechanical rule is the full one (each evaluated once) */
   for (PetscInt q = 0; q < quad->n; q++) {
     if (!TslElementPointEvaluate(t, in->sec, in->x, quad->xi[q], quad->w[q], &p)) return PETSC_FALSE;
-    StorePoint(&p, n, dim, full, axi, &L, &rec[L.P + q * L.ps]);
+    StorePoint(&p, n, dim, full, axi, shell, &L, &rec[L.P + q * L.ps]);
     if (quad == &g->full) ConductionAdd(&p, n, dim, mp.k, K);
   }
   for (PetscInt q = 0; quad != &g->full && q < g->full.n; q++) {
@@ -480,12 +535,12 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   /* the centre: the bulk viscosity's point and the hourglass control's (xi = 0 for quad4 and hex8) */
   Centre(g, xi0);
   if (!TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p)) return PETSC_FALSE;
-  if (full) StorePoint(&p, n, dim, full, axi, &L, &rec[L.C]);
+  if (full) StorePoint(&p, n, dim, full, axi, PETSC_FALSE, &L, &rec[L.C]);
   if (Rows[r].nh) {
     PetscReal gamma[4][TSL_MAX_ELEM_NODES], hx[4][3], bb;
     PetscInt  nh = TslElementHourglassBase(in, &p, gamma, hx, &bb);
     if (nh != Rows[r].nh) return PETSC_FALSE;
-    rec[5] = TslElementHourglassKappa(mu, p.dV, bb);
+    rec[5] = TslElementHourglassKappa(mu, p.dV, shell ? TslElementShellHourglassSum(g, &p) : bb);
     for (PetscInt k = 0; k < nh; k++)
       for (PetscInt d = 0; d < dim; d++) rec[L.hx + k * dim + d] = hx[k][d];
   }

@@ -284,13 +284,27 @@ static PetscErrorCode HourglassApply(const TslElementInput *in, const TslMateria
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscReal TslElementShellHourglassSum(const TslGeometry *g, const TslElementPoint *p)
+{
+  PetscReal nrm[3], len = 0, bb = 0;
+
+  for (PetscInt d = 0; d < 3; d++) nrm[d] = p->Ji[2][d], len += nrm[d] * nrm[d];
+  len = PetscSqrtReal(len);
+  for (PetscInt a = 0; a < g->nnode; a++) {
+    PetscReal gn = 0, gg = 0;
+    for (PetscInt d = 0; d < 3; d++) gn += p->dNdx[a][d] * nrm[d] / len, gg += p->dNdx[a][d] * p->dNdx[a][d];
+    bb += gg - gn * gn;
+  }
+  return bb;
+}
+
 /* The control at the element centre; inplane: bb over the gradients' parts normal to the continuum shell's
  * stack direction (ShellHourglass), else the whole gradients. */
 static PetscErrorCode HourglassAtCentre(const TslElementInput *in, const TslMaterialPoint *mp, PetscBool inplane, PetscReal R[], PetscReal K[],
                                         PetscReal *energy)
 {
   const TslGeometry *g = in->type->geom;
-  PetscReal          xi0[3], gamma[4][TSL_MAX_ELEM_NODES], bb, nrm[3], len = 0;
+  PetscReal          xi0[3], gamma[4][TSL_MAX_ELEM_NODES], bb;
   TslElementPoint    p;
   PetscInt           nh;
 
@@ -299,16 +313,7 @@ static PetscErrorCode HourglassAtCentre(const TslElementInput *in, const TslMate
   PetscCheck(TslElementPointEvaluate(in->type, in->sec, in->x, xi0, g->ref_volume, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "hourglass control of an inverted element");
   nh = TslElementHourglassBase(in, &p, gamma, NULL, &bb);
-  if (inplane) {
-    for (PetscInt d = 0; d < 3; d++) nrm[d] = p.Ji[2][d], len += nrm[d] * nrm[d];
-    len = PetscSqrtReal(len);
-    bb  = 0;
-    for (PetscInt a = 0; a < g->nnode; a++) {
-      PetscReal gn = 0, gg = 0;
-      for (PetscInt d = 0; d < 3; d++) gn += p.dNdx[a][d] * nrm[d] / len, gg += p.dNdx[a][d] * p.dNdx[a][d];
-      bb += gg - gn * gn;
-    }
-  }
+  if (inplane) bb = TslElementShellHourglassSum(g, &p);
   PetscCall(HourglassApply(in, mp, &p, gamma, nh, bb, R, K, energy));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

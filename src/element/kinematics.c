@@ -250,7 +250,7 @@ static void ShellLocal(const TslElementSection *sec, const TslMaterialPoint *mp,
   PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(&D[0][0], 36));
   D[0][0] = D[1][1] = E * c;
   D[0][1] = D[1][0] = nu * E * c;
-  D[2][2]           = given ? sec->thickness_modulus : 2 * G;
+  D[2][2]           = TslElementShellThicknessModulus(sec, mp);
   D[3][3]           = G;
   D[4][4] = D[5][5] = k * G;
   if (!dD) return;
@@ -262,10 +262,15 @@ static void ShellLocal(const TslElementSection *sec, const TslMaterialPoint *mp,
   dD[4][4] = dD[5][5] = k * dG;
 }
 
+PetscReal TslElementShellThicknessModulus(const TslElementSection *sec, const TslMaterialPoint *mp)
+{
+  return sec && sec->thickness_modulus > 0 ? sec->thickness_modulus : mp->E / (1 + mp->nu);
+}
+
 /* The shell frame at a point: n the unit gradient of the third reference coordinate (the stack direction,
  * normal to the element's reference surfaces), e1 the global axis least aligned with n projected onto the
  * shell plane, e2 = n x e1; rows of Q. For an isotropic material the choice of e1 does not matter. */
-static void ShellFrame(const TslElementPoint *p, PetscReal Q[3][3])
+void TslElementShellFrame(const TslElementPoint *p, PetscReal Q[3][3])
 {
   PetscReal n[3] = {p->Ji[2][0], p->Ji[2][1], p->Ji[2][2]}, len = PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), e1[3], dot;
   PetscInt  k = 0;
@@ -329,7 +334,7 @@ void TslElementElasticity(const TslElementType *type, const TslElementSection *s
   if (TslKinematicsRowGet(type->kin)->shell) {
     PetscReal Q[3][3];
     ShellLocal(sec, mp, D, dD);
-    ShellFrame(p, Q);
+    TslElementShellFrame(p, Q);
     Rotate(Q, D);
     if (dD) Rotate(Q, dD);
     return;

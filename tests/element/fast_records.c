@@ -3,7 +3,8 @@
  * geometry's rounding is largest) with arbitrary displacements, temperatures and velocities, the internal
  * force and heat flow equal TslElementInternal's, the bulk viscosity forces and power
  * TslElementBulkViscosity's, to 1e-12 of the largest entry, the strain and hourglass energies TslElementOutput's. The types without a row
- * (generalized plane strain, twist, hybrid) and a temperature-dependent material get no record (size 0). */
+ * (generalized plane strain, twist, hybrid, SC6RT) and a temperature-dependent material get no record (size 0); nor does an SC8RT
+ * section with other than the 5 Simpson points of the row. */
 #include "check.h"
 
 static void Constant(TslPropertyTable *t, PetscReal v0, PetscReal v1)
@@ -125,6 +126,18 @@ static PetscErrorCode CheckType(TestLog *log, const TslElementType *t, PetscReal
     CheckRel(log, w, wg, 1e-12, 1e-300, "%s (offset %g, velocities x %d): bulk viscosity power", t->name, (double)offset, (int)sign);
   }
   PetscCall(CheckBatch(log, &in, &shape, x, u, v, ti, offset));
+  if (t->kin == TSL_KIN_CONTINUUM_SHELL) { /* a section's thickness modulus in the record; other point counts: none */
+    TslElementSection stm = {&mat, 0.5, 5, 3.3e4}, s3 = {&mat, 0.5, 3, 0};
+    in.sec = &stm;
+    CheckTrue(log, TslElementFastBuild(&in, rec), "%s (offset %g): record with THICKNESS MODULUS built", t->name, (double)offset);
+    TslElementFastForce(&shape, rec, u, ti, v, 0, 0, R, Rv, &w);
+    PetscCall(TslElementInternal(&in, Rg, NULL, &inverted));
+    CheckAtMost(log, RelDiff(nd, R, Rg), 1e-12, "%s (offset %g): THICKNESS MODULUS: internal force against the generic kernel", t->name,
+                (double)offset);
+    in.sec = &s3;
+    CheckTrue(log, (PetscBool)(TslElementFastSize(&in) == 0), "%s: a section of 3 points, no record", t->name);
+    in.sec = &sec;
+  }
   /* a temperature-dependent property: no record */
   mat.prop[TSL_PROP_CONDUCTIVITY].n        = 2;
   mat.prop[TSL_PROP_CONDUCTIVITY].theta[1] = 100, mat.prop[TSL_PROP_CONDUCTIVITY].value[1][0] = 12;
@@ -140,8 +153,9 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   for (PetscInt t = 0; t < TslElementTypeCount(); t++)
     for (PetscInt k = 0; k < 2; k++) PetscCall(CheckType(&log, TslElementTypeGet(t), k ? 1e4 : 0, &nrows));
-  CheckTrue(&log, (PetscBool)(nrows == 2 * 19),
-            "records for the 19 types of plane strain, plane stress, axisymmetric and 3D displacement formulations (%d type-offset pairs)", (int)nrows);
+  CheckTrue(&log, (PetscBool)(nrows == 2 * 20),
+            "records for the 20 types of plane strain, plane stress, axisymmetric and 3D displacement formulations and SC8RT (%d type-offset pairs)",
+            (int)nrows);
   PetscCall(PetscFinalize());
   return log.failures ? 1 : 0;
 }
