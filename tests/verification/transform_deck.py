@@ -16,6 +16,7 @@ multiplied by SCALE. With s = SCALE the other quantities convert as
   conductivity (W per length and degree)            / s
   density                                           / s^5      (mass unit kN s^2/mm = 1e6 kg)
   specific heat                                     * s^2      (so rho c, J per volume and degree, / s^3)
+  a shell section's THICKNESS MODULUS=           / s^3;  its number of points unchanged
   Poisson's ratio, expansion, friction coefficient, heat generation fractions, smoothing, point heat
   (*CFLUX, W), temperatures, times, amplitudes      unchanged
 
@@ -52,7 +53,7 @@ def convert(keyword, options, fields, s, dx, dy):
         f[0] = num(float(f[0]) / s**5)
     elif keyword == "*SPECIFIC HEAT":
         f[0] = num(float(f[0]) * s**2)
-    elif keyword == "*SOLID SECTION":
+    elif keyword in ("*SOLID SECTION", "*SHELL SECTION"):  # thickness; a shell's point count unchanged
         if f and f[0]:
             f[0] = num(float(f[0]) * s)
     elif keyword == "*GAP CONDUCTANCE":
@@ -105,6 +106,12 @@ def main():
                 text = "*PHYSICAL CONSTANTS, " + ", ".join(items)
             if keyword == "*GAP RADIATION":
                 options.add("first")
+            if keyword == "*SHELL SECTION":  # THICKNESS MODULUS= is a stress
+                items = text.split(",")
+                for i, p in enumerate(items):
+                    if "=" in p and p.split("=")[0].strip().upper() == "THICKNESS MODULUS":
+                        items[i] = " THICKNESS MODULUS=%s" % num(float(p.split("=")[1]) / s**3)
+                text = ",".join(items)
             out.append(text)
             continue
         if keyword is None or not text.strip():
