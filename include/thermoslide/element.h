@@ -136,17 +136,23 @@ PetscInt TslElementTypeRigidModes(const TslElementType *t, const PetscReal x[3],
 
 /* Section data an element needs: its material (property tables, material.h), the out-of-plane
  * thickness of plane elements (1 when not given; ignored otherwise) and, for continuum shells
- * (*SHELL SECTION), the number of Simpson points through the thickness (0: the default 5) and the
- * thickness modulus (0: the default, twice the shear modulus at the point's temperature). */
+ * (*SHELL SECTION), the number of Simpson points through the thickness (0: the default 5), the
+ * thickness modulus (0: the default, twice the shear modulus at the point's temperature) and the stack
+ * direction, the element's reference direction along the thickness, as the dialect's STACK DIRECTION=1..3
+ * (0: the default, 3). */
 typedef struct {
   const TslMaterial *mat;
   PetscReal          thickness;
   PetscInt           shell_points;
   PetscReal          thickness_modulus;
+  PetscInt           shell_stack;
 } TslElementSection;
 
 /* The section keyword a type takes: "SHELL SECTION" (continuum shells) or "SOLID SECTION". */
 const char *TslElementTypeSectionKeyword(const TslElementType *t);
+/* May a continuum shell of type t stack along its reference direction stack (0..2)? A hex8 along any, a
+ * wedge6 along its third only (the triangle's extrusion). */
+PetscBool TslElementTypeStackAllowed(const TslElementType *t, PetscInt stack);
 
 /* Everything a kernel needs for one element: no time step, no old state (time discretisation is the
  * solver's business, src/solve/):

@@ -74,6 +74,7 @@ typedef struct {
   PetscBool shell;          /* *SHELL SECTION (continuum shells) rather than *SOLID SECTION */
   PetscInt  shell_points;   /* *SHELL SECTION: Simpson points through the thickness (data line; default 5) */
   PetscReal thickness_modulus; /* *SHELL SECTION, THICKNESS MODULUS= (0: the default, 2 G) */
+  PetscInt  shell_stack;       /* *SHELL SECTION, STACK DIRECTION= 1..3 (default 3) */
   TslLoc    loc;
 } TslSection;
 

@@ -462,6 +462,11 @@ def family_3d(typ):
     return {"8": "hex", "6": "wedge", "4": "tet", "10": "tet"}[m.group(1)], 2 if m.group(1) == "10" else 1
 
 
+# SC8RT decks with the solids' numbering (the elements' second direction along y) and STACK DIRECTION=2
+# instead of the default (third direction along y): make_decks.py --sliding SC8RT SERIES OUTDIR --stack2
+SHELL_STACK2 = False
+
+
 def is_shell(typ):
     """A continuum shell (SC8RT, SC6RT): its elements are numbered with the stack direction, their third, along
     y (the blocks' height), and its section is *SHELL SECTION."""
@@ -470,7 +475,7 @@ def is_shell(typ):
 
 def section(typ, elset):
     if is_shell(typ):
-        return "*SHELL SECTION, ELSET=%s, MATERIAL=STEEL\n 1.0, 5\n" % elset
+        return "*SHELL SECTION, ELSET=%s, MATERIAL=STEEL%s\n 1.0, 5\n" % (elset, ", STACK DIRECTION=2" if SHELL_STACK2 else "")
     return "*SOLID SECTION, ELSET=%s, MATERIAL=STEEL\n" % elset
 
 
@@ -503,7 +508,7 @@ def mesh3d(nx, ny, nz, x0, x1, y0, y1, z0, z1, typ, nid0=0, eid0=0, mirror=None)
     for k in range(nz):
         for j in range(ny):
             for i in range(nx):
-                if is_shell(typ):  # the third direction (faces 1-2-3-4 to 5-6-7-8) along y, the stack direction
+                if is_shell(typ) and not SHELL_STACK2:  # the third direction (faces 1-2-3-4 to 5-6-7-8) along y, the stack direction
                     h = [nid(i, j, k), nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j, k),
                          nid(i, j + 1, k), nid(i, j + 1, k + 1), nid(i + 1, j + 1, k + 1), nid(i + 1, j + 1, k)]
                     mirrored = [h[3], h[2], h[1], h[0], h[7], h[6], h[5], h[4]]
@@ -720,8 +725,11 @@ def temperature_tables():
 if __name__ == "__main__":
     import sys
     if len(sys.argv) >= 5 and sys.argv[1] == "--sliding":
-        # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR [--auglagr] [--surf] [--refine=N]
+        # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR [--auglagr] [--surf] [--refine=N] [--stack2]
         flags = sys.argv[5:]
+        if "--stack2" in flags:
+            assert sys.argv[2].upper() == "SC8RT", "--stack2: SC8RT only (a wedge stacks along its third direction)"
+            SHELL_STACK2 = True
         refine = [int(f.split("=")[1]) for f in flags if f.startswith("--refine=")]
         if sys.argv[2].upper().startswith(("C3D", "SC")):
             sliding_blocks_3d(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], surf="--surf" in flags)

@@ -204,8 +204,11 @@ static PetscErrorCode CheckMaterialsAndSections(TslModel *m)
       const TslElementType *t = e >= 0 ? TslElementTypeGet(m->elem_type[e]) : NULL;
       if (e < 0) continue;
       covered[e] = PETSC_TRUE;
-      if (!strcmp(TslElementTypeSectionKeyword(t), kw)) continue;
+      if (!strcmp(TslElementTypeSectionKeyword(t), kw) && (!sec->shell || TslElementTypeStackAllowed(t, sec->shell_stack - 1))) continue;
       PetscCall(PetscFree(covered));
+      CHECK(strcmp(TslElementTypeSectionKeyword(t), kw), sec->loc,
+            "STACK DIRECTION=%d is not possible for element %" PetscInt_FMT " of type %s: it stacks along its third direction only",
+            (int)sec->shell_stack, m->elem_id[e], t->name);
       CHECK(PETSC_FALSE, sec->loc, "*%s on element %" PetscInt_FMT " of type %s (%s): its section is *%s", kw, m->elem_id[e], t->name,
             TslElementTypeKinematicsName(t), TslElementTypeSectionKeyword(t));
     }

@@ -1017,9 +1017,9 @@ static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
 /* *SHELL SECTION for continuum shells (SC8RT, SC6RT): the thickness comes from the nodes, so the data
  * line's thickness is checked and otherwise ignored, as are OFFSET= and NODAL THICKNESS (the dialect ignores
  * them for continuum shells); its second field is the number of Simpson points through the thickness (odd,
- * 3 to 15, default 5). STACK DIRECTION=3 (the element's own third direction: face 1 at the bottom) and
- * SECTION INTEGRATION=SIMPSON are the only values supported (Gauss is not allowed for coupled shells in the
- * dialect either). */
+ * 3 to 15, default 5). STACK DIRECTION=1, 2 or 3 (the element's own reference direction along the thickness;
+ * 3, from face 1 to face 2, by default; not ORIENTATION) and SECTION INTEGRATION=SIMPSON (Gauss is not
+ * allowed for coupled shells in the dialect either). */
 static PetscErrorCode KwShellSection(Deck *d, const DeckKeyword *kw)
 {
   TslSection *s;
@@ -1032,12 +1032,14 @@ static PetscErrorCode KwShellSection(Deck *d, const DeckKeyword *kw)
   PetscCall(NewSection(d, &s));
   s->shell        = PETSC_TRUE;
   s->shell_points = 5;
+  s->shell_stack  = 3;
   PetscCall(ParamReal(d, "THICKNESS MODULUS", &s->thickness_modulus, &set));
   USER_CHECK(!set || s->thickness_modulus > 0, LOC_FMT "THICKNESS MODULUS= must be positive", KLOC(d));
   v = ParamUpper(d, "STACK DIRECTION", buf, sizeof(buf));
-  USER_CHECK(!v || !strcmp(v, "3"),
-             LOC_FMT "STACK DIRECTION=%s is not supported: number the elements' nodes so that the stack direction is their third (the default, 3)",
-             KLOC(d), v);
+  USER_CHECK(!v || !strcmp(v, "1") || !strcmp(v, "2") || !strcmp(v, "3"),
+             LOC_FMT "STACK DIRECTION=%s is not supported: 1, 2 or 3 (the element's own direction along the thickness; ORIENTATION is not)", KLOC(d),
+             v);
+  if (v) s->shell_stack = v[0] - '0';
   v = ParamUpper(d, "SECTION INTEGRATION", buf, sizeof(buf));
   USER_CHECK(!v || !strcmp(v, "SIMPSON"),
              LOC_FMT "SECTION INTEGRATION=%s is not supported: SIMPSON only (the dialect allows no Gauss rule for coupled temperature shells)",

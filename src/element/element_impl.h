@@ -56,11 +56,17 @@ void TslElementElasticity(const TslElementType *type, const TslElementSection *s
 PetscReal TslElementWaveModulus(const TslElementType *type, const TslMaterialPoint *mp);
 /* A continuum shell at a point: the frame Q (rows e1, e2, n; n the unit gradient of the stack coordinate) and
  * the thickness modulus of its section (the default 2 G from the material point). */
-void      TslElementShellFrame(const TslElementPoint *p, PetscReal Q[3][3]);
+void TslElementShellFrame(const TslElementSection *sec, const TslElementPoint *p, PetscReal Q[3][3]);
+/* The reference direction (0..2) along a continuum shell's thickness: its section's STACK DIRECTION less one,
+ * 2 by default. */
+static inline PetscInt TslElementShellStack(const TslElementSection *sec)
+{
+  return sec && sec->shell_stack >= 1 && sec->shell_stack <= 3 ? sec->shell_stack - 1 : 2;
+}
 PetscReal TslElementShellThicknessModulus(const TslElementSection *sec, const TslMaterialPoint *mp);
 /* The continuum shell's hourglass sum bb = sum_a |grad N_a|^2 over the gradients' parts in the shell plane
  * (formulations.c, ShellHourglass). */
-PetscReal TslElementShellHourglassSum(const TslGeometry *g, const TslElementPoint *p);
+PetscReal TslElementShellHourglassSum(const TslElementSection *sec, const TslGeometry *g, const TslElementPoint *p);
 /* The Lame constants of the isotropic material at a point (TslElementElasticity's, the force records'). */
 void TslElementLame(const TslMaterialPoint *mp, PetscReal *lambda, PetscReal *mu);
 

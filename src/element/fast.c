@@ -457,18 +457,19 @@ PetscInt TslElementFastSize(const TslElementInput *in)
 {
   const PetscInt r = RowOf(in->type);
   if (r < 0 || TslMaterialIsTemperatureDependent(in->sec->mat) || RowLayout(r).size > TSL_FAST_MAX_SIZE) return 0;
-  if (in->type->form->quadrature(in->type->geom, in->sec)->n != Rows[r].nq) return 0; /* a shell section's own point count */
+  if (in->type->form->quadrature(in->type->geom, in->sec) != in->type->form->quadrature(in->type->geom, NULL))
+    return 0; /* a shell section's own rule */
   return RowLayout(r).size;
 }
 
 /* A point of a full row (A = its inverse Jacobian), or of a reduced row (its gradients G[d][a]), then its
  * volume, 1 / r and a continuum shell's frame, at P. */
-static void StorePoint(const TslElementPoint *p, PetscInt n, PetscInt dim, PetscBool full, PetscBool axi, PetscBool shell, const Layout *L,
-                       PetscReal P[])
+static void StorePoint(const TslElementPoint *p, PetscInt n, PetscInt dim, PetscBool full, PetscBool axi, PetscBool shell,
+                       const TslElementSection *sec, const Layout *L, PetscReal P[])
 {
   if (shell) {
     PetscReal Q[3][3];
-    TslElementShellFrame(p, Q);
+    TslElementShellFrame(sec, p, Q);
     for (PetscInt i = 0; i < 3; i++)
       for (PetscInt d = 0; d < 3; d++) P[L->fr + 3 * i + d] = Q[i][d];
   }
@@ -507,7 +508,7 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   TslElementPoint       p;
   PetscReal             lambda, mu;
 
-  if (r < 0 || quad->n != Rows[r].nq) return PETSC_FALSE;
+  if (r < 0 || quad != t->form->quadrature(g, NULL)) return PETSC_FALSE; /* the row's shape is the default rule's */
   L = RowLayout(r);
   for (PetscInt i = 0; i < L.size; i++) rec[i] = 0;
   TslMaterialEval(in->sec->mat, 0, &mp);
@@ -523,7 +524,7 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
    * the mechanical rule is the full one (each evaluated once) */
   for (PetscInt q = 0; q < quad->n; q++) {
     if (!TslElementPointEvaluate(t, in->sec, in->x, quad->xi[q], quad->w[q], &p)) return PETSC_FALSE;
-    StorePoint(&p, n, dim, full, axi, shell, &L, &rec[L.P + q * L.ps]);
+    StorePoint(&p, n, dim, full, axi, shell, in->sec, &L, &rec[L.P + q * L.ps]);
     if (quad == &g->full) ConductionAdd(&p, n, dim, mp.k, K);
   }
   for (PetscInt q = 0; quad != &g->full && q < g->full.n; q++) {
@@ -535,12 +536,12 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   /* the centre: the bulk viscosity's point and the hourglass control's (xi = 0 for quad4 and hex8) */
   Centre(g, xi0);
   if (!TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p)) return PETSC_FALSE;
-  if (full) StorePoint(&p, n, dim, full, axi, PETSC_FALSE, &L, &rec[L.C]);
+  if (full) StorePoint(&p, n, dim, full, axi, PETSC_FALSE, in->sec, &L, &rec[L.C]);
   if (Rows[r].nh) {
     PetscReal gamma[4][TSL_MAX_ELEM_NODES], hx[4][3], bb;
     PetscInt  nh = TslElementHourglassBase(in, &p, gamma, hx, &bb);
     if (nh != Rows[r].nh) return PETSC_FALSE;
-    rec[5] = TslElementHourglassKappa(mu, p.dV, shell ? TslElementShellHourglassSum(g, &p) : bb);
+    rec[5] = TslElementHourglassKappa(mu, p.dV, shell ? TslElementShellHourglassSum(in->sec, g, &p) : bb);
     for (PetscInt k = 0; k < nh; k++)
       for (PetscInt d = 0; d < dim; d++) rec[L.hx + k * dim + d] = hx[k][d];
   }

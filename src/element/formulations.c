@@ -48,29 +48,30 @@ static const TslQuadrature *ReducedRule(const TslGeometry *g, const TslElementSe
 }
 
 /* Continuum shell: the centre of the reference surface (hex8: (0, 0); wedge6: the triangle's centroid) times
- * n Simpson points along the stack direction, the third reference coordinate (the section's points, odd, 3
- * to TSL_SHELL_MAX_POINTS; 5 by default as in Abaqus). Built once per family and count. */
+ * n Simpson points along the stack direction (the section's reference direction, the third by default; a wedge
+ * stacks along its third only) (the section's points, odd, 3 to TSL_SHELL_MAX_POINTS; 5 by default as in
+ * Abaqus). Built once per family, count and direction. */
 #define TSL_SHELL_MAX_POINTS 15
 static const TslQuadrature *ShellRule(const TslGeometry *g, const TslElementSection *sec)
 {
-  static TslQuadrature rules[2][TSL_SHELL_MAX_POINTS + 1];
-  static PetscBool     built[2][TSL_SHELL_MAX_POINTS + 1];
-  const PetscInt       n = sec && sec->shell_points > 0 ? sec->shell_points : 5, f = g->nnode == 8 ? 0 : 1;
+  static TslQuadrature rules[2][3][TSL_SHELL_MAX_POINTS + 1];
+  static PetscBool     built[2][3][TSL_SHELL_MAX_POINTS + 1];
+  const PetscInt       n = sec && sec->shell_points > 0 ? sec->shell_points : 5, f = g->nnode == 8 ? 0 : 1, s = TslElementShellStack(sec);
   TslQuadrature       *q;
 
-  PetscCheckAbort(n >= 3 && n <= TSL_SHELL_MAX_POINTS && n % 2 == 1 && g->dim == 3, PETSC_COMM_SELF, PETSC_ERR_PLIB,
-                  "continuum shell rule with %d points", (int)n);
-  q = &rules[f][n];
-  if (built[f][n]) return q;
+  PetscCheckAbort(n >= 3 && n <= TSL_SHELL_MAX_POINTS && n % 2 == 1 && g->dim == 3 && (f == 0 || s == 2), PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                  "continuum shell rule with %d points along direction %d", (int)n, (int)s + 1);
+  q = &rules[f][s][n];
+  if (built[f][s][n]) return q;
   q->n      = n;
   q->degree = 1; /* in the shell plane; Simpson's rule is exact for cubics along the stack direction */
   for (PetscInt k = 0; k < n; k++) {
-    const PetscReal h = 2.0 / (n - 1), s = k == 0 || k == n - 1 ? 1 : (k % 2 ? 4 : 2);
-    q->xi[k][0] = q->xi[k][1] = f == 0 ? 0 : 1.0 / 3;
-    q->xi[k][2]               = -1 + k * h;
-    q->w[k]                   = (f == 0 ? 4 : 0.5) * h / 3 * s;
+    const PetscReal h = 2.0 / (n - 1), w = k == 0 || k == n - 1 ? 1 : (k % 2 ? 4 : 2);
+    for (PetscInt d = 0; d < 3; d++) q->xi[k][d] = f == 0 || d == 2 ? 0 : 1.0 / 3;
+    q->xi[k][s] = -1 + k * h;
+    q->w[k]     = (f == 0 ? 4 : 0.5) * h / 3 * w;
   }
-  built[f][n] = PETSC_TRUE;
+  built[f][s][n] = PETSC_TRUE;
   return q;
 }
 
@@ -284,11 +285,12 @@ static PetscErrorCode HourglassApply(const TslElementInput *in, const TslMateria
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscReal TslElementShellHourglassSum(const TslGeometry *g, const TslElementPoint *p)
+PetscReal TslElementShellHourglassSum(const TslElementSection *sec, const TslGeometry *g, const TslElementPoint *p)
 {
-  PetscReal nrm[3], len = 0, bb = 0;
+  const PetscInt s = TslElementShellStack(sec);
+  PetscReal      nrm[3], len = 0, bb = 0;
 
-  for (PetscInt d = 0; d < 3; d++) nrm[d] = p->Ji[2][d], len += nrm[d] * nrm[d];
+  for (PetscInt d = 0; d < 3; d++) nrm[d] = p->Ji[s][d], len += nrm[d] * nrm[d];
   len = PetscSqrtReal(len);
   for (PetscInt a = 0; a < g->nnode; a++) {
     PetscReal gn = 0, gg = 0;
@@ -313,7 +315,7 @@ static PetscErrorCode HourglassAtCentre(const TslElementInput *in, const TslMate
   PetscCheck(TslElementPointEvaluate(in->type, in->sec, in->x, xi0, g->ref_volume, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "hourglass control of an inverted element");
   nh = TslElementHourglassBase(in, &p, gamma, NULL, &bb);
-  if (inplane) bb = TslElementShellHourglassSum(g, &p);
+  if (inplane) bb = TslElementShellHourglassSum(in->sec, g, &p);
   PetscCall(HourglassApply(in, mp, &p, gamma, nh, bb, R, K, energy));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

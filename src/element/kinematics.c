@@ -82,6 +82,12 @@ const char *TslElementTypeSectionKeyword(const TslElementType *t)
   return KinematicsTable[t->kin].shell ? "SHELL SECTION" : "SOLID SECTION";
 }
 
+PetscBool TslElementTypeStackAllowed(const TslElementType *t, PetscInt stack)
+{
+  if (stack < 0 || stack > 2) return PETSC_FALSE;
+  return stack == 2 || t->geom == &TslGeomHex8 ? PETSC_TRUE : PETSC_FALSE;
+}
+
 PetscBool TslElementTypeSameModel(const TslElementType *a, const TslElementType *b)
 {
   if (a->ndof != b->ndof || KinematicsTable[a->kin].revolve != KinematicsTable[b->kin].revolve) return PETSC_FALSE;
@@ -267,12 +273,13 @@ PetscReal TslElementShellThicknessModulus(const TslElementSection *sec, const Ts
   return sec && sec->thickness_modulus > 0 ? sec->thickness_modulus : mp->E / (1 + mp->nu);
 }
 
-/* The shell frame at a point: n the unit gradient of the third reference coordinate (the stack direction,
- * normal to the element's reference surfaces), e1 the global axis least aligned with n projected onto the
+/* The shell frame at a point: n the unit gradient of the stack coordinate (the section's stack direction, the
+ * third reference coordinate by default; normal to the element's layers), e1 the global axis least aligned with n projected onto the
  * shell plane, e2 = n x e1; rows of Q. For an isotropic material the choice of e1 does not matter. */
-void TslElementShellFrame(const TslElementPoint *p, PetscReal Q[3][3])
+void TslElementShellFrame(const TslElementSection *sec, const TslElementPoint *p, PetscReal Q[3][3])
 {
-  PetscReal n[3] = {p->Ji[2][0], p->Ji[2][1], p->Ji[2][2]}, len = PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), e1[3], dot;
+  const PetscInt s    = TslElementShellStack(sec);
+  PetscReal      n[3] = {p->Ji[s][0], p->Ji[s][1], p->Ji[s][2]}, len = PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]), e1[3], dot;
   PetscInt  k = 0;
 
   for (PetscInt d = 0; d < 3; d++) n[d] /= len;
@@ -334,7 +341,7 @@ void TslElementElasticity(const TslElementType *type, const TslElementSection *s
   if (TslKinematicsRowGet(type->kin)->shell) {
     PetscReal Q[3][3];
     ShellLocal(sec, mp, D, dD);
-    TslElementShellFrame(p, Q);
+    TslElementShellFrame(sec, p, Q);
     Rotate(Q, D);
     if (dD) Rotate(Q, dD);
     return;

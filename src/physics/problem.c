@@ -17,7 +17,7 @@ static PetscErrorCode SetUpSections(TslProblem p)
       PetscInt e = TslModelElementIndex(m, m->elsets[k].ids[i]);
       if (e >= 0)
         p->esec[e] = (TslElementSection){&m->materials[sec->material_index], sec->thickness > 0 ? sec->thickness : 1.0, sec->shell_points,
-                                         sec->thickness_modulus};
+                                         sec->thickness_modulus, sec->shell_stack};
     }
   }
   for (PetscInt e = 0; e < m->nelem; e++)

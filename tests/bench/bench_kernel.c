@@ -100,7 +100,7 @@ int main(int argc, char **argv)
     Constant(&mat.prop[TSL_PROP_DENSITY], 2, 0);
     Constant(&mat.prop[TSL_PROP_SPECIFIC_HEAT], 3, 0);
     Constant(&mat.prop[TSL_PROP_EXPANSION], 1e-5, 0);
-    sec = (TslElementSection){&mat, 0.5, 0, 0};
+    sec = (TslElementSection){&mat, 0.5, 0, 0, 0};
     for (PetscInt a = 0; a < g->nnode; a++) {
       for (PetscInt d = 0; d < t->dim; d++) x[3 * a + d] = 0.5 * g->node_xi[a][d] + 0.02 * PetscSinReal(3.1 * a + 1.3 * d) + (d == 0 ? 2 : 0);
       for (PetscInt i = 0; i < t->ndof; i++) u[t->ndof * a + i] = 1e-4 * PetscCosReal(1.7 * a + i);

@@ -47,7 +47,7 @@ static PetscErrorCode CaseSetUp(Case *c, const char *name)
   Constant(&c->mat.prop[TSL_PROP_CONDUCTIVITY], 10, 0);
   Constant(&c->mat.prop[TSL_PROP_DENSITY], RHO, 0);
   Constant(&c->mat.prop[TSL_PROP_SPECIFIC_HEAT], 3, 0);
-  c->sec = (TslElementSection){&c->mat, THICK, 0, 0};
+  c->sec = (TslElementSection){&c->mat, THICK, 0, 0, 0};
   for (PetscInt a = 0; a < g->nnode; a++) {
     for (PetscInt d = 0; d < c->type->dim; d++) c->x[3 * a + d] = 0.5 * (g->node_xi[a][d] + 1);
     if (IsAxi(c->type)) c->x[3 * a] += 1;

@@ -69,7 +69,7 @@ static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
   Constant(&c->mat.prop[TSL_PROP_DENSITY], c->rho, 0);
   Constant(&c->mat.prop[TSL_PROP_SPECIFIC_HEAT], c->c, 0);
   Constant(&c->mat.prop[TSL_PROP_EXPANSION], ALPHA, 0);
-  c->sec = (TslElementSection){&c->mat, 0.5, 0, 0};
+  c->sec = (TslElementSection){&c->mat, 0.5, 0, 0, 0};
   for (PetscInt a = 0; a < g->nnode; a++) {
     for (PetscInt d = 0; d < 3; d++) c->x[3 * a + d] = d < type->dim ? UnitCoordinate(g, a, d) + distortion * PetscSinReal(3.1 * a + 1.3 * d + 0.7) : 0;
     if (IsAxi(type)) c->x[3 * a] += 1;

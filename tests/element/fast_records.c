@@ -82,7 +82,7 @@ static PetscErrorCode CheckType(TestLog *log, const TslElementType *t, PetscReal
   Constant(&mat.prop[TSL_PROP_DENSITY], 2, 0);
   Constant(&mat.prop[TSL_PROP_SPECIFIC_HEAT], 3, 0);
   Constant(&mat.prop[TSL_PROP_EXPANSION], 1e-3, 0);
-  sec = (TslElementSection){&mat, 0.5, 0, 0};
+  sec = (TslElementSection){&mat, 0.5, 0, 0, 0};
   for (PetscInt a = 0; a < TslElementTypeNodes(t); a++) {
     for (PetscInt d = 0; d < 3; d++) {
       const PetscReal lo = g->node_xi[0][d] < 0 || g->node_xi[1][d] < 0 ? -1 : 0, unit = lo < 0 ? 0.5 * (g->node_xi[a][d] + 1) : g->node_xi[a][d];
@@ -127,7 +127,7 @@ static PetscErrorCode CheckType(TestLog *log, const TslElementType *t, PetscReal
   }
   PetscCall(CheckBatch(log, &in, &shape, x, u, v, ti, offset));
   if (t->kin == TSL_KIN_CONTINUUM_SHELL) { /* a section's thickness modulus in the record; other point counts: none */
-    TslElementSection stm = {&mat, 0.5, 5, 3.3e4}, s3 = {&mat, 0.5, 3, 0};
+    TslElementSection stm = {&mat, 0.5, 5, 3.3e4, 3}, s3 = {&mat, 0.5, 3, 0, 0};
     in.sec = &stm;
     CheckTrue(log, TslElementFastBuild(&in, rec), "%s (offset %g): record with THICKNESS MODULUS built", t->name, (double)offset);
     TslElementFastForce(&shape, rec, u, ti, v, 0, 0, R, Rv, &w);

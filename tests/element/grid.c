@@ -225,7 +225,7 @@ void GridSetMaterial(Grid *grid, PetscReal E, PetscReal nu, PetscReal k, PetscRe
   Constant(&grid->mat.prop[TSL_PROP_DENSITY], 1, 0);
   Constant(&grid->mat.prop[TSL_PROP_SPECIFIC_HEAT], 1, 0);
   Constant(&grid->mat.prop[TSL_PROP_EXPANSION], alpha, 0);
-  grid->sec = (TslElementSection){&grid->mat, thickness, 0, 0};
+  grid->sec = (TslElementSection){&grid->mat, thickness, 0, 0, 0};
   for (PetscInt a = 0; a < grid->nnode; a++) grid->theta_init[a] = theta_init;
 }
 

@@ -1,12 +1,14 @@
 #!/usr/bin/python3
 """Compares every dataset of two thermoslide .h5 files (e.g. a 1-rank and a 2-rank run).
 
-usage: compare_h5.py A.h5 B.h5 [rtol] [FIELD=floor ...]
+usage: compare_h5.py A.h5 B.h5 [rtol] [FIELD=floor ...] [skip=PREFIX ...]
 A dataset agrees when max|a - b| <= rtol * max(M, floor), M the largest magnitude of that field over
 all frames of the job: a heat flux that has decayed to round-off in the last frame is compared with
 the fluxes the job produced, not with itself.
 A field that is physically zero (reactions of a free body) is only round-off; FIELD=floor gives the
 magnitude it is compared against (e.g. RF=1e4 for forces of order 1e4 elsewhere in the model).
+skip=PREFIX leaves out the datasets whose path starts with PREFIX (skip=mesh: the same cells numbered
+otherwise, e.g. continuum shells with another stack direction).
 """
 import sys
 
@@ -22,7 +24,10 @@ def datasets(f):
 
 a, b = datasets(h5py.File(sys.argv[1], "r")), datasets(h5py.File(sys.argv[2], "r"))
 rtol = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-8
-floors = dict((kv.split("=")[0], float(kv.split("=")[1])) for kv in sys.argv[4:])
+skips = [kv.split("=", 1)[1] for kv in sys.argv[4:] if kv.startswith("skip=")]
+floors = dict((kv.split("=")[0], float(kv.split("=")[1])) for kv in sys.argv[4:] if not kv.startswith("skip="))
+a = dict((k, v) for k, v in a.items() if not any(k.startswith(p) for p in skips))
+b = dict((k, v) for k, v in b.items() if not any(k.startswith(p) for p in skips))
 bad = sorted(set(a) ^ set(b))
 if bad:
     print("datasets present in only one file: %s" % bad)

@@ -105,7 +105,8 @@ tsl_deck_bad(velocity_missing_value velocity_missing_value.inp "error: velocity_
 # what is not supported is named
 tsl_deck_bad(shell_solid_section shell_solid_section.inp "error: shell_solid_section.inp:21: *SOLID SECTION on element 1 of type SC8RT (continuum shell): its section is *SHELL SECTION")
 tsl_deck_bad(solid_shell_section solid_shell_section.inp "error: solid_shell_section.inp:21: *SHELL SECTION on element 1 of type C3D8T (3D): its section is *SOLID SECTION")
-tsl_deck_bad(shell_stack_direction shell_stack_direction.inp "error: shell_stack_direction.inp:21: STACK DIRECTION=1 is not supported: number the elements' nodes so that the stack direction is their third (the default, 3)")
+tsl_deck_bad(shell_stack_direction shell_stack_direction.inp "error: shell_stack_direction.inp:21: STACK DIRECTION=ORIENTATION is not supported: 1, 2 or 3 (the element's own direction along the thickness; ORIENTATION is not)")
+tsl_deck_bad(shell_wedge_stack shell_wedge_stack.inp "error: shell_wedge_stack.inp:19: STACK DIRECTION=1 is not possible for element 1 of type SC6RT: it stacks along its third direction only")
 tsl_deck_bad(shell_gauss shell_gauss.inp "error: shell_gauss.inp:21: SECTION INTEGRATION=GAUSS is not supported: SIMPSON only")
 tsl_deck_bad(shell_even_points shell_even_points.inp "error: shell_even_points.inp:22: the number of integration points through the thickness must be odd, 3 to 15 (Simpson's rule), got 4")
 tsl_deck_bad(shell_thickness_modulus shell_thickness_modulus.inp "error: shell_thickness_modulus.inp:21: THICKNESS MODULUS= must be positive")
