@@ -202,8 +202,9 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
  * fixed length, four elements at a time (TslElementFastForceBatch).
  * Rows: the displacement formulations (full, reduced with hourglass control, modified) of plane strain, plane
  * stress, axisymmetric and 3D solids, on every family (tri3, tri6, quad4, quad8, tet4, tet10, wedge6, hex8), and
- * SC8RT with its default 5 Simpson points (the shell's law in each point's frame); hybrid, generalized plane
- * strain, twist, SC6RT and temperature-dependent materials keep the generic path.
+ * the continuum shells SC8RT and SC6RT with their default section (5 Simpson points, stack direction 3: the
+ * shell's law in each point's frame); hybrid, generalized plane strain, twist and temperature-dependent
+ * materials keep the generic path.
  *   TslElementFastShape     the type's shape values and reference derivatives at its mechanical points and
  *                           centre, and its hourglass base vectors (one per type, shared by its elements);
  *                           PETSC_FALSE when the type has no fast row

@@ -323,6 +323,7 @@ FORCE_ROW(Quad4ReducedPs, 2, 4, 1, 1, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETS
 FORCE_ROW(Tri3FullPs, 2, 3, 1, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
 FORCE_ROW(Tri6FullPs, 2, 6, 3, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FALSE)
 FORCE_ROW(Hex8Shell, 3, 8, 5, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
+FORCE_ROW(Wedge6Shell, 3, 6, 5, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
 
 typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *,
                         const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
@@ -357,7 +358,8 @@ static const FastRow Rows[] = {
     {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRESS, 1, 1, Quad4ReducedPs, PETSC_FALSE},
     {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRESS, 1, 0, Tri3FullPs, PETSC_FALSE},
     {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, PETSC_FALSE},
-    {&TslGeomHex8, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Hex8Shell, PETSC_FALSE}, /* the default 5 Simpson points */
+    {&TslGeomHex8, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Hex8Shell, PETSC_FALSE},     /* the default 5 Simpson points */
+    {&TslGeomWedge6, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Wedge6Shell, PETSC_FALSE}, /* xi eta, xi eta zeta vanish: zero vectors */
 };
 
 static PetscInt RowOf(const TslElementType *t)

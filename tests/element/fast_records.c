@@ -3,7 +3,7 @@
  * geometry's rounding is largest) with arbitrary displacements, temperatures and velocities, the internal
  * force and heat flow equal TslElementInternal's, the bulk viscosity forces and power
  * TslElementBulkViscosity's, to 1e-12 of the largest entry, the strain and hourglass energies TslElementOutput's. The types without a row
- * (generalized plane strain, twist, hybrid, SC6RT) and a temperature-dependent material get no record (size 0); nor does an SC8RT
+ * (generalized plane strain, twist, hybrid) and a temperature-dependent material get no record (size 0); nor does a continuum shell
  * section with other than the 5 Simpson points of the row. */
 #include "check.h"
 
@@ -153,8 +153,9 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   for (PetscInt t = 0; t < TslElementTypeCount(); t++)
     for (PetscInt k = 0; k < 2; k++) PetscCall(CheckType(&log, TslElementTypeGet(t), k ? 1e4 : 0, &nrows));
-  CheckTrue(&log, (PetscBool)(nrows == 2 * 20),
-            "records for the 20 types of plane strain, plane stress, axisymmetric and 3D displacement formulations and SC8RT (%d type-offset pairs)",
+  CheckTrue(&log, (PetscBool)(nrows == 2 * 21),
+            "records for the 21 types of plane strain, plane stress, axisymmetric and 3D displacement formulations and the continuum shells (%d "
+            "type-offset pairs)",
             (int)nrows);
   PetscCall(PetscFinalize());
   return log.failures ? 1 : 0;
