@@ -44,7 +44,11 @@ with open(path, "w") as f:
     for a in range(0, len(ids), 16):
         f.write(", ".join(str(x) for x in ids[a:a + 16]) + "\n")
     f.write("*MATERIAL, NAME=STEEL\n*ELASTIC\n 30.0E6, 0.3\n*CONDUCTIVITY\n 10.0\n*DENSITY\n 1000.0\n*SPECIFIC HEAT\n 0.001\n*EXPANSION\n 1.0E-5\n")
-    f.write("*SOLID SECTION, ELSET=BODY, MATERIAL=STEEL\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
+    if etype.upper().startswith("SC"):  # a continuum shell: stacks along z, the elements' third direction
+        f.write("*SHELL SECTION, ELSET=BODY, MATERIAL=STEEL\n 1.0, 5\n")
+    else:
+        f.write("*SOLID SECTION, ELSET=BODY, MATERIAL=STEEL\n")
+    f.write("*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
     if explicit:
         E, nu, rho, c, k, h = 30.0e6, 0.3, 1000.0, 0.001, 10.0, 1.0 / n
         cd = math.sqrt(E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)) / rho)
