@@ -1045,6 +1045,8 @@ static PetscErrorCode KwShellSection(Deck *d, const DeckKeyword *kw)
              LOC_FMT "SECTION INTEGRATION=%s is not supported: SIMPSON only (the dialect allows no Gauss rule for coupled temperature shells)",
              KLOC(d), v);
   USER_CHECK(!Param(d, "POISSON"), LOC_FMT "POISSON= is not supported: the thickness behaviour is given by THICKNESS MODULUS=", KLOC(d));
+  USER_CHECK(!Param(d, "COMPOSITE"), LOC_FMT "COMPOSITE sections are not supported: one material per *SHELL SECTION", KLOC(d));
+  USER_CHECK(!Param(d, "DENSITY"), LOC_FMT "DENSITY= (mass per area added to the shell) is not supported: give the material's *DENSITY", KLOC(d));
   PetscCall(DataLine(d, 0, &got));
   if (got) {
     PetscReal t;
@@ -1992,8 +1994,9 @@ static const DeckKeyword Keywords[] = {
     {"SPECIFIC HEAT", AT_MODEL, IN_MATERIAL, "", KwProperty, TSL_PROP_SPECIFIC_HEAT, NULL},
     {"EXPANSION", AT_MODEL, IN_MATERIAL, "TYPE|ZERO", KwProperty, TSL_PROP_EXPANSION, NULL},
     {"SOLID SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL|REF NODE", KwSolidSection, 0, NULL},
-    {"SHELL SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL|THICKNESS MODULUS|STACK DIRECTION|SECTION INTEGRATION|POISSON|OFFSET|NODAL THICKNESS",
-     KwShellSection, 0, NULL},
+    {"SHELL SECTION", AT_MODEL, IN_NONE,
+     "ELSET|MATERIAL|THICKNESS MODULUS|STACK DIRECTION|SECTION INTEGRATION|POISSON|OFFSET|NODAL THICKNESS|COMPOSITE|DENSITY", KwShellSection, 0,
+     NULL},
     {"INITIAL CONDITIONS", AT_MODEL, IN_NONE, "TYPE", KwInitial, 0, NULL},
     {"AMPLITUDE", AT_BOTH, IN_NONE, "NAME|TIME|DEFINITION", KwAmplitude, 0, NULL},
     {"PHYSICAL CONSTANTS", AT_MODEL, IN_NONE, "ABSOLUTE ZERO|STEFAN BOLTZMANN", KwPhysical, 0, NULL},

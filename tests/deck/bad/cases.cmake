@@ -111,3 +111,4 @@ tsl_deck_bad(shell_gauss shell_gauss.inp "error: shell_gauss.inp:21: SECTION INT
 tsl_deck_bad(shell_even_points shell_even_points.inp "error: shell_even_points.inp:22: the number of integration points through the thickness must be odd, 3 to 15 (Simpson's rule), got 4")
 tsl_deck_bad(shell_thickness_modulus shell_thickness_modulus.inp "error: shell_thickness_modulus.inp:21: THICKNESS MODULUS= must be positive")
 tsl_deck_bad(shell_poisson shell_poisson.inp "error: shell_poisson.inp:21: POISSON= is not supported: the thickness behaviour is given by THICKNESS MODULUS=")
+tsl_deck_bad(shell_composite shell_composite.inp "error: shell_composite.inp:21: COMPOSITE sections are not supported: one material per *SHELL SECTION")
