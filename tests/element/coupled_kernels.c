@@ -1,6 +1,7 @@
 /* Coupled temperature-displacement kernels, for every type in the catalogue: patch-type checks
  * (rigid motion, free thermal expansion, constrained expansion, linear temperature), volumes, tangent
- * against central differences of the residual, face loads, heat change and inverted elements. */
+ * against central differences of the residual, face loads, heat change and inverted elements; a continuum
+ * shell's STACK DIRECTION (its element renumbered). */
 #include "check.h"
 
 typedef struct {
@@ -598,6 +599,54 @@ static PetscErrorCode CheckInverted(TestLog *log, Case *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A continuum shell's STACK DIRECTION: the distorted element renumbered so that its stack (the third
+ * reference direction) becomes the first (node a' of the new numbering is the old node at (xi, eta, zeta) =
+ * (eta', zeta', xi'), a cyclic change that keeps the orientation), with STACK DIRECTION=1, gives the same
+ * residual node by node as the original with the default 3, and the same energies. Types that can stack
+ * along their first direction only (hex8). */
+static PetscErrorCode CheckStackDirection(TestLog *log, Case *c)
+{
+  const TslElementType *t = c->type;
+  const TslGeometry    *g = t->geom;
+  const PetscInt        n = g->nnode, ndof = t->ndof;
+  PetscInt              perm[TSL_MAX_ELEM_NODES];
+  PetscReal         x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES], R[TSL_MAX_ELEM_DOF], Rp[TSL_MAX_ELEM_DOF], d = 0, m = 0;
+  PetscReal         en[2], enp[2];
+  PetscBool         inv, invp;
+  TslElementSection sec1 = c->sec;
+  TslElementInput   in1;
+
+  PetscFunctionBeginUser;
+  if (!TslElementTypeStackAllowed(t, 0)) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt a = 0; a < n; a++) {
+    perm[a] = -1;
+    for (PetscInt b = 0; b < n; b++)
+      if (g->node_xi[b][0] == g->node_xi[a][1] && g->node_xi[b][1] == g->node_xi[a][2] && g->node_xi[b][2] == g->node_xi[a][0]) perm[a] = b;
+    CheckTrue(log, (PetscBool)(perm[a] >= 0), "%s stack direction: node %d has an image", t->name, (int)a);
+    if (perm[a] < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  for (PetscInt a = 0; a < n; a++) { /* some displacement and temperature field on the distorted element */
+    for (PetscInt i = 0; i < ndof; i++)
+      c->u[ndof * a + i] = i == ndof - 1 ? THETA0 + 3 * PetscSinReal(1.1 * a) : 1e-3 * PetscSinReal(2.1 * a + 0.7 * i + 0.3);
+  }
+  for (PetscInt a = 0; a < n; a++) {
+    for (PetscInt k = 0; k < 3; k++) x[3 * a + k] = c->x[3 * perm[a] + k];
+    for (PetscInt i = 0; i < ndof; i++) u[ndof * a + i] = c->u[ndof * perm[a] + i];
+    ti[a] = c->theta_init[perm[a]];
+  }
+  sec1.shell_stack = 1;
+  in1              = (TslElementInput){.type = t, .sec = &sec1, .x = x, .u = u, .theta_init = ti};
+  PetscCall(TslElementInternalEnergy(&c->in, R, NULL, &inv, en));
+  PetscCall(TslElementInternalEnergy(&in1, Rp, NULL, &invp, enp));
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt i = 0; i < ndof; i++)
+      d = PetscMax(d, PetscAbsReal(Rp[ndof * a + i] - R[ndof * perm[a] + i])), m = PetscMax(m, PetscAbsReal(R[ndof * a + i]));
+  CheckAtMost(log, d / m, 1e-13, "%s STACK DIRECTION=1 on the renumbered element: residual against the default's", t->name);
+  Check(log, enp[0], en[0], 1e-13 * en[0], "%s STACK DIRECTION=1: strain energy", t->name);
+  Check(log, enp[1], en[1], 1e-13 * en[0], "%s STACK DIRECTION=1: hourglass energy", t->name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   TestLog log = {0, 0};
@@ -649,6 +698,10 @@ int main(int argc, char **argv)
     }
     CaseSetUp(&c, type, 0);
     PetscCall(CheckInverted(&log, &c));
+    if (type->kin == TSL_KIN_CONTINUUM_SHELL) {
+      CaseSetUp(&c, type, 0.08);
+      PetscCall(CheckStackDirection(&log, &c));
+    }
   }
   PetscCall(PetscFinalize());
   return Summary(&log);
