@@ -116,6 +116,33 @@ static PetscErrorCode BlockFor(TslProblem p, AsmMode mode, Mat A, PetscScalar *f
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* -info: a surface-to-surface point's state at a residual evaluation, by the global ids of its secondary face's
+ * nodes, its index on that face and the main face's nodes (as node-to-surface prints each contact node). */
+static PetscErrorCode InfoPoint(TslProblem p, const S2SFace *fc, const S2SPoint *pt, PetscInt k)
+{
+  const TslContactSurface *cs       = &p->csurf[fc->pair];
+  char                     sec[128] = "", mainf[128] = "";
+  size_t                   ls = 0, lm = 0;
+  PetscBool                on;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscInfoEnabled(PETSC_SMALLEST_CLASSID, &on)); /* the class of PetscInfo(NULL, ...) */
+  if (!on) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt a = 0; a < fc->nsn && ls + 24 < sizeof(sec); a++)
+    ls += (size_t)snprintf(sec + ls, sizeof(sec) - ls, " %" PetscInt_FMT, p->m->node_id[fc->lnode[a]]);
+  for (PetscInt a = 0; a < cs->nper && lm + 24 < sizeof(mainf); a++) {
+    const PetscInt l = cs->main_lnode[cs->nper * pt->seg + a];
+    if (l >= 0) lm += (size_t)snprintf(mainf + lm, sizeof(mainf) - lm, " %" PetscInt_FMT, p->m->node_id[l]);
+  }
+  PetscCall(PetscInfo(NULL,
+                      "contact point %" PetscInt_FMT " of pair %" PetscInt_FMT
+                      " secondary face [%s ] on main face [%s ]: gap %g p %g slip %g shear %g q %g status %d\n",
+                      k, fc->pair + 1, sec, mainf, (double)pt->out.gap, (double)pt->out.pressure,
+                      (double)PetscHypotReal(pt->out.slip, pt->out.slip_circ), (double)PetscHypotReal(pt->out.shear, pt->out.shear_circ),
+                      (double)pt->out.heat_flux, (int)pt->out.status));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat)
 {
   TslContactS2S           s = p->s2s;
@@ -166,6 +193,7 @@ PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const Pe
           PetscCall(TslContactPointElement(&cs->law, &in, fc->kind, pt->zeta, b->R, mode == ASM_JACOBIAN ? b->K : NULL, &pt->out));
       }
       if (!fc->assemble) continue;
+      if (mode == ASM_RESIDUAL) PetscCall(InfoPoint(p, fc, pt, q - fc->first));
       if (heat) {
         heat->interface += pt->out.heat_flux * pt->out.area;
         heat->dissipation += pt->out.dissipation_rate * pt->out.area;
