@@ -274,8 +274,9 @@ PetscReal TslElementShellThicknessModulus(const TslElementSection *sec, const Ts
 }
 
 /* The shell frame at a point: n the unit gradient of the stack coordinate (the section's stack direction, the
- * third reference coordinate by default; normal to the element's layers), e1 the global axis least aligned with n projected onto the
- * shell plane, e2 = n x e1; rows of Q. For an isotropic material the choice of e1 does not matter. */
+ * third reference coordinate by default; normal to the element's layers), e1 the global axis least aligned
+ * with n projected onto the shell plane, e2 = n x e1; rows of Q. For an isotropic material the choice of e1
+ * does not matter. */
 void TslElementShellFrame(const TslElementSection *sec, const TslElementPoint *p, PetscReal Q[3][3])
 {
   const PetscInt s    = TslElementShellStack(sec);
