@@ -204,13 +204,14 @@ static PetscErrorCode CheckMaterialsAndSections(TslModel *m)
       const TslElementType *t = e >= 0 ? TslElementTypeGet(m->elem_type[e]) : NULL;
       if (e < 0) continue;
       covered[e] = PETSC_TRUE;
-      if (!strcmp(TslElementTypeSectionKeyword(t), kw) && (!sec->shell || TslElementTypeStackAllowed(t, sec->shell_stack - 1))) continue;
+      const PetscBool same_kw = strcmp(TslElementTypeSectionKeyword(t), kw) ? PETSC_FALSE : PETSC_TRUE;
+      const PetscBool stack   = !sec->shell || TslElementTypeStackAllowed(t, sec->shell_stack - 1);
+      if (same_kw && stack) continue;
       PetscCall(PetscFree(covered));
-      CHECK(strcmp(TslElementTypeSectionKeyword(t), kw), sec->loc,
-            "STACK DIRECTION=%d is not possible for element %" PetscInt_FMT " of type %s: it stacks along its third direction only",
-            (int)sec->shell_stack, m->elem_id[e], t->name);
-      CHECK(PETSC_FALSE, sec->loc, "*%s on element %" PetscInt_FMT " of type %s (%s): its section is *%s", kw, m->elem_id[e], t->name,
+      CHECK(same_kw, sec->loc, "*%s on element %" PetscInt_FMT " of type %s (%s): its section is *%s", kw, m->elem_id[e], t->name,
             TslElementTypeKinematicsName(t), TslElementTypeSectionKeyword(t));
+      CHECK(stack, sec->loc, "STACK DIRECTION=%d is not possible for element %" PetscInt_FMT " of type %s: it stacks along its third direction only",
+            (int)sec->shell_stack, m->elem_id[e], t->name);
     }
   }
   for (PetscInt e = 0; e < m->nelem && bad < 0; e++)

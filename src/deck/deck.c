@@ -982,7 +982,6 @@ static PetscErrorCode NewSection(Deck *d, TslSection **sp)
   s->thickness       = 1.0;
   s->loc             = d->kwloc;
   s->ref_node.id     = -1;
-  s->ref_node.set[0] = 0;
   *sp                = s;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -45,6 +45,15 @@ PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementSe
 void TslElementStrainMatrix(const TslElementType *type, const TslElementSection *sec, const PetscReal x[], const TslElementPoint *p,
                             PetscReal B[6][TSL_MAX_ELEM_NODES * 3]);
 
+/* The centre of the reference element, the average of its corners (xi = 0 for quad4 and hex8, the centroid
+ * for triangles, tetrahedra and wedges): the point of the hourglass control and of the bulk viscosity. */
+static inline void TslElementCentre(const TslGeometry *g, PetscReal xi[3])
+{
+  for (PetscInt d = 0; d < 3; d++) xi[d] = 0;
+  for (PetscInt a = 0; a < g->ncorner; a++)
+    for (PetscInt d = 0; d < g->dim; d++) xi[d] += g->node_xi[a][d] / g->ncorner;
+}
+
 /* Elasticity of the kinematics at a material point: D[6][6] (plane stress: condensed so that
  * sigma_33 = 0) and its derivative dD in theta (NULL: not wanted). A continuum shell's D depends on the
  * stack direction at the point p (its section: the thickness modulus); p and sec may be NULL for the

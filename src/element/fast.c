@@ -36,7 +36,7 @@
 #define HEADER 7
 
 /* Offsets of the record's parts (constants once the row's sizes are): point q at P + q * ps (its A or G,
- * then dV, then 1 / r), the centre at C (A, volume, 1 / r; a reduced row's: its point), K, hx. */
+ * then dV, then 1 / r, then a continuum shell's frame Q at fr), the centre at C (A, volume, 1 / r; a reduced row's: its point), K, hx. */
 typedef struct {
   PetscInt P, ps, dV, ri, fr, K, C, hx, size;
 } Layout;
@@ -152,11 +152,11 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
     if (shell) {
       /* the continuum shell (kinematics.c, ShellLocal): the gradient in the frame, gl = Q g Q^T, the shell's
        * law there (lambda, mu the shell plane's; E_t; 5/6 mu across), and the stress back, Q^T S_l Q */
-      const PetscReal *F  = P + L.fr * W;
+      const PetscReal *Fr = P + L.fr * W;
       const V          Et = Ld(rec + 6 * W), ks = (5.0 / 6.0) * mu;
       V                Qf[3][3], t[3][3], gl[3][3], Sl[3][3];
       for (PetscInt i = 0; i < 3; i++)
-        for (PetscInt d = 0; d < 3; d++) Qf[i][d] = Ld(F + (3 * i + d) * W);
+        for (PetscInt d = 0; d < 3; d++) Qf[i][d] = Ld(Fr + (3 * i + d) * W);
       for (PetscInt i = 0; i < 3; i++)
         for (PetscInt d = 0; d < 3; d++) t[i][d] = Qf[i][0] * g[0][d] + Qf[i][1] * g[1][d] + Qf[i][2] * g[2][d];
       for (PetscInt i = 0; i < 3; i++)
@@ -414,14 +414,6 @@ static void SumFactors(const TslGeometry *g, const TslQuadrature *quad, TslEleme
   shape->sf = PETSC_TRUE;
 }
 
-/* The centre of the bulk viscosity: the corners' centroid, as TslElementBulkViscosity's. */
-static void Centre(const TslGeometry *g, PetscReal xi0[3])
-{
-  xi0[0] = xi0[1] = xi0[2] = 0;
-  for (PetscInt a = 0; a < g->ncorner; a++)
-    for (PetscInt d = 0; d < g->dim; d++) xi0[d] += g->node_xi[a][d] / g->ncorner;
-}
-
 PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *shape)
 {
   const PetscInt       r = RowOf(t);
@@ -442,7 +434,7 @@ PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *s
       for (PetscInt e = 0; e < g->dim; e++) shape->dN[q][e][a] = dN[g->dim * a + e];
     }
   }
-  Centre(g, xi0);
+  TslElementCentre(g, xi0);
   g->shape(xi0, N, dN);
   for (PetscInt a = 0; a < g->nnode; a++) {
     shape->Nc[a] = N[a];
@@ -536,7 +528,7 @@ PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[])
   for (PetscInt a = 0, k = L.K; a < n; a++)
     for (PetscInt b = a + 1; b < n; b++) rec[k++] = K[a][b];
   /* the centre: the bulk viscosity's point and the hourglass control's (xi = 0 for quad4 and hex8) */
-  Centre(g, xi0);
+  TslElementCentre(g, xi0);
   if (!TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &p)) return PETSC_FALSE;
   if (full) StorePoint(&p, n, dim, full, axi, PETSC_FALSE, in->sec, &L, &rec[L.C]);
   if (Rows[r].nh) {

@@ -239,14 +239,6 @@ PetscInt TslElementHourglassBase(const TslElementInput *in, const TslElementPoin
   return nh;
 }
 
-/* The centre of the reference element (the average of its corners): the point of the stabilisation. */
-static void Centre(const TslGeometry *g, PetscReal xi[3])
-{
-  for (PetscInt d = 0; d < 3; d++) xi[d] = 0;
-  for (PetscInt a = 0; a < g->ncorner; a++)
-    for (PetscInt d = 0; d < g->dim; d++) xi[d] += g->node_xi[a][d] / g->ncorner;
-}
-
 /* f_ia = kappa sum_k gamma^k_a q^k_i for the vectors gamma[0..nh) (a zero vector skipped), kappa from bb. */
 static PetscErrorCode HourglassApply(const TslElementInput *in, const TslMaterialPoint *mp, const TslElementPoint *p,
                                      PetscReal gamma[4][TSL_MAX_ELEM_NODES], PetscInt nh, PetscReal bb, PetscReal R[], PetscReal K[],
@@ -311,7 +303,7 @@ static PetscErrorCode HourglassAtCentre(const TslElementInput *in, const TslMate
   PetscInt           nh;
 
   PetscFunctionBeginUser;
-  Centre(g, xi0);
+  TslElementCentre(g, xi0);
   PetscCheck(TslElementPointEvaluate(in->type, in->sec, in->x, xi0, g->ref_volume, &p), PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "hourglass control of an inverted element");
   nh = TslElementHourglassBase(in, &p, gamma, NULL, &bb);

@@ -462,15 +462,14 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
  * centre (the single mechanical point; a continuum shell's points lie above and below it). */
 static PetscErrorCode Hourglass(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscReal *energy)
 {
-  const TslGeometry *g      = in->type->geom;
-  PetscReal          xi0[3] = {0, 0, 0};
+  const TslGeometry *g = in->type->geom;
+  PetscReal          xi0[3];
   MechPoint          mq;
 
   PetscFunctionBeginUser;
   *energy = 0;
   if (!in->type->form->hourglass) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt a = 0; a < g->ncorner; a++)
-    for (PetscInt d = 0; d < g->dim; d++) xi0[d] += g->node_xi[a][d] / g->ncorner;
+  TslElementCentre(g, xi0);
   PetscCheck(MechPointEvaluate(in, xi0, g->ref_volume, NULL, LeanStrain(in), &mq), PETSC_COMM_SELF, PETSC_ERR_PLIB,
              "hourglass control of an inverted element");
   PetscCall(in->type->form->hourglass(in, &mq.mp, R, K, energy));
@@ -733,14 +732,13 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
   const TslElementType *t = in->type;
   const TslGeometry    *g = t->geom;
   const PetscInt        ndof = t->ndof, nu = ndof - 1, n = TslElementTypeNodes(t);
-  PetscReal             xi[3] = {0, 0, 0}, B[6][TSL_MAX_ELEM_NODES * 3], M, rate = 0, p;
+  PetscReal             xi[3], B[6][TSL_MAX_ELEM_NODES * 3], M, rate = 0, p;
   TslElementPoint       pt;
   TslMaterialPoint      mp;
 
   PetscFunctionBeginUser;
   *power = 0;
-  for (PetscInt a = 0; a < g->ncorner; a++)
-    for (PetscInt d = 0; d < g->dim; d++) xi[d] += g->node_xi[a][d] / g->ncorner;
+  TslElementCentre(g, xi);
   PetscCheck(TslElementPointEvaluate(t, in->sec, in->x, xi, g->ref_volume, &pt), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
   TslElementStrainMatrix(t, in->sec, in->x, &pt, B);
   TslMaterialEval(in->sec->mat, NodalTheta(in, pt.N, in->u), &mp);
