@@ -527,6 +527,9 @@ static PetscErrorCode FallBackToDirect(Driver *d, Vec X, PetscInt s, PetscInt in
                           s + 1, inc + 1, why, N, d->fallback_max));
     PetscCall(SNESGetKSP(d->snes, &ksp));
     PetscCall(KSPGetPC(ksp, &pc));
+    /* a one-rank LU that met a zero pivot has its factor set up with PETSc's package, which PCFactor will not
+     * exchange while that factor exists: the PC lets go of it first */
+    PetscCall(PCReset(pc));
     PetscCall(PCSetType(pc, PCLU));
     PetscCall(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS));
   }
