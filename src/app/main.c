@@ -53,6 +53,8 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
   if (n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_NOT_CONVERGED || n == PETSC_ERR_FILE_OPEN || n == PETSC_ERR_FILE_READ ||
       n == PETSC_ERR_FILE_WRITE || n == PETSC_ERR_FILE_UNEXPECTED)
     fprintf(stderr, "thermoslide: error: %s\n", mess);
+  else if (n == PETSC_ERR_ARG_UNKNOWN_TYPE) /* this code names its types itself: an unknown one came from an option */
+    fprintf(stderr, "thermoslide: error: a command-line option names an unknown type: %s\n", mess);
   else
     fprintf(stderr, "thermoslide: internal error (code %d): %s\n", (int)n, mess);
   fflush(stderr);

@@ -13,7 +13,10 @@ time limit and classifies what happened. A mutant may run or fail, but never:
   NOLINE   a deck error ("error: <deck>:") whose line number is 0 or missing when the mutant had a line
   MIXED    it completed (exit 0) but printed an error line
 
-usage: fuzz_deck.py THERMOSLIDE OUTDIR [--seed S] [--count N] [--np P] [--timeout-factor F] DECK...
+A share of the mutants (--options, default 0.2) also get one to three command-line options with odd values
+(negative tolerances, zero cutbacks, unknown solver types, ...), which must be refused or honoured the same way.
+
+usage: fuzz_deck.py THERMOSLIDE OUTDIR [--seed S] [--count N] [--np P] [--timeout-factor F] [--options F] DECK...
 Prints one line per finding and a summary; exits 1 if any finding. Reproduce a finding with the mutant
 kept in OUTDIR (the file named in the line) and the same command.
 """
@@ -40,7 +43,7 @@ def mutate(lines, rng):
     data = [i for i, l in enumerate(lines) if l.strip() and not l.lstrip().startswith("*")]
     keys = [i for i, l in enumerate(lines) if l.lstrip().startswith("*") and not l.lstrip().startswith("**")]
     op = rng.choice(["delete", "duplicate", "swap", "number", "number", "number", "dropfield", "addfield", "param", "param", "keyword",
-                     "type", "truncate", "insert", "crlf", "longline", "bytes", "include", "blankfield", "case"])
+                     "type", "truncate", "insert", "crlf", "longline", "bytes", "include", "blankfield", "case", "scale", "scale", "scale"])
     out = list(lines)
     if op == "delete" and n:
         i = rng.randrange(n)
@@ -54,9 +57,17 @@ def mutate(lines, rng):
         i = rng.randrange(n - 1)
         out[i], out[i + 1] = out[i + 1], out[i]
         return out, f"swap lines {i + 1},{i + 2}"
-    if op in ("number", "dropfield", "addfield", "blankfield") and data:
+    if op in ("number", "dropfield", "addfield", "blankfield", "scale") and data:
         i = rng.choice(data)
         l = out[i].rstrip("\n")
+        if op == "scale":  # a valid number, scaled: reaches the solver more often than garbage does
+            ms = [m for m in NUM.finditer(l) if "." in m.group(0) or "e" in m.group(0).lower()]
+            if ms:
+                m = rng.choice(ms)
+                f = rng.choice([-1, 0, 1e-9, 1e-3, 0.1, 0.5, 2, 10, 1e3, 1e9])
+                new = repr(float(m.group(0).replace("d", "e").replace("D", "e")) * f)
+                out[i] = l[: m.start()] + new + l[m.end():] + "\n"
+                return out, f"line {i + 1}: {m.group(0)!r} -> {new!r}"
         if op == "number":
             ms = list(NUM.finditer(l))
             if ms:
@@ -131,8 +142,30 @@ def mutate(lines, rng):
     return mutate(lines, rng)
 
 
-def run(exe, deck, outdir, np, limit):
+OPTIONS = {"-tsl_atol_rel": ["0", "-1", "1", "1e-30", "nan"], "-tsl_block_solves": ["0", "1", "2", "x"], "-tsl_contact_augment_tol": ["0", "-1", "1e9"],
+           "-tsl_contact_max_its": ["0", "1", "-3"], "-tsl_cutback": ["0", "1", "2", "-0.5", "1e-9"], "-tsl_direct_max_dofs": ["0", "-1", "1000000000"],
+           "-tsl_easy_its": ["0", "-1", "1000"], "-tsl_explicit_contact_search": ["0", "1", "-1"], "-tsl_explicit_history": ["0", "1", "-1", "100000"],
+           "-tsl_explicit_kinematic_passes": ["0", "1", "-1"], "-tsl_explicit_kinematic_tol": ["0", "-1", "1"], "-tsl_explicit_progress": ["0", "-1", "1"],
+           "-tsl_explicit_records": ["0", "1"], "-tsl_explicit_safety": ["0", "-1", "1e9", "1e-9", "nan"], "-tsl_fallback_its": ["0", "1"],
+           "-tsl_fallback_max_dofs": ["0", "-1"], "-tsl_growth": ["0", "1", "-2", "1e9"], "-tsl_implicit_records": ["0", "1"],
+           "-tsl_linear_forcing": ["0", "-1", "1", "1e9"], "-tsl_output_sync": ["0", "-1", "1e9"], "-tsl_rtol": ["0", "-1", "1", "nan"],
+           "-tsl_contact_margin": ["0", "-1", "1e-12", "1e30"], "-tsl_contact_rebuild": ["0", "-1", "1"], "-tsl_partition": ["axis_x", "axis_y", "none", "xyz"],
+           "-ksp_type": ["cg", "preonly", "nonsense"], "-pc_type": ["none", "jacobi", "lu", "nonsense"], "-snes_max_it": ["0", "1"],
+           "-ksp_max_it": ["0", "1"], "-snes_type": ["ksponly", "nonsense"]}
+
+
+def mutate_options(rng):
+    """One to three command-line options with odd values."""
+    opts = []
+    for _ in range(rng.randrange(1, 4)):
+        k = rng.choice(sorted(OPTIONS))
+        opts += [k, rng.choice(OPTIONS[k])]
+    return opts
+
+
+def run(exe, deck, outdir, np, limit, opts=()):
     cmd = ["mpirun", "-n", str(np), exe, deck, "-o", os.path.join(outdir, "res")] if np > 1 else [exe, deck, "-o", os.path.join(outdir, "res")]
+    cmd += list(opts)
     t0 = time.time()
     try:
         p = subprocess.run(cmd, cwd=outdir, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=limit)
@@ -187,16 +220,23 @@ def main(argv):
         print(f"# {deck}: unmutated exit {rc} in {t:.1f} s; limit {limit:.0f} s", flush=True)
         stem = os.path.splitext(os.path.basename(deck))[0]
         for k in range(count):
-            mlines, what = mutate(lines, rng)
+            mlines, what, opts = lines, [], []
+            if rng.random() < float(args.get("options", 0.2)):
+                opts = mutate_options(rng)
+                what.append("options " + " ".join(opts))
+            for _ in range(rng.choice([0, 1, 1, 1, 2, 3]) if opts else rng.choice([1, 1, 1, 2, 3])):
+                mlines, w = mutate(mlines, rng)
+                what.append(w)
+            what = "; ".join(what)
             d = os.path.join(out, f"{stem}.{seed}.{k}")
             shutil.rmtree(d, ignore_errors=True)
             os.makedirs(d)
             name = "deck.inp"
             with open(os.path.join(d, name), "w", encoding="utf-8", errors="surrogateescape", newline="") as f:
                 f.writelines(mlines)
-            rc, log, t = run(exe, name, d, np, limit)
+            rc, log, t = run(exe, name, d, np, limit, opts)
             with open(os.path.join(d, "log.txt"), "w") as f:
-                f.write(f"# {what}\n# exit {rc} in {t:.2f} s\n" + log)
+                f.write(f"# {what}\n# options {' '.join(opts)}\n# exit {rc} in {t:.2f} s\n" + log)
             c = classify(rc, log, name)
             tally[c or ("ok" if rc == 0 else "refused")] = tally.get(c or ("ok" if rc == 0 else "refused"), 0) + 1
             if c:
