@@ -153,6 +153,7 @@ typedef struct {
   PetscInt  nvar;
   char      var[16][8]; /* U, NT, RF, RFL, S, E, HFL, ... (upper case) */
   PetscInt  frequency;  /* FREQUENCY= (default 1) */
+  PetscInt  totals;     /* *NODE PRINT / *EL PRINT, TOTALS=: 0 NO (default), 1 YES (the rows and their sum), 2 ONLY (the sum) */
   TslLoc    loc;
 } TslOutputRequest;
 

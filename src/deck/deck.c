@@ -684,6 +684,19 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
   (void)kw;
   PetscCall(ParamRequired(d, "TYPE", &tname));
   type = TslElementTypeFind(tname);
+  if (type < 0 && strlen(tname) < 30) {
+    /* CalculiX has no separate coupled types: its mechanical elements (C3D8, CPE4, ...) carry a temperature in
+     * a coupled temperature-displacement step. The coupled counterpart of the dialect's name + T is the same
+     * interpolation and integration with the temperature added, so such a deck is read with it, and told. */
+    char coupled[32];
+    PetscCall(PetscSNPrintf(coupled, sizeof(coupled), "%sT", tname));
+    type = TslElementTypeFind(coupled);
+    if (type >= 0)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            LOC_FMT "note: element type %s read as %s (the steps here are coupled temperature-displacement ones; CalculiX "
+                                    "gives its mechanical elements a temperature in such a step)\n",
+                            KLOC(d), tname, TslElementTypeGet(type)->name));
+  }
   USER_CHECK(type >= 0, LOC_FMT "unknown element type %s", KLOC(d), tname);
   et = TslElementTypeGet(type);
   nn = et->geom->nnode;
@@ -1325,11 +1338,36 @@ static PetscErrorCode KwSurfaceBehavior(Deck *d, const DeckKeyword *kw)
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(InteractionLaw(d, &b->given, &b->loc));
-  USER_CHECK(!po || !strcmp(po, "HARD"), LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=%s is not supported yet (only HARD)", KLOC(d), po);
+  USER_CHECK(!po || !strcmp(po, "HARD") || !strcmp(po, "LINEAR"),
+             LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=%s is not supported yet (HARD or LINEAR)", KLOC(d), po);
   USER_CHECK(!(penalty && auglag), LOC_FMT "*SURFACE BEHAVIOR: PENALTY and AUGMENTED LAGRANGE exclude each other", KLOC(d));
   USER_CHECK(!Param(d, "DIRECT"), LOC_FMT "*SURFACE BEHAVIOR, DIRECT is not supported (use PENALTY or AUGMENTED LAGRANGE)", KLOC(d));
   USER_CHECK(!Param(d, "NO SEPARATION"), LOC_FMT "*SURFACE BEHAVIOR, NO SEPARATION is not supported yet", KLOC(d));
   b->enforcement = auglag ? TSL_CONTACT_AUGMENTED_LAGRANGE : TSL_CONTACT_HARD_PENALTY;
+  if (po && !strcmp(po, "LINEAR")) {
+    /* p = K x overclosure, zero when open: the penalty law with the user's slope as its stiffness. The dialect's
+     * further fields are CalculiX's tension at large clearances (a small regularisation: an open gap carries no
+     * pressure here) and its face-to-face c0; read and ignored, with a warning. */
+    USER_CHECK(!penalty && !auglag,
+               LOC_FMT "*SURFACE BEHAVIOR: PENALTY and AUGMENTED LAGRANGE apply to HARD contact, not to PRESSURE-OVERCLOSURE=LINEAR", KLOC(d));
+    PetscCall(DataLine(d, 0, &got));
+    USER_CHECK(got, LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR needs a data line: the slope of the pressure-overclosure relation",
+               KLOC(d));
+    USER_CHECK(d->nfield <= 3, LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR data line: slope[, tension at large clearances, c0]", DLOC(d));
+    PetscCall(FieldReal(d, 0, "the slope of the pressure-overclosure relation", &b->penalty_stiffness));
+    USER_CHECK(b->penalty_stiffness > 0, LOC_FMT "the slope of the pressure-overclosure relation must be positive", DLOC(d));
+    for (PetscInt i = 1; i < d->nfield; i++) {
+      PetscReal v;
+      if (!d->field[i][0]) continue;
+      PetscCall(FieldReal(d, i, i == 1 ? "the tension at large clearances" : "c0", &v));
+      if (v != 0)
+        PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                              LOC_FMT "warning: *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR: field %" PetscInt_FMT " (%s) is ignored\n", DLOC(d),
+                              i + 1, i == 1 ? "CalculiX's tension at large clearances: an open gap carries no pressure" : "CalculiX's c0"));
+    }
+    PetscCall(NoMoreRows(d, "SURFACE BEHAVIOR", "a second data line"));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(DataLine(d, 0, &got)); /* optional: penalty stiffness, clearance at zero pressure, stiffness scale */
   if (!got) PetscFunctionReturn(PETSC_SUCCESS);
   USER_CHECK(d->nfield <= 3, LOC_FMT "*SURFACE BEHAVIOR data line: penalty stiffness[, clearance, scale factor]", DLOC(d));
@@ -1418,6 +1456,13 @@ static PetscErrorCode KwGapConductance(Deck *d, const DeckKeyword *kw)
     }
   }
   USER_CHECK(g->n > 0, LOC_FMT "*GAP CONDUCTANCE needs at least one data line", KLOC(d));
+  if (!g->by_pressure && g->n > 1)
+    /* the dialects part here: Abaqus reads the second column as clearance unless PRESSURE is given, CalculiX
+     * always as contact pressure. This code follows Abaqus; a CalculiX deck would silently change meaning. */
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          LOC_FMT "warning: *GAP CONDUCTANCE without PRESSURE: the second column is read as the clearance (Abaqus); CalculiX "
+                                  "reads it as the contact pressure, which needs the PRESSURE parameter here\n",
+                          KLOC(d)));
   PetscCall(SortTable(g->n, g->abscissa, g->value));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -1951,6 +1996,13 @@ static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw)
   r->loc       = d->kwloc;
   r->frequency = d->out_frequency;
   PetscCall(ParamInt(d, "FREQUENCY", &r->frequency));
+  if (r->print) {
+    char        buf[16];
+    const char *t = ParamUpper(d, "TOTALS", buf, sizeof(buf));
+    USER_CHECK(!t || !strcmp(t, "YES") || !strcmp(t, "NO") || !strcmp(t, "ONLY"), LOC_FMT "*%s, TOTALS=%s: expected YES, NO or ONLY", KLOC(d), d->kw,
+               t);
+    r->totals = !t || !strcmp(t, "NO") ? 0 : !strcmp(t, "YES") ? 1 : 2;
+  }
   if (set) PetscCall(CopyName(d, d->kwloc, r->set, set));
   for (;;) {
     PetscCall(DataLine(d, 0, &got));
@@ -2028,8 +2080,8 @@ static const DeckKeyword Keywords[] = {
     {"NODE FILE", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
     {"ELEMENT OUTPUT", AT_STEP, IN_NONE, "ELSET|FREQUENCY", KwOutputRequest, 0, NULL},
     {"EL FILE", AT_STEP, IN_NONE, "ELSET|FREQUENCY", KwOutputRequest, 0, NULL},
-    {"NODE PRINT", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE | OUT_PRINT, NULL},
-    {"EL PRINT", AT_STEP, IN_NONE, "ELSET|FREQUENCY", KwOutputRequest, OUT_PRINT, NULL},
+    {"NODE PRINT", AT_STEP, IN_NONE, "NSET|FREQUENCY|TOTALS", KwOutputRequest, OUT_NODE | OUT_PRINT, NULL},
+    {"EL PRINT", AT_STEP, IN_NONE, "ELSET|FREQUENCY|TOTALS", KwOutputRequest, OUT_PRINT, NULL},
     /* ignored (a warning names them); placed as the dialect places them, so a misplaced one still tells */
     {"PREPRINT", AT_MODEL, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"FILE FORMAT", AT_BOTH, IN_NONE, NULL, KwIgnored, 0, NULL},

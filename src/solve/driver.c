@@ -432,7 +432,8 @@ PetscErrorCode TslDriverWriteFrame(Driver *d, PetscInt step, PetscInt inc, Petsc
 }
 
 /* *NODE PRINT / *EL PRINT tables at the end of a step: one line per node (element) of the set, printed
- * by the rank that owns it. */
+ * by the rank that owns it; with TOTALS= their sum. */
+#define TSL_PRINT_MAX_COMPONENTS 16
 typedef struct {
   const TslModel         *m;
   const TslOutputRequest *req;
@@ -440,14 +441,17 @@ typedef struct {
   const char             *var;
   PetscInt                nc;
   const PetscReal        *vals;
+  PetscReal               sum[TSL_PRINT_MAX_COMPONENTS]; /* TOTALS=: this rank's part of the sum */
 } PrintCtx;
 
-/* This rank's lines of one variable of a printed table: its owned nodes / its elements of the set. */
+/* This rank's lines of one variable of a printed table (none with TOTALS=ONLY): its owned nodes / its
+ * elements of the set; their sum into c->sum. */
 static PetscErrorCode PrintRows(TslPrintSink sink, void *ctx)
 {
-  const PrintCtx *c = (const PrintCtx *)ctx;
+  PrintCtx *c = (PrintCtx *)ctx;
 
   PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < TSL_PRINT_MAX_COMPONENTS; k++) c->sum[k] = 0;
   for (PetscInt i = 0; c->set && i < c->set->n; i++) {
     PetscInt n;
     if (c->req->node) {
@@ -457,6 +461,8 @@ static PetscErrorCode PrintRows(TslPrintSink sink, void *ctx)
       n = TslModelElementIndex(c->m, c->set->ids[i]);
       if (n < 0) continue;
     }
+    for (PetscInt k = 0; k < PetscMin(c->nc, TSL_PRINT_MAX_COMPONENTS); k++) c->sum[k] += c->vals[n * c->nc + k];
+    if (!sink) continue;
     PetscCall(TslPrintLine(sink, "  %8" PetscInt_FMT " %-4s", c->set->ids[i], c->var));
     for (PetscInt k = 0; k < c->nc; k++) PetscCall(TslPrintLine(sink, " % .6e", (double)c->vals[n * c->nc + k]));
     PetscCall(TslPrintLine(sink, "\n"));
@@ -474,7 +480,7 @@ PetscErrorCode TslDriverPrintTables(Driver *d, const TslStep *step)
   for (PetscInt r = 0; r < step->nout; r++) {
     const TslOutputRequest *req = &step->out[r];
     PetscInt                k;
-    PrintCtx                c = {m, req, NULL, NULL, 0, NULL};
+    PrintCtx                c = {m, req, NULL, NULL, 0, NULL, {0}};
     if (!req->print) continue;
     k     = req->node ? TslModelFindNodeSet(m, req->set) : TslModelFindElementSet(m, req->set);
     c.set = k < 0 ? NULL : req->node ? &m->nsets[k] : &m->elsets[k];
@@ -491,7 +497,17 @@ PetscErrorCode TslDriverPrintTables(Driver *d, const TslStep *step)
       PetscCall(TslProblemField(d->prob, f, &c.nc, &vals));
       c.var  = req->var[v];
       c.vals = vals;
-      PetscCall(TslPrintOrdered(d->comm, PrintRows, &c));
+      if (req->totals == 2)
+        PetscCall(PrintRows(NULL, &c));
+      else
+        PetscCall(TslPrintOrdered(d->comm, PrintRows, &c));
+      if (req->totals) {
+        /* TOTALS=YES / ONLY: the sum over the set (each node once, from its owner) */
+        PetscCall(MPIU_Allreduce(MPI_IN_PLACE, c.sum, TSL_PRINT_MAX_COMPONENTS, MPIU_REAL, MPIU_SUM, d->comm));
+        PetscCall(PetscPrintf(d->comm, "  %8s %-4s", "total", c.var));
+        for (PetscInt k = 0; k < PetscMin(c.nc, TSL_PRINT_MAX_COMPONENTS); k++) PetscCall(PetscPrintf(d->comm, " % .6e", (double)c.sum[k]));
+        PetscCall(PetscPrintf(d->comm, "\n"));
+      }
       PetscCall(PetscFree(vals));
     }
   }

@@ -92,12 +92,14 @@ with open(path, "w") as f:
     else:
         w("*SURFACE BEHAVIOR, PENALTY\n %g\n" % (0.1 * E * nb))
     # conductance against the contact pressure: thermoslide's dialect says so with PRESSURE (without it the
-    # abscissa is the clearance); CalculiX's *GAP CONDUCTANCE is always by pressure and takes no such parameter.
+    # abscissa is the clearance, as in Abaqus); CalculiX's *GAP CONDUCTANCE is always by pressure and ignores the
+    # parameter with a warning, so both flavours carry it and the CalculiX deck runs unchanged in thermoslide
+    # (tests/contact/check_calculix_deck.sh: C3D8 read as C3D8T, the LINEAR slope as the penalty).
     # The conductance is 0 at zero pressure, so it is continuous where a node lifts off: the hot thin block
     # bows and its edge rows lift off, and with 1000 at zero pressure (as before) the heat flow of a node
     # jumped from 1000 A dT to 0 on opening; Newton then cycled between two states (thermoslide at N = 16:
     # residual 141 / 335 alternately, cutbacks down to the minimum increment; CalculiX likewise at N = 8).
-    w("*GAP CONDUCTANCE%s\n 0.0, 0.0\n 2000.0, 200.0\n" % ("" if flavour == "calculix" else ", PRESSURE"))
+    w("*GAP CONDUCTANCE, PRESSURE\n 0.0, 0.0\n 2000.0, 200.0\n")
     w("*CONTACT PAIR, INTERACTION=IFACE%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if flavour in ("calculix", "s2s") else ""))
     w("*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
     if increments:
