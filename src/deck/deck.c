@@ -1965,6 +1965,14 @@ static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
   *freq = 1;
   PetscCall(ParamInt(d, "FREQUENCY", freq));
   USER_CHECK(*freq >= 0, LOC_FMT "FREQUENCY must not be negative", KLOC(d));
+  {
+    /* Abaqus/CAE writes VARIABLE=PRESELECT: the default variables, which are what the outputs hold without a
+     * *NODE OUTPUT / *ELEMENT OUTPUT (docs/output.md); any other value is read and ignored, with a warning */
+    char        buf[16];
+    const char *v = ParamUpper(d, "VARIABLE", buf, sizeof(buf));
+    if (v && strcmp(v, "PRESELECT"))
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *OUTPUT, VARIABLE=%s is ignored (the default variables are written)\n", KLOC(d), v));
+  }
   if (Param(d, "NUMBER INTERVAL") || Param(d, "TIME INTERVAL")) { /* Abaqus/Explicit's output intervals */
     TslStep  *s = d->step >= 0 ? &d->m->steps[d->step] : NULL;
     PetscBool set;
@@ -2075,7 +2083,7 @@ static const DeckKeyword Keywords[] = {
     {"DSFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DFLUX, LineDsflux},
     {"FILM", AT_STEP, IN_NONE, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
     {"SFILM", AT_STEP, IN_NONE, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
-    {"OUTPUT", AT_BOTH, IN_NONE, "FIELD|HISTORY|FREQUENCY|NUMBER INTERVAL|TIME INTERVAL", KwOutput, 0, NULL},
+    {"OUTPUT", AT_BOTH, IN_NONE, "FIELD|HISTORY|FREQUENCY|NUMBER INTERVAL|TIME INTERVAL|VARIABLE", KwOutput, 0, NULL},
     {"NODE OUTPUT", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
     {"NODE FILE", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
     {"ELEMENT OUTPUT", AT_STEP, IN_NONE, "ELSET|FREQUENCY", KwOutputRequest, 0, NULL},
@@ -2154,6 +2162,12 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
   PetscFunctionBeginUser;
   for (size_t i = 0; i < sizeof(Keywords) / sizeof(Keywords[0]); i++)
     if (!strcmp(Keywords[i].name, d->kw)) kw = &Keywords[i];
+  /* Abaqus/CAE writes its decks with parts and instances unless told otherwise: say how to get a flat deck */
+  USER_CHECK(kw || (strcmp(d->kw, "PART") && strcmp(d->kw, "END PART") && strcmp(d->kw, "ASSEMBLY") && strcmp(d->kw, "END ASSEMBLY") &&
+                    strcmp(d->kw, "INSTANCE") && strcmp(d->kw, "END INSTANCE")),
+             LOC_FMT "*%s: parts, assemblies and instances are not supported yet; write the model flat (Abaqus/CAE: Model > Edit "
+                     "Attributes > \"Do not use parts and assemblies in input files\")",
+             KLOC(d), d->kw);
   USER_CHECK(kw, LOC_FMT "unsupported keyword *%s", KLOC(d), d->kw);
   PetscCall(CheckPlacement(d, kw));
   if (kw->block != IN_MATERIAL && kw->handler != KwIgnored) d->material = -1;

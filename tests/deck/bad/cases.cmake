@@ -118,3 +118,5 @@ tsl_deck_bad(linear_zero_slope linear_zero_slope.inp "error: linear_zero_slope.i
 tsl_deck_bad(linear_penalty linear_penalty.inp "error: linear_penalty.inp:25: *SURFACE BEHAVIOR: PENALTY and AUGMENTED LAGRANGE apply to HARD contact")
 tsl_deck_bad(overclosure_exponential overclosure_exponential.inp "error: overclosure_exponential.inp:25: *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL is not supported yet (HARD or LINEAR)")
 tsl_deck_bad(print_totals print_totals.inp "error: print_totals.inp:33: *NODE PRINT, TOTALS=MAYBE: expected YES, NO or ONLY")
+# an Abaqus/CAE deck with parts and instances: refused at *Part with how to write it flat
+tsl_deck_bad(abaqus_cae_part abaqus_cae_part.inp "error: abaqus_cae_part.inp:7: *PART: parts, assemblies and instances are not supported yet; write the model flat")
