@@ -69,7 +69,24 @@ typedef struct {
   /* *BOUNDARY in the model data: applies from the first step on (TslDeckRead hands it to that step) */
   PetscInt nmload;
   TslLoad *mload;
+
+  /* parts and instances (see "Parts and instances" below) */
+  struct DeckPart *parts;
+  PetscInt         npart;
+  PetscInt         part;     /* the open *PART, or -1 */
+  PetscInt         instance; /* the part of the open *INSTANCE, or -1 */
+  PetscBool        assembly; /* inside *ASSEMBLY ... *END ASSEMBLY */
 } Deck;
+
+/* A part (*PART ... *END PART), read straight into the model with its ids shifted past those defined before
+ * it and its set, surface and section names qualified by the part's name until its instance renames them. */
+typedef struct DeckPart {
+  char      name[TSL_NAME_LEN], instance[TSL_NAME_LEN];
+  PetscInt  node_off, elem_off; /* added to the part's own ids */
+  PetscInt  node_first, node_n; /* its nodes in the model's arrays */
+  PetscBool instanced;
+  TslLoc    loc;
+} DeckPart;
 
 #define LOC_FMT            TSL_LOC_FMT
 #define DLOC(d)            TSL_LOC_ARGS((d)->m, (d)->loc)
@@ -205,6 +222,36 @@ static PetscErrorCode CopyName(Deck *d, TslLoc loc, char dst[TSL_NAME_LEN], cons
   USER_CHECK(strlen(src) < TSL_NAME_LEN, LOC_FMT "name '%s' is longer than %d characters", TSL_LOC_ARGS(d->m, loc), src, TSL_NAME_LEN - 1);
   PetscCall(PetscStrncpy(dst, src, TSL_NAME_LEN));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* ---- parts and instances ----------------------------------------------------------------------
+ * Abaqus/CAE writes a model as parts (*PART: nodes, elements, sets, surfaces and sections, each part numbered
+ * from 1) placed by instances in an assembly (*INSTANCE, NAME=i, PART=p with an optional translation and
+ * rotation), and refers to a part's sets as "i.name" from the assembly and the steps. Read flat here: a part's
+ * ids are shifted past every id defined before it (the first part keeps its own), its names are qualified
+ * ("p.name" while the part is read, renamed "i.name" by its instance) and its instance moves its nodes. A part
+ * may be instanced once (twice would need its nodes copied: an error that says so). */
+
+/* name as the deck means it here: qualified by the open part, if any */
+static PetscErrorCode Scoped(Deck *d, TslLoc loc, const char *name, char out[TSL_NAME_LEN])
+{
+  PetscFunctionBeginUser;
+  if (d->part < 0)
+    PetscCall(CopyName(d, loc, out, name));
+  else {
+    char buf[2 * TSL_NAME_LEN + 2];
+    PetscCall(PetscSNPrintf(buf, sizeof(buf), "%s.%s", d->parts[d->part].name, name));
+    PetscCall(CopyName(d, loc, out, buf));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* the shift of node (element) ids read here: the open part's, or the part of an assembly set's INSTANCE= */
+static PetscInt IdShift(const Deck *d, PetscInt part, PetscBool node)
+{
+  if (part < 0) part = d->part;
+  if (part < 0) return 0;
+  return node ? d->parts[part].node_off : d->parts[part].elem_off;
 }
 
 /* ---- files and raw lines --------------------------------------------------------------------- */
@@ -645,9 +692,12 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
 
   PetscFunctionBeginUser;
   (void)kw;
+  USER_CHECK(!d->assembly, LOC_FMT "*NODE in an assembly (reference points) is not supported", KLOC(d));
   if (nset) {
+    char name[TSL_NAME_LEN];
     USER_CHECK(nset[0], LOC_FMT "NSET= needs a name", KLOC(d));
-    PetscCall(SetGet(d, &m->nsets, &m->nnset, nset, &iset));
+    PetscCall(Scoped(d, d->kwloc, nset, name));
+    PetscCall(SetGet(d, &m->nsets, &m->nnset, name, &iset));
   }
   for (;;) {
     PetscInt id;
@@ -655,6 +705,7 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
     if (!got) break;
     USER_CHECK(d->nfield >= 2 && d->nfield <= 4, LOC_FMT "*NODE data line needs: id, x[, y[, z]]", DLOC(d));
     PetscCall(FieldId(d, 0, "the node id", &id));
+    id += IdShift(d, -1, PETSC_TRUE);
     PetscCall(TslDeckGrow(&m->node_id, sizeof(PetscInt), m->nnode));
     PetscCall(TslDeckGrow(&m->node_xyz, 3 * sizeof(PetscReal), m->nnode));
     PetscCall(TslDeckGrow(&d->node_line, 2 * sizeof(PetscInt), m->nnode));
@@ -704,9 +755,12 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
   USER_CHECK(m->dim == et->dim,
              LOC_FMT "element type %s is %" PetscInt_FMT "D but the model already has %" PetscInt_FMT "D elements (mixing is not supported)", KLOC(d),
              et->name, et->dim, m->dim);
+  USER_CHECK(!d->assembly, LOC_FMT "*ELEMENT in an assembly is not supported: elements belong to parts", KLOC(d));
   if (elset) {
+    char name[TSL_NAME_LEN];
     USER_CHECK(elset[0], LOC_FMT "ELSET= needs a name", KLOC(d));
-    PetscCall(SetGet(d, &m->elsets, &m->nelset, elset, &iset));
+    PetscCall(Scoped(d, d->kwloc, elset, name));
+    PetscCall(SetGet(d, &m->elsets, &m->nelset, name, &iset));
   }
   for (;;) {
     PetscInt id, k;
@@ -715,6 +769,7 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     USER_CHECK(d->nfield == 1 + nn, LOC_FMT "element has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT, DLOC(d), d->nfield - 1, et->name,
                nn);
     PetscCall(FieldId(d, 0, "the element id", &id));
+    id += IdShift(d, -1, PETSC_FALSE);
     PetscCall(TslDeckGrow(&m->elem_id, sizeof(PetscInt), m->nelem));
     PetscCall(TslDeckGrow(&m->elem_type, sizeof(PetscInt), m->nelem));
     PetscCall(TslDeckGrow(&m->elem_line, 2 * sizeof(PetscInt), m->nelem));
@@ -723,6 +778,7 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     for (PetscInt j = 0; j < nn; j++) {
       PetscCall(TslDeckGrow(&m->elem_conn, sizeof(PetscInt), k));
       PetscCall(FieldId(d, 1 + j, "a node id", &m->elem_conn[k]));
+      m->elem_conn[k] += IdShift(d, -1, PETSC_TRUE);
       /* a node given twice collapses the element (a quad into a triangle...): its Jacobian is singular at
        * the collapsed corner, and no element type here has the special treatment that would need */
       for (PetscInt i = m->elem_ptr[m->nelem]; i < k; i++)
@@ -750,11 +806,21 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
   TslSet    **sets = node ? &m->nsets : &m->elsets;
   PetscInt   *nset = node ? &m->nnset : &m->nelset, iset;
   PetscBool   gen  = Param(d, "GENERATE") ? PETSC_TRUE : PETSC_FALSE;
-  const char *name, *kind = node ? "node" : "element";
+  const char *name, *kind = node ? "node" : "element", *inst = Param(d, "INSTANCE");
+  PetscInt    part = -1, shift;
+  char        scoped[TSL_NAME_LEN];
 
   PetscFunctionBeginUser;
   PetscCall(ParamRequired(d, node ? "NSET" : "ELSET", &name));
-  PetscCall(SetGet(d, sets, nset, name, &iset));
+  if (inst) { /* an assembly's set of one instance's ids (the part's own numbering) */
+    USER_CHECK(d->assembly && d->instance < 0, LOC_FMT "INSTANCE= belongs to a set in an *ASSEMBLY", KLOC(d));
+    for (PetscInt i = 0; i < d->npart && part < 0; i++)
+      if (d->parts[i].instanced && TslDeckNameEqual(d->parts[i].instance, inst)) part = i;
+    USER_CHECK(part >= 0, LOC_FMT "INSTANCE=%s: no such instance", KLOC(d), inst);
+  }
+  shift = IdShift(d, part, node);
+  PetscCall(Scoped(d, d->kwloc, name, scoped));
+  PetscCall(SetGet(d, sets, nset, scoped, &iset));
   for (;;) {
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
@@ -765,6 +831,7 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
       PetscCall(FieldId(d, 1, "the last id", &last));
       if (d->nfield > 2) PetscCall(FieldInt(d, 2, "the increment", &inc));
       USER_CHECK(inc > 0 && first <= last, LOC_FMT "GENERATE needs first <= last and a positive increment", DLOC(d));
+      first += shift, last += shift;
       /* ids must exist by the end of the read: a range wider than the ids defined so far (or than a
        * million before any exist) is a typo, and would otherwise exhaust the memory before saying so */
       {
@@ -784,10 +851,11 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
       if (!f[0]) continue;
       if (IsInteger(f)) {
         PetscCall(DeckId(d, f, "an id", &id));
-        PetscCall(SetAppend(&(*sets)[iset], id));
+        PetscCall(SetAppend(&(*sets)[iset], id + shift));
         continue;
       }
-      src = node ? TslModelFindNodeSet(m, f) : TslModelFindElementSet(m, f);
+      PetscCall(Scoped(d, d->loc, f, scoped));
+      src = node ? TslModelFindNodeSet(m, scoped) : TslModelFindElementSet(m, scoped);
       USER_CHECK(src >= 0, LOC_FMT "undefined %s set %s", DLOC(d), kind, f);
       for (PetscInt k = 0, n = (*sets)[src].n; k < n; k++) PetscCall(SetAppend(&(*sets)[iset], (*sets)[src].ids[k]));
     }
@@ -821,20 +889,21 @@ static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw)
 {
   TslModel   *m = d->m;
   const char *name, *type;
-  char        tbuf[32];
+  char        tbuf[32], scoped[TSL_NAME_LEN];
   TslSurface *s;
   PetscBool   got;
 
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(ParamRequired(d, "NAME", &name));
-  USER_CHECK(TslModelFindSurface(m, name) < 0, LOC_FMT "surface %s is defined twice", KLOC(d), name);
+  PetscCall(Scoped(d, d->kwloc, name, scoped));
+  USER_CHECK(TslModelFindSurface(m, scoped) < 0, LOC_FMT "surface %s is defined twice", KLOC(d), name);
   type = ParamUpper(d, "TYPE", tbuf, sizeof(tbuf));
   USER_CHECK(!type || !strcmp(type, "ELEMENT") || !strcmp(type, "NODE"), LOC_FMT "*SURFACE, TYPE=%s is not supported (ELEMENT or NODE)", KLOC(d),
              type);
   PetscCall(TslDeckGrow(&m->surfaces, sizeof(TslSurface), m->nsurface));
   s = &m->surfaces[m->nsurface++];
-  PetscCall(CopyName(d, d->kwloc, s->name, name));
+  PetscCall(CopyName(d, d->kwloc, s->name, scoped));
   s->kind = (type && !strcmp(type, "NODE")) ? TSL_SURFACE_NODE : TSL_SURFACE_ELEMENT;
   s->loc  = d->kwloc;
   for (;;) {
@@ -854,9 +923,11 @@ static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw)
     }
     if (IsInteger(t)) {
       PetscCall(DeckId(d, t, "an id", &id));
-      PetscCall(SurfaceAppend(s, id, face));
+      PetscCall(SurfaceAppend(s, id + IdShift(d, -1, s->kind == TSL_SURFACE_NODE), face));
     } else {
-      PetscInt src = s->kind == TSL_SURFACE_ELEMENT ? TslModelFindElementSet(m, t) : TslModelFindNodeSet(m, t);
+      PetscInt src;
+      PetscCall(Scoped(d, d->loc, t, scoped));
+      src = s->kind == TSL_SURFACE_ELEMENT ? TslModelFindElementSet(m, scoped) : TslModelFindNodeSet(m, scoped);
       USER_CHECK(src >= 0, LOC_FMT "undefined %s set %s", DLOC(d), s->kind == TSL_SURFACE_ELEMENT ? "element" : "node", t);
       const TslSet *set = s->kind == TSL_SURFACE_ELEMENT ? &m->elsets[src] : &m->nsets[src];
       for (PetscInt k = 0; k < set->n; k++) PetscCall(SurfaceAppend(s, set->ids[k], face));
@@ -989,7 +1060,7 @@ static PetscErrorCode NewSection(Deck *d, TslSection **sp)
   PetscCall(TslDeckGrow(&m->sections, sizeof(TslSection), m->nsection));
   s = &m->sections[m->nsection++];
   PetscCall(PetscMemzero(s, sizeof(*s)));
-  PetscCall(CopyName(d, d->kwloc, s->elset, elset));
+  PetscCall(Scoped(d, d->kwloc, elset, s->elset));
   PetscCall(CopyName(d, d->kwloc, s->material, mat));
   s->material_index  = -1;
   s->thickness       = 1.0;
@@ -1011,10 +1082,11 @@ static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
     const char *ref = Param(d, "REF NODE");
     if (ref) {
       USER_CHECK(ref[0], LOC_FMT "REF NODE= needs a node or a node set", KLOC(d));
-      if (IsInteger(ref))
+      if (IsInteger(ref)) {
         PetscCall(DeckId(d, ref, "the reference node", &s->ref_node.id));
-      else
-        PetscCall(CopyName(d, d->kwloc, s->ref_node.set, ref));
+        s->ref_node.id += IdShift(d, -1, PETSC_TRUE);
+      } else
+        PetscCall(Scoped(d, d->kwloc, ref, s->ref_node.set));
     }
   }
   PetscCall(DataLine(d, 0, &got));
@@ -1075,12 +1147,39 @@ static PetscErrorCode KwShellSection(Deck *d, const DeckKeyword *kw)
 
 /* ---- other model data ------------------------------------------------------------------------ */
 
-static PetscErrorCode ParseTarget(Deck *d, const char *f, TslTarget *t)
+/* An instance's own label "i.n" of a node (element): *id its id here and PETSC_TRUE; PETSC_FALSE if f is not
+ * one (a set name may contain dots: "i.name"). */
+static PetscErrorCode InstanceLabel(Deck *d, const char *f, PetscBool node, PetscInt *id, PetscBool *is)
 {
+  const char *dot = strrchr(f, '.');
+  char        inst[TSL_NAME_LEN];
+
+  PetscFunctionBeginUser;
+  *is = PETSC_FALSE;
+  if (!d->npart || !dot || dot == f || (size_t)(dot - f) >= sizeof(inst) || !IsInteger(dot + 1)) PetscFunctionReturn(PETSC_SUCCESS);
+  memcpy(inst, f, (size_t)(dot - f));
+  inst[dot - f] = 0;
+  for (PetscInt i = 0; i < d->npart; i++)
+    if (d->parts[i].instanced && TslDeckNameEqual(d->parts[i].instance, inst)) {
+      PetscCall(DeckId(d, dot + 1, node ? "a node label" : "an element label", id));
+      *id += IdShift(d, i, node);
+      *is = PETSC_TRUE;
+      break;
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A node (node = PETSC_TRUE) or element target: an id, an instance's label "i.n", or a set name. */
+static PetscErrorCode ParseTarget(Deck *d, const char *f, PetscBool node, TslTarget *t)
+{
+  PetscBool label;
+
   PetscFunctionBeginUser;
   USER_CHECK(f[0], LOC_FMT "missing node/element or set name", DLOC(d));
   t->set[0] = 0;
   t->id     = -1;
+  PetscCall(InstanceLabel(d, f, node, &t->id, &label));
+  if (label) PetscFunctionReturn(PETSC_SUCCESS);
   if (IsInteger(f))
     PetscCall(DeckId(d, f, "an id", &t->id));
   else
@@ -1098,7 +1197,7 @@ static PetscErrorCode InitialTemperatureLine(Deck *d)
   USER_CHECK(d->nfield == 2, LOC_FMT "*INITIAL CONDITIONS data line needs: node or node set, temperature", DLOC(d));
   PetscCall(TslDeckGrow(&m->init, sizeof(*it), m->ninit));
   it = &m->init[m->ninit++];
-  PetscCall(ParseTarget(d, d->field[0], &it->target));
+  PetscCall(ParseTarget(d, d->field[0], PETSC_TRUE, &it->target));
   PetscCall(FieldReal(d, 1, "the temperature", &it->value));
   it->loc = d->loc;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -1116,7 +1215,7 @@ static PetscErrorCode InitialVelocityLine(Deck *d)
   USER_CHECK(d->nfield == 3, LOC_FMT "*INITIAL CONDITIONS, TYPE=VELOCITY data line needs: node or node set, dof (1..3), velocity", DLOC(d));
   PetscCall(TslDeckGrow(&m->vinit, sizeof(*iv), m->nvinit));
   iv = &m->vinit[m->nvinit++];
-  PetscCall(ParseTarget(d, d->field[0], &iv->target));
+  PetscCall(ParseTarget(d, d->field[0], PETSC_TRUE, &iv->target));
   PetscCall(FieldInt(d, 1, "the degree of freedom", &iv->dof));
   USER_CHECK(iv->dof >= 1 && iv->dof <= 3, LOC_FMT "an initial velocity needs a displacement degree of freedom 1..3 (got %" PetscInt_FMT ")", DLOC(d),
              iv->dof);
@@ -1246,13 +1345,19 @@ static PetscErrorCode KwEquation(Deck *d, const DeckKeyword *kw)
       USER_CHECK(d->nfield % 3 == 0 && e->n + d->nfield / 3 <= n,
                  LOC_FMT "*EQUATION terms are (node, dof, coefficient) triples, %" PetscInt_FMT " in all", DLOC(d), n);
       for (PetscInt i = 0; i < d->nfield; i += 3) {
-        PetscInt k = e->n;
-        USER_CHECK(IsInteger(d->field[i]), LOC_FMT "*EQUATION with a node set (%s) is not supported yet; give node ids", DLOC(d), d->field[i]);
+        PetscInt  k = e->n, label_id;
+        PetscBool label;
+        PetscCall(InstanceLabel(d, d->field[i], PETSC_TRUE, &label_id, &label));
+        USER_CHECK(label || IsInteger(d->field[i]), LOC_FMT "*EQUATION with a node set (%s) is not supported yet; give node ids", DLOC(d),
+                   d->field[i]);
         PetscCall(TslDeckGrow(&e->node, sizeof(PetscInt), k));
         PetscCall(TslDeckGrow(&e->dof, sizeof(PetscInt), k));
         PetscCall(TslDeckGrow(&e->coef, sizeof(PetscReal), k));
         e->n++;
-        PetscCall(FieldId(d, i, "a node id", &e->node[k]));
+        if (label)
+          e->node[k] = label_id;
+        else
+          PetscCall(FieldId(d, i, "a node id", &e->node[k]));
         PetscCall(FieldInt(d, i + 1, "a degree of freedom", &e->dof[k]));
         USER_CHECK(ValidDof(d, e->dof[k]), LOC_FMT "bad degree of freedom %" PetscInt_FMT " (valid: 1..%" PetscInt_FMT ", 11)", DLOC(d), e->dof[k],
                    m->dim ? m->dim : 3);
@@ -1929,7 +2034,7 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
     l.fixed          = Param(d, "FIXED") ? PETSC_TRUE : PETSC_FALSE;
     l.loc            = d->loc;
     USER_CHECK(d->nfield >= 2, LOC_FMT "*%s data line is too short", DLOC(d), d->kw);
-    PetscCall(ParseTarget(d, d->field[0], &l.target));
+    PetscCall(ParseTarget(d, d->field[0], kw->kind <= TSL_LOAD_CFLUX ? PETSC_TRUE : PETSC_FALSE, &l.target));
     PetscCall(kw->line(d, &l));
     USER_CHECK(!model || l.value == 0,
                LOC_FMT "*%s in the model data holds dofs at zero; a nonzero value (%g) needs a step: give this line inside *STEP ... *END STEP",
@@ -2038,14 +2143,167 @@ static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *PART, NAME=p: the ids after it are shifted past every id defined so far (see "Parts and instances"). */
+static PetscErrorCode KwPart(Deck *d, const DeckKeyword *kw)
+{
+  TslModel   *m = d->m;
+  const char *name;
+  DeckPart   *p;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(d->part < 0 && !d->assembly, LOC_FMT "*PART inside %s", KLOC(d), d->part >= 0 ? "another *PART (missing *END PART?)" : "the *ASSEMBLY");
+  PetscCall(ParamRequired(d, "NAME", &name));
+  for (PetscInt i = 0; i < d->npart; i++) USER_CHECK(!TslDeckNameEqual(d->parts[i].name, name), LOC_FMT "part %s is defined twice", KLOC(d), name);
+  PetscCall(TslDeckGrow(&d->parts, sizeof(DeckPart), d->npart));
+  p = &d->parts[d->npart];
+  PetscCall(PetscMemzero(p, sizeof(*p)));
+  PetscCall(CopyName(d, d->kwloc, p->name, name));
+  for (PetscInt i = 0; i < m->nnode; i++) p->node_off = PetscMax(p->node_off, m->node_id[i]);
+  for (PetscInt i = 0; i < m->nelem; i++) p->elem_off = PetscMax(p->elem_off, m->elem_id[i]);
+  p->node_first = m->nnode;
+  p->loc        = d->kwloc;
+  d->part       = d->npart++;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwEndPart(Deck *d, const DeckKeyword *kw)
+{
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(d->part >= 0, LOC_FMT "*END PART without *PART", KLOC(d));
+  d->parts[d->part].node_n = d->m->nnode - d->parts[d->part].node_first;
+  d->part                  = -1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwAssembly(Deck *d, const DeckKeyword *kw)
+{
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(d->part < 0, LOC_FMT "*ASSEMBLY inside a *PART (missing *END PART?)", KLOC(d));
+  USER_CHECK(!d->assembly, LOC_FMT "a second *ASSEMBLY (missing *END ASSEMBLY?)", KLOC(d));
+  d->assembly = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwEndAssembly(Deck *d, const DeckKeyword *kw)
+{
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(d->assembly && d->instance < 0, LOC_FMT "*END ASSEMBLY %s", KLOC(d),
+             d->assembly ? "inside an *INSTANCE (missing *END INSTANCE?)" : "without *ASSEMBLY");
+  d->assembly = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Renames a part's qualified name "p.x" to its instance's "i.x". */
+static PetscErrorCode Requalify(Deck *d, const DeckPart *p, char name[TSL_NAME_LEN])
+{
+  size_t n = strlen(p->name);
+  char   buf[2 * TSL_NAME_LEN + 2];
+
+  PetscFunctionBeginUser;
+  if (strlen(name) <= n || name[n] != '.' || strncmp(name, p->name, n)) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(buf, sizeof(buf), "%s.%s", p->instance, name + n + 1));
+  PetscCall(CopyName(d, d->kwloc, name, buf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *INSTANCE, NAME=i, PART=p: the part's names become "i.x"; the optional data lines move its nodes: a
+ * translation, then a rotation by an angle (degrees) about the axis through points a and b. */
+static PetscErrorCode KwInstance(Deck *d, const DeckKeyword *kw)
+{
+  TslModel   *m = d->m;
+  const char *name, *part;
+  DeckPart   *p    = NULL;
+  PetscReal   t[3] = {0, 0, 0}, R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, a[3] = {0, 0, 0};
+  PetscBool   got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(d->assembly && d->instance < 0, LOC_FMT "*INSTANCE %s", KLOC(d),
+             d->assembly ? "inside another *INSTANCE (missing *END INSTANCE?)" : "outside an *ASSEMBLY");
+  PetscCall(ParamRequired(d, "NAME", &name));
+  USER_CHECK(Param(d, "PART"), LOC_FMT "*INSTANCE needs PART= (an instance of a model given inline, or of another model, is not supported)", KLOC(d));
+  PetscCall(ParamRequired(d, "PART", &part));
+  for (PetscInt i = 0; i < d->npart; i++) {
+    USER_CHECK(!d->parts[i].instanced || !TslDeckNameEqual(d->parts[i].instance, name), LOC_FMT "instance %s is defined twice", KLOC(d), name);
+    if (TslDeckNameEqual(d->parts[i].name, part)) p = &d->parts[i];
+  }
+  USER_CHECK(p, LOC_FMT "*INSTANCE, PART=%s: no such part", KLOC(d), part);
+  USER_CHECK(!p->instanced,
+             LOC_FMT "part %s is instanced a second time (as %s after %s): a part may be instanced once here; give each instance its own part",
+             KLOC(d), part, name, p->instance);
+  p->instanced = PETSC_TRUE;
+  PetscCall(CopyName(d, d->kwloc, p->instance, name));
+  for (PetscInt i = 0; i < m->nnset; i++) PetscCall(Requalify(d, p, m->nsets[i].name));
+  for (PetscInt i = 0; i < m->nelset; i++) PetscCall(Requalify(d, p, m->elsets[i].name));
+  for (PetscInt i = 0; i < m->nsurface; i++) PetscCall(Requalify(d, p, m->surfaces[i].name));
+  for (PetscInt i = 0; i < m->nsection; i++) {
+    PetscCall(Requalify(d, p, m->sections[i].elset));
+    PetscCall(Requalify(d, p, m->sections[i].ref_node.set));
+  }
+  for (PetscInt line = 0; line < 2; line++) {
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    if (line == 0) {
+      USER_CHECK(d->nfield <= 3, LOC_FMT "*INSTANCE translation line needs: x, y[, z]", DLOC(d));
+      for (PetscInt c = 0; c < 3; c++) PetscCall(FieldRealDefault(d, c, "a translation", 0.0, &t[c]));
+    } else {
+      PetscReal b[3], u[3], len = 0, ang, cs, sn;
+      USER_CHECK(d->nfield == 7, LOC_FMT "*INSTANCE rotation line needs: a1, a2, a3, b1, b2, b3, angle (degrees)", DLOC(d));
+      for (PetscInt c = 0; c < 3; c++) {
+        PetscCall(FieldReal(d, c, "a point of the axis", &a[c]));
+        PetscCall(FieldReal(d, 3 + c, "a point of the axis", &b[c]));
+        u[c] = b[c] - a[c], len += u[c] * u[c];
+      }
+      PetscCall(FieldReal(d, 6, "the angle", &ang));
+      USER_CHECK(len > 0, LOC_FMT "*INSTANCE rotation: the axis needs two distinct points", DLOC(d));
+      len = PetscSqrtReal(len);
+      for (PetscInt c = 0; c < 3; c++) u[c] /= len;
+      USER_CHECK(m->dim != 2 || ang == 0 || (PetscAbsReal(u[0]) < 1e-12 && PetscAbsReal(u[1]) < 1e-12),
+                 LOC_FMT "*INSTANCE rotation of a 2D part must be about an axis along z", DLOC(d));
+      ang *= PETSC_PI / 180, cs = PetscCosReal(ang), sn = PetscSinReal(ang);
+      for (PetscInt i = 0; i < 3; i++) /* Rodrigues: R = cos I + sin [u]x + (1 - cos) u u^T */
+        for (PetscInt j = 0; j < 3; j++) {
+          const PetscReal cross[3][3] = {{0, -u[2], u[1]}, {u[2], 0, -u[0]}, {-u[1], u[0], 0}};
+          R[i][j]                     = (i == j ? cs : 0) + sn * cross[i][j] + (1 - cs) * u[i] * u[j];
+        }
+    }
+  }
+  for (PetscInt k = p->node_first; k < p->node_first + p->node_n; k++) {
+    PetscReal *x = &m->node_xyz[3 * k], y[3];
+    for (PetscInt c = 0; c < 3; c++) y[c] = x[c] + t[c] - a[c];
+    for (PetscInt c = 0; c < 3; c++) x[c] = a[c] + R[c][0] * y[0] + R[c][1] * y[1] + R[c][2] * y[2];
+  }
+  d->instance = (PetscInt)(p - d->parts);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwEndInstance(Deck *d, const DeckKeyword *kw)
+{
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(d->instance >= 0, LOC_FMT "*END INSTANCE without *INSTANCE", KLOC(d));
+  d->instance = -1;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 #define LOAD_PARAMS "OP|AMPLITUDE"
 static const DeckKeyword Keywords[] = {
     {"HEADING", AT_MODEL, IN_NONE, "", KwHeading, 0, NULL},
     {"NODE", AT_MODEL, IN_NONE, "NSET", KwNode, 0, NULL},
     {"ELEMENT", AT_MODEL, IN_NONE, "TYPE|ELSET", KwElement, 0, NULL},
-    {"NSET", AT_MODEL, IN_NONE, "NSET|GENERATE", KwSet, 0, NULL},
-    {"ELSET", AT_MODEL, IN_NONE, "ELSET|GENERATE", KwSet, 1, NULL},
-    {"SURFACE", AT_MODEL, IN_NONE, "NAME|TYPE", KwSurface, 0, NULL},
+    {"NSET", AT_MODEL, IN_NONE, "NSET|GENERATE|INSTANCE|INTERNAL", KwSet, 0, NULL},
+    {"ELSET", AT_MODEL, IN_NONE, "ELSET|GENERATE|INSTANCE|INTERNAL", KwSet, 1, NULL},
+    {"SURFACE", AT_MODEL, IN_NONE, "NAME|TYPE|INTERNAL", KwSurface, 0, NULL},
+    {"PART", AT_MODEL, IN_NONE, "NAME", KwPart, 0, NULL},
+    {"END PART", AT_MODEL, IN_NONE, "", KwEndPart, 0, NULL},
+    {"ASSEMBLY", AT_MODEL, IN_NONE, "NAME", KwAssembly, 0, NULL},
+    {"END ASSEMBLY", AT_MODEL, IN_NONE, "", KwEndAssembly, 0, NULL},
+    {"INSTANCE", AT_MODEL, IN_NONE, "NAME|PART", KwInstance, 0, NULL},
+    {"END INSTANCE", AT_MODEL, IN_NONE, "", KwEndInstance, 0, NULL},
     {"MATERIAL", AT_MODEL, IN_NONE, "NAME", KwMaterial, 0, NULL},
     {"ELASTIC", AT_MODEL, IN_MATERIAL, "TYPE", KwProperty, TSL_PROP_ELASTIC, NULL},
     {"CONDUCTIVITY", AT_MODEL, IN_MATERIAL, "TYPE", KwProperty, TSL_PROP_CONDUCTIVITY, NULL},
@@ -2162,14 +2420,21 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
   PetscFunctionBeginUser;
   for (size_t i = 0; i < sizeof(Keywords) / sizeof(Keywords[0]); i++)
     if (!strcmp(Keywords[i].name, d->kw)) kw = &Keywords[i];
-  /* Abaqus/CAE writes its decks with parts and instances unless told otherwise: say how to get a flat deck */
-  USER_CHECK(kw || (strcmp(d->kw, "PART") && strcmp(d->kw, "END PART") && strcmp(d->kw, "ASSEMBLY") && strcmp(d->kw, "END ASSEMBLY") &&
-                    strcmp(d->kw, "INSTANCE") && strcmp(d->kw, "END INSTANCE")),
-             LOC_FMT "*%s: parts, assemblies and instances are not supported yet; write the model flat (Abaqus/CAE: Model > Edit "
-                     "Attributes > \"Do not use parts and assemblies in input files\")",
-             KLOC(d), d->kw);
   USER_CHECK(kw, LOC_FMT "unsupported keyword *%s", KLOC(d), d->kw);
   PetscCall(CheckPlacement(d, kw));
+  /* what a part, an assembly and an instance may hold here (comments aside) */
+  if (d->part >= 0 && kw->handler != KwIgnored)
+    USER_CHECK(kw->handler == KwNode || kw->handler == KwElement || kw->handler == KwSet || kw->handler == KwSurface ||
+                   kw->handler == KwSolidSection || kw->handler == KwShellSection || kw->handler == KwEndPart,
+               LOC_FMT "*%s inside *PART %s: a part holds nodes, elements, sets, surfaces and sections here (missing *END PART?)", KLOC(d), d->kw,
+               d->parts[d->part].name);
+  if (d->instance >= 0)
+    USER_CHECK(kw->handler == KwEndInstance, LOC_FMT "*%s inside *INSTANCE %s: an instance holds its placement only here (missing *END INSTANCE?)",
+               KLOC(d), d->kw, d->parts[d->instance].instance);
+  else if (d->assembly && kw->handler != KwIgnored)
+    USER_CHECK(kw->handler == KwInstance || kw->handler == KwSet || kw->handler == KwSurface || kw->handler == KwEndAssembly ||
+                   kw->handler == KwNode || kw->handler == KwElement,
+               LOC_FMT "*%s inside the *ASSEMBLY: an assembly holds instances, sets and surfaces here (missing *END ASSEMBLY?)", KLOC(d), d->kw);
   if (kw->block != IN_MATERIAL && kw->handler != KwIgnored) d->material = -1;
   if (kw->block != IN_INTERACTION && kw->handler != KwIgnored) d->interaction = -1;
   USER_CHECK(kw->block != IN_MATERIAL || d->material >= 0, LOC_FMT "*%s must follow *MATERIAL (material properties outside a material)", KLOC(d),
@@ -2203,6 +2468,12 @@ static PetscErrorCode DeckParse(Deck *d, const char *path)
     d->nkeyword++;
   }
   USER_CHECK(d->nkeyword > 0, "%s:0: the deck is empty (no keyword lines)", path);
+  if (d->part >= 0) USER_ERR(LOC_FMT "missing *END PART: the deck ends inside this part", TSL_LOC_ARGS(d->m, d->parts[d->part].loc));
+  USER_CHECK(!d->assembly, "%s: missing *END ASSEMBLY: the deck ends inside the assembly", path);
+  for (PetscInt i = 0; i < d->npart; i++) /* an uninstanced part is not in the model, but its nodes were read into it */
+    if (!d->parts[i].instanced)
+      USER_ERR(LOC_FMT "part %s is never instanced (an *INSTANCE, PART=%s in the *ASSEMBLY places it)", TSL_LOC_ARGS(d->m, d->parts[i].loc),
+               d->parts[i].name, d->parts[i].name);
   if (d->step >= 0) {
     TslLoc l = d->m->steps[d->step].loc;
     USER_ERR(LOC_FMT "missing *END STEP: the deck ends inside this step", TSL_LOC_ARGS(d->m, l));
@@ -2269,6 +2540,7 @@ static PetscErrorCode DeckFree(Deck *d)
   PetscCall(PetscFree(d->field));
   PetscCall(PetscFree(d->node_line));
   PetscCall(PetscFree(d->mload));
+  PetscCall(PetscFree(d->parts));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2284,6 +2556,8 @@ PetscErrorCode TslDeckRead(const char *path, TslModel **model)
   d.material            = -1;
   d.interaction         = -1;
   d.out_frequency_model = 1;
+  d.part                = -1;
+  d.instance            = -1;
   PetscCall(TslModelCreate(&d.m));
   /* On a user error the partial model and the reader's buffers are freed before the error goes up. */
   ierr = DeckParse(&d, path);

@@ -118,5 +118,10 @@ tsl_deck_bad(linear_zero_slope linear_zero_slope.inp "error: linear_zero_slope.i
 tsl_deck_bad(linear_penalty linear_penalty.inp "error: linear_penalty.inp:25: *SURFACE BEHAVIOR: PENALTY and AUGMENTED LAGRANGE apply to HARD contact")
 tsl_deck_bad(overclosure_exponential overclosure_exponential.inp "error: overclosure_exponential.inp:25: *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL is not supported yet (HARD or LINEAR)")
 tsl_deck_bad(print_totals print_totals.inp "error: print_totals.inp:33: *NODE PRINT, TOTALS=MAYBE: expected YES, NO or ONLY")
-# an Abaqus/CAE deck with parts and instances: refused at *Part with how to write it flat
-tsl_deck_bad(abaqus_cae_part abaqus_cae_part.inp "error: abaqus_cae_part.inp:7: *PART: parts, assemblies and instances are not supported yet; write the model flat")
+# parts and instances (Abaqus/CAE's form; variants of data/abaqus_cae_part.inp)
+tsl_deck_bad(part_twice part_twice.inp "error: part_twice.inp:30: part BAR is instanced a second time (as BAR-2 after BAR-1)")
+tsl_deck_bad(part_not_instanced part_not_instanced.inp "error: part_not_instanced.inp:7: part BAR is never instanced")
+tsl_deck_bad(part_material part_material.inp "error: part_material.inp:20: *MATERIAL inside *PART BAR: a part holds nodes, elements, sets, surfaces and sections here")
+tsl_deck_bad(part_unknown_instance part_unknown_instance.inp "error: part_unknown_instance.inp:31: INSTANCE=BAR-9: no such instance")
+tsl_deck_bad(part_unclosed part_unclosed.inp "error: part_unclosed.inp:25: *ASSEMBLY inside *PART BAR")
+tsl_deck_bad(part_instance_outside part_instance_outside.inp "error: part_instance_outside.inp:26: *INSTANCE outside an *ASSEMBLY")
