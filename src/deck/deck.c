@@ -71,22 +71,35 @@ typedef struct {
   TslLoad *mload;
 
   /* parts and instances (see "Parts and instances" below) */
-  struct DeckPart *parts;
-  PetscInt         npart;
-  PetscInt         part;     /* the open *PART, or -1 */
-  PetscInt         instance; /* the part of the open *INSTANCE, or -1 */
-  PetscBool        assembly; /* inside *ASSEMBLY ... *END ASSEMBLY */
+  struct DeckPart     *parts;
+  PetscInt             npart;
+  struct DeckInstance *inst;
+  PetscInt             ninst;
+  PetscInt             part;     /* the open *PART, or -1 */
+  PetscInt             instance; /* the open *INSTANCE, or -1 */
+  PetscBool            assembly; /* inside *ASSEMBLY ... *END ASSEMBLY */
 } Deck;
 
 /* A part (*PART ... *END PART), read straight into the model with its ids shifted past those defined before
- * it and its set, surface and section names qualified by the part's name until its instance renames them. */
+ * it and its set, surface and section names qualified by the part's name until its first instance renames
+ * them; a further instance copies what the first one holds. */
 typedef struct DeckPart {
-  char      name[TSL_NAME_LEN], instance[TSL_NAME_LEN];
-  PetscInt  node_off, elem_off; /* added to the part's own ids */
-  PetscInt  node_first, node_n; /* its nodes in the model's arrays */
-  PetscBool instanced;
-  TslLoc    loc;
+  char       name[TSL_NAME_LEN];
+  PetscInt   node_off, elem_off; /* added to the part's own ids */
+  PetscInt   node_first, node_n; /* its nodes in the model's arrays */
+  PetscInt   elem_first, elem_n; /* its elements */
+  PetscInt   nsets[3];           /* node sets, element sets and surfaces in the model before the part */
+  PetscInt   nsection;           /* sections in the model before the part */
+  PetscReal *xyz;                /* its nodes' coordinates as the part gives them (3 per node) */
+  PetscInt   first;              /* its first instance, or -1 */
+  TslLoc     loc;
 } DeckPart;
+
+/* An instance: the part placed, its ids (offsets) and names ("name.x"). */
+typedef struct DeckInstance {
+  char     name[TSL_NAME_LEN];
+  PetscInt part, node_off, elem_off;
+} DeckInstance;
 
 #define LOC_FMT            TSL_LOC_FMT
 #define DLOC(d)            TSL_LOC_ARGS((d)->m, (d)->loc)
@@ -229,8 +242,9 @@ static PetscErrorCode CopyName(Deck *d, TslLoc loc, char dst[TSL_NAME_LEN], cons
  * from 1) placed by instances in an assembly (*INSTANCE, NAME=i, PART=p with an optional translation and
  * rotation), and refers to a part's sets as "i.name" from the assembly and the steps. Read flat here: a part's
  * ids are shifted past every id defined before it (the first part keeps its own), its names are qualified
- * ("p.name" while the part is read, renamed "i.name" by its instance) and its instance moves its nodes. A part
- * may be instanced once (twice would need its nodes copied: an error that says so). */
+ * ("p.name" while the part is read, renamed "i.name" by its first instance) and its instance moves its
+ * nodes; a further instance of the part copies its nodes, elements, sets, surfaces and sections with ids
+ * shifted past every id defined before it and names qualified by that instance. */
 
 /* name as the deck means it here: qualified by the open part, if any */
 static PetscErrorCode Scoped(Deck *d, TslLoc loc, const char *name, char out[TSL_NAME_LEN])
@@ -246,12 +260,21 @@ static PetscErrorCode Scoped(Deck *d, TslLoc loc, const char *name, char out[TSL
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* the shift of node (element) ids read here: the open part's, or the part of an assembly set's INSTANCE= */
-static PetscInt IdShift(const Deck *d, PetscInt part, PetscBool node)
+/* the shift of node (element) ids read here: instance inst's (an assembly set's INSTANCE=, a label "i.n"),
+ * else the open part's */
+static PetscInt IdShift(const Deck *d, PetscInt inst, PetscBool node)
 {
-  if (part < 0) part = d->part;
-  if (part < 0) return 0;
-  return node ? d->parts[part].node_off : d->parts[part].elem_off;
+  if (inst >= 0) return node ? d->inst[inst].node_off : d->inst[inst].elem_off;
+  if (d->part < 0) return 0;
+  return node ? d->parts[d->part].node_off : d->parts[d->part].elem_off;
+}
+
+/* the instance called name, or -1 */
+static PetscInt InstanceFind(const Deck *d, const char *name)
+{
+  for (PetscInt i = 0; i < d->ninst; i++)
+    if (TslDeckNameEqual(d->inst[i].name, name)) return i;
+  return -1;
 }
 
 /* ---- files and raw lines --------------------------------------------------------------------- */
@@ -807,18 +830,17 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
   PetscInt   *nset = node ? &m->nnset : &m->nelset, iset;
   PetscBool   gen  = Param(d, "GENERATE") ? PETSC_TRUE : PETSC_FALSE;
   const char *name, *kind = node ? "node" : "element", *inst = Param(d, "INSTANCE");
-  PetscInt    part = -1, shift;
+  PetscInt    instance = -1, shift;
   char        scoped[TSL_NAME_LEN];
 
   PetscFunctionBeginUser;
   PetscCall(ParamRequired(d, node ? "NSET" : "ELSET", &name));
   if (inst) { /* an assembly's set of one instance's ids (the part's own numbering) */
     USER_CHECK(d->assembly && d->instance < 0, LOC_FMT "INSTANCE= belongs to a set in an *ASSEMBLY", KLOC(d));
-    for (PetscInt i = 0; i < d->npart && part < 0; i++)
-      if (d->parts[i].instanced && TslDeckNameEqual(d->parts[i].instance, inst)) part = i;
-    USER_CHECK(part >= 0, LOC_FMT "INSTANCE=%s: no such instance", KLOC(d), inst);
+    instance = InstanceFind(d, inst);
+    USER_CHECK(instance >= 0, LOC_FMT "INSTANCE=%s: no such instance", KLOC(d), inst);
   }
-  shift = IdShift(d, part, node);
+  shift = IdShift(d, instance, node);
   PetscCall(Scoped(d, d->kwloc, name, scoped));
   PetscCall(SetGet(d, sets, nset, scoped, &iset));
   for (;;) {
@@ -1156,16 +1178,16 @@ static PetscErrorCode InstanceLabel(Deck *d, const char *f, PetscBool node, Pets
 
   PetscFunctionBeginUser;
   *is = PETSC_FALSE;
-  if (!d->npart || !dot || dot == f || (size_t)(dot - f) >= sizeof(inst) || !IsInteger(dot + 1)) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!d->ninst || !dot || dot == f || (size_t)(dot - f) >= sizeof(inst) || !IsInteger(dot + 1)) PetscFunctionReturn(PETSC_SUCCESS);
   memcpy(inst, f, (size_t)(dot - f));
   inst[dot - f] = 0;
-  for (PetscInt i = 0; i < d->npart; i++)
-    if (d->parts[i].instanced && TslDeckNameEqual(d->parts[i].instance, inst)) {
-      PetscCall(DeckId(d, dot + 1, node ? "a node label" : "an element label", id));
-      *id += IdShift(d, i, node);
-      *is = PETSC_TRUE;
-      break;
-    }
+  {
+    const PetscInt i = InstanceFind(d, inst);
+    if (i < 0) PetscFunctionReturn(PETSC_SUCCESS);
+    PetscCall(DeckId(d, dot + 1, node ? "a node label" : "an element label", id));
+    *id += IdShift(d, i, node);
+    *is = PETSC_TRUE;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1964,6 +1986,17 @@ static PetscErrorCode LineDsflux(Deck *d, TslLoad *l)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *DSLOAD (Abaqus/CAE writes its pressures so): surface, P, magnitude; the surface form of *DLOAD */
+static PetscErrorCode LineDsload(Deck *d, TslLoad *l)
+{
+  PetscFunctionBeginUser;
+  USER_CHECK(d->nfield == 3, LOC_FMT "*DSLOAD data line needs: surface, P, magnitude", DLOC(d));
+  USER_CHECK(l->target.set[0], LOC_FMT "*DSLOAD needs a surface name", DLOC(d));
+  PetscCall(LoadFace(d, l, 'P', PETSC_TRUE, PETSC_FALSE));
+  PetscCall(FieldReal(d, 2, "the magnitude", &l->value));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode LineFilm(Deck *d, TslLoad *l)
 {
   PetscBool sfilm = d->kw[0] == 'S' ? PETSC_TRUE : PETSC_FALSE;
@@ -2162,8 +2195,12 @@ static PetscErrorCode KwPart(Deck *d, const DeckKeyword *kw)
   for (PetscInt i = 0; i < m->nnode; i++) p->node_off = PetscMax(p->node_off, m->node_id[i]);
   for (PetscInt i = 0; i < m->nelem; i++) p->elem_off = PetscMax(p->elem_off, m->elem_id[i]);
   p->node_first = m->nnode;
-  p->loc        = d->kwloc;
-  d->part       = d->npart++;
+  p->elem_first = m->nelem;
+  p->nsets[0] = m->nnset, p->nsets[1] = m->nelset, p->nsets[2] = m->nsurface;
+  p->nsection = m->nsection;
+  p->first    = -1;
+  p->loc      = d->kwloc;
+  d->part     = d->npart++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2172,8 +2209,14 @@ static PetscErrorCode KwEndPart(Deck *d, const DeckKeyword *kw)
   PetscFunctionBeginUser;
   (void)kw;
   USER_CHECK(d->part >= 0, LOC_FMT "*END PART without *PART", KLOC(d));
-  d->parts[d->part].node_n = d->m->nnode - d->parts[d->part].node_first;
-  d->part                  = -1;
+  {
+    DeckPart *p = &d->parts[d->part];
+    p->node_n   = d->m->nnode - p->node_first;
+    p->elem_n   = d->m->nelem - p->elem_first;
+    PetscCall(PetscMalloc1(3 * p->node_n + 1, &p->xyz));
+    PetscCall(PetscArraycpy(p->xyz, d->m->node_xyz + 3 * p->node_first, 3 * p->node_n));
+  }
+  d->part = -1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2197,28 +2240,145 @@ static PetscErrorCode KwEndAssembly(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Renames a part's qualified name "p.x" to its instance's "i.x". */
-static PetscErrorCode Requalify(Deck *d, const DeckPart *p, char name[TSL_NAME_LEN])
+/* A name qualified by prefix ("p.x") requalified by to ("i.x") into out; PETSC_FALSE if it is not prefix's. */
+static PetscErrorCode Requalified(Deck *d, const char *prefix, const char *to, const char *name, char out[TSL_NAME_LEN], PetscBool *is)
 {
-  size_t n = strlen(p->name);
+  size_t n = strlen(prefix);
   char   buf[2 * TSL_NAME_LEN + 2];
 
   PetscFunctionBeginUser;
-  if (strlen(name) <= n || name[n] != '.' || strncmp(name, p->name, n)) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PetscSNPrintf(buf, sizeof(buf), "%s.%s", p->instance, name + n + 1));
-  PetscCall(CopyName(d, d->kwloc, name, buf));
+  *is = PETSC_FALSE;
+  if (strlen(name) <= n || name[n] != '.' || strncmp(name, prefix, n)) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(buf, sizeof(buf), "%s.%s", to, name + n + 1));
+  PetscCall(CopyName(d, d->kwloc, out, buf));
+  *is = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* *INSTANCE, NAME=i, PART=p: the part's names become "i.x"; the optional data lines move its nodes: a
- * translation, then a rotation by an angle (degrees) about the axis through points a and b. */
+/* The first instance of part p: its names "p.x" become "i.x" in place. */
+static PetscErrorCode RenameFirst(Deck *d, const DeckPart *p, const char *inst)
+{
+  TslModel *m = d->m;
+  PetscBool is;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = p->nsets[0]; i < m->nnset; i++) PetscCall(Requalified(d, p->name, inst, m->nsets[i].name, m->nsets[i].name, &is));
+  for (PetscInt i = p->nsets[1]; i < m->nelset; i++) PetscCall(Requalified(d, p->name, inst, m->elsets[i].name, m->elsets[i].name, &is));
+  for (PetscInt i = p->nsets[2]; i < m->nsurface; i++) PetscCall(Requalified(d, p->name, inst, m->surfaces[i].name, m->surfaces[i].name, &is));
+  for (PetscInt i = p->nsection; i < m->nsection; i++) {
+    PetscCall(Requalified(d, p->name, inst, m->sections[i].elset, m->sections[i].elset, &is));
+    PetscCall(Requalified(d, p->name, inst, m->sections[i].ref_node.set, m->sections[i].ref_node.set, &is));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A copy of a set of the first instance (its ids shifted by dn) for instance "to" */
+static PetscErrorCode CopySets(Deck *d, TslSet **sets, PetscInt *n, PetscInt from, PetscInt end, const char *first, const char *to, PetscInt shift)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = from; i < end; i++) {
+    char      name[TSL_NAME_LEN];
+    PetscBool is;
+    PetscCall(Requalified(d, first, to, (*sets)[i].name, name, &is));
+    if (!is) continue;
+    PetscCall(TslDeckGrow(sets, sizeof(TslSet), *n));
+    {
+      TslSet *src = &(*sets)[i], *dst = &(*sets)[*n];
+      *dst = *src;
+      PetscCall(PetscStrncpy(dst->name, name, TSL_NAME_LEN));
+      PetscCall(PetscMalloc1(src->n + 1, &dst->ids));
+      for (PetscInt k = 0; k < src->n; k++) dst->ids[k] = src->ids[k] + shift;
+      (*n)++;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A further instance of part p (first instance f): its nodes (at the part's own coordinates, then moved by
+ * the caller), elements, sets, surfaces and sections copied with the instance's ids and names. */
+static PetscErrorCode CopyInstance(Deck *d, const DeckPart *p, const DeckInstance *f, const DeckInstance *in)
+{
+  TslModel      *m  = d->m;
+  const PetscInt dn = in->node_off - f->node_off, de = in->elem_off - f->elem_off;
+  const PetscInt nset = m->nnset, nelset = m->nelset, nsurf = m->nsurface, nsec = m->nsection;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = p->node_first; k < p->node_first + p->node_n; k++) {
+    PetscCall(TslDeckGrow(&m->node_id, sizeof(PetscInt), m->nnode));
+    PetscCall(TslDeckGrow(&m->node_xyz, 3 * sizeof(PetscReal), m->nnode));
+    PetscCall(TslDeckGrow(&d->node_line, 2 * sizeof(PetscInt), m->nnode));
+    m->node_id[m->nnode] = m->node_id[k] + dn;
+    for (PetscInt c = 0; c < 3; c++) m->node_xyz[3 * m->nnode + c] = p->xyz[3 * (k - p->node_first) + c];
+    d->node_line[2 * m->nnode] = d->kwloc.file, d->node_line[2 * m->nnode + 1] = d->kwloc.line;
+    m->nnode++;
+  }
+  for (PetscInt e = p->elem_first; e < p->elem_first + p->elem_n; e++) {
+    PetscInt k, nn = m->elem_ptr[e + 1] - m->elem_ptr[e];
+    PetscCall(TslDeckGrow(&m->elem_id, sizeof(PetscInt), m->nelem));
+    PetscCall(TslDeckGrow(&m->elem_type, sizeof(PetscInt), m->nelem));
+    PetscCall(TslDeckGrow(&m->elem_line, 2 * sizeof(PetscInt), m->nelem));
+    PetscCall(TslDeckGrow(&m->elem_ptr, sizeof(PetscInt), m->nelem + 1));
+    k = m->elem_ptr[m->nelem];
+    for (PetscInt j = 0; j < nn; j++, k++) {
+      PetscCall(TslDeckGrow(&m->elem_conn, sizeof(PetscInt), k));
+      m->elem_conn[k] = m->elem_conn[m->elem_ptr[e] + j] + dn;
+    }
+    m->elem_id[m->nelem]           = m->elem_id[e] + de;
+    m->elem_type[m->nelem]         = m->elem_type[e];
+    m->elem_line[2 * m->nelem]     = m->elem_line[2 * e];
+    m->elem_line[2 * m->nelem + 1] = m->elem_line[2 * e + 1];
+    m->elem_ptr[++m->nelem]        = k;
+  }
+  PetscCall(CopySets(d, &m->nsets, &m->nnset, p->nsets[0], nset, f->name, in->name, dn));
+  PetscCall(CopySets(d, &m->elsets, &m->nelset, p->nsets[1], nelset, f->name, in->name, de));
+  for (PetscInt i = p->nsets[2]; i < nsurf; i++) {
+    char      name[TSL_NAME_LEN];
+    PetscBool is;
+    PetscCall(Requalified(d, f->name, in->name, m->surfaces[i].name, name, &is));
+    if (!is) continue;
+    PetscCall(TslDeckGrow(&m->surfaces, sizeof(TslSurface), m->nsurface));
+    {
+      TslSurface    *src = &m->surfaces[i], *dst = &m->surfaces[m->nsurface];
+      const PetscInt sh = src->kind == TSL_SURFACE_NODE ? dn : de;
+      *dst              = *src;
+      PetscCall(PetscStrncpy(dst->name, name, TSL_NAME_LEN));
+      PetscCall(PetscMalloc1(src->n + 1, &dst->elem));
+      for (PetscInt k = 0; k < src->n; k++) dst->elem[k] = src->elem[k] + sh;
+      dst->face = NULL;
+      if (src->face) {
+        PetscCall(PetscMalloc1(src->n + 1, &dst->face));
+        PetscCall(PetscArraycpy(dst->face, src->face, src->n));
+      }
+      m->nsurface++;
+    }
+  }
+  for (PetscInt i = p->nsection; i < nsec; i++) {
+    char      name[TSL_NAME_LEN];
+    PetscBool is;
+    PetscCall(Requalified(d, f->name, in->name, m->sections[i].elset, name, &is));
+    if (!is) continue;
+    PetscCall(TslDeckGrow(&m->sections, sizeof(TslSection), m->nsection));
+    m->sections[m->nsection] = m->sections[i];
+    PetscCall(PetscStrncpy(m->sections[m->nsection].elset, name, TSL_NAME_LEN));
+    PetscCall(Requalified(d, f->name, in->name, m->sections[i].ref_node.set, m->sections[m->nsection].ref_node.set, &is));
+    if (m->sections[i].ref_node.id >= 0) m->sections[m->nsection].ref_node.id += dn;
+    m->nsection++;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *INSTANCE, NAME=i, PART=p: the part placed. Its first instance renames its names "i.x"; a further one
+ * copies it (CopyInstance). The optional data lines move its nodes: a translation, then a rotation by an angle
+ * (degrees) about the axis through points a and b. */
 static PetscErrorCode KwInstance(Deck *d, const DeckKeyword *kw)
 {
-  TslModel   *m = d->m;
-  const char *name, *part;
-  DeckPart   *p    = NULL;
-  PetscReal   t[3] = {0, 0, 0}, R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, a[3] = {0, 0, 0};
-  PetscBool   got;
+  TslModel     *m = d->m;
+  const char   *name, *part;
+  DeckPart     *p = NULL;
+  DeckInstance *in;
+  PetscReal     t[3] = {0, 0, 0}, R[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, a[3] = {0, 0, 0};
+  PetscInt      first_node;
+  PetscBool     got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -2227,23 +2387,35 @@ static PetscErrorCode KwInstance(Deck *d, const DeckKeyword *kw)
   PetscCall(ParamRequired(d, "NAME", &name));
   USER_CHECK(Param(d, "PART"), LOC_FMT "*INSTANCE needs PART= (an instance of a model given inline, or of another model, is not supported)", KLOC(d));
   PetscCall(ParamRequired(d, "PART", &part));
-  for (PetscInt i = 0; i < d->npart; i++) {
-    USER_CHECK(!d->parts[i].instanced || !TslDeckNameEqual(d->parts[i].instance, name), LOC_FMT "instance %s is defined twice", KLOC(d), name);
+  USER_CHECK(InstanceFind(d, name) < 0, LOC_FMT "instance %s is defined twice", KLOC(d), name);
+  for (PetscInt i = 0; i < d->npart; i++)
     if (TslDeckNameEqual(d->parts[i].name, part)) p = &d->parts[i];
-  }
   USER_CHECK(p, LOC_FMT "*INSTANCE, PART=%s: no such part", KLOC(d), part);
-  USER_CHECK(!p->instanced,
-             LOC_FMT "part %s is instanced a second time (as %s after %s): a part may be instanced once here; give each instance its own part",
-             KLOC(d), part, name, p->instance);
-  p->instanced = PETSC_TRUE;
-  PetscCall(CopyName(d, d->kwloc, p->instance, name));
-  for (PetscInt i = 0; i < m->nnset; i++) PetscCall(Requalify(d, p, m->nsets[i].name));
-  for (PetscInt i = 0; i < m->nelset; i++) PetscCall(Requalify(d, p, m->elsets[i].name));
-  for (PetscInt i = 0; i < m->nsurface; i++) PetscCall(Requalify(d, p, m->surfaces[i].name));
-  for (PetscInt i = 0; i < m->nsection; i++) {
-    PetscCall(Requalify(d, p, m->sections[i].elset));
-    PetscCall(Requalify(d, p, m->sections[i].ref_node.set));
+  PetscCall(TslDeckGrow(&d->inst, sizeof(DeckInstance), d->ninst));
+  in = &d->inst[d->ninst];
+  PetscCall(PetscMemzero(in, sizeof(*in)));
+  PetscCall(CopyName(d, d->kwloc, in->name, name));
+  in->part = (PetscInt)(p - d->parts);
+  if (p->first < 0) { /* the first instance: the part as read */
+    in->node_off = p->node_off, in->elem_off = p->elem_off;
+    first_node = p->node_first;
+    p->first   = d->ninst;
+    PetscCall(RenameFirst(d, p, in->name));
+  } else { /* a further one: past every id so far */
+    for (PetscInt i = 0; i < m->nnode; i++) in->node_off = PetscMax(in->node_off, m->node_id[i]);
+    for (PetscInt i = 0; i < m->nelem; i++) in->elem_off = PetscMax(in->elem_off, m->elem_id[i]);
+    {
+      /* the part's own ids start at its smallest; the copy's follow the largest id defined so far */
+      PetscInt lo_n = PETSC_MAX_INT, lo_e = PETSC_MAX_INT;
+      for (PetscInt k = p->node_first; k < p->node_first + p->node_n; k++) lo_n = PetscMin(lo_n, m->node_id[k] - p->node_off);
+      for (PetscInt e = p->elem_first; e < p->elem_first + p->elem_n; e++) lo_e = PetscMin(lo_e, m->elem_id[e] - p->elem_off);
+      in->node_off += p->node_n ? 1 - lo_n : 0;
+      in->elem_off += p->elem_n ? 1 - lo_e : 0;
+    }
+    first_node = m->nnode;
+    PetscCall(CopyInstance(d, p, &d->inst[p->first], in));
   }
+  d->ninst++;
   for (PetscInt line = 0; line < 2; line++) {
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
@@ -2272,12 +2444,12 @@ static PetscErrorCode KwInstance(Deck *d, const DeckKeyword *kw)
         }
     }
   }
-  for (PetscInt k = p->node_first; k < p->node_first + p->node_n; k++) {
+  for (PetscInt k = first_node; k < first_node + p->node_n; k++) {
     PetscReal *x = &m->node_xyz[3 * k], y[3];
     for (PetscInt c = 0; c < 3; c++) y[c] = x[c] + t[c] - a[c];
     for (PetscInt c = 0; c < 3; c++) x[c] = a[c] + R[c][0] * y[0] + R[c][1] * y[1] + R[c][2] * y[2];
   }
-  d->instance = (PetscInt)(p - d->parts);
+  d->instance = d->ninst - 1;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2337,6 +2509,7 @@ static const DeckKeyword Keywords[] = {
     {"CLOAD", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_CLOAD, LineConcentrated},
     {"CFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_CFLUX, LineConcentrated},
     {"DLOAD", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DLOAD, LineDload},
+    {"DSLOAD", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DLOAD, LineDsload},
     {"DFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DFLUX, LineDflux},
     {"DSFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DFLUX, LineDsflux},
     {"FILM", AT_STEP, IN_NONE, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
@@ -2430,7 +2603,7 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
                d->parts[d->part].name);
   if (d->instance >= 0)
     USER_CHECK(kw->handler == KwEndInstance, LOC_FMT "*%s inside *INSTANCE %s: an instance holds its placement only here (missing *END INSTANCE?)",
-               KLOC(d), d->kw, d->parts[d->instance].instance);
+               KLOC(d), d->kw, d->inst[d->instance].name);
   else if (d->assembly && kw->handler != KwIgnored)
     USER_CHECK(kw->handler == KwInstance || kw->handler == KwSet || kw->handler == KwSurface || kw->handler == KwEndAssembly ||
                    kw->handler == KwNode || kw->handler == KwElement,
@@ -2471,7 +2644,7 @@ static PetscErrorCode DeckParse(Deck *d, const char *path)
   if (d->part >= 0) USER_ERR(LOC_FMT "missing *END PART: the deck ends inside this part", TSL_LOC_ARGS(d->m, d->parts[d->part].loc));
   USER_CHECK(!d->assembly, "%s: missing *END ASSEMBLY: the deck ends inside the assembly", path);
   for (PetscInt i = 0; i < d->npart; i++) /* an uninstanced part is not in the model, but its nodes were read into it */
-    if (!d->parts[i].instanced)
+    if (d->parts[i].first < 0)
       USER_ERR(LOC_FMT "part %s is never instanced (an *INSTANCE, PART=%s in the *ASSEMBLY places it)", TSL_LOC_ARGS(d->m, d->parts[i].loc),
                d->parts[i].name, d->parts[i].name);
   if (d->step >= 0) {
@@ -2540,7 +2713,9 @@ static PetscErrorCode DeckFree(Deck *d)
   PetscCall(PetscFree(d->field));
   PetscCall(PetscFree(d->node_line));
   PetscCall(PetscFree(d->mload));
+  for (PetscInt i = 0; i < d->npart; i++) PetscCall(PetscFree(d->parts[i].xyz));
   PetscCall(PetscFree(d->parts));
+  PetscCall(PetscFree(d->inst));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

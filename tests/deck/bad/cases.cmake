@@ -119,7 +119,7 @@ tsl_deck_bad(linear_penalty linear_penalty.inp "error: linear_penalty.inp:25: *S
 tsl_deck_bad(overclosure_exponential overclosure_exponential.inp "error: overclosure_exponential.inp:25: *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL is not supported yet (HARD or LINEAR)")
 tsl_deck_bad(print_totals print_totals.inp "error: print_totals.inp:33: *NODE PRINT, TOTALS=MAYBE: expected YES, NO or ONLY")
 # parts and instances (Abaqus/CAE's form; variants of data/abaqus_cae_part.inp)
-tsl_deck_bad(part_twice part_twice.inp "error: part_twice.inp:30: part BAR is instanced a second time (as BAR-2 after BAR-1)")
+tsl_deck_bad(instance_twice instance_twice.inp "error: instance_twice.inp:30: instance BAR-1 is defined twice")
 tsl_deck_bad(part_not_instanced part_not_instanced.inp "error: part_not_instanced.inp:7: part BAR is never instanced")
 tsl_deck_bad(part_material part_material.inp "error: part_material.inp:20: *MATERIAL inside *PART BAR: a part holds nodes, elements, sets, surfaces and sections here")
 tsl_deck_bad(part_unknown_instance part_unknown_instance.inp "error: part_unknown_instance.inp:31: INSTANCE=BAR-9: no such instance")
