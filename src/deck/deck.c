@@ -78,6 +78,7 @@ typedef struct {
   PetscInt             part;     /* the open *PART, or -1 */
   PetscInt             instance; /* the open *INSTANCE, or -1 */
   PetscBool            assembly; /* inside *ASSEMBLY ... *END ASSEMBLY */
+  TslLoc               assembly_loc;
 } Deck;
 
 /* A part (*PART ... *END PART), read straight into the model with its ids shifted past those defined before
@@ -2226,7 +2227,8 @@ static PetscErrorCode KwAssembly(Deck *d, const DeckKeyword *kw)
   (void)kw;
   USER_CHECK(d->part < 0, LOC_FMT "*ASSEMBLY inside a *PART (missing *END PART?)", KLOC(d));
   USER_CHECK(!d->assembly, LOC_FMT "a second *ASSEMBLY (missing *END ASSEMBLY?)", KLOC(d));
-  d->assembly = PETSC_TRUE;
+  d->assembly     = PETSC_TRUE;
+  d->assembly_loc = d->kwloc;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2642,7 +2644,7 @@ static PetscErrorCode DeckParse(Deck *d, const char *path)
   }
   USER_CHECK(d->nkeyword > 0, "%s:0: the deck is empty (no keyword lines)", path);
   if (d->part >= 0) USER_ERR(LOC_FMT "missing *END PART: the deck ends inside this part", TSL_LOC_ARGS(d->m, d->parts[d->part].loc));
-  USER_CHECK(!d->assembly, "%s: missing *END ASSEMBLY: the deck ends inside the assembly", path);
+  if (d->assembly) USER_ERR(LOC_FMT "missing *END ASSEMBLY: the deck ends inside this assembly", TSL_LOC_ARGS(d->m, d->assembly_loc));
   for (PetscInt i = 0; i < d->npart; i++) /* an uninstanced part is not in the model, but its nodes were read into it */
     if (d->parts[i].first < 0)
       USER_ERR(LOC_FMT "part %s is never instanced (an *INSTANCE, PART=%s in the *ASSEMBLY places it)", TSL_LOC_ARGS(d->m, d->parts[i].loc),

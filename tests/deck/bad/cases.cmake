@@ -125,3 +125,4 @@ tsl_deck_bad(part_material part_material.inp "error: part_material.inp:20: *MATE
 tsl_deck_bad(part_unknown_instance part_unknown_instance.inp "error: part_unknown_instance.inp:31: INSTANCE=BAR-9: no such instance")
 tsl_deck_bad(part_unclosed part_unclosed.inp "error: part_unclosed.inp:25: *ASSEMBLY inside *PART BAR")
 tsl_deck_bad(part_instance_outside part_instance_outside.inp "error: part_instance_outside.inp:26: *INSTANCE outside an *ASSEMBLY")
+tsl_deck_bad(assembly_unclosed assembly_unclosed.inp "error: assembly_unclosed.inp:26: missing *END ASSEMBLY: the deck ends inside this assembly")
