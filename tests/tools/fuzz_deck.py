@@ -8,7 +8,8 @@ a very long line; bytes that are not UTF-8; an *INCLUDE of a missing file), runs
 time limit and classifies what happened. A mutant may run or fail, but never:
 
   CRASH    the process died on a signal, or PETSc printed a stack trace / "Caught signal"
-  HANG     it ran past the time limit (a limit of several times the unmutated deck's run)
+  HANG     it ran past the time limit (a limit of several times the unmutated deck's run); an explicit run
+           still printing its progress lines is listed as SLOW instead, for a look, and not counted
   SILENT   it failed (non-zero exit) without a "thermoslide: error:" line
   NOLINE   a deck error ("error: <deck>:") whose line number is 0 or missing when the mutant had a line
   MIXED    it completed (exit 0) but printed an error line
@@ -176,8 +177,9 @@ def run(exe, deck, outdir, np, limit, opts=()):
 
 
 def classify(rc, log, deckname):
-    if rc is None:
-        return "HANG"
+    if rc is None:  # past the limit: hung, or an explicit step still reporting its progress (a mutated mesh or
+        # period can legitimately ask for many more increments: listed for a look, not counted as a finding)
+        return "SLOW" if re.search(r"increment \d+: step time .* s left", log) else "HANG"
     if rc < 0 or rc >= 128 or "Caught signal" in log or "Segmentation" in log or "signal 11" in log or "signal 6" in log:
         return "CRASH"
     if "PETSC ERROR" in log and "thermoslide: error:" not in log:
@@ -239,7 +241,9 @@ def main(argv):
                 f.write(f"# {what}\n# options {' '.join(opts)}\n# exit {rc} in {t:.2f} s\n" + log)
             c = classify(rc, log, name)
             tally[c or ("ok" if rc == 0 else "refused")] = tally.get(c or ("ok" if rc == 0 else "refused"), 0) + 1
-            if c:
+            if c == "SLOW":
+                print(f"SLOW {d}/deck.inp ({what}; still progressing after {t:.1f} s; not a finding)", flush=True)
+            elif c:
                 findings.append(f"{c} {d}/deck.inp ({what}; exit {rc}, {t:.1f} s)")
                 print(findings[-1], flush=True)
             else:
