@@ -1977,25 +1977,27 @@ static PetscErrorCode LineDflux(Deck *d, TslLoad *l)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode LineDsflux(Deck *d, TslLoad *l)
+/* The surface forms: *DSFLUX (surface, S, flux) and *DSLOAD (surface, P, pressure; Abaqus/CAE writes its
+ * pressures so), *DLOAD's surface form. */
+static PetscErrorCode LineSurfaceLoad(Deck *d, TslLoad *l, char label)
 {
+  const char *kw = label == 'S' ? "DSFLUX" : "DSLOAD";
+
   PetscFunctionBeginUser;
-  USER_CHECK(d->nfield == 3, LOC_FMT "*DSFLUX data line needs: surface, S, magnitude", DLOC(d));
-  USER_CHECK(l->target.set[0], LOC_FMT "*DSFLUX needs a surface name", DLOC(d));
-  PetscCall(LoadFace(d, l, 'S', PETSC_TRUE, PETSC_FALSE));
+  USER_CHECK(d->nfield == 3, LOC_FMT "*%s data line needs: surface, %c, magnitude", DLOC(d), kw, label);
+  USER_CHECK(l->target.set[0], LOC_FMT "*%s needs a surface name", DLOC(d), kw);
+  PetscCall(LoadFace(d, l, label, PETSC_TRUE, PETSC_FALSE));
   PetscCall(FieldReal(d, 2, "the magnitude", &l->value));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* *DSLOAD (Abaqus/CAE writes its pressures so): surface, P, magnitude; the surface form of *DLOAD */
+static PetscErrorCode LineDsflux(Deck *d, TslLoad *l)
+{
+  return LineSurfaceLoad(d, l, 'S');
+}
 static PetscErrorCode LineDsload(Deck *d, TslLoad *l)
 {
-  PetscFunctionBeginUser;
-  USER_CHECK(d->nfield == 3, LOC_FMT "*DSLOAD data line needs: surface, P, magnitude", DLOC(d));
-  USER_CHECK(l->target.set[0], LOC_FMT "*DSLOAD needs a surface name", DLOC(d));
-  PetscCall(LoadFace(d, l, 'P', PETSC_TRUE, PETSC_FALSE));
-  PetscCall(FieldReal(d, 2, "the magnitude", &l->value));
-  PetscFunctionReturn(PETSC_SUCCESS);
+  return LineSurfaceLoad(d, l, 'P');
 }
 
 static PetscErrorCode LineFilm(Deck *d, TslLoad *l)
