@@ -1993,11 +1993,15 @@ static PetscErrorCode LineSurfaceLoad(Deck *d, TslLoad *l, char label)
 
 static PetscErrorCode LineDsflux(Deck *d, TslLoad *l)
 {
-  return LineSurfaceLoad(d, l, 'S');
+  PetscFunctionBeginUser;
+  PetscCall(LineSurfaceLoad(d, l, 'S'));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 static PetscErrorCode LineDsload(Deck *d, TslLoad *l)
 {
-  return LineSurfaceLoad(d, l, 'P');
+  PetscFunctionBeginUser;
+  PetscCall(LineSurfaceLoad(d, l, 'P'));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscErrorCode LineFilm(Deck *d, TslLoad *l)
