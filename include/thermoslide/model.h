@@ -179,6 +179,7 @@ typedef struct {
   PetscBool lagrange;       /* LAGRANGE: exact stick (Lagrange multiplier) instead of penalty elastic slip */
   PetscBool rough;          /* ROUGH: no slip at all (mu unused) */
   PetscReal slip_tolerance; /* SLIP TOLERANCE= (default 0.005): allowed elastic slip / facet size */
+  PetscReal elastic_slip;   /* ELASTIC SLIP= (absolute allowed elastic slip; 0: SLIP TOLERANCE decides) */
   PetscReal stick_slope;    /* CalculiX second value: stick stiffness; 0 = solver default */
   TslLoc    loc;
 } TslFriction;

@@ -1520,6 +1520,18 @@ static PetscErrorCode KwFriction(Deck *d, const DeckKeyword *kw)
   PetscCall(ParamReal(d, "SLIP TOLERANCE", &f->slip_tolerance, &tol));
   USER_CHECK(!(tol && f->lagrange), LOC_FMT "*FRICTION: SLIP TOLERANCE does not apply with LAGRANGE", KLOC(d));
   USER_CHECK(f->slip_tolerance > 0, LOC_FMT "*FRICTION: SLIP TOLERANCE must be positive", KLOC(d));
+  {
+    PetscBool es;
+    PetscCall(ParamReal(d, "ELASTIC SLIP", &f->elastic_slip, &es));
+    USER_CHECK(!es || (f->elastic_slip > 0 && !f->lagrange && !tol),
+               LOC_FMT "*FRICTION: ELASTIC SLIP must be positive, and excludes LAGRANGE and SLIP TOLERANCE", KLOC(d));
+  }
+  /* parameters that would change the friction law if they were ignored */
+  for (size_t i = 0; i < 5; i++) {
+    static const char *law[5] = {"TAUMAX", "EXPONENTIAL DECAY", "USER", "ANISOTROPIC", "DEPENDENCIES"};
+    USER_CHECK(!Param(d, law[i]), LOC_FMT "*FRICTION, %s is not supported yet (isotropic Coulomb friction with a constant coefficient)", KLOC(d),
+               law[i]);
+  }
   PetscCall(DataLine(d, 0, &got));
   if (!got) {
     USER_CHECK(f->rough, LOC_FMT "*FRICTION needs a data line with the friction coefficient", KLOC(d));
@@ -2059,6 +2071,14 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
 
   PetscFunctionBeginUser;
   USER_CHECK(!op || !strcmp(op, "NEW") || !strcmp(op, "MOD"), LOC_FMT "OP=%s: expected NEW or MOD", KLOC(d), op);
+  {
+    /* *BOUNDARY, TYPE=: read as a displacement, a prescribed velocity would move the body by its values */
+    char        tb[32];
+    const char *type = ParamUpper(d, "TYPE", tb, sizeof(tb));
+    USER_CHECK(!type || !strcmp(type, "DISPLACEMENT"),
+               LOC_FMT "*BOUNDARY, TYPE=%s is not supported yet: prescribe the displacement (the velocity's time integral, with an amplitude)",
+               KLOC(d), type);
+  }
   if (model) PetscCall(ModelLoadCheck(d, op));
   PetscCall(AmplitudeParam(d, "AMPLITUDE", &amp));
   PetscCall(AmplitudeParam(d, "FILM AMPLITUDE", &famp));
@@ -2501,7 +2521,8 @@ static const DeckKeyword Keywords[] = {
     {"SURFACE INTERACTION", AT_MODEL, IN_NONE, "NAME", KwSurfaceInteraction, 0, NULL},
     {"SURFACE BEHAVIOR", AT_MODEL, IN_INTERACTION, "PRESSURE-OVERCLOSURE|PENALTY|AUGMENTED LAGRANGE|DIRECT|NO SEPARATION", KwSurfaceBehavior, 0,
      NULL},
-    {"FRICTION", AT_MODEL, IN_INTERACTION, "LAGRANGE|ROUGH|SLIP TOLERANCE", KwFriction, 0, NULL},
+    {"FRICTION", AT_MODEL, IN_INTERACTION, "LAGRANGE|ROUGH|SLIP TOLERANCE|ELASTIC SLIP|TAUMAX|EXPONENTIAL DECAY|USER|ANISOTROPIC|DEPENDENCIES",
+     KwFriction, 0, NULL},
     {"GAP CONDUCTANCE", AT_MODEL, IN_INTERACTION, "PRESSURE|DEPENDENCIES|USER", KwGapConductance, 0, NULL},
     {"GAP RADIATION", AT_MODEL, IN_INTERACTION, "", KwGapRadiation, 0, NULL},
     {"GAP HEAT GENERATION", AT_MODEL, IN_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
@@ -2513,7 +2534,7 @@ static const DeckKeyword Keywords[] = {
     {"FIXED MASS SCALING", AT_STEP, IN_NONE, "FACTOR|DT|ELSET|TYPE", KwMassScaling, 0, NULL},
     {"BULK VISCOSITY", AT_STEP, IN_NONE, "", KwBulkViscosity, 0, NULL},
     {"VARIABLE MASS SCALING", AT_STEP, IN_NONE, "DT|ELSET|FREQUENCY|TYPE", KwMassScaling, 1, NULL},
-    {"BOUNDARY", AT_BOTH, IN_NONE, LOAD_PARAMS "|FIXED", KwLoad, TSL_LOAD_BOUNDARY, LineBoundary},
+    {"BOUNDARY", AT_BOTH, IN_NONE, LOAD_PARAMS "|FIXED|TYPE", KwLoad, TSL_LOAD_BOUNDARY, LineBoundary},
     {"CLOAD", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_CLOAD, LineConcentrated},
     {"CFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_CFLUX, LineConcentrated},
     {"DLOAD", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DLOAD, LineDload},

@@ -661,7 +661,9 @@ static PetscErrorCode SetUpLaw(TslProblem p, const TslContactPair *pair, PetscRe
      * Poisson mismatch of two pressed blocks, and Newton cycled between slipping one way and the other
      * (issue 8, item 8). */
     law->eps_t        = it->friction.stick_slope;
-    law->elastic_slip = it->friction.stick_slope > 0 ? 0 : it->friction.slip_tolerance * seg_length;
+    law->elastic_slip = it->friction.stick_slope > 0    ? 0
+                        : it->friction.elastic_slip > 0 ? it->friction.elastic_slip /* ELASTIC SLIP=: a length */
+                                                        : it->friction.slip_tolerance * seg_length;
     /* LAGRANGE: sign(slip) is regularised over a slip far below any slip that heats (1e-4 of a segment):
      * sharper makes Newton oscillate at sticking nodes, and every finite slip still dissipates mu p |ds| */
     law->slip_tol = 1e-4 * seg_length;

@@ -126,3 +126,7 @@ tsl_deck_bad(part_unknown_instance part_unknown_instance.inp "error: part_unknow
 tsl_deck_bad(part_unclosed part_unclosed.inp "error: part_unclosed.inp:25: *ASSEMBLY inside *PART BAR")
 tsl_deck_bad(part_instance_outside part_instance_outside.inp "error: part_instance_outside.inp:26: *INSTANCE outside an *ASSEMBLY")
 tsl_deck_bad(assembly_unclosed assembly_unclosed.inp "error: assembly_unclosed.inp:26: missing *END ASSEMBLY: the deck ends inside this assembly")
+# parameters that would change the physics if they were ignored with a warning
+tsl_deck_bad(boundary_velocity boundary_velocity.inp "error: boundary_velocity.inp:31: *BOUNDARY, TYPE=VELOCITY is not supported yet")
+tsl_deck_bad(friction_taumax friction_taumax.inp "error: friction_taumax.inp:26: *FRICTION, TAUMAX is not supported yet")
+tsl_deck_bad(friction_elastic_slip_lagrange friction_elastic_slip_lagrange.inp "error: friction_elastic_slip_lagrange.inp:26: *FRICTION: ELASTIC SLIP must be positive, and excludes LAGRANGE")
