@@ -2644,9 +2644,28 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
   USER_CHECK(kw->block != IN_INTERACTION || d->interaction >= 0,
              LOC_FMT "*%s must follow *SURFACE INTERACTION (interface properties outside a surface interaction)", KLOC(d), d->kw);
   if (kw->params)
-    for (PetscInt i = 0; i < d->nparam; i++)
-      if (!ParamKnown(kw->params, d->pkey[i]))
-        PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: parameter %s of *%s is ignored\n", KLOC(d), d->pkey[i], d->kw));
+    for (PetscInt i = 0; i < d->nparam; i++) {
+      /* An unknown parameter is ignored with a warning, unless ignoring it would change the model: data
+       * from elsewhere (INPUT=, USER subroutines), field-variable dependence, cylindrical or spherical node
+       * coordinates, absolute amplitude values, a perturbation step, a composite section. Those are errors
+       * (found by mutating decks: each had run a different model with a warning only). */
+      static const struct {
+        const char *key, *harmless; /* the value that is the default, so harmless to ignore, or NULL */
+      } Meaningful[] = {
+          {"USER", NULL}, {"INPUT", NULL}, {"DEPENDENCIES", "0"}, {"SYSTEM", "R"}, {"VALUE", "RELATIVE"}, {"PERTURBATION", NULL}, {"COMPOSITE", NULL},
+      };
+      if (ParamKnown(kw->params, d->pkey[i])) continue;
+      for (size_t k = 0; k < sizeof(Meaningful) / sizeof(Meaningful[0]); k++) {
+        char  v[32] = "";
+        char *nv    = v;
+        if (strcmp(d->pkey[i], Meaningful[k].key)) continue;
+        if (d->pval[i]) (void)PetscStrncpy(v, d->pval[i], sizeof(v)), nv = Normalize(v);
+        USER_CHECK(Meaningful[k].harmless && !strcmp(nv, Meaningful[k].harmless),
+                   LOC_FMT "*%s, %s%s%s is not supported: ignoring it would change the model", KLOC(d), d->kw, d->pkey[i], d->pval[i] ? "=" : "",
+                   d->pval[i] ? d->pval[i] : "");
+      }
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: parameter %s of *%s is ignored\n", KLOC(d), d->pkey[i], d->kw));
+    }
   PetscCall(kw->handler(d, kw));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -130,3 +130,7 @@ tsl_deck_bad(assembly_unclosed assembly_unclosed.inp "error: assembly_unclosed.i
 tsl_deck_bad(boundary_velocity boundary_velocity.inp "error: boundary_velocity.inp:31: *BOUNDARY, TYPE=VELOCITY is not supported yet")
 tsl_deck_bad(friction_taumax friction_taumax.inp "error: friction_taumax.inp:26: *FRICTION, TAUMAX is not supported yet")
 tsl_deck_bad(friction_elastic_slip_lagrange friction_elastic_slip_lagrange.inp "error: friction_elastic_slip_lagrange.inp:26: *FRICTION: ELASTIC SLIP must be positive, and excludes LAGRANGE")
+tsl_deck_bad(node_system_cylindrical node_system_cylindrical.inp "error: node_system_cylindrical.inp:1: *NODE, SYSTEM=C is not supported: ignoring it would change the model")
+tsl_deck_bad(step_perturbation step_perturbation.inp "error: step_perturbation.inp:28: *STEP, PERTURBATION is not supported: ignoring it would change the model")
+tsl_deck_bad(conductivity_field_dependence conductivity_field_dependence.inp "error: conductivity_field_dependence.inp:13: *CONDUCTIVITY, DEPENDENCIES=1 is not supported")
+tsl_deck_bad(node_input_file node_input_file.inp "error: node_input_file.inp:1: *NODE, INPUT=nodes.inp is not supported")
