@@ -140,6 +140,7 @@ typedef struct {
   PetscInt    film_amplitude; /* FILM AMPLITUDE= (scales h), -1 = none */
   PetscBool   op_new;         /* OP=NEW on this keyword: previous loads of this kind are removed */
   PetscBool   fixed;          /* *BOUNDARY, FIXED: hold the dofs at their values at the start of the step */
+  PetscBool   velocity;       /* *BOUNDARY, TYPE=VELOCITY: value is a velocity, the dof follows its time integral */
   TslLoc      loc;
 } TslLoad;
 
@@ -414,6 +415,7 @@ PetscInt       TslModelElementIndex(const TslModel *model, PetscInt id);
 /* Amplitude value at time t (linear interpolation, or the smooth step between points with SMOOTH STEP;
  * constant beyond the ends). */
 PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t);
+PetscReal TslAmplitudeIntegral(const TslAmplitude *amp, PetscReal ta, PetscReal tb);
 
 /* Serialisation used to broadcast / scatter models. TslModelPack writes the whole model into a
  * newly allocated buffer (caller frees with PetscFree); TslModelUnpack builds a model from it. */

@@ -1929,6 +1929,8 @@ static PetscErrorCode LineBoundary(Deck *d, TslLoad *l)
   /* a range may not run from a displacement into the temperature: 4..10 are no dofs */
   USER_CHECK(l->dof_first <= l->dof_last && (l->dof_last != 11 || l->dof_first == 11), LOC_FMT "bad dof range %" PetscInt_FMT "..%" PetscInt_FMT,
              DLOC(d), l->dof_first, l->dof_last);
+  USER_CHECK(!l->velocity || l->dof_last != 11, LOC_FMT "*BOUNDARY, TYPE=VELOCITY applies to displacement dofs, not to the temperature (11)",
+             DLOC(d));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2071,14 +2073,16 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
 
   PetscFunctionBeginUser;
   USER_CHECK(!op || !strcmp(op, "NEW") || !strcmp(op, "MOD"), LOC_FMT "OP=%s: expected NEW or MOD", KLOC(d), op);
-  {
-    /* *BOUNDARY, TYPE=: read as a displacement, a prescribed velocity would move the body by its values */
-    char        tb[32];
-    const char *type = ParamUpper(d, "TYPE", tb, sizeof(tb));
-    USER_CHECK(!type || !strcmp(type, "DISPLACEMENT"),
-               LOC_FMT "*BOUNDARY, TYPE=%s is not supported yet: prescribe the displacement (the velocity's time integral, with an amplitude)",
-               KLOC(d), type);
-  }
+  char        tb[32];
+  const char *type     = ParamUpper(d, "TYPE", tb, sizeof(tb));
+  PetscBool   velocity = (PetscBool)(type && !strcmp(type, "VELOCITY"));
+  /* *BOUNDARY, TYPE=VELOCITY: the dof follows the velocity's time integral (read as a displacement, a
+   * velocity would move the body by its values); ACCELERATION is not supported */
+  USER_CHECK(!type || velocity || !strcmp(type, "DISPLACEMENT"), LOC_FMT "*BOUNDARY, TYPE=%s is not supported (DISPLACEMENT or VELOCITY)", KLOC(d),
+             type);
+  USER_CHECK(!velocity || !model,
+             LOC_FMT "*BOUNDARY, TYPE=VELOCITY belongs to a step (in the model data a boundary condition only holds dofs at zero)", KLOC(d));
+  USER_CHECK(!velocity || !Param(d, "FIXED"), LOC_FMT "*BOUNDARY: FIXED and TYPE=VELOCITY exclude each other", KLOC(d));
   if (model) PetscCall(ModelLoadCheck(d, op));
   PetscCall(AmplitudeParam(d, "AMPLITUDE", &amp));
   PetscCall(AmplitudeParam(d, "FILM AMPLITUDE", &famp));
@@ -2092,6 +2096,7 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
     l.film_amplitude = famp;
     l.op_new         = (op && !strcmp(op, "NEW")) ? PETSC_TRUE : PETSC_FALSE;
     l.fixed          = Param(d, "FIXED") ? PETSC_TRUE : PETSC_FALSE;
+    l.velocity       = velocity;
     l.loc            = d->loc;
     USER_CHECK(d->nfield >= 2, LOC_FMT "*%s data line is too short", DLOC(d), d->kw);
     PetscCall(ParseTarget(d, d->field[0], kw->kind <= TSL_LOAD_CFLUX ? PETSC_TRUE : PETSC_FALSE, &l.target));

@@ -246,6 +246,32 @@ PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t)
   return amp->a[amp->n - 1];
 }
 
+/* The amplitude's integral over [ta, tb] (ta <= tb), exact for its pieces: trapezoids, the smooth step's
+ * polynomial (its integral over a piece from 0 to xi is xi^4 (5/2 - 3 xi + xi^2) of the piece's length), and
+ * the constant ends. A velocity boundary condition's displacement is the velocity times this. */
+static PetscReal AmplitudePrimitive(const TslAmplitude *amp, PetscReal t)
+{
+  PetscReal s = 0;
+
+  if (t <= amp->t[0]) return (t - amp->t[0]) * amp->a[0];
+  for (PetscInt i = 0; i + 1 < amp->n; i++) {
+    const PetscReal dt = amp->t[i + 1] - amp->t[i], end = PetscMin(t, amp->t[i + 1]);
+    if (dt > 0) {
+      const PetscReal xi = (end - amp->t[i]) / dt;
+      const PetscReal f  = amp->smooth ? xi * xi * xi * xi * (2.5 - 3 * xi + xi * xi) : 0.5 * xi * xi; /* the rise's integral / dt */
+      s += dt * (amp->a[i] * xi + (amp->a[i + 1] - amp->a[i]) * f);
+    }
+    if (t <= amp->t[i + 1]) return s;
+  }
+  return s + (t - amp->t[amp->n - 1]) * amp->a[amp->n - 1];
+}
+
+PetscReal TslAmplitudeIntegral(const TslAmplitude *amp, PetscReal ta, PetscReal tb)
+{
+  if (!amp || amp->n < 1) return tb - ta;
+  return AmplitudePrimitive(amp, tb) - AmplitudePrimitive(amp, ta);
+}
+
 /* ---- serialisation ----------------------------------------------------------------------------
  * One walker, ModelWalk(), visits every field in a fixed order; the packer's mode decides whether a
  * visit appends the bytes to the buffer or reads them back. Structs are copied whole as bytes (so

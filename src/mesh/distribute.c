@@ -653,6 +653,11 @@ static PetscReal LargestPrescribedDisplacement(const TslModel *g)
         amp = 0;
         for (PetscInt i = 0; i < g->amplitudes[ld->amplitude].n; i++) amp = PetscMax(amp, PetscAbsReal(g->amplitudes[ld->amplitude].a[i]));
       }
+      if (ld->velocity) { /* a velocity moves the dof for as long as it holds: this step and every later one, at most */
+        PetscReal T = 0;
+        for (PetscInt r = s; r < g->nstep; r++) T += g->steps[r].period;
+        amp *= T;
+      }
       for (PetscInt d = PetscMax(ld->dof_first, 1); d <= PetscMin(ld->dof_last, 3); d++) u[d - 1] = PetscMax(u[d - 1], amp * PetscAbsReal(ld->value));
     }
   return PetscSqrtReal(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);

@@ -12,9 +12,22 @@
  */
 #include "problem_impl.h"
 
+/* A velocity boundary condition's displacement: u0 + the integral of its velocity since t0 (total time). Its
+ * velocity follows the same history as any value (an amplitude, the step's ramp from v0 to v1, or constant). */
+static PetscReal EvalVelocityDisplacement(TslProblem p, const TslLoadValue *h)
+{
+  if (h->amp >= 0) {
+    const TslAmplitude *a = &p->m->amplitudes[h->amp];
+    return h->u0 + h->v1 * (a->total_time ? TslAmplitudeIntegral(a, h->t0, p->ttot) : TslAmplitudeIntegral(a, 0, p->t));
+  }
+  if (h->amp == TSL_AMP_HOLD || p->amp_default == TSL_AMP_STEP) return h->u0 + h->v1 * (p->ttot - h->t0);
+  return h->u0 + h->v0 * p->t + (h->v1 - h->v0) * (p->period > 0 ? 0.5 * p->t * p->t / p->period : p->t);
+}
+
 PetscReal TslProblemEvalLoadValue(TslProblem p, const TslLoadValue *h)
 {
   if (!h->active) return 0;
+  if (h->velocity) return EvalVelocityDisplacement(p, h);
   if (h->amp >= 0) {
     const TslAmplitude *a = &p->m->amplitudes[h->amp];
     return h->v1 * TslAmplitudeEval(a, a->total_time ? p->ttot : p->t);
@@ -30,6 +43,20 @@ static void Freeze(TslProblem p, TslLoadValue *h)
 
   if (!h->active) return;
   if (h->amp >= 0 && p->m->amplitudes[h->amp].total_time) return;
+  if (h->velocity) { /* the velocity reached is held, and the displacement goes on from where it is */
+    TslLoadValue    vel = *h;
+    const PetscReal t   = p->t;
+    vel.velocity        = PETSC_FALSE;
+    h->u0               = EvalVelocityDisplacement(p, h);
+    h->t0               = p->ttot;
+    /* the velocity at the step's end exactly (the last increment's time may fall short of it by a rounding):
+     * an amplitude that jumps there, as one that stops the motion at the end, gives its later value */
+    p->t  = p->period > 0 ? p->period : t;
+    h->v0 = h->v1 = TslProblemEvalLoadValue(p, &vel);
+    p->t          = t;
+    h->amp        = TSL_AMP_HOLD;
+    return;
+  }
   v     = TslProblemEvalLoadValue(p, h);
   h->v0 = h->v1 = v;
   h->amp        = TSL_AMP_HOLD;
@@ -38,10 +65,24 @@ static void Freeze(TslProblem p, TslLoadValue *h)
 /* Starts a new value from the current one. */
 static void Redefine(TslLoadValue *h, PetscReal start, PetscReal value, PetscInt amp)
 {
-  h->v0     = h->active ? h->v1 : start;
-  h->v1     = value;
-  h->amp    = amp;
-  h->active = PETSC_TRUE;
+  h->v0       = h->active && !h->velocity ? h->v1 : start;
+  h->v1       = value;
+  h->amp      = amp;
+  h->active   = PETSC_TRUE;
+  h->velocity = PETSC_FALSE;
+}
+
+/* Starts a velocity from the current one (0 for a dof that was not moving by a velocity), the displacement
+ * from the dof's current value u at total time t0. */
+static void RedefineVelocity(TslLoadValue *h, PetscReal u, PetscReal t0, PetscReal value, PetscInt amp)
+{
+  h->v0       = h->active && h->velocity ? h->v1 : 0;
+  h->v1       = value;
+  h->amp      = amp;
+  h->active   = PETSC_TRUE;
+  h->velocity = PETSC_TRUE;
+  h->u0       = u;
+  h->t0       = t0;
 }
 
 /* Local nodes of a node target (set members present here, or one id). Returns a list to free. */
@@ -178,11 +219,11 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
     r->kind = kind;
     r->seq  = p->face_seq++;
     if (kind == TSL_FACE_FILM) {
-      r->value    = (TslLoadValue){PETSC_TRUE, ld->value, ld->value, TSL_AMP_HOLD};
-      r->sink     = (TslLoadValue){PETSC_TRUE, ld->sink, ld->sink, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_HOLD};
+      r->value    = (TslLoadValue){PETSC_TRUE, ld->value, ld->value, TSL_AMP_HOLD, PETSC_FALSE, 0, 0};
+      r->sink     = (TslLoadValue){PETSC_TRUE, ld->sink, ld->sink, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_HOLD, PETSC_FALSE, 0, 0};
       r->film_amp = ld->film_amplitude;
     } else {
-      r->value    = (TslLoadValue){PETSC_TRUE, 0, ld->value, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT};
+      r->value    = (TslLoadValue){PETSC_TRUE, 0, ld->value, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT, PETSC_FALSE, 0, 0};
       r->film_amp = -1;
     }
   }
@@ -281,7 +322,9 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
           PetscInt c = TslProblemNodeDofSlot(p, nodes[j], dof), d = nodes[j] * p->ndof + c;
           if (c < 0) continue; /* a dof the model's elements do not have (e.g. 3 in 2D): ignored as in the dialect */
           if (ld->kind == TSL_LOAD_BOUNDARY && ld->fixed)
-            p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD};
+            p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD, PETSC_FALSE, 0, 0};
+          else if (ld->kind == TSL_LOAD_BOUNDARY && ld->velocity)
+            RedefineVelocity(&p->bc[d], PetscRealPart(x[d]), p->ttot, ld->value, amp);
           else if (ld->kind == TSL_LOAD_BOUNDARY)
             Redefine(&p->bc[d], PetscRealPart(x[d]), ld->value, amp);
           else if (nodes[j] < p->nown)

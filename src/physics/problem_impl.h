@@ -60,11 +60,14 @@ typedef struct _n_TslContactS2S *TslContactS2S;
 #define TSL_AMP_DEFAULT (-1) /* the step's default: RAMP or STEP */
 #define TSL_AMP_HOLD    (-2) /* carried over from an earlier step: constant */
 
-/* A load value (prescribed value, load magnitude) that follows the step's loading history: v(t) = amplitude or ramp from v0 to v1. */
+/* A load value (prescribed value, load magnitude) that follows the step's loading history: v(t) = amplitude or ramp from v0 to v1.
+ * A velocity boundary condition (velocity): v(t) is the dof's velocity and the value is u0 + its integral from total time t0. */
 typedef struct {
   PetscBool active;
   PetscReal v0, v1;
   PetscInt  amp;
+  PetscBool velocity;
+  PetscReal u0, t0;
 } TslLoadValue;
 
 /* A distributed (face or body) load on one local element. */

@@ -104,6 +104,15 @@ static PetscErrorCode TestModelData(const TslModel *m)
   EXPECT(a->n == 5 && a->total_time && NEAR(a->t[4], 4));
   EXPECT(NEAR(TslAmplitudeEval(a, -1), 0) && NEAR(TslAmplitudeEval(a, 0.5), 0.5) && NEAR(TslAmplitudeEval(a, 1.5), 1));
   EXPECT(NEAR(TslAmplitudeEval(a, 2.5), 0.5) && NEAR(TslAmplitudeEval(a, 10), 0));
+  { /* the integral (velocity boundary conditions) against a fine midpoint rule, tabular and smooth step */
+    PetscReal    tt[2] = {0, 2}, aa[2] = {0, 3}, sum = 0, h = 11.0 / 200000;
+    TslAmplitude sm = {.n = 2, .t = tt, .a = aa, .smooth = PETSC_TRUE};
+    for (PetscInt k = 0; k < 200000; k++) sum += h * TslAmplitudeEval(a, -1 + (k + 0.5) * h);
+    EXPECT(PetscAbsReal(TslAmplitudeIntegral(a, -1, 10) - sum) < 1e-8);
+    sum = 0, h = 2.5 / 200000;
+    for (PetscInt k = 0; k < 200000; k++) sum += h * TslAmplitudeEval(&sm, 0.5 + (k + 0.5) * h);
+    EXPECT(PetscAbsReal(TslAmplitudeIntegral(&sm, 0.5, 3) - sum) < 1e-8 && NEAR(TslAmplitudeIntegral(&sm, 0, 2), 3));
+  }
   a = &m->amplitudes[TslModelFindAmplitude(m, "SINK")];
   EXPECT(a->n == 1 && !a->total_time && NEAR(TslAmplitudeEval(a, 3), 1));
 
