@@ -270,6 +270,21 @@ static PetscInt IdShift(const Deck *d, PetscInt inst, PetscBool node)
   return node ? d->parts[d->part].node_off : d->parts[d->part].elem_off;
 }
 
+/* the largest (smallest) of n ids; 0 for none */
+static PetscInt IdMax(const PetscInt *ids, PetscInt n)
+{
+  PetscInt x = 0;
+  for (PetscInt i = 0; i < n; i++) x = PetscMax(x, ids[i]);
+  return x;
+}
+
+static PetscInt IdMin(const PetscInt *ids, PetscInt n)
+{
+  PetscInt x = n ? ids[0] : 0;
+  for (PetscInt i = 1; i < n; i++) x = PetscMin(x, ids[i]);
+  return x;
+}
+
 /* the instance called name, or -1 */
 static PetscInt InstanceFind(const Deck *d, const char *name)
 {
@@ -757,6 +772,7 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
 
   PetscFunctionBeginUser;
   (void)kw;
+  USER_CHECK(!d->assembly, LOC_FMT "*ELEMENT in an assembly is not supported: elements belong to parts", KLOC(d));
   PetscCall(ParamRequired(d, "TYPE", &tname));
   type = TslElementTypeFind(tname);
   if (type < 0 && strlen(tname) < 30) {
@@ -779,7 +795,6 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
   USER_CHECK(m->dim == et->dim,
              LOC_FMT "element type %s is %" PetscInt_FMT "D but the model already has %" PetscInt_FMT "D elements (mixing is not supported)", KLOC(d),
              et->name, et->dim, m->dim);
-  USER_CHECK(!d->assembly, LOC_FMT "*ELEMENT in an assembly is not supported: elements belong to parts", KLOC(d));
   if (elset) {
     char name[TSL_NAME_LEN];
     USER_CHECK(elset[0], LOC_FMT "ELSET= needs a name", KLOC(d));
@@ -1526,12 +1541,6 @@ static PetscErrorCode KwFriction(Deck *d, const DeckKeyword *kw)
     USER_CHECK(!es || (f->elastic_slip > 0 && !f->lagrange && !tol),
                LOC_FMT "*FRICTION: ELASTIC SLIP must be positive, and excludes LAGRANGE and SLIP TOLERANCE", KLOC(d));
   }
-  /* parameters that would change the friction law if they were ignored */
-  for (size_t i = 0; i < 5; i++) {
-    static const char *law[5] = {"TAUMAX", "EXPONENTIAL DECAY", "USER", "ANISOTROPIC", "DEPENDENCIES"};
-    USER_CHECK(!Param(d, law[i]), LOC_FMT "*FRICTION, %s is not supported yet (isotropic Coulomb friction with a constant coefficient)", KLOC(d),
-               law[i]);
-  }
   PetscCall(DataLine(d, 0, &got));
   if (!got) {
     USER_CHECK(f->rough, LOC_FMT "*FRICTION needs a data line with the friction coefficient", KLOC(d));
@@ -2224,8 +2233,8 @@ static PetscErrorCode KwPart(Deck *d, const DeckKeyword *kw)
   p = &d->parts[d->npart];
   PetscCall(PetscMemzero(p, sizeof(*p)));
   PetscCall(CopyName(d, d->kwloc, p->name, name));
-  for (PetscInt i = 0; i < m->nnode; i++) p->node_off = PetscMax(p->node_off, m->node_id[i]);
-  for (PetscInt i = 0; i < m->nelem; i++) p->elem_off = PetscMax(p->elem_off, m->elem_id[i]);
+  p->node_off   = IdMax(m->node_id, m->nnode);
+  p->elem_off   = IdMax(m->elem_id, m->nelem);
   p->node_first = m->nnode;
   p->elem_first = m->nelem;
   p->nsets[0] = m->nnset, p->nsets[1] = m->nelset, p->nsets[2] = m->nsurface;
@@ -2434,18 +2443,10 @@ static PetscErrorCode KwInstance(Deck *d, const DeckKeyword *kw)
     first_node = p->node_first;
     p->first   = d->ninst;
     PetscCall(RenameFirst(d, p, in->name));
-  } else { /* a further one: past every id so far */
-    for (PetscInt i = 0; i < m->nnode; i++) in->node_off = PetscMax(in->node_off, m->node_id[i]);
-    for (PetscInt i = 0; i < m->nelem; i++) in->elem_off = PetscMax(in->elem_off, m->elem_id[i]);
-    {
-      /* the part's own ids start at its smallest; the copy's follow the largest id defined so far */
-      PetscInt lo_n = PETSC_MAX_INT, lo_e = PETSC_MAX_INT;
-      for (PetscInt k = p->node_first; k < p->node_first + p->node_n; k++) lo_n = PetscMin(lo_n, m->node_id[k] - p->node_off);
-      for (PetscInt e = p->elem_first; e < p->elem_first + p->elem_n; e++) lo_e = PetscMin(lo_e, m->elem_id[e] - p->elem_off);
-      in->node_off += p->node_n ? 1 - lo_n : 0;
-      in->elem_off += p->elem_n ? 1 - lo_e : 0;
-    }
-    first_node = m->nnode;
+  } else { /* a further one: its smallest ids follow the largest defined so far */
+    in->node_off = p->node_off + IdMax(m->node_id, m->nnode) + 1 - IdMin(m->node_id + p->node_first, p->node_n);
+    in->elem_off = p->elem_off + IdMax(m->elem_id, m->nelem) + 1 - IdMin(m->elem_id + p->elem_first, p->elem_n);
+    first_node   = m->nnode;
     PetscCall(CopyInstance(d, p, &d->inst[p->first], in));
   }
   d->ninst++;
@@ -2526,8 +2527,7 @@ static const DeckKeyword Keywords[] = {
     {"SURFACE INTERACTION", AT_MODEL, IN_NONE, "NAME", KwSurfaceInteraction, 0, NULL},
     {"SURFACE BEHAVIOR", AT_MODEL, IN_INTERACTION, "PRESSURE-OVERCLOSURE|PENALTY|AUGMENTED LAGRANGE|DIRECT|NO SEPARATION", KwSurfaceBehavior, 0,
      NULL},
-    {"FRICTION", AT_MODEL, IN_INTERACTION, "LAGRANGE|ROUGH|SLIP TOLERANCE|ELASTIC SLIP|TAUMAX|EXPONENTIAL DECAY|USER|ANISOTROPIC|DEPENDENCIES",
-     KwFriction, 0, NULL},
+    {"FRICTION", AT_MODEL, IN_INTERACTION, "LAGRANGE|ROUGH|SLIP TOLERANCE|ELASTIC SLIP", KwFriction, 0, NULL},
     {"GAP CONDUCTANCE", AT_MODEL, IN_INTERACTION, "PRESSURE|DEPENDENCIES|USER", KwGapConductance, 0, NULL},
     {"GAP RADIATION", AT_MODEL, IN_INTERACTION, "", KwGapRadiation, 0, NULL},
     {"GAP HEAT GENERATION", AT_MODEL, IN_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
@@ -2652,12 +2652,14 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
     for (PetscInt i = 0; i < d->nparam; i++) {
       /* An unknown parameter is ignored with a warning, unless ignoring it would change the model: data
        * from elsewhere (INPUT=, USER subroutines), field-variable dependence, cylindrical or spherical node
-       * coordinates, absolute amplitude values, a perturbation step, a composite section. Those are errors
+       * coordinates, absolute amplitude values, a perturbation step, a composite section, friction laws beyond
+       * constant Coulomb (a shear limit, decay, anisotropy). Those are errors
        * (found by mutating decks: each had run a different model with a warning only). */
       static const struct {
         const char *key, *harmless; /* the value that is the default, so harmless to ignore, or NULL */
       } Meaningful[] = {
-          {"USER", NULL}, {"INPUT", NULL}, {"DEPENDENCIES", "0"}, {"SYSTEM", "R"}, {"VALUE", "RELATIVE"}, {"PERTURBATION", NULL}, {"COMPOSITE", NULL},
+          {"USER", NULL},      {"INPUT", NULL},  {"DEPENDENCIES", "0"},       {"SYSTEM", "R"},       {"VALUE", "RELATIVE"}, {"PERTURBATION", NULL},
+          {"COMPOSITE", NULL}, {"TAUMAX", NULL}, {"EXPONENTIAL DECAY", NULL}, {"ANISOTROPIC", NULL},
       };
       if (ParamKnown(kw->params, d->pkey[i])) continue;
       for (size_t k = 0; k < sizeof(Meaningful) / sizeof(Meaningful[0]); k++) {

@@ -24,16 +24,21 @@ static PetscReal EvalVelocityDisplacement(TslProblem p, const TslLoadValue *h)
   return h->u0 + h->v0 * p->t + (h->v1 - h->v0) * (p->period > 0 ? 0.5 * p->t * p->t / p->period : p->t);
 }
 
+/* The value's own history (a velocity boundary condition's velocity) at step time t, total time ttot. */
+static PetscReal EvalAt(TslProblem p, const TslLoadValue *h, PetscReal t, PetscReal ttot)
+{
+  if (h->amp >= 0) {
+    const TslAmplitude *a = &p->m->amplitudes[h->amp];
+    return h->v1 * TslAmplitudeEval(a, a->total_time ? ttot : t);
+  }
+  if (h->amp == TSL_AMP_HOLD || p->amp_default == TSL_AMP_STEP) return h->v1;
+  return h->v0 + (h->v1 - h->v0) * (p->period > 0 ? t / p->period : 1.0);
+}
+
 PetscReal TslProblemEvalLoadValue(TslProblem p, const TslLoadValue *h)
 {
   if (!h->active) return 0;
-  if (h->velocity) return EvalVelocityDisplacement(p, h);
-  if (h->amp >= 0) {
-    const TslAmplitude *a = &p->m->amplitudes[h->amp];
-    return h->v1 * TslAmplitudeEval(a, a->total_time ? p->ttot : p->t);
-  }
-  if (h->amp == TSL_AMP_HOLD || p->amp_default == TSL_AMP_STEP) return h->v1;
-  return h->v0 + (h->v1 - h->v0) * (p->period > 0 ? p->t / p->period : 1.0);
+  return h->velocity ? EvalVelocityDisplacement(p, h) : EvalAt(p, h, p->t, p->ttot);
 }
 
 /* At a step change: the value reached becomes a constant, unless it follows a total-time amplitude. */
@@ -44,16 +49,11 @@ static void Freeze(TslProblem p, TslLoadValue *h)
   if (!h->active) return;
   if (h->amp >= 0 && p->m->amplitudes[h->amp].total_time) return;
   if (h->velocity) { /* the velocity reached is held, and the displacement goes on from where it is */
-    TslLoadValue    vel = *h;
-    const PetscReal t   = p->t;
-    vel.velocity        = PETSC_FALSE;
-    h->u0               = EvalVelocityDisplacement(p, h);
-    h->t0               = p->ttot;
+    h->u0 = EvalVelocityDisplacement(p, h);
+    h->t0 = p->ttot;
     /* the velocity at the step's end exactly (the last increment's time may fall short of it by a rounding):
      * an amplitude that jumps there, as one that stops the motion at the end, gives its later value */
-    p->t  = p->period > 0 ? p->period : t;
-    h->v0 = h->v1 = TslProblemEvalLoadValue(p, &vel);
-    p->t          = t;
+    h->v0 = h->v1 = EvalAt(p, h, p->period > 0 ? p->period : p->t, p->ttot);
     h->amp        = TSL_AMP_HOLD;
     return;
   }

@@ -129,7 +129,7 @@ tsl_deck_bad(assembly_unclosed assembly_unclosed.inp "error: assembly_unclosed.i
 # parameters that would change the physics if they were ignored with a warning
 tsl_deck_bad(boundary_acceleration boundary_acceleration.inp "error: boundary_acceleration.inp:31: *BOUNDARY, TYPE=ACCELERATION is not supported (DISPLACEMENT or VELOCITY)")
 tsl_deck_bad(boundary_velocity_temperature boundary_velocity_temperature.inp "error: boundary_velocity_temperature.inp:32: *BOUNDARY, TYPE=VELOCITY applies to displacement dofs")
-tsl_deck_bad(friction_taumax friction_taumax.inp "error: friction_taumax.inp:26: *FRICTION, TAUMAX is not supported yet")
+tsl_deck_bad(friction_taumax friction_taumax.inp "error: friction_taumax.inp:26: *FRICTION, TAUMAX=10. is not supported: ignoring it would change the model")
 tsl_deck_bad(friction_elastic_slip_lagrange friction_elastic_slip_lagrange.inp "error: friction_elastic_slip_lagrange.inp:26: *FRICTION: ELASTIC SLIP must be positive, and excludes LAGRANGE")
 tsl_deck_bad(node_system_cylindrical node_system_cylindrical.inp "error: node_system_cylindrical.inp:1: *NODE, SYSTEM=C is not supported: ignoring it would change the model")
 tsl_deck_bad(step_perturbation step_perturbation.inp "error: step_perturbation.inp:28: *STEP, PERTURBATION is not supported: ignoring it would change the model")
