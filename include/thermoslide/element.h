@@ -99,6 +99,8 @@ typedef struct {
   PetscInt      node_dof[TSL_MAX_NODE_DOF];  /* the dialect's dof number of each nodal unknown: 1..3, 5, 11; 0 unused */
   PetscInt      nextra;                      /* extra nodes at the end of the element's node list (CPEG: the reference node) */
   PetscInt      extra_dof[TSL_MAX_NODE_DOF]; /* the dialect's dofs of the extra node's slots (CPEG: 3, 4, 5), 0 unused */
+  PetscBool     pore;                        /* a pore pressure type (CPE4PT, ...): its dof 8 exists in the dialect and is
+                                                not active in the procedures thermoslide runs (docs/elements.md) */
   const char   *description;                 /* for docs and -help */
 } TslElementType;
 

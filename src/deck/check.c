@@ -336,6 +336,8 @@ static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
     CHECK(t->nextra == 0 && !TslKinematicsTwists(t->kin), l,
           "element type %s (%s) is not supported in explicit steps (its extra unknowns have no lumped mass; step %s at %s)", t->name,
           TslElementTypeKinematicsName(t), s->name, where);
+    CHECK(!t->pore, l, "element type %s is not supported in explicit steps (Abaqus/Explicit has no pore pressure elements; step %s at %s)", t->name,
+          s->name, where);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

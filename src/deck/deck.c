@@ -79,6 +79,9 @@ typedef struct {
   PetscInt             instance; /* the open *INSTANCE, or -1 */
   PetscBool            assembly; /* inside *ASSEMBLY ... *END ASSEMBLY */
   TslLoc               assembly_loc;
+
+  PetscBool pore;      /* a pore pressure element type was read (its dof 8 is accepted, and not active) */
+  PetscBool skip_line; /* set by a load's line function: the line is read and left out (a *BOUNDARY on dof 8) */
 } Deck;
 
 /* A part (*PART ... *END PART), read straight into the model with its ids shifted past those defined before
@@ -107,6 +110,8 @@ typedef struct DeckInstance {
 #define KLOC(d)            TSL_LOC_ARGS((d)->m, (d)->kwloc)
 #define USER_ERR(...)      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
 #define USER_CHECK(c, ...) PetscCheck(c, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
+/* Why the pore fluid's data is read past (docs/elements.md, "Pore pressure types"). */
+#define PORE_FLUID_NOTE "pore fluid flow is not modelled (the pore pressure of CPE4PT, ... is not active in coupled temperature-displacement steps)"
 
 /* ---- small string helpers -------------------------------------------------------------------- */
 
@@ -791,6 +796,7 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
   USER_CHECK(type >= 0, LOC_FMT "unknown element type %s", KLOC(d), tname);
   et = TslElementTypeGet(type);
   nn = et->geom->nnode;
+  if (et->pore) d->pore = PETSC_TRUE;
   if (!m->dim) m->dim = et->dim;
   USER_CHECK(m->dim == et->dim,
              LOC_FMT "element type %s is %" PetscInt_FMT "D but the model already has %" PetscInt_FMT "D elements (mixing is not supported)", KLOC(d),
@@ -1281,6 +1287,12 @@ static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw)
   PetscFunctionBeginUser;
   (void)kw;
   USER_CHECK(type && type[0], LOC_FMT "*INITIAL CONDITIONS needs the parameter TYPE=", KLOC(d));
+  if (!strcmp(type, "PORE PRESSURE") || !strcmp(type, "RATIO") || !strcmp(type, "SATURATION")) {
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *INITIAL CONDITIONS, TYPE=%s is ignored: %s\n", KLOC(d), type, PORE_FLUID_NOTE));
+    do PetscCall(DataLine(d, 0, &got));
+    while (got);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   for (size_t i = 0; i < sizeof(InitialTypes) / sizeof(InitialTypes[0]); i++)
     if (!strcmp(type, InitialTypes[i].type)) k = (PetscInt)i;
   USER_CHECK(k >= 0, LOC_FMT "*INITIAL CONDITIONS, TYPE=%s is not supported (only TEMPERATURE and VELOCITY)", KLOC(d), type);
@@ -1933,6 +1945,15 @@ static PetscErrorCode LineBoundary(Deck *d, TslLoad *l)
   l->dof_last = l->dof_first;
   if (d->nfield > 2 && d->field[2][0]) PetscCall(FieldInt(d, 2, "the last dof", &l->dof_last));
   PetscCall(FieldRealDefault(d, 3, "the prescribed value", 0.0, &l->value));
+  if (l->dof_first == 8 && l->dof_last == 8 && (d->pore || !d->m->nelem)) {
+    /* the pore pressure of CPE4PT, ...: not active in the procedures thermoslide runs (docs/elements.md) */
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          LOC_FMT "warning: *BOUNDARY on dof 8 (pore pressure) is ignored: the pore pressure is not active in coupled "
+                                  "temperature-displacement steps\n",
+                          DLOC(d)));
+    d->skip_line = PETSC_TRUE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(CheckDof(d, l->dof_first));
   PetscCall(CheckDof(d, l->dof_last));
   /* a range may not run from a displacement into the temperature: 4..10 are no dofs */
@@ -2110,6 +2131,10 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
     USER_CHECK(d->nfield >= 2, LOC_FMT "*%s data line is too short", DLOC(d), d->kw);
     PetscCall(ParseTarget(d, d->field[0], kw->kind <= TSL_LOAD_CFLUX ? PETSC_TRUE : PETSC_FALSE, &l.target));
     PetscCall(kw->line(d, &l));
+    if (d->skip_line) {
+      d->skip_line = PETSC_FALSE;
+      continue;
+    }
     USER_CHECK(!model || l.value == 0,
                LOC_FMT "*%s in the model data holds dofs at zero; a nonzero value (%g) needs a step: give this line inside *STEP ... *END STEP",
                DLOC(d), d->kw, (double)l.value);
@@ -2203,6 +2228,31 @@ static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw)
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The pore fluid's material data (*PERMEABILITY, *POROUS BULK MODULI): read past with a warning. The pore
+ * pressure types run in coupled temperature-displacement steps, where their pore pressure is not active. */
+static PetscErrorCode KwPoreFluid(Deck *d, const DeckKeyword *kw)
+{
+  PetscBool got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *%s is ignored: %s\n", KLOC(d), d->kw, PORE_FLUID_NOTE));
+  do PetscCall(DataLine(d, 0, &got));
+  while (got);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *SOILS: the consolidation procedure (pore fluid flow) is not one thermoslide runs. */
+static PetscErrorCode KwSoils(Deck *d, const DeckKeyword *kw)
+{
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_ERR(LOC_FMT
+           "*SOILS (coupled pore fluid diffusion and stress) is not supported: pore fluid flow is not modelled. The pore pressure "
+           "types (CPE4PT, CPE4PHT, CPE4RPT, CPE4RPHT) run in *COUPLED TEMPERATURE-DISPLACEMENT steps, where their pore pressure is not active",
+           KLOC(d));
 }
 
 static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
@@ -2535,6 +2585,9 @@ static const DeckKeyword Keywords[] = {
     {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
+    {"SOILS", AT_STEP, IN_NONE, NULL, KwSoils, 0, NULL},
+    {"PERMEABILITY", AT_MODEL, IN_MATERIAL, NULL, KwPoreFluid, 0, NULL},
+    {"POROUS BULK MODULI", AT_MODEL, IN_MATERIAL, NULL, KwPoreFluid, 0, NULL},
     {"DYNAMIC TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "EXPLICIT|DIRECT USER CONTROL|ELEMENT BY ELEMENT|SCALE FACTOR", KwDynamic, 0, NULL},
     {"FIXED MASS SCALING", AT_STEP, IN_NONE, "FACTOR|DT|ELSET|TYPE", KwMassScaling, 0, NULL},
     {"BULK VISCOSITY", AT_STEP, IN_NONE, "", KwBulkViscosity, 0, NULL},

@@ -13,13 +13,16 @@
  * their dialect dof numbers (0: a slot the kinematics does not use, held at zero), the extra nodes and their
  * dofs (generalized plane strain: the section's reference node, dofs 3, 4, 5). */
 // clang-format off
-#define PLANE_STRAIN TSL_KIN_PLANE_STRAIN, 2, 3, {1, 2, 11}, 0, {0}
-#define PLANE_STRESS TSL_KIN_PLANE_STRESS, 2, 3, {1, 2, 11}, 0, {0}
-#define GENPLANE     TSL_KIN_GENERALIZED_PLANE_STRAIN, 2, 4, {1, 2, 0, 11}, 1, {3, 4, 5, 0}
-#define AXISYMMETRIC TSL_KIN_AXISYMMETRIC, 2, 3, {1, 2, 11}, 0, {0}
-#define AXITWIST     TSL_KIN_AXISYMMETRIC_TWIST, 2, 4, {1, 2, 5, 11}, 0, {0}
-#define SOLID        TSL_KIN_SOLID3D, 3, 4, {1, 2, 3, 11}, 0, {0}
-#define CSHELL       TSL_KIN_CONTINUUM_SHELL, 3, 4, {1, 2, 3, 11}, 0, {0}
+#define PLANE_STRAIN TSL_KIN_PLANE_STRAIN, 2, 3, {1, 2, 11}, 0, {0}, PETSC_FALSE
+#define PLANE_STRESS TSL_KIN_PLANE_STRESS, 2, 3, {1, 2, 11}, 0, {0}, PETSC_FALSE
+#define GENPLANE     TSL_KIN_GENERALIZED_PLANE_STRAIN, 2, 4, {1, 2, 0, 11}, 1, {3, 4, 5, 0}, PETSC_FALSE
+#define AXISYMMETRIC TSL_KIN_AXISYMMETRIC, 2, 3, {1, 2, 11}, 0, {0}, PETSC_FALSE
+#define AXITWIST     TSL_KIN_AXISYMMETRIC_TWIST, 2, 4, {1, 2, 5, 11}, 0, {0}, PETSC_FALSE
+#define SOLID        TSL_KIN_SOLID3D, 3, 4, {1, 2, 3, 11}, 0, {0}, PETSC_FALSE
+#define CSHELL       TSL_KIN_CONTINUUM_SHELL, 3, 4, {1, 2, 3, 11}, 0, {0}, PETSC_FALSE
+/* Plane strain with a pore pressure (dof 8) that the coupled temperature-displacement procedure does not
+ * activate: the unknowns are plane strain's, the element its solid counterpart (docs/elements.md). */
+#define PORE_PLANE   TSL_KIN_PLANE_STRAIN, 2, 3, {1, 2, 11}, 0, {0}, PETSC_TRUE
 
 static const TslElementType Catalogue[] = {
     {"CPE3T",   &TslGeomTri3,   &TslFormFull,           PLANE_STRAIN, "3-node plane strain"},
@@ -30,6 +33,10 @@ static const TslElementType Catalogue[] = {
     {"CPE6MHT", &TslGeomTri6,   &TslFormModifiedHybrid, PLANE_STRAIN, "6-node modified second-order plane strain, hybrid"},
     {"CPE8T",   &TslGeomQuad8,  &TslFormFull,           PLANE_STRAIN, "8-node plane strain"},
     {"CPE8HT",  &TslGeomQuad8,  &TslFormHybrid,         PLANE_STRAIN, "8-node plane strain, hybrid"},
+    {"CPE4PT",   &TslGeomQuad4, &TslFormFull,          PORE_PLANE,   "4-node plane strain, pore pressure (not active)"},
+    {"CPE4PHT",  &TslGeomQuad4, &TslFormHybrid,        PORE_PLANE,   "4-node plane strain, pore pressure (not active), hybrid"},
+    {"CPE4RPT",  &TslGeomQuad4, &TslFormReduced,       PORE_PLANE,   "4-node plane strain, pore pressure (not active), reduced integration, hourglass control"},
+    {"CPE4RPHT", &TslGeomQuad4, &TslFormReducedHybrid, PORE_PLANE,   "4-node plane strain, pore pressure (not active), reduced integration, hourglass control, hybrid"},
     {"CPEG4T",   &TslGeomQuad4, &TslFormFull,           GENPLANE,     "4-node generalized plane strain"},
     {"CPEG4RT",  &TslGeomQuad4, &TslFormReduced,        GENPLANE,     "4-node generalized plane strain, reduced integration, hourglass control"},
     {"CPEG4RHT", &TslGeomQuad4, &TslFormReducedHybrid,  GENPLANE,     "4-node generalized plane strain, reduced integration, hourglass control, hybrid"},

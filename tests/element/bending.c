@@ -14,7 +14,8 @@
  *
  * 1. Locking (plane-strain and 3D types, 8 x 2 cells, 3D 8 x 2 x 1 with fixed sides): at nu = 0.4999
  *    the hybrid types must be within 10 % of the beam (second-order hybrid within 5 %) and within 10 %
- *    of their own nu = 0.3 deflection (no volumetric locking); the ratios of the others are printed, and
+ *    of their own nu = 0.3 deflection (no volumetric locking; the fully integrated bilinear hybrid at least
+ *    0.9 of it: its parasitic shear in bending depends on nu); the ratios of the others are printed, and
  *    the displacement-only CPE4T must lock (ratio < 0.5).
  * 2. Hourglass control (the reduced-integration types, nu = 0.3): on a coarse mesh (6 x 2) whose
  *    one-point stiffness is singular (the zero eigenvalues of int B^T D B dV at the centres are counted)
@@ -260,8 +261,14 @@ static PetscErrorCode Locking(TestLog *log)
       Check(log, r[1].deflection / r[1].reference, 1, tol, "%s (hybrid) nu=0.4999 tip deflection / beam", t->name);
     }
     if (t->form->pressure) {
-      Check(log, (r[1].deflection / r[1].reference) / (r[0].deflection / r[0].reference), 1, 0.10,
-            "%s (hybrid) tip/beam nu=0.4999 over tip/beam nu=0.3 (no volumetric locking)", t->name);
+      const PetscReal ratio = (r[1].deflection / r[1].reference) / (r[0].deflection / r[0].reference);
+      /* The fully integrated bilinear hybrid (CPE4PHT, Q1/P0) keeps the full rule's parasitic shear in bending,
+       * whose share depends on nu (0.82 of the beam at nu = 0.3, 0.92 at 0.4999 on 8 x 2): locking would take
+       * the ratio far below 1 (CPE4T: 0.026), so only its lower bound is asked of that type. */
+      if (t->geom->order == 1 && !t->form->hourglass)
+        CheckAtLeast(log, ratio, 0.9, "%s (hybrid) tip/beam nu=0.4999 over tip/beam nu=0.3 (no volumetric locking)", t->name);
+      else
+        Check(log, ratio, 1, 0.10, "%s (hybrid) tip/beam nu=0.4999 over tip/beam nu=0.3 (no volumetric locking)", t->name);
     }
     if (ti == cpe4t) CheckAtMost(log, r[1].deflection / r[1].reference, 0.5, "%s locks: nu=0.4999 tip deflection / beam", t->name);
   }

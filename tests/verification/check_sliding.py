@@ -14,7 +14,8 @@ conductance / radiation (5 steps):
         the check is (a) the ratio of drops equals the ratio of the area-averaged conductances at the
         measured nodal pressures (1 %: the drop itself is not exactly uniform), and (b) it lies within the
         bounds the measured pressure range allows around the nominal 4 (k(p_max,3)/k(p_min,4) to
-        k(p_min,3)/k(p_max,4)). Radiation: pressure-independent, = step 3 within 1e-6.
+        k(p_min,3)/k(p_max,4)). Radiation: pressure-independent, = step 3 within 1e-6 (surface to surface 5e-6: the
+        faces' current overlap changes with the pressure by O(dp / E)).
   2     sliding back and forth converges; energy balance of every increment within 1e-6 of the heat input
   5     after sliding off: the small block is isothermal (spread < 1e-6 of its mean), no heat crosses the
         interface, every secondary node is open
@@ -232,7 +233,10 @@ if series == "conductance":
     check_true("step 4 / step 3 mean drop = 4 within the pressure-spread bounds", lo * 0.99 <= ratio <= hi * 1.01,
                "%.4f in [%.4f, %.4f] (nominal 4)" % (ratio, lo, hi))
 else:
-    check("step 4 / step 3 mean temperature drop across the interface", drops[4] / drops[3], 1.0, 1e-6, relative=True)
+    # Surface to surface integrates over the faces' current overlap, which step 4's added pressure changes by
+    # O(dp / E) = 100 / 30e6 = 3.3e-6 (the drop ratio's deviation scales with 1 / E: CPE4RPT 1.2e-6 at E = 30e6,
+    # 1.2e-7 at 300e6); node to surface weighs its nodes in the reference configuration (~5e-8).
+    check("step 4 / step 3 mean temperature drop across the interface", drops[4] / drops[3], 1.0, 5e-6 if surf else 1e-6, relative=True)
 
 if "auglagr" in job:
     f4 = r.frame_of_step(4)

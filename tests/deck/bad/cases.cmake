@@ -135,3 +135,7 @@ tsl_deck_bad(node_system_cylindrical node_system_cylindrical.inp "error: node_sy
 tsl_deck_bad(step_perturbation step_perturbation.inp "error: step_perturbation.inp:28: *STEP, PERTURBATION is not supported: ignoring it would change the model")
 tsl_deck_bad(conductivity_field_dependence conductivity_field_dependence.inp "error: conductivity_field_dependence.inp:13: *CONDUCTIVITY, DEPENDENCIES=1 is not supported")
 tsl_deck_bad(node_input_file node_input_file.inp "error: node_input_file.inp:1: *NODE, INPUT=nodes.inp is not supported")
+# The pore pressure types run in coupled temperature-displacement steps, where their pore pressure is not active.
+tsl_deck_bad(pore_soils_step pore_soils_step.inp "error: pore_soils_step.inp:29: *SOILS (coupled pore fluid diffusion and stress) is not supported: pore fluid flow is not modelled.")
+tsl_deck_bad(pore_dof_without_pore_type pore_dof_without_pore_type.inp "error: pore_dof_without_pore_type.inp:32: bad degree of freedom 8 (valid: 1, 2, 11)")
+tsl_deck_bad(pore_explicit pore_explicit.inp "error: pore_explicit.inp:9: element type CPE4RPT is not supported in explicit steps (Abaqus/Explicit has no pore pressure elements")
