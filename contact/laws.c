@@ -41,10 +41,11 @@ PetscErrorCode TslContactLawSetDefaults(TslContactLaw *law)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps, PetscReal eps_t)
+void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps, PetscReal eps_t, PetscReal p_offset)
 {
-  law->normal = TSL_CONTACT_NORMAL_PENALTY;
-  law->eps_n  = eps;
+  law->normal   = TSL_CONTACT_NORMAL_PENALTY;
+  law->eps_n    = eps;
+  law->p_offset = p_offset;
   if (law->friction == TSL_CONTACT_FRICTION_PENALTY) law->eps_t = eps_t, law->elastic_slip = 0;
 }
 
@@ -97,6 +98,7 @@ TslDual TslContactNormalPressure(const TslContactLaw *law, const TslContactState
   TslDual a = DScale(-law->eps_n, g);
 
   if (law->normal == TSL_CONTACT_NORMAL_AUGMENTED) a = DAddC(a, h->lambda);
+  if (law->p_offset != 0) a = DAddC(a, law->p_offset);
   *closed = (PetscBool)(a.v >= -1e-12 * law->eps_n * L);
   return a.v >= 0 ? a : DConst(0);
 }

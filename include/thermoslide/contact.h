@@ -127,7 +127,9 @@ typedef enum {
 
 typedef struct {
   TslContactNormalMethod normal;
-  PetscReal              eps_n; /* normal penalty stiffness (force/length^3: pressure per penetration) */
+  PetscReal              eps_n;    /* normal penalty stiffness (force/length^3: pressure per penetration) */
+  PetscReal              p_offset; /* added to the normal pressure before its <.>: pN = <p_offset + eps_n (-g)>; 0 but for
+                                      the kinematic corrector's last evaluation (TslContactKinematicLaw) */
 
   TslContactFrictionMethod friction;
   PetscReal                mu;           /* Coulomb coefficient */
@@ -163,7 +165,7 @@ PetscErrorCode TslContactLawSetDefaults(TslContactLaw *law);
  * closing stiffness, no elastic slip tolerance), so that a sticking node's predicted slip is undone in the
  * same increment. The thermal
  * interaction and LAGRANGE friction are the law's own. */
-void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps, PetscReal eps_t);
+void TslContactKinematicLaw(TslContactLaw *law, PetscReal eps, PetscReal eps_t, PetscReal p_offset);
 
 /* Gap radiation constant (Abaqus Theory Guide, "Thermal contact properties"):
  *   C = F sigma / (1/eps_A + 1/eps_B - 1)

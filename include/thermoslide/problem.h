@@ -174,13 +174,17 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem prob, Vec M, Vec M
  * node's gap after the correction -hh M^-1 Fk (Fk the corrector's forces so far, summed on their owners) from
  * its predicted gap and the relative normal displacement, the pressure change -k_s g / A_s that closes it,
  * limited so that the node's pressure stays >= 0. change[0], change[1]: the largest change and the largest
- * pressure over the ranks. When change[0] > tol change[1] the changes are applied (CPRESS) and their forces
- * put in W (zeroed first, summed on their owners; *applied), else nothing changes. */
-PetscErrorCode TslProblemContactKinematicPass(TslProblem prob, Vec Fk, Vec M, Vec Mask, Vec W, PetscReal hh, PetscReal tol, PetscReal change[2],
-                                              PetscBool *applied);
-/* After passes: each penetrating kinematic node's normal penalty becomes the one that gives it the passes'
- * pressure at its predicted gap, so that evaluating the kinematic pairs again at the predicted state
- * (TslProblemExplicitKinematicForces) gives those pressures with the friction and heat that go with them. */
+ * pressure over the ranks; change[2] the largest complementarity residual of the linearised gaps (a penetration,
+ * or the opening of a node still pressed) over its pair's search radius. The changes are applied (CPRESS) and
+ * their forces put in W (zeroed first, summed on their owners; *applied) while change[0] > tol change[1], and
+ * (gap_tol > 0) after that while change[2] is above gap_tol and below 0.9 of *residual (the previous pass's,
+ * updated here: the iteration still closes the gaps); else nothing changes. */
+PetscErrorCode TslProblemContactKinematicPass(TslProblem prob, Vec Fk, Vec M, Vec Mask, Vec W, PetscReal hh, PetscReal tol, PetscReal gap_tol,
+                                              PetscReal *residual, PetscReal change[3], PetscBool *applied);
+/* After passes: each kinematic node that penetrates at the predicted state or that the passes left pressed gets
+ * the pressure offset that gives it the passes' pressure at its predicted gap, so that evaluating the kinematic
+ * pairs again at the predicted state (TslProblemExplicitKinematicForces) gives those pressures with the friction
+ * and heat that go with them. */
 PetscErrorCode TslProblemContactKinematicSettle(TslProblem prob);
 PetscErrorCode TslProblemExplicitKinematicForces(TslProblem prob, Vec Fk, TslExplicitRates *rates);
 /* Lumped nodal mass in the displacement slots (element e's mass times scale[e]; scale NULL: 1) and lumped

@@ -134,7 +134,7 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
       kl  = cs->law;
       law = &kl;
       const PetscReal ek = cn->k_kin / TslProblemContactNodeArea(p, cn);
-      TslContactKinematicLaw(&kl, cn->has_eps_kin ? cn->eps_kin : ek, ek);
+      TslContactKinematicLaw(&kl, ek, ek, cn->settled ? cn->p_kin : 0);
     } else law = &cs->law;
     nu = cs->nu;
     if (cs->dim == 3) PetscCall(TslProblemContact3Input(p, cn, xa, &in3, nodes, &n));

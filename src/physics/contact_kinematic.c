@@ -137,8 +137,8 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask
     PetscReal                N[TSL_CONTACT3_MAX_FACE_NODES], nrm[3], len, inv;
     PetscInt                 main[TSL_CONTACT3_MAX_FACE_NODES], n;
 
-    cn->k_kin       = 0;
-    cn->has_eps_kin = PETSC_FALSE;
+    cn->k_kin   = 0;
+    cn->settled = PETSC_FALSE;
     if (cn->seg < 0 || !cs->kinematic) continue;
     /* the direction of the correction: the normal of the node's last evaluation (any, before the first) */
     LastNormal(p, cn, nrm);
@@ -184,12 +184,13 @@ static PetscReal LinearGap(TslProblem p, const TslContactNode *cn, const PetscSc
   return g;
 }
 
-PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec Mask, Vec W, PetscReal hh, PetscReal tol, PetscReal change[2], PetscBool *applied)
+PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec Mask, Vec W, PetscReal hh, PetscReal tol, PetscReal gap_tol,
+                                              PetscReal *residual, PetscReal change[3], PetscBool *applied)
 {
   Vec          wl;
   PetscScalar *w;
   LocalRead    fk, m, mask;
-  PetscReal    loc[2] = {0, 0};
+  PetscReal    loc[3] = {0, 0, 0};
 
   PetscFunctionBeginUser;
   *applied = PETSC_FALSE;
@@ -199,8 +200,13 @@ PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec M
   PetscCall(LocalReadGet(Mask, &mask));
   for (PetscInt pass = 0; pass < 2; pass++) { /* the changes, then (if any is worth it) their forces */
     if (pass == 1) {
-      PetscCall(MPIU_Allreduce(loc, change, 2, MPIU_REAL, MPIU_MAX, p->comm));
-      if (change[0] <= tol * change[1]) break;
+      PetscBool go;
+      PetscCall(MPIU_Allreduce(loc, change, 3, MPIU_REAL, MPIU_MAX, p->comm));
+      /* the pressures still moving, or (gap_tol > 0) gaps (penetrations, pressed nodes gone open) above gap_tol that
+       * the passes still close: the pressure criterion alone leaves overlaps in proportion to tol on triangle faces */
+      go        = (PetscBool)(change[0] > tol * change[1] || (gap_tol > 0 && change[2] > gap_tol && change[2] < 0.9 * *residual));
+      *residual = change[2];
+      if (!go) break;
       *applied = PETSC_TRUE;
       PetscCall(VecGhostGetLocalForm(W, &wl));
       PetscCall(VecZeroEntries(wl));
@@ -219,6 +225,7 @@ PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec M
       if (pass == 0) {
         loc[0] = PetscMax(loc[0], PetscAbsReal(dp));
         loc[1] = PetscMax(loc[1], cn->out.pressure);
+        loc[2] = PetscMax(loc[2], (g < 0 ? -g : cn->out.pressure > 0 ? g : 0) / cs->search_radius);
         continue;
       }
       /* residual form, as the kernels: R_s = -A dp n, R_j = +A dp N_j n */
@@ -241,14 +248,19 @@ PetscErrorCode TslProblemContactKinematicPass(TslProblem p, Vec Fk, Vec M, Vec M
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Each node the passes left pressed, or that penetrates at the predicted state, gets the pressure offset that makes
+ * its normal law p = <p_kin + (k_s / A) (-g)> give the passes' pressure at its predicted gap: the node's own
+ * stiffness, whatever the gap (a node pressed by the passes while its predicted gap is open, or a gap at round-off,
+ * keeps its pressure; a penalty p / -g could do neither). A node open at the predicted state that the passes left
+ * without pressure stays open (no gap conductance). */
 PetscErrorCode TslProblemContactKinematicSettle(TslProblem p)
 {
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode *cn = &p->cnode[i];
-    if (cn->seg < 0 || !p->csurf[cn->pair].kinematic || !(cn->k_kin > 0) || !(cn->out.gap < 0)) continue;
-    cn->has_eps_kin = PETSC_TRUE;
-    cn->eps_kin     = cn->out.pressure / -cn->out.gap;
+    if (cn->seg < 0 || !p->csurf[cn->pair].kinematic || !(cn->k_kin > 0) || !(cn->out.gap < 0 || cn->out.pressure > 0)) continue;
+    cn->settled = PETSC_TRUE;
+    cn->p_kin   = cn->out.pressure + cn->k_kin / TslProblemContactNodeArea(p, cn) * cn->out.gap;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -43,8 +43,8 @@ typedef struct {
   TslContactOutput  out;            /* last evaluation */
   PetscBool         fresh;          /* evaluated since the last commit (a kinematic pair commits only such nodes) */
   PetscReal         k_kin;          /* kinematic pairs: the stiffness that closes the node's gap in one increment */
-  PetscBool         has_eps_kin;    /* ... and, after further corrector passes, the normal penalty eps_kin that gives the */
-  PetscReal         eps_kin;        /*     node the passes' pressure at the predicted state (friction and heat follow it) */
+  PetscBool         settled;        /* ... and, after further corrector passes, the pressure offset p_kin that gives the node */
+  PetscReal         p_kin;          /*     the passes' pressure at the predicted state (friction and heat follow it) */
 } TslContactNode;
 
 /* Storage of the neighbours' nodes that a TslContactInput points to (smoothing). */

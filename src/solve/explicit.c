@@ -35,6 +35,7 @@ typedef struct {
   Vec             W;               /* contact: a work vector (the corrector's, the interface's row sums for the stable increment; NULL without) */
   PetscInt        kin_passes, kin_total; /* -tsl_explicit_kinematic_passes (most corrector passes per increment); passes made in the step */
   PetscReal       kin_tol;         /* -tsl_explicit_kinematic_tol: passes stop when the pressure change is below this fraction of the largest */
+  PetscReal        kin_gap;         /* -tsl_explicit_kinematic_gap_tol: ... and no gap left above this (over the search radius) still shrinks */
   PetscReal       *dt_mech, *dt_heat, *scale, *eta, *eta2; /* [nelem] element stable increments, mass scale factors, b1 L_e / c_d, (b2 L_e / c_d)^2 */
   PetscReal       dt_stable, dt;   /* stable increment (with safety) and the increment used */
   PetscReal       lim_mech, lim_heat;   /* limits of the elements: mechanical, thermal */
@@ -64,6 +65,7 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
   d->explicit_search   = 10;
   d->explicit_kin_passes = 20;
   d->explicit_kin_tol    = 1e-3;
+  d->explicit_kin_gap    = 0;
   d->explicit_records    = PETSC_TRUE;
   PetscOptionsBegin(d->comm, NULL, "thermoslide explicit dynamics", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_safety", "explicit: factor on the element-by-element stable increment", 0, PETSC_TRUE, 1,
@@ -78,6 +80,10 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
                           &d->explicit_kin_passes));
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_kinematic_tol", "explicit: kinematic corrector passes stop at this pressure change (fraction of the largest pressure)",
                            0, PETSC_FALSE, 1, PETSC_FALSE, &d->explicit_kin_tol));
+  PetscCall(TslOptionsReal(
+      PetscOptionsObject, "-tsl_explicit_kinematic_gap_tol",
+      "explicit: kinematic corrector passes also go on while a gap left (over the search radius) exceeds this and still shrinks (0: off)", 0,
+      PETSC_FALSE, 1, PETSC_FALSE, &d->explicit_kin_gap));
   PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_explicit_records", "explicit: element force records (geometry and conduction computed once; docs/explicit.md)",
                            &d->explicit_records));
   PetscOptionsEnd();
@@ -325,13 +331,14 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
   PetscCall(TslProblemExplicitKinematicForces(x->p, x->Fk, &x->krates));
   x->kin_total++;
   passes = 1;
+  PetscReal residual = PETSC_MAX_REAL;
   for (PetscInt pass = 1; pass < x->kin_passes; pass++) {
     /* what the lumped compliance left of a rough penetration (or the pressure of a node it opened) is
      * corrected again from the linearised gaps, normal forces only, unless no pressure would change by
      * more than the tolerance (the quasi-static case: one pass) */
-    PetscReal change[2];
+    PetscReal change[3];
     PetscBool applied;
-    PetscCall(TslProblemContactKinematicPass(x->p, x->Fk, x->M, x->Mask, x->W, h * h_avg, x->kin_tol, change, &applied));
+    PetscCall(TslProblemContactKinematicPass(x->p, x->Fk, x->M, x->Mask, x->W, h * h_avg, x->kin_tol, x->kin_gap, &residual, change, &applied));
     if (!applied) break;
     PetscCall(VecAXPY(x->Fk, 1.0, x->W));
     x->kin_total++;
@@ -561,6 +568,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   x.search_every = d->explicit_search;
   x.kin_passes   = d->explicit_kin_passes;
   x.kin_tol      = d->explicit_kin_tol;
+  x.kin_gap      = d->explicit_kin_gap;
   PetscCall(PetscPrintf(d->comm, "step %" PetscInt_FMT " (%s): explicit dynamics, period %g%s\n", s + 1, x.step->name[0] ? x.step->name : "-",
                         (double)x.step->period, x.step->dt_user > 0 ? ", fixed increment (DIRECT USER CONTROL)" : ""));
   PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));

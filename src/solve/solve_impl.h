@@ -63,6 +63,7 @@ typedef struct {
   PetscInt  explicit_search;   /* -tsl_explicit_contact_search */
   PetscInt  explicit_kin_passes; /* -tsl_explicit_kinematic_passes */
   PetscReal explicit_kin_tol;    /* -tsl_explicit_kinematic_tol */
+  PetscReal explicit_kin_gap;    /* -tsl_explicit_kinematic_gap_tol (0: the pressure criterion alone) */
   PetscBool explicit_records;    /* -tsl_explicit_records */
 } Driver;
 
