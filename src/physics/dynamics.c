@@ -360,8 +360,9 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
     PetscCall(VecGhostGetLocalForm(V, &vl));
     PetscCall(VecGetArrayRead(vl, &c.v));
   }
-  /* the state's own local form, ghosts updated (no copy into the problem's work vector: the state is read only) */
-  PetscCall(TslGhostUpdate(p->X, INSERT_VALUES, SCATTER_FORWARD));
+  /* the state's own local form (no copy into the problem's work vector: the state is read only), its ghosts
+   * current: the explicit procedure applies the prescribed values last whenever it has moved the state (at the
+   * step's start and at the end of each increment), and that updates them, so no scatter here */
   PetscCall(VecGhostGetLocalForm(p->X, &xl));
   PetscCall(VecGetArrayRead(xl, &xa));
   PetscCall(BeginLocal(Fi, &il, &c.fi));
@@ -415,7 +416,10 @@ PetscErrorCode TslProblemExplicitKinematicForces(TslProblem p, Vec Fk, TslExplic
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&heat, sizeof(heat)));
-  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  /* the state's own local form: its ghosts are current (the corrector applied the prescribed values, which
+   * updates them, and nothing moves between its evaluations), so no copy and no scatter of its own */
+  PetscCall(VecGhostGetLocalForm(p->X, &xl));
+  PetscCall(VecGetArrayRead(xl, &xa));
   PetscCall(BeginLocal(Fk, &kl, &fk));
   p->select_kinematic = PETSC_TRUE;
   PetscCall(TslCaptureBegin());
@@ -425,7 +429,8 @@ PetscErrorCode TslProblemExplicitKinematicForces(TslProblem p, Vec Fk, TslExplic
   PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
   PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit kinematic contact: %s", p->fail_msg);
   PetscCall(EndLocal(Fk, &kl, &fk));
-  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscCall(VecRestoreArrayRead(xl, &xa));
+  PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
   loc[0] = heat.interface, loc[1] = heat.dissipation, loc[2] = heat.friction_heat;
   PetscCall(MPIU_Allreduce(loc, g, 3, MPIU_REAL, MPIU_SUM, p->comm));
   PetscCall(PetscMemzero(rates, sizeof(*rates)));

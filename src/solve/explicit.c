@@ -360,7 +360,7 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
 static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal h_prev, PetscReal t_new, PetscReal total_new)
 {
   PetscScalar       *u, *v;
-  const PetscScalar *uo, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL;
+  const PetscScalar *uo, *xr, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
   const PetscReal    h_avg = h_prev > 0 ? 0.5 * (h + h_prev) : 0.5 * h; /* from rest at the start: v_{1/2} = dt/2 a_0 */
   PetscReal          loc[7] = {0, 0, 0, 0, 0, 0, 0}, g[7];
@@ -393,13 +393,13 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecRestoreArray(x->X, &u));
   /* prescribed values at t_{n+1} */
   PetscCall(TslProblemSetTime(x->p, t_new, h, total_new));
-  PetscCall(TslProblemApplyPrescribed(x->p, x->X));
-  PetscCall(VecGetArray(x->X, &u));
+  PetscCall(TslProblemApplyPrescribed(x->p, x->X)); /* its ghost update is the state's for the next evaluation */
+  PetscCall(VecGetArrayRead(x->X, &xr));
   PetscCall(VecGetArrayRead(x->Xold, &uo));
   for (PetscInt i = 0, c = 0; i < n; i++, c = c == th ? 0 : c + 1) { /* prescribed dofs: velocity, reaction and work; stored heat */
     PetscReal fcon, f, vo, w, s, rate = 0;
     if (c == th) {
-      rate = m[i] * (u[i] - uo[i]) / h; /* heat stored at the node per unit time */
+      rate = m[i] * (xr[i] - uo[i]) / h; /* heat stored at the node per unit time */
       loc[6] += rate;
     }
     if (mask[i] == 0) continue; /* the forces are read only at prescribed dofs: most of their cache lines are not touched */
@@ -408,7 +408,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
       loc[5] += rate - f; /* heat the prescribed temperature brings in */
       continue;
     }
-    v[i] = (u[i] - uo[i]) / h;
+    v[i] = (xr[i] - uo[i]) / h;
     s    = m[i] * (v[i] - vo) / h_avg - f; /* the support's force at time n */
     w    = h_avg * 0.5 * (vo + v[i]);
     loc[0] += fi[i] * w;
@@ -416,7 +416,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     loc[2] += fcon * w;
   }
   PetscCall(VecRestoreArrayRead(x->Xold, &uo));
-  PetscCall(VecRestoreArray(x->X, &u));
+  PetscCall(VecRestoreArrayRead(x->X, &xr));
   if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
   if (x->Fk) PetscCall(VecRestoreArrayRead(x->Fk, &fk));
   PetscCall(VecRestoreArrayRead(x->Fe, &fe));
@@ -424,7 +424,6 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecRestoreArrayRead(x->Mask, &mask));
   PetscCall(VecRestoreArrayRead(x->M, &m));
   PetscCall(VecRestoreArray(x->V, &v));
-  PetscCall(TslGhostUpdate(x->X, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_SUM, x->comm));
   /* a run that has left the stable range (a DIRECT USER CONTROL increment above the stable one, a contact
    * spring or quadratic viscosity the estimate did not see) grows until it overflows: every rank sees the same
