@@ -166,7 +166,7 @@ PetscErrorCode TslProblemInitialVelocity(TslProblem prob, Vec V, PetscInt *held)
  * TslProblemExplicitForces' Fc and of the stable increment's contact term. KinematicStiffness (collective):
  * each kinematic node's stiffness that closes its gap in an increment with h h_avg = hh, from the lumped
  * masses M and the prescribed-dof mask Mask (ghosts updated), W a work vector. KinematicForces (collective):
- * the kinematic pairs' forces and heat at the current solution (the predicted state) into Fk, as Fc, and
+ * the kinematic pairs' forces and heat at the current solution (the predicted state, its ghosts current) into Fk, as Fc, and
  * their heat rates. */
 PetscErrorCode TslProblemContactSetKinematic(TslProblem prob, PetscBool explicit_step, PetscBool *any);
 PetscErrorCode TslProblemContactKinematicStiffness(TslProblem prob, Vec M, Vec Mask, Vec W, PetscReal hh);

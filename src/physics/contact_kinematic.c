@@ -125,8 +125,7 @@ PetscErrorCode TslProblemContactKinematicStiffness(TslProblem p, Vec M, Vec Mask
   PetscCall(VecRestoreArray(wl, &w));
   PetscCall(VecGhostRestoreLocalForm(W, &wl));
   PetscCall(TslGhostUpdate(W, ADD_VALUES, SCATTER_REVERSE));
-  PetscCall(TslGhostUpdate(W, INSERT_VALUES, SCATTER_FORWARD));
-  PetscCall(TslGhostUpdate(M, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(W, INSERT_VALUES, SCATTER_FORWARD)); /* M's ghosts: kept current by the caller */
 
   PetscCall(LocalReadGet(W, &load));
   PetscCall(LocalReadGet(M, &m));

@@ -224,6 +224,7 @@ static PetscErrorCode Masses(Explicit *x, Energies *en, PetscBool report)
   PetscCall(VecRestoreArrayRead(x->M, &m));
   PetscCall(VecRestoreArrayRead(M0, &m0));
   PetscCall(VecDestroy(&M0));
+  PetscCall(TslGhostUpdate(x->M, INSERT_VALUES, SCATTER_FORWARD)); /* once per change: the corrector reads main nodes' masses */
   if (report) {
     Vec                Mu;
     const PetscScalar *mu;
