@@ -1277,6 +1277,22 @@ static const struct {
     {"VELOCITY", InitialVelocityLine},
 };
 
+/* A keyword's data lines read past, with a warning at its line naming it (what; NULL: the keyword) and why
+ * (NULL: no reason given). */
+static PetscErrorCode ReadPast(Deck *d, const char *what, const char *why)
+{
+  PetscBool got;
+
+  PetscFunctionBeginUser;
+  if (what)
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: %s is ignored%s%s\n", KLOC(d), what, why ? ": " : "", why ? why : ""));
+  else
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *%s is ignored%s%s\n", KLOC(d), d->kw, why ? ": " : "", why ? why : ""));
+  do PetscCall(DataLine(d, 0, &got));
+  while (got);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw)
 {
   char        buf[32];
@@ -1288,9 +1304,9 @@ static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw)
   (void)kw;
   USER_CHECK(type && type[0], LOC_FMT "*INITIAL CONDITIONS needs the parameter TYPE=", KLOC(d));
   if (!strcmp(type, "PORE PRESSURE") || !strcmp(type, "RATIO") || !strcmp(type, "SATURATION")) {
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *INITIAL CONDITIONS, TYPE=%s is ignored: %s\n", KLOC(d), type, PORE_FLUID_NOTE));
-    do PetscCall(DataLine(d, 0, &got));
-    while (got);
+    char what[64];
+    PetscCall(PetscSNPrintf(what, sizeof(what), "*INITIAL CONDITIONS, TYPE=%s", type));
+    PetscCall(ReadPast(d, what, PORE_FLUID_NOTE));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (size_t i = 0; i < sizeof(InitialTypes) / sizeof(InitialTypes[0]); i++)
@@ -2230,20 +2246,6 @@ static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The pore fluid's material data (*PERMEABILITY, *POROUS BULK MODULI): read past with a warning. The pore
- * pressure types run in coupled temperature-displacement steps, where their pore pressure is not active. */
-static PetscErrorCode KwPoreFluid(Deck *d, const DeckKeyword *kw)
-{
-  PetscBool got;
-
-  PetscFunctionBeginUser;
-  (void)kw;
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *%s is ignored: %s\n", KLOC(d), d->kw, PORE_FLUID_NOTE));
-  do PetscCall(DataLine(d, 0, &got));
-  while (got);
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* *SOILS: the consolidation procedure (pore fluid flow) is not one thermoslide runs. */
 static PetscErrorCode KwSoils(Deck *d, const DeckKeyword *kw)
 {
@@ -2255,15 +2257,13 @@ static PetscErrorCode KwSoils(Deck *d, const DeckKeyword *kw)
            KLOC(d));
 }
 
+/* A keyword read past with a warning; kind IGNORED_PORE_FLUID: the pore fluid's material data (*PERMEABILITY,
+ * *POROUS BULK MODULI), which the pore pressure types do not use in coupled temperature-displacement steps. */
+#define IGNORED_PORE_FLUID 1
 static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
 {
-  PetscBool got;
-
   PetscFunctionBeginUser;
-  (void)kw;
-  PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *%s is ignored\n", KLOC(d), d->kw));
-  do PetscCall(DataLine(d, 0, &got));
-  while (got);
+  PetscCall(ReadPast(d, NULL, kw->kind == IGNORED_PORE_FLUID ? PORE_FLUID_NOTE : NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2586,8 +2586,8 @@ static const DeckKeyword Keywords[] = {
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
     {"SOILS", AT_STEP, IN_NONE, NULL, KwSoils, 0, NULL},
-    {"PERMEABILITY", AT_MODEL, IN_MATERIAL, NULL, KwPoreFluid, 0, NULL},
-    {"POROUS BULK MODULI", AT_MODEL, IN_MATERIAL, NULL, KwPoreFluid, 0, NULL},
+    {"PERMEABILITY", AT_MODEL, IN_MATERIAL, NULL, KwIgnored, IGNORED_PORE_FLUID, NULL},
+    {"POROUS BULK MODULI", AT_MODEL, IN_MATERIAL, NULL, KwIgnored, IGNORED_PORE_FLUID, NULL},
     {"DYNAMIC TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "EXPLICIT|DIRECT USER CONTROL|ELEMENT BY ELEMENT|SCALE FACTOR", KwDynamic, 0, NULL},
     {"FIXED MASS SCALING", AT_STEP, IN_NONE, "FACTOR|DT|ELSET|TYPE", KwMassScaling, 0, NULL},
     {"BULK VISCOSITY", AT_STEP, IN_NONE, "", KwBulkViscosity, 0, NULL},

@@ -133,7 +133,7 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
       if (!(cn->k_kin > 0)) continue; /* both sides prescribed (or no mass): nothing to correct */
       kl  = cs->law;
       law = &kl;
-      const PetscReal ek = cn->k_kin / TslProblemContactNodeArea(p, cn);
+      const PetscReal ek = TslProblemContactKinematicPenalty(p, cn);
       TslContactKinematicLaw(&kl, ek, ek, cn->settled ? cn->p_kin : 0);
     } else law = &cs->law;
     nu = cs->nu;

@@ -259,7 +259,7 @@ PetscErrorCode TslProblemContactKinematicSettle(TslProblem p)
     TslContactNode *cn = &p->cnode[i];
     if (cn->seg < 0 || !p->csurf[cn->pair].kinematic || !(cn->k_kin > 0) || !(cn->out.gap < 0 || cn->out.pressure > 0)) continue;
     cn->settled = PETSC_TRUE;
-    cn->p_kin   = cn->out.pressure + cn->k_kin / TslProblemContactNodeArea(p, cn) * cn->out.gap;
+    cn->p_kin   = cn->out.pressure + TslProblemContactKinematicPenalty(p, cn) * cn->out.gap;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

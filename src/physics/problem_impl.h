@@ -212,6 +212,11 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p);
 /* The contact area A of a secondary node: tributary length x thickness (or x 2 pi r), or the 3D tributary area
  * (reference configuration; the kernels' out.area). */
 PetscReal TslProblemContactNodeArea(TslProblem p, const TslContactNode *cn);
+/* A kinematic node's normal penalty k_s / A_s: the pressure per penetration that closes its gap in one increment. */
+static inline PetscReal TslProblemContactKinematicPenalty(TslProblem p, const TslContactNode *cn)
+{
+  return cn->k_kin / TslProblemContactNodeArea(p, cn);
+}
 /* 3D node-to-surface (contact3.c): the kernel input of a paired node (its local nodes in kernel order, *n of
  * them), the pairing of the pair's owned secondary nodes (*changed counts new pairings), whether a converged
  * projection left its face, and the nodal normals at the state xa (at set-up and after each accepted
