@@ -82,6 +82,7 @@ typedef struct {
 
   PetscBool pore;      /* a pore pressure element type was read (its dof 8 is accepted, and not active) */
   PetscBool skip_line; /* set by a load's line function: the line is read and left out (a *BOUNDARY on dof 8) */
+  PetscBool node_normal_warned; /* the warning that *NODE normal directions are ignored was given */
 } Deck;
 
 /* A part (*PART ... *END PART), read straight into the model with its ids shifted past those defined before
@@ -111,6 +112,8 @@ typedef struct DeckInstance {
 #define USER_ERR(...)      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
 #define USER_CHECK(c, ...) PetscCheck(c, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
 /* Why the pore fluid's data is read past (docs/elements.md, "Pore pressure types"). */
+#define CONTROLS_NOTE                                                                                                                                \
+  "the solver's own increment and Newton controls apply (options -tsl_cutback, -snes_rtol, ...: docs/running.md); they do not read it"
 #define PORE_FLUID_NOTE "pore fluid flow is not modelled (the pore pressure of CPE4PT, ... is not active in coupled temperature-displacement steps)"
 
 /* ---- small string helpers -------------------------------------------------------------------- */
@@ -198,6 +201,16 @@ static PetscErrorCode FieldRealDefault(Deck *d, PetscInt i, const char *what, Pe
     *x = def;
   else
     PetscCall(DeckReal(d, d->field[i], what, x));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* As FieldRealDefault, and a zero also takes the default: the dialect's increment limits, where CalculiX's own
+ * decks write 0 for "not given" (its test deck contact9.inp: ".000001,.0024,0.,0.00005"). */
+static PetscErrorCode FieldRealDefaultZero(Deck *d, PetscInt i, const char *what, PetscReal def, PetscReal *x)
+{
+  PetscFunctionBeginUser;
+  PetscCall(FieldRealDefault(d, i, what, def, x));
+  if (*x == 0) *x = def;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -747,7 +760,7 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
     PetscInt id;
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
-    USER_CHECK(d->nfield >= 2 && d->nfield <= 4, LOC_FMT "*NODE data line needs: id, x[, y[, z]]", DLOC(d));
+    USER_CHECK(d->nfield >= 2 && d->nfield <= 7, LOC_FMT "*NODE data line needs: id, x[, y[, z[, normal's nx, ny, nz]]]", DLOC(d));
     PetscCall(FieldId(d, 0, "the node id", &id));
     id += IdShift(d, -1, PETSC_TRUE);
     PetscCall(TslDeckGrow(&m->node_id, sizeof(PetscInt), m->nnode));
@@ -757,6 +770,17 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
     for (PetscInt c = 0; c < 3; c++) {
       static const char *what[3] = {"the x coordinate", "the y coordinate", "the z coordinate"};
       PetscCall(FieldRealDefault(d, 1 + c, what[c], 0.0, &m->node_xyz[3 * m->nnode + c]));
+    }
+    if (d->nfield > 4) { /* the dialect's nodal normal (shells and beams): read, so a typo still tells, and not used */
+      for (PetscInt c = 4; c < d->nfield; c++) {
+        PetscReal n;
+        PetscCall(FieldRealDefault(d, c, "a component of the node's normal", 0.0, &n));
+      }
+      if (!d->node_normal_warned)
+        PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                              LOC_FMT "warning: *NODE: the normal directions (fields 5-7) are ignored: no element type here uses nodal normals\n",
+                              DLOC(d)));
+      d->node_normal_warned = PETSC_TRUE;
     }
     d->node_line[2 * m->nnode]     = d->loc.file;
     d->node_line[2 * m->nnode + 1] = d->loc.line;
@@ -793,7 +817,7 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
                                     "gives its mechanical elements a temperature in such a step)\n",
                             KLOC(d), tname, TslElementTypeGet(type)->name));
   }
-  USER_CHECK(type >= 0, LOC_FMT "unknown element type %s", KLOC(d), tname);
+  USER_CHECK(type >= 0, LOC_FMT "unknown element type %s (docs/elements.md lists the types)", KLOC(d), tname);
   et = TslElementTypeGet(type);
   nn = et->geom->nnode;
   if (et->pore) d->pore = PETSC_TRUE;
@@ -1822,8 +1846,8 @@ static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw)
     PetscCall(FieldRealDefault(d, 0, "the initial increment", 1.0, &s->dt0));
     PetscCall(FieldRealDefault(d, 1, "the step period", 1.0, &s->period));
     USER_CHECK(s->dt0 > 0 && s->period > 0, LOC_FMT "the initial increment and the step period must be positive", DLOC(d));
-    PetscCall(FieldRealDefault(d, 2, "the minimum increment", PetscMin(s->dt0, 1e-5 * s->period), &s->dtmin));
-    PetscCall(FieldRealDefault(d, 3, "the maximum increment", s->period, &s->dtmax));
+    PetscCall(FieldRealDefaultZero(d, 2, "the minimum increment", PetscMin(s->dt0, 1e-5 * s->period), &s->dtmin));
+    PetscCall(FieldRealDefaultZero(d, 3, "the maximum increment", s->period, &s->dtmax));
     USER_CHECK(s->dtmin > 0 && s->dtmin <= s->dtmax, LOC_FMT "need 0 < minimum increment <= maximum increment", DLOC(d));
   } else {
     s->dtmin = PetscMin(s->dt0, 1e-5 * s->period);
@@ -2260,10 +2284,11 @@ static PetscErrorCode KwSoils(Deck *d, const DeckKeyword *kw)
 /* A keyword read past with a warning; kind IGNORED_PORE_FLUID: the pore fluid's material data (*PERMEABILITY,
  * *POROUS BULK MODULI), which the pore pressure types do not use in coupled temperature-displacement steps. */
 #define IGNORED_PORE_FLUID 1
+#define IGNORED_CONTROLS   2
 static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
 {
   PetscFunctionBeginUser;
-  PetscCall(ReadPast(d, NULL, kw->kind == IGNORED_PORE_FLUID ? PORE_FLUID_NOTE : NULL));
+  PetscCall(ReadPast(d, NULL, kw->kind == IGNORED_PORE_FLUID ? PORE_FLUID_NOTE : kw->kind == IGNORED_CONTROLS ? CONTROLS_NOTE : NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2618,6 +2643,7 @@ static const DeckKeyword Keywords[] = {
     {"ENERGY PRINT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"CONTACT CONTROLS", AT_BOTH, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"CONTACT OUTPUT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
+    {"CONTROLS", AT_STEP, IN_NONE, NULL, KwIgnored, IGNORED_CONTROLS, NULL},
 };
 
 static PetscBool ParamKnown(const char *list, const char *key)

@@ -48,6 +48,7 @@ static PetscErrorCode TestMesh(const TslModel *m)
   EXPECT(m->dim == 2);
   EXPECT(IdsAre(m->nnode, m->node_id, 6, all));
   EXPECT(m->node_xyz[3 * 2] == 2.0 && m->node_xyz[3 * 2 + 1] == 0.0 && m->node_xyz[3 * 2 + 2] == 0.0);
+  EXPECT(m->node_xyz[3 * 4] == 1.0 && m->node_xyz[3 * 4 + 1] == 1.0 && m->node_xyz[3 * 4 + 2] == 0.0); /* blank z, then a normal */
   EXPECT(m->node_xyz[3 * 4] == 1.0 && m->node_xyz[3 * 4 + 1] == 1.0);
   EXPECT(m->nelem == 2 && m->elem_id[0] == 1 && m->elem_id[1] == 2);
   EXPECT(m->elem_type[0] == TslElementTypeFind("CPE4T") && m->elem_type[1] == m->elem_type[0]);

@@ -139,3 +139,5 @@ tsl_deck_bad(node_input_file node_input_file.inp "error: node_input_file.inp:1: 
 tsl_deck_bad(pore_soils_step pore_soils_step.inp "error: pore_soils_step.inp:29: *SOILS (coupled pore fluid diffusion and stress) is not supported: pore fluid flow is not modelled.")
 tsl_deck_bad(pore_dof_without_pore_type pore_dof_without_pore_type.inp "error: pore_dof_without_pore_type.inp:32: bad degree of freedom 8 (valid: 1, 2, 11)")
 tsl_deck_bad(pore_explicit pore_explicit.inp "error: pore_explicit.inp:9: element type CPE4RPT is not supported in explicit steps (Abaqus/Explicit has no pore pressure elements")
+tsl_deck_bad(node_fields_eight node_fields_eight.inp "error: node_fields_eight.inp:4: *NODE data line needs: id, x[, y[, z[, normal's nx, ny, nz]]]")
+tsl_deck_bad(node_normal_not_number node_normal_not_number.inp "error: node_normal_not_number.inp:4: expected a number for a component of the node's normal, got 'x'")
