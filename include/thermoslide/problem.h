@@ -103,6 +103,12 @@ PetscErrorCode TslProblemGetMarginRerun(TslProblem prob, PetscReal *margin);
 PetscErrorCode TslProblemContactUpdate(TslProblem prob, PetscBool *again, PetscBool *repattern, PetscBool *augmented);
 PetscErrorCode TslProblemContactCommit(TslProblem prob);
 PetscErrorCode TslProblemContactRollback(TslProblem prob);
+/* Contact that does not settle: Reset before a solve; after one, collectively, *run is the number of residual
+ * evaluations in a row, up to the last, in which some secondary node (or surface-to-surface point) changed
+ * between open and closed, *count how many changed at the last one and *node the global id of one of them
+ * (-1: none). A law that jumps at closure can leave a Newton solve alternating between the two states. */
+PetscErrorCode TslProblemContactChatterReset(TslProblem prob);
+PetscErrorCode TslProblemContactChatter(TslProblem prob, PetscInt *run, PetscInt *count, PetscInt *node);
 /* Explicit steps: commit the contact state of the forces just evaluated, then re-pair when asked or when a
  * node left its face (*nrepair: how many left). */
 PetscErrorCode TslProblemContactExplicitIncrement(TslProblem prob, PetscBool search, PetscInt *nrepair);

@@ -117,11 +117,13 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
   NeighbourData nb;
 
   PetscFunctionBeginUser;
+  if (mode == ASM_RESIDUAL && !p->select_kinematic) p->chatter_count = 0;
   for (PetscInt i = 0; i < p->ncnode; i++) {
     TslContactNode          *cn = &p->cnode[i];
     const TslContactSurface *cs;
     const TslContactLaw     *law;
     TslContactLaw            kl;
+    const TslContactStatus   was = cn->out.status;
     TslContactInput          in;
     TslContactInput3         in3;
     PetscInt                 nodes[TSL_CONTACT_MAX_NODES], n, nu, ld[TSL_CONTACT_MAX_DOF];
@@ -149,6 +151,7 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
     else PetscCall(TslContactElement(law, &in, R, mode == ASM_JACOBIAN ? K : NULL, &cn->out));
     cn->fresh = PETSC_TRUE;
     if (f || A) PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, R, mode == ASM_JACOBIAN ? K : NULL));
+    if (mode == ASM_RESIDUAL && !cs->kinematic) TslProblemContactChatterNote(p, was, cn->out.status, cn->lnode);
     if (mode == ASM_RESIDUAL)
       PetscCall(PetscInfo(NULL, "contact node %" PetscInt_FMT ": segment %" PetscInt_FMT " xi %g gap %g p %g slip %g shear %g slip_circ %g shear_circ %g q %g status %d\n",
                           p->m->node_id[cn->lnode], cn->seg, (double)cn->out.xi_raw, (double)cn->out.gap, (double)cn->out.pressure,
@@ -160,6 +163,29 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
     }
   }
   if (!p->select_kinematic) PetscCall(TslProblemContactS2SAssemble(p, mode, xa, f, A, heat));
+  if (mode == ASM_RESIDUAL && !p->select_kinematic) p->chatter_run = p->chatter_count ? p->chatter_run + 1 : 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemContactChatterReset(TslProblem p)
+{
+  PetscFunctionBeginUser;
+  p->chatter_run = p->chatter_count = 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemContactChatter(TslProblem p, PetscInt *run, PetscInt *count, PetscInt *node)
+{
+  /* the longest run of any rank and the smallest node id that changed (as a maximum of its negative); the
+   * changes of the last evaluation summed */
+  PetscInt mx[2] = {p->chatter_run, p->chatter_count ? -p->chatter_node : PETSC_MIN_INT};
+
+  PetscFunctionBeginUser;
+  *count = p->chatter_count;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, mx, 2, MPIU_INT, MPI_MAX, p->comm));
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, count, 1, MPIU_INT, MPI_SUM, p->comm));
+  *run  = mx[0];
+  *node = mx[1] == PETSC_MIN_INT ? -1 : -mx[1];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

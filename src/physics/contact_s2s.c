@@ -187,10 +187,12 @@ PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const Pe
           PetscCall(PetscArrayzero(b->R, nu * n));
           if (mode == ASM_JACOBIAN) PetscCall(PetscArrayzero(b->K, nu * n * nu * n));
         }
+        const TslContactStatus was = pt->out.status;
         if (p->dim == 3)
           PetscCall(TslContactPointElement3(&cs->law, &in3, fc->nsn, pt->N, b->R, mode == ASM_JACOBIAN ? b->K : NULL, &pt->out));
         else
           PetscCall(TslContactPointElement(&cs->law, &in, fc->kind, pt->zeta, b->R, mode == ASM_JACOBIAN ? b->K : NULL, &pt->out));
+        if (mode == ASM_RESIDUAL && fc->assemble) TslProblemContactChatterNote(p, was, pt->out.status, fc->lnode[0]);
       }
       if (!fc->assemble) continue;
       if (mode == ASM_RESIDUAL) PetscCall(InfoPoint(p, fc, pt, q - fc->first));

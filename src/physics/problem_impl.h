@@ -162,6 +162,11 @@ struct _p_TslProblem {
   PetscReal           *fast_rec;
   TslElementFastShape *fast_shape;
 
+  /* contact that does not settle (TslProblemContactChatter): the residual evaluations in a row, up to the last,
+   * in which some secondary node or surface-to-surface point changed between open and closed; at the last one
+   * how many did (this rank), and the global id of the first of them */
+  PetscInt chatter_run, chatter_count, chatter_node;
+
   /* failures decided by all ranks (sys.h) */
   TslInject inject;
   char      fail_msg[TSL_FAIL_MSG_LEN]; /* the last convergence-type failure */
@@ -190,6 +195,14 @@ void           TslProblemFastBatchEnergy(TslProblem p, PetscInt b, const PetscSc
 typedef PetscErrorCode (*TslElementVisitor)(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop);
 PetscErrorCode TslProblemElementLoop(TslProblem p, const PetscScalar *xa, const PetscScalar *xoa, TslElementVisitor visit, void *ctx);
 typedef enum { ASM_RESIDUAL, ASM_JACOBIAN, ASM_PATTERN, ASM_RAW } AsmMode;
+
+/* Notes, during a residual evaluation, whether a contact (node or point) went from open to closed or back
+ * (was: its status before, now: after) for TslProblemContactChatter. */
+static inline void TslProblemContactChatterNote(TslProblem p, TslContactStatus was, TslContactStatus now, PetscInt lnode)
+{
+  if ((was == TSL_CONTACT_OPEN) == (now == TSL_CONTACT_OPEN)) return;
+  if (!p->chatter_count++) p->chatter_node = p->m->node_id[lnode];
+}
 
 /* Heat totals gathered during an assembly (this rank's share, per unit time). */
 typedef struct {

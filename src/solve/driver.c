@@ -581,6 +581,7 @@ static PetscErrorCode SolveIncrement(Driver *d, Vec X, SNESConvergedReason *reas
     n++;
     PetscCall(SNESSetForceIteration(d->snes, augmented));
     PetscCall(TslPhaseBegin(TSL_PHASE_SOLVE));
+    PetscCall(TslProblemContactChatterReset(d->prob));
     PetscCall(SNESSolve(d->snes, NULL, X));
     PetscCall(TslPhaseEnd(TSL_PHASE_SOLVE));
     PetscCall(SNESSetForceIteration(d->snes, PETSC_FALSE));
@@ -651,6 +652,28 @@ static PetscErrorCode Accept(Driver *d, PetscInt s, PetscInt inc, PetscReal t, P
   for (PetscInt c = HIST_ENERGY; c < NHISTORY; c++) row[c] = 0; /* the energies of explicit steps */
   PetscCall(TslHistoryAppend(d->hist, row));
   d->done_step = s + 1, d->done_inc = inc, d->done_time = total, d->done_step_time = t, d->done_dt = h;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* After a failed solve: when contacts were still switching between open and closed at every one of its last
+ * residual evaluations, says so, with the likely cause (docs/contact.md, "Contact that does not settle"). */
+static PetscErrorCode ReportChatter(Driver *d)
+{
+  PetscInt run, count, node;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemContactChatter(d->prob, &run, &count, &node));
+  if (run < 4) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscPrintf(
+      d->comm,
+      "    contact did not settle: in each of the last %" PetscInt_FMT
+      " residual evaluations contacts changed between open and closed (%" PetscInt_FMT " at the last, node %" PetscInt_FMT " among them)%s\n",
+      run, count, node,
+      d->chatter_told ? ""
+                      : ". An interface law that jumps at closure, such as a *GAP CONDUCTANCE that is nonzero only while closed, with "
+                        "thermal expansion across the gap, can leave no consistent state; a conductance that falls to zero over a small "
+                        "clearance is continuous (docs/contact.md, \"Contact that does not settle\")"));
+  d->chatter_told = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -744,6 +767,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
         why = "diverged";
       PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": %s; cutback dt %g -> %g\n", s + 1, inc + 1, why,
                             (double)h, (double)(h * f)));
+      if (reason < 0) PetscCall(ReportChatter(d));
       PetscCheck(!step->direct, d->comm, PETSC_ERR_NOT_CONVERGED,
                  "step %" PetscInt_FMT ": increment %" PetscInt_FMT " did not converge (%s) and DIRECT forbids a cutback", s + 1, inc + 1, why);
       dt = h * f;

@@ -32,6 +32,7 @@ typedef struct {
   PetscReal  forcing_max;          /* -tsl_linear_forcing: loosest linear tolerance of a Newton iteration after the first (0: -ksp_rtol always) */
   PetscReal  ksp_rtol;             /* the linear tolerance of the first Newton iteration (-ksp_rtol) */
   PetscBool  block_solves;         /* -tsl_block_solves: a block-triangular operator's blocks solved by CG (split.c) */
+  PetscBool  chatter_told;         /* the cause of contact that does not settle was explained (ReportChatter) */
   PetscBool  implicit_records;     /* -tsl_implicit_records: residuals from the element force records */
   PetscBool  records_done;         /* ... built (or declined) at the first implicit step */
   PetscReal  fnorm_prev;           /* residual norm at the previous Newton iteration of the current solve */
