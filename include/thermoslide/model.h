@@ -141,6 +141,7 @@ typedef struct {
   PetscBool   op_new;         /* OP=NEW on this keyword: previous loads of this kind are removed */
   PetscBool   fixed;          /* *BOUNDARY, FIXED: hold the dofs at their values at the start of the step */
   PetscBool   velocity;       /* *BOUNDARY, TYPE=VELOCITY: value is a velocity, the dof follows its time integral */
+  PetscBool   temperature;    /* from *TEMPERATURE (a *STATIC step's prescribed temperature, kind BOUNDARY on dof 11) */
   TslLoc      loc;
 } TslLoad;
 
@@ -321,7 +322,8 @@ typedef struct {
   TslMassScaling    mass[TSL_MAX_MASS_SCALING];
   PetscInt          out_number_interval;       /* explicit, *OUTPUT, FIELD, NUMBER INTERVAL= (0: not given) */
   PetscReal         out_time_interval;         /* explicit, *OUTPUT, FIELD, TIME INTERVAL= (0: not given) */
-  PetscBool         steady;                    /* STEADY STATE */
+  PetscBool         steady;                    /* STEADY STATE (and *STATIC) */
+  PetscBool         statik;                    /* *STATIC: mechanical equilibrium with every temperature held at its value (no heat transfer) */
   PetscBool         direct;                    /* DIRECT: fixed increments */
   PetscBool         nlgeom;                    /* NLGEOM accepted (small-strain kinematics used; see docs) */
   PetscReal         dt0, period, dtmin, dtmax; /* data line; defaults dt0=period=1, dtmin=1e-5*period, dtmax=period */

@@ -167,16 +167,26 @@ static PetscErrorCode CheckSurfaces(TslModel *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* What the steps need of a material: the conductivity where some step transfers heat (any but *STATIC, which
+ * holds the temperatures), the density and specific heat where some step is transient (capacity, mass). A
+ * property a model does not need may be left out: it evaluates to 0 (CalculiX's mechanical decks give none). */
 static PetscErrorCode CheckMaterial(TslModel *m, const TslMaterial *mat, const TslSection *sec)
 {
-  char where[PETSC_MAX_PATH_LEN];
+  char      where[PETSC_MAX_PATH_LEN];
+  PetscBool heat = PETSC_FALSE, transient = PETSC_FALSE;
 
   PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < m->nstep; i++) {
+    heat      = (PetscBool)(heat || !m->steps[i].statik);
+    transient = (PetscBool)(transient || !m->steps[i].steady);
+  }
   (void)TslLocString(m, sec->loc, where, sizeof(where));
   CHECK(mat->prop[TSL_PROP_ELASTIC].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *ELASTIC", mat->name, where);
-  CHECK(mat->prop[TSL_PROP_CONDUCTIVITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *CONDUCTIVITY", mat->name, where);
-  CHECK(mat->prop[TSL_PROP_DENSITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *DENSITY", mat->name, where);
-  CHECK(mat->prop[TSL_PROP_SPECIFIC_HEAT].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *SPECIFIC HEAT", mat->name, where);
+  CHECK(!heat || mat->prop[TSL_PROP_CONDUCTIVITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *CONDUCTIVITY", mat->name,
+        where);
+  CHECK(!transient || mat->prop[TSL_PROP_DENSITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *DENSITY", mat->name, where);
+  CHECK(!transient || mat->prop[TSL_PROP_SPECIFIC_HEAT].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *SPECIFIC HEAT",
+        mat->name, where);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -351,9 +361,22 @@ static PetscErrorCode CheckSteps(TslModel *m)
   }
   for (PetscInt i = 0; i < m->nstep; i++) {
     const TslStep *s = &m->steps[i];
-    CHECK(s->coupled, s->loc, "step %s has no procedure (*COUPLED TEMPERATURE-DISPLACEMENT or *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT)", s->name);
+    CHECK(s->coupled, s->loc, "step %s has no procedure (*COUPLED TEMPERATURE-DISPLACEMENT, *STATIC or *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT)",
+          s->name);
     PetscCall(CheckExplicitStep(m, s));
-    for (PetscInt k = 0; k < s->nload; k++) PetscCall(CheckLoad(m, &s->loads[k]));
+    for (PetscInt k = 0; k < s->nload; k++) {
+      const TslLoad     *l                   = &s->loads[k];
+      static const char *kw[TSL_LOAD_NKINDS] = {NULL, NULL, "*CFLUX", NULL, "*DFLUX or *DSFLUX", "*FILM or *SFILM"};
+      CHECK(!s->statik || !kw[l->kind] || (!l->target.set[0] && l->target.id < 0), l->loc,
+            "%s in a *STATIC step: a static step holds the temperatures (no heat transfer); thermal loads need *COUPLED TEMPERATURE-DISPLACEMENT "
+            "(step %s)",
+            kw[l->kind] ? kw[l->kind] : "", s->name);
+      CHECK(s->statik || !l->temperature, l->loc,
+            "*TEMPERATURE in step %s: the temperature is an unknown of a coupled step; prescribe it with *BOUNDARY on dof 11 (*TEMPERATURE is for "
+            "*STATIC steps)",
+            s->name);
+      PetscCall(CheckLoad(m, l));
+    }
     for (PetscInt k = 0; k < s->nout; k++) {
       const TslOutputRequest *r = &s->out[k];
       if (!r->set[0]) continue;

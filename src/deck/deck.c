@@ -82,7 +82,8 @@ typedef struct {
 
   PetscBool pore;      /* a pore pressure element type was read (its dof 8 is accepted, and not active) */
   PetscBool skip_line; /* set by a load's line function: the line is read and left out (a *BOUNDARY on dof 8) */
-  PetscBool node_normal_warned; /* the warning that *NODE normal directions are ignored was given */
+  PetscBool          node_normal_warned; /* the warning that *NODE normal directions are ignored was given */
+  unsigned long long noted_types;        /* the types whose dialect name (C3D8 for C3D8T, ...) was noted, by bit */
 } Deck;
 
 /* A part (*PART ... *END PART), read straight into the model with its ids shifted past those defined before
@@ -811,11 +812,12 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     char coupled[32];
     PetscCall(PetscSNPrintf(coupled, sizeof(coupled), "%sT", tname));
     type = TslElementTypeFind(coupled);
-    if (type >= 0)
+    if (type >= 0 && !(d->noted_types & (1ULL << (type % 64)))) /* once per type */
       PetscCall(PetscPrintf(PETSC_COMM_SELF,
                             LOC_FMT "note: element type %s read as %s (the steps here are coupled temperature-displacement ones; CalculiX "
                                     "gives its mechanical elements a temperature in such a step)\n",
                             KLOC(d), tname, TslElementTypeGet(type)->name));
+    if (type >= 0) d->noted_types |= 1ULL << (type % 64);
   }
   USER_CHECK(type >= 0, LOC_FMT "unknown element type %s (docs/elements.md lists the types)", KLOC(d), tname);
   et = TslElementTypeGet(type);
@@ -1824,25 +1826,17 @@ static PetscErrorCode KwEndStep(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw)
+/* The implicit procedures' data line: initial increment, step period, minimum and maximum increment (what names
+ * the keyword in the message). */
+static PetscErrorCode StepIncrements(Deck *d, TslStep *s, const char *what)
 {
-  TslStep  *s = &d->m->steps[d->step];
-  PetscBool got, set;
+  PetscBool got;
 
   PetscFunctionBeginUser;
-  (void)kw;
-  USER_CHECK(!s->coupled, LOC_FMT "step %s already has a procedure", KLOC(d), s->name);
-  s->coupled = PETSC_TRUE;
-  s->steady  = Param(d, "STEADY STATE") ? PETSC_TRUE : PETSC_FALSE;
-  s->direct  = Param(d, "DIRECT") ? PETSC_TRUE : PETSC_FALSE;
-  PetscCall(ParamReal(d, "DELTMX", &s->deltmx, &set));
-  USER_CHECK(!set || s->deltmx >= 0, LOC_FMT "DELTMX must not be negative", KLOC(d));
-  if (!s->amp_given) s->amp_default = s->steady ? TSL_AMP_RAMP : TSL_AMP_STEP;
   PetscCall(DataLine(d, 0, &got));
   s->dt0 = s->period = 1.0;
   if (got) {
-    USER_CHECK(d->nfield <= 4, LOC_FMT "*COUPLED TEMPERATURE-DISPLACEMENT data line: initial increment, step period, minimum, maximum increment",
-               DLOC(d));
+    USER_CHECK(d->nfield <= 4, LOC_FMT "%s data line: initial increment, step period, minimum, maximum increment", DLOC(d), what);
     PetscCall(FieldRealDefault(d, 0, "the initial increment", 1.0, &s->dt0));
     PetscCall(FieldRealDefault(d, 1, "the step period", 1.0, &s->period));
     USER_CHECK(s->dt0 > 0 && s->period > 0, LOC_FMT "the initial increment and the step period must be positive", DLOC(d));
@@ -1853,6 +1847,46 @@ static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw)
     s->dtmin = PetscMin(s->dt0, 1e-5 * s->period);
     s->dtmax = s->period;
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw)
+{
+  TslStep  *s = &d->m->steps[d->step];
+  PetscBool set;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!s->coupled, LOC_FMT "step %s already has a procedure", KLOC(d), s->name);
+  s->coupled = PETSC_TRUE;
+  s->steady  = Param(d, "STEADY STATE") ? PETSC_TRUE : PETSC_FALSE;
+  s->direct  = Param(d, "DIRECT") ? PETSC_TRUE : PETSC_FALSE;
+  PetscCall(ParamReal(d, "DELTMX", &s->deltmx, &set));
+  USER_CHECK(!set || s->deltmx >= 0, LOC_FMT "DELTMX must not be negative", KLOC(d));
+  if (!s->amp_given) s->amp_default = s->steady ? TSL_AMP_RAMP : TSL_AMP_STEP;
+  PetscCall(StepIncrements(d, s, "*COUPLED TEMPERATURE-DISPLACEMENT"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *STATIC: static equilibrium, the mechanical part alone, as the dialect runs it with coupled temperature-displacement
+ * elements (and as CalculiX runs its mechanical decks): every temperature is held at its value at the step's start
+ * (the initial conditions, or where the last step left it) unless the step prescribes it with *BOUNDARY on dof 11
+ * or *TEMPERATURE; no heat transfer, so thermal loads are an error here (check.c). Solved as a steady step; loads
+ * are ramped over it by default. */
+static PetscErrorCode KwStatic(Deck *d, const DeckKeyword *kw)
+{
+  TslStep *s = &d->m->steps[d->step];
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!s->coupled, LOC_FMT "step %s already has a procedure", KLOC(d), s->name);
+  USER_CHECK(!Param(d, "RIKS"), LOC_FMT "*STATIC, RIKS (the arc-length method) is not supported", KLOC(d));
+  s->coupled = PETSC_TRUE;
+  s->steady  = PETSC_TRUE;
+  s->statik  = PETSC_TRUE;
+  s->direct  = Param(d, "DIRECT") ? PETSC_TRUE : PETSC_FALSE;
+  if (!s->amp_given) s->amp_default = TSL_AMP_RAMP;
+  PetscCall(StepIncrements(d, s, "*STATIC"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2001,6 +2035,18 @@ static PetscErrorCode LineBoundary(Deck *d, TslLoad *l)
              DLOC(d), l->dof_first, l->dof_last);
   USER_CHECK(!l->velocity || l->dof_last != 11, LOC_FMT "*BOUNDARY, TYPE=VELOCITY applies to displacement dofs, not to the temperature (11)",
              DLOC(d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *TEMPERATURE (a predefined temperature field, as the dialect gives it to a *STATIC step): "node or node set,
+ * temperature", read as the prescribed value of dof 11; only *STATIC steps take it (check.c). */
+static PetscErrorCode LineTemperature(Deck *d, TslLoad *l)
+{
+  PetscFunctionBeginUser;
+  USER_CHECK(d->nfield == 2, LOC_FMT "*TEMPERATURE data line needs: node or node set, temperature", DLOC(d));
+  l->dof_first = l->dof_last = 11;
+  l->temperature             = PETSC_TRUE;
+  PetscCall(FieldReal(d, 1, "the temperature", &l->value));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2610,6 +2656,8 @@ static const DeckKeyword Keywords[] = {
     {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
+    {"STATIC", AT_STEP, IN_NONE, "DIRECT|RIKS", KwStatic, 0, NULL},
+    {"TEMPERATURE", AT_STEP, IN_NONE, "AMPLITUDE", KwLoad, TSL_LOAD_BOUNDARY, LineTemperature},
     {"SOILS", AT_STEP, IN_NONE, NULL, KwSoils, 0, NULL},
     {"PERMEABILITY", AT_MODEL, IN_MATERIAL, NULL, KwIgnored, IGNORED_PORE_FLUID, NULL},
     {"POROUS BULK MODULI", AT_MODEL, IN_MATERIAL, NULL, KwIgnored, IGNORED_PORE_FLUID, NULL},

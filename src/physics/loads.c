@@ -70,6 +70,7 @@ static void Redefine(TslLoadValue *h, PetscReal start, PetscReal value, PetscInt
   h->amp      = amp;
   h->active   = PETSC_TRUE;
   h->velocity = PETSC_FALSE;
+  h->held     = PETSC_FALSE; /* a *STATIC step's own *BOUNDARY on a temperature: prescribed, not held */
 }
 
 /* Starts a velocity from the current one (0 for a dof that was not moving by a velocity), the displacement
@@ -81,6 +82,7 @@ static void RedefineVelocity(TslLoadValue *h, PetscReal u, PetscReal t0, PetscRe
   h->amp      = amp;
   h->active   = PETSC_TRUE;
   h->velocity = PETSC_TRUE;
+  h->held     = PETSC_FALSE;
   h->u0       = u;
   h->t0       = t0;
 }
@@ -219,11 +221,11 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
     r->kind = kind;
     r->seq  = p->face_seq++;
     if (kind == TSL_FACE_FILM) {
-      r->value    = (TslLoadValue){PETSC_TRUE, ld->value, ld->value, TSL_AMP_HOLD, PETSC_FALSE, 0, 0};
-      r->sink     = (TslLoadValue){PETSC_TRUE, ld->sink, ld->sink, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_HOLD, PETSC_FALSE, 0, 0};
+      r->value    = (TslLoadValue){PETSC_TRUE, ld->value, ld->value, TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE};
+      r->sink     = (TslLoadValue){PETSC_TRUE, ld->sink, ld->sink, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE};
       r->film_amp = ld->film_amplitude;
     } else {
-      r->value    = (TslLoadValue){PETSC_TRUE, 0, ld->value, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT, PETSC_FALSE, 0, 0};
+      r->value    = (TslLoadValue){PETSC_TRUE, 0, ld->value, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT, PETSC_FALSE, 0, 0, PETSC_FALSE};
       r->film_amp = -1;
     }
   }
@@ -307,6 +309,15 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
   PetscCall(TslGhostUpdate(p->X, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(VecGhostGetLocalForm(p->X, &xl));
   PetscCall(VecGetArrayRead(xl, &x));
+  /* *STATIC: every temperature not prescribed otherwise is held at its value now (the step's own *BOUNDARY on
+   * dof 11, below, redefines it); a hold ends with its step, the temperature dofs then free again */
+  for (PetscInt l = 0; l < p->nn; l++) {
+    const PetscInt c = TslProblemNodeDofSlot(p, l, 11), d = l * p->ndof + c;
+    if (c < 0) continue;
+    if (p->bc[d].held) p->bc[d].active = p->bc[d].held = PETSC_FALSE;
+    if (step->statik && !p->bc[d].active && p->dep[d] < 0)
+      p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_TRUE};
+  }
   for (PetscInt i = 0; i < step->nload; i++) {
     const TslLoad *ld  = &step->loads[i];
     PetscInt       amp = ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT;
@@ -322,12 +333,13 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
           PetscInt c = TslProblemNodeDofSlot(p, nodes[j], dof), d = nodes[j] * p->ndof + c;
           if (c < 0) continue; /* a dof the model's elements do not have (e.g. 3 in 2D): ignored as in the dialect */
           if (ld->kind == TSL_LOAD_BOUNDARY && ld->fixed)
-            p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD, PETSC_FALSE, 0, 0};
+            p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE};
           else if (ld->kind == TSL_LOAD_BOUNDARY && ld->velocity)
             RedefineVelocity(&p->bc[d], PetscRealPart(x[d]), p->ttot, ld->value, amp);
-          else if (ld->kind == TSL_LOAD_BOUNDARY)
+          else if (ld->kind == TSL_LOAD_BOUNDARY) {
             Redefine(&p->bc[d], PetscRealPart(x[d]), ld->value, amp);
-          else if (nodes[j] < p->nown)
+            p->bc[d].held = ld->temperature; /* *TEMPERATURE is part of its *STATIC step's hold: it ends with the step */
+          } else if (nodes[j] < p->nown)
             Redefine(&p->nload[d], 0, ld->value, amp);
         }
       PetscCall(PetscFree(nodes));

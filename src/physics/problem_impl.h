@@ -68,6 +68,7 @@ typedef struct {
   PetscInt  amp;
   PetscBool velocity;
   PetscReal u0, t0;
+  PetscBool held; /* a *STATIC step's hold of a temperature at its start value (ends with the step) */
 } TslLoadValue;
 
 /* A distributed (face or body) load on one local element. */

@@ -165,7 +165,7 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
       PetscReal modes[6][3], x[3], *G;
       if (first_elem[r] < 0) continue;
       G = &gram[36 * body[r]];
-      if (fixed[TSL_MAX_NODE_DOF * i + th]) thermal[body[r]] = 1;
+      if (fixed[TSL_MAX_NODE_DOF * i + th] || step->statik) thermal[body[r]] = 1; /* *STATIC holds every temperature */
       for (PetscInt c = 0; c < 3; c++) x[c] = (g->node_xyz[3 * i + c] - centre[4 * r + c] / centre[4 * r + 3]) / (size[r] > 0 ? size[r] : 1);
       nm = TslElementTypeRigidModes(TslElementTypeGet(g->elem_type[first_elem[r]]), x, modes);
       for (PetscInt d = 0; d < th; d++) {

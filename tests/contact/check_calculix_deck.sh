@@ -15,7 +15,7 @@ rm -rf "$out" && mkdir -p "$out" || exit 1
 $mpiexec -n 2 "$exe" "$out/ccx.inp" -o "$out/ccx" -tsl_partition axis_x > "$out/ccx.log" 2>&1 || { cat "$out/ccx.log"; exit 1; }
 $mpiexec -n 1 "$exe" "$out/own.inp" -o "$out/own" > "$out/own.log" 2>&1 || { cat "$out/own.log"; exit 1; }
 cat "$out/ccx.log"
-[ "$(grep -c 'note: element type C3D8 read as C3D8T' "$out/ccx.log")" = 2 ] || { echo "FAIL: the C3D8 notes"; exit 1; }
+[ "$(grep -c 'note: element type C3D8 read as C3D8T' "$out/ccx.log")" = 1 ] || { echo "FAIL: the C3D8 notes"; exit 1; }
 grep -q "warning" "$out/ccx.log" && { echo "FAIL: a warning on the CalculiX deck"; exit 1; }
 total=$(sed -n 's/^ *total RFL *//p' "$out/ccx.log")
 [ "$(grep -c '^  *[0-9][0-9]* RFL' "$out/ccx.log")" = 0 ] || { echo "FAIL: TOTALS=ONLY printed rows"; exit 1; }

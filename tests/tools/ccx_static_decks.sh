@@ -1,0 +1,33 @@
+#!/bin/bash
+# CalculiX's own *STATIC test decks (package calculix-ccx-test) run here as they stand and compared with the
+# displacements CalculiX printed for them (their .dat.ref, 7 digits; tests/tools/compare_ccx_dat.py):
+#   beam8p (a C3D8 cantilever under shear), beam8t (a bimetal beam heated by *TEMPERATURE), planestrain and
+#   planestrain2 (CPE4, CPE8), contactenergy (two cubes in contact): 1e-6 of the largest displacement (the print);
+#   contact3, contact6, cubespring, hueeber2, hueeber4 (C3D8 blocks in contact), ring1 and ring2 (CAX8 rings
+#   pressed into contact by thermal expansion and by an interference): 1e-2 (measured 1.6e-4 - 4.3e-3: the contact
+#   formulations differ, penalty stiffness and integration of the two codes).
+# usage: ccx_static_decks.sh THERMOSLIDE MPIEXEC NP OUTDIR TOOLSDIR
+set -u
+exe=$1 mpiexec=$2 np=$3 out=$4 tools=$5
+src=/usr/share/doc/calculix-ccx-test/examples/test
+# a file of the package, gzipped or not
+get() { if [ -f "$src/$1" ]; then cat "$src/$1"; else zcat "$src/$1.gz"; fi; }
+[ -f "$src/beam8p.inp" ] || [ -f "$src/beam8p.inp.gz" ] || { echo "FAIL: CalculiX's test decks are not in $src (jobs/scripts/install-deps.sh installs calculix-ccx-test)"; exit 1; }
+rm -rf "$out" && mkdir -p "$out" || exit 1
+fail=0
+for spec in beam8p:1e-6 beam8t:1e-6 planestrain:1e-6 planestrain2:1e-6 contactenergy:1e-6 contact3:1e-2 contact6:1e-2 cubespring:1e-2 \
+  hueeber2:1e-2 hueeber4:1e-2 ring1:1e-2 ring2:1e-2; do
+  b=${spec%%:*} tol=${spec#*:}
+  case "$b" in planestrain*) [ "$np" -gt 1 ] && { echo "$b: one element, which cannot be split over $np ranks: 1 rank only"; continue; } ;; esac
+  get "$b.inp" > "$out/$b.inp" && get "$b.dat.ref" > "$out/$b.dat.ref" || { echo "FAIL: $b not in the package"; fail=1; continue; }
+  if ! (cd "$out" && timeout 300 $mpiexec -n "$np" "$exe" "$b.inp" -o "run_$b" > "$b.log" 2>&1); then
+    tail -5 "$out/$b.log"
+    echo "$b: FAIL (the run)"
+    fail=1
+    continue
+  fi
+  printf "%s: " "$b"
+  /usr/bin/python3 "$tools/compare_ccx_dat.py" "$out/run_$b/$b.h5" "$out/$b.dat.ref" "$tol" || { echo "$b: FAIL"; fail=1; }
+done
+[ $fail = 0 ] && echo PASS
+exit $fail
