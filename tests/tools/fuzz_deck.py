@@ -191,7 +191,7 @@ def classify(rc, log, deckname):
         return "MIXED"
     for l in err:
         m = re.search(re.escape(deckname) + r":(\d+)?", l)
-        if m and (m.group(1) is None or m.group(1) == "0") and "cannot open" not in l:
+        if m and (m.group(1) is None or m.group(1) == "0") and "cannot open" not in l and "the deck is empty" not in l:
             return "NOLINE"
     return None
 
