@@ -47,6 +47,7 @@ static const TslElementType Catalogue[] = {
     {"CPS4T",   &TslGeomQuad4,  &TslFormFull,           PLANE_STRESS, "4-node plane stress"},
     {"CPS4RT",  &TslGeomQuad4,  &TslFormReduced,        PLANE_STRESS, "4-node plane stress, reduced integration, hourglass control"},
     {"CPS6MT",  &TslGeomTri6,   &TslFormModified,       PLANE_STRESS, "6-node modified second-order plane stress"},
+    {"CPS8T",   &TslGeomQuad8,  &TslFormFull,           PLANE_STRESS, "8-node plane stress"},
     {"CAX3T",   &TslGeomTri3,   &TslFormFull,           AXISYMMETRIC, "3-node axisymmetric"},
     {"CAX4T",   &TslGeomQuad4,  &TslFormFull,           AXISYMMETRIC, "4-node axisymmetric"},
     {"CAX4RT",  &TslGeomQuad4,  &TslFormReduced,        AXISYMMETRIC, "4-node axisymmetric, reduced integration, hourglass control"},
