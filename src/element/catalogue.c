@@ -67,6 +67,8 @@ static const TslElementType Catalogue[] = {
     {"C3D8RT",  &TslGeomHex8,   &TslFormReduced,        SOLID,        "8-node brick, reduced integration, hourglass control"},
     {"C3D8RHT", &TslGeomHex8,   &TslFormReducedHybrid,  SOLID,        "8-node brick, reduced integration, hourglass control, hybrid"},
     {"C3D10MT", &TslGeomTet10,  &TslFormModified,       SOLID,        "10-node modified second-order tetrahedron"},
+    {"C3D20T",  &TslGeomHex20,  &TslFormFull,           SOLID,        "20-node brick"},
+    {"C3D20RT", &TslGeomHex20,  &TslFormReducedQuadratic, SOLID,      "20-node brick, reduced integration"},
     {"SC6RT",   &TslGeomWedge6, &TslFormContinuumShell, CSHELL,       "6-node triangular in-plane continuum shell, reduced integration"},
     {"SC8RT",   &TslGeomHex8,   &TslFormContinuumShell, CSHELL,       "8-node hexahedral continuum shell, reduced integration, hourglass control"},
 };

@@ -6,7 +6,7 @@
 /* The geometry families (geometry.c), referenced by the catalogue rows and by each other (faces,
  * sub-elements). */
 extern const TslGeometry TslGeomLine2, TslGeomLine3, TslGeomTri3, TslGeomTri6, TslGeomQuad4, TslGeomQuad8, TslGeomTet4, TslGeomWedge6, TslGeomHex8,
-    TslGeomTet10;
+    TslGeomHex20, TslGeomTet10;
 
 /* What distinguishes one kinematic assumption from another, in one place (kinematics.c). The kernels
  * only read this row, so a new element type is a catalogue row, and a new kinematics a table row. */
@@ -112,8 +112,8 @@ struct TslFormulation {
 #define TSL_MAX_PRESSURE 4
 
 /* The formulations (formulations.c). */
-extern const TslFormulation TslFormFull, TslFormReduced, TslFormHybrid, TslFormReducedHybrid, TslFormModified, TslFormModifiedHybrid,
-    TslFormContinuumShell;
+extern const TslFormulation TslFormFull, TslFormReduced, TslFormReducedQuadratic, TslFormHybrid, TslFormReducedHybrid, TslFormModified,
+    TslFormModifiedHybrid, TslFormContinuumShell;
 
 /* Hourglass control of the one-point quad4 and hex8 (formulations.c): the Flanagan-Belytschko vectors
  * gamma[k][a] = (h_k[a] - sum_d hx[k][d] dN_a/dx_d) / n at the centre point p (returns their number: 1 in

@@ -334,6 +334,9 @@ static PetscErrorCode ShellHourglass(const TslElementInput *in, const TslMateria
 const TslFormulation TslFormFull    = {"full integration", FullRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
 const TslFormulation TslFormReduced = {
     "reduced integration, hourglass control", ReducedRule, NULL, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};
+/* Reduced integration of a second-order brick (C3D20RT: 2 x 2 x 2): no hourglass control, as in the dialect (its
+ * one spurious mode does not propagate through a mesh). */
+const TslFormulation TslFormReducedQuadratic = {"reduced integration", ReducedRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
 const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
 const TslFormulation TslFormReducedHybrid = {
     "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};

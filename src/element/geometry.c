@@ -185,6 +185,44 @@ static void ShapeHex8(const PetscReal xi[], PetscReal N[], PetscReal dN[])
   }
 }
 
+/* 20-node serendipity brick: corners as hex8, then the midsides of the bottom edges 9 (1-2), 10 (2-3), 11 (3-4),
+ * 12 (4-1), of the top edges 13 (5-6) ... 16 (8-5), and of the vertical edges 17 (1-5) ... 20 (4-8). A corner's
+ * N = (1 + s xi)(1 + t eta)(1 + r zeta)(s xi + t eta + r zeta - 2) / 8; a midside with s = 0 (on an edge along
+ * xi) N = (1 - xi^2)(1 + t eta)(1 + r zeta) / 4, and the same along eta and zeta. */
+static void ShapeHex20(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  static const PetscReal s[20] = {-1, 1, 1, -1, -1, 1, 1, -1, 0, 1, 0, -1, 0, 1, 0, -1, -1, 1, 1, -1};
+  static const PetscReal t[20] = {-1, -1, 1, 1, -1, -1, 1, 1, -1, 0, 1, 0, -1, 0, 1, 0, -1, -1, 1, 1};
+  static const PetscReal r[20] = {-1, -1, -1, -1, 1, 1, 1, 1, -1, -1, -1, -1, 1, 1, 1, 1, 0, 0, 0, 0};
+  const PetscReal        x = xi[0], y = xi[1], z = xi[2];
+
+  for (int a = 0; a < 20; a++) {
+    const PetscReal fs = 1 + s[a] * x, ft = 1 + t[a] * y, fr = 1 + r[a] * z;
+    if (a < 8) {
+      const PetscReal g = s[a] * x + t[a] * y + r[a] * z - 2;
+      N[a]              = 0.125 * fs * ft * fr * g;
+      dN[3 * a + 0]     = 0.125 * s[a] * ft * fr * (g + fs);
+      dN[3 * a + 1]     = 0.125 * t[a] * fs * fr * (g + ft);
+      dN[3 * a + 2]     = 0.125 * r[a] * fs * ft * (g + fr);
+    } else if (s[a] == 0) {
+      N[a]          = 0.25 * (1 - x * x) * ft * fr;
+      dN[3 * a + 0] = -0.5 * x * ft * fr;
+      dN[3 * a + 1] = 0.25 * t[a] * (1 - x * x) * fr;
+      dN[3 * a + 2] = 0.25 * r[a] * (1 - x * x) * ft;
+    } else if (t[a] == 0) {
+      N[a]          = 0.25 * (1 - y * y) * fs * fr;
+      dN[3 * a + 0] = 0.25 * s[a] * (1 - y * y) * fr;
+      dN[3 * a + 1] = -0.5 * y * fs * fr;
+      dN[3 * a + 2] = 0.25 * r[a] * (1 - y * y) * fs;
+    } else {
+      N[a]          = 0.25 * (1 - z * z) * fs * ft;
+      dN[3 * a + 0] = 0.25 * s[a] * (1 - z * z) * ft;
+      dN[3 * a + 1] = 0.25 * t[a] * (1 - z * z) * fs;
+      dN[3 * a + 2] = -0.5 * z * fs * ft;
+    }
+  }
+}
+
 /* ---- quadrature ------------------------------------------------------------------------------ */
 
 #define G2  0.57735026918962576451 /* 1/sqrt(3): 2-point Gauss */
@@ -217,6 +255,19 @@ static void ShapeHex8(const PetscReal xi[], PetscReal N[], PetscReal dN[])
   {.n = 8, \
    .xi = {{-G2, -G2, -G2}, {G2, -G2, -G2}, {G2, G2, -G2}, {-G2, G2, -G2}, {-G2, -G2, G2}, {G2, -G2, G2}, {G2, G2, G2}, {-G2, G2, G2}}, \
    .w = {1, 1, 1, 1, 1, 1, 1, 1}, .degree = 3}
+
+#define G3_(i)  ((i) == 0 ? -G3 : (i) == 1 ? 0 : G3)
+#define W3_(i)  ((i) == 1 ? W3C : W3E)
+#define P27(i, j, k) {G3_(i), G3_(j), G3_(k)}
+#define W27(i, j, k) (W3_(i) * W3_(j) * W3_(k))
+#define QUAD_HEX_27 \
+  {.n = 27, \
+   .xi = {P27(0,0,0), P27(1,0,0), P27(2,0,0), P27(0,1,0), P27(1,1,0), P27(2,1,0), P27(0,2,0), P27(1,2,0), P27(2,2,0), \
+          P27(0,0,1), P27(1,0,1), P27(2,0,1), P27(0,1,1), P27(1,1,1), P27(2,1,1), P27(0,2,1), P27(1,2,1), P27(2,2,1), \
+          P27(0,0,2), P27(1,0,2), P27(2,0,2), P27(0,1,2), P27(1,1,2), P27(2,1,2), P27(0,2,2), P27(1,2,2), P27(2,2,2)}, \
+   .w = {W27(0,0,0), W27(1,0,0), W27(2,0,0), W27(0,1,0), W27(1,1,0), W27(2,1,0), W27(0,2,0), W27(1,2,0), W27(2,2,0), \
+         W27(0,0,1), W27(1,0,1), W27(2,0,1), W27(0,1,1), W27(1,1,1), W27(2,1,1), W27(0,2,1), W27(1,2,1), W27(2,2,1), \
+         W27(0,0,2), W27(1,0,2), W27(2,0,2), W27(0,1,2), W27(1,1,2), W27(2,1,2), W27(0,2,2), W27(1,2,2), W27(2,2,2)}, .degree = 5}
 
 #define QUAD_TRI_1 {.n = 1, .xi = {{1.0 / 3, 1.0 / 3, 0}}, .w = {0.5}, .degree = 1}
 #define QUAD_TRI_3 {.n = 3, .xi = {{T1, T1, 0}, {T2, T1, 0}, {T1, T2, 0}}, .w = {T1, T1, T1}, .degree = 2}
@@ -349,7 +400,8 @@ const TslGeometry TslGeomQuad8 = {
     .ref_volume = 4,
     .full       = QUAD_QUAD_9,
     .reduced    = QUAD_QUAD_4,
-    .xdmf_type  = 37, /* Quadrilateral_8 */
+    .as_face    = QUAD_QUAD_9, /* the faces of hex20: N_a N_b is of degree 4 in each direction */
+    .xdmf_type  = 37,          /* Quadrilateral_8 */
 };
 
 /* Faces (outward): S1 1-3-2, S2 1-2-4, S3 2-3-4, S4 3-1-4. */
@@ -430,4 +482,29 @@ const TslGeometry TslGeomHex8 = {
     .full       = QUAD_HEX_8,
     .reduced    = QUAD_HEX_1,
     .xdmf_type  = 9,
+};
+
+/* Faces (outward) as hex8, each followed by its midsides on the face edges (c0-c1), (c1-c2), (c2-c3), (c3-c0). */
+const TslGeometry TslGeomHex20 = {
+    .name       = "hex20",
+    .dim        = 3,
+    .nnode      = 20,
+    .ncorner    = 8,
+    .order      = 2,
+    .nface      = 6,
+    .face_nnode = {8, 8, 8, 8, 8, 8},
+    .face_node  = {{0, 3, 2, 1, 11, 10, 9, 8},
+                   {4, 5, 6, 7, 12, 13, 14, 15},
+                   {0, 1, 5, 4, 8, 17, 12, 16},
+                   {1, 2, 6, 5, 9, 18, 13, 17},
+                   {2, 3, 7, 6, 10, 19, 14, 18},
+                   {3, 0, 4, 7, 11, 16, 15, 19}},
+    .face_geom  = {&TslGeomQuad8, &TslGeomQuad8, &TslGeomQuad8, &TslGeomQuad8, &TslGeomQuad8, &TslGeomQuad8},
+    .shape      = ShapeHex20,
+    .node_xi    = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1},   {-1, 1, 1}, {0, -1, -1}, {1, 0, -1},
+                   {0, 1, -1},   {-1, 0, -1}, {0, -1, 1}, {1, 0, 1},   {0, 1, 1},   {-1, 0, 1}, {-1, -1, 0}, {1, -1, 0}, {1, 1, 0},   {-1, 1, 0}},
+    .ref_volume = 8,
+    .full       = QUAD_HEX_27,
+    .reduced    = QUAD_HEX_8,
+    .xdmf_type  = 48, /* Hexahedron_20 */
 };

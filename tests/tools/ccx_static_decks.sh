@@ -1,7 +1,8 @@
 #!/bin/bash
 # CalculiX's own *STATIC test decks (package calculix-ccx-test) run here as they stand and compared with the
 # displacements CalculiX printed for them (their .dat.ref, 7 digits; tests/tools/compare_ccx_dat.py):
-#   beam8p (a C3D8 cantilever under shear), beam8t (a bimetal beam heated by *TEMPERATURE), planestrain and
+#   beam8p (a C3D8 cantilever under shear), beam8t (a bimetal beam heated by *TEMPERATURE), beam20p (C3D20, a
+#   cantilever under shear), beamt (C3D20R heated by *TEMPERATURE against *EXPANSION, ZERO=), planestrain and
 #   planestrain2 (CPE4, CPE8), contactenergy (two cubes in contact): 1e-6 of the largest displacement (the print);
 #   contact3, contact6, cubespring, hueeber2, hueeber4 (C3D8 blocks in contact), ring1 and ring2 (CAX8 rings
 #   pressed into contact by thermal expansion and by an interference): 1e-2 (measured 1.6e-4 - 4.3e-3: the contact
@@ -15,7 +16,7 @@ get() { if [ -f "$src/$1" ]; then cat "$src/$1"; else zcat "$src/$1.gz"; fi; }
 [ -f "$src/beam8p.inp" ] || [ -f "$src/beam8p.inp.gz" ] || { echo "FAIL: CalculiX's test decks are not in $src (jobs/scripts/install-deps.sh installs calculix-ccx-test)"; exit 1; }
 rm -rf "$out" && mkdir -p "$out" || exit 1
 fail=0
-for spec in beam8p:1e-6 beam8t:1e-6 planestrain:1e-6 planestrain2:1e-6 contactenergy:1e-6 contact3:1e-2 contact6:1e-2 cubespring:1e-2 \
+for spec in beam8p:1e-6 beam8t:1e-6 beam20p:1e-6 beamt:1e-6 planestrain:1e-6 planestrain2:1e-6 contactenergy:1e-6 contact3:1e-2 contact6:1e-2 cubespring:1e-2 \
   hueeber2:1e-2 hueeber4:1e-2 ring1:1e-2 ring2:1e-2; do
   b=${spec%%:*} tol=${spec#*:}
   case "$b" in planestrain*) [ "$np" -gt 1 ] && { echo "$b: one element, which cannot be split over $np ranks: 1 rank only"; continue; } ;; esac
