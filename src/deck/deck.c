@@ -2780,13 +2780,14 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
       /* An unknown parameter is ignored with a warning, unless ignoring it would change the model: data
        * from elsewhere (INPUT=, USER subroutines), field-variable dependence, cylindrical or spherical node
        * coordinates, absolute amplitude values, a perturbation step, a composite section, friction laws beyond
-       * constant Coulomb (a shear limit, decay, anisotropy). Those are errors
-       * (found by mutating decks: each had run a different model with a warning only). */
+       * constant Coulomb (a shear limit, decay, anisotropy), CalculiX's TIME DELAY (shifts a load's amplitude) and
+       * SUBMODEL. Those are errors (found by mutating decks, and TIME DELAY by CalculiX's test deck beamdelay.inp:
+       * each had run a different model with a warning only). */
       static const struct {
         const char *key, *harmless; /* the value that is the default, so harmless to ignore, or NULL */
       } Meaningful[] = {
           {"USER", NULL},      {"INPUT", NULL},  {"DEPENDENCIES", "0"},       {"SYSTEM", "R"},       {"VALUE", "RELATIVE"}, {"PERTURBATION", NULL},
-          {"COMPOSITE", NULL}, {"TAUMAX", NULL}, {"EXPONENTIAL DECAY", NULL}, {"ANISOTROPIC", NULL},
+          {"COMPOSITE", NULL}, {"TAUMAX", NULL}, {"EXPONENTIAL DECAY", NULL}, {"ANISOTROPIC", NULL}, {"TIME DELAY", NULL},  {"SUBMODEL", NULL},
       };
       if (ParamKnown(kw->params, d->pkey[i])) continue;
       for (size_t k = 0; k < sizeof(Meaningful) / sizeof(Meaningful[0]); k++) {

@@ -144,3 +144,4 @@ tsl_deck_bad(node_normal_not_number node_normal_not_number.inp "error: node_norm
 tsl_deck_bad(static_thermal_load static_thermal_load.inp "error: static_thermal_load.inp:23: *CFLUX in a *STATIC step: a static step holds the temperatures (no heat transfer); thermal loads need *COUPLED TEMPERATURE-DISPLACEMENT (step Step-1)")
 tsl_deck_bad(temperature_in_coupled_step temperature_in_coupled_step.inp "error: temperature_in_coupled_step.inp:23: *TEMPERATURE in step Step-1: the temperature is an unknown of a coupled step; prescribe it with *BOUNDARY on dof 11 (*TEMPERATURE is for *STATIC steps)")
 tsl_deck_bad(static_riks static_riks.inp "error: static_riks.inp:19: *STATIC, RIKS (the arc-length method) is not supported")
+tsl_deck_bad(time_delay time_delay.inp "error: time_delay.inp:25: *CLOAD, TIME DELAY=0.5 is not supported: ignoring it would change the model")
