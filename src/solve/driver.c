@@ -692,7 +692,10 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslProblemGetModel(d->prob, &m));
   step = &m->steps[s];
   PetscCall(PetscPrintf(d->comm, "step %" PetscInt_FMT " (%s): %s, period %g, initial increment %g\n", s + 1, step->name[0] ? step->name : "-",
-                        step->steady ? "steady state" : "transient", (double)step->period, (double)step->dt0));
+                        step->statik   ? "static (temperatures held)"
+                        : step->steady ? "steady state"
+                                       : "transient",
+                        (double)step->period, (double)step->dt0));
   PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));
   TslCallCollective(d->comm, TslProblemSetStep(d->prob, s));
   if (!d->records_done) {
