@@ -170,16 +170,11 @@ static PetscErrorCode CheckSurfaces(TslModel *m)
 /* What the steps need of a material: the conductivity where some step transfers heat (any but *STATIC, which
  * holds the temperatures), the density and specific heat where some step is transient (capacity, mass). A
  * property a model does not need may be left out: it evaluates to 0 (CalculiX's mechanical decks give none). */
-static PetscErrorCode CheckMaterial(TslModel *m, const TslMaterial *mat, const TslSection *sec)
+static PetscErrorCode CheckMaterial(TslModel *m, const TslMaterial *mat, const TslSection *sec, PetscBool heat, PetscBool transient)
 {
-  char      where[PETSC_MAX_PATH_LEN];
-  PetscBool heat = PETSC_FALSE, transient = PETSC_FALSE;
+  char where[PETSC_MAX_PATH_LEN];
 
   PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < m->nstep; i++) {
-    heat      = (PetscBool)(heat || !m->steps[i].statik);
-    transient = (PetscBool)(transient || !m->steps[i].steady);
-  }
   (void)TslLocString(m, sec->loc, where, sizeof(where));
   CHECK(mat->prop[TSL_PROP_ELASTIC].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *ELASTIC", mat->name, where);
   CHECK(!heat || mat->prop[TSL_PROP_CONDUCTIVITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *CONDUCTIVITY", mat->name,
@@ -192,17 +187,21 @@ static PetscErrorCode CheckMaterial(TslModel *m, const TslMaterial *mat, const T
 
 static PetscErrorCode CheckMaterialsAndSections(TslModel *m)
 {
-  PetscBool *covered;
+  PetscBool *covered, heat = PETSC_FALSE, transient = PETSC_FALSE;
   PetscInt   bad = -1;
 
   PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < m->nstep; i++) { /* what the steps need of the materials (CheckMaterial) */
+    heat      = (PetscBool)(heat || !m->steps[i].statik);
+    transient = (PetscBool)(transient || !m->steps[i].steady);
+  }
   /* the property values are range-checked where they are read (deck.c, the Properties table) */
   for (PetscInt s = 0; s < m->nsection; s++) {
     TslSection *sec = &m->sections[s];
     CHECK(TslModelFindElementSet(m, sec->elset) >= 0, sec->loc, "undefined element set %s", sec->elset);
     sec->material_index = TslModelFindMaterial(m, sec->material);
     CHECK(sec->material_index >= 0, sec->loc, "undefined material %s", sec->material);
-    PetscCall(CheckMaterial(m, &m->materials[sec->material_index], sec));
+    PetscCall(CheckMaterial(m, &m->materials[sec->material_index], sec, heat, transient));
   }
   PetscCall(PetscCalloc1(m->nelem, &covered));
   for (PetscInt s = 0; s < m->nsection; s++) {

@@ -772,15 +772,14 @@ static PetscErrorCode KwNode(Deck *d, const DeckKeyword *kw)
       static const char *what[3] = {"the x coordinate", "the y coordinate", "the z coordinate"};
       PetscCall(FieldRealDefault(d, 1 + c, what[c], 0.0, &m->node_xyz[3 * m->nnode + c]));
     }
-    if (d->nfield > 4) { /* the dialect's nodal normal (shells and beams): read, so a typo still tells, and not used */
-      for (PetscInt c = 4; c < d->nfield; c++) {
-        PetscReal n;
-        PetscCall(FieldRealDefault(d, c, "a component of the node's normal", 0.0, &n));
-      }
-      if (!d->node_normal_warned)
-        PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                              LOC_FMT "warning: *NODE: the normal directions (fields 5-7) are ignored: no element type here uses nodal normals\n",
-                              DLOC(d)));
+    for (PetscInt c = 4; c < d->nfield; c++) { /* the dialect's nodal normal (shells, beams): read, so a typo still tells; not used */
+      PetscReal n;
+      PetscCall(FieldRealDefault(d, c, "a component of the node's normal", 0.0, &n));
+    }
+    if (d->nfield > 4 && !d->node_normal_warned) {
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            LOC_FMT "warning: *NODE: the normal directions (fields 5-7) are ignored: no element type here uses nodal normals\n",
+                            DLOC(d)));
       d->node_normal_warned = PETSC_TRUE;
     }
     d->node_line[2 * m->nnode]     = d->loc.file;
@@ -812,12 +811,12 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     char coupled[32];
     PetscCall(PetscSNPrintf(coupled, sizeof(coupled), "%sT", tname));
     type = TslElementTypeFind(coupled);
-    if (type >= 0 && !(d->noted_types & (1ULL << (type % 64)))) /* once per type */
+    if (type >= 0 && !(type < 64 && (d->noted_types >> type & 1))) /* once per type (the first 64 rows: always beyond) */
       PetscCall(PetscPrintf(PETSC_COMM_SELF,
                             LOC_FMT "note: element type %s read as %s (the steps here are coupled temperature-displacement ones; CalculiX "
                                     "gives its mechanical elements a temperature in such a step)\n",
                             KLOC(d), tname, TslElementTypeGet(type)->name));
-    if (type >= 0) d->noted_types |= 1ULL << (type % 64);
+    if (type >= 0 && type < 64) d->noted_types |= 1ULL << type;
   }
   USER_CHECK(type >= 0, LOC_FMT "unknown element type %s (docs/elements.md lists the types)", KLOC(d), tname);
   et = TslElementTypeGet(type);

@@ -21,23 +21,21 @@ cp "$src"/* "$out"/ && gunzip -f "$out"/*.gz 2> /dev/null
 cd "$out" || exit 1
 decks=$(ls *.inp)
 [ "$which" = coupled ] && decks=$(grep -il "^\*coupled temperature-displacement\|^\*contact pair\|^\*gap conductance" $decks)
-n=0 bad=0 done=0 refused=0 stopped=0
 for f in $decks; do
   b=${f%.inp}
-  n=$((n + 1))
   timeout -s KILL "$timeout" $mpiexec -n "$np" "$exe" "$f" -o "run_$b" > "$b.log" 2>&1
   rc=$?
   err=$(grep -m1 "thermoslide: error:" "$b.log")
   if [ $rc -eq 0 ] && grep -q "^thermoslide: completed" "$b.log"; then
-    outcome=completed done=$((done + 1))
+    outcome=completed
   elif [ $rc -ne 0 ] && [ $rc -lt 124 ] && echo "$err" | grep -qE "^thermoslide: error: [^ ]+:[0-9]+: "; then
-    outcome=refused refused=$((refused + 1))
+    outcome=refused
   elif [ $rc -ne 0 ] && [ $rc -lt 124 ] && echo "$err" | grep -qE "^thermoslide: error: step [0-9]+: " &&
     grep -qE "^results up to step [0-9]+ increment [0-9]+ are saved in " "$b.log"; then
-    outcome=stopped stopped=$((stopped + 1))
+    outcome=stopped
   else
-    outcome="FAIL (exit $rc)" bad=$((bad + 1))
-    tail -5 "$b.log"
+    outcome="FAIL (exit $rc)"
+    tail -5 "$b.log" >&2 # not into outcomes.txt, which counts one line per deck
   fi
   echo "$b: $outcome: ${err:-}"
 done | tee outcomes.txt
