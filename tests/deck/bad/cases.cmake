@@ -145,3 +145,4 @@ tsl_deck_bad(static_thermal_load static_thermal_load.inp "error: static_thermal_
 tsl_deck_bad(temperature_in_coupled_step temperature_in_coupled_step.inp "error: temperature_in_coupled_step.inp:23: *TEMPERATURE in step Step-1: the temperature is an unknown of a coupled step; prescribe it with *BOUNDARY on dof 11 (*TEMPERATURE is for *STATIC steps)")
 tsl_deck_bad(static_riks static_riks.inp "error: static_riks.inp:19: *STATIC, RIKS (the arc-length method) is not supported")
 tsl_deck_bad(time_delay time_delay.inp "error: time_delay.inp:25: *CLOAD, TIME DELAY=0.5 is not supported: ignoring it would change the model")
+tsl_deck_bad(temperature_line temperature_line.inp "error: temperature_line.inp:24: *TEMPERATURE data line needs: node or node set, temperature")
