@@ -697,8 +697,6 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
   PetscOptionsEnd();
   PetscCheck(margin == -1 || margin >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_contact_margin %g: expected a length >= 0", (double)margin);
   SetContactMargins(g, margin);
-  PetscCheck(g->nelem >= size, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "the model has %" PetscInt_FMT " elements, fewer than the %d ranks", g->nelem,
-             (int)size);
   PetscCall(PetscMalloc4(g->nelem, &epart, g->nnode, &owner, g->nnode, &gnum, g->nnode, &node_nat));
   PetscCall(PetscMalloc4(g->nelem, &elem_nat, g->nnode, &node_by_id, g->nelem, &elem_by_id, g->nnode, &mark));
   PetscCall(PetscCalloc2(size, &count, size + 1, &offset));
@@ -710,8 +708,8 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
     PetscBool empty = PETSC_FALSE;
 
     PetscCheck(metis || axis, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_partition %s: expected metis, axis_x, axis_y or axis_z", method);
-    if (size == 1) {
-      for (PetscInt e = 0; e < g->nelem; e++) epart[e] = 0;
+    if (size == 1 || g->nelem <= size) { /* one element per rank; ranks beyond the elements hold nothing */
+      for (PetscInt e = 0; e < g->nelem; e++) epart[e] = size == 1 ? 0 : (PetscInt)e;
     } else if (metis) {
       PetscCall(PartitionMetis(g, size, epart));
     } else {
@@ -720,7 +718,7 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
     /* METIS may leave a part empty on very small meshes: fall back to slabs along x */
     PetscCall(PetscCalloc1(size, &count_e));
     for (PetscInt e = 0; e < g->nelem; e++) count_e[epart[e]]++;
-    for (PetscMPIInt r = 0; r < size; r++) empty = (PetscBool)(empty || count_e[r] == 0);
+    for (PetscMPIInt r = 0; r < size && g->nelem > size; r++) empty = (PetscBool)(empty || count_e[r] == 0);
     PetscCall(PetscFree(count_e));
     if (empty) {
       PetscCall(PetscInfo(NULL, "METIS left a part empty; partitioning along x instead\n"));

@@ -139,12 +139,11 @@ static PetscErrorCode WriteRows(TslOutput out, hid_t loc, const char *name, hid_
   /* testing aid: a failure of a rank-local call on one rank (-tsl_debug_fail_kind output) */
   TslH5Check(out->comm, mspace = TslInjectNow(&out->inject, TSL_INJECT_OUTPUT, out->cur_step) ? H5I_INVALID_HID : H5Screate_simple(rank, mdims, NULL),
              out->h5_part);
-  if (count) {
+  /* one agreement either way: every rank must make the same collective calls, whatever its count */
+  if (count)
     TslH5Check(out->comm, H5Sselect_hyperslab(fspace, H5S_SELECT_SET, off, NULL, cnt, NULL), out->h5_part);
-  } else {
-    TslH5Check(out->comm, H5Sselect_none(fspace), out->h5_part);
-    TslH5Check(out->comm, H5Sselect_none(mspace), out->h5_part);
-  }
+  else
+    TslH5Check(out->comm, H5Sselect_none(fspace) < 0 || H5Sselect_none(mspace) < 0 ? -1 : 0, out->h5_part);
   TslH5Check(out->comm, H5Dwrite(dset, memtype, mspace, fspace, out->dxpl, count ? buf : (const void *)&dummy), out->h5_part);
   TslH5Check(out->comm, H5Sclose(mspace), out->h5_part);
   TslH5Check(out->comm, H5Sclose(fspace), out->h5_part);
