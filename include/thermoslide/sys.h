@@ -96,3 +96,15 @@ PetscErrorCode TslPhasesReport(MPI_Comm comm);
 #define TSL_EIGEN_MAX_N 64
 PetscReal TslLargestEigenvalue(PetscInt n, PetscReal S[]);
 
+/* Asked to stop (src/sys/stop.c): SIGUSR1 (what mpirun forwards to its ranks, and what a batch system sends ahead
+ * of the wall-time limit when told to, e.g. Slurm's --signal=USR1@300), SIGTERM, SIGINT or SIGXCPU reaching a
+ * rank makes the job stop at the next check, between Newton iterations or explicit increments, as a failed run
+ * does: the last converged state saved, the exit status 128 + the signal. A second such signal ends the process
+ * at once. TslStopInstall after PetscInitialize (it replaces PETSc's handlers of those signals). */
+PetscErrorCode TslStopInstall(void);
+/* The signal this rank received (0: none); async-signal-safe to read. */
+int TslStopLocal(void);
+/* Collective: the signal any rank received (the largest number), 0 if none. */
+PetscErrorCode TslStopRequested(MPI_Comm comm, int *sig);
+/* "SIGTERM", ... */
+const char *TslStopName(int sig);

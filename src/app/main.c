@@ -38,7 +38,7 @@ static const char Usage[] = "usage: mpirun -n N thermoslide job.inp [-o DIR] [op
                             "as usual. See docs/ for the keyword reference, element table and outputs.\n";
 
 /* Prints the first report of an error once, on rank 0 of the communicator it was raised on: user errors
- * (deck, options, files) and convergence stops as a plain message, anything else as an internal error with
+ * (deck, options, files) and convergence stops as a plain message, a stop asked for by a signal as such, anything else as an internal error with
  * its code, but never a stack trace or a source path (run with -info for the details). A blank message
  * is the follow-up of an error already reported (see TslAgree in sys.h). */
 static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, const char *file, PetscErrorCode n, PetscErrorType p, const char *mess,
@@ -53,6 +53,8 @@ static PetscErrorCode ErrorHandler(MPI_Comm comm, int line, const char *fun, con
   if (n == PETSC_ERR_USER_INPUT || n == PETSC_ERR_NOT_CONVERGED || n == PETSC_ERR_FILE_OPEN || n == PETSC_ERR_FILE_READ ||
       n == PETSC_ERR_FILE_WRITE || n == PETSC_ERR_FILE_UNEXPECTED)
     fprintf(stderr, "thermoslide: error: %s\n", mess);
+  else if (n == PETSC_ERR_SIG) /* asked to stop (src/sys/stop.c): not an error of the job's */
+    fprintf(stderr, "thermoslide: stopped: %s\n", mess);
   else if (n == PETSC_ERR_ARG_UNKNOWN_TYPE) /* this code names its types itself: an unknown one came from an option */
     fprintf(stderr, "thermoslide: error: a command-line option names an unknown type: %s\n", mess);
   else
@@ -264,6 +266,7 @@ int main(int argc, char **argv)
   }
   PetscCall(PetscInitialize(&argc, &argv, NULL, Usage));
   PetscCall(PetscPushErrorHandler(ErrorHandler, NULL));
+  PetscCall(TslStopInstall());
   PetscCall(TslPhasesInitialize());
   if (ndeck > 1) {
     PetscCall(PetscFPrintf(PETSC_COMM_WORLD, stderr, "thermoslide: error: more than one deck given (%s, %s): one job per run\n", decks[0], decks[1]));
@@ -288,6 +291,9 @@ int main(int argc, char **argv)
   ierr = Run(deck);
   PetscCall(PetscPopErrorHandler());
   if (ierr && !AllRanksStopped()) MPI_Abort(PETSC_COMM_WORLD, 1); /* a rank still busy elsewhere would never finish */
-  PetscCall(PetscFinalize());
-  return ierr ? 1 : 0;
+  {
+    const int sig = ierr ? TslStopLocal() : 0; /* stopped as asked: the status a shell gives a signal's end */
+    PetscCall(PetscFinalize());
+    return sig ? 128 + sig : ierr ? 1 : 0;
+  }
 }

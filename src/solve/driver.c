@@ -61,6 +61,12 @@ static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, P
   PetscBool ok_u, ok_t, force;
 
   PetscFunctionBeginUser;
+  /* asked to stop (a signal): the increment ends here, unconverged, and RunStep stops the job */
+  PetscCall(TslStopRequested(d->comm, &d->stop));
+  if (d->stop) {
+    *reason = SNES_DIVERGED_FUNCTION_DOMAIN;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, NULL));
   PetscCall(SNESGetForceIteration(snes, &force));
   if (*reason < 0) PetscFunctionReturn(PETSC_SUCCESS);
@@ -737,6 +743,10 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscCall(SetIncrement(d, step, t + h, h, *total_time + h));
     PetscCall(TslProblemApplyPrescribed(d->prob, X));
     PetscCall(SolveIncrement(d, X, &reason, &its, &lits));
+    PetscCheck(!d->stop, d->comm, PETSC_ERR_SIG,
+               "step %" PetscInt_FMT ": %s received at step time %g, in increment %" PetscInt_FMT
+               "; the last converged state (step time %g) is saved",
+               s + 1, TslStopName(d->stop), (double)(t + h), inc + 1, (double)t);
     if (s + 1 == d->debug_diverge_step) reason = SNES_DIVERGED_FUNCTION_DOMAIN;
     accept = (PetscBool)(reason > 0);
     if (accept && !step->steady && step->deltmx > 0) {

@@ -48,6 +48,7 @@ typedef struct {
   PetscReal       dt_forces;       /* the increment the last force evaluation measured slip over */
   PetscBool       capacity_varies; /* temperature-dependent c or rho: capacity re-lumped every increment */
   PetscReal       rates_reaction_heat, stored_rate;
+  int              stop; /* the signal a rank was stopped by (src/sys/stop.c), agreed in Advance's reduction; 0: none */
   TslExplicitRates rates;
   TslExplicitRates krates;         /* the kinematic corrector's heat rates (its slip measured over the increment it corrects) */
 } Explicit;
@@ -364,7 +365,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   const PetscScalar *uo, *xr, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
   const PetscReal    h_avg = h_prev > 0 ? 0.5 * (h + h_prev) : 0.5 * h; /* from rest at the start: v_{1/2} = dt/2 a_0 */
-  PetscReal          loc[7] = {0, 0, 0, 0, 0, 0, 0}, g[7];
+  PetscReal          loc[8] = {0, 0, 0, 0, 0, 0, 0, 0}, g[8];
 
   PetscFunctionBeginUser;
   PetscCall(VecCopy(x->X, x->Xold));
@@ -425,7 +426,9 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecRestoreArrayRead(x->Mask, &mask));
   PetscCall(VecRestoreArrayRead(x->M, &m));
   PetscCall(VecRestoreArray(x->V, &v));
-  PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_SUM, x->comm));
+  loc[7] = TslStopLocal(); /* asked to stop: noticed in the reduction every increment makes anyway */
+  PetscCall(MPIU_Allreduce(loc, g, 8, MPIU_REAL, MPIU_SUM, x->comm));
+  if (g[7] != 0) PetscCall(TslStopRequested(x->comm, &x->stop)); /* which signal (every rank saw the sum) */
   /* a run that has left the stable range (a DIRECT USER CONTROL increment above the stable one, a contact
    * spring or quadratic viscosity the estimate did not see) grows until it overflows: every rank sees the same
    * sums, so all stop here together, before a frame of the state is written; the frames so far are kept */
@@ -691,7 +694,13 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
       while (t_hist <= t + eps) t_hist += dt_hist;
     }
     if (frame) PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
+    if (x.stop && !frame) { /* this increment is as good as any: its state is the one saved */
+      PetscCall(HistoryRow(&x, en, s, inc, t, h, *total_time));
+      PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
+    }
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
+    PetscCheck(!x.stop, d->comm, PETSC_ERR_SIG, "explicit step %s: %s received at step time %g, in increment %" PetscInt_FMT "; this state is saved",
+               x.step->name, TslStopName(x.stop), (double)t, inc);
     if (x.progress > 0 && inc % x.progress == 0) {
       /* ALLKE is otherwise computed at history rows only: the line showed the last row's, and an ETOTAL off
        * by the kinetic energy gained since (up to 14 of 120 in a fast slide) */

@@ -27,6 +27,7 @@ typedef struct {
   PetscReal  rtol, atol_rel, cutback, growth;
   PetscInt   easy_its;
   PetscInt   debug_diverge_step;   /* test hook: every increment of this step is declared diverged */
+  int        stop;                 /* the signal the job was asked to stop by (src/sys/stop.c), agreed; 0: none */
   PetscReal  scale_u, scale_theta; /* largest initial residuals seen in the job */
   PetscReal  r0_u, r0_theta;       /* initial residuals of the current solve */
   PetscReal  forcing_max;          /* -tsl_linear_forcing: loosest linear tolerance of a Newton iteration after the first (0: -ksp_rtol always) */
