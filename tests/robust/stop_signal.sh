@@ -2,7 +2,7 @@
 # A job asked to stop by a signal (src/sys/stop.c) stops at its next check with the last converged state saved
 # under the usual names, no .part file left, and the exit status 128 + the signal, on 2 ranks through mpirun:
 #   implicit: the spec's conductance series, SIGUSR1 to mpirun (which forwards it) during step 2; the saved last
-#             frame must equal the uninterrupted run's frame of that increment (1e-12);
+#             frame must equal the uninterrupted run's frame of that increment (1e-9);
 #   explicit: a C3D8T block of 200 000 increments, SIGUSR1 once the first progress line is out; its last frame is
 #             the increment the log names.
 # usage: stop_signal.sh THERMOSLIDE MPIEXEC OUTDIR DECKDIR MAKE_BLOCK
@@ -42,8 +42,8 @@ last = a["frames"][sorted(a["frames"])[-1]]
 assert last.attrs["step"] == 2 and last.attrs["increment"] == inc, dict(last.attrs)
 ref = [b["frames"][k] for k in b["frames"] if b["frames"][k].attrs["step"] == 2 and b["frames"][k].attrs["increment"] == inc][0]
 d = max(np.abs(last[f][...] - ref[f][...]).max() / max(np.abs(ref[f][...]).max(), 1e-30) for f in ("U", "NT"))
-print(f"implicit: stopped after step 2 increment {inc}; its frame against the uninterrupted run's: {d:.2e} (1e-12)")
-sys.exit(0 if d <= 1e-12 else 1)
+print(f"implicit: stopped after step 2 increment {inc}; its frame against the uninterrupted run's: {d:.2e} (1e-9: two 2-rank runs of the same deck differ in the last digits, MUMPS's parallel factorisation)")
+sys.exit(0 if d <= 1e-9 else 1)
 PY
 
 # explicit
