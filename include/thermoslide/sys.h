@@ -102,9 +102,10 @@ PetscReal TslLargestEigenvalue(PetscInt n, PetscReal S[]);
  * does: the last converged state saved, the exit status 128 + the signal. A second such signal ends the process
  * at once. TslStopInstall after PetscInitialize (it replaces PETSc's handlers of those signals). */
 PetscErrorCode TslStopInstall(void);
-/* The signal this rank received (0: none); async-signal-safe to read. */
+/* The signal this rank received, or the one agreed by TslStopRequested (0: none); async-signal-safe to read. */
 int TslStopLocal(void);
-/* Collective: the signal any rank received (the largest number), 0 if none. */
+/* Collective: the signal any rank received (the largest number), 0 if none; from then on TslStopLocal gives it on
+ * every rank. */
 PetscErrorCode TslStopRequested(MPI_Comm comm, int *sig);
 /* "SIGTERM", ... */
 const char *TslStopName(int sig);

@@ -45,6 +45,7 @@ PetscErrorCode TslStopRequested(MPI_Comm comm, int *sig)
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Allreduce(&local, sig, 1, MPI_INT, MPI_MAX, comm));
+  if (*sig) stop_signal = *sig; /* every rank then reports the same signal (and exit status), whichever received it */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
