@@ -5,7 +5,9 @@
 #     holds its own part of the main surface), with the node-to-surface pair ("thermoslide") and with the
 #     surface-to-surface pair ("ts s2s", the kind of pair CalculiX runs below; S2S=0 leaves it out),
 #   - CalculiX 2.20 (ccx, face-to-face contact, its default direct solver, one thread) up to CCX_MAX_N
-#     (default 32).
+#     (default 32), stopped after CCX_TIMEOUT seconds if given (its time is then a lower bound, printed ">T", and
+#     so are the time ratios; the memory is its peak until then). The issue's size is N = 224 (50 625 contact
+#     nodes, 1.02 M unknowns): CCX_MAX_N=224 CCX_TIMEOUT=5400 bench_contact3d.sh EXE OUT 224 (CalculiX: 17 GB).
 # Per run: total wall time, Newton iterations, the contact phase and the search inside it (pairing and the
 # held-region check, without the matrix pattern rebuild) per Newton iteration, the search's share of the
 # run (= its share of an iteration), the main faces held per rank, peak memory per rank, the heat crossing
@@ -19,6 +21,7 @@ shift 2 || shift $#
 sizes=${*:-16 32 64}
 here=$(cd "$(dirname "$0")" && pwd)
 ccx_max=${CCX_MAX_N:-32}
+ccx_timeout=${CCX_TIMEOUT:-0}
 mkdir -p "$out"
 ccx_ok=1
 command -v ccx > /dev/null || { ccx_ok=0; echo "ccx not installed (apt-get install calculix-ccx): CalculiX runs skipped"; }
@@ -56,13 +59,19 @@ for n in $sizes; do
     cdir=$out/ccx$n
     mkdir -p "$cdir"
     /usr/bin/python3 "$here/make_contact_block.py" "$n" "$cdir/block.inp" calculix
-    if (cd "$cdir" && OMP_NUM_THREADS=1 /usr/bin/time -f "%e %M" -o time.txt ccx -i block > ccx.log 2>&1) && grep -q "Job finished" "$cdir/ccx.log"; then
-      read -r ct cm < "$cdir/time.txt"
+    tmo=()
+    [ "$ccx_timeout" -gt 0 ] && tmo=(timeout -s TERM "$ccx_timeout")
+    (cd "$cdir" && OMP_NUM_THREADS=1 /usr/bin/time -f "%e %M" -o time.txt "${tmo[@]}" ccx -i block > ccx.log 2>&1)
+    lb=""
+    grep -q "Job finished" "$cdir/ccx.log" || { [ ${#tmo[@]} -gt 0 ] && grep -q "^[0-9.]* [0-9]*$" "$cdir/time.txt" && lb=">"; }
+    if grep -q "Job finished" "$cdir/ccx.log" || [ -n "$lb" ]; then
+      read -r ct cm < <(tail -1 "$cdir/time.txt")
       cm=$(echo "$cm / 1024" | bc)
       cits=$(grep -c "iteration [0-9]" "$cdir/ccx.log")
       cheat=$(grep -A2 "total heat generation for set HOT" "$cdir/block.dat" | awk 'NF == 1 {printf "%.6g", ($1 < 0 ? -$1 : $1)}')
-      printf "%-4s %8d %9d %-5s %-11s %8s %6s %12s %12s %8s %-13s %9s %9s\n" "$n" "$nc" "$dofs" 1 CalculiX "$ct" "$cits" - - - - "$cm" "${cheat:--}"
-      T[ccx,$n]=$ct T[ccxmem,$n]=$cm
+      printf "%-4s %8d %9d %-5s %-11s %8s %6s %12s %12s %8s %-13s %9s %9s\n" "$n" "$nc" "$dofs" 1 CalculiX "$lb$ct" "$cits" - - - - "$cm" "${cheat:--}"
+      [ -n "$lb" ] && echo "     CalculiX stopped after CCX_TIMEOUT=$ccx_timeout s, unfinished: $(grep -E "attempt|increment size" "$cdir/ccx.log" | tail -2 | tr -s ' ' | tr '\n' ';')"
+      T[ccx,$n]=$ct T[ccxmem,$n]=$cm T[ccxlb,$n]=$lb
     else
       echo "ccx failed: $cdir/ccx.log"; tail -3 "$cdir/ccx.log"
     fi
@@ -79,7 +88,7 @@ for n in $sizes; do
     [ $tag = s2s ] && label=surface-to-surface
     r="$r $label"
     if [ -n "${T[ccx,$n]:-}" ]; then
-      r="$r time x$(echo "${T[ccx,$n]} / ${T[$tag,$n,1]}" | bc -l | xargs printf %.2g), memory x$(echo "${T[ccxmem,$n]} / ${T[${tag}mem,$n,1]}" | bc -l | xargs printf %.2g)"
+      r="$r time ${T[ccxlb,$n]}x$(echo "${T[ccx,$n]} / ${T[$tag,$n,1]}" | bc -l | xargs printf %.2g), memory ${T[ccxlb,$n]}x$(echo "${T[ccxmem,$n]} / ${T[${tag}mem,$n,1]}" | bc -l | xargs printf %.2g)"
     fi
     if [ -n "${T[${tag}mem,$n,2]:-}" ]; then
       r="$r, memory per rank 2/1 ranks $(echo "${T[${tag}mem,$n,2]} / ${T[${tag}mem,$n,1]}" | bc -l | xargs printf %.2g)"
