@@ -708,8 +708,10 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
     PetscBool empty = PETSC_FALSE;
 
     PetscCheck(metis || axis, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_partition %s: expected metis, axis_x, axis_y or axis_z", method);
-    if (size == 1 || g->nelem <= size) { /* one element per rank; ranks beyond the elements hold nothing */
-      for (PetscInt e = 0; e < g->nelem; e++) epart[e] = size == 1 ? 0 : (PetscInt)e;
+    if (g->nelem <= size) { /* one element per rank; ranks beyond the elements hold nothing */
+      for (PetscInt e = 0; e < g->nelem; e++) epart[e] = e;
+    } else if (size == 1) {
+      for (PetscInt e = 0; e < g->nelem; e++) epart[e] = 0;
     } else if (metis) {
       PetscCall(PartitionMetis(g, size, epart));
     } else {
@@ -718,7 +720,7 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
     /* METIS may leave a part empty on very small meshes: fall back to slabs along x */
     PetscCall(PetscCalloc1(size, &count_e));
     for (PetscInt e = 0; e < g->nelem; e++) count_e[epart[e]]++;
-    for (PetscMPIInt r = 0; r < size && g->nelem > size; r++) empty = (PetscBool)(empty || count_e[r] == 0);
+    for (PetscMPIInt r = 0; r < size && g->nelem > size; r++) empty = (PetscBool)(empty || count_e[r] == 0); /* fewer: empty by design */
     PetscCall(PetscFree(count_e));
     if (empty) {
       PetscCall(PetscInfo(NULL, "METIS left a part empty; partitioning along x instead\n"));

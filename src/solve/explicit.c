@@ -685,7 +685,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
       CombineLimits(&x);
       if (x.step->dt_user <= 0) x.dt = x.dt_stable;
     }
-    frame = (PetscBool)(last || t >= t_frame - eps);
+    frame = (PetscBool)(last || x.stop || t >= t_frame - eps); /* asked to stop: this increment's state is the one saved */
     if (frame)
       while (t_frame <= t + eps) t_frame += dt_frame;
     PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
@@ -694,10 +694,6 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
       while (t_hist <= t + eps) t_hist += dt_hist;
     }
     if (frame) PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
-    if (x.stop && !frame) { /* this increment is as good as any: its state is the one saved */
-      PetscCall(HistoryRow(&x, en, s, inc, t, h, *total_time));
-      PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
-    }
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
     PetscCheck(!x.stop || last, d->comm, PETSC_ERR_SIG, /* at the step's end: its results are whole; a next step stops at once */
                "explicit step %s: %s received at step time %g, in increment %" PetscInt_FMT "; this state is saved", x.step->name,
