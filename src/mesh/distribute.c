@@ -5,6 +5,7 @@
 #include <thermoslide/contact_s2s.h>
 #include <metis.h>
 #include <string.h>
+#include <stdint.h>
 
 typedef struct {
   const PetscInt  *key;
@@ -20,6 +21,78 @@ static PetscErrorCode SortByInt(PetscInt n, const PetscInt key[], PetscInt perm[
   PetscCall(PetscMalloc1(n, &k));
   for (PetscInt i = 0; i < n; i++) perm[i] = i, k[i] = key[i];
   PetscCall(PetscSortIntWithArray(n, k, perm));
+  PetscCall(PetscFree(k));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The index of a point along a Hilbert curve: b bits per axis in x[0..n-1] (n = 2 or 3), n * b <= 63.
+ * J. Skilling's transform (AIP Conf. Proc. 707, 2004): the axes' bits turned into the curve's
+ * "transposed" index in place, then interleaved, most significant first. */
+static uint64_t HilbertIndex(unsigned x[], PetscInt n, PetscInt b)
+{
+  const unsigned m = 1u << (b - 1);
+  uint64_t       h = 0;
+  unsigned       t;
+
+  for (unsigned q = m; q > 1; q >>= 1) { /* inverse undo */
+    const unsigned p = q - 1;
+    for (PetscInt i = 0; i < n; i++) {
+      if (x[i] & q) x[0] ^= p; /* invert */
+      else t = (x[0] ^ x[i]) & p, x[0] ^= t, x[i] ^= t; /* exchange */
+    }
+  }
+  for (PetscInt i = 1; i < n; i++) x[i] ^= x[i - 1]; /* Gray encode */
+  t = 0;
+  for (unsigned q = m; q > 1; q >>= 1)
+    if (x[n - 1] & q) t ^= q - 1;
+  for (PetscInt i = 0; i < n; i++) x[i] ^= t;
+  for (PetscInt bit = b - 1; bit >= 0; bit--)
+    for (PetscInt i = 0; i < n; i++) h = (h << 1) | ((x[i] >> bit) & 1u);
+  return h;
+}
+
+typedef struct {
+  uint64_t key;
+  PetscInt part, id, pos;
+} OrderKey;
+
+static int CompareOrderKey(const void *a, const void *b)
+{
+  const OrderKey *p = a, *q = b;
+  if (p->part != q->part) return p->part < q->part ? -1 : 1;
+  if (p->key != q->key) return p->key < q->key ? -1 : 1;
+  return p->id < q->id ? -1 : p->id > q->id;
+}
+
+/* The order in which each rank holds its elements: by part, then (locality) along a Hilbert curve through
+ * the element centroids, so elements that share nodes are near one another in memory, or (input) by
+ * element number. */
+static PetscErrorCode ElementOrder(const TslModel *g, const PetscInt epart[], PetscBool locality, PetscInt order[])
+{
+  PetscReal lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL};
+  const PetscInt b = g->dim == 3 ? 21 : 31;
+  OrderKey      *k;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscMalloc1(g->nelem, &k));
+  for (PetscInt p = 0; p < g->nnode; p++)
+    for (PetscInt d = 0; d < 3; d++) lo[d] = PetscMin(lo[d], g->node_xyz[3 * p + d]), hi[d] = PetscMax(hi[d], g->node_xyz[3 * p + d]);
+  for (PetscInt e = 0; e < g->nelem; e++) {
+    PetscReal c[3] = {0, 0, 0};
+    unsigned  x[3] = {0, 0, 0};
+    PetscInt  n    = g->elem_ptr[e + 1] - g->elem_ptr[e];
+    k[e].part = epart[e], k[e].id = g->elem_id[e], k[e].pos = e, k[e].key = 0;
+    if (!locality) continue;
+    for (PetscInt j = g->elem_ptr[e]; j < g->elem_ptr[e + 1]; j++)
+      for (PetscInt d = 0; d < 3; d++) c[d] += g->node_xyz[3 * TslModelNodeIndex(g, g->elem_conn[j]) + d] / n;
+    for (PetscInt d = 0; d < g->dim; d++) {
+      const PetscReal s = hi[d] > lo[d] ? (c[d] - lo[d]) / (hi[d] - lo[d]) : 0;
+      x[d]              = (unsigned)PetscMin(PetscMax(s, 0.0) * ((1u << b) - 1), (PetscReal)((1u << b) - 1));
+    }
+    k[e].key = HilbertIndex(x, g->dim, b);
+  }
+  qsort(k, (size_t)g->nelem, sizeof(*k), CompareOrderKey);
+  for (PetscInt i = 0; i < g->nelem; i++) order[i] = k[i].pos;
   PetscCall(PetscFree(k));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -212,7 +285,7 @@ static PetscErrorCode KeepMainFaces(const TslModel *g, const TslContactPair *gc,
 
 /* Builds the part of rank r: its elements, nodes (owned, then ghosts), numbering arrays. */
 static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt epart[], const PetscInt owner[], const PetscInt gnum[],
-                                const PetscInt node_nat[], const PetscInt elem_nat[], const PetscInt elem_by_id[], PetscInt nnode_used,
+                                const PetscInt node_nat[], const PetscInt elem_nat[], const PetscInt elem_order[], PetscInt nnode_used,
                                 PetscInt *mark, TslModel **part)
 {
   PetscInt  *elems, *nodes, *key, ne = 0, nn = 0, nown = 0, **sel, *held;
@@ -223,7 +296,7 @@ static PetscErrorCode BuildPart(const TslModel *g, PetscInt r, const PetscInt ep
   PetscCall(PetscArrayzero(mark, g->nnode));
   PetscCall(PetscMalloc1(g->nelem, &elems));
   for (PetscInt i = 0; i < g->nelem; i++) {
-    PetscInt e = elem_by_id[i];
+    PetscInt e = elem_order[i];
     if (epart[e] != r) continue;
     elems[ne++] = e;
     for (PetscInt k = g->elem_ptr[e]; k < g->elem_ptr[e + 1]; k++) mark[TslModelNodeIndex(g, g->elem_conn[k])] = 1;
@@ -681,8 +754,8 @@ static void SetContactMargins(TslModel *g, PetscReal option)
 
 static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt size, TslModel **local)
 {
-  PetscInt *epart, *owner, *gnum, *node_nat, *elem_nat, *node_by_id, *elem_by_id, *count, *offset, *mark, nused = 0;
-  char      method[32] = "metis";
+  PetscInt *epart, *owner, *gnum, *node_nat, *elem_nat, *node_by_id, *elem_by_id, *elem_order, *count, *offset, *mark, nused = 0;
+  char      method[32] = "metis", order[32] = "locality";
   PetscReal margin     = -1;
   PetscInt  ndof       = g->nelem ? TslElementTypeGet(g->elem_type[0])->ndof : g->dim + 1;
 
@@ -694,12 +767,16 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
   PetscCall(PetscOptionsString("-tsl_partition", "element partition: metis, or slabs by element centroid axis_x|axis_y|axis_z", NULL, method, method,
                                sizeof(method), NULL));
   PetscCall(PetscOptionsReal("-tsl_contact_margin", "contact: inflation of each rank's held region of the main surface (default 2 (largest prescribed displacement + search radius))", NULL, margin, &margin, NULL));
+  PetscCall(PetscOptionsString("-tsl_mesh_order", "order of each rank's elements and owned nodes in memory: locality (along a Hilbert curve) or input (by number)", NULL, order, order,
+                               sizeof(order), NULL));
   PetscOptionsEnd();
+  PetscCheck(!strcmp(order, "locality") || !strcmp(order, "input"), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_mesh_order %s: expected locality or input", order);
   PetscCheck(margin == -1 || margin >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_contact_margin %g: expected a length >= 0", (double)margin);
   SetContactMargins(g, margin);
   PetscCall(PetscMalloc4(g->nelem, &epart, g->nnode, &owner, g->nnode, &gnum, g->nnode, &node_nat));
   PetscCall(PetscMalloc4(g->nelem, &elem_nat, g->nnode, &node_by_id, g->nelem, &elem_by_id, g->nnode, &mark));
   PetscCall(PetscCalloc2(size, &count, size + 1, &offset));
+  PetscCall(PetscMalloc1(g->nelem, &elem_order));
 
   {
     PetscBool metis = (PetscBool)!strcmp(method, "metis"),
@@ -748,10 +825,23 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
   }
   for (PetscMPIInt r = 0; r < size; r++) offset[r + 1] = offset[r] + count[r];
   for (PetscMPIInt r = 0; r < size; r++) count[r] = 0;
-  for (PetscInt i = 0; i < g->nnode; i++) {
-    PetscInt p = node_by_id[i];
-    if (owner[p] >= 0) gnum[p] = offset[owner[p]] + count[owner[p]]++;
-  }
+  /* each rank's elements in memory order; its owned nodes numbered as its elements first reach them
+   * (locality), or by node number (input) */
+  PetscCall(ElementOrder(g, epart, (PetscBool)!strcmp(order, "locality"), elem_order));
+  if (!strcmp(order, "locality")) {
+    for (PetscInt p = 0; p < g->nnode; p++) gnum[p] = -1;
+    for (PetscInt i = 0; i < g->nelem; i++) {
+      const PetscInt e = elem_order[i];
+      for (PetscInt k = g->elem_ptr[e]; k < g->elem_ptr[e + 1]; k++) {
+        const PetscInt p = TslModelNodeIndex(g, g->elem_conn[k]);
+        if (owner[p] == epart[e] && gnum[p] < 0) gnum[p] = offset[owner[p]] + count[owner[p]]++;
+      }
+    }
+  } else
+    for (PetscInt i = 0; i < g->nnode; i++) {
+      PetscInt p = node_by_id[i];
+      if (owner[p] >= 0) gnum[p] = offset[owner[p]] + count[owner[p]]++;
+    }
   for (PetscInt i = 0; i < g->nelem; i++) elem_nat[elem_by_id[i]] = i;
 
   /* equations in global dof numbers */
@@ -776,7 +866,7 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
 
   for (PetscMPIInt r = size - 1; r >= 0; r--) {
     TslModel *part;
-    PetscCall(BuildPart(g, r, epart, owner, gnum, node_nat, elem_nat, elem_by_id, nused, mark, &part));
+    PetscCall(BuildPart(g, r, epart, owner, gnum, node_nat, elem_nat, elem_order, nused, mark, &part));
     if (r == 0) {
       *local = part;
     } else {
@@ -794,6 +884,7 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
   PetscCall(PetscFree4(epart, owner, gnum, node_nat));
   PetscCall(PetscFree4(elem_nat, node_by_id, elem_by_id, mark));
   PetscCall(PetscFree2(count, offset));
+  PetscCall(PetscFree(elem_order));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -9,6 +9,9 @@ A field that is physically zero (reactions of a free body) is only round-off; FI
 magnitude it is compared against (e.g. RF=1e4 for forces of order 1e4 elsewhere in the model).
 skip=PREFIX leaves out the datasets whose path starts with PREFIX (skip=mesh: the same cells numbered
 otherwise, e.g. continuum shells with another stack direction).
+renumbered=MAP.txt: B is the model of A with its nodes and elements renumbered (tests/tools/renumber_deck.py
+writes MAP.txt): B's node and element rows are compared with A's rows of the same node or element, and the
+datasets that are ids or connectivity (mesh/node_ids, mesh/element_ids, mesh/topology) are left out.
 """
 import sys
 
@@ -25,7 +28,26 @@ def datasets(f):
 a, b = datasets(h5py.File(sys.argv[1], "r")), datasets(h5py.File(sys.argv[2], "r"))
 rtol = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-8
 skips = [kv.split("=", 1)[1] for kv in sys.argv[4:] if kv.startswith("skip=")]
-floors = dict((kv.split("=")[0], float(kv.split("=")[1])) for kv in sys.argv[4:] if not kv.startswith("skip="))
+floors = dict((kv.split("=")[0], float(kv.split("=")[1])) for kv in sys.argv[4:] if not kv.startswith(("skip=", "renumbered=")))
+renumbered = [kv.split("=", 1)[1] for kv in sys.argv[4:] if kv.startswith("renumbered=")]
+if renumbered:
+    nmap, emap = {}, {}
+    for line in open(renumbered[0]):
+        kind, old, new = line.split()
+        (nmap if kind == "node" else emap)[int(old)] = int(new)
+    skips += ["mesh/node_ids", "mesh/element_ids", "mesh/topology"]
+    # B's row of each of A's nodes (elements): A's id, renumbered, found among B's ids
+    rows = []
+    for ids, m in (("mesh/node_ids", nmap), ("mesh/element_ids", emap)):
+        where = dict((int(i), r) for r, i in enumerate(b[ids]))
+        rows.append((len(a[ids]), np.array([where[m[int(i)]] for i in a[ids]], dtype=int)))
+    for name in list(b):
+        if any(name.startswith(p) for p in skips) or np.ndim(b[name]) == 0:
+            continue
+        for n, perm in rows:
+            if b[name].shape[0] == n:
+                b[name] = b[name][perm]
+                break
 a = dict((k, v) for k, v in a.items() if not any(k.startswith(p) for p in skips))
 b = dict((k, v) for k, v in b.items() if not any(k.startswith(p) for p in skips))
 bad = sorted(set(a) ^ set(b))
