@@ -37,8 +37,10 @@ static uint64_t HilbertIndex(unsigned x[], PetscInt n, PetscInt b)
   for (unsigned q = m; q > 1; q >>= 1) { /* inverse undo */
     const unsigned p = q - 1;
     for (PetscInt i = 0; i < n; i++) {
-      if (x[i] & q) x[0] ^= p; /* invert */
-      else t = (x[0] ^ x[i]) & p, x[0] ^= t, x[i] ^= t; /* exchange */
+      if (x[i] & q)
+        x[0] ^= p; /* invert */
+      else
+        t = (x[0] ^ x[i]) & p, x[0] ^= t, x[i] ^= t; /* exchange */
     }
   }
   for (PetscInt i = 1; i < n; i++) x[i] ^= x[i - 1]; /* Gray encode */
@@ -69,7 +71,7 @@ static int CompareOrderKey(const void *a, const void *b)
  * element number. */
 static PetscErrorCode ElementOrder(const TslModel *g, const PetscInt epart[], PetscBool locality, PetscInt order[])
 {
-  PetscReal lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL};
+  PetscReal      lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {PETSC_MIN_REAL, PETSC_MIN_REAL, PETSC_MIN_REAL};
   const PetscInt b = g->dim == 3 ? 21 : 31;
   OrderKey      *k;
 
@@ -767,10 +769,12 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
   PetscCall(PetscOptionsString("-tsl_partition", "element partition: metis, or slabs by element centroid axis_x|axis_y|axis_z", NULL, method, method,
                                sizeof(method), NULL));
   PetscCall(PetscOptionsReal("-tsl_contact_margin", "contact: inflation of each rank's held region of the main surface (default 2 (largest prescribed displacement + search radius))", NULL, margin, &margin, NULL));
-  PetscCall(PetscOptionsString("-tsl_mesh_order", "order of each rank's elements and owned nodes in memory: locality (along a Hilbert curve) or input (by number)", NULL, order, order,
-                               sizeof(order), NULL));
+  PetscCall(PetscOptionsString("-tsl_mesh_order",
+                               "order of each rank's elements and owned nodes in memory: locality (along a Hilbert curve) or input (by number)", NULL,
+                               order, order, sizeof(order), NULL));
   PetscOptionsEnd();
-  PetscCheck(!strcmp(order, "locality") || !strcmp(order, "input"), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_mesh_order %s: expected locality or input", order);
+  PetscCheck(!strcmp(order, "locality") || !strcmp(order, "input"), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+             "-tsl_mesh_order %s: expected locality or input", order);
   PetscCheck(margin == -1 || margin >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_contact_margin %g: expected a length >= 0", (double)margin);
   SetContactMargins(g, margin);
   PetscCall(PetscMalloc4(g->nelem, &epart, g->nnode, &owner, g->nnode, &gnum, g->nnode, &node_nat));
