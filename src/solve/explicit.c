@@ -66,7 +66,7 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
   d->explicit_search   = 10;
   d->explicit_kin_passes = 20;
   d->explicit_kin_tol    = 1e-3;
-  d->explicit_kin_gap    = 0;
+  d->explicit_kin_gap    = 1e-12; /* closure to round-off (docs/explicit.md, "Kinematic contact") */
   d->explicit_records    = PETSC_TRUE;
   PetscOptionsBegin(d->comm, NULL, "thermoslide explicit dynamics", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_safety", "explicit: factor on the element-by-element stable increment", 0, PETSC_TRUE, 1,
@@ -81,10 +81,10 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d)
                           &d->explicit_kin_passes));
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_kinematic_tol", "explicit: kinematic corrector passes stop at this pressure change (fraction of the largest pressure)",
                            0, PETSC_FALSE, 1, PETSC_FALSE, &d->explicit_kin_tol));
-  PetscCall(TslOptionsReal(
-      PetscOptionsObject, "-tsl_explicit_kinematic_gap_tol",
-      "explicit: kinematic corrector passes also go on while a gap left (over the search radius) exceeds this and still shrinks (0: off)", 0,
-      PETSC_FALSE, 1, PETSC_FALSE, &d->explicit_kin_gap));
+  PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_explicit_kinematic_gap_tol",
+                           "explicit: kinematic corrector passes also go on while a gap left (over the search radius) exceeds this and still shrinks "
+                           "(0: the pressure criterion alone)",
+                           0, PETSC_FALSE, 1, PETSC_FALSE, &d->explicit_kin_gap));
   PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_explicit_records", "explicit: element force records (geometry and conduction computed once; docs/explicit.md)",
                            &d->explicit_records));
   PetscOptionsEnd();

@@ -2,7 +2,11 @@
 """3D kinematic contact in an explicit step (decks/kinematic_blocks_c3d8t.inp: a 0.1-thick C3D8T block
 pressed by 100 onto a base block, MECHANICAL CONSTRAINT=KINEMATIC, gap conductance on pressure; docs/explicit.md):
 - the energy balance closes (|ETOTAL| below 1e-6 of the largest energy in every history row);
-- the kinematic contact does no net positive work (ALLCW >= 0: closing a gap removes the approach velocity);
+- the kinematic contact does no net positive work beyond the scheme's error (ALLCW >= -1e-6 of the largest
+  energy in every row: closing a gap removes the approach velocity; with the gaps closed to round-off the first
+  touch books a small negative work that is first order in the increment, -6.7e-9 / -4.3e-9 / -2.4e-9 / -1.2e-9
+  at -tsl_explicit_safety 0.9 / 0.45 / 0.225 / 0.1125, 2.2e-7 of the largest energy at the default, while the
+  step's ALLCW itself moves by 7e-4 between the first two of those increments: docs/explicit.md, open problem 3);
 - no secondary node in contact (CPRESS > 0) penetrates the base's top face (interpolated bilinearly over the
   base's top nodes, a structured grid in x and z) by more than 1e-8: the corrector's passes close the rough
   penetration of this impact within the increment (docs/explicit.md, "Kinematic contact"; measured: none,
@@ -21,7 +25,8 @@ r = Result(*sys.argv[1:3])
 h = r.history
 scale = max(abs(h[k]).max() for k in ("ALLKE", "ALLIE", "ALLWK", "ALLCW"))
 check("energy balance |ETOTAL| over all rows / largest energy", abs(h["ETOTAL"]).max() / scale, 0.0, 1e-6)
-check_true("contact work ALLCW >= 0 in every row", (h["ALLCW"] >= -1e-12 * scale).all(), "smallest %g" % h["ALLCW"].min())
+check_true("contact work ALLCW >= -1e-6 of the largest energy in every row", (h["ALLCW"] >= -1e-6 * scale).all(),
+           "smallest %g (%.2g of the largest energy)" % (h["ALLCW"].min(), h["ALLCW"].min() / scale))
 
 xyz, u, cp = r.xyz, r.field("U"), r.field("CPRESS")[:, 0]
 sec = np.nonzero(cp > 0)[0]
