@@ -210,18 +210,123 @@ static void            FastBatch(TslProblem p, PetscInt b, const PetscScalar *xa
   else FastBatchNd(p, b, xa, c, p->ndof);
 }
 
+/* The face loads' integrals of the elements with a record (problem_impl.h, fcache): formed once per edit of
+ * the face list by the generic face kernel itself at unit values (pressure: R_u = int N_a n dA; flux: R_theta =
+ * -int N_a dA, heat = area; film: its tangent int N_a N_b dA, whose rows sum to int N_a dA, as the shape
+ * functions sum to one), so FaceLoadsCached gives the generic results to rounding. */
+static PetscErrorCode FaceCache(TslProblem p, const PetscScalar *xa)
+{
+  PetscInt    total = 0;
+  TslElemData d;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscFree(p->fcache_off));
+  PetscCall(PetscFree(p->fcache));
+  PetscCall(PetscMalloc1(p->nface + 1, &p->fcache_off));
+  for (PetscInt pass = 0; pass < 2; pass++) { /* the sizes, then the integrals */
+    total = 0;
+    for (PetscInt e = 0; e < p->m->nelem; e++) {
+      const TslGeometry *g;
+      if (p->face_start[e] == p->face_start[e + 1] || !(p->fast_off && p->fast_off[e] >= 0)) continue;
+      TslProblemGather(p, e, xa, xa, &d);
+      g = d.in.type->geom;
+      for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
+        const TslFaceRecord *rec = &p->face[i];
+        const PetscInt       fn = rec->kind == TSL_BODY_FLUX ? 0 : g->face_nnode[rec->face - 1], dim = p->dim, th = p->ndof - 1;
+        const PetscInt      *fnode = rec->kind == TSL_BODY_FLUX ? NULL : g->face_node[rec->face - 1];
+        PetscReal            R[TSL_MAX_ELEM_DOF], heat = 0, *K = NULL, *c;
+        const PetscInt       size = rec->kind == TSL_FACE_PRESSURE ? fn * dim
+                                    : rec->kind == TSL_FACE_FLUX   ? fn + 1
+                                    : rec->kind == TSL_FACE_FILM   ? fn * fn + fn + 1
+                                                                   : 0;
+        p->fcache_off[i]          = size ? total : -1;
+        total += size;
+        if (pass == 0 || !size) continue;
+        c = &p->fcache[p->fcache_off[i]];
+        PetscCall(PetscArrayzero(R, d.nd));
+        if (rec->kind == TSL_FACE_FILM) PetscCall(PetscCalloc1(d.nd * d.nd, &K));
+        PetscCall(TslElementFaceLoad(&d.in, rec->kind, rec->face, 1.0, 0.0, R, K, &heat));
+        if (rec->kind == TSL_FACE_PRESSURE)
+          for (PetscInt f = 0; f < fn; f++)
+            for (PetscInt k = 0; k < dim; k++) c[f * dim + k] = R[p->ndof * fnode[f] + k];
+        else if (rec->kind == TSL_FACE_FLUX) {
+          for (PetscInt f = 0; f < fn; f++) c[f] = -R[p->ndof * fnode[f] + th];
+          c[fn] = heat;
+        } else { /* film: M_fg, then m_f = sum_g M_fg, then the area */
+          c[fn * fn + fn] = 0;
+          for (PetscInt f = 0; f < fn; f++) {
+            c[fn * fn + f] = 0;
+            for (PetscInt gg = 0; gg < fn; gg++) {
+              c[f * fn + gg] = K[(p->ndof * fnode[f] + th) * d.nd + p->ndof * fnode[gg] + th];
+              c[fn * fn + f] += c[f * fn + gg];
+            }
+            c[fn * fn + fn] += c[fn * fn + f];
+          }
+        }
+        PetscCall(PetscFree(K));
+      }
+    }
+    if (pass == 0) PetscCall(PetscMalloc1(total + 1, &p->fcache));
+  }
+  p->fcache_gen = p->face_gen;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Element e's face loads from the cache, when it has every one of them there: no gather of the element, only
+ * its face nodes' temperatures for a film. Returns *done = false otherwise. */
+static PetscErrorCode FaceLoadsCached(TslProblem p, PetscInt e, const PetscScalar *xa, ForceCtx *c, PetscBool *done)
+{
+  const TslGeometry *g  = TslElementTypeGet(p->m->elem_type[e])->geom;
+  const PetscInt    *ln = &p->elem_lnode[p->m->elem_ptr[e]], nd = p->ndof, th = nd - 1, dim = p->dim;
+
+  PetscFunctionBeginUser;
+  *done = PETSC_FALSE;
+  for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++)
+    if (p->fcache_off[i] < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
+    const TslFaceRecord *rec = &p->face[i];
+    const PetscInt       fn = g->face_nnode[rec->face - 1], *fnode = g->face_node[rec->face - 1];
+    const PetscReal     *C = &p->fcache[p->fcache_off[i]];
+    PetscReal            value, sink;
+    PetscCall(TslProblemFaceLoadValue(p, rec, &value, &sink));
+    if (rec->kind == TSL_FACE_PRESSURE)
+      for (PetscInt f = 0; f < fn; f++)
+        for (PetscInt k = 0; k < dim; k++) c->fe[nd * ln[fnode[f]] + k] -= value * C[f * dim + k];
+    else if (rec->kind == TSL_FACE_FLUX) {
+      for (PetscInt f = 0; f < fn; f++) c->fi[nd * ln[fnode[f]] + th] -= value * C[f];
+      c->heat->flux_in += value * C[fn];
+    } else {
+      PetscReal t[TSL_MAX_ELEM_NODES], mt = 0;
+      for (PetscInt f = 0; f < fn; f++) t[f] = PetscRealPart(xa[nd * ln[fnode[f]] + th]);
+      for (PetscInt f = 0; f < fn; f++) {
+        PetscReal Mt = 0;
+        for (PetscInt gg = 0; gg < fn; gg++) Mt += C[f * fn + gg] * t[gg];
+        c->fi[nd * ln[fnode[f]] + th] += value * (Mt - sink * C[fn * fn + f]);
+        mt += C[fn * fn + f] * t[f];
+      }
+      c->heat->film -= value * (mt - sink * C[fn * fn + fn]);
+    }
+  }
+  *done = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The element pass of an explicit force evaluation: the record batches, then the generic kernels on the
- * elements without a record; face loads (a gather) only on elements that carry them. */
+ * elements without a record; face loads (a gather) only on elements that carry them, from the cache where
+ * the element has a record and its loads have integrals there. */
 static PetscErrorCode ForcePass(TslProblem p, const PetscScalar *xa, ForceCtx *c)
 {
   TslElemData d;
 
   PetscFunctionBeginUser;
+  if (p->fast_built && p->nface && (!p->fcache_off || p->fcache_gen != p->face_gen)) PetscCall(FaceCache(p, xa));
   for (PetscInt b = 0; p->fast_built && b < p->fast_nbatch; b++) FastBatch(p, b, xa, c);
   for (PetscInt e = 0; e < p->m->nelem; e++) {
     const PetscBool fast = p->fast_off && p->fast_off[e] >= 0 ? PETSC_TRUE : PETSC_FALSE;
-    PetscBool       stop = PETSC_FALSE;
+    PetscBool       stop = PETSC_FALSE, done = PETSC_FALSE;
     if (fast && p->face_start[e] == p->face_start[e + 1]) continue;
+    if (fast && p->fcache_off) PetscCall(FaceLoadsCached(p, e, xa, c, &done));
+    if (done) continue;
     TslProblemGather(p, e, xa, xa, &d);
     if (!fast) PetscCall(ForceElement(e, &d, c, &stop));
     if (stop) break;
@@ -236,6 +341,8 @@ PetscErrorCode TslProblemFastDestroy(TslProblem p)
   PetscCall(PetscFree2(p->fast_shape, p->fast_off));
   PetscCall(PetscFree(p->fast_rec));
   PetscCall(PetscFree2(p->fast_batch, p->fast_boff));
+  PetscCall(PetscFree(p->fcache_off));
+  PetscCall(PetscFree(p->fcache));
   p->fast_built = PETSC_FALSE, p->fast_count = p->fast_total = p->fast_nbatch = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -189,6 +189,7 @@ static PetscErrorCode CompactFaces(TslProblem p)
       p->face[n++] = *r;
   }
   p->nface = n;
+  p->face_gen++;
   for (PetscInt e = 0; e <= p->m->nelem; e++) p->face_start[e] = 0;
   for (PetscInt i = 0; i < n; i++) p->face_start[p->face[i].elem + 1]++;
   for (PetscInt e = 0; e < p->m->nelem; e++) p->face_start[e + 1] += p->face_start[e];
@@ -304,6 +305,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
       if (!drop) p->face[n++] = p->face[i];
     }
     p->nface = n;
+    p->face_gen++;
   }
 
   PetscCall(TslGhostUpdate(p->X, INSERT_VALUES, SCATTER_FORWARD));

@@ -162,6 +162,14 @@ struct _p_TslProblem {
   PetscInt            *fast_off, *fast_batch, *fast_boff;
   PetscReal           *fast_rec;
   TslElementFastShape *fast_shape;
+  /* explicit face loads of elements with a record (dynamics.c, FaceCache): every load is linear in its value
+   * and sink on the reference faces, so each face record's integrals are formed once: fcache_off[i] the
+   * offset in fcache of face record i's (pressure: int N_a n dA per face node; flux: int N_a dA and the area;
+   * film: those and int N_a N_b dA), -1 for a kind without (body flux: that element takes the generic path);
+   * rebuilt when face_gen (the face list's edits) moves past fcache_gen */
+  PetscInt   face_gen, fcache_gen;
+  PetscInt  *fcache_off;
+  PetscReal *fcache;
 
   /* contact that does not settle (TslProblemContactChatter): the residual evaluations in a row, up to the last,
    * in which some secondary node or surface-to-surface point changed between open and closed; at the last one
