@@ -216,58 +216,66 @@ static void            FastBatch(TslProblem p, PetscInt b, const PetscScalar *xa
  * functions sum to one), so FaceLoadsCached gives the generic results to rounding. */
 static PetscErrorCode FaceCache(TslProblem p, const PetscScalar *xa)
 {
-  PetscInt    total = 0;
-  TslElemData d;
+  const PetscInt dim = p->dim, nd = p->ndof, th = nd - 1;
+  PetscInt       total = 0;
+  PetscReal     *K;
+  TslElemData    d;
 
   PetscFunctionBeginUser;
   PetscCall(PetscFree(p->fcache_off));
   PetscCall(PetscFree(p->fcache));
   PetscCall(PetscMalloc1(p->nface + 1, &p->fcache_off));
-  for (PetscInt pass = 0; pass < 2; pass++) { /* the sizes, then the integrals */
-    total = 0;
-    for (PetscInt e = 0; e < p->m->nelem; e++) {
-      const TslGeometry *g;
-      if (p->face_start[e] == p->face_start[e + 1] || !(p->fast_off && p->fast_off[e] >= 0)) continue;
-      TslProblemGather(p, e, xa, xa, &d);
-      g = d.in.type->geom;
-      for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
-        const TslFaceRecord *rec = &p->face[i];
-        const PetscInt       fn = rec->kind == TSL_BODY_FLUX ? 0 : g->face_nnode[rec->face - 1], dim = p->dim, th = p->ndof - 1;
-        const PetscInt      *fnode = rec->kind == TSL_BODY_FLUX ? NULL : g->face_node[rec->face - 1];
-        PetscReal            R[TSL_MAX_ELEM_DOF], heat = 0, *K = NULL, *c;
-        const PetscInt       size = rec->kind == TSL_FACE_PRESSURE ? fn * dim
-                                    : rec->kind == TSL_FACE_FLUX   ? fn + 1
-                                    : rec->kind == TSL_FACE_FILM   ? fn * fn + fn + 1
-                                                                   : 0;
-        p->fcache_off[i]          = size ? total : -1;
-        total += size;
-        if (pass == 0 || !size) continue;
-        c = &p->fcache[p->fcache_off[i]];
-        PetscCall(PetscArrayzero(R, d.nd));
-        if (rec->kind == TSL_FACE_FILM) PetscCall(PetscCalloc1(d.nd * d.nd, &K));
-        PetscCall(TslElementFaceLoad(&d.in, rec->kind, rec->face, 1.0, 0.0, R, K, &heat));
-        if (rec->kind == TSL_FACE_PRESSURE)
-          for (PetscInt f = 0; f < fn; f++)
-            for (PetscInt k = 0; k < dim; k++) c[f * dim + k] = R[p->ndof * fnode[f] + k];
-        else if (rec->kind == TSL_FACE_FLUX) {
-          for (PetscInt f = 0; f < fn; f++) c[f] = -R[p->ndof * fnode[f] + th];
-          c[fn] = heat;
-        } else { /* film: M_fg, then m_f = sum_g M_fg, then the area */
-          c[fn * fn + fn] = 0;
-          for (PetscInt f = 0; f < fn; f++) {
-            c[fn * fn + f] = 0;
-            for (PetscInt gg = 0; gg < fn; gg++) {
-              c[f * fn + gg] = K[(p->ndof * fnode[f] + th) * d.nd + p->ndof * fnode[gg] + th];
-              c[fn * fn + f] += c[f * fn + gg];
-            }
-            c[fn * fn + fn] += c[fn * fn + f];
+  for (PetscInt e = 0; e < p->m->nelem; e++) { /* the offsets: they need the face's node count only */
+    const TslGeometry *g = TslElementTypeGet(p->m->elem_type[e])->geom;
+    for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
+      const TslFaceLoadKind k    = p->face[i].kind;
+      const PetscInt        fn   = k == TSL_BODY_FLUX ? 0 : g->face_nnode[p->face[i].face - 1];
+      const PetscInt        size = !(p->fast_off && p->fast_off[e] >= 0) ? 0
+                                   : k == TSL_FACE_PRESSURE              ? fn * dim
+                                   : k == TSL_FACE_FLUX                  ? fn + 1
+                                   : k == TSL_FACE_FILM                  ? fn * fn + fn + 1
+                                                                         : 0;
+      p->fcache_off[i]           = size ? total : -1;
+      total += size;
+    }
+  }
+  PetscCall(PetscMalloc1(total + 1, &p->fcache));
+  PetscCall(PetscMalloc1(TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &K));
+  for (PetscInt e = 0; e < p->m->nelem; e++) { /* the integrals */
+    const TslGeometry *g;
+    if (p->face_start[e] == p->face_start[e + 1] || !(p->fast_off && p->fast_off[e] >= 0)) continue;
+    TslProblemGather(p, e, xa, xa, &d);
+    g = d.in.type->geom;
+    for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
+      const TslFaceRecord *rec = &p->face[i];
+      PetscReal            R[TSL_MAX_ELEM_DOF], heat = 0, *c;
+      PetscInt             fn;
+      const PetscInt      *fnode;
+      if (p->fcache_off[i] < 0) continue;
+      c = &p->fcache[p->fcache_off[i]], fn = g->face_nnode[rec->face - 1], fnode = g->face_node[rec->face - 1];
+      PetscCall(PetscArrayzero(R, d.nd));
+      if (rec->kind == TSL_FACE_FILM) PetscCall(PetscArrayzero(K, d.nd * d.nd));
+      PetscCall(TslElementFaceLoad(&d.in, rec->kind, rec->face, 1.0, 0.0, R, rec->kind == TSL_FACE_FILM ? K : NULL, &heat));
+      if (rec->kind == TSL_FACE_PRESSURE)
+        for (PetscInt f = 0; f < fn; f++)
+          for (PetscInt k = 0; k < dim; k++) c[f * dim + k] = R[nd * fnode[f] + k];
+      else if (rec->kind == TSL_FACE_FLUX) {
+        for (PetscInt f = 0; f < fn; f++) c[f] = -R[nd * fnode[f] + th];
+        c[fn] = heat;
+      } else { /* film: M_fg, then m_f = sum_g M_fg, then the area */
+        c[fn * fn + fn] = 0;
+        for (PetscInt f = 0; f < fn; f++) {
+          c[fn * fn + f] = 0;
+          for (PetscInt gg = 0; gg < fn; gg++) {
+            c[f * fn + gg] = K[(nd * fnode[f] + th) * d.nd + nd * fnode[gg] + th];
+            c[fn * fn + f] += c[f * fn + gg];
           }
+          c[fn * fn + fn] += c[fn * fn + f];
         }
-        PetscCall(PetscFree(K));
       }
     }
-    if (pass == 0) PetscCall(PetscMalloc1(total + 1, &p->fcache));
   }
+  PetscCall(PetscFree(K));
   p->fcache_gen = p->face_gen;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
