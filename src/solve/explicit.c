@@ -365,7 +365,10 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   const PetscScalar *uo, *xr, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
   const PetscReal    h_avg = h_prev > 0 ? 0.5 * (h + h_prev) : 0.5 * h; /* from rest at the start: v_{1/2} = dt/2 a_0 */
-  PetscReal          loc[8] = {0, 0, 0, 0, 0, 0, 0, 0}, g[8];
+  /* the loops' sums in locals whose address is never taken: in loc[] the compiler must keep them in memory, as
+   * the stores to u and v might alias them (a store and a reload per dof on each sum's chain) */
+  PetscReal w_int = 0, w_ext = 0, w_con = 0, q_pres = 0, q_stored = 0;
+  PetscReal loc[8], g[8];
 
   PetscFunctionBeginUser;
   PetscCall(VecCopy(x->X, x->Xold));
@@ -388,9 +391,9 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     v[i] += h_avg * f / m[i];
     u[i] += h * v[i];
     w = h_avg * 0.5 * (vo + v[i]);
-    loc[0] += fi[i] * w;
-    loc[1] += fe[i] * w;
-    loc[2] += fcon * w;
+    w_int += fi[i] * w;
+    w_ext += fe[i] * w;
+    w_con += fcon * w;
   }
   PetscCall(VecRestoreArray(x->X, &u));
   /* prescribed values at t_{n+1} */
@@ -402,20 +405,20 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     PetscReal fcon, f, vo, w, s, rate = 0;
     if (c == th) {
       rate = m[i] * (xr[i] - uo[i]) / h; /* heat stored at the node per unit time */
-      loc[6] += rate;
+      q_stored += rate;
     }
     if (mask[i] == 0) continue; /* the forces are read only at prescribed dofs: most of their cache lines are not touched */
     fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon, vo = v[i];
     if (c == th) {
-      loc[5] += rate - f; /* heat the prescribed temperature brings in */
+      q_pres += rate - f; /* heat the prescribed temperature brings in */
       continue;
     }
     v[i] = (xr[i] - uo[i]) / h;
     s    = m[i] * (v[i] - vo) / h_avg - f; /* the support's force at time n */
     w    = h_avg * 0.5 * (vo + v[i]);
-    loc[0] += fi[i] * w;
-    loc[1] += (fe[i] + s) * w;
-    loc[2] += fcon * w;
+    w_int += fi[i] * w;
+    w_ext += (fe[i] + s) * w;
+    w_con += fcon * w;
   }
   PetscCall(VecRestoreArrayRead(x->Xold, &uo));
   PetscCall(VecRestoreArrayRead(x->X, &xr));
@@ -426,6 +429,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecRestoreArrayRead(x->Mask, &mask));
   PetscCall(VecRestoreArrayRead(x->M, &m));
   PetscCall(VecRestoreArray(x->V, &v));
+  loc[0] = w_int, loc[1] = w_ext, loc[2] = w_con, loc[3] = loc[4] = 0, loc[5] = q_pres, loc[6] = q_stored;
   loc[7] = TslStopLocal(); /* asked to stop: noticed in the reduction every increment makes anyway */
   PetscCall(MPIU_Allreduce(loc, g, 8, MPIU_REAL, MPIU_SUM, x->comm));
   if (g[7] != 0) PetscCall(TslStopRequested(x->comm, &x->stop)); /* which signal (every rank saw the sum) */
