@@ -250,9 +250,14 @@ void TslElementFastEnergy(const TslElementFastShape *shape, const PetscReal rec[
  * viscosity: power 0); otherwise a lane with eta = eta2 = 0 gets zero forces and power, and Rv may be R itself
  * (the viscous forces added to the internal ones, as the explicit loop takes them). qr (NULL: not
  * wanted; 2 per lane) gets each lane's q = p V in qr[j] and eps_vol_dot in qr[W + j], as TslElementBulkViscosity's.
+ * ev (NULL: none; one per lane) keeps each lane's volumetric strain at the centre between evaluations: with v
+ * the rate is v's and ev gets the strain of u; with v NULL (and Rv not NULL) the rate is (strain of u - ev) hinv,
+ * the difference quotient over the increment h = 1 / hinv since ev's evaluation, which equals v's when
+ * v = (u - u_then) / h, as central differences make it, without v's gather.
  * TslElementFastInterleave stores a record (or any array of size reals) as lane `lane` of a batch. */
 void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
-                              const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[], PetscReal power[], PetscReal qr[]);
+                              PetscReal ev[], PetscReal hinv, const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[],
+                              PetscReal power[], PetscReal qr[]);
 void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal strain[],
                                PetscReal hourglass[]);
 /* An implicit residual's part of a batch: R (interleaved) and, when energy is not NULL, each lane's strain

@@ -158,9 +158,13 @@ typedef struct {
  * linear and the quadratic coefficient, both 0 skips it) of the velocities V, computed in the same element pass;
  * q[e] (NULL: no bulk viscosity; V, eta and eta2 are then not read) is each element's q = p V, read as the
  * previous evaluation's (for rates->viscous_prev) and overwritten with this one's (zero it to start).
- * The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets M a = Fe - Fi - Fc. */
+ * h > 0 says that the state moved from the previous evaluation's by exactly h V (a central-difference update,
+ * prescribed dofs included): the elements with a force record then take their volumetric strain rate as the
+ * difference of their centre strains over h and V is not read by them; h = 0 (the first evaluation of a step)
+ * reads V everywhere. The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets
+ * M a = Fe - Fi - Fc. */
 PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], PetscReal q[],
-                                        TslExplicitRates *rates);
+                                        PetscReal h, TslExplicitRates *rates);
 /* The initial velocities of the deck (*INITIAL CONDITIONS, TYPE=VELOCITY) at the owned dofs into V (zeroed
  * first; the temperature slots stay zero), for the first explicit step after TslProblemSetStep: a dof held by
  * a boundary condition of that step (or pinned) keeps zero, the condition wins; *held counts those dofs where a

@@ -87,8 +87,9 @@ static inline __attribute__((always_inline)) void Gradients(const PetscInt dim, 
 static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
                                                         const PetscBool axi, const PetscBool ps, const PetscBool sf0, const PetscBool shell,
                                                         const TslElementFastShape *shape, const PetscReal *rec, const PetscReal *u,
-                                                        const PetscReal *ti, const PetscReal *v, const PetscReal *eta, const PetscReal *eta2,
-                                                        PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *qr, PetscReal *energy)
+                                                        const PetscReal *ti, const PetscReal *v, PetscReal *ev, const PetscReal hinv,
+                                                        const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power,
+                                                        PetscReal *qr, PetscReal *energy)
 {
   const PetscInt nd     = dim + 1;
   const Layout   L      = LayoutOf(dim, n, nq, nh, axi, shell);
@@ -264,7 +265,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
     const PetscReal *C  = rec + L.C * W;
     const V          Vc = Ld(C + L.dV * W), cd = Ld(rec + 4 * W);
     const PetscReal *Nc = nq > 1 ? shape->Nc : shape->N[0];
-    V                rate = {0}, p, neg, gd[3][TSL_FAST_MAX_NODES];
+    V                rate = {0}, tr = {0}, p, neg, gd[3][TSL_FAST_MAX_NODES];
     if (nq > 1) Gradients(dim, n, C, shape->dNc, gd);
     else
       for (PetscInt d = 0; d < dim; d++)
@@ -273,8 +274,15 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       const V ri = Ld(C + L.ri * W);
       for (PetscInt a = 0; a < n; a++) gd[0][a] += Nc[a] * ri;
     }
-    for (PetscInt a = 0; a < n; a++)
-      for (PetscInt d = 0; d < dim; d++) rate += gd[d][a] * Ld(v + (nd * a + d) * W);
+    if (v)
+      for (PetscInt a = 0; a < n; a++)
+        for (PetscInt d = 0; d < dim; d++) rate += gd[d][a] * Ld(v + (nd * a + d) * W);
+    if (ev) { /* the volumetric strain at the centre, kept for the next evaluation's rate */
+      for (PetscInt a = 0; a < n; a++)
+        for (PetscInt d = 0; d < dim; d++) tr += gd[d][a] * U[d][a];
+      if (!v) rate = (tr - Ld(ev)) * hinv;
+      St(ev, tr);
+    }
     neg = (V)((VI)rate & (rate < 0)); /* the quadratic term, in compression only */
     p   = Ld(eta) * cd * rate - Ld(eta2) * cd * neg * neg;
     if (Rv == R)
@@ -298,10 +306,10 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
 /* One function per row, cloned for x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
 #define FORCE_ROW(name, dim, n, nq, nh, axi, ps, sf, shell)                                                                                          \
   TSL_CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,      \
-                              const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power, PetscReal *qr,             \
-                              PetscReal *energy)                                                                                                     \
+                              PetscReal *ev, PetscReal hinv, const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv,               \
+                              PetscReal *power, PetscReal *qr, PetscReal *energy)                                                                    \
   {                                                                                                                                                  \
-    Force(dim, n, nq, nh, axi, ps, sf, shell, sh, rec, u, ti, v, eta, eta2, R, Rv, power, qr, energy);                                               \
+    Force(dim, n, nq, nh, axi, ps, sf, shell, sh, rec, u, ti, v, ev, hinv, eta, eta2, R, Rv, power, qr, energy);                                     \
   }
 FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
 FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
@@ -325,8 +333,8 @@ FORCE_ROW(Tri6FullPs, 2, 6, 3, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FA
 FORCE_ROW(Hex8Shell, 3, 8, 5, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
 FORCE_ROW(Wedge6Shell, 3, 6, 5, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
 
-typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *,
-                        const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
+typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, PetscReal *,
+                        PetscReal, const PetscReal *, const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
 
 /* The rows: which (family, formulation, kinematics) have a record, and its sizes. */
 typedef struct {
@@ -548,20 +556,21 @@ void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[
 }
 
 void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
-                              const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[], PetscReal power[], PetscReal qr[])
+                              PetscReal ev[], PetscReal hinv, const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[],
+                              PetscReal power[], PetscReal qr[])
 {
   if (!Rv)
     for (PetscInt j = 0; j < W; j++) {
       power[j] = 0;
       if (qr) qr[j] = qr[W + j] = 0;
     }
-  Rows[shape->row].force(shape, rec, u, ti, v, eta, eta2, R, Rv, power, qr, NULL);
+  Rows[shape->row].force(shape, rec, u, ti, v, ev, hinv, eta, eta2, R, Rv, power, qr, NULL);
 }
 
 void TslElementFastResidualBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal R[],
                                  PetscReal energy[])
 {
-  Rows[shape->row].force(shape, rec, u, ti, NULL, NULL, NULL, R, NULL, NULL, NULL, energy);
+  Rows[shape->row].force(shape, rec, u, ti, NULL, NULL, 0, NULL, NULL, R, NULL, NULL, NULL, energy);
 }
 
 void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal strain[],
@@ -605,7 +614,7 @@ void TslElementFastForce(const TslElementFastShape *shape, const PetscReal rec[]
 
   for (PetscInt j = 0; j < W; j++) e1[j] = eta, e2[j] = eta2;
   SingleFill(shape, rec, u, ti, bv ? v : NULL, &s);
-  TslElementFastForceBatch(shape, s.rec, s.u, s.ti, bv ? s.v : NULL, e1, e2, s.R, bv ? s.Rv : NULL, w, NULL);
+  TslElementFastForceBatch(shape, s.rec, s.u, s.ti, bv ? s.v : NULL, NULL, 0, e1, e2, s.R, bv ? s.Rv : NULL, w, NULL);
   for (PetscInt i = 0; i < nd; i++) {
     R[i] = s.R[i * W];
     if (bv) Rv[i] = s.Rv[i * W];

@@ -19,6 +19,7 @@ typedef struct {
   const PetscReal   *eta, *eta2;  /* [nelem] b1 L_e / c_d and (b2 L_e / c_d)^2 (with v) */
   PetscReal         *q;           /* [nelem] q = p V of each element's viscosity: the last pass's in, this pass's out (with v) */
   PetscReal          power, prev; /* this rank's sum of q eps_vol_dot, and of the last pass's q times this pass's eps_vol_dot */
+  PetscReal          hinv;        /* > 0: the records' rate from their centre strains over 1 / hinv (no gather of v); 0: from v */
   AsmHeat           *heat;
   PetscInt           bad;
 } ForceCtx;
@@ -175,11 +176,11 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
   sh = &p->fast_shape[p->m->elem_type[e[0]]];
   GatherBatch(p, e, xa, u, ti, nd);
   for (PetscInt j = 0; j < W; j++) {
-    eta[j] = c->v ? c->eta[e[j]] : 0, eta2[j] = c->v ? c->eta2[e[j]] : 0;
+    eta[j] = c->q ? c->eta[e[j]] : 0, eta2[j] = c->q ? c->eta2[e[j]] : 0;
     visc[j] = used[j] && (eta[j] > 0 || eta2[j] > 0) ? PETSC_TRUE : PETSC_FALSE;
     if (visc[j]) bv = PETSC_TRUE;
   }
-  if (bv) GatherBatch(p, e, c->v, v, NULL, nd);
+  if (bv && c->hinv == 0) GatherBatch(p, e, c->v, v, NULL, nd);
   if (b + 1 < p->fast_nbatch) { /* the next batch: its records past the caches (non-temporal), its nodal rows into them */
     const PetscReal *next = &p->fast_rec[p->fast_boff[b + 1]], *end = p->fast_rec + p->fast_total;
     for (PetscInt k = 0; k < W * sh->size && next + k < end; k += 8) __builtin_prefetch(next + k, 0, 0);
@@ -194,7 +195,8 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
     }
   }
   /* the viscous forces added to the internal ones in R (Rv = R; zero in lanes without viscosity): one scatter */
-  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, bv ? v : NULL, eta, eta2, R, bv ? R : NULL, w, bv ? qr : NULL);
+  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, bv && c->hinv == 0 ? v : NULL, bv ? &p->fast_ev[W * b] : NULL, c->hinv, eta,
+                           eta2, R, bv ? R : NULL, w, bv ? qr : NULL);
   if (bv) {
     for (PetscInt j = 0; j < W; j++)
       if (visc[j]) c->power += w[j], c->prev += c->q[e[j]] * qr[W + j], c->q[e[j]] = qr[j];
@@ -348,6 +350,7 @@ PetscErrorCode TslProblemFastDestroy(TslProblem p)
   PetscFunctionBeginUser;
   PetscCall(PetscFree2(p->fast_shape, p->fast_off));
   PetscCall(PetscFree(p->fast_rec));
+  PetscCall(PetscFree(p->fast_ev));
   PetscCall(PetscFree2(p->fast_batch, p->fast_boff));
   PetscCall(PetscFree(p->fcache_off));
   PetscCall(PetscFree(p->fcache));
@@ -392,6 +395,7 @@ PetscErrorCode TslProblemExplicitRecords(TslProblem p, PetscBool use, PetscInt *
     PetscCall(PetscMalloc1(total, &p->fast_rec));
     TslPrefault(p->fast_rec, sizeof(*p->fast_rec) * (size_t)total);
     PetscCall(PetscMalloc2(W * maxbatch, &p->fast_batch, maxbatch, &p->fast_boff));
+    PetscCall(PetscCalloc1(W * maxbatch, &p->fast_ev));
     for (PetscInt t = 0; t < ntype; t++) open[t] = -1;
     for (PetscInt e = 0; e < nelem; e++) {
       const PetscInt t = p->m->elem_type[e];
@@ -419,6 +423,8 @@ PetscErrorCode TslProblemExplicitRecords(TslProblem p, PetscBool use, PetscInt *
         }
     PetscCall(PetscFree3(count, open, lanes));
     p->fast_built = PETSC_TRUE;
+    p->fast_all   = (PetscBool)(p->fast_count == nelem);
+    PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &p->fast_all, 1, MPIU_BOOL, MPI_LAND, p->comm));
   }
   if (nfast) PetscCall(MPIU_Allreduce(&p->fast_count, nfast, 1, MPIU_INT, MPI_SUM, p->comm));
   mb = p->fast_total * sizeof(PetscReal) / 1048576.0;
@@ -457,20 +463,24 @@ static PetscErrorCode InjectedInternal(void)
 }
 
 PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], PetscReal q[],
-                                        TslExplicitRates *rates)
+                                        PetscReal h, TslExplicitRates *rates)
 {
   Vec                xl, il, el, cl = NULL, vl = NULL;
   const PetscScalar *xa;
   PetscScalar       *fc;
   AsmHeat            heat;
-  ForceCtx           c = {NULL, NULL, NULL, eta, eta2, q, 0, 0, &heat, -1};
+  ForceCtx           c = {NULL, NULL, NULL, eta, eta2, q, 0, 0, 0, &heat, -1};
+  /* with records on every element and a central-difference move since the last evaluation, the rate of the
+   * bulk viscosity comes from the records' centre strains: v is neither exchanged nor gathered */
+  const PetscBool    from_u = (PetscBool)(q && h > 0 && p->fast_built && p->fast_all);
   PetscReal          loc[7], g[7];
   TslFailure         fail;
   PetscErrorCode     ierr;
 
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&heat, sizeof(heat)));
-  if (q) {
+  if (from_u) c.hinv = 1 / h;
+  if (q && !from_u) {
     PetscCall(TslGhostUpdate(V, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecGhostGetLocalForm(V, &vl));
     PetscCall(VecGetArrayRead(vl, &c.v));
@@ -505,7 +515,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(EndLocal(Fi, &il, &c.fi));
   PetscCall(VecRestoreArrayRead(xl, &xa));
   PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
-  if (q) {
+  if (q && !from_u) {
     PetscCall(VecRestoreArrayRead(vl, &c.v));
     PetscCall(VecGhostRestoreLocalForm(V, &vl));
   }

@@ -161,6 +161,8 @@ struct _p_TslProblem {
   PetscInt             fast_count, fast_total, fast_nbatch; /* elements with a record, reals in fast_rec, batches */
   PetscInt            *fast_off, *fast_batch, *fast_boff;
   PetscReal           *fast_rec;
+  PetscReal           *fast_ev;  /* [W fast_nbatch] each lane's volumetric strain at its last explicit evaluation (bulk viscosity's rate) */
+  PetscBool            fast_all; /* every element on every rank has a record (then no rank reads the velocities for the bulk viscosity) */
   TslElementFastShape *fast_shape;
   /* explicit face loads of elements with a record (dynamics.c, FaceCache): every load is linear in its value
    * and sink on the reference faces, so each face record's integrals are formed once: fcache_off[i] the

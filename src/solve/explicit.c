@@ -280,7 +280,7 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
    * same element pass, its forces in Fi. The viscous work over the last increment, q (eps_n + eps_{n+1}) / 2
    * h_avg per element, is booked in two halves: q_n eps_n by Advance, q_n eps_{n+1} here, at the next
    * evaluation (ALLVD; ALLIE is the internal forces' work less it) */
-  PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->V, x->eta, x->eta2, x->qv, &x->rates));
+  PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->V, x->eta, x->eta2, x->qv, dt, &x->rates));
   if (x->qv) {
     Energies       *en = (Energies *)x->d->energy;
     const PetscReal w  = 0.5 * x->vd_h * x->rates.viscous_prev;

@@ -65,7 +65,7 @@ static double TimeRecords(const TslElementFastShape *shape, const PetscReal *rec
       for (PetscInt b = 0; b < nrec; b++) {
         const PetscReal *next = recs + ((b + 1) % nrec) * size * W; /* as the explicit loop: the next batch non-temporal */
         for (PetscInt k = 0; k < size * W; k += 8) __builtin_prefetch(next + k, 0, 0);
-        TslElementFastForceBatch(shape, recs + b * size * W, u, ti, v, eta, eta2, R, Rv, w, NULL);
+        TslElementFastForceBatch(shape, recs + b * size * W, u, ti, v, NULL, 0, eta, eta2, R, Rv, w, NULL);
         sum += R[0];
       }
     k += nrec >= 1024 ? nrec : 1024;
