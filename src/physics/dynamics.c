@@ -153,8 +153,8 @@ void TslProblemFastBatchEnergy(TslProblem p, PetscInt b, const PetscScalar *xa, 
   PetscBool used[W];
 
   BatchElements(p, b, e, used);
-  GatherBatch(p, e, xa, u, ti, p->ndof);
-  TslElementFastEnergyBatch(&p->fast_shape[p->m->elem_type[e[0]]], &p->fast_rec[p->fast_boff[b]], u, ti, se, hg);
+  GatherBatch(p, e, xa, u, p->fast_ti_uniform ? NULL : ti, p->ndof);
+  TslElementFastEnergyBatch(&p->fast_shape[p->m->elem_type[e[0]]], &p->fast_rec[p->fast_boff[b]], u, p->fast_ti_uniform ? p->fast_ti : ti, se, hg);
   *strain = *hourglass = 0;
   for (PetscInt j = 0; j < W; j++)
     if (used[j]) *strain += se[j], *hourglass += hg[j];
@@ -174,7 +174,7 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
 
   BatchElements(p, b, e, used);
   sh = &p->fast_shape[p->m->elem_type[e[0]]];
-  GatherBatch(p, e, xa, u, ti, nd);
+  GatherBatch(p, e, xa, u, p->fast_ti_uniform ? NULL : ti, nd); /* a uniform initial temperature is not gathered */
   for (PetscInt j = 0; j < W; j++) {
     eta[j] = c->q ? c->eta[e[j]] : 0, eta2[j] = c->q ? c->eta2[e[j]] : 0;
     visc[j] = used[j] && (eta[j] > 0 || eta2[j] > 0) ? PETSC_TRUE : PETSC_FALSE;
@@ -182,21 +182,23 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
   }
   if (bv && c->hinv == 0) GatherBatch(p, e, c->v, v, NULL, nd);
   if (b + 1 < p->fast_nbatch) { /* the next batch: its records past the caches (non-temporal), its nodal rows into them */
-    const PetscReal *next = &p->fast_rec[p->fast_boff[b + 1]], *end = p->fast_rec + p->fast_total;
-    for (PetscInt k = 0; k < W * sh->size && next + k < end; k += 8) __builtin_prefetch(next + k, 0, 0);
+    const PetscReal *next = &p->fast_rec[p->fast_boff[b + 1]],
+                    *end  = b + 2 < p->fast_nbatch ? &p->fast_rec[p->fast_boff[b + 2]] : p->fast_rec + p->fast_total;
+    const PetscInt nrec   = (PetscInt)(end - next); /* the next batch's reals, whatever its type */
+    for (PetscInt k = 0; k < nrec; k += 8) __builtin_prefetch(next + k, 0, 0);
     for (PetscInt j = 0; j < W; j++) {
       const PetscInt en = p->fast_batch[W * (b + 1) + j], k0 = en >= 0 ? p->m->elem_ptr[en] : 0, n = en >= 0 ? p->m->elem_ptr[en + 1] - k0 : 0;
       for (PetscInt a = 0; a < n; a++) {
         const PetscInt l = p->elem_lnode[k0 + a];
         __builtin_prefetch(&xa[nd * l], 0, 3);
         __builtin_prefetch(&c->fi[nd * l], 1, 3);
-        __builtin_prefetch(&p->theta_init[l], 0, 3);
+        if (!p->fast_ti_uniform) __builtin_prefetch(&p->theta_init[l], 0, 3);
       }
     }
   }
   /* the viscous forces added to the internal ones in R (Rv = R; zero in lanes without viscosity): one scatter */
-  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, ti, bv && c->hinv == 0 ? v : NULL, bv ? &p->fast_ev[W * b] : NULL, c->hinv, eta,
-                           eta2, R, bv ? R : NULL, w, bv ? qr : NULL);
+  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, p->fast_ti_uniform ? p->fast_ti : ti, bv && c->hinv == 0 ? v : NULL,
+                           bv ? &p->fast_ev[W * b] : NULL, c->hinv, eta, eta2, R, bv ? R : NULL, w, bv ? qr : NULL);
   if (bv) {
     for (PetscInt j = 0; j < W; j++)
       if (visc[j]) c->power += w[j], c->prev += c->q[e[j]] * qr[W + j], c->q[e[j]] = qr[j];
@@ -424,6 +426,9 @@ PetscErrorCode TslProblemExplicitRecords(TslProblem p, PetscBool use, PetscInt *
     PetscCall(PetscFree3(count, open, lanes));
     p->fast_built = PETSC_TRUE;
     p->fast_all   = (PetscBool)(p->fast_count == nelem);
+    p->fast_ti_uniform = PETSC_TRUE; /* the deck's one initial temperature (or none): no gather of it per batch */
+    for (PetscInt n = 1; n < p->nn && p->fast_ti_uniform; n++) p->fast_ti_uniform = (PetscBool)(p->theta_init[n] == p->theta_init[0]);
+    for (PetscInt k = 0; k < TSL_FAST_MAX_NODES * W; k++) p->fast_ti[k] = p->nn ? p->theta_init[0] : 0;
     PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &p->fast_all, 1, MPIU_BOOL, MPI_LAND, p->comm));
   }
   if (nfast) PetscCall(MPIU_Allreduce(&p->fast_count, nfast, 1, MPIU_INT, MPI_SUM, p->comm));

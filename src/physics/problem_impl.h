@@ -163,6 +163,8 @@ struct _p_TslProblem {
   PetscReal           *fast_rec;
   PetscReal           *fast_ev;  /* [W fast_nbatch] each lane's volumetric strain at its last explicit evaluation (bulk viscosity's rate) */
   PetscBool            fast_all; /* every element on every rank has a record (then no rank reads the velocities for the bulk viscosity) */
+  PetscBool            fast_ti_uniform; /* one initial temperature at every local node: fast_ti holds it in every lane and node */
+  PetscReal            fast_ti[TSL_FAST_MAX_NODES * TSL_FAST_LANES];
   TslElementFastShape *fast_shape;
   /* explicit face loads of elements with a record (dynamics.c, FaceCache): every load is linear in its value
    * and sink on the reference faces, so each face record's integrals are formed once: fcache_off[i] the

@@ -28,6 +28,7 @@ typedef struct {
   PetscInt        ndof, nown;
   Vec             X, Xold;         /* the problem's solution and the state at the start of the increment */
   Vec             V, M, Mask;      /* half-step velocity, lumped mass / capacity, prescribed dofs */
+  PetscInt         npresc, *presc;  /* the owned dofs the mask holds (prescribed or pinned), in increasing order */
   Vec             Fi, Fe, Fc;      /* force vectors of the current state (Fi with the bulk viscosity's forces; Fc NULL without contact) */
   PetscReal      *qv, vd_h;        /* bulk viscosity: q = p V per element (NULL: none); h_avg of the last increment, whose
                                       viscous work's second half the next force evaluation books */
@@ -381,19 +382,27 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArrayRead(x->Fe, &fe));
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
   if (x->Fk) PetscCall(VecGetArrayRead(x->Fk, &fk));
-  for (PetscInt i = 0, c = 0; i < n; i++, c = c == th ? 0 : c + 1) { /* free dofs: the update and the forces' work; c: i's slot */
-    PetscReal fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon, vo = v[i], w;
-    if (mask[i] != 0) continue;
-    if (c == th) {
-      u[i] += h * f / m[i];
-      continue;
+  /* free dofs, node by node (no slot arithmetic per dof): the update and the forces' work; a temperature's
+   * stored heat per unit time, m (theta_{n+1} - theta_n) / h, here too (the prescribed values set below do not
+   * touch a free dof) */
+  for (PetscInt i0 = 0; i0 < n; i0 += x->ndof) {
+    const PetscInt it = i0 + th;
+    for (PetscInt i = i0; i < it; i++) {
+      PetscReal fcon, f, vo, w;
+      if (mask[i] != 0) continue;
+      fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon, vo = v[i];
+      v[i] += h_avg * f / m[i];
+      u[i] += h * v[i];
+      w = h_avg * 0.5 * (vo + v[i]);
+      w_int += fi[i] * w;
+      w_ext += fe[i] * w;
+      w_con += fcon * w;
     }
-    v[i] += h_avg * f / m[i];
-    u[i] += h * v[i];
-    w = h_avg * 0.5 * (vo + v[i]);
-    w_int += fi[i] * w;
-    w_ext += fe[i] * w;
-    w_con += fcon * w;
+    if (mask[it] == 0) {
+      const PetscReal to = u[it];
+      u[it] += h * (fe[it] - fi[it] - ((fc ? fc[it] : 0) + (fk ? fk[it] : 0))) / m[it];
+      q_stored += m[it] * (u[it] - to) / h;
+    }
   }
   PetscCall(VecRestoreArray(x->X, &u));
   /* prescribed values at t_{n+1} */
@@ -401,15 +410,13 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(TslProblemApplyPrescribed(x->p, x->X)); /* its ghost update is the state's for the next evaluation */
   PetscCall(VecGetArrayRead(x->X, &xr));
   PetscCall(VecGetArrayRead(x->Xold, &uo));
-  for (PetscInt i = 0, c = 0; i < n; i++, c = c == th ? 0 : c + 1) { /* prescribed dofs: velocity, reaction and work; stored heat */
-    PetscReal fcon, f, vo, w, s, rate = 0;
-    if (c == th) {
-      rate = m[i] * (xr[i] - uo[i]) / h; /* heat stored at the node per unit time */
+  for (PetscInt k = 0; k < x->npresc; k++) { /* prescribed dofs: velocity, reaction and work; stored and brought-in heat */
+    const PetscInt  i    = x->presc[k];
+    const PetscReal fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon, vo = v[i];
+    PetscReal       w, s;
+    if (i % x->ndof == th) {
+      const PetscReal rate = m[i] * (xr[i] - uo[i]) / h; /* heat stored at the node per unit time */
       q_stored += rate;
-    }
-    if (mask[i] == 0) continue; /* the forces are read only at prescribed dofs: most of their cache lines are not touched */
-    fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon, vo = v[i];
-    if (c == th) {
       q_pres += rate - f; /* heat the prescribed temperature brings in */
       continue;
     }
@@ -544,6 +551,7 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscFunctionBeginUser;
   PetscCall(VecDestroy(&x->M));
   PetscCall(VecDestroy(&x->Mask));
+  PetscCall(PetscFree(x->presc));
   PetscCall(VecDestroy(&x->Fi));
   PetscCall(VecDestroy(&x->Fe));
   PetscCall(VecDestroy(&x->Fc));
@@ -626,6 +634,17 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslProblemConstrainedMask(x.p, x.Mask));
   PetscCall(VecGhostUpdateBegin(x.Mask, INSERT_VALUES, SCATTER_FORWARD)); /* the kinematic corrector reads main nodes' masks */
   PetscCall(VecGhostUpdateEnd(x.Mask, INSERT_VALUES, SCATTER_FORWARD));
+  {
+    const PetscScalar *mask;
+    PetscCall(VecGetArrayRead(x.Mask, &mask));
+    x.npresc = 0;
+    for (PetscInt i = 0; i < x.nown * x.ndof; i++) x.npresc += mask[i] != 0;
+    PetscCall(PetscMalloc1(x.npresc, &x.presc));
+    x.npresc = 0;
+    for (PetscInt i = 0; i < x.nown * x.ndof; i++)
+      if (mask[i] != 0) x.presc[x.npresc++] = i;
+    PetscCall(VecRestoreArrayRead(x.Mask, &mask));
+  }
   {
     PetscInt  nfast;
     PetscReal mb;
