@@ -16,8 +16,8 @@ PetscErrorCode TslProblemSetMatrixFree(TslProblem p, PetscBool matrix_free)
 typedef struct {
   PetscScalar       *fi, *fe;
   const PetscScalar *v;           /* local form of the half-step velocity (NULL: no bulk viscosity) */
-  const PetscReal   *eta, *eta2;  /* [nelem] b1 L_e / c_d and (b2 L_e / c_d)^2 (with v) */
-  PetscReal         *q;           /* [nelem] q = p V of each element's viscosity: the last pass's in, this pass's out (with v) */
+  const PetscReal   *eta, *eta2;  /* [nelem] b1 L_e / c_d and (b2 L_e / c_d)^2 (with q) */
+  PetscReal         *q;           /* [nelem] q = p V of each element's viscosity: the last pass's in, this pass's out (NULL: no bulk viscosity) */
   PetscReal          power, prev; /* this rank's sum of q eps_vol_dot, and of the last pass's q times this pass's eps_vol_dot */
   PetscReal          hinv;        /* > 0: the records' rate from their centre strains over 1 / hinv (no gather of v); 0: from v */
   AsmHeat           *heat;
@@ -95,11 +95,12 @@ static inline PetscInt BatchNodes(TslProblem p, const PetscInt e[W], const Petsc
   return p->m->elem_ptr[e[0] + 1] - p->m->elem_ptr[e[0]];
 }
 
-/* The batch's unknowns (and initial temperatures, ti not NULL) from the local form xa, nd unknowns per node
- * (a constant where inlined), interleaved by lane as TslElementFastForceBatch takes them: with four
- * unknowns per node each node's four rows are loaded whole and transposed (lanes.h). */
-static inline __attribute__((always_inline)) void GatherBatch(TslProblem p, const PetscInt e[W], const PetscScalar *restrict xa, PetscReal u[],
-                                                              PetscReal ti[], const PetscInt nd)
+/* The batch's unknowns from the local form xa, nd unknowns per node (a constant where inlined), interleaved by
+ * lane as TslElementFastForceBatch takes them: with four unknowns per node each node's four rows are loaded
+ * whole and transposed (lanes.h). Returns the initial temperatures to pass with them (ti not NULL): ti, gathered,
+ * or, on a rank whose nodes all start at one temperature, fast_ti, that constant (no gather). */
+static inline __attribute__((always_inline)) const PetscReal *GatherBatch(TslProblem p, const PetscInt e[W], const PetscScalar *restrict xa,
+                                                                          PetscReal u[], PetscReal ti[], const PetscInt nd)
 {
   const PetscInt *ln[W];
   const PetscInt  n = BatchNodes(p, e, ln);
@@ -114,9 +115,10 @@ static inline __attribute__((always_inline)) void GatherBatch(TslProblem p, cons
 #endif
       for (PetscInt j = 0; j < W; j++)
         for (PetscInt i = 0; i < nd; i++) u[(nd * a + i) * W + j] = PetscRealPart(xa[nd * ln[j][a] + i]);
-    if (ti)
+    if (ti && !p->fast_ti_uniform)
       for (PetscInt j = 0; j < W; j++) ti[a * W + j] = p->theta_init[ln[j][a]];
   }
+  return ti && p->fast_ti_uniform ? p->fast_ti : ti;
 }
 
 /* The used lanes' results added into their elements' rows of f (in lane order: lanes may share a node). */
@@ -149,12 +151,13 @@ static inline __attribute__((always_inline)) void ScatterBatch(TslProblem p, con
 void TslProblemFastBatchEnergy(TslProblem p, PetscInt b, const PetscScalar *xa, PetscReal *strain, PetscReal *hourglass)
 {
   PetscReal u[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, ti[TSL_FAST_MAX_NODES * W], se[W], hg[W];
-  PetscInt  e[W];
-  PetscBool used[W];
+  const PetscReal *tib;
+  PetscInt         e[W];
+  PetscBool        used[W];
 
   BatchElements(p, b, e, used);
-  GatherBatch(p, e, xa, u, p->fast_ti_uniform ? NULL : ti, p->ndof);
-  TslElementFastEnergyBatch(&p->fast_shape[p->m->elem_type[e[0]]], &p->fast_rec[p->fast_boff[b]], u, p->fast_ti_uniform ? p->fast_ti : ti, se, hg);
+  tib = GatherBatch(p, e, xa, u, ti, p->ndof);
+  TslElementFastEnergyBatch(&p->fast_shape[p->m->elem_type[e[0]]], &p->fast_rec[p->fast_boff[b]], u, tib, se, hg);
   *strain = *hourglass = 0;
   for (PetscInt j = 0; j < W; j++)
     if (used[j]) *strain += se[j], *hourglass += hg[j];
@@ -169,12 +172,13 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
   /* the batch's arrays aligned to a vector: the gather's and scatter's transposes move whole vectors */
   PetscReal u[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, v[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, ti[TSL_FAST_MAX_NODES * W] TSL_LANES_ALIGNED,
       R[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, eta[W], eta2[W], w[W], qr[2 * W];
-  PetscInt  e[W];
-  PetscBool used[W], visc[W], bv = PETSC_FALSE;
+  const PetscReal *tib;
+  PetscInt         e[W];
+  PetscBool        used[W], visc[W], bv = PETSC_FALSE;
 
   BatchElements(p, b, e, used);
   sh = &p->fast_shape[p->m->elem_type[e[0]]];
-  GatherBatch(p, e, xa, u, p->fast_ti_uniform ? NULL : ti, nd); /* a uniform initial temperature is not gathered */
+  tib = GatherBatch(p, e, xa, u, ti, nd);
   for (PetscInt j = 0; j < W; j++) {
     eta[j] = c->q ? c->eta[e[j]] : 0, eta2[j] = c->q ? c->eta2[e[j]] : 0;
     visc[j] = used[j] && (eta[j] > 0 || eta2[j] > 0) ? PETSC_TRUE : PETSC_FALSE;
@@ -197,8 +201,8 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
     }
   }
   /* the viscous forces added to the internal ones in R (Rv = R; zero in lanes without viscosity): one scatter */
-  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, p->fast_ti_uniform ? p->fast_ti : ti, bv && c->hinv == 0 ? v : NULL,
-                           bv ? &p->fast_ev[W * b] : NULL, c->hinv, eta, eta2, R, bv ? R : NULL, w, bv ? qr : NULL);
+  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, tib, bv && c->hinv == 0 ? v : NULL, bv ? &p->fast_ev[W * b] : NULL, c->hinv, eta,
+                           eta2, R, bv ? R : NULL, w, bv ? qr : NULL);
   if (bv) {
     for (PetscInt j = 0; j < W; j++)
       if (visc[j]) c->power += w[j], c->prev += c->q[e[j]] * qr[W + j], c->q[e[j]] = qr[j];
