@@ -33,6 +33,7 @@ typedef struct {
   PetscReal  forcing_max;          /* -tsl_linear_forcing: loosest linear tolerance of a Newton iteration after the first (0: -ksp_rtol always) */
   PetscReal  ksp_rtol;             /* the linear tolerance of the first Newton iteration (-ksp_rtol) */
   PetscBool  block_solves;         /* -tsl_block_solves: a block-triangular operator's blocks solved by CG (split.c) */
+  PetscReal  jacobi_scale;         /* -tsl_amg_jacobi_scale: per-level weights of BoomerAMG's Jacobi smoothing (split.c) */
   PetscBool  chatter_told;         /* the cause of contact that does not settle was explained (ReportChatter) */
   PetscBool  implicit_records;     /* -tsl_implicit_records: residuals from the element force records */
   PetscBool  records_done;         /* ... built (or declined) at the first implicit step */
@@ -85,6 +86,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time);
 PetscErrorCode TslSplitSetUp(PC pc, IS is_theta, IS is_u);
 PetscErrorCode TslSplitOptionType(const char *prefix, PetscBool *additive);
 PetscErrorCode TslSplitSetFromOptions(PC pc);
+PetscErrorCode TslSplitSetJacobiScale(PC pc, PetscReal scale);
 PetscErrorCode TslSplitReset(PC pc);
 PetscErrorCode TslSplitIs(PC pc, PetscBool *is);
 PetscErrorCode TslSplitSetTriangular(PC pc, KSP outer, PetscBool allowed);
