@@ -15,14 +15,7 @@
 # usage: check_amg_jacobi.sh THERMOSLIDE MPIEXEC OUTDIR BENCHDIR TOOLSDIR
 set -u
 exe=$1 mpiexec=$2 out=$3 bench=$4 tools=$5
-rm -rf "$out" && mkdir -p "$out" || exit 1
-/usr/bin/python3 "$bench/make_block.py" 12 "$out/block.inp" || exit 1
-run() { # name ranks options...
-  name=$1 np=$2
-  shift 2
-  $mpiexec -n "$np" "$exe" "$out/block.inp" -o "$out/$name" "$@" > "$out/$name.log" 2>&1 || { cat "$out/$name.log"; echo "FAIL: $name"; exit 1; }
-}
-cmp_h5() { /usr/bin/python3 "$tools/compare_h5.py" "$out/$1/block.h5" "$out/$2/block.h5" 1e-8 || { echo "FAIL: $1 against $2"; exit 1; }; }
+size=12 && . "$tools/block_case.sh"
 its() { sed -n 's/.*newton [0-9]*  linear \([0-9]*\).*/\1/p' "$out/$1.log" | tail -1; }
 finest() { sed -n 's/.*fieldsplit_u_ BoomerAMG Jacobi weights on [0-9]* levels, finest \([0-9.e+-]*\) (lambda \([0-9.e+-]*\)).*/\1 \2/p' "$out/$1.log" | head -1; }
 run jacobi_1 1 -ksp_view -info

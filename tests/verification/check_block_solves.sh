@@ -11,14 +11,7 @@
 # usage: check_block_solves.sh THERMOSLIDE MPIEXEC OUTDIR BENCHDIR TOOLSDIR
 set -u
 exe=$1 mpiexec=$2 out=$3 bench=$4 tools=$5
-rm -rf "$out" && mkdir -p "$out" || exit 1
-/usr/bin/python3 "$bench/make_block.py" 10 "$out/block.inp" || exit 1
-run() { # name ranks options...
-  name=$1 np=$2
-  shift 2
-  $mpiexec -n "$np" "$exe" "$out/block.inp" -o "$out/$name" "$@" > "$out/$name.log" 2>&1 || { cat "$out/$name.log"; echo "FAIL: $name"; exit 1; }
-}
-cmp_h5() { /usr/bin/python3 "$tools/compare_h5.py" "$out/$1/block.h5" "$out/$2/block.h5" 1e-8 || { echo "FAIL: $1 against $2"; exit 1; }; }
+size=10 && . "$tools/block_case.sh"
 run blocks_1 1 -ksp_view -ksp_converged_reason
 run cycles_1 1 -tsl_block_solves 0 -ksp_converged_reason
 run blocks_2 2 -ksp_converged_reason
