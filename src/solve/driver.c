@@ -159,11 +159,14 @@ static PetscErrorCode Repattern(void *ctx)
 
 static PetscErrorCode SetUpSolver(Driver *d)
 {
-  KSP ksp;
-  PC  pc;
-  IS  is_u, is_theta;
+  KSP             ksp;
+  PC              pc;
+  IS              is_u, is_theta;
+  const TslModel *m;
+  PetscBool       pc_set;
 
   PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
   d->rtol               = 1e-9;
   d->atol_rel           = 1e-8;
   d->cutback            = 0.25;
@@ -232,11 +235,9 @@ static PetscErrorCode SetUpSolver(Driver *d)
     /* a small model: a sparse direct solve costs less than building and applying the AMG hierarchies,
      * whose set-up dominates the increments of a few-hundred-unknown contact deck. The factorisation
      * grows as n^1.5 in 2D but n^2 in 3D (5 500 unknowns of the 3D block: 0.7 s against 0.13 s of AMG). */
-    Vec             X;
-    PetscInt        N;
-    const TslModel *m;
+    Vec      X;
+    PetscInt N;
     PetscCall(TslProblemGetSolution(d->prob, &X));
-    PetscCall(TslProblemGetModel(d->prob, &m));
     PetscCall(VecGetSize(X, &N));
     if (d->direct_max < 0) d->direct_max = m->dim == 3 ? 2000 : 20000;
     if (d->fallback_max < 0) d->fallback_max = m->dim == 3 ? 150000 : 400000;
@@ -253,10 +254,11 @@ static PetscErrorCode SetUpSolver(Driver *d)
       if (size > 1) d->fell_back = PETSC_TRUE;
     }
   }
+  /* whether a -pc_type (the user's, or the direct solve above) replaces thermoslide's split */
+  PetscCall(PetscOptionsHasName(NULL, NULL, "-pc_type", &pc_set));
   {
     /* the default split's type, checked before any solver object exists (a type it lacks stops the job here) */
-    PetscBool pc_set, additive;
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-pc_type", &pc_set));
+    PetscBool additive;
     if (!pc_set) PetscCall(TslSplitOptionType(NULL, &additive));
   }
   PetscCall(SetDefaultOption(d, "-ksp_type", "fgmres"));
@@ -285,8 +287,6 @@ static PetscErrorCode SetUpSolver(Driver *d)
      * 19 / 20 / 20 (docs/running.md, "Contact at scale"). Without contact, dropping the aggressive coarsening
      * costs more than it saves (the steady block: 25 instead of 29 iterations for twice the set-up and a
      * slower solve), so these are the contact models' defaults only. */
-    const TslModel *m;
-    PetscCall(TslProblemGetModel(d->prob, &m));
     if (m->npair > 0) {
       PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.8"));
       PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_agg_nl", "0"));
@@ -314,25 +314,19 @@ static PetscErrorCode SetUpSolver(Driver *d)
    * hybrid Gauss-Seidel. Without it (PETSc's -pc_type fieldsplit, -tsl_amg_jacobi_scale 0) a fixed Jacobi
    * weight can let the cycle diverge, so Chebyshev, which estimates its own spectrum, stays the default there
    * (docs/running.md, tests/bench/bench_peer.sh). */
-  {
-    PetscBool       pc_set;
-    const TslModel *m;
-    PetscCall(PetscOptionsHasName(NULL, NULL, "-pc_type", &pc_set));
-    PetscCall(TslProblemGetModel(d->prob, &m));
-    if (!pc_set && d->jacobi_scale > 0) {
-      PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_relax_type_all", "Jacobi"));
-      PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_no_CF", "true"));
-      /* the temperature block too, without contact: 19 instead of 15 CG iterations on the peer benchmark's
-       * block, each cheaper than hybrid Gauss-Seidel's, and a cheaper set-up (the job 5-8 % faster on 1 and 2
-       * ranks); with contact the coupled outer iterations grew (the 3D contact benchmark at N = 32: 76 -> 94
-       * displacement cycles for the same time), so hybrid Gauss-Seidel stays there */
-      if (m->npair == 0) {
-        PetscCall(SetDefaultOption(d, "-fieldsplit_T_pc_hypre_boomeramg_relax_type_all", "Jacobi"));
-        PetscCall(SetDefaultOption(d, "-fieldsplit_T_pc_hypre_boomeramg_no_CF", "true"));
-      }
-    } else
-      PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_relax_type_all", "Chebyshev"));
-  }
+  if (!pc_set && d->jacobi_scale > 0) {
+    PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_relax_type_all", "Jacobi"));
+    PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_no_CF", "true"));
+    /* the temperature block too, without contact: 19 instead of 15 CG iterations on the peer benchmark's
+     * block, each cheaper than hybrid Gauss-Seidel's, and a cheaper set-up (the job 5-8 % faster on 1 and 2
+     * ranks); with contact the coupled outer iterations grew (the 3D contact benchmark at N = 32: 76 -> 94
+     * displacement cycles for the same time), so hybrid Gauss-Seidel stays there */
+    if (m->npair == 0) {
+      PetscCall(SetDefaultOption(d, "-fieldsplit_T_pc_hypre_boomeramg_relax_type_all", "Jacobi"));
+      PetscCall(SetDefaultOption(d, "-fieldsplit_T_pc_hypre_boomeramg_no_CF", "true"));
+    }
+  } else
+    PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_relax_type_all", "Chebyshev"));
   PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_truncfactor", "0.3"));
 
   PetscCall(SNESCreate(d->comm, &d->snes));

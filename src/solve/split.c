@@ -537,25 +537,19 @@ static PetscErrorCode JacobiWeights(Split *s, PetscInt i)
   PetscInt          N, nl;
 
   PetscFunctionBeginUser;
+  s->nweight[i] = 0;
   PetscCall(KSPGetPC(s->ksp[i], &subpc));
   PetscCall(PetscObjectTypeCompare((PetscObject)subpc, PCHYPRE, &hypre));
-  if (!hypre || s->jacobi_scale <= 0 || !subpc->data) {
-    s->nweight[i] = 0;
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
+  if (!hypre || s->jacobi_scale <= 0 || !subpc->data) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PCHYPREGetType(subpc, &type));
   PetscCall(KSPGetOptionsPrefix(s->ksp[i], &pre));
   PetscCall(PetscOptionsHasName(NULL, pre, "-pc_hypre_boomeramg_relax_weight_all", &user));
-  if (!type || strcmp(type, "boomeramg") || user) {
-    s->nweight[i] = 0;
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  s->nweight[i] = 0;
-  amg           = *(hypre_ParAMGData **)subpc->data;
+  if (!type || strcmp(type, "boomeramg") || user) PetscFunctionReturn(PETSC_SUCCESS);
+  amg = *(hypre_ParAMGData **)subpc->data;
   PetscCall(MatGetSize(s->A[i], &N, NULL));
   if (!amg || !hypre_ParAMGDataAArray(amg) || !hypre_ParAMGDataGridRelaxType(amg)) PetscFunctionReturn(PETSC_SUCCESS);
   nl = hypre_ParAMGDataNumLevels(amg);
-  if (nl < 2 || nl > 32 || !hypre_ParAMGDataAArray(amg)[0] || hypre_ParCSRMatrixGlobalNumRows(hypre_ParAMGDataAArray(amg)[0]) != N)
+  if (nl < 2 || !hypre_ParAMGDataAArray(amg)[0] || hypre_ParCSRMatrixGlobalNumRows(hypre_ParAMGDataAArray(amg)[0]) != N)
     PetscFunctionReturn(PETSC_SUCCESS);
   if (hypre_ParAMGDataGridRelaxType(amg)[1] != 0 || hypre_ParAMGDataGridRelaxType(amg)[2] != 0) PetscFunctionReturn(PETSC_SUCCESS); /* not Jacobi */
   for (PetscInt l = 0; l < nl - 1; l++) {
@@ -563,13 +557,12 @@ static PetscErrorCode JacobiWeights(Split *s, PetscInt i)
     PetscReal  gx = 0;
     PetscCallExternal(hypre_ParCSRMaxEigEstimateCG, hypre_ParAMGDataAArray(amg)[l], 1, 10, &mx, &mn);
     PetscCall(Gershgorin(hypre_ParAMGDataAArray(amg)[l], &gx));
-    if (!(mx > 0) || PetscIsInfOrNanReal(mx)) continue; /* hypre's weight stays */
-    if (gx > 0 && 1.1 * mx > gx) mx = gx / 1.1;         /* an unsymmetric block (contact) can mislead Lanczos above the bound */
-    s->lambda[i][l]                     = mx;
-    s->weight[i][l]                     = s->jacobi_scale / (1.1 * mx);
-    hypre_ParAMGDataRelaxWeight(amg)[l] = s->weight[i][l];
+    if (!(mx > 0) || PetscIsInfOrNanReal(mx)) mx = gx / 1.1; /* no Lanczos estimate: the bound */
+    if (gx > 0 && 1.1 * mx > gx) mx = gx / 1.1;              /* an unsymmetric block (contact) can mislead Lanczos above the bound */
+    if (mx > 0) hypre_ParAMGDataRelaxWeight(amg)[l] = s->jacobi_scale / (1.1 * mx); /* else hypre's weight stays */
+    if (l < 32) s->lambda[i][l] = mx, s->weight[i][l] = hypre_ParAMGDataRelaxWeight(amg)[l];
   }
-  s->nweight[i] = nl - 1;
+  s->nweight[i] = PetscMin(nl - 1, 32); /* the levels listed by -ksp_view */
   PetscCall(PetscInfo(subpc, "%s BoomerAMG Jacobi weights on %" PetscInt_FMT " levels, finest %g (lambda %g)\n", prefix[i], nl - 1,
                       (double)s->weight[i][0], (double)s->lambda[i][0]));
   PetscFunctionReturn(PETSC_SUCCESS);
