@@ -200,10 +200,10 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
 {
   TslModel       *m = p->m;
   PetscInt        n, *elem, *face;
-  TslFaceLoadKind kind = ld->kind == TSL_LOAD_DLOAD  ? TSL_FACE_PRESSURE
-                         : ld->kind == TSL_LOAD_FILM ? TSL_FACE_FILM
-                         : ld->face == 0             ? TSL_BODY_FLUX
-                                                     : TSL_FACE_FLUX;
+  TslFaceLoadKind kind = ld->kind == TSL_LOAD_DLOAD                ? TSL_FACE_PRESSURE
+                         : ld->kind == TSL_LOAD_FILM               ? TSL_FACE_FILM
+                         : ld->face == 0 && !ld->target_is_surface ? TSL_BODY_FLUX /* BF; *DSFLUX's S (face 0 too) is on the surface's faces */
+                                                                   : TSL_FACE_FLUX;
   char            loc[PETSC_MAX_PATH_LEN + 32];
 
   PetscFunctionBeginUser;

@@ -73,6 +73,18 @@ static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, P
   /* a Newton update below round-off of the solution: the residual is as small as it will get (stiff
    * penalty contact puts that floor above the absolute tolerance) */
   if (*reason == SNES_CONVERGED_SNORM_RELATIVE && it > 0) PetscFunctionReturn(PETSC_SUCCESS);
+  /* the same when the whole residual has also fallen by -snes_rtol (PETSc then says FNORM_RELATIVE first): a
+   * field whose only load is the other one's (the thermal stress of a body heated in its first increment, with
+   * no force: its residual scale is 0 and its round-off, relative to the internal forces, is not) would
+   * otherwise iterate to the increment's limit */
+  if (*reason == SNES_CONVERGED_FNORM_RELATIVE && it > 0) {
+    PetscReal stol;
+    PetscCall(SNESGetTolerances(snes, NULL, NULL, &stol, NULL, NULL));
+    if (snorm < stol * xnorm) {
+      *reason = SNES_CONVERGED_SNORM_RELATIVE;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+  }
   *reason = SNES_CONVERGED_ITERATING;
   PetscCall(SNESGetFunction(snes, &F, NULL, NULL));
   PetscCall(TslProblemResidualNorms(d->prob, F, &nu, &nt));
