@@ -34,6 +34,11 @@ typedef struct {
 
 typedef enum { TSL_SURFACE_ELEMENT = 0, TSL_SURFACE_NODE = 1 } TslSurfaceKind;
 
+/* Face codes of a conventional shell's two sides (labels SPOS/SNEG, FPOS/FNEG): read as these, then
+ * mapped to the faces of the continuum elements the shell is expanded into (shell.c) before the checks. */
+#define TSL_FACE_POS 7
+#define TSL_FACE_NEG 8
+
 typedef struct {
   char           name[TSL_NAME_LEN];
   TslSurfaceKind kind;
@@ -75,6 +80,8 @@ typedef struct {
   PetscInt  shell_points;   /* *SHELL SECTION: Simpson points through the thickness (data line; default 5) */
   PetscReal thickness_modulus; /* *SHELL SECTION, THICKNESS MODULUS= (0: the default, 2 G) */
   PetscInt  shell_stack;       /* *SHELL SECTION, STACK DIRECTION= 1..3 (default 3) */
+  PetscReal shell_thickness;   /* *SHELL SECTION data line: a conventional shell's (S8RT, SAX2T) thickness (default 1) */
+  PetscReal shell_offset;      /* *SHELL SECTION, OFFSET= (SPOS 0.5, SNEG -0.5; default 0, the mid-surface) */
   TslLoc    loc;
 } TslSection;
 

@@ -284,38 +284,67 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
     friction series' radial force 211.6, of which the inner ring's hoop stiffness takes about 5 %, so
     that the interface carries about 200 as in the planar decks).
     surf: TYPE=SURFACE TO SURFACE (job name *_surf_*); refine: cells per cell each way (job name *_rN_*);
-    top_rows: cells across the small block (6; the explicit decks take 2)."""
+    top_rows: cells across the small block (6; the explicit decks take 2).
+    typ SAX2T (the spec's CAX8T, SAX2T decks): the large ring as the CAX8T deck has it, the small ring as a
+    line of 4 SAX2T shells on its mid-surface r = 1.125 (thickness 0.25, along +z: the positive normal -r,
+    so SNEG is the contact face r = 1.25 and SPOS the pressed face r = 1); TOPFACE is the shell nodes (a
+    boundary condition holds each one's whole fiber through the thickness, the *EQUATIONs of the friction
+    series tie the mid-surface nodes themselves); loads on the surface PRESSED (the SPOS side). The axial
+    motion of the conductance and radiation series is driven on the centre fiber alone (SLIDER, z = 3):
+    held axially all through its thickness and length, the ring would press like a rigid punch (contact
+    pressure 85 .. 133 under 100 at the ends against 89 .. 100). The friction series' radial force is
+    224.3: the ring's hoop stiffness takes more of it than the CAX8T ring's (about 11 %), and the interface
+    force is again about 200."""
     typ = typ.upper()
+    shell = typ == "SAX2T"
+    if shell:
+        typ = "CAX8T"
     shape, order, kin = family_of(typ)
     axi = kin in ("AX", "GAX")
     twist = kin == "GAX"
     # second-order types: half the cells each way (the same node spacing, a quarter of the elements)
     c = 2 if order == 2 else 1
     bnodes, belems, brows = mesh2d(12 * refine // c, 2 * refine // c, 0.0, 6.0, 0.0, 1.25, shape, order, mirror=3.0)
-    tnodes, telems, trows = mesh2d(4 * refine // c, top_rows * refine // c, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000, mirror=3.0)
     fb, ft = faces(shape)
+    if shell:
+        # SAX2T: end, middle, end; 4 elements along x (z), nodes 1001.. on the mid-surface y = 1.375
+        nel = 4 * refine
+        tnodes = [(1001 + i, 2.0 + 2.0 * i / (2 * nel), 1.375) for i in range(2 * nel + 1)]
+        telems = [(1001 + k, 1001 + 2 * k, 1002 + 2 * k, 1003 + 2 * k) for k in range(nel)]
+        topface = [n[0] for n in tnodes]
+        sec_elems = pressed = [e[0] for e in telems]
+        drive = "SLIDER"  # the centre shell node's fiber: the ring's axial motion (docstring)
+    else:
+        tnodes, telems, trows = mesh2d(4 * refine // c, top_rows * refine // c, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000, mirror=3.0)
+        topface = [n[0] for n in tnodes if abs(n[2] - 1.5) < 1e-12]
+        sec_elems = trows[0][0]     # bottom row of the small block
+        pressed = trows[-1][1]      # top row of the small block
+        drive = "TOPFACE"
     base = [n[0] for n in bnodes if abs(n[2]) < 1e-12]
-    topface = [n[0] for n in tnodes if abs(n[2] - 1.5) < 1e-12]
     main_elems = brows[-1][1]   # top row of the large block
-    sec_elems = trows[0][0]     # bottom row of the small block
-    pressed = trows[-1][1]      # top row of the small block
     # centre of the large block's bottom, 2.5 <= x <= 3.5
     filmed = [brows[0][0][k] for k in (range(5 * refine // c, 7 * refine // c) if refine > 1 else (6 // c - 1, 6 // c))]
     place = (lambda x, y: (R_AXI - y, x)) if axi else (lambda x, y: (x, y))
     slide, press = ("2", "1") if axi else ("1", "2")
     pscale = (R_AXI - 1.25) / (R_AXI - 1.5) if axi else 1.0
     fmt = lambda nodes: "".join(" %d, %.10g, %.10g\n" % ((n[0],) + place(n[1], n[2])) for n in nodes)
-    text = ("*HEADING\n Finite sliding between coupled temperature-displacement %s blocks: %s series\n" % (typ, series) +
+    text = ("*HEADING\n Finite sliding between coupled temperature-displacement %s blocks: %s series\n" % ("CAX8T and SAX2T" if shell else typ, series) +
             "*NODE, NSET=ALL\n" + fmt(bnodes) + "*NODE, NSET=ALL\n" + fmt(tnodes) +
             "*ELEMENT, TYPE=%s, ELSET=LARGE\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
-            "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
-            nset("BASE", base) + nset("TOPFACE", topface) + elset("MAINE", main_elems) + elset("SECE", sec_elems) +
-            elset("PRESSED", pressed) + elset("FILMED", filmed) +
-            "*SURFACE, NAME=MAIN, TYPE=ELEMENT\n MAINE, S%s\n*SURFACE, NAME=SECONDARY, TYPE=ELEMENT\n SECE, S%s\n" % (ft, fb) + MAT +
+            "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % ("SAX2T" if shell else typ) + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
+            nset("BASE", base) + nset("TOPFACE", topface) + (nset("SLIDER", [1001 + nel]) if shell else "") +
+            elset("MAINE", main_elems) + elset("SECE", sec_elems) +
+            elset("PRESSEDE" if shell else "PRESSED", pressed) + elset("FILMED", filmed) +
+            "*SURFACE, NAME=MAIN, TYPE=ELEMENT\n MAINE, S%s\n*SURFACE, NAME=SECONDARY, TYPE=ELEMENT\n SECE, S%s\n" % (ft, "NEG" if shell else fb) +
+            ("*SURFACE, NAME=PRESSED, TYPE=ELEMENT\n PRESSEDE, SPOS\n" if shell else "") + MAT +
             (("*NODE, NSET=REFS\n 9001, 3.0, 0.0\n 9002, 3.0, 1.375\n"
               "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL, REF NODE=9001\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL, REF NODE=9002\n 1.0\n")
              if kin == "PEG" else
+             "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n 1.0\n*SHELL SECTION, ELSET=SMALL, MATERIAL=STEEL\n 0.25\n" if shell else
              "*SOLID SECTION, ELSET=LARGE, MATERIAL=STEEL\n 1.0\n*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL\n 1.0\n"))
+    # the pressed face's pressure and flux: element faces (PRESSED, P3 / S3, ...), or the shells' surface (P, S)
+    pload = (lambda v: " PRESSED, P, %s\n" % v) if shell else (lambda v: " PRESSED, P%s, %s\n" % (ft, v))
+    dflux = "*DSFLUX%s\n PRESSED, S, 100.0\n" if shell else "*DFLUX%s\n PRESSED, S" + ft + ", 100.0\n"
     text += series_interaction(series, auglagr, surf)
     if series == "friction":
         ref = topface[0]
@@ -328,7 +357,7 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
         amount = "0.9" if twist else "1.5"
         turn = (" %d, 5, 5, 0.96\n" % ref) if twist else ""
         text += ("*STEP, NAME=PRESS, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.5, 1.0\n"
-                 "*BOUNDARY\n BASE, 1, 2\n %d, %s, %s\n%s*CLOAD\n %d, %s, %s\n*END STEP\n" % (ref, slide, slide, hold, ref, press, "211.6" if axi else "-200.0") +
+                 "*BOUNDARY\n BASE, 1, 2\n %d, %s, %s\n%s*CLOAD\n %d, %s, %s\n*END STEP\n" % (ref, slide, slide, hold, ref, press, "224.3" if shell else "211.6" if axi else "-200.0") +
                  "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.025, 3.0, 1e-5, 0.025\n"
                  "*BOUNDARY, AMPLITUDE=SLIDE\n %d, %s, %s, %s\n%s*END STEP\n" % (ref, slide, slide, amount, turn) +
                  "*STEP, NAME=EQUILIBRATE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 20.0, 1e-5, 2.0\n*END STEP\n")
@@ -336,19 +365,20 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
         p1, p2 = "%.10g" % (100.0 * pscale), "%.10g" % (200.0 * pscale)
         text += ("*AMPLITUDE, NAME=OFF\n 0.0, 0.0, 1.0, 1.0\n*AMPLITUDE, NAME=FLUXDOWN\n 0.0, 1.0, 0.1, 0.0\n"
                  "*STEP, NAME=HEAT, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 1.0, 1e-5, 0.1\n"
-                 "*BOUNDARY\n BASE, 1, 2\n TOPFACE, %s, %s\n%s*DLOAD\n PRESSED, P%s, %s\n*DFLUX\n PRESSED, S%s, 100.0\n"
-                 % (slide, slide, " BASE, 5, 5\n TOPFACE, 5, 5\n" if twist else "", ft, p1, ft) +
+                 "*BOUNDARY\n BASE, 1, 2\n %s, %s, %s\n%s*DLOAD\n%s%s"
+                 % (drive, slide, slide, " BASE, 5, 5\n TOPFACE, 5, 5\n" if twist else "", pload(p1), dflux % "") +
                  "*FILM\n FILMED, F%s, 0.0, 10.0\n*END STEP\n" % fb +
                  "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.05\n"
-                 "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, %s, %s, 1.5\n%s*END STEP\n" % (slide, slide, " TOPFACE, 5, 5, 0.4\n" if twist else "") +
+                 "*BOUNDARY, AMPLITUDE=SLIDE\n %s, %s, %s, 1.5\n%s*END STEP\n" % (drive, slide, slide, " TOPFACE, 5, 5, 0.4\n" if twist else "") +
                  "*STEP, NAME=STEADY\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n*END STEP\n"
                  "*STEP, NAME=DOUBLE PRESSURE\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
-                 "*DLOAD\n PRESSED, P%s, %s\n*END STEP\n" % (ft, p2) +
+                 "*DLOAD\n%s*END STEP\n" % pload(p2) +
                  "*STEP, NAME=SLIDE OFF, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.1\n"
-                 "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n%s*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, %s, %s, 5.0\n"
-                 % (press, press, " TOPFACE, 5, 5\n" if twist else "", slide, slide) +
-                 "*DFLUX, AMPLITUDE=FLUXDOWN\n PRESSED, S%s, 100.0\n*END STEP\n" % ft)
-    name = "sliding_%s%s%s%s_%s.inp" % (series, "_auglagr" if auglagr else "", "_surf" if surf else "", "_r%d" % refine if refine > 1 else "", typ.lower())
+                 "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n%s*BOUNDARY, AMPLITUDE=OFF\n %s, %s, %s, 5.0\n"
+                 % (press, press, " TOPFACE, 5, 5\n" if twist else "", drive, slide, slide) +
+                 dflux % ", AMPLITUDE=FLUXDOWN" + "*END STEP\n")
+    name = "sliding_%s%s%s%s_%s.inp" % (series, "_auglagr" if auglagr else "", "_surf" if surf else "", "_r%d" % refine if refine > 1 else "",
+                                         "sax2t" if shell else typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:
         f.write(text)
 
@@ -551,6 +581,23 @@ def faces_on(nodes, elems, shape, y):
     return out
 
 
+def shell_plate(nx, nz, x0, x1, z0, z1, y, nid0=0, eid0=0):
+    """A plate of nx x nz S8RT elements on the plane y (its mid-surface): nodes {id: (x, y, z)}, elements
+    [(id, 4 corners, 4 midsides)] with the corners (x, z), (x, z + dz), (x + dx, z + dz), (x + dx, z), so that
+    the right-hand normal (x2 - x1) x (x4 - x1) is +y: SPOS is the upper face, SNEG the lower one."""
+    NX, NZ = 2 * nx, 2 * nz
+    nid = lambda i, k: nid0 + 1 + i + k * (NX + 1)
+    nodes = {nid(i, k): (x0 + (x1 - x0) * i / NX, y, z0 + (z1 - z0) * k / NZ)
+             for k in range(NZ + 1) for i in range(NX + 1) if not (i % 2 and k % 2)}
+    elems = []
+    for k in range(nz):
+        for i in range(nx):
+            I, K = 2 * i, 2 * k
+            elems.append((eid0 + 1 + i + k * nx, nid(I, K), nid(I, K + 2), nid(I + 2, K + 2), nid(I + 2, K),
+                          nid(I, K + 1), nid(I + 1, K + 2), nid(I + 2, K + 1), nid(I + 1, K)))
+    return nodes, elems
+
+
 def sliding_blocks_3d(series, typ, outdir=None, surf=False, explicit=None):
     """The spec's three series on 3D blocks (see above): the planar decks' loads and steps on faces of
     width 1 (small block) and 1.2 (large block), sliding along x, pressing along -y, z held on the small
@@ -558,23 +605,43 @@ def sliding_blocks_3d(series, typ, outdir=None, surf=False, explicit=None):
     60 / 9.5. surf: TYPE=SURFACE TO SURFACE (job name *_surf_*). explicit: PENALTY or KINEMATIC, the
     series as explicit steps the way sliding_explicit writes the planar ones (2 cells across the small block;
     its top face moved along x and held in z, the friction series' force 200 as a pressure of 100 on it; job
-    name sliding_<series>_explicit_<constraint>_<type>)."""
+    name sliding_<series>_explicit_<constraint>_<type>).
+    typ S8RT (the spec's ei38tssr decks): each block a plate of S8RT shells on its mid-surface (normal +y;
+    large: y = 0.625, thickness 1.25, 12 x 1 elements; small: y = 1.375, thickness 0.25, 4 x 3), which the
+    reader expands into the blocks' volumes (two C3D20RT through each thickness: 24 elements in each block, so
+    that slabs along y put them on different ranks). MAIN is the large plate's
+    SPOS side, SECONDARY the small plate's SNEG side, the loads on the surfaces PRESSED (the small plate's
+    SPOS) and FILMED (the large plate's SNEG under x in [2.5, 3.5]); BASE and TOPFACE are the plates' shell
+    nodes, and a boundary condition on a shell node holds its whole fiber: BASE holds the large block
+    entirely, TOPFACE moves the small block as a whole along x and z (the *EQUATIONs of the friction series
+    tie the mid-surface nodes themselves)."""
     typ = typ.upper()
-    bnodes, belems, shape = mesh3d(12, 2, 1, 0.0, 6.0, 0.0, 1.25, -0.1, 1.1, typ, mirror=3.0)
-    tnodes, telems, _ = mesh3d(4, 2 if explicit else 6, 1, 2.0, 4.0, 1.25, 1.5, 0.0, 1.0, typ, 1000, 1000, mirror=3.0)
-    main = faces_on(bnodes, belems, shape, 1.25)
-    sec = faces_on(tnodes, telems, shape, 1.25)
-    pressed = faces_on(tnodes, telems, shape, 1.5)
-    base = sorted(n for n, c in bnodes.items() if abs(c[1]) < 1e-12)
-    topface = sorted(n for n, c in tnodes.items() if abs(c[1] - 1.5) < 1e-12)
-    # film on the large block's bottom under the small block (x in [2.5, 3.5]), all across the width
-    filmed = [(e, f) for e, f in faces_on(bnodes, belems, shape, 0.0)
-              if all(2.5 - 1e-12 <= bnodes[n][0] <= 3.5 + 1e-12 for n in [dict((el[0], el[1:]) for el in belems)[e][c] for c in FACES_3D[shape][f - 1]])]
+    shell = typ == "S8RT"
+    if shell:
+        assert not explicit
+        bnodes, belems = shell_plate(12, 1, 0.0, 6.0, -0.1, 1.1, 0.625)
+        tnodes, telems = shell_plate(4, 3, 2.0, 4.0, 0.0, 1.0, 1.375, 1000, 1000)
+        base, topface = sorted(bnodes), sorted(tnodes)
+        filmede = [e[0] for e in belems if all(2.5 - 1e-12 <= bnodes[n][0] <= 3.5 + 1e-12 for n in e[1:])]
+        pressed, filmed = "PRESSED", "FILMED"  # the surfaces below
+    else:
+        bnodes, belems, shape = mesh3d(12, 2, 1, 0.0, 6.0, 0.0, 1.25, -0.1, 1.1, typ, mirror=3.0)
+        tnodes, telems, _ = mesh3d(4, 2 if explicit else 6, 1, 2.0, 4.0, 1.25, 1.5, 0.0, 1.0, typ, 1000, 1000, mirror=3.0)
+        main = faces_on(bnodes, belems, shape, 1.25)
+        sec = faces_on(tnodes, telems, shape, 1.25)
+        pressed = faces_on(tnodes, telems, shape, 1.5)
+        base = sorted(n for n, c in bnodes.items() if abs(c[1]) < 1e-12)
+        topface = sorted(n for n, c in tnodes.items() if abs(c[1] - 1.5) < 1e-12)
+        # film on the large block's bottom under the small block (x in [2.5, 3.5]), all across the width
+        filmed = [(e, f) for e, f in faces_on(bnodes, belems, shape, 0.0)
+                  if all(2.5 - 1e-12 <= bnodes[n][0] <= 3.5 + 1e-12 for n in [dict((el[0], el[1:]) for el in belems)[e][c] for c in FACES_3D[shape][f - 1]])]
 
     def surface(name, faces):
         return "*SURFACE, NAME=%s, TYPE=ELEMENT\n" % name + "".join(" %d, S%d\n" % f for f in faces)
 
     def load_lines(faces, kind, value):
+        if shell:  # a surface: PRESSED, P, 100.0
+            return " %s, %s, %s\n" % (faces, kind, value)
         return "".join(" %d, %s%d, %s\n" % (e, kind, f, value) for e, f in faces)
 
     fmt = lambda nodes: "".join(" %d, %.10g, %.10g, %.10g\n" % ((n,) + nodes[n]) for n in sorted(nodes))
@@ -582,8 +649,15 @@ def sliding_blocks_3d(series, typ, outdir=None, surf=False, explicit=None):
             "*NODE, NSET=ALL\n" + fmt(bnodes) + "*NODE, NSET=ALL\n" + fmt(tnodes) +
             "*ELEMENT, TYPE=%s, ELSET=LARGE\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
             "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
-            nset("BASE", base) + nset("TOPFACE", topface) + surface("MAIN", main) + surface("SECONDARY", sec) + MAT +
-            section(typ, "LARGE") + section(typ, "SMALL"))
+            nset("BASE", base) + nset("TOPFACE", topface))
+    if shell:
+        text += (elset("FILMEDE", filmede) + "*SURFACE, NAME=MAIN, TYPE=ELEMENT\n LARGE, SPOS\n*SURFACE, NAME=SECONDARY, TYPE=ELEMENT\n SMALL, SNEG\n"
+                 "*SURFACE, NAME=PRESSED, TYPE=ELEMENT\n SMALL, SPOS\n*SURFACE, NAME=FILMED, TYPE=ELEMENT\n FILMEDE, SNEG\n" + MAT +
+                 "*SHELL SECTION, ELSET=LARGE, MATERIAL=STEEL\n 1.25\n*SHELL SECTION, ELSET=SMALL, MATERIAL=STEEL\n 0.25\n")
+    else:
+        text += surface("MAIN", main) + surface("SECONDARY", sec) + MAT + section(typ, "LARGE") + section(typ, "SMALL")
+    # the flux and film keywords of element faces (S3, F1, ...) or of surfaces
+    dflux, film = ("*DSFLUX", "*SFILM") if shell else ("*DFLUX", "*FILM")
     if explicit:
         assert not surf
         text = text.replace("%s series\n" % series, "%s series, explicit, %s contact\n" % (series, explicit.lower()), 1)
@@ -608,15 +682,15 @@ def sliding_blocks_3d(series, typ, outdir=None, surf=False, explicit=None):
         text += ("*AMPLITUDE, NAME=OFF\n 0.0, 0.0, 1.0, 1.0\n*AMPLITUDE, NAME=FLUXDOWN\n 0.0, 1.0, 0.1, 0.0\n"
                  "*STEP, NAME=HEAT, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 1.0, 1e-5, 0.1\n"
                  "*BOUNDARY\n BASE, 1, 3\n TOPFACE, 1, 1\n TOPFACE, 3, 3\n*DLOAD\n" + load_lines(pressed, "P", "100.0") +
-                 "*DFLUX\n" + load_lines(pressed, "S", "100.0") + "*FILM\n" + load_lines(filmed, "F", "0.0, 10.0") + "*END STEP\n"
+                 dflux + "\n" + load_lines(pressed, "S", "100.0") + film + "\n" + load_lines(filmed, "F", "0.0, 10.0") + "*END STEP\n"
                  "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.05\n"
                  "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, 1, 1, 1.5\n*END STEP\n"
                  "*STEP, NAME=STEADY\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n*END STEP\n"
                  "*STEP, NAME=DOUBLE PRESSURE\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n"
                  "*DLOAD\n" + load_lines(pressed, "P", "200.0") + "*END STEP\n"
                  "*STEP, NAME=SLIDE OFF, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.1\n"
-                 "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, 2, 2\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, 1, 1, 5.0\n"
-                 "*DFLUX, AMPLITUDE=FLUXDOWN\n" + load_lines(pressed, "S", "100.0") + "*END STEP\n")
+                 "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, 2, 2\n*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, 1, 1, 5.0\n" +
+                 dflux + ", AMPLITUDE=FLUXDOWN\n" + load_lines(pressed, "S", "100.0") + "*END STEP\n")
     name = "sliding_%s%s_%s.inp" % (series, "_surf" if surf else "", typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:
         f.write(text)
@@ -726,12 +800,13 @@ if __name__ == "__main__":
     import sys
     if len(sys.argv) >= 5 and sys.argv[1] == "--sliding":
         # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR [--auglagr] [--surf] [--refine=N] [--stack2]
+        # (TYPE S8RT: the blocks as shell plates, sliding_blocks_3d; SAX2T: the small ring as shells on a CAX8T ring, sliding_blocks)
         flags = sys.argv[5:]
         if "--stack2" in flags:
             assert sys.argv[2].upper() == "SC8RT", "--stack2: SC8RT only (a wedge stacks along its third direction)"
             SHELL_STACK2 = True
         refine = [int(f.split("=")[1]) for f in flags if f.startswith("--refine=")]
-        if sys.argv[2].upper().startswith(("C3D", "SC")):
+        if sys.argv[2].upper().startswith(("C3D", "SC", "S8")):
             sliding_blocks_3d(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], surf="--surf" in flags)
         else:
             sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr="--auglagr" in flags, surf="--surf" in flags,

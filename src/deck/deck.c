@@ -84,6 +84,7 @@ typedef struct {
   PetscBool skip_line; /* set by a load's line function: the line is read and left out (a *BOUNDARY on dof 8) */
   PetscBool          node_normal_warned; /* the warning that *NODE normal directions are ignored was given */
   unsigned long long noted_types;        /* the types whose dialect name (C3D8 for C3D8T, ...) was noted, by bit */
+  PetscBool          shell_noted;        /* the note that conventional shells are expanded was given */
 } Deck;
 
 /* A part (*PART ... *END PART), read straight into the model with its ids shifted past those defined before
@@ -798,12 +799,22 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
   PetscInt              type, nn, iset = -1;
   const TslElementType *et;
   PetscBool             got;
+  const char           *shell = NULL, *what = NULL;
 
   PetscFunctionBeginUser;
   (void)kw;
   USER_CHECK(!d->assembly, LOC_FMT "*ELEMENT in an assembly is not supported: elements belong to parts", KLOC(d));
   PetscCall(ParamRequired(d, "TYPE", &tname));
-  type = TslElementTypeFind(tname);
+  /* a conventional shell (S8RT, SAX2T) is read with its own nodes and the type it is expanded into (shell.c) */
+  PetscCall(TslDeckShellType(tname, &shell, &type, &nn, &what));
+  if (!shell) type = TslElementTypeFind(tname);
+  if (shell && !d->shell_noted) {
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          LOC_FMT "note: %s shell elements are expanded into %s through the thickness each (docs/elements.md, "
+                                  "\"Conventional shells\")\n",
+                          KLOC(d), shell, what));
+    d->shell_noted = PETSC_TRUE;
+  }
   if (type < 0 && strlen(tname) < 30) {
     /* CalculiX has no separate coupled types: its mechanical elements (C3D8, CPE4, ...) carry a temperature in
      * a coupled temperature-displacement step. The coupled counterpart of the dialect's name + T is the same
@@ -820,7 +831,7 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
   }
   USER_CHECK(type >= 0, LOC_FMT "unknown element type %s (docs/elements.md lists the types)", KLOC(d), tname);
   et = TslElementTypeGet(type);
-  nn = et->geom->nnode;
+  if (!shell) nn = et->geom->nnode;
   if (et->pore) d->pore = PETSC_TRUE;
   if (!m->dim) m->dim = et->dim;
   USER_CHECK(m->dim == et->dim,
@@ -836,8 +847,8 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     PetscInt id, k;
     PetscCall(DataLine(d, 1 + nn, &got));
     if (!got) break;
-    USER_CHECK(d->nfield == 1 + nn, LOC_FMT "element has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT, DLOC(d), d->nfield - 1, et->name,
-               nn);
+    USER_CHECK(d->nfield == 1 + nn, LOC_FMT "element has %" PetscInt_FMT " nodes but type %s needs %" PetscInt_FMT, DLOC(d), d->nfield - 1,
+               shell ? shell : et->name, nn);
     PetscCall(FieldId(d, 0, "the element id", &id));
     id += IdShift(d, -1, PETSC_FALSE);
     PetscCall(TslDeckGrow(&m->elem_id, sizeof(PetscInt), m->nelem));
@@ -854,7 +865,7 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
       for (PetscInt i = m->elem_ptr[m->nelem]; i < k; i++)
         USER_CHECK(m->elem_conn[i] != m->elem_conn[k],
                    LOC_FMT "element %" PetscInt_FMT " repeats node %" PetscInt_FMT ": collapsed (degenerate) %s elements are not supported", DLOC(d),
-                   id, m->elem_conn[k], et->name);
+                   id, m->elem_conn[k], shell ? shell : et->name);
       k++;
     }
     m->elem_id[m->nelem]           = id;
@@ -933,12 +944,15 @@ static PetscErrorCode KwSet(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Face label "<prefix>1".."<prefix>6" -> 1..6; the bare prefix -> 0 (surface form); anything else -> -1. */
+/* Face label "<prefix>1".."<prefix>6" -> 1..6; the bare prefix -> 0 (surface form); a conventional shell's
+ * sides "<prefix>POS" / "<prefix>NEG" -> TSL_FACE_POS / TSL_FACE_NEG (shell.c maps them); anything else -> -1. */
 static PetscInt FaceLabel(const char *s, char prefix)
 {
   if (toupper((unsigned char)s[0]) != prefix) return -1;
   if (!s[1]) return 0;
   if (s[1] >= '1' && s[1] <= '6' && !s[2]) return s[1] - '0';
+  if (prefix != 'P' && TslDeckNameEqual(s + 1, "POS")) return TSL_FACE_POS;
+  if (prefix != 'P' && TslDeckNameEqual(s + 1, "NEG")) return TSL_FACE_NEG;
   return -1;
 }
 
@@ -984,7 +998,7 @@ static PetscErrorCode KwSurface(Deck *d, const DeckKeyword *kw)
     if (s->kind == TSL_SURFACE_ELEMENT) {
       USER_CHECK(d->nfield == 2, LOC_FMT "element surface data line needs: element or element set, face label (S1..S6)", DLOC(d));
       face = FaceLabel(d->field[1], 'S');
-      USER_CHECK(face > 0, LOC_FMT "bad face label '%s' (expected S1..S6)", DLOC(d), d->field[1]);
+      USER_CHECK(face > 0, LOC_FMT "bad face label '%s' (expected S1..S6, or SPOS / SNEG on shells)", DLOC(d), d->field[1]);
     } else {
       PetscReal w;
       USER_CHECK(d->nfield >= 1 && d->nfield <= 2, LOC_FMT "node surface data line needs: node or node set[, weight]", DLOC(d));
@@ -1169,10 +1183,10 @@ static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
 
 /* *SHELL SECTION for continuum shells (SC8RT, SC6RT): the thickness comes from the nodes, so the data
  * line's thickness is checked and otherwise ignored, as are OFFSET= and NODAL THICKNESS (the dialect ignores
- * them for continuum shells); its second field is the number of Simpson points through the thickness (odd,
- * 3 to 15, default 5). STACK DIRECTION=1, 2 or 3 (the element's own reference direction along the thickness;
- * 3, from face 1 to face 2, by default; not ORIENTATION) and SECTION INTEGRATION=SIMPSON (Gauss is not
- * allowed for coupled shells in the dialect either). */
+ * them for continuum shells). Conventional shells (S8RT, SAX2T) take the data line's thickness and OFFSET=
+ * (SPOS, SNEG or a fraction of the thickness; shell.c accepts -0.5, 0 and 0.5). Its second field is the number of Simpson points through the
+ * thickness (odd, 3 to 15, default 5). STACK DIRECTION=1, 2 or 3 (the element's own reference direction along the thickness; 3, from face 1 to face
+ * 2, by default; not ORIENTATION) and SECTION INTEGRATION=SIMPSON (Gauss is not allowed for coupled shells in the dialect either). */
 static PetscErrorCode KwShellSection(Deck *d, const DeckKeyword *kw)
 {
   TslSection *s;
@@ -1200,12 +1214,30 @@ static PetscErrorCode KwShellSection(Deck *d, const DeckKeyword *kw)
   USER_CHECK(!Param(d, "POISSON"), LOC_FMT "POISSON= is not supported: the thickness behaviour is given by THICKNESS MODULUS=", KLOC(d));
   USER_CHECK(!Param(d, "COMPOSITE"), LOC_FMT "COMPOSITE sections are not supported: one material per *SHELL SECTION", KLOC(d));
   USER_CHECK(!Param(d, "DENSITY"), LOC_FMT "DENSITY= (mass per area added to the shell) is not supported: give the material's *DENSITY", KLOC(d));
+  s->shell_thickness = 1.0;
+  v                  = ParamUpper(d, "OFFSET", buf, sizeof(buf));
+  if (v) {
+    char *end;
+    if (!strcmp(v, "SPOS"))
+      s->shell_offset = 0.5;
+    else if (!strcmp(v, "SNEG"))
+      s->shell_offset = -0.5;
+    else {
+      s->shell_offset = strtod(v, &end);
+      USER_CHECK(v[0] && !*end && (PetscIsNormalReal(s->shell_offset) || s->shell_offset == 0), LOC_FMT "OFFSET=%s: expected SPOS, SNEG or a number",
+                 KLOC(d), v);
+    }
+  }
   PetscCall(DataLine(d, 0, &got));
   if (got) {
     PetscReal t;
     USER_CHECK(d->nfield <= 2, LOC_FMT "*SHELL SECTION data line takes the thickness and the number of integration points", DLOC(d));
     PetscCall(FieldRealDefault(d, 0, "the thickness", 1.0, &t));
     USER_CHECK(t > 0, LOC_FMT "the thickness must be positive", DLOC(d));
+    s->shell_thickness = t;
+  }
+  if (Param(d, "NODAL THICKNESS")) s->shell_thickness = -1; /* conventional shells refuse it (shell.c) */
+  if (got) {
     if (d->nfield > 1 && d->field[1][0]) PetscCall(FieldInt(d, 1, "the number of integration points", &s->shell_points));
     USER_CHECK(s->shell_points >= 3 && s->shell_points <= 15 && s->shell_points % 2 == 1,
                LOC_FMT "the number of integration points through the thickness must be odd, 3 to 15 (Simpson's rule), got %" PetscInt_FMT, DLOC(d),
@@ -2079,8 +2111,11 @@ static PetscErrorCode LoadFace(Deck *d, TslLoad *l, char prefix, PetscBool surfa
   }
   l->face = FaceLabel(f, prefix);
   if (surface_only) USER_CHECK(l->face == 0, LOC_FMT "bad load label '%s' (expected %c with a surface)", DLOC(d), f, prefix);
-  USER_CHECK(l->face >= 0, LOC_FMT "bad load label '%s' (expected %c1..%c6%s, or %c with a surface)", DLOC(d), f, prefix, prefix,
-             body ? " or BF" : "", prefix);
+  USER_CHECK(l->face >= 0, LOC_FMT "bad load label '%s' (expected %c1..%c6%s, or %c with a surface%s)", DLOC(d), f, prefix, prefix,
+             body ? " or BF" : "", prefix,
+             prefix == 'S'   ? ", or SPOS / SNEG on shells"
+             : prefix == 'F' ? ", or FPOS / FNEG on shells"
+                             : "");
   if (l->face == 0) {
     USER_CHECK(l->target.set[0], LOC_FMT "label %c needs a surface name, not an element id", DLOC(d), prefix);
     l->target_is_surface = PETSC_TRUE;
@@ -2920,6 +2955,7 @@ PetscErrorCode TslDeckRead(const char *path, TslModel **model)
   ierr = DeckParse(&d, path);
   if (!ierr) ierr = DeckModelLoads(&d);
   if (!ierr) ierr = DeckCheckDuplicateNodes(&d);
+  if (!ierr) ierr = TslDeckExpandShells(d.m);
   if (!ierr) ierr = TslModelCheck(d.m);
   PetscCall(DeckFree(&d));
   if (ierr) PetscCall(TslModelDestroy(&d.m));

@@ -15,3 +15,11 @@ PetscBool TslDeckNameEqual(const char *a, const char *b);
 /* Grows *ptr (elements of size sz) so that it can hold n+1 elements when it currently holds n. Arrays grown
  * this way have capacity max(8, next power of two >= n), so no capacity needs storing. New memory is zeroed. */
 PetscErrorCode TslDeckGrow(void *ptr, size_t sz, PetscInt n);
+
+/* Conventional shells (shell.c). TslDeckShellType: for a shell type name (S8RT, SAX2T, or CalculiX's S8R, SAX2)
+ * *shell its name, *type the catalogue type it is expanded into, *nnode its own node count and *what the two
+ * elements it becomes (for the log); *shell NULL for
+ * any other name. TslDeckExpandShells: each shell element read (fewer nodes than its type) expanded into two
+ * elements through its thickness, with its faces, sets and node conditions (before TslModelCheck). */
+PetscErrorCode TslDeckShellType(const char *name, const char **shell, PetscInt *type, PetscInt *nnode, const char **what);
+PetscErrorCode TslDeckExpandShells(TslModel *model);

@@ -69,6 +69,7 @@ static const TslElementType Catalogue[] = {
     {"C3D10MT", &TslGeomTet10,  &TslFormModified,       SOLID,        "10-node modified second-order tetrahedron"},
     {"C3D20T",  &TslGeomHex20,  &TslFormFull,           SOLID,        "20-node brick"},
     {"C3D20RT", &TslGeomHex20,  &TslFormReducedQuadratic, SOLID,      "20-node brick, reduced integration"},
+    {"S8RT",    &TslGeomHex20,  &TslFormReducedQuadraticShell, SOLID, "8-node shell expanded: a 20-node brick through half its thickness, reduced integration, pressure on linear sub-faces"},
     {"SC6RT",   &TslGeomWedge6, &TslFormContinuumShell, CSHELL,       "6-node triangular in-plane continuum shell, reduced integration"},
     {"SC8RT",   &TslGeomHex8,   &TslFormContinuumShell, CSHELL,       "8-node hexahedral continuum shell, reduced integration, hourglass control"},
 };

@@ -337,6 +337,11 @@ const TslFormulation TslFormReduced = {
 /* Reduced integration of a second-order brick (C3D20RT: 2 x 2 x 2): no hourglass control, as in the dialect (its
  * one spurious mode does not propagate through a mesh). */
 const TslFormulation TslFormReducedQuadratic = {"reduced integration", ReducedRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
+/* the expanded S8RT (src/deck/shell.c): C3D20RT with its pressure on the faces' linear pieces (quad8: six tri3),
+ * as the modified types take theirs: the serendipity face's consistent corner weights (-A/12) lift a thin
+ * shell's corners off a contact surface under pressure */
+const TslFormulation TslFormReducedQuadraticShell = {
+    "reduced integration, pressure on linear sub-faces", ReducedRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn};
 const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
 const TslFormulation TslFormReducedHybrid = {
     "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};

@@ -400,8 +400,13 @@ const TslGeometry TslGeomQuad8 = {
     .ref_volume = 4,
     .full       = QUAD_QUAD_9,
     .reduced    = QUAD_QUAD_4,
-    .as_face    = QUAD_QUAD_9, /* the faces of hex20: N_a N_b is of degree 4 in each direction */
-    .xdmf_type  = 37,          /* Quadrilateral_8 */
+    /* as a face with positive pressure weights (the expanded S8RT's FaceRuleSub): no centre node, so the four
+     * corner triangles and the quad of the midside nodes cut along m0-m2 (six tri3) */
+    .nsub      = 6,
+    .sub_geom  = &TslGeomTri3,
+    .sub_node  = {{0, 4, 7}, {1, 5, 4}, {2, 6, 5}, {3, 7, 6}, {4, 5, 6}, {4, 6, 7}},
+    .as_face   = QUAD_QUAD_9, /* the faces of hex20: N_a N_b is of degree 4 in each direction */
+    .xdmf_type = 37,          /* Quadrilateral_8 */
 };
 
 /* Faces (outward): S1 1-3-2, S2 1-2-4, S3 2-3-4, S4 3-1-4. */

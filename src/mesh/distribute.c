@@ -433,6 +433,43 @@ static PetscErrorCode ContactFace(const TslModel *g, const TslContactPair *c, Pe
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A quad8 face (C3D20T, C3D20RT, the expanded S8RT) as contact pieces, contact having no quad8 family: its four
+ * corner triangles and the quad of its midside nodes (tris: that quad cut along the diagonal of its first and
+ * third node, for the one family a surface-to-surface secondary surface takes). The pieces carry positive
+ * weights: the serendipity functions' corner weights are negative (-A/12), which loads the corners against a
+ * contact pressure (Abaqus advises against C3D20 faces in contact for this reason). Piece nodes in the face's
+ * order (corners 0..3, then the midsides of edges 0-1, 1-2, 2-3, 3-0), so each piece faces as the face. */
+static const PetscInt Quad8Pieces[6][4] = {{0, 4, 7, -1}, {1, 5, 4, -1}, {2, 6, 5, -1}, {3, 7, 6, -1}, {4, 5, 6, 7}, {4, 6, 7, -1}};
+
+static PetscBool IsQuad8Face(const TslModel *g, PetscInt e, PetscInt f)
+{
+  const TslGeometry *fg = TslElementTypeGet(g->elem_type[e])->geom->face_geom[f - 1];
+  return (PetscBool)(g->dim == 3 && fg && fg->nnode == 8);
+}
+
+static PetscErrorCode Quad8Parts(const TslModel *g, PetscInt e, PetscInt f, PetscBool tris, PetscInt *np, PetscInt nodes[][TSL_MAX_FACE_NODES],
+                                 PetscInt nf[], PetscReal x[][3 * TSL_MAX_FACE_NODES], PetscInt family[])
+{
+  PetscInt       n[TSL_MAX_FACE_NODES];
+  const PetscInt tri = TslContactFace3Find("tri3"), quad = TslContactFace3Find("quad4");
+
+  PetscFunctionBeginUser;
+  (void)FaceNodes(g, e, f, n);
+  *np = tris ? 6 : 5;
+  for (PetscInt s = 0; s < *np; s++) {
+    const PetscInt *piece  = Quad8Pieces[s == 4 && tris ? 5 : s];
+    PetscInt        cut[3] = {4, 5, 6};
+    const PetscInt *v      = s == 4 && tris ? cut : piece;
+    nf[s]                  = v == cut || piece[3] < 0 ? 3 : 4;
+    family[s]              = nf[s] == 3 ? tri : quad;
+    for (PetscInt a = 0; a < nf[s]; a++) {
+      nodes[s][a] = n[v[a]];
+      for (PetscInt d = 0; d < 3; d++) x[s][3 * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, n[v[a]]) + d];
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The contact faces of main-surface face f (1-based) of element e: the face itself or, where the element's
  * type takes pressure on the face's linear subdivision (the modified types' tri6 faces: 4 tri3), its
  * sub-faces, each with its own nodes (corner and midside nodes of the parent), coordinates and family, in
@@ -449,6 +486,10 @@ static PetscErrorCode MainFaceParts(const TslModel *g, const TslContactPair *c, 
   PetscReal             px[3 * TSL_MAX_FACE_NODES];
 
   PetscFunctionBeginUser;
+  if (IsQuad8Face(g, e, f)) {
+    PetscCall(Quad8Parts(g, e, f, PETSC_FALSE, np, nodes, nf, x, family));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCall(ContactFace(g, c, e, f, pn, &pnf, px, &pfam));
   if (g->dim != 3 || !TslElementTypeSubdividedFace(t, f - 1)) {
     *np = 1, nf[0] = pnf, family[0] = pfam;
@@ -535,29 +576,47 @@ static PetscErrorCode SurfaceToSurfaceFaces(const TslModel *g, TslContactPair *c
   PetscBool overlap = PETSC_FALSE;
   char      loc[PETSC_MAX_PATH_LEN + 32];
 
+  PetscInt  np, pnf[TSL_MAX_SUB], pfam[TSL_MAX_SUB], pnodes[TSL_MAX_SUB][TSL_MAX_FACE_NODES], k = 0;
+  PetscReal px[TSL_MAX_SUB][3 * TSL_MAX_FACE_NODES];
+
   PetscFunctionBeginUser;
   c->nsec       = 0;
-  c->nsface     = sec->n;
+  c->nsface     = 0;
   c->sface_kind = TSL_CONTACT_FACE_LINE2;
-  if (sec->n) PetscCall(ContactFace(g, c, TslModelElementIndex(g, sec->elem[0]), sec->face[0], nodes, &nf, x, &c->sface_kind));
+  /* the faces, a quad8 face as its six triangles (Quad8Parts) */
+  for (PetscInt i = 0; i < sec->n; i++) c->nsface += IsQuad8Face(g, TslModelElementIndex(g, sec->elem[i]), sec->face[i]) ? 6 : 1;
+  if (sec->n && IsQuad8Face(g, TslModelElementIndex(g, sec->elem[0]), sec->face[0]))
+    c->sface_kind = TslContactFace3Find("tri3");
+  else if (sec->n)
+    PetscCall(ContactFace(g, c, TslModelElementIndex(g, sec->elem[0]), sec->face[0], nodes, &nf, x, &c->sface_kind));
   c->snper = g->dim == 3 ? TslContactFace3Nodes(c->sface_kind) : TslContactFaceGet((TslContactFaceKind)c->sface_kind)->geom->nnode;
   PetscCall(PetscMalloc1(c->snper * c->nsface, &c->sface_node));
   PetscCall(PetscMalloc1(c->nsface, &c->sface_asm));
   for (PetscInt i = 0; i < sec->n; i++) {
-    PetscCall(ContactFace(g, c, TslModelElementIndex(g, sec->elem[i]), sec->face[i], nodes, &nf, x, &family));
-    PetscCheck(family == c->sface_kind, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-               "%s: the secondary surface %s mixes face families: surface-to-surface contact needs one per surface", TslLocString(g, c->loc, loc, sizeof(loc)),
-               c->secondary);
-    for (PetscInt a = 0; a < nf; a++) c->sface_node[c->snper * i + a] = nodes[a];
-    c->sface_asm[i] = 1;
-    for (PetscInt j = 0; j < c->nmain && !overlap; j++) {
-      if (g->dim == 3) {
-        PetscCall(FacesOverlap3(g, c, family, x, j, &overlap));
-        continue;
+    const PetscInt e = TslModelElementIndex(g, sec->elem[i]);
+    if (IsQuad8Face(g, e, sec->face[i]))
+      PetscCall(Quad8Parts(g, e, sec->face[i], PETSC_TRUE, &np, pnodes, pnf, px, pfam));
+    else {
+      PetscCall(ContactFace(g, c, e, sec->face[i], nodes, &nf, x, &family));
+      np = 1, pnf[0] = nf, pfam[0] = family;
+      for (PetscInt a = 0; a < nf; a++) pnodes[0][a] = nodes[a];
+      for (PetscInt a = 0; a < 3 * nf; a++) px[0][a] = x[a];
+    }
+    for (PetscInt s = 0; s < np; s++, k++) {
+      PetscCheck(pfam[s] == c->sface_kind, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+                 "%s: the secondary surface %s mixes face families: surface-to-surface contact needs one per surface",
+                 TslLocString(g, c->loc, loc, sizeof(loc)), c->secondary);
+      for (PetscInt a = 0; a < pnf[s]; a++) c->sface_node[c->snper * k + a] = pnodes[s][a];
+      c->sface_asm[k] = 1;
+      for (PetscInt j = 0; j < c->nmain && !overlap; j++) {
+        if (g->dim == 3) {
+          PetscCall(FacesOverlap3(g, c, pfam[s], px[s], j, &overlap));
+          continue;
+        }
+        for (PetscInt a = 0; a < 2; a++)
+          for (PetscInt d = 0; d < 2; d++) y[2 * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, c->main_node[c->nper * j + a]) + d];
+        overlap = FacesOverlap(px[s], y);
       }
-      for (PetscInt a = 0; a < 2; a++)
-        for (PetscInt d = 0; d < 2; d++) y[2 * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, c->main_node[c->nper * j + a]) + d];
-      overlap = FacesOverlap(x, y);
     }
   }
   PetscCheck(overlap, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
@@ -621,6 +680,15 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
         for (PetscInt a = 0; a < c->nper; a++) c->main_node[c->nper * j + a] = a < pnf[s] ? pnodes[s][a] : -1;
         c->main_prev[j] = c->main_next[j] = -1;
       }
+      if (IsQuad8Face(g, e, main->face[i])) { /* its pieces' areas */
+        PetscReal A = 0;
+        for (PetscInt s = 0; s < np; s++) {
+          PetscCall(FaceWeights(dim, pfam[s], px[s], w, &L));
+          A += L;
+        }
+        Lsum += PetscSqrtReal(A);
+        continue;
+      }
       PetscCall(ContactFace(g, c, e, main->face[i], nodes, &nf, x, &family));
       PetscCall(FaceWeights(dim, family, x, w, &L));
       Lsum += dim == 2 ? L : PetscSqrtReal(L);
@@ -655,8 +723,24 @@ static PetscErrorCode PrepareContactPairs(TslModel *g)
     } else {
       PetscCall(PetscMalloc1(TSL_MAX_FACE_NODES * sec->n, &c->sec_node));
       PetscCall(PetscMalloc1(TSL_MAX_FACE_NODES * sec->n, &c->sec_length));
+      PetscInt nq8 = 0;
+      for (PetscInt i = 0; i < sec->n; i++) nq8 += IsQuad8Face(g, TslModelElementIndex(g, sec->elem[i]), sec->face[i]) ? 1 : 0;
+      if (nq8) { /* a quad8 face's pieces give up to 15 (node, weight) entries, merged below */
+        PetscCall(PetscRealloc(sizeof(PetscInt) * (TSL_MAX_FACE_NODES * sec->n + 8 * nq8), &c->sec_node));
+        PetscCall(PetscRealloc(sizeof(PetscReal) * (TSL_MAX_FACE_NODES * sec->n + 8 * nq8), &c->sec_length));
+      }
       for (PetscInt i = 0; i < sec->n; i++) {
-        PetscCall(ContactFace(g, c, TslModelElementIndex(g, sec->elem[i]), sec->face[i], nodes, &nf, x, &family));
+        const PetscInt ei = TslModelElementIndex(g, sec->elem[i]);
+        if (IsQuad8Face(g, ei, sec->face[i])) {
+          PetscCall(Quad8Parts(g, ei, sec->face[i], PETSC_FALSE, &np, pnodes, pnf, px, pfam));
+          for (PetscInt s = 0; s < np; s++) {
+            PetscCall(FaceWeights(dim, pfam[s], px[s], w, NULL));
+            for (PetscInt a = 0; a < pnf[s]; a++) c->sec_node[nsec] = pnodes[s][a], c->sec_length[nsec++] = w[a];
+          }
+          if (i == 0) e0 = sec->elem[i];
+          continue;
+        }
+        PetscCall(ContactFace(g, c, ei, sec->face[i], nodes, &nf, x, &family));
         PetscCall(FaceWeights(dim, family, x, w, NULL));
         if (dim == 2 && nf == 2 && TslKinematicsRevolves(TslElementTypeGet(g->elem_type[TslModelElementIndex(g, sec->elem[i])])->kin))
           AxisymmetricLine2Weights(x, w);

@@ -31,7 +31,9 @@ for f in $decks; do
   elif [ $rc -ne 0 ] && [ $rc -lt 124 ] && echo "$err" | grep -qE "^thermoslide: error: [^ ]+:[0-9]+: "; then
     outcome=refused
   elif [ $rc -ne 0 ] && [ $rc -lt 124 ] && echo "$err" | grep -qE "^thermoslide: error: step [0-9]+: " &&
-    grep -qE "^results up to step [0-9]+ increment [0-9]+ are saved in " "$b.log"; then
+    grep -qE "^(results up to step [0-9]+ increment [0-9]+ are saved in |no increment converged: nothing was written)" "$b.log"; then
+    # stopped in a step with its message: the converged increments saved, or none converged (nothing to save,
+    # nothing overwritten)
     outcome=stopped
   else
     outcome="FAIL (exit $rc)"
@@ -44,5 +46,5 @@ echo
 echo "first errors (type of each refusal):"
 sed -n 's/^[^:]*: refused: thermoslide: error: [^ ]*:[0-9]*: //p' outcomes.txt | cut -c1-90 | sort | uniq -c | sort -rn | head -30
 echo
-echo "$n CalculiX test decks on $np rank(s): $(grep -c ': completed:' outcomes.txt) completed, $(grep -c ': refused:' outcomes.txt) refused at a file:line, $(grep -c ': stopped:' outcomes.txt) stopped in a step with the results saved, $(grep -c ': FAIL' outcomes.txt) failed"
+echo "$n CalculiX test decks on $np rank(s): $(grep -c ': completed:' outcomes.txt) completed, $(grep -c ': refused:' outcomes.txt) refused at a file:line, $(grep -c ': stopped:' outcomes.txt) stopped in a step with the results saved (or none converged), $(grep -c ': FAIL' outcomes.txt) failed"
 [ "$n" -gt 0 ] && ! grep -q ": FAIL" outcomes.txt && echo PASS

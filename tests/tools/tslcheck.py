@@ -65,6 +65,10 @@ def face_shape(n, a, b):
     return np.array(N), np.array(dN)
 
 
+# edges of a hex20 (its nodes 9..20 are the midsides of these, in this order; XDMF's order is the same)
+HEX20_EDGES = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
+
+
 def plane_faces(r, which, y0, faces_3d, tet10_edges):
     """3D: the element faces on the plane y = y0 (reference) of the elements whose first node is in the mask
     `which`, as natural node indices in the catalogue's face order (corners, then midsides); faces_3d and
@@ -74,21 +78,30 @@ def plane_faces(r, which, y0, faces_3d, tet10_edges):
         conn = list(conn)
         if not which[conn[0]]:
             continue
-        shape = {8: "hex", 6: "wedge", 4: "tet", 10: "tet"}[len(conn)]
+        shape = {8: "hex", 20: "hex", 6: "wedge", 4: "tet", 10: "tet"}[len(conn)]
         for corners in faces_3d[shape]:
             if all(abs(r.xyz[conn[c], 1] - y0) < 1e-9 for c in corners):
                 face = [conn[c] for c in corners]
-                if len(conn) == 10:  # tet10: the midside nodes of the face's edges
-                    edge = {frozenset(e): 4 + k for k, e in enumerate(tet10_edges)}
-                    face += [conn[edge[frozenset((corners[k], corners[(k + 1) % 3]))]] for k in range(3)]
+                if len(conn) in (10, 20):  # tet10, hex20: the midside nodes of the face's edges
+                    edges = tet10_edges if len(conn) == 10 else HEX20_EDGES
+                    first = 4 if len(conn) == 10 else 8
+                    edge = {frozenset(e): first + k for k, e in enumerate(edges)}
+                    face += [conn[edge[frozenset((corners[k], corners[(k + 1) % len(corners)]))]] for k in range(len(corners))]
                 out.append(face)
     return out
 
 
 def contact_faces(faces):
     """A main surface's faces as contact sees them: a tri6 face (C3D10MT) is its four tri3 sub-faces, as its
-    pressure loads are (docs/contact.md, "3D pairs")."""
-    return [g for f in faces for g in ([[f[0], f[3], f[5]], [f[3], f[1], f[4]], [f[5], f[4], f[2]], [f[3], f[4], f[5]]] if len(f) == 6 else [f])]
+    pressure loads are; a quad8 face (C3D20RT, the expanded S8RT) its four corner triangles and the quad of its
+    midside nodes (docs/contact.md, "3D pairs", "Quad8 faces")."""
+    def pieces(f):
+        if len(f) == 6:
+            return [[f[0], f[3], f[5]], [f[3], f[1], f[4]], [f[5], f[4], f[2]], [f[3], f[4], f[5]]]
+        if len(f) == 8:
+            return [[f[0], f[4], f[7]], [f[1], f[5], f[4]], [f[2], f[6], f[5]], [f[3], f[7], f[6]], [f[4], f[5], f[6], f[7]]]
+        return [f]
+    return [g for f in faces for g in pieces(f)]
 
 
 def locate(faces, xz, p):
