@@ -778,10 +778,10 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscCall(SetIncrement(d, step, t + h, h, *total_time + h));
     PetscCall(TslProblemApplyPrescribed(d->prob, X));
     PetscCall(SolveIncrement(d, X, &reason, &its, &lits));
-    PetscCheck(!d->stop, d->comm, PETSC_ERR_SIG,
-               "step %" PetscInt_FMT ": %s received at step time %g, in increment %" PetscInt_FMT
-               "; the last converged state (step time %g) is saved",
-               s + 1, TslStopName(d->stop), (double)(t + h), inc + 1, (double)t);
+    PetscCheck(!d->stop, d->comm, PETSC_ERR_SIG, "step %" PetscInt_FMT ": %s received at step time %g, in increment %" PetscInt_FMT "; %s%g%s", s + 1,
+               TslStopName(d->stop), (double)(t + h), inc + 1,
+               d->done_inc ? "the last converged state (step time " : "no increment has converged (step time ", (double)t,
+               d->done_inc ? ") is saved" : "): there is no state to save");
     if (s + 1 == d->debug_diverge_step) reason = SNES_DIVERGED_FUNCTION_DOMAIN;
     accept = (PetscBool)(reason > 0);
     if (accept && !step->steady && step->deltmx > 0) {
@@ -820,8 +820,9 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
                  "step %" PetscInt_FMT ": increment %" PetscInt_FMT " did not converge (%s) and DIRECT forbids a cutback", s + 1, inc + 1, why);
       dt = h * f;
       PetscCheck(dt >= step->dtmin * (1 - 1e-12), d->comm, PETSC_ERR_NOT_CONVERGED,
-                 "step %" PetscInt_FMT ": the increment fell below the minimum %g at step time %g; the last converged state (step time %g) is saved",
-                 s + 1, (double)step->dtmin, (double)t, (double)t);
+                 "step %" PetscInt_FMT ": the increment fell below the minimum %g at step time %g; %s%g%s", s + 1, (double)step->dtmin, (double)t,
+                 d->done_inc ? "the last converged state (step time " : "no increment has converged (step time ", (double)t,
+                 d->done_inc ? ") is saved" : "): there is no state to save");
       continue;
     }
     t = last ? step->period : t + h;
