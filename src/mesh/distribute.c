@@ -434,12 +434,13 @@ static PetscErrorCode ContactFace(const TslModel *g, const TslContactPair *c, Pe
 }
 
 /* A quad8 face (C3D20T, C3D20RT, the expanded S8RT) as contact pieces, contact having no quad8 family: its four
- * corner triangles and the quad of its midside nodes (tris: that quad cut along the diagonal of its first and
- * third node, for the one family a surface-to-surface secondary surface takes). The pieces carry positive
- * weights: the serendipity functions' corner weights are negative (-A/12), which loads the corners against a
- * contact pressure (Abaqus advises against C3D20 faces in contact for this reason). Piece nodes in the face's
- * order (corners 0..3, then the midsides of edges 0-1, 1-2, 2-3, 3-0), so each piece faces as the face. */
-static const PetscInt Quad8Pieces[6][4] = {{0, 4, 7, -1}, {1, 5, 4, -1}, {2, 6, 5, -1}, {3, 7, 6, -1}, {4, 5, 6, 7}, {4, 6, 7, -1}};
+ * corner triangles and the quad of its midside nodes, whose tributary weights are symmetric (A/24 per corner,
+ * 5A/24 per midside node of a flat face) and positive: the serendipity functions' corner weights are negative
+ * (-A/12), which loads the corners against a contact pressure. With tris, for the one family a surface-to-surface
+ * secondary surface takes, the catalogue's linear subdivision of the face instead (TslGeomQuad8's six tri3, as
+ * the expanded S8RT takes its pressure). Piece nodes in the face's order (corners 0..3, then the midsides of
+ * edges 0-1, 1-2, 2-3, 3-0), so each piece faces as the face. */
+static const PetscInt Quad8Pieces[5][4] = {{0, 4, 7, -1}, {1, 5, 4, -1}, {2, 6, 5, -1}, {3, 7, 6, -1}, {4, 5, 6, 7}};
 
 static PetscBool IsQuad8Face(const TslModel *g, PetscInt e, PetscInt f)
 {
@@ -450,18 +451,17 @@ static PetscBool IsQuad8Face(const TslModel *g, PetscInt e, PetscInt f)
 static PetscErrorCode Quad8Parts(const TslModel *g, PetscInt e, PetscInt f, PetscBool tris, PetscInt *np, PetscInt nodes[][TSL_MAX_FACE_NODES],
                                  PetscInt nf[], PetscReal x[][3 * TSL_MAX_FACE_NODES], PetscInt family[])
 {
-  PetscInt       n[TSL_MAX_FACE_NODES];
-  const PetscInt tri = TslContactFace3Find("tri3"), quad = TslContactFace3Find("quad4");
+  const TslGeometry *fg = TslElementTypeGet(g->elem_type[e])->geom->face_geom[f - 1];
+  PetscInt           n[TSL_MAX_FACE_NODES];
+  const PetscInt     tri = TslContactFace3Find("tri3"), quad = TslContactFace3Find("quad4");
 
   PetscFunctionBeginUser;
   (void)FaceNodes(g, e, f, n);
-  *np = tris ? 6 : 5;
+  *np = tris ? fg->nsub : 5;
   for (PetscInt s = 0; s < *np; s++) {
-    const PetscInt *piece  = Quad8Pieces[s == 4 && tris ? 5 : s];
-    PetscInt        cut[3] = {4, 5, 6};
-    const PetscInt *v      = s == 4 && tris ? cut : piece;
-    nf[s]                  = v == cut || piece[3] < 0 ? 3 : 4;
-    family[s]              = nf[s] == 3 ? tri : quad;
+    const PetscInt *v = tris ? fg->sub_node[s] : Quad8Pieces[s];
+    nf[s]             = tris || v[3] < 0 ? 3 : 4;
+    family[s]         = nf[s] == 3 ? tri : quad;
     for (PetscInt a = 0; a < nf[s]; a++) {
       nodes[s][a] = n[v[a]];
       for (PetscInt d = 0; d < 3; d++) x[s][3 * a + d] = g->node_xyz[3 * TslModelNodeIndex(g, n[v[a]]) + d];
@@ -584,7 +584,12 @@ static PetscErrorCode SurfaceToSurfaceFaces(const TslModel *g, TslContactPair *c
   c->nsface     = 0;
   c->sface_kind = TSL_CONTACT_FACE_LINE2;
   /* the faces, a quad8 face as its six triangles (Quad8Parts) */
-  for (PetscInt i = 0; i < sec->n; i++) c->nsface += IsQuad8Face(g, TslModelElementIndex(g, sec->elem[i]), sec->face[i]) ? 6 : 1;
+  for (PetscInt i = 0; i < sec->n; i++) {
+    const PetscInt e = TslModelElementIndex(g, sec->elem[i]);
+    np               = 1;
+    if (IsQuad8Face(g, e, sec->face[i])) PetscCall(Quad8Parts(g, e, sec->face[i], PETSC_TRUE, &np, pnodes, pnf, px, pfam));
+    c->nsface += np;
+  }
   if (sec->n && IsQuad8Face(g, TslModelElementIndex(g, sec->elem[0]), sec->face[0]))
     c->sface_kind = TslContactFace3Find("tri3");
   else if (sec->n)
