@@ -20,6 +20,8 @@ fail=0
 for spec in beam8p:1e-6 beam8t:1e-6 beam20p:1e-6 beamt:1e-6 planestrain:1e-6 planestrain2:1e-6 contactenergy:1e-6 contact3:1e-2 contact6:1e-2 cubespring:1e-2 \
   hueeber2:1e-2 hueeber4:1e-2 ring1:1e-2 ring2:1e-2 solidshell1:1e-6; do
   b=${spec%%:*} tol=${spec#*:}
+  # on 2 ranks hueeber2 (hard contact, 15 s) is left to the 1-rank run; hueeber4 is the same two cubes, soft
+  [ "$np" != 1 ] && [ "$b" = hueeber2 ] && continue
   get "$b.inp" > "$out/$b.inp" && get "$b.dat.ref" > "$out/$b.dat.ref" || { echo "FAIL: $b not in the package"; fail=1; continue; }
   if ! (cd "$out" && timeout 300 $mpiexec -n "$np" "$exe" "$b.inp" -o "run_$b" > "$b.log" 2>&1); then
     tail -5 "$out/$b.log"
