@@ -7,6 +7,9 @@ plate_s8rt, plate_moved_s8rt  flux q = 100 in through SPOS, film h = 10 (sink 0)
                               area 2: heat 200 in and out; the temperature linear through the thickness from
                               q / h = 10 on SNEG to 10 + q t / k = 15 on SPOS (1e-9; moved: 1e-7); 12.5 on the
                               deck's (mid-surface) nodes; every node on the plane of its level (1e-9)
+plate_mm_s8rt                 plate_s8rt moved by (2e6, 1e6) and re-expressed in kN and mm (transform_deck.py
+                              2000000 1000000 1000: the thickness 500, k / 1000, q and h / 1e6): the same
+                              temperatures and heat (1e-9), the levels at 1000 times their heights
 plate_labels_s8rt             the same by element labels, and a pressure 1000 on the shells (*DLOAD P): the
                               reaction along y 2000 (1e-9 relative)
 plate_spos_s8rt               the same with the deck's nodes on SPOS: 15 there, the plate below them
@@ -48,6 +51,8 @@ def plate(r, job):
         h = (xyz - c) @ normal
         if np.corrcoef(h, nt)[0, 1] < 0:
             h = -h
+    elif "mm" in job:  # moved along y by 1e6 (in mm) and 1000 times larger: back to the plate's frame in m
+        h = (xyz[:, 1] - 1.0e6) / 1000.0
     else:
         h = xyz[:, 1]
     spos = "spos" in job

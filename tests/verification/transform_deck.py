@@ -11,7 +11,7 @@ multiplied by SCALE. With s = SCALE the other quantities convert as
   length, displacement, thickness, clearance        * s
   force (*CLOAD)                                   / s        (kN = 1000 N)
   stress, pressure (*ELASTIC E, *DLOAD P, k(p) args) / s^3    (kN/mm^2 = 1e9 Pa)
-  heat flux per area (*DFLUX S), film and gap
+  heat flux per area (*DFLUX S, *DSFLUX), film (*FILM, *SFILM) and gap
   conductance (per area and degree), sigma          / s^2      (W/mm^2 = 1e6 W/m^2)
   conductivity (W per length and degree)            / s
   density                                           / s^5      (mass unit kN s^2/mm = 1e6 kg)
@@ -77,6 +77,10 @@ def convert(keyword, options, fields, s, dx, dy):
     elif keyword == "*DFLUX":
         f[2] = num(float(f[2]) / s**2)
     elif keyword == "*FILM":
+        f[3] = num(float(f[3]) / s**2)
+    elif keyword == "*DSFLUX":  # surface, S, flux per area
+        f[2] = num(float(f[2]) / s**2)
+    elif keyword == "*SFILM":  # surface, F, sink temperature, film coefficient
         f[3] = num(float(f[3]) / s**2)
     elif keyword == "*CFLUX":
         pass
