@@ -179,8 +179,11 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
     x->eta[e]  = x->step->bv_linear * (dm < PETSC_MAX_REAL ? dm : 0);
     x->eta2[e] = dm < PETSC_MAX_REAL ? PetscSqr(x->step->bv_quadratic * dm) : 0;
     dm *= BulkViscosityFactor(x->step->bv_linear);
-    if (dm < loc[0].v) loc[0].v = dm, loc[0].id = (int)x->m->elem_id[e];
-    if (x->dt_heat[e] < loc[1].v) loc[1].v = x->dt_heat[e], loc[1].id = (int)x->m->elem_id[e];
+    /* ties (copies of one element share their increments bit for bit: dynamics.c) go to the smallest id, as
+     * MINLOC's across the ranks, so the log names the same element on any number of ranks */
+    const int id = (int)x->m->elem_id[e];
+    if (dm < loc[0].v || (dm == loc[0].v && id < loc[0].id)) loc[0].v = dm, loc[0].id = id;
+    if (x->dt_heat[e] < loc[1].v || (x->dt_heat[e] == loc[1].v && id < loc[1].id)) loc[1].v = x->dt_heat[e], loc[1].id = id;
   }
   PetscCallMPI(MPI_Allreduce(loc, g, 2, MPI_DOUBLE_INT, MPI_MINLOC, x->comm));
   x->lim_mech  = g[0].v;
