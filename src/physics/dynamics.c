@@ -648,10 +648,11 @@ static void LargestEigenvalue(PetscInt n, const PetscInt idx[], const PetscReal 
  * increments of the distinct elements it has met (StableCache) under a key of everything they depend on:
  * the type, the section's material and dimensions, which dofs are prescribed, the shape, and the nodal
  * temperatures where a property of the material depends on temperature. Displacements do not enter the
- * kinematics (small strain), nor does the position, except in an axisymmetric model (the radius).
+ * kinematics (small strain), nor does the position, except in an axisymmetric model (the radius) and for a
+ * type with an extra node (the generalized plane strain's reference node, kept where it is).
  *
  * The shape is the nodes' positions relative to the first node on a grid of 2^-40 of the element's size (a
- * power of two L >= its extent: x_a - x_0 = q_a L 2^-40, q_a integers), so that copies of an element whose
+ * power of two L >= the extent of its shape's nodes: x_a - x_0 = q_a L 2^-40, q_a integers), so that copies of an element whose
  * coordinates differ by rounding share a key. Every element's increment, cached or not, is computed on
  * that grid and its eigenvalue raised by 1e-8: the result depends only on the element's own key (the same
  * on any number of ranks), and the grid moves a node by at most 1e-12 of the element's extent, whose effect
@@ -698,13 +699,15 @@ static PetscBool TemperatureDependent(const TslMaterial *mat)
 static PetscInt StableKey(TslProblem p, PetscInt e, const TslElemData *d, PetscInt64 key[], PetscReal x[], PetscReal u[], PetscReal ti[],
                           TslElementInput *in)
 {
-  const TslElementSection *sec     = d->in.sec;
-  const PetscBool          revolve = TslKinematicsRevolves(d->in.type->kin), tdep = TemperatureDependent(sec->mat);
-  const PetscInt           th = p->ndof - 1;
-  PetscReal lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL, -PETSC_MAX_REAL}, extent = 0;
-  PetscInt  n = 0, ex;
+  const TslElementSection *sec = d->in.sec;
+  const PetscInt           ng  = d->in.type->geom->nnode; /* the nodes of the shape; after them a type's extra (reference) nodes */
+  /* the position itself: the radius of an axisymmetric model, and the frame of an extra node (its own, exact) */
+  const PetscBool absolute = (PetscBool)(TslKinematicsRevolves(d->in.type->kin) || d->n > ng), tdep = TemperatureDependent(sec->mat);
+  const PetscInt  th    = p->ndof - 1;
+  PetscReal       lo[3] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL}, hi[3] = {-PETSC_MAX_REAL, -PETSC_MAX_REAL, -PETSC_MAX_REAL}, extent = 0;
+  PetscInt        n = 0, ex;
 
-  for (PetscInt a = 0; a < d->n; a++)
+  for (PetscInt a = 0; a < ng; a++)
     for (PetscInt c = 0; c < 3; c++) lo[c] = PetscMin(lo[c], d->x[3 * a + c]), hi[c] = PetscMax(hi[c], d->x[3 * a + c]);
   for (PetscInt c = 0; c < 3; c++) extent = PetscMax(extent, hi[c] - lo[c]);
   if (!(extent > 0) || extent >= PETSC_MAX_REAL) return 0;
@@ -717,7 +720,7 @@ static PetscInt StableKey(TslProblem p, PetscInt e, const TslElemData *d, PetscI
   key[n++] = sec->shell_stack;
   key[n++] = ex;
   key[n++] = d->n;
-  for (PetscInt c = 0; c < 3; c++) key[n++] = revolve ? Bits(d->x[c]) : 0;
+  for (PetscInt c = 0; c < 3; c++) key[n++] = absolute ? Bits(d->x[c]) : 0;
   for (PetscInt w = 0; w * 64 < d->nd; w++) { /* the prescribed dofs, a bit each */
     PetscInt64 bits = 0;
     for (PetscInt r = w * 64; r < PetscMin(d->nd, (w + 1) * 64); r++)
@@ -726,9 +729,14 @@ static PetscInt StableKey(TslProblem p, PetscInt e, const TslElemData *d, PetscI
   }
   for (PetscInt a = 0; a < d->n; a++)
     for (PetscInt c = 0; c < 3; c++) {
+      if (a >= ng) { /* an extra node: where it is */
+        key[n++]     = Bits(d->x[3 * a + c]);
+        x[3 * a + c] = d->x[3 * a + c];
+        continue;
+      }
       const PetscReal q = nearbyint(ldexp(d->x[3 * a + c] - d->x[c], 40 - ex)); /* exact: a power-of-two scale */
       key[n++]          = (PetscInt64)q;
-      x[3 * a + c]      = (revolve ? d->x[c] : 0) + ldexp(q, ex - 40);
+      x[3 * a + c]      = (absolute ? d->x[c] : 0) + ldexp(q, ex - 40);
     }
   for (PetscInt a = 0; a < d->n; a++) {
     for (PetscInt i = 0; i < p->ndof; i++) u[a * p->ndof + i] = 0;
