@@ -93,6 +93,14 @@ typedef struct {
   TslLoc    loc;
 } TslInitialTemperature;
 
+/* *NODAL THICKNESS: the thickness at a node or node set, for the conventional shells whose *SHELL SECTION
+ * has NODAL THICKNESS. Used when the shells are expanded (shell.c) and dropped there: never distributed. */
+typedef struct {
+  TslTarget target; /* node or node set */
+  PetscReal value;
+  TslLoc    loc;
+} TslNodalThickness;
+
 /* *INITIAL CONDITIONS, TYPE=VELOCITY: the velocity of displacement dof (1..3) of a node or node set at the
  * start of the first explicit step (implicit steps are static and ignore it; a prescribed dof keeps its
  * boundary condition). After distribution each rank keeps the lines whose node it holds or whose set has
@@ -373,6 +381,8 @@ typedef struct {
   TslInitialTemperature *init;
   PetscInt               nvinit;
   TslInitialVelocity    *vinit; /* in deck order: a later line for the same dof wins */
+  PetscInt               nnodal_thickness;
+  TslNodalThickness     *nodal_thickness; /* in deck order (a later line for a node wins); empty after the shells' expansion */
   TslAmplitude          *amplitudes;
   TslEquation           *equations;
 

@@ -1183,7 +1183,8 @@ static PetscErrorCode KwSolidSection(Deck *d, const DeckKeyword *kw)
 
 /* *SHELL SECTION for continuum shells (SC8RT, SC6RT): the thickness comes from the nodes, so the data
  * line's thickness is checked and otherwise ignored, as are OFFSET= and NODAL THICKNESS (the dialect ignores
- * them for continuum shells). Conventional shells (S8RT, SAX2T) take the data line's thickness and OFFSET=
+ * them for continuum shells). Conventional shells (S8RT, SAX2T) take the data line's thickness, or with NODAL
+ * THICKNESS each node's from *NODAL THICKNESS, and OFFSET=
  * (SPOS, SNEG or a fraction of the thickness; shell.c accepts -0.5, 0 and 0.5). Its second field is the number of Simpson points through the
  * thickness (odd, 3 to 15, default 5). STACK DIRECTION=1, 2 or 3 (the element's own reference direction along the thickness; 3, from face 1 to face
  * 2, by default; not ORIENTATION) and SECTION INTEGRATION=SIMPSON (Gauss is not allowed for coupled shells in the dialect either). */
@@ -1236,7 +1237,7 @@ static PetscErrorCode KwShellSection(Deck *d, const DeckKeyword *kw)
     USER_CHECK(t > 0, LOC_FMT "the thickness must be positive", DLOC(d));
     s->shell_thickness = t;
   }
-  if (Param(d, "NODAL THICKNESS")) s->shell_thickness = -1; /* conventional shells refuse it (shell.c) */
+  if (Param(d, "NODAL THICKNESS")) s->shell_thickness = -1; /* conventional shells: the nodes' *NODAL THICKNESS (shell.c) */
   if (got) {
     if (d->nfield > 1 && d->field[1][0]) PetscCall(FieldInt(d, 1, "the number of integration points", &s->shell_points));
     USER_CHECK(s->shell_points >= 3 && s->shell_points <= 15 && s->shell_points % 2 == 1,
@@ -1301,6 +1302,30 @@ static PetscErrorCode InitialTemperatureLine(Deck *d)
   PetscCall(ParseTarget(d, d->field[0], PETSC_TRUE, &it->target));
   PetscCall(FieldReal(d, 1, "the temperature", &it->value));
   it->loc = d->loc;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *NODAL THICKNESS data line: node or node set, thickness[, a second thickness (beams in the dialect; not
+ * read)]. The thickness of the conventional shells whose *SHELL SECTION has NODAL THICKNESS (shell.c). */
+static PetscErrorCode KwNodalThickness(Deck *d, const DeckKeyword *kw)
+{
+  TslModel          *m = d->m;
+  TslNodalThickness *nt;
+  PetscBool          got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  for (;;) {
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    USER_CHECK(d->nfield == 2 || d->nfield == 3, LOC_FMT "*NODAL THICKNESS data line needs: node or node set, thickness", DLOC(d));
+    PetscCall(TslDeckGrow(&m->nodal_thickness, sizeof(*nt), m->nnodal_thickness));
+    nt = &m->nodal_thickness[m->nnodal_thickness++];
+    PetscCall(ParseTarget(d, d->field[0], PETSC_TRUE, &nt->target));
+    PetscCall(FieldReal(d, 1, "the thickness", &nt->value));
+    USER_CHECK(nt->value > 0, LOC_FMT "the thickness must be positive (got %g)", DLOC(d), (double)nt->value);
+    nt->loc = d->loc;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2675,6 +2700,7 @@ static const DeckKeyword Keywords[] = {
     {"SHELL SECTION", AT_MODEL, IN_NONE,
      "ELSET|MATERIAL|THICKNESS MODULUS|STACK DIRECTION|SECTION INTEGRATION|POISSON|OFFSET|NODAL THICKNESS|COMPOSITE|DENSITY", KwShellSection, 0,
      NULL},
+    {"NODAL THICKNESS", AT_MODEL, IN_NONE, "", KwNodalThickness, 0, NULL},
     {"INITIAL CONDITIONS", AT_MODEL, IN_NONE, "TYPE", KwInitial, 0, NULL},
     {"AMPLITUDE", AT_BOTH, IN_NONE, "NAME|TIME|DEFINITION", KwAmplitude, 0, NULL},
     {"PHYSICAL CONSTANTS", AT_MODEL, IN_NONE, "ABSOLUTE ZERO|STEFAN BOLTZMANN", KwPhysical, 0, NULL},

@@ -51,6 +51,7 @@ PetscErrorCode TslModelDestroy(TslModel **model)
   PetscCall(PetscFree(m->sections));
   PetscCall(PetscFree(m->init));
   PetscCall(PetscFree(m->vinit));
+  PetscCall(PetscFree(m->nodal_thickness));
   for (PetscInt i = 0; i < m->namplitude; i++) {
     PetscCall(PetscFree(m->amplitudes[i].t));
     PetscCall(PetscFree(m->amplitudes[i].a));
@@ -376,6 +377,7 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
   PetscCall(PackArray(p, &m->sections, m->nsection, sizeof(TslSection)));
   PetscCall(PackArray(p, &m->init, m->ninit, sizeof(TslInitialTemperature)));
   PetscCall(PackArray(p, &m->vinit, m->nvinit, sizeof(TslInitialVelocity)));
+  PetscCall(PackArray(p, &m->nodal_thickness, m->nnodal_thickness, sizeof(TslNodalThickness)));
   PetscCall(PackArray(p, &m->amplitudes, m->namplitude, sizeof(TslAmplitude)));
   for (PetscInt i = 0; i < m->namplitude; i++) {
     PetscCall(PackArray(p, &m->amplitudes[i].t, m->amplitudes[i].n, sizeof(PetscReal)));

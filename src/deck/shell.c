@@ -288,7 +288,7 @@ static PetscErrorCode FibreTarget(TslModel *m, const PetscInt fib[], PetscInt nf
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Sections of shells: a *SHELL SECTION with a thickness and OFFSET= -1/2, 0 or 1/2, holding no other
+/* Sections of shells: a *SHELL SECTION with a thickness (or NODAL THICKNESS) and OFFSET= -1/2, 0 or 1/2, holding no other
  * elements; they become solid sections of the expanded elements. sec[e]: element e's section, -1 if none. */
 static PetscErrorCode ShellSections(TslModel *m, PetscInt sec[])
 {
@@ -311,8 +311,6 @@ static PetscErrorCode ShellSections(TslModel *m, PetscInt sec[])
       const TslSection *s = &m->sections[sec[e]];
       USER_CHECK(s->shell, TSL_LOC_FMT "%s element %" PetscInt_FMT " is in a *SOLID SECTION (%s:%" PetscInt_FMT "): a shell takes a *SHELL SECTION",
                  TSL_LOC_ARGS(m, l), ShellName(m, e), m->elem_id[e], TSL_LOC_ARGS(m, s->loc));
-      USER_CHECK(s->shell_thickness > 0, TSL_LOC_FMT "NODAL THICKNESS is not supported for %s elements: give the thickness on the data line",
-                 TSL_LOC_ARGS(m, s->loc), ShellName(m, e));
       USER_CHECK(PetscAbsReal(s->shell_offset) < 1e-12 || PetscAbsReal(PetscAbsReal(s->shell_offset) - 0.5) < 1e-12,
                  TSL_LOC_FMT "OFFSET=%g is not supported for %s elements: 0 (the mid-surface, default), SPOS or SNEG", TSL_LOC_ARGS(m, s->loc),
                  (double)s->shell_offset, ShellName(m, e));
@@ -330,18 +328,44 @@ static PetscErrorCode ShellSections(TslModel *m, PetscInt sec[])
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The fibres: each shell node's normal (the average of its elements'), thickness (their average) and level
+/* Each node's *NODAL THICKNESS (the last line naming it; 0: none) into nt[nnode]. */
+static PetscErrorCode NodalThickness(TslModel *m, PetscReal nt[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < m->nnode; i++) nt[i] = 0;
+  for (PetscInt k = 0; k < m->nnodal_thickness; k++) {
+    const TslNodalThickness *l = &m->nodal_thickness[k];
+    if (l->target.set[0]) {
+      const PetscInt s = TslModelFindNodeSet(m, l->target.set);
+      USER_CHECK(s >= 0, TSL_LOC_FMT "*NODAL THICKNESS: node set %s is not defined", TSL_LOC_ARGS(m, l->loc), l->target.set);
+      for (PetscInt j = 0; j < m->nsets[s].n; j++) {
+        const PetscInt p = TslModelNodeIndex(m, m->nsets[s].ids[j]);
+        if (p >= 0) nt[p] = l->value;
+      }
+    } else {
+      const PetscInt p = TslModelNodeIndex(m, l->target.id);
+      USER_CHECK(p >= 0, TSL_LOC_FMT "*NODAL THICKNESS: node %" PetscInt_FMT " is not defined", TSL_LOC_ARGS(m, l->loc), l->target.id);
+      nt[p] = l->value;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The fibres: each shell node's normal (the average of its elements'), thickness (their average: the
+ * section's, or with NODAL THICKNESS the node's own) and level
  * (0, 2 or 4 by OFFSET=, the same in every element), and its fibre's new nodes appended to the model.
  * fib[NLEV * i + l] is set for the levels node i needs, -1 elsewhere. */
 static PetscErrorCode Fibres(TslModel *m, const PetscInt sec[], PetscInt fib[], PetscInt *nnew, PetscInt *first)
 {
   const PetscInt nnode = m->nnode;
-  PetscReal     *nrm, *thick;
+  PetscReal     *nrm, *thick, *nt;
   PetscInt      *lev0, *count, maxid = 0, add = 0;
   PetscBool     *corner;
 
   PetscFunctionBeginUser;
   PetscCall(PetscCalloc5(3 * nnode, &nrm, nnode, &thick, nnode, &lev0, nnode, &count, nnode, &corner));
+  PetscCall(PetscMalloc1(nnode, &nt));
+  PetscCall(NodalThickness(m, nt));
   for (PetscInt i = 0; i < NLEV * nnode; i++) fib[i] = -1;
   for (PetscInt i = 0; i < nnode; i++) maxid = PetscMax(maxid, m->node_id[i]);
   for (PetscInt e = 0; e < m->nelem; e++) {
@@ -366,7 +390,11 @@ static PetscErrorCode Fibres(TslModel *m, const PetscInt sec[], PetscInt fib[], 
                  TSL_LOC_FMT "node %" PetscInt_FMT " is on shells of different OFFSET= (their sections): a shared node needs one reference surface",
                  TSL_LOC_ARGS(m, l), conn[a]);
       for (PetscInt c = 0; c < 3; c++) nrm[3 * i + c] += n[c];
-      thick[i] += s->shell_thickness;
+      USER_CHECK(s->shell_thickness > 0 || nt[i] > 0,
+                 TSL_LOC_FMT "node %" PetscInt_FMT " of %s element %" PetscInt_FMT " has no *NODAL THICKNESS (its *SHELL SECTION, %s:%" PetscInt_FMT
+                             ", takes NODAL THICKNESS)",
+                 TSL_LOC_ARGS(m, l), conn[a], ShellName(m, e), m->elem_id[e], TSL_LOC_ARGS(m, s->loc));
+      thick[i] += s->shell_thickness > 0 ? s->shell_thickness : nt[i];
       lev0[i] = lev;
       count[i]++;
       if (IsCorner(nn, a)) corner[i] = PETSC_TRUE;
@@ -422,6 +450,7 @@ static PetscErrorCode Fibres(TslModel *m, const PetscInt sec[], PetscInt fib[], 
     }
   }
   PetscCall(PetscFree5(nrm, thick, lev0, count, corner));
+  PetscCall(PetscFree(nt));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -534,6 +563,8 @@ PetscErrorCode TslDeckExpandShells(TslModel *m)
   PetscCall(TslModelIndex(m));
   if (!nshell) { /* only the side labels to refuse */
     PetscCall(MapSetsAndFaces(m, &tw));
+    PetscCall(PetscFree(m->nodal_thickness)); /* read by the expansion only */
+    m->nnodal_thickness = 0;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PetscMalloc1(m->nelem, &sec));
@@ -557,6 +588,8 @@ PetscErrorCode TslDeckExpandShells(TslModel *m)
                         "note: %" PetscInt_FMT " shell elements expanded into %" PetscInt_FMT " (new element ids %" PetscInt_FMT " to %" PetscInt_FMT
                         "), %" PetscInt_FMT " nodes added through their thickness (ids %" PetscInt_FMT " to %" PetscInt_FMT ")\n",
                         nshell, 2 * nshell, top, top + nshell - 1, nnew, first, first + nnew - 1));
+  PetscCall(PetscFree(m->nodal_thickness)); /* read by the expansion only */
+  m->nnodal_thickness = 0;
   PetscCall(PetscFree(sec));
   PetscCall(PetscFree(fib));
   PetscCall(PetscFree(tw.id));

@@ -10,6 +10,10 @@ plate_s8rt, plate_moved_s8rt  flux q = 100 in through SPOS, film h = 10 (sink 0)
 plate_mm_s8rt                 plate_s8rt moved by (2e6, 1e6) and re-expressed in kN and mm (transform_deck.py
                               2000000 1000000 1000: the thickness 500, k / 1000, q and h / 1e6): the same
                               temperatures and heat (1e-9), the levels at 1000 times their heights
+plate_nodal_s8rt              plate_s8rt with its thickness from *NODAL THICKNESS: the same checks
+taper_s8rt                    the nodal thickness 0.4 + 0.1 x: every node at y = 0, +-t / 4 or +-t / 2 (1e-12), the heat in
+                              100 x the area of the tilted SPOS, 2 sqrt(1 + 0.05^2) (1e-9 relative), the film's heat out
+                              the same (steady)
 plate_labels_s8rt             the same by element labels, and a pressure 1000 on the shells (*DLOAD P): the
                               reaction along y 2000 (1e-9 relative)
 plate_spos_s8rt               the same with the deck's nodes on SPOS: 15 there, the plate below them
@@ -70,6 +74,16 @@ def plate(r, job):
         check("reaction force along y of the pressure on SPOS", float(rf[:, 1].sum()), 2000.0, 1e-9, relative=True)
 
 
+def taper(r):
+    xyz = r.xyz
+    t = 0.4 + 0.1 * xyz[:, 0]
+    off = np.min(np.abs(np.abs(xyz[:, 1])[:, None] - np.stack([0 * t, t / 4, t / 2], axis=1)), axis=1)
+    check("every node at y = 0, +-t/4 or +-t/2 of its nodal thickness t = 0.4 + 0.1 x", float(off.max()), 0.0, 1e-12)
+    area = 2.0 * math.sqrt(1 + 0.05 ** 2)
+    check("heat in = 100 x the tilted SPOS's area", float(r.history["heat_in"][-1]), 100.0 * area, 1e-9, relative=True)
+    check("film heat out = heat in (steady)", float(r.history["film_heat_out"][-1]), 100.0 * area, 1e-9, relative=True)
+
+
 def cantilever(r):
     L, W, t, P = 10.0, 1.0, 0.5, 100.0
     I, G, A = W * t ** 3 / 12, E / (2 * (1 + NU)), W * t
@@ -110,6 +124,8 @@ def main():
     r = Result(outdir, job)
     if job.startswith("plate"):
         plate(r, job)
+    elif job.startswith("taper"):
+        taper(r)
     elif job.startswith("cantilever"):
         cantilever(r)
     else:

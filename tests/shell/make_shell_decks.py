@@ -8,6 +8,10 @@ usage: make_shell_decks.py OUTDIR
   plate_spos_s8rt.inp   the same with OFFSET=SPOS: the deck's nodes on the top face (15), the plate below them
   plate_labels_s8rt.inp the same loads by element labels (*DFLUX SPOS, *FILM FNEG), and a pressure of 1000 by *DLOAD P
                         on the shells (pushing against the normal): the reaction force 2000 along +y, no temperature change
+  plate_nodal_s8rt.inp  plate_s8rt with the thickness 0.5 from *NODAL THICKNESS (the section's NODAL THICKNESS; its
+                        data line's 9.0 not read): the same answer
+  taper_s8rt.inp        the same plate with the nodal thickness 0.4 + 0.1 x (0.4 to 0.6): SPOS and SNEG are planes at
+                        y = +-t / 2, so the heat in is 100 x their area 2.0025 (= the film's heat out)
   plate_moved_s8rt.inp  the plate turned about (1, 2, 3) by 0.7 rad and moved by (1e5, -2e5, 3e5): the same temperatures
   cantilever_s8rt.inp   a 10 x 1 strip (thickness 0.5) clamped at x = 0 (free to bend and stretch across its width there,
                         so that it bends as a beam): step LOAD, a tip force of 100 (-y): tip
@@ -69,7 +73,7 @@ def rotation(axis, angle):
             [z * x * (1 - c) - y * s, z * y * (1 - c) + x * s, c + z * z * (1 - c)]]
 
 
-def plate(out, offset=None, move=None, labels=False):
+def plate(out, offset=None, move=None, labels=False, nodal=None):
     nodes, elems = quad8_strip(2, 1, 2.0, 1.0)
     corner = [n for n, p in nodes.items() if p[0] == 0 and p[2] == 0][0]
     other = [n for n, p in nodes.items() if p[0] == 2.0 and p[2] == 0][0]
@@ -84,7 +88,10 @@ def plate(out, offset=None, move=None, labels=False):
         supports = " %d, 1, 3\n ALL, 2, 2\n %d, 3, 3\n" % (corner, other)
     return (("*HEADING\n S8RT plate: flux in through SPOS, film on SNEG%s\n" % (", OFFSET=SPOS" if offset else "")) +
             fmt_nodes(nodes, mv) + fmt_elems(elems, "S8RT", "PLATE") + MAT +
-            "*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL%s\n 0.5, 5\n" % (", OFFSET=SPOS" if offset else "") +
+            ("*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL%s\n 0.5, 5\n" % (", OFFSET=SPOS" if offset else "") if not nodal else
+             # the data line's thickness is not read with NODAL THICKNESS
+             "*SHELL SECTION, ELSET=PLATE, MATERIAL=STEEL, NODAL THICKNESS\n 9.0, 5\n*NODAL THICKNESS\n" +
+             ("".join(" %d, %.15g\n" % (n, nodal(nodes[n])) for n in sorted(nodes)) if callable(nodal) else " ALL, %g\n" % nodal)) +
             "*SURFACE, NAME=UP, TYPE=ELEMENT\n PLATE, SPOS\n*SURFACE, NAME=DOWN, TYPE=ELEMENT\n PLATE, SNEG\n"
             "*STEP, NAME=HEAT\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n*BOUNDARY\n" + supports +
             ("*DFLUX\n PLATE, SPOS, 100.0\n*FILM\n PLATE, FNEG, 0.0, 10.0\n*DLOAD\n PLATE, P, 1000.0\n" if labels else
@@ -131,7 +138,8 @@ def main():
     os.makedirs(out, exist_ok=True)
     decks = {"plate_s8rt": plate(out), "plate_spos_s8rt": plate(out, offset=True),
              "plate_moved_s8rt": plate(out, move=(rotation((1.0, 2.0, 3.0), 0.7), (1e5, -2e5, 3e5))),
-             "plate_labels_s8rt": plate(out, labels=True),
+             "plate_labels_s8rt": plate(out, labels=True), "plate_nodal_s8rt": plate(out, nodal=0.5),
+             "taper_s8rt": plate(out, nodal=lambda p: 0.4 + 0.1 * p[0]),
              "cantilever_s8rt": cantilever(), "cylinder_sax2t": cylinder()}
     for name, text in decks.items():
         with open(os.path.join(out, name + ".inp"), "w") as f:
