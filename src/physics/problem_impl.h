@@ -157,6 +157,9 @@ struct _p_TslProblem {
    * fast_off[e] = W b + j for an element with a record, -1 for the generic kernels; fast_shape[] one per
    * catalogue type */
   PetscBool            fast_built;
+  /* the explicit procedure's per-element stable increments and lumped masses, once per distinct element
+   * (dynamics.c, "Each distinct element once"; NULL until an explicit step asks) */
+  struct TslElemCache *elem_cache;
   PetscBool            fast_implicit;                       /* implicit residuals take the records too (TslProblemImplicitRecords) */
   PetscInt             fast_count, fast_total, fast_nbatch; /* elements with a record, reals in fast_rec, batches */
   PetscInt            *fast_off, *fast_batch, *fast_boff;
