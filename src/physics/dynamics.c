@@ -638,7 +638,7 @@ static PetscBool TemperatureDependent(const TslMaterial *mat)
                      mat->prop[TSL_PROP_SPECIFIC_HEAT].n > 1);
 }
 
-/* The element's key (StableCache) into key[] (returns its length; 0: no grid, for an element of no extent) and
+/* The element's key (TslElemCache) into key[] (returns its length; 0: no grid, for an element of no extent) and
  * the input the increments are computed on: the grid's coordinates in x[], no displacement and the nodal
  * temperatures (those of a temperature-dependent material, else zero) in u[] and ti[]. */
 static PetscInt StableKey(TslProblem p, PetscInt e, const TslElemData *d, PetscInt64 key[], PetscReal x[], PetscReal u[], PetscReal ti[],
@@ -712,14 +712,14 @@ static PetscInt64 KeyHash(PetscInt n, const PetscInt64 key[])
 }
 
 /* The entry of key (n words) in p's cache: its own, a new one where there is room, or NULL (a material
- * tabulated in temperature, no extent, or the cache full). *found: the entry existed. */
-static PetscErrorCode ElemCacheEntry(TslProblem p, PetscInt n, const PetscInt64 key[], PetscBool tdep, ElemEntry **entry, PetscBool *found)
+ * tabulated in temperature, no extent, or the cache full). */
+static PetscErrorCode ElemCacheEntry(TslProblem p, PetscInt n, const PetscInt64 key[], PetscBool tdep, ElemEntry **entry)
 {
   struct TslElemCache *c;
   PetscInt64           h;
 
   PetscFunctionBeginUser;
-  *entry = NULL, *found = PETSC_FALSE;
+  *entry = NULL;
   if (!n || tdep) PetscFunctionReturn(PETSC_SUCCESS);
   if (!p->elem_cache) PetscCall(PetscCalloc1(1, &p->elem_cache));
   c = p->elem_cache;
@@ -727,7 +727,7 @@ static PetscErrorCode ElemCacheEntry(TslProblem p, PetscInt n, const PetscInt64 
   for (PetscInt k = 0; k < ELEM_CACHE_SLOTS; k++) {
     ElemEntry *s = &c->slot[((uint64_t)h + (uint64_t)k) & (ELEM_CACHE_SLOTS - 1)];
     if (s->len == n && s->hash == h && !memcmp(&c->pool[s->off], key, (size_t)n * sizeof(PetscInt64))) {
-      *entry = s, *found = PETSC_TRUE;
+      *entry = s;
       break;
     }
     if (s->len) continue;
@@ -756,7 +756,6 @@ typedef struct {
   PetscInt64      key[STABLE_KEY_MAX];
   TslElementInput in;
   ElemEntry      *entry;
-  PetscBool       found;
 } ElemOnGrid;
 
 static PetscErrorCode ElemGrid(TslProblem p, PetscInt e, const TslElemData *d, ElemOnGrid *g)
@@ -766,7 +765,7 @@ static PetscErrorCode ElemGrid(TslProblem p, PetscInt e, const TslElemData *d, E
   PetscFunctionBeginUser;
   nkey = StableKey(p, e, d, g->key, g->x, g->u, g->ti, &g->in);
   if (!nkey) g->in = d->in; /* an element of no extent: as it stands (it has no stable increment) */
-  PetscCall(ElemCacheEntry(p, nkey, g->key, TemperatureDependent(d->in.sec->mat), &g->entry, &g->found));
+  PetscCall(ElemCacheEntry(p, nkey, g->key, TemperatureDependent(d->in.sec->mat), &g->entry));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
