@@ -12,13 +12,15 @@
 # leaves out its Python imports (0.6 s) and JIT (cached: a warm-up run fills the cache). Figures only,
 # never pass/fail (ctest -L bench). The peer's solution is compared with thermoslide's at each size
 # (printed max relative difference).
+# Each code runs REPEAT times (default 3) per case and its fastest run is reported: the machine's speed moves
+# by 10-20 % between runs. CalculiX runs once.
 # usage: bench_peer.sh THERMOSLIDE [OUTDIR] [sizes...]      (default sizes: 16 32 50: 38 k, 283 k, 1.05 M dofs)
 set -u
 exe=$1 out=${2:-$PWD/bench-peer-out}
 shift 2 || shift $#
 sizes=${*:-16 32 50}
 here=$(cd "$(dirname "$0")" && pwd)
-ccx_max=${CCX_MAX_N:-24}
+ccx_max=${CCX_MAX_N:-24} repeat=${REPEAT:-3}
 mkdir -p "$out"
 peer_ok=1
 /usr/bin/python3 -c "import dolfinx" 2> /dev/null || { peer_ok=0; echo "python3-dolfinx not installed (apt-get install python3-dolfinx): peer runs skipped"; }
@@ -32,8 +34,13 @@ for n in $sizes; do
   /usr/bin/python3 "$here/make_block.py" "$n" "$deck"
   dofs=$(( (2*n+1)*(n+1)*(n+1)*4 ))
   for np in 1 2; do
-    log=$out/block$n.np$np.log
-    mpirun -n $np "$exe" "$deck" -o "$out/ts$n.np$np" > "$log" 2>&1 || { echo "thermoslide failed: $log"; tail -3 "$log"; continue; }
+    log=$out/block$n.np$np.log best=""
+    # REPEAT runs, the fastest kept (this machine's speed moves between runs; the peer gets the same)
+    for r in $(seq "$repeat"); do
+      mpirun -n $np "$exe" "$deck" -o "$out/ts$n.np$np" > "$log.$r" 2>&1 || { echo "thermoslide failed: $log.$r"; tail -3 "$log.$r"; continue 2; }
+      t=$(grep "thermoslide: wall time" "$log.$r" | awk '{print $4}')
+      if [ -z "$best" ] || [ "$(echo "$t < $best" | bc)" = 1 ]; then best=$t; cp "$log.$r" "$log"; fi
+    done
     w=$(grep "thermoslide: wall time" "$log" | sed 's/[:,;]/ /g')
     tot=$(echo "$w" | awk '{print $4}')
     rp=$(echo "$w" | awk '{for(i=1;i<=NF;i++){if($i=="read")r=$(i+1);if($i=="partition")p=$(i+1)}; printf "%.3g", r+p}')
@@ -47,8 +54,16 @@ for n in $sizes; do
     if [ $peer_ok = 1 ]; then
       cmp=""
       [ $np = 1 ] && cmp="--compare $out/ts$n.np1/block$n.h5"
-      plog=$out/peer$n.np$np.log
-      if mpirun -n $np /usr/bin/python3 "$here/peer_block.py" "$n" "$out/peer$n.np$np" $cmp > "$plog" 2>&1; then
+      plog=$out/peer$n.np$np.log pbest="" pok=1
+      for r in $(seq "$repeat"); do
+        if mpirun -n $np /usr/bin/python3 "$here/peer_block.py" "$n" "$out/peer$n.np$np" $cmp > "$plog.$r" 2>&1; then
+          t=$(field "$(grep "^PEER " "$plog.$r")" total_excl_import)
+          if [ -z "$pbest" ] || [ "$(echo "$t < $pbest" | bc)" = 1 ]; then pbest=$t; cp "$plog.$r" "$plog"; fi
+        else
+          pok=0; cp "$plog.$r" "$plog"; break
+        fi
+      done
+      if [ $pok = 1 ]; then
         p=$(grep "^PEER " "$plog")
         printf "%-4s %9d %-5s %-11s %7.3g %8.3g %7.3g %8.3g %8.3g %8.3g %7.3g %5s %9.0f\n" "$n" "$dofs" "$np" FEniCSx "$(field "$p" total_excl_import)" \
           "$(field "$p" mesh)" "$(field "$p" fe_setup)" "$(field "$p" assembly)" "$(field "$p" solver_setup)" "$(field "$p" solve)" "$(field "$p" output)" \
