@@ -256,17 +256,13 @@ static PetscErrorCode SetUpSolver(Driver *d)
     if (N <= d->direct_max) {
       PetscMPIInt size;
       PetscCallMPI(MPI_Comm_size(d->comm, &size));
-      /* one rank: PETSc's own sparse LU (nested dissection ordering; 3D: minimum degree), whose set-up costs a third of
+      /* one rank: PETSc's own sparse LU (nested dissection ordering), whose set-up costs a third of
        * MUMPS's on these sizes (the 3D conductance series: solver set-up 0.75 s against 2.6 s, 8 s -> 3.8 s
        * for the job); it does not pivot, so a zero pivot fails the linear solve and the increment is
        * repeated with MUMPS for the rest of the job (FallBackToDirect). Several ranks: MUMPS from the
        * start, with nothing to fall back to. */
       PetscCall(SetDefaultOption(d, "-pc_type", "lu"));
       PetscCall(SetDefaultOption(d, "-pc_factor_mat_solver_type", size == 1 ? "petsc" : "mumps"));
-      /* 3D: approximate minimum degree instead of nested dissection, less fill on these small meshes: the
-       * S8RT radiation series' solver set-up 6.8 -> 4.8 s (220 factorisations of 1 760 unknowns), the C3D8T
-       * conductance series' 0.71 -> 0.46 s; 2D blocks of 11 000 unknowns showed no difference either way */
-      if (size == 1 && m->dim == 3) PetscCall(SetDefaultOption(d, "-pc_factor_mat_ordering_type", "amd"));
       if (size > 1) d->fell_back = PETSC_TRUE;
     }
   }

@@ -11,7 +11,7 @@
  * (loads and reactions at prescribed dofs), frictional dissipation ALLFD, energy absorbed by contact ALLCW
  * (ALLFD and the penalty's elastic energy), mass-scaling work ALLMW and the balance
  * ETOTAL = ALLKE + ALLIE + ALLVD + ALLCW - ALLWK - ALLMW. */
-#define MAX_DEFAULTS 48
+#define MAX_DEFAULTS 32
 #define MAX_FIELDS   32
 
 extern const char *const TslHistoryColumns[];
