@@ -721,8 +721,19 @@ static PetscErrorCode ReportChatter(Driver *d)
 /* Increments of one step. dt is the controller's increment; each increment h = dt cut short at the step
  * end and at the next corner of an amplitude the step follows (so a slide reversal is never straddled).
  * A failed increment is retried from the last converged state with h * cutback. */
+/* What a job stopped in a step leaves, for its message: the last converged state at step time t, or none. */
+static const char *SavedState(const Driver *d, PetscReal t, char buf[], size_t len)
+{
+  if (d->done_inc)
+    (void)PetscSNPrintf(buf, len, "the last converged state (step time %g) is saved", (double)t);
+  else
+    (void)PetscSNPrintf(buf, len, "no increment has converged (step time %g): there is no state to save", (double)t);
+  return buf;
+}
+
 static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
 {
+  char            saved[128];
   const TslModel *m;
   const TslStep  *step;
   Vec             X, Xold;
@@ -778,10 +789,8 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscCall(SetIncrement(d, step, t + h, h, *total_time + h));
     PetscCall(TslProblemApplyPrescribed(d->prob, X));
     PetscCall(SolveIncrement(d, X, &reason, &its, &lits));
-    PetscCheck(!d->stop, d->comm, PETSC_ERR_SIG, "step %" PetscInt_FMT ": %s received at step time %g, in increment %" PetscInt_FMT "; %s%g%s", s + 1,
-               TslStopName(d->stop), (double)(t + h), inc + 1,
-               d->done_inc ? "the last converged state (step time " : "no increment has converged (step time ", (double)t,
-               d->done_inc ? ") is saved" : "): there is no state to save");
+    PetscCheck(!d->stop, d->comm, PETSC_ERR_SIG, "step %" PetscInt_FMT ": %s received at step time %g, in increment %" PetscInt_FMT "; %s", s + 1,
+               TslStopName(d->stop), (double)(t + h), inc + 1, SavedState(d, t, saved, sizeof(saved)));
     if (s + 1 == d->debug_diverge_step) reason = SNES_DIVERGED_FUNCTION_DOMAIN;
     accept = (PetscBool)(reason > 0);
     if (accept && !step->steady && step->deltmx > 0) {
@@ -820,9 +829,8 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
                  "step %" PetscInt_FMT ": increment %" PetscInt_FMT " did not converge (%s) and DIRECT forbids a cutback", s + 1, inc + 1, why);
       dt = h * f;
       PetscCheck(dt >= step->dtmin * (1 - 1e-12), d->comm, PETSC_ERR_NOT_CONVERGED,
-                 "step %" PetscInt_FMT ": the increment fell below the minimum %g at step time %g; %s%g%s", s + 1, (double)step->dtmin, (double)t,
-                 d->done_inc ? "the last converged state (step time " : "no increment has converged (step time ", (double)t,
-                 d->done_inc ? ") is saved" : "): there is no state to save");
+                 "step %" PetscInt_FMT ": the increment fell below the minimum %g at step time %g; %s", s + 1, (double)step->dtmin, (double)t,
+                 SavedState(d, t, saved, sizeof(saved)));
       continue;
     }
     t = last ? step->period : t + h;
