@@ -97,6 +97,7 @@ typedef struct DeckPart {
   PetscInt   elem_first, elem_n; /* its elements */
   PetscInt   nsets[3];           /* node sets, element sets and surfaces in the model before the part */
   PetscInt   nsection;           /* sections in the model before the part */
+  PetscInt   nt[2];              /* its *NODAL THICKNESS lines in the model's list: [nt[0], nt[1]) */
   PetscReal *xyz;                /* its nodes' coordinates as the part gives them (3 per node) */
   PetscInt   first;              /* its first instance, or -1 */
   TslLoc     loc;
@@ -1306,7 +1307,8 @@ static PetscErrorCode InitialTemperatureLine(Deck *d)
 }
 
 /* *NODAL THICKNESS data line: node or node set, thickness[, a second thickness (beams in the dialect; not
- * read)]. The thickness of the conventional shells whose *SHELL SECTION has NODAL THICKNESS (shell.c). */
+ * read)]. The thickness of the conventional shells whose *SHELL SECTION has NODAL THICKNESS (shell.c).
+ * Model data, or part data as Abaqus/CAE writes it: there the part's own node ids and set names. */
 static PetscErrorCode KwNodalThickness(Deck *d, const DeckKeyword *kw)
 {
   TslModel          *m = d->m;
@@ -1322,6 +1324,12 @@ static PetscErrorCode KwNodalThickness(Deck *d, const DeckKeyword *kw)
     PetscCall(TslDeckGrow(&m->nodal_thickness, sizeof(*nt), m->nnodal_thickness));
     nt = &m->nodal_thickness[m->nnodal_thickness++];
     PetscCall(ParseTarget(d, d->field[0], PETSC_TRUE, &nt->target));
+    if (d->part >= 0 && nt->target.set[0]) {
+      char set[TSL_NAME_LEN];
+      PetscCall(Scoped(d, d->loc, nt->target.set, set));
+      PetscCall(PetscStrncpy(nt->target.set, set, TSL_NAME_LEN));
+    } else if (d->part >= 0)
+      nt->target.id += IdShift(d, -1, PETSC_TRUE);
     PetscCall(FieldReal(d, 1, "the thickness", &nt->value));
     USER_CHECK(nt->value > 0, LOC_FMT "the thickness must be positive (got %g)", DLOC(d), (double)nt->value);
     nt->loc = d->loc;
@@ -2419,6 +2427,7 @@ static PetscErrorCode KwPart(Deck *d, const DeckKeyword *kw)
   p->elem_first = m->nelem;
   p->nsets[0] = m->nnset, p->nsets[1] = m->nelset, p->nsets[2] = m->nsurface;
   p->nsection = m->nsection;
+  p->nt[0]    = m->nnodal_thickness;
   p->first    = -1;
   p->loc      = d->kwloc;
   d->part     = d->npart++;
@@ -2434,6 +2443,7 @@ static PetscErrorCode KwEndPart(Deck *d, const DeckKeyword *kw)
     DeckPart *p = &d->parts[d->part];
     p->node_n   = d->m->nnode - p->node_first;
     p->elem_n   = d->m->nelem - p->elem_first;
+    p->nt[1]    = d->m->nnodal_thickness;
     PetscCall(PetscMalloc1(3 * p->node_n + 1, &p->xyz));
     PetscCall(PetscArraycpy(p->xyz, d->m->node_xyz + 3 * p->node_first, 3 * p->node_n));
   }
@@ -2490,6 +2500,10 @@ static PetscErrorCode RenameFirst(Deck *d, const DeckPart *p, const char *inst)
   for (PetscInt i = p->nsection; i < m->nsection; i++) {
     PetscCall(Requalified(d, p->name, inst, m->sections[i].elset, m->sections[i].elset, &is));
     PetscCall(Requalified(d, p->name, inst, m->sections[i].ref_node.set, m->sections[i].ref_node.set, &is));
+  }
+  for (PetscInt i = p->nt[0]; i < p->nt[1]; i++) {
+    TslTarget *t = &m->nodal_thickness[i].target;
+    if (t->set[0]) PetscCall(Requalified(d, p->name, inst, t->set, t->set, &is));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -2585,6 +2599,19 @@ static PetscErrorCode CopyInstance(Deck *d, const DeckPart *p, const DeckInstanc
     PetscCall(Requalified(d, f->name, in->name, m->sections[i].ref_node.set, m->sections[m->nsection].ref_node.set, &is));
     if (m->sections[i].ref_node.id >= 0) m->sections[m->nsection].ref_node.id += dn;
     m->nsection++;
+  }
+  for (PetscInt i = p->nt[0]; i < p->nt[1]; i++) { /* the part's nodal thicknesses, for this instance's nodes */
+    TslNodalThickness *src, *dst;
+    PetscBool          is = PETSC_TRUE;
+    PetscCall(TslDeckGrow(&m->nodal_thickness, sizeof(TslNodalThickness), m->nnodal_thickness));
+    src  = &m->nodal_thickness[i];
+    dst  = &m->nodal_thickness[m->nnodal_thickness];
+    *dst = *src;
+    if (src->target.set[0])
+      PetscCall(Requalified(d, f->name, in->name, src->target.set, dst->target.set, &is));
+    else
+      dst->target.id += dn;
+    if (is) m->nnodal_thickness++;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -2819,9 +2846,9 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
   /* what a part, an assembly and an instance may hold here (comments aside) */
   if (d->part >= 0 && kw->handler != KwIgnored)
     USER_CHECK(kw->handler == KwNode || kw->handler == KwElement || kw->handler == KwSet || kw->handler == KwSurface ||
-                   kw->handler == KwSolidSection || kw->handler == KwShellSection || kw->handler == KwEndPart,
-               LOC_FMT "*%s inside *PART %s: a part holds nodes, elements, sets, surfaces and sections here (missing *END PART?)", KLOC(d), d->kw,
-               d->parts[d->part].name);
+                   kw->handler == KwSolidSection || kw->handler == KwShellSection || kw->handler == KwNodalThickness || kw->handler == KwEndPart,
+               LOC_FMT "*%s inside *PART %s: a part holds nodes, elements, sets, surfaces, sections and nodal thicknesses here (missing *END PART?)",
+               KLOC(d), d->kw, d->parts[d->part].name);
   if (d->instance >= 0)
     USER_CHECK(kw->handler == KwEndInstance, LOC_FMT "*%s inside *INSTANCE %s: an instance holds its placement only here (missing *END INSTANCE?)",
                KLOC(d), d->kw, d->inst[d->instance].name);

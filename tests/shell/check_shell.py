@@ -14,6 +14,8 @@ plate_nodal_s8rt              plate_s8rt with its thickness from *NODAL THICKNES
 taper_s8rt                    the nodal thickness 0.4 + 0.1 x: every node at y = 0, +-t / 4 or +-t / 2 (1e-12), the heat in
                               100 x the area of the tilted SPOS, 2 sqrt(1 + 0.05^2) (1e-9 relative), the film's heat out
                               the same (steady)
+taper_parts_s8rt              the tapered plate as a part placed twice (the second moved by 3 along z): the same
+                              checks, the heat twice
 plate_labels_s8rt             the same by element labels, and a pressure 1000 on the shells (*DLOAD P): the
                               reaction along y 2000 (1e-9 relative)
 plate_spos_s8rt               the same with the deck's nodes on SPOS: 15 there, the plate below them
@@ -74,12 +76,12 @@ def plate(r, job):
         check("reaction force along y of the pressure on SPOS", float(rf[:, 1].sum()), 2000.0, 1e-9, relative=True)
 
 
-def taper(r):
+def taper(r, copies=1):
     xyz = r.xyz
     t = 0.4 + 0.1 * xyz[:, 0]
     off = np.min(np.abs(np.abs(xyz[:, 1])[:, None] - np.stack([0 * t, t / 4, t / 2], axis=1)), axis=1)
     check("every node at y = 0, +-t/4 or +-t/2 of its nodal thickness t = 0.4 + 0.1 x", float(off.max()), 0.0, 1e-12)
-    area = 2.0 * math.sqrt(1 + 0.05 ** 2)
+    area = copies * 2.0 * math.sqrt(1 + 0.05 ** 2)
     check("heat in = 100 x the tilted SPOS's area", float(r.history["heat_in"][-1]), 100.0 * area, 1e-9, relative=True)
     check("film heat out = heat in (steady)", float(r.history["film_heat_out"][-1]), 100.0 * area, 1e-9, relative=True)
 
@@ -125,7 +127,7 @@ def main():
     if job.startswith("plate"):
         plate(r, job)
     elif job.startswith("taper"):
-        taper(r)
+        taper(r, 2 if "parts" in job else 1)
     elif job.startswith("cantilever"):
         cantilever(r)
     else:

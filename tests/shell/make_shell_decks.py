@@ -12,6 +12,9 @@ usage: make_shell_decks.py OUTDIR
                         data line's 9.0 not read): the same answer
   taper_s8rt.inp        the same plate with the nodal thickness 0.4 + 0.1 x (0.4 to 0.6): SPOS and SNEG are planes at
                         y = +-t / 2, so the heat in is 100 x their area 2.0025 (= the film's heat out)
+  taper_parts_s8rt.inp  taper_s8rt the way Abaqus/CAE writes it: a *PART holding the plate, its section and its
+                        *NODAL THICKNESS (a set's 9.0, then each node's own, which wins), placed twice (the second
+                        instance moved by 3 along z): each plate the taper's answer, the heat in twice its
   plate_moved_s8rt.inp  the plate turned about (1, 2, 3) by 0.7 rad and moved by (1e5, -2e5, 3e5): the same temperatures
   cantilever_s8rt.inp   a 10 x 1 strip (thickness 0.5) clamped at x = 0 (free to bend and stretch across its width there,
                         so that it bends as a beam): step LOAD, a tip force of 100 (-y): tip
@@ -98,6 +101,21 @@ def plate(out, offset=None, move=None, labels=False, nodal=None):
              "*DSFLUX\n UP, S, 100.0\n*SFILM\n DOWN, F, 0.0, 10.0\n") + "*NODE PRINT, NSET=ALL\n NT\n*END STEP\n")
 
 
+def taper_parts():
+    nodes, elems = quad8_strip(2, 1, 2.0, 1.0)
+    nt = "".join(" %d, %.15g\n" % (n, 0.4 + 0.1 * nodes[n][0]) for n in sorted(nodes))
+    return ("*Heading\n S8RT tapered plate as a part placed twice\n*Part, name=Plate\n" + fmt_nodes(nodes) +
+            fmt_elems(elems, "S8RT", "PLATE") +
+            "*Shell Section, elset=PLATE, material=STEEL, nodal thickness\n 1.0, 5\n*Nodal Thickness\n ALL, 9.0\n" + nt +
+            "*Surface, name=UP, type=ELEMENT\n PLATE, SPOS\n*Surface, name=DOWN, type=ELEMENT\n PLATE, SNEG\n*End Part\n"
+            "*Assembly, name=Assembly\n*Instance, name=P-1, part=Plate\n*End Instance\n"
+            "*Instance, name=P-2, part=Plate\n 0., 0., 3.\n*End Instance\n*Nset, nset=ALL\n P-1.ALL, P-2.ALL\n"
+            "*End Assembly\n" + MAT +
+            "*Step, name=HEAT\n*Coupled Temperature-Displacement, steady state\n 1.0, 1.0\n*Boundary\n ALL, 1, 3\n"
+            "*Dsflux\n P-1.UP, S, 100.0\n P-2.UP, S, 100.0\n*Sfilm\n P-1.DOWN, F, 0.0, 10.0\n P-2.DOWN, F, 0.0, 10.0\n"
+            "*Node Print, nset=ALL\n NT\n*End Step\n")
+
+
 def cantilever():
     L, W, t = 10.0, 1.0, 0.5
     nodes, elems = quad8_strip(10, 1, L, W)
@@ -139,7 +157,7 @@ def main():
     decks = {"plate_s8rt": plate(out), "plate_spos_s8rt": plate(out, offset=True),
              "plate_moved_s8rt": plate(out, move=(rotation((1.0, 2.0, 3.0), 0.7), (1e5, -2e5, 3e5))),
              "plate_labels_s8rt": plate(out, labels=True), "plate_nodal_s8rt": plate(out, nodal=0.5),
-             "taper_s8rt": plate(out, nodal=lambda p: 0.4 + 0.1 * p[0]),
+             "taper_s8rt": plate(out, nodal=lambda p: 0.4 + 0.1 * p[0]), "taper_parts_s8rt": taper_parts(),
              "cantilever_s8rt": cantilever(), "cylinder_sax2t": cylinder()}
     for name, text in decks.items():
         with open(os.path.join(out, name + ".inp"), "w") as f:
