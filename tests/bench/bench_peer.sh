@@ -14,19 +14,47 @@
 # (printed max relative difference).
 # Each code runs REPEAT times (default 3) per case and its fastest run is reported: the machine's speed moves
 # by 10-20 % between runs. CalculiX runs once.
+# thermoslide asks for transparent huge pages by default (docs/running.md, "Memory pages"); the peer runs as a
+# user runs it (FEniCSx) and, unless PEER_THP=0, again with the same request (FEniCSx+THP: GLIBC_TUNABLES=
+# glibc.malloc.hugetlb=1), so that the table shows what the pages give either code.
 # usage: bench_peer.sh THERMOSLIDE [OUTDIR] [sizes...]      (default sizes: 16 32 50: 38 k, 283 k, 1.05 M dofs)
 set -u
 exe=$1 out=${2:-$PWD/bench-peer-out}
 shift 2 || shift $#
 sizes=${*:-16 32 50}
 here=$(cd "$(dirname "$0")" && pwd)
-ccx_max=${CCX_MAX_N:-24} repeat=${REPEAT:-3}
+ccx_max=${CCX_MAX_N:-24} repeat=${REPEAT:-3} peer_thp=${PEER_THP:-1}
 mkdir -p "$out"
 peer_ok=1
 /usr/bin/python3 -c "import dolfinx" 2> /dev/null || { peer_ok=0; echo "python3-dolfinx not installed (apt-get install python3-dolfinx): peer runs skipped"; }
 [ $peer_ok = 1 ] && /usr/bin/python3 "$here/peer_block.py" 2 "$out/warm" --no-output > /dev/null 2>&1
 
 field() { echo "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
+# peer TUNABLES CODE: REPEAT runs of the peer with GLIBC_TUNABLES=TUNABLES (empty: as a user runs it), its
+# fastest row printed as CODE; sets T[CODE,n,np] and T[CODEmem,n,np]
+peer() {
+  local tun=$1 code=$2 cmp="" plog=$out/peer$n.np$np.$2.log pbest="" pok=1 r t p
+  [ $np = 1 ] && [ -z "$tun" ] && cmp="--compare $out/ts$n.np1/block$n.h5"
+  for r in $(seq "$repeat"); do
+    if GLIBC_TUNABLES=$tun mpirun -x GLIBC_TUNABLES -n $np /usr/bin/python3 "$here/peer_block.py" "$n" "$out/peer$n.np$np" $cmp > "$plog.$r" 2>&1; then
+      t=$(field "$(grep "^PEER " "$plog.$r")" total_excl_import)
+      if [ -z "$pbest" ] || [ "$(echo "$t < $pbest" | bc)" = 1 ]; then pbest=$t; cp "$plog.$r" "$plog"; fi
+    else
+      pok=0; cp "$plog.$r" "$plog"; break
+    fi
+  done
+  if [ $pok = 1 ]; then
+    p=$(grep "^PEER " "$plog")
+    printf "%-4s %9d %-5s %-11s %7.3g %8.3g %7.3g %8.3g %8.3g %8.3g %7.3g %5s %9.0f\n" "$n" "$dofs" "$np" "$code" "$(field "$p" total_excl_import)" \
+      "$(field "$p" mesh)" "$(field "$p" fe_setup)" "$(field "$p" assembly)" "$(field "$p" solver_setup)" "$(field "$p" solve)" "$(field "$p" output)" \
+      "$(field "$p" its)" "$(field "$p" rss_max_mb)"
+    T[$code,$n,$np]=$(field "$p" total_excl_import) T[${code}mem,$n,$np]=$(field "$p" rss_max_mb)
+    [ -n "$cmp" ] && grep -i "compare\|differ" "$plog" | head -2 | sed 's/^/       /'
+  else
+    echo "peer failed: $plog"; tail -3 "$plog"
+  fi
+  return 0
+}
 printf "\n%-4s %9s %-5s %-11s %7s %8s %7s %8s %8s %8s %7s %5s %9s\n" N dofs ranks code total read+part set-up assembly pc_setup solve output its mem_MB
 declare -A T
 for n in $sizes; do
@@ -52,27 +80,8 @@ for n in $sizes; do
     printf "%-4s %9d %-5s %-11s %7s %8s %7s %8s %8s %8s %7s %5s %9s\n" "$n" "$dofs" "$np" thermoslide "$tot" "$rp" "$su" "$as" "$ps" "$ls" "$op" "$its" "$mem"
     T[ts,$n,$np]=$tot T[tsmem,$n,$np]=$mem
     if [ $peer_ok = 1 ]; then
-      cmp=""
-      [ $np = 1 ] && cmp="--compare $out/ts$n.np1/block$n.h5"
-      plog=$out/peer$n.np$np.log pbest="" pok=1
-      for r in $(seq "$repeat"); do
-        if mpirun -n $np /usr/bin/python3 "$here/peer_block.py" "$n" "$out/peer$n.np$np" $cmp > "$plog.$r" 2>&1; then
-          t=$(field "$(grep "^PEER " "$plog.$r")" total_excl_import)
-          if [ -z "$pbest" ] || [ "$(echo "$t < $pbest" | bc)" = 1 ]; then pbest=$t; cp "$plog.$r" "$plog"; fi
-        else
-          pok=0; cp "$plog.$r" "$plog"; break
-        fi
-      done
-      if [ $pok = 1 ]; then
-        p=$(grep "^PEER " "$plog")
-        printf "%-4s %9d %-5s %-11s %7.3g %8.3g %7.3g %8.3g %8.3g %8.3g %7.3g %5s %9.0f\n" "$n" "$dofs" "$np" FEniCSx "$(field "$p" total_excl_import)" \
-          "$(field "$p" mesh)" "$(field "$p" fe_setup)" "$(field "$p" assembly)" "$(field "$p" solver_setup)" "$(field "$p" solve)" "$(field "$p" output)" \
-          "$(field "$p" its)" "$(field "$p" rss_max_mb)"
-        T[peer,$n,$np]=$(field "$p" total_excl_import) T[peermem,$n,$np]=$(field "$p" rss_max_mb)
-        [ $np = 1 ] && grep -i "compare\|differ" "$plog" | head -2 | sed 's/^/       /'
-      else
-        echo "peer failed: $plog"; tail -3 "$plog"
-      fi
+      peer "" FEniCSx
+      [ "$peer_thp" = 1 ] && peer glibc.malloc.hugetlb=1 FEniCSx+THP
     fi
   done
   if command -v ccx > /dev/null && [ "$n" -le "$ccx_max" ]; then
@@ -92,7 +101,9 @@ for n in $sizes; do
   for np in 1 2; do
     [ -n "${T[ts,$n,$np]:-}" ] || continue
     line="N=$n ranks=$np:"
-    [ -n "${T[peer,$n,$np]:-}" ] && line="$line FEniCSx/thermoslide time $(awk -v a="${T[peer,$n,$np]}" -v b="${T[ts,$n,$np]}" 'BEGIN{printf "%.2f", a/b}'), memory $(awk -v a="${T[tsmem,$n,$np]}" -v b="${T[peermem,$n,$np]}" 'BEGIN{printf "%.2f", a/b}')"
+    for code in FEniCSx FEniCSx+THP; do
+      [ -n "${T[$code,$n,$np]:-}" ] && line="$line $code/thermoslide time $(awk -v a="${T[$code,$n,$np]}" -v b="${T[ts,$n,$np]}" 'BEGIN{printf "%.2f", a/b}'), memory $(awk -v a="${T[tsmem,$n,$np]}" -v b="${T[${code}mem,$n,$np]}" 'BEGIN{printf "%.2f", a/b}');"
+    done
     [ $np = 1 ] && [ -n "${T[ccx,$n]:-}" ] && line="$line; CalculiX/thermoslide time $(awk -v a="${T[ccx,$n]}" -v b="${T[ts,$n,1]}" 'BEGIN{printf "%.1f", a/b}'), memory $(awk -v a="${T[tsmem,$n,1]}" -v b="${T[ccxmem,$n]}" 'BEGIN{printf "%.2f", a/b}')"
     [ $np = 2 ] && [ -n "${T[ts,$n,1]:-}" ] && line="$line; thermoslide 2-rank speed-up $(awk -v a="${T[ts,$n,1]}" -v b="${T[ts,$n,2]}" 'BEGIN{printf "%.2f", a/b}')"
     echo "  $line"
