@@ -248,7 +248,8 @@ static PetscBool AllRanksStopped(void)
 static void HugePages(char **argv)
 {
   const char *off = getenv("TSL_HUGE_PAGES"), *t = getenv("GLIBC_TUNABLES"), *pre = getenv("LD_PRELOAD");
-  char        mode[128] = "", value[1024];
+  char        mode[128] = "", value[1024], self[4096];
+  ssize_t     n;
   FILE       *f;
 
   if ((off && !strcmp(off, "0")) || (t && strstr(t, "glibc.malloc.hugetlb")) || (pre && strstr(pre, "vgpreload"))) return;
@@ -258,8 +259,12 @@ static void HugePages(char **argv)
   fclose(f);
   if (!strstr(mode, "[madvise]")) return; /* "always" needs no request, "never" grants none */
   if (snprintf(value, sizeof(value), "%s%sglibc.malloc.hugetlb=1", t ? t : "", t ? ":" : "") >= (int)sizeof(value)) return;
+  /* the binary's own path, not /proc/self/exe: the process keeps its name (ps, top, pkill thermoslide) */
+  n = readlink("/proc/self/exe", self, sizeof(self) - 1);
+  if (n <= 0 || n >= (ssize_t)sizeof(self) - 1) return;
+  self[n] = 0;
   if (setenv("GLIBC_TUNABLES", value, 1)) return;
-  execv("/proc/self/exe", argv);
+  execv(self, argv);
   if (t)
     setenv("GLIBC_TUNABLES", t, 1); /* the exec failed: run as we are */
   else

@@ -56,8 +56,8 @@ static inline Layout LayoutOf(PetscInt dim, PetscInt n, PetscInt nq, PetscInt nh
 }
 
 /* Lanes: the kernel works on TSL_FAST_LANES elements of one row at a time, every real a vector of their
- * values (GCC/Clang vector extensions: the compiler maps them on AVX2 registers in the x86-64-v3 clone, on
- * pairs of SSE2 registers in the baseline one), so each instruction serves the batch's elements alike and
+ * values (GCC/Clang vector extensions: the compiler maps them on 256-bit registers in the x86-64-v4 and -v3
+ * clones, on pairs of SSE2 registers in the baseline one), so each instruction serves the batch's elements alike and
  * the sums over an element's nodes need no horizontal adds or shuffles. A batch's records are interleaved
  * by lane (value k of lane j at rec[k * W + j]); the unknowns and results likewise. */
 #define W TSL_FAST_LANES
@@ -303,7 +303,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
   if (energy) St(energy, en[0]), St(energy + W, en[1]);
 }
 
-/* One function per row, cloned for x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
+/* One function per row, cloned for x86-64-v4 and x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
 #define FORCE_ROW(name, dim, n, nq, nh, axi, ps, sf, shell)                                                                                          \
   TSL_CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,      \
                               PetscReal *ev, PetscReal hinv, const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv,               \
