@@ -248,7 +248,7 @@ static PetscBool AllRanksStopped(void)
 static void HugePages(char **argv)
 {
   const char *off = getenv("TSL_HUGE_PAGES"), *t = getenv("GLIBC_TUNABLES"), *pre = getenv("LD_PRELOAD");
-  char        mode[128] = "", value[1024], self[4096];
+  char        mode[128] = "", value[1024], old[1024], self[4096];
   ssize_t     n;
   FILE       *f;
 
@@ -259,6 +259,10 @@ static void HugePages(char **argv)
   fclose(f);
   if (!strstr(mode, "[madvise]")) return; /* "always" needs no request, "never" grants none */
   if (snprintf(value, sizeof(value), "%s%sglibc.malloc.hugetlb=1", t ? t : "", t ? ":" : "") >= (int)sizeof(value)) return;
+  if (t) { /* the old value kept for a failed exec: setenv may replace the string t points to */
+    if (snprintf(old, sizeof(old), "%s", t) >= (int)sizeof(old)) return;
+    t = old;
+  }
   /* the binary's own path, not /proc/self/exe: the process keeps its name (ps, top, pkill thermoslide) */
   n = readlink("/proc/self/exe", self, sizeof(self) - 1);
   if (n <= 0 || n >= (ssize_t)sizeof(self) - 1) return;
