@@ -38,7 +38,9 @@ static const char Usage[] = "usage: mpirun -n N thermoslide job.inp [-o DIR] [op
                             "Solver defaults: -snes_type newtonls -ksp_type fgmres thermoslide's field split (T, then u) with BoomerAMG per field\n"
                             "(docs/running.md); models up to -tsl_direct_max_dofs unknowns, and on request for any model,\n"
                             "a direct solve: -pc_type lu -pc_factor_mat_solver_type mumps. -snes_monitor, -ksp_monitor, -log_view work\n"
-                            "as usual. See docs/ for the keyword reference, element table and outputs.\n";
+                            "as usual. See docs/ for the keyword reference, element table and outputs.\n"
+                            "\n"
+                            "environment: TSL_HUGE_PAGES=0  do not ask for transparent huge pages (docs/running.md, \"Memory pages\")\n";
 
 /* Prints the first report of an error once, on rank 0 of the communicator it was raised on: user errors
  * (deck, options, files) and convergence stops as a plain message, a stop asked for by a signal as such, anything else as an internal error with
