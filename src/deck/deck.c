@@ -1272,7 +1272,8 @@ static PetscErrorCode InstanceLabel(Deck *d, const char *f, PetscBool node, Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A node (node = PETSC_TRUE) or element target: an id, an instance's label "i.n", or a set name. */
+/* A node (node = PETSC_TRUE) or element target: an id, an instance's label "i.n", or a set name; inside a part
+ * (*NODAL THICKNESS, the one such keyword a part holds) the part's own id or set name. */
 static PetscErrorCode ParseTarget(Deck *d, const char *f, PetscBool node, TslTarget *t)
 {
   PetscBool label;
@@ -1283,10 +1284,10 @@ static PetscErrorCode ParseTarget(Deck *d, const char *f, PetscBool node, TslTar
   t->id     = -1;
   PetscCall(InstanceLabel(d, f, node, &t->id, &label));
   if (label) PetscFunctionReturn(PETSC_SUCCESS);
-  if (IsInteger(f))
+  if (IsInteger(f)) {
     PetscCall(DeckId(d, f, "an id", &t->id));
-  else
-    PetscCall(CopyName(d, d->loc, t->set, f));
+    t->id += IdShift(d, -1, node);
+  } else PetscCall(Scoped(d, d->loc, f, t->set));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1324,12 +1325,6 @@ static PetscErrorCode KwNodalThickness(Deck *d, const DeckKeyword *kw)
     PetscCall(TslDeckGrow(&m->nodal_thickness, sizeof(*nt), m->nnodal_thickness));
     nt = &m->nodal_thickness[m->nnodal_thickness++];
     PetscCall(ParseTarget(d, d->field[0], PETSC_TRUE, &nt->target));
-    if (d->part >= 0 && nt->target.set[0]) {
-      char set[TSL_NAME_LEN];
-      PetscCall(Scoped(d, d->loc, nt->target.set, set));
-      PetscCall(PetscStrncpy(nt->target.set, set, TSL_NAME_LEN));
-    } else if (d->part >= 0)
-      nt->target.id += IdShift(d, -1, PETSC_TRUE);
     PetscCall(FieldReal(d, 1, "the thickness", &nt->value));
     USER_CHECK(nt->value > 0, LOC_FMT "the thickness must be positive (got %g)", DLOC(d), (double)nt->value);
     nt->loc = d->loc;

@@ -718,9 +718,6 @@ static PetscErrorCode ReportChatter(Driver *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Increments of one step. dt is the controller's increment; each increment h = dt cut short at the step
- * end and at the next corner of an amplitude the step follows (so a slide reversal is never straddled).
- * A failed increment is retried from the last converged state with h * cutback. */
 /* What a job stopped in a step leaves, for its message: the last converged state at step time t, or none. */
 static const char *SavedState(const Driver *d, PetscReal t, char buf[], size_t len)
 {
@@ -731,6 +728,9 @@ static const char *SavedState(const Driver *d, PetscReal t, char buf[], size_t l
   return buf;
 }
 
+/* Increments of one step. dt is the controller's increment; each increment h = dt cut short at the step
+ * end and at the next corner of an amplitude the step follows (so a slide reversal is never straddled).
+ * A failed increment is retried from the last converged state with h * cutback. */
 static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
 {
   char            saved[128];

@@ -101,9 +101,11 @@ for n in $sizes; do
   for np in 1 2; do
     [ -n "${T[ts,$n,$np]:-}" ] || continue
     line="N=$n ranks=$np:"
+    sep=""
     for code in FEniCSx FEniCSx+THP; do
-      [ -n "${T[$code,$n,$np]:-}" ] && line="$line $code/thermoslide time $(awk -v a="${T[$code,$n,$np]}" -v b="${T[ts,$n,$np]}" 'BEGIN{printf "%.2f", a/b}'), memory $(awk -v a="${T[tsmem,$n,$np]}" -v b="${T[${code}mem,$n,$np]}" 'BEGIN{printf "%.2f", a/b}')"
-      [ -n "${T[$code,$n,$np]:-}" ] && [ "$code" = FEniCSx ] && [ -n "${T[FEniCSx+THP,$n,$np]:-}" ] && line="$line;"
+      [ -n "${T[$code,$n,$np]:-}" ] || continue
+      line="$line$sep $code/thermoslide time $(awk -v a="${T[$code,$n,$np]}" -v b="${T[ts,$n,$np]}" 'BEGIN{printf "%.2f", a/b}'), memory $(awk -v a="${T[tsmem,$n,$np]}" -v b="${T[${code}mem,$n,$np]}" 'BEGIN{printf "%.2f", a/b}')"
+      sep=";"
     done
     [ $np = 1 ] && [ -n "${T[ccx,$n]:-}" ] && line="$line; CalculiX/thermoslide time $(awk -v a="${T[ccx,$n]}" -v b="${T[ts,$n,1]}" 'BEGIN{printf "%.1f", a/b}'), memory $(awk -v a="${T[tsmem,$n,1]}" -v b="${T[ccxmem,$n]}" 'BEGIN{printf "%.2f", a/b}')"
     [ $np = 2 ] && [ -n "${T[ts,$n,1]:-}" ] && line="$line; thermoslide 2-rank speed-up $(awk -v a="${T[ts,$n,1]}" -v b="${T[ts,$n,2]}" 'BEGIN{printf "%.2f", a/b}')"
