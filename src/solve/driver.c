@@ -194,6 +194,7 @@ static PetscErrorCode SetUpSolver(Driver *d)
   d->ksp_rtol           = 1e-10;
   d->block_solves       = PETSC_TRUE;
   d->jacobi_scale       = 1.6;
+  d->amg_cycle          = PETSC_TRUE;
   d->implicit_records   = PETSC_TRUE;
   PetscOptionsBegin(d->comm, NULL, "thermoslide increment control", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_linear_forcing",
@@ -213,6 +214,10 @@ static PetscErrorCode SetUpSolver(Driver *d)
                            "this / (1.1 x its estimated largest eigenvalue of D^-1 A) (0: Chebyshev and hybrid Gauss-Seidel as before; the default "
                            "split only)",
                            0, PETSC_FALSE, 1.8, PETSC_FALSE, &d->jacobi_scale));
+  PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_amg_cycle",
+                           "the blocks' BoomerAMG V-cycle with Jacobi smoothing applied by thermoslide: each level's first sweep from zero "
+                           "without a product with the zero iterate (the same iterates as hypre's own cycle; the default split only)",
+                           &d->amg_cycle));
   PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_implicit_records",
                            "implicit residuals from the element force records (geometry and conduction computed once; docs/running.md)",
                            &d->implicit_records));
@@ -359,6 +364,7 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(TslSplitSetUp(pc, is_theta, is_u));
   PetscCall(TslSplitSetTriangular(pc, ksp, d->block_solves));
   PetscCall(TslSplitSetJacobiScale(pc, d->jacobi_scale));
+  PetscCall(TslSplitSetAmgCycle(pc, d->amg_cycle));
   PetscCall(SNESSetFromOptions(d->snes));
   {
     /* -pc_type fieldsplit: PETSc's own field split over the same two fields (its Schur and other types) */

@@ -34,6 +34,7 @@ typedef struct {
   PetscReal  ksp_rtol;             /* the linear tolerance of the first Newton iteration (-ksp_rtol) */
   PetscBool  block_solves;         /* -tsl_block_solves: a block-triangular operator's blocks solved by CG (split.c) */
   PetscReal  jacobi_scale;         /* -tsl_amg_jacobi_scale: per-level weights of BoomerAMG's Jacobi smoothing (split.c) */
+  PetscBool  amg_cycle;            /* -tsl_amg_cycle: BoomerAMG's V-cycle applied by thermoslide (amg.c) */
   PetscBool  chatter_told;         /* the cause of contact that does not settle was explained (ReportChatter) */
   PetscBool  implicit_records;     /* -tsl_implicit_records: residuals from the element force records */
   PetscBool  records_done;         /* ... built (or declined) at the first implicit step */
@@ -87,6 +88,9 @@ PetscErrorCode TslSplitSetUp(PC pc, IS is_theta, IS is_u);
 PetscErrorCode TslSplitOptionType(const char *prefix, PetscBool *additive);
 PetscErrorCode TslSplitSetFromOptions(PC pc);
 PetscErrorCode TslSplitSetJacobiScale(PC pc, PetscReal scale);
+PetscErrorCode TslSplitSetAmgCycle(PC pc, PetscBool on);
+/* BoomerAMG's plain V-cycle applied by thermoslide (amg.c), set after pc's set-up; *used: whether it applies */
+PetscErrorCode TslAmgCycleSet(PC pc, PetscBool on, PetscBool *used);
 PetscErrorCode TslSplitReset(PC pc);
 PetscErrorCode TslSplitIs(PC pc, PetscBool *is);
 PetscErrorCode TslSplitSetTriangular(PC pc, KSP outer, PetscBool allowed);

@@ -65,6 +65,8 @@ typedef struct {
   PetscReal jacobi_scale;                 /* 0: hypre's weights */
   PetscInt  nweight[2];                   /* levels weighted, per block (0: none) */
   PetscReal weight[2][32], lambda[2][32]; /* per level: the weight and the estimate it came from */
+  PetscBool amg_cycle;                    /* -tsl_amg_cycle: BoomerAMG's V-cycle applied by amg.c where it can */
+  PetscBool cycled[2];                    /* ... and applied so, per block */
 } Split;
 
 static const char *const prefix[2] = {"fieldsplit_T_", "fieldsplit_u_"};
@@ -649,6 +651,7 @@ static PetscErrorCode SetUp(PC pc)
     PetscCall(KSPSetUp(s->ksp[i]));
     PetscCall(JacobiWeights(s, i));
     PetscCall(KSPGetPC(s->ksp[i], &subpc));
+    PetscCall(TslAmgCycleSet(subpc, s->amg_cycle, &s->cycled[i]));
     PetscCall(PCGetFailedReason(subpc, &why));
     if (why != PC_NOERROR) PetscCall(PCSetFailedReason(pc, PC_SUBPC_ERROR));
   }
@@ -746,6 +749,7 @@ static PetscErrorCode View(PC pc, PetscViewer v)
       PetscCall(PetscViewerASCIIPrintf(v, "\n"));
       PetscCall(PetscViewerASCIIUseTabs(v, PETSC_TRUE));
     }
+    if (s->cycled[i]) PetscCall(PetscViewerASCIIPrintf(v, "BoomerAMG V-cycle applied by thermoslide (first sweep from zero; -tsl_amg_cycle)\n"));
     if (s->ksp[i]) PetscCall(KSPView(s->ksp[i], v));
     else PetscCall(PetscViewerASCIIPrintf(v, "not set up\n"));
     PetscCall(PetscViewerASCIIPopTab(v));
@@ -793,6 +797,7 @@ PetscErrorCode TslSplitSetUp(PC pc, IS is_theta, IS is_u)
   PetscCall(PetscObjectReference((PetscObject)is_u));
   s->is[0] = is_theta;
   s->is[1] = is_u;
+  s->amg_cycle = PETSC_TRUE;
   PetscCall(PCSetType(pc, PCSHELL));
   PetscCall(PCShellSetContext(pc, s));
   PetscCall(PCShellSetName(pc, "thermoslide field split"));
@@ -838,6 +843,18 @@ PetscErrorCode TslSplitSetJacobiScale(PC pc, PetscReal scale)
   PetscFunctionBeginUser;
   PetscCall(PCShellGetContext(pc, &s));
   s->jacobi_scale = scale;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Whether the blocks' BoomerAMG V-cycles are applied by thermoslide (amg.c) where they are hypre's plain
+ * cycle with Jacobi smoothing: the same arithmetic, one product with the zero iterate fewer per level. */
+PetscErrorCode TslSplitSetAmgCycle(PC pc, PetscBool on)
+{
+  Split *s;
+
+  PetscFunctionBeginUser;
+  PetscCall(PCShellGetContext(pc, &s));
+  s->amg_cycle = on;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
