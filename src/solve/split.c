@@ -42,6 +42,8 @@ typedef struct {
   KSP              ksp[2]; /* sub-solvers */
   Mat              A[2];   /* the blocks as the sub-solvers hold them (AIJ extract, or hypre's ParCSR) */
   Mat              Aut;    /* displacement rows, temperature columns */
+  PetscBool        aut_stale; /* Aut's values are not this operator's (block solves: the coupling goes through the operator) */
+  Vec              zf, wf;    /* whole-operator work vectors for that product */
   VecScatter       sc[2];  /* global vector -> block vectors */
   Vec              x[2], y[2], w;
   PetscBool        additive; /* -pc_fieldsplit_type additive */
@@ -459,6 +461,8 @@ PetscErrorCode TslSplitReset(PC pc)
     PetscCall(VecDestroy(&s->y[i]));
   }
   PetscCall(MatDestroy(&s->Aut));
+  PetscCall(VecDestroy(&s->zf));
+  PetscCall(VecDestroy(&s->wf));
   for (PetscInt i = 0; i < 3; i++) PetscCall(FreeArrays(&s->arr[i]));
   PetscCall(VecDestroy(&s->w));
   s->from       = NULL;
@@ -577,7 +581,7 @@ static PetscErrorCode SetUp(PC pc)
   PetscObjectState state;
   MatReuse         reuse;
   PC               sub;
-  PetscBool        hypre;
+  PetscBool        hypre, tri = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   PetscCall(PCShellGetContext(pc, &s));
@@ -608,10 +612,16 @@ static PetscErrorCode SetUp(PC pc)
   if (s->direct) PetscCall(Block(pc, s, P, 0, 0, &s->arr[0], &s->A[0]));
   else PetscCall(MatCreateSubMatrix(P, s->is[0], s->is[0], reuse, &s->A[0]));
   PetscCall(KSPSetOperators(s->ksp[0], s->A[0], s->A[0]));
-  /* coupling block */
-  if (!s->additive) {
+  /* block solves when the operator is block triangular (the temperature block's extraction found no displacement
+   * entry in its rows); the sub-solvers take the mode below, once the displacement solver exists */
+  if (s->tri_allowed && s->direct && !s->additive && !s->tri_failed) PetscCall(Triangular(s, PetscObjectComm((PetscObject)P), &tri));
+  /* coupling block: with block solves the outer method takes one iteration and so the split one coupling product,
+   * which goes through the operator itself (Coupling) instead of an extract made for it */
+  s->aut_stale = PETSC_TRUE;
+  if (!s->additive && !tri) {
     if (s->direct) PetscCall(Block(pc, s, P, 1, 0, &s->arr[1], &s->Aut));
     else PetscCall(MatCreateSubMatrix(P, s->is[1], s->is[0], s->Aut ? MAT_REUSE_MATRIX : MAT_INITIAL_MATRIX, &s->Aut));
+    s->aut_stale = PETSC_FALSE;
   }
   /* displacement block */
   PetscCall(KSPGetPC(s->ksp[1], &sub));
@@ -640,11 +650,7 @@ static PetscErrorCode SetUp(PC pc)
     if (sp) PetscCall(MatSetNearNullSpace(s->A[1], sp));
   }
   PetscCall(KSPSetOperators(s->ksp[1], s->A[1], s->A[1]));
-  {
-    PetscBool tri = PETSC_FALSE;
-    if (s->tri_allowed && s->direct && !s->additive && !s->tri_failed) PetscCall(Triangular(s, PetscObjectComm((PetscObject)P), &tri));
-    if (tri != s->tri) PetscCall(SubSolverMode(s, tri));
-  }
+  if (tri != s->tri) PetscCall(SubSolverMode(s, tri));
   for (PetscInt i = 0; i < 2; i++) {
     PC             subpc;
     PCFailedReason why;
@@ -688,6 +694,31 @@ static PetscErrorCode SubSolve(PC pc, Split *s, PetscInt i)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* w = A_uT y_T, the coupling block's product: through the whole operator with y_T in the temperature slots and
+ * zeros elsewhere while block solves hold (one product per operator: a pass over the operator instead of an
+ * extract of the block, its allocation and a pass over it), else the block, extracted now if this set-up had
+ * not (a block solve failed and the split went over to one cycle per outer iteration). */
+static PetscErrorCode Coupling(PC pc, Split *s, Vec yT, Vec w)
+{
+  PetscFunctionBeginUser;
+  if (s->aut_stale && s->tri) {
+    if (!s->zf) PetscCall(MatCreateVecs(s->from, &s->zf, &s->wf));
+    PetscCall(VecZeroEntries(s->zf));
+    PetscCall(VecScatterBegin(s->sc[0], yT, s->zf, INSERT_VALUES, SCATTER_REVERSE));
+    PetscCall(VecScatterEnd(s->sc[0], yT, s->zf, INSERT_VALUES, SCATTER_REVERSE));
+    PetscCall(MatMult(s->from, s->zf, s->wf));
+    PetscCall(VecScatterBegin(s->sc[1], s->wf, w, INSERT_VALUES, SCATTER_FORWARD));
+    PetscCall(VecScatterEnd(s->sc[1], s->wf, w, INSERT_VALUES, SCATTER_FORWARD));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (s->aut_stale) {
+    PetscCall(Block(pc, s, s->from, 1, 0, &s->arr[1], &s->Aut)); /* direct: block solves need it */
+    s->aut_stale = PETSC_FALSE;
+  }
+  PetscCall(MatMult(s->Aut, yT, w));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode Apply(PC pc, Vec b, Vec y)
 {
   Split *s;
@@ -712,7 +743,7 @@ static PetscErrorCode Apply(PC pc, Vec b, Vec y)
   PetscCall(VecScatterEnd(s->sc[1], b, s->x[1], INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(SubSolve(pc, s, 0));
   if (!s->additive) {
-    PetscCall(MatMult(s->Aut, s->y[0], s->w));
+    PetscCall(Coupling(pc, s, s->y[0], s->w));
     PetscCall(VecAXPY(s->x[1], -1.0, s->w));
   }
   PetscCall(SubSolve(pc, s, 1));
