@@ -12,8 +12,9 @@
 # leaves out its Python imports (0.6 s) and JIT (cached: a warm-up run fills the cache). Figures only,
 # never pass/fail (ctest -L bench). The peer's solution is compared with thermoslide's at each size
 # (printed max relative difference).
-# Each code runs REPEAT times (default 3) per case and its fastest run is reported: the machine's speed moves
-# by 10-20 % between runs. CalculiX runs once.
+# Each case runs REPEAT rounds (default 3) of one run per code, and each code's fastest run is reported: the
+# machine's speed moves by 10-20 % between runs and drifts over minutes, and the rounds give every code the same
+# slow and fast periods (before 2026-11-29 each code's runs came back to back). CalculiX runs once.
 # thermoslide asks for transparent huge pages by default (docs/running.md, "Memory pages"); the peer runs as a
 # user runs it (FEniCSx) and, unless PEER_THP=0, again with the same request (FEniCSx+THP: GLIBC_TUNABLES=
 # glibc.malloc.hugetlb=1), so that the table shows what the pages give either code.
@@ -30,26 +31,31 @@ peer_ok=1
 [ $peer_ok = 1 ] && /usr/bin/python3 "$here/peer_block.py" 2 "$out/warm" --no-output > /dev/null 2>&1
 
 field() { echo "$1" | tr ' ' '\n' | sed -n "s/^$2=//p"; }
-# peer TUNABLES CODE: REPEAT runs of the peer with GLIBC_TUNABLES=TUNABLES (empty: as a user runs it), its
-# fastest row printed as CODE; sets T[CODE,n,np] and T[CODEmem,n,np]
-peer() {
-  local tun=$1 code=$2 cmp="" plog=$out/peer$n.np$np.$2.log pbest="" pok=1 r t p
+# peer_run TUNABLES CODE R: run R of the peer with GLIBC_TUNABLES=TUNABLES (empty: as a user runs it); the
+# fastest run's log is kept as the code's log (PB: its time, PF: a run failed)
+declare -A PB PF
+peer_run() {
+  local tun=$1 code=$2 r=$3 cmp="" plog=$out/peer$n.np$np.$2.log t
+  [ "${PF[$code]:-0}" = 1 ] && return 0
   [ $np = 1 ] && [ -z "$tun" ] && cmp="--compare $out/ts$n.np1/block$n.h5"
-  for r in $(seq "$repeat"); do
-    if GLIBC_TUNABLES=$tun mpirun -x GLIBC_TUNABLES -n $np /usr/bin/python3 "$here/peer_block.py" "$n" "$out/peer$n.np$np" $cmp > "$plog.$r" 2>&1; then
-      t=$(field "$(grep "^PEER " "$plog.$r")" total_excl_import)
-      if [ -z "$pbest" ] || [ "$(echo "$t < $pbest" | bc)" = 1 ]; then pbest=$t; cp "$plog.$r" "$plog"; fi
-    else
-      pok=0; cp "$plog.$r" "$plog"; break
-    fi
-  done
-  if [ $pok = 1 ]; then
+  if GLIBC_TUNABLES=$tun mpirun -x GLIBC_TUNABLES -n $np /usr/bin/python3 "$here/peer_block.py" "$n" "$out/peer$n.np$np" $cmp > "$plog.$r" 2>&1; then
+    t=$(field "$(grep "^PEER " "$plog.$r")" total_excl_import)
+    if [ -z "${PB[$code]:-}" ] || [ "$(echo "$t < ${PB[$code]}" | bc)" = 1 ]; then PB[$code]=$t; cp "$plog.$r" "$plog"; fi
+  else
+    PF[$code]=1; cp "$plog.$r" "$plog"
+  fi
+  return 0
+}
+# peer_row CODE: the code's fastest row; sets T[CODE,n,np] and T[CODEmem,n,np]
+peer_row() {
+  local code=$1 plog=$out/peer$n.np$np.$1.log p
+  if [ "${PF[$code]:-0}" = 0 ] && [ -n "${PB[$code]:-}" ]; then
     p=$(grep "^PEER " "$plog")
     printf "%-4s %9d %-5s %-11s %7.3g %8.3g %7.3g %8.3g %8.3g %8.3g %7.3g %5s %9.0f\n" "$n" "$dofs" "$np" "$code" "$(field "$p" total_excl_import)" \
       "$(field "$p" mesh)" "$(field "$p" fe_setup)" "$(field "$p" assembly)" "$(field "$p" solver_setup)" "$(field "$p" solve)" "$(field "$p" output)" \
       "$(field "$p" its)" "$(field "$p" rss_max_mb)"
     T[$code,$n,$np]=$(field "$p" total_excl_import) T[${code}mem,$n,$np]=$(field "$p" rss_max_mb)
-    [ -n "$cmp" ] && grep -i "compare\|differ" "$plog" | head -2 | sed 's/^/       /'
+    [ $np = 1 ] && [ "$code" = FEniCSx ] && grep -i "compare\|differ" "$plog" | head -2 | sed 's/^/       /'
   else
     echo "peer failed: $plog"; tail -3 "$plog"
   fi
@@ -63,11 +69,17 @@ for n in $sizes; do
   dofs=$(( (2*n+1)*(n+1)*(n+1)*4 ))
   for np in 1 2; do
     log=$out/block$n.np$np.log best=""
-    # REPEAT runs, the fastest kept (this machine's speed moves between runs; the peer gets the same)
+    PB=() PF=()
+    # REPEAT rounds of one run of each code, the fastest of each kept: this machine's speed moves over
+    # minutes, and rounds give every code the same slow and fast periods
     for r in $(seq "$repeat"); do
       mpirun -n $np "$exe" "$deck" -o "$out/ts$n.np$np" > "$log.$r" 2>&1 || { echo "thermoslide failed: $log.$r"; tail -3 "$log.$r"; continue 2; }
       t=$(grep "thermoslide: wall time" "$log.$r" | awk '{print $4}')
       if [ -z "$best" ] || [ "$(echo "$t < $best" | bc)" = 1 ]; then best=$t; cp "$log.$r" "$log"; fi
+      if [ $peer_ok = 1 ]; then
+        peer_run "" FEniCSx "$r"
+        [ "$peer_thp" = 1 ] && peer_run glibc.malloc.hugetlb=1 FEniCSx+THP "$r"
+      fi
     done
     w=$(grep "thermoslide: wall time" "$log" | sed 's/[:,;]/ /g')
     tot=$(echo "$w" | awk '{print $4}')
@@ -80,8 +92,8 @@ for n in $sizes; do
     printf "%-4s %9d %-5s %-11s %7s %8s %7s %8s %8s %8s %7s %5s %9s\n" "$n" "$dofs" "$np" thermoslide "$tot" "$rp" "$su" "$as" "$ps" "$ls" "$op" "$its" "$mem"
     T[ts,$n,$np]=$tot T[tsmem,$n,$np]=$mem
     if [ $peer_ok = 1 ]; then
-      peer "" FEniCSx
-      [ "$peer_thp" = 1 ] && peer glibc.malloc.hugetlb=1 FEniCSx+THP
+      peer_row FEniCSx
+      [ "$peer_thp" = 1 ] && peer_row FEniCSx+THP
     fi
   done
   if command -v ccx > /dev/null && [ "$n" -le "$ccx_max" ]; then
