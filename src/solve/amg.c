@@ -15,9 +15,8 @@
  * Jacobi (relax type 0) on the way down and up without C/F ordering, the coarsest level by Jacobi or
  * Gaussian elimination, no smoother of hypre's smoothers list (Schwarz, ILU, ...), no block mode, no
  * additive cycles, no restriction operator other than P^T, no coarse-level agglomeration, no per-cycle
- * residual printed or logged by hypre. Any other
- * setting, or a hierarchy of one level, takes PCHYPRE's own application unchanged. -tsl_amg_cycle 0 turns
- * the cycle off (the same arithmetic either way). */
+ * residual printed or logged by hypre. Any other setting, or a hierarchy of one level, takes PCHYPRE's own
+ * application unchanged; -tsl_amg_cycle 0 turns the cycle off (the same arithmetic either way). */
 #include "solve_impl.h"
 #include <string.h>
 #include <petscmathypre.h>
