@@ -26,6 +26,11 @@
 typedef struct {
   PetscErrorCode (*apply)(PC, Vec, Vec); /* PCHYPRE's own application */
   hypre_ParVector *f, *u;                /* the finest level's right-hand side and iterate, on PETSc's arrays */
+  /* each level's diagonal, gathered from its rows' first entries for the sweeps from zero (which otherwise
+   * read one entry per row across the whole matrix); for the hierarchy of PCHYPRE's set-up at pc->matstate */
+  PetscInt         nl, *len;
+  HYPRE_Real     **diag;
+  PetscObjectState state;
 } Cycle;
 
 static const char key[] = "thermoslide_amg_cycle";
@@ -53,19 +58,42 @@ static PetscBool Plain(hypre_ParAMGData *amg)
 }
 
 /* One weighted-Jacobi sweep from u = 0: u_i = (w f_i) / a_ii, as hypre's sweep computes it (the row's
- * products with the zero iterate add nothing; a row with a zero diagonal is left at zero). hypre keeps each
- * row's diagonal first in the local block. */
-static void JacobiFromZero(hypre_ParCSRMatrix *A, hypre_ParVector *f, HYPRE_Real w, hypre_ParVector *u)
+ * products with the zero iterate add nothing; a row with a zero diagonal is left at zero). */
+static void JacobiFromZero(const HYPRE_Real *d, hypre_ParVector *f, HYPRE_Real w, hypre_ParVector *u)
 {
-  hypre_CSRMatrix     *D  = hypre_ParCSRMatrixDiag(A);
-  const HYPRE_Int     *di = hypre_CSRMatrixI(D), n = hypre_CSRMatrixNumRows(D);
-  const HYPRE_Complex *da = hypre_CSRMatrixData(D), *fa = hypre_VectorData(hypre_ParVectorLocalVector(f));
+  const HYPRE_Int      n  = hypre_VectorSize(hypre_ParVectorLocalVector(u));
+  const HYPRE_Complex *fa = hypre_VectorData(hypre_ParVectorLocalVector(f));
   HYPRE_Complex       *ua = hypre_VectorData(hypre_ParVectorLocalVector(u));
 
-  for (HYPRE_Int i = 0; i < n; i++) {
-    const HYPRE_Complex d = da[di[i]];
-    ua[i]                 = d != 0 ? w * fa[i] / d : 0;
+  for (HYPRE_Int i = 0; i < n; i++) ua[i] = d[i] != 0 ? w * fa[i] / d[i] : 0;
+}
+
+/* The levels' diagonals of the hierarchy PCHYPRE set up last (hypre keeps each row's diagonal first in the
+ * local block), gathered again after each set-up. */
+static PetscErrorCode Diagonals(PC pc, Cycle *cy, hypre_ParAMGData *amg)
+{
+  const PetscInt nl = hypre_ParAMGDataNumLevels(amg);
+
+  PetscFunctionBeginUser;
+  if (cy->nl != nl) {
+    for (PetscInt l = 0; l < cy->nl; l++) PetscCall(PetscFree(cy->diag[l]));
+    PetscCall(PetscFree2(cy->diag, cy->len));
+    PetscCall(PetscCalloc2(nl, &cy->diag, nl, &cy->len));
+    cy->nl = nl;
   }
+  for (PetscInt l = 0; l < nl; l++) {
+    hypre_CSRMatrix     *D  = hypre_ParCSRMatrixDiag(hypre_ParAMGDataAArray(amg)[l]);
+    const HYPRE_Int     *di = hypre_CSRMatrixI(D), n = hypre_CSRMatrixNumRows(D);
+    const HYPRE_Complex *da = hypre_CSRMatrixData(D);
+    if (cy->len[l] < n) {
+      PetscCall(PetscFree(cy->diag[l]));
+      PetscCall(PetscMalloc1(n, &cy->diag[l]));
+      cy->len[l] = n;
+    }
+    for (HYPRE_Int i = 0; i < n; i++) cy->diag[l][i] = di[i] < di[i + 1] ? da[di[i]] : 0;
+  }
+  cy->state = pc->matstate;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The sweeps after the first on one level (cycle_param: 1 down, 2 up, 3 coarsest), hypre's. */
@@ -82,7 +110,7 @@ static void Sweeps(hypre_ParAMGData *amg, PetscInt l, HYPRE_Int cp, HYPRE_Int fr
 
 /* One V-cycle on f0 from a zero iterate into u0. hypre's calls report through its error flag, which the
  * caller reads, as hypre's own cycle leaves them. */
-static void VCycle(hypre_ParAMGData *amg, hypre_ParVector *f0, hypre_ParVector *u0)
+static void VCycle(hypre_ParAMGData *amg, HYPRE_Real *const *diag, hypre_ParVector *f0, hypre_ParVector *u0)
 {
   hypre_ParCSRMatrix **A = hypre_ParAMGDataAArray(amg), **P = hypre_ParAMGDataPArray(amg), **R = hypre_ParAMGDataRArray(amg);
   hypre_ParVector    **F = hypre_ParAMGDataFArray(amg), **U = hypre_ParAMGDataUArray(amg), *V = hypre_ParAMGDataVtemp(amg);
@@ -92,7 +120,7 @@ static void VCycle(hypre_ParAMGData *amg, hypre_ParVector *f0, hypre_ParVector *
   for (PetscInt l = 0; l < c; l++) { /* down: smoothing from zero, residual, restriction */
     hypre_ParVector *f = l ? F[l] : f0, *u = l ? U[l] : u0;
     hypre_ParVectorSetLocalSize(V, hypre_VectorSize(hypre_ParVectorLocalVector(f)));
-    JacobiFromZero(A[l], f, w[l], u);
+    JacobiFromZero(diag[l], f, w[l], u);
     Sweeps(amg, l, 1, 1, f, u);
     hypre_ParCSRMatrixMatvecOutOfPlace(-1.0, A[l], u, 1.0, f, V);
     hypre_ParCSRMatrixMatvecT(1.0, R[l], V, 0.0, F[l + 1]);
@@ -102,7 +130,7 @@ static void VCycle(hypre_ParAMGData *amg, hypre_ParVector *f0, hypre_ParVector *
     hypre_ParVectorSetConstantValues(U[c], 0.0);
     for (HYPRE_Int j = 0; j < hypre_ParAMGDataNumGridSweeps(amg)[3]; j++) hypre_GaussElimSolve(amg, (HYPRE_Int)c, 9);
   } else {
-    JacobiFromZero(A[c], F[c], w[c], U[c]);
+    JacobiFromZero(diag[c], F[c], w[c], U[c]);
     Sweeps(amg, c, 3, 1, F[c], U[c]);
   }
   for (PetscInt l = c - 1; l >= 0; l--) { /* up: interpolation, smoothing */
@@ -147,6 +175,7 @@ static PetscErrorCode Apply(PC pc, Vec b, Vec x)
     PetscCall(cy->apply(pc, b, x));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  if (cy->state != pc->matstate || cy->nl != hypre_ParAMGDataNumLevels(amg)) PetscCall(Diagonals(pc, cy, amg));
   PetscCall(Wrapper(hypre_ParAMGDataFArray(amg)[0], &cy->f));
   PetscCall(Wrapper(hypre_ParAMGDataFArray(amg)[0], &cy->u));
   PetscCall(VecGetArrayRead(b, &ba));
@@ -154,7 +183,7 @@ static PetscErrorCode Apply(PC pc, Vec b, Vec x)
   hypre_VectorData(hypre_ParVectorLocalVector(cy->f)) = (HYPRE_Complex *)ba;
   hypre_VectorData(hypre_ParVectorLocalVector(cy->u)) = xa;
   PetscCall(PetscFPTrapPush(PETSC_FP_TRAP_OFF));
-  VCycle(amg, cy->f, cy->u);
+  VCycle(amg, cy->diag, cy->f, cy->u);
   PetscCall(PetscFPTrapPop());
   err = HYPRE_GetError();
   if (err) HYPRE_ClearAllErrors(); /* a "did not converge" of a smoother is no error here, as in PCHYPRE */
@@ -177,6 +206,8 @@ static PetscErrorCode Free(void *ctx)
     hypre_VectorData(hypre_ParVectorLocalVector(v)) = NULL;
     PetscCallExternal(hypre_ParVectorDestroy, v);
   }
+  for (PetscInt l = 0; l < cy->nl; l++) PetscCall(PetscFree(cy->diag[l]));
+  PetscCall(PetscFree2(cy->diag, cy->len));
   PetscCall(PetscFree(cy));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
