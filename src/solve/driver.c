@@ -363,8 +363,7 @@ static PetscErrorCode SetUpSolver(Driver *d)
    * (block Gauss-Seidel) split is then an exact block-triangular solve up to the AMG cycles */
   PetscCall(TslSplitSetUp(pc, is_theta, is_u));
   PetscCall(TslSplitSetTriangular(pc, ksp, d->block_solves));
-  PetscCall(TslSplitSetJacobiScale(pc, d->jacobi_scale));
-  PetscCall(TslSplitSetAmgCycle(pc, d->amg_cycle));
+  PetscCall(TslSplitSetAmg(pc, d->jacobi_scale, d->amg_cycle));
   PetscCall(SNESSetFromOptions(d->snes));
   {
     /* -pc_type fieldsplit: PETSc's own field split over the same two fields (its Schur and other types) */

@@ -87,8 +87,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time);
 PetscErrorCode TslSplitSetUp(PC pc, IS is_theta, IS is_u);
 PetscErrorCode TslSplitOptionType(const char *prefix, PetscBool *additive);
 PetscErrorCode TslSplitSetFromOptions(PC pc);
-PetscErrorCode TslSplitSetJacobiScale(PC pc, PetscReal scale);
-PetscErrorCode TslSplitSetAmgCycle(PC pc, PetscBool on);
+PetscErrorCode TslSplitSetAmg(PC pc, PetscReal jacobi_scale, PetscBool cycle);
 /* BoomerAMG's plain V-cycle applied by thermoslide (amg.c), set after pc's set-up; *used: whether it applies */
 PetscErrorCode TslAmgCycleSet(PC pc, PetscBool on, PetscBool *used);
 PetscErrorCode TslSplitReset(PC pc);

@@ -865,27 +865,18 @@ PetscErrorCode TslSplitTakeExtraCycles(PC pc, PetscInt *extra)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Weighted-Jacobi smoothing of the blocks' BoomerAMG hierarchies with per-level weights (JacobiWeights):
- * omega_l = scale / (1.1 lambda_l); 0 leaves hypre's weights. */
-PetscErrorCode TslSplitSetJacobiScale(PC pc, PetscReal scale)
+/* The blocks' BoomerAMG: weighted-Jacobi smoothing with per-level weights (JacobiWeights), omega_l = scale /
+ * (1.1 lambda_l), 0 leaving hypre's weights; and whether its V-cycles are applied by thermoslide (amg.c) where
+ * they are hypre's plain cycle with Jacobi smoothing (the same arithmetic, one product with the zero iterate
+ * fewer per level). */
+PetscErrorCode TslSplitSetAmg(PC pc, PetscReal scale, PetscBool cycle)
 {
   Split *s;
 
   PetscFunctionBeginUser;
   PetscCall(PCShellGetContext(pc, &s));
   s->jacobi_scale = scale;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Whether the blocks' BoomerAMG V-cycles are applied by thermoslide (amg.c) where they are hypre's plain
- * cycle with Jacobi smoothing: the same arithmetic, one product with the zero iterate fewer per level. */
-PetscErrorCode TslSplitSetAmgCycle(PC pc, PetscBool on)
-{
-  Split *s;
-
-  PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
-  s->amg_cycle = on;
+  s->amg_cycle    = cycle;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
