@@ -701,7 +701,7 @@ static PetscErrorCode SubSolve(PC pc, Split *s, PetscInt i)
 static PetscErrorCode Coupling(PC pc, Split *s, Vec yT, Vec w)
 {
   PetscFunctionBeginUser;
-  if (s->aut_stale && s->tri) {
+  if (s->tri) { /* block solves: the block was not extracted at this set-up */
     if (!s->zf) PetscCall(MatCreateVecs(s->from, &s->zf, &s->wf));
     PetscCall(VecZeroEntries(s->zf));
     PetscCall(VecScatterBegin(s->sc[0], yT, s->zf, INSERT_VALUES, SCATTER_REVERSE));
