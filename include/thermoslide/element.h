@@ -57,6 +57,9 @@ typedef struct TslGeometry {
    * product of two of its shape functions (degree 2 order; lines one more, for the r of axisymmetric
    * faces), so film and flux integrals are the consistent ones. n = 0 for a family that is never a face. */
   TslQuadrature as_face;
+  /* The rule of the lumping weights (HRZ: int N_a^2 dV, of degree twice the order) where the full rule does
+   * not integrate them exactly (tri6, tet10); n = 0: the full rule. */
+  TslQuadrature lump;
   PetscInt      xdmf_type; /* XDMF mixed-topology cell type id */
   /* Linear subdivision of a second-order family (line3: 2 line2, tri6: 4 tri3, tet10: 8 tet4; nsub = 0
    * otherwise). The "modified" types lump capacity and pressure loads on it, where the quadratic shape
@@ -108,6 +111,9 @@ typedef struct {
 PetscInt              TslElementTypeCount(void);
 const TslElementType *TslElementTypeGet(PetscInt index);
 PetscInt              TslElementTypeFind(const char *name);
+/* Is the row's name only the coupled reading of a CalculiX mechanical name (CPE6T for CPE6: no such type in the
+ * dialect), so that a deck may not name it directly? */
+PetscBool TslElementTypeMechanicalOnly(const TslElementType *t);
 /* Position of the temperature among a node's unknowns (the last one). */
 static inline PetscInt TslElementTypeThetaSlot(const TslElementType *t)
 {

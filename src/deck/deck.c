@@ -809,6 +809,10 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
   /* a conventional shell (S8RT, SAX2T) is read with its own nodes and the type it is expanded into (shell.c) */
   PetscCall(TslDeckShellType(tname, &shell, &type, &nn, &what));
   if (!shell) type = TslElementTypeFind(tname);
+  USER_CHECK(type < 0 || !TslElementTypeMechanicalOnly(TslElementTypeGet(type)),
+             LOC_FMT "unknown element type %s: the dialect has no such coupled type (CalculiX's mechanical %.*s is read with a temperature, "
+                     "docs/elements.md)",
+             KLOC(d), tname, (int)strlen(tname) - 1, tname);
   if (shell && !d->shell_noted) {
     PetscCall(PetscPrintf(PETSC_COMM_SELF,
                           LOC_FMT "note: %s shell elements are expanded into %s through the thickness each (docs/elements.md, "

@@ -33,6 +33,8 @@ static const TslElementType Catalogue[] = {
     {"CPE6MHT", &TslGeomTri6,   &TslFormModifiedHybrid, PLANE_STRAIN, "6-node modified second-order plane strain, hybrid"},
     {"CPE8T",   &TslGeomQuad8,  &TslFormFull,           PLANE_STRAIN, "8-node plane strain"},
     {"CPE8HT",  &TslGeomQuad8,  &TslFormHybrid,         PLANE_STRAIN, "8-node plane strain, hybrid"},
+    {"CPE8RT",  &TslGeomQuad8,  &TslFormReducedQuadratic, PLANE_STRAIN, "8-node plane strain, reduced integration"},
+    {"CPE6T",   &TslGeomTri6,   &TslFormFull,           PLANE_STRAIN, "6-node plane strain (CalculiX's CPE6 in a coupled step)"},
     {"CPE4PT",   &TslGeomQuad4, &TslFormFull,          PORE_PLANE,   "4-node plane strain, pore pressure (not active)"},
     {"CPE4PHT",  &TslGeomQuad4, &TslFormHybrid,        PORE_PLANE,   "4-node plane strain, pore pressure (not active), hybrid"},
     {"CPE4RPT",  &TslGeomQuad4, &TslFormReduced,       PORE_PLANE,   "4-node plane strain, pore pressure (not active), reduced integration, hourglass control"},
@@ -48,6 +50,8 @@ static const TslElementType Catalogue[] = {
     {"CPS4RT",  &TslGeomQuad4,  &TslFormReduced,        PLANE_STRESS, "4-node plane stress, reduced integration, hourglass control"},
     {"CPS6MT",  &TslGeomTri6,   &TslFormModified,       PLANE_STRESS, "6-node modified second-order plane stress"},
     {"CPS8T",   &TslGeomQuad8,  &TslFormFull,           PLANE_STRESS, "8-node plane stress"},
+    {"CPS8RT",  &TslGeomQuad8,  &TslFormReducedQuadratic, PLANE_STRESS, "8-node plane stress, reduced integration"},
+    {"CPS6T",   &TslGeomTri6,   &TslFormFull,           PLANE_STRESS, "6-node plane stress (CalculiX's CPS6 in a coupled step)"},
     {"CAX3T",   &TslGeomTri3,   &TslFormFull,           AXISYMMETRIC, "3-node axisymmetric"},
     {"CAX4T",   &TslGeomQuad4,  &TslFormFull,           AXISYMMETRIC, "4-node axisymmetric"},
     {"CAX4RT",  &TslGeomQuad4,  &TslFormReduced,        AXISYMMETRIC, "4-node axisymmetric, reduced integration, hourglass control"},
@@ -55,6 +59,8 @@ static const TslElementType Catalogue[] = {
     {"CAX6MT",  &TslGeomTri6,   &TslFormModified,       AXISYMMETRIC, "6-node modified second-order axisymmetric"},
     {"CAX6MHT", &TslGeomTri6,   &TslFormModifiedHybrid, AXISYMMETRIC, "6-node modified second-order axisymmetric, hybrid"},
     {"CAX8T",   &TslGeomQuad8,  &TslFormFull,           AXISYMMETRIC, "8-node axisymmetric"},
+    {"CAX8RT",  &TslGeomQuad8,  &TslFormReducedQuadratic, AXISYMMETRIC, "8-node axisymmetric, reduced integration"},
+    {"CAX6T",   &TslGeomTri6,   &TslFormFull,           AXISYMMETRIC, "6-node axisymmetric (CalculiX's CAX6 in a coupled step)"},
     {"CGAX4T",   &TslGeomQuad4, &TslFormFull,           AXITWIST,     "4-node axisymmetric with twist"},
     {"CGAX4RT",  &TslGeomQuad4, &TslFormReduced,        AXITWIST,     "4-node axisymmetric with twist, reduced integration, hourglass control"},
     {"CGAX4RHT", &TslGeomQuad4, &TslFormReducedHybrid,  AXITWIST,     "4-node axisymmetric with twist, reduced integration, hourglass control, hybrid"},
@@ -67,13 +73,28 @@ static const TslElementType Catalogue[] = {
     {"C3D8RT",  &TslGeomHex8,   &TslFormReduced,        SOLID,        "8-node brick, reduced integration, hourglass control"},
     {"C3D8RHT", &TslGeomHex8,   &TslFormReducedHybrid,  SOLID,        "8-node brick, reduced integration, hourglass control, hybrid"},
     {"C3D10MT", &TslGeomTet10,  &TslFormModified,       SOLID,        "10-node modified second-order tetrahedron"},
+    {"C3D10T",  &TslGeomTet10,  &TslFormFullSubFace,    SOLID,        "10-node tetrahedron, pressure on linear sub-faces"},
     {"C3D20T",  &TslGeomHex20,  &TslFormFull,           SOLID,        "20-node brick"},
     {"C3D20RT", &TslGeomHex20,  &TslFormReducedQuadratic, SOLID,      "20-node brick, reduced integration"},
+    {"C3D15T",  &TslGeomWedge15, &TslFormFullSubFace,   SOLID,        "15-node triangular prism, pressure on linear sub-faces (CalculiX's C3D15 in a coupled step)"},
     {"S8RT",    &TslGeomHex20,  &TslFormReducedQuadraticShell, SOLID, "8-node shell expanded: a 20-node brick through half its thickness, reduced integration, pressure on linear sub-faces"},
     {"SC6RT",   &TslGeomWedge6, &TslFormContinuumShell, CSHELL,       "6-node triangular in-plane continuum shell, reduced integration"},
     {"SC8RT",   &TslGeomHex8,   &TslFormContinuumShell, CSHELL,       "8-node hexahedral continuum shell, reduced integration, hourglass control"},
 };
 // clang-format on
+
+/* Rows whose name is not one of the dialect's: the coupled counterparts of CalculiX's mechanical CPE6, CPS6, CAX6
+ * and C3D15, which Abaqus has no coupled temperature-displacement type for (its coupled triangles are the modified
+ * ones, CPE6MT, ...; its coupled wedges C3D6T). A deck reaches them by the mechanical name in a coupled step
+ * (src/deck/deck.c); the name with T is refused as the dialect refuses it. */
+static const char *const MechanicalOnly[] = {"CPE6T", "CPS6T", "CAX6T", "C3D15T"};
+
+PetscBool TslElementTypeMechanicalOnly(const TslElementType *t)
+{
+  for (size_t i = 0; i < sizeof(MechanicalOnly) / sizeof(MechanicalOnly[0]); i++)
+    if (!strcmp(t->name, MechanicalOnly[i])) return PETSC_TRUE;
+  return PETSC_FALSE;
+}
 
 PetscInt TslElementTypeCount(void)
 {

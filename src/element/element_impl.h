@@ -6,7 +6,7 @@
 /* The geometry families (geometry.c), referenced by the catalogue rows and by each other (faces,
  * sub-elements). */
 extern const TslGeometry TslGeomLine2, TslGeomLine3, TslGeomTri3, TslGeomTri6, TslGeomQuad4, TslGeomQuad8, TslGeomTet4, TslGeomWedge6, TslGeomHex8,
-    TslGeomHex20, TslGeomTet10;
+    TslGeomHex20, TslGeomTet10, TslGeomWedge15;
 
 /* What distinguishes one kinematic assumption from another, in one place (kinematics.c). The kernels
  * only read this row, so a new element type is a catalogue row, and a new kinematics a table row. */
@@ -112,7 +112,7 @@ struct TslFormulation {
 #define TSL_MAX_PRESSURE 4
 
 /* The formulations (formulations.c). */
-extern const TslFormulation TslFormFull, TslFormReduced, TslFormReducedQuadratic, TslFormReducedQuadraticShell, TslFormHybrid, TslFormReducedHybrid,
+extern const TslFormulation TslFormFull, TslFormFullSubFace, TslFormReduced, TslFormReducedQuadratic, TslFormReducedQuadraticShell, TslFormHybrid, TslFormReducedHybrid,
     TslFormModified, TslFormModifiedHybrid, TslFormContinuumShell;
 
 /* Hourglass control of the one-point quad4 and hex8 (formulations.c): the Flanagan-Belytschko vectors

@@ -8,6 +8,7 @@
  *   quad8   midsides 5 (1-2), 6 (2-3), 7 (3-4), 8 (4-1)
  *   tet10   midsides 5 (1-2), 6 (2-3), 7 (3-1), 8 (1-4), 9 (2-4), 10 (3-4)
  *   wedge6  1-3 bottom triangle (zeta = -1), 4-6 top (zeta = +1), 1-2-3 counter-clockwise seen from the top
+ *   wedge15 as wedge6, then midsides 7 (1-2), 8 (2-3), 9 (3-1), 10 (4-5), 11 (5-6), 12 (6-4), 13 (1-4), 14 (2-5), 15 (3-6)
  * The dialect lists the 3D faces with an inward right-hand normal (C3D8 S1 = 1-2-3-4, C3D4 S1 = 1-2-3,
  * C3D6 S3 = 1-4-5-2); face_node[] holds the same node sets in the reversed (outward) order, which is
  * what the face-load kernels assume. 2D faces keep the dialect's order (body on the left).
@@ -173,6 +174,42 @@ static void ShapeWedge6(const PetscReal xi[], PetscReal N[], PetscReal dN[])
   }
 }
 
+/* 15-node wedge: the tri6 of (xi, eta) times a quadratic in zeta, without the face and centre nodes of the full
+ * product (the dialect's C3D15). Node order: corners 1-3 (zeta = -1), 4-6 (zeta = +1), the midsides of the bottom
+ * edges 7 (1-2), 8 (2-3), 9 (3-1), of the top edges 10 (4-5), 11 (5-6), 12 (6-4), and of the vertical edges
+ * 13 (1-4), 14 (2-5), 15 (3-6). With L the barycentrics and s = -1 below, +1 above:
+ *   corner       N = L (2 L - 1)(1 + s zeta) / 2 - L (1 - zeta^2) / 2
+ *   edge (a, b)  N = 2 L_a L_b (1 + s zeta)
+ *   vertical     N = L (1 - zeta^2)
+ * (each is 1 at its node and 0 at the others; they sum to one). */
+static void ShapeWedge15(const PetscReal xi[], PetscReal N[], PetscReal dN[])
+{
+  PetscReal       L[4], dL[4][3];
+  const PetscReal z = xi[2];
+
+  Barycentric(2, xi, L, dL);
+  for (int a = 0; a < 6; a++) {
+    const PetscInt  c = a % 3;
+    const PetscReal s = a < 3 ? -1 : 1, fz = 1 + s * z, gz = 1 - z * z, q = L[c] * (2 * L[c] - 1);
+    N[a]          = 0.5 * q * fz - 0.5 * L[c] * gz;
+    for (int j = 0; j < 2; j++) dN[3 * a + j] = (0.5 * (4 * L[c] - 1) * fz - 0.5 * gz) * dL[c][j];
+    dN[3 * a + 2] = 0.5 * q * s + L[c] * z;
+  }
+  for (int e = 0; e < 6; e++) {
+    const PetscInt  ea = Tri6Edges[e % 3][0], eb = Tri6Edges[e % 3][1], m = 6 + e;
+    const PetscReal s = e < 3 ? -1 : 1, fz = 1 + s * z;
+    N[m]          = 2 * L[ea] * L[eb] * fz;
+    for (int j = 0; j < 2; j++) dN[3 * m + j] = 2 * (L[eb] * dL[ea][j] + L[ea] * dL[eb][j]) * fz;
+    dN[3 * m + 2] = 2 * L[ea] * L[eb] * s;
+  }
+  for (int c = 0; c < 3; c++) {
+    const PetscInt m = 12 + c;
+    N[m]             = L[c] * (1 - z * z);
+    for (int j = 0; j < 2; j++) dN[3 * m + j] = dL[c][j] * (1 - z * z);
+    dN[3 * m + 2] = -2 * L[c] * z;
+  }
+}
+
 static void ShapeHex8(const PetscReal xi[], PetscReal N[], PetscReal dN[])
 {
   static const PetscReal s[8] = {-1, 1, 1, -1, -1, 1, 1, -1}, t[8] = {-1, -1, 1, 1, -1, -1, 1, 1}, r[8] = {-1, -1, -1, -1, 1, 1, 1, 1};
@@ -285,6 +322,27 @@ static void ShapeHex20(const PetscReal xi[], PetscReal N[], PetscReal dN[])
 #define QUAD_WEDGE_6 \
   {.n = 6, .xi = {{T1, T1, -G2}, {T2, T1, -G2}, {T1, T2, -G2}, {T1, T1, G2}, {T2, T1, G2}, {T1, T2, G2}}, \
    .w = {T1, T1, T1, T1, T1, T1}, .degree = 2}
+/* tet10's lumping rule (HRZ: N_a^2 is of degree 4): the symmetric 14-point degree-5 rule of Walkington (2000) /
+ * Keast (1986), three orbits of barycentric points, positive weights (checked against the monomials' exact
+ * integrals in tests/element/test_geometry.c): (a, a, a, 1 - 3a) twice and (b, b, 1/2 - b, 1/2 - b) */
+#define K5A 0.0927352503108912 /* weight 0.0734930431163619 / 6 */
+#define K5W (0.0734930431163619 / 6)
+#define K5B 0.3108859192633006 /* weight 0.1126879257180162 / 6 */
+#define K5V (0.1126879257180162 / 6)
+#define K5C 0.0455037041256496 /* weight 0.0425460207770812 / 6 */
+#define K5U (0.0425460207770812 / 6)
+#define K5O(a) {a, a, a}, {1 - 3 * (a), a, a}, {a, 1 - 3 * (a), a}, {a, a, 1 - 3 * (a)}
+#define QUAD_TET_14 \
+  {.n = 14, \
+   .xi = {K5O(K5A), K5O(K5B), {K5C, K5C, 0.5 - K5C}, {K5C, 0.5 - K5C, K5C}, {0.5 - K5C, K5C, K5C}, {0.5 - K5C, 0.5 - K5C, K5C}, \
+          {0.5 - K5C, K5C, 0.5 - K5C}, {K5C, 0.5 - K5C, 0.5 - K5C}}, \
+   .w = {K5W, K5W, K5W, K5W, K5V, K5V, K5V, K5V, K5U, K5U, K5U, K5U, K5U, K5U}, .degree = 5}
+
+/* wedge15: the triangle's degree-4 rule times 3-point Gauss in zeta (18 points, total degree 4): exact for the
+ * stiffness and conduction of a straight-sided element and for HRZ's N_a^2 */
+#define W18(z) {D4A, D4A, z}, {1 - 2 * D4A, D4A, z}, {D4A, 1 - 2 * D4A, z}, {D4B, D4B, z}, {1 - 2 * D4B, D4B, z}, {D4B, 1 - 2 * D4B, z}
+#define V18(w) D4W * (w), D4W * (w), D4W * (w), D4V * (w), D4V * (w), D4V * (w)
+#define QUAD_WEDGE_18 {.n = 18, .xi = {W18(-G3), W18(0), W18(G3)}, .w = {V18(W3E), V18(W3C), V18(W3E)}, .degree = 4}
 /* clang-format on */
 
 /* ---- geometry families ----------------------------------------------------------------------- */
@@ -360,7 +418,8 @@ const TslGeometry TslGeomTri6 = {
     .full       = QUAD_TRI_3,
     .reduced    = QUAD_TRI_1,
     .as_face    = QUAD_TRI_6,
-    .xdmf_type  = 36, /* Triangle_6 */
+    .lump       = QUAD_TRI_6, /* HRZ: N_a^2 of degree 4 */
+    .xdmf_type  = 36,         /* Triangle_6 */
     .nsub       = 4,
     .sub_geom   = &TslGeomTri3,
     .sub_node   = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}},
@@ -446,7 +505,8 @@ const TslGeometry TslGeomTet10 = {
     .ref_volume = 1.0 / 6,
     .full       = QUAD_TET_4,
     .reduced    = QUAD_TET_1,
-    .xdmf_type  = 38, /* Tetrahedron_10 */
+    .lump       = QUAD_TET_14, /* HRZ: N_a^2 of degree 4 */
+    .xdmf_type  = 38,          /* Tetrahedron_10 */
     .nsub       = 8,
     .sub_geom   = &TslGeomTet4,
     .sub_node   = {{0, 4, 6, 7}, {4, 1, 5, 8}, {6, 5, 2, 9}, {7, 8, 9, 3}, {4, 5, 6, 9}, {4, 6, 7, 9}, {4, 7, 8, 9}, {4, 8, 5, 9}},
@@ -512,4 +572,38 @@ const TslGeometry TslGeomHex20 = {
     .full       = QUAD_HEX_27,
     .reduced    = QUAD_HEX_8,
     .xdmf_type  = 48, /* Hexahedron_20 */
+};
+
+/* Faces (outward) as wedge6, each followed by its midsides on the face edges: S1 1-3-2 (9, 8, 7), S2 4-5-6
+ * (10, 11, 12), S3 1-2-5-4 (7, 14, 10, 13), S4 2-3-6-5 (8, 15, 11, 14), S5 3-1-4-6 (9, 13, 12, 15). */
+const TslGeometry TslGeomWedge15 = {
+    .name       = "wedge15",
+    .dim        = 3,
+    .nnode      = 15,
+    .ncorner    = 6,
+    .order      = 2,
+    .nface      = 5,
+    .face_nnode = {6, 6, 8, 8, 8},
+    .face_node  = {{0, 2, 1, 8, 7, 6}, {3, 4, 5, 9, 10, 11}, {0, 1, 4, 3, 6, 13, 9, 12}, {1, 2, 5, 4, 7, 14, 10, 13}, {2, 0, 3, 5, 8, 12, 11, 14}},
+    .face_geom  = {&TslGeomTri6, &TslGeomTri6, &TslGeomQuad8, &TslGeomQuad8, &TslGeomQuad8},
+    .shape      = ShapeWedge15,
+    .node_xi    = {{0, 0, -1},
+                   {1, 0, -1},
+                   {0, 1, -1},
+                   {0, 0, 1},
+                   {1, 0, 1},
+                   {0, 1, 1},
+                   {0.5, 0, -1},
+                   {0.5, 0.5, -1},
+                   {0, 0.5, -1},
+                   {0.5, 0, 1},
+                   {0.5, 0.5, 1},
+                   {0, 0.5, 1},
+                   {0, 0, 0},
+                   {1, 0, 0},
+                   {0, 1, 0}},
+    .ref_volume = 1,
+    .full       = QUAD_WEDGE_18,
+    .reduced    = QUAD_WEDGE_6,
+    .xdmf_type  = 40, /* Wedge_15 (ParaView's node order is the dialect's) */
 };

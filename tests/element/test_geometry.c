@@ -18,7 +18,7 @@ typedef struct {
 
 static const Family Families[] = {
     {&TslGeomLine2, 0}, {&TslGeomLine3, 0}, {&TslGeomTri3, 2},   {&TslGeomTri6, 2}, {&TslGeomQuad4, 0}, {&TslGeomQuad8, 0},
-    {&TslGeomTet4, 3},  {&TslGeomTet10, 3}, {&TslGeomWedge6, 2}, {&TslGeomHex8, 0}, {&TslGeomHex20, 0},
+    {&TslGeomTet4, 3},  {&TslGeomTet10, 3}, {&TslGeomWedge6, 2}, {&TslGeomWedge15, 2}, {&TslGeomHex8, 0}, {&TslGeomHex20, 0},
 };
 #define NFAMILY ((PetscInt)(sizeof(Families) / sizeof(Families[0])))
 
@@ -409,7 +409,7 @@ static void CheckSubElements(TestLog *log, const TslGeometry *g)
 /* Nodes of an XDMF cell type id (XdmfTopologyType), 0 for the variable-length Polyline. */
 static PetscInt XdmfNodes(PetscInt type)
 {
-  static const PetscInt table[][2] = {{2, 0}, {4, 3}, {5, 4}, {6, 4}, {8, 6}, {9, 8}, {34, 3}, {36, 6}, {37, 8}, {38, 10}, {48, 20}};
+  static const PetscInt table[][2] = {{2, 0}, {4, 3}, {5, 4}, {6, 4}, {8, 6}, {9, 8}, {34, 3}, {36, 6}, {37, 8}, {38, 10}, {40, 15}, {48, 20}};
   for (size_t i = 0; i < sizeof(table) / sizeof(table[0]); i++)
     if (table[i][0] == type) return table[i][1];
   return -1;
@@ -466,6 +466,7 @@ int main(int argc, char **argv)
     CheckQuadrature(&log, f, &g->full, "full");
     CheckQuadrature(&log, f, &g->reduced, "reduced");
     if (g->as_face.n) CheckQuadrature(&log, f, &g->as_face, "as-face");
+    if (g->lump.n) CheckQuadrature(&log, f, &g->lump, "lumping");
     Check(&log, g->full.degree >= g->reduced.degree, 1, 0, "%s full rule at least as exact as the reduced one", g->name);
     CheckFaces(&log, f);
     CheckSubElements(&log, g);
