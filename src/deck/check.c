@@ -31,19 +31,47 @@ static const char *DofList(const TslModel *m, char *buf, size_t len)
   return "1..3, 11";
 }
 
-/* Two nodes of one element at the same place collapse it just as a node given twice does (which the
- * reader rejects at the element's line): the Jacobian is singular at that corner, yet the Gauss points
- * may not see it, so the solve would run on a wrong element. "Same place": closer than 1e-10 of the
- * element's size. Needs the node index and every node defined. */
+/* The element's edges as (corner, corner, midside or -1) in element-local positions, from its faces (in 2D the
+ * faces are the edges; in 3D each face's corner cycle, its midside nodes following the corners). Returns their
+ * number (an edge shared by two faces is listed twice). */
+static PetscInt FamilyEdges(const TslGeometry *g, PetscInt edge[][3])
+{
+  PetscInt ne = 0;
+
+  for (PetscInt f = 0; f < g->nface; f++) {
+    const TslGeometry *fg = g->face_geom[f];
+    const PetscInt    *v  = g->face_node[f];
+    if (g->dim == 2) {
+      edge[ne][0] = v[0], edge[ne][1] = v[1], edge[ne][2] = g->face_nnode[f] > 2 ? v[2] : -1, ne++;
+      continue;
+    }
+    for (PetscInt k = 0; k < fg->ncorner; k++)
+      edge[ne][0] = v[k], edge[ne][1] = v[(k + 1) % fg->ncorner], edge[ne][2] = fg->nnode > fg->ncorner ? v[fg->ncorner + k] : -1, ne++;
+  }
+  return ne;
+}
+
+/* Collapsed elements as Abaqus/CAE writes them: a node id given at several positions of a quadrilateral or a
+ * brick (CPE4T 1, 2, 3, 3: a triangle at a sweep's axis; C3D8T with 3 = 4 and 7 = 8: a wedge). They are
+ * integrated as they are (docs/elements.md, "Collapsed elements"): the positions of one id must be the corners
+ * of edges of the element joined to one another (never a diagonal), with the midside node of such an edge among
+ * them, and the element must keep a positive Jacobian at every integration point (no zero volume). Two different
+ * node ids at the same place are refused: closer than 1e-10 of the element's size, which no mesh means (the
+ * Jacobian is singular at that corner, yet the Gauss points may not see it). Needs the node index and every node
+ * defined. */
 static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
 {
-  PetscInt  n    = m->elem_ptr[e + 1] - m->elem_ptr[e], idx[27];
-  PetscReal size = 0;
+  const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
+  const TslGeometry    *g = t->geom;
+  const PetscInt       *conn = &m->elem_conn[m->elem_ptr[e]];
+  PetscInt              n = m->elem_ptr[e + 1] - m->elem_ptr[e], idx[27], edge[24][3], ne;
+  PetscReal             size = 0;
+  PetscBool             repeated = PETSC_FALSE;
 
   PetscFunctionBeginUser;
   if (n > 27) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt a = 0; a < n; a++) {
-    idx[a] = TslModelNodeIndex(m, m->elem_conn[m->elem_ptr[e] + a]);
+    idx[a] = TslModelNodeIndex(m, conn[a]);
     if (idx[a] < 0) PetscFunctionReturn(PETSC_SUCCESS); /* reported as an undefined node */
   }
   for (PetscInt a = 0; a < n; a++)
@@ -51,11 +79,67 @@ static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
   for (PetscInt a = 0; a < n; a++)
     for (PetscInt b = a + 1; b < n; b++) {
       PetscReal dist = 0;
+      if (conn[a] == conn[b]) {
+        repeated = PETSC_TRUE;
+        continue;
+      }
       for (PetscInt c = 0; c < 3; c++) dist = PetscMax(dist, PetscAbsReal(m->node_xyz[3 * idx[a] + c] - m->node_xyz[3 * idx[b] + c]));
       CHECK(dist > 1e-10 * size, ElemLoc(m, e),
-            "element %" PetscInt_FMT ": nodes %" PetscInt_FMT " and %" PetscInt_FMT " are at the same place (a collapsed element; not supported)",
-            m->elem_id[e], m->elem_conn[m->elem_ptr[e] + a], m->elem_conn[m->elem_ptr[e] + b]);
+            "element %" PetscInt_FMT ": nodes %" PetscInt_FMT " and %" PetscInt_FMT " are at the same place (a collapsed element repeats one node id; "
+            "two ids at one place are not supported)",
+            m->elem_id[e], conn[a], conn[b]);
     }
+  if (!repeated) PetscFunctionReturn(PETSC_SUCCESS);
+  CHECK(n <= g->nnode + t->nextra && n >= g->nnode, ElemLoc(m, e), "element %" PetscInt_FMT " has %" PetscInt_FMT " nodes", m->elem_id[e], n);
+  ne = FamilyEdges(g, edge);
+  for (PetscInt a = 0; a < g->nnode; a++) {
+    PetscInt  group[27], ng = 0, reached[64], nr = 1;
+    PetscBool grew = PETSC_TRUE;
+    for (PetscInt b = 0; b < g->nnode; b++)
+      if (conn[b] == conn[a]) group[ng++] = b;
+    if (ng < 2 || group[0] != a) continue; /* each id once, from its first position */
+    /* the corners of the group reached from its first one along edges inside the group; a midside node must be
+     * the midside of such an edge, and such an edge's midside must be in the group */
+    reached[0] = a;
+    while (grew) {
+      grew = PETSC_FALSE;
+      for (PetscInt k = 0; k < ne; k++)
+        for (PetscInt s = 0; s < 2; s++) {
+          const PetscInt p = edge[k][s], q = edge[k][1 - s];
+          PetscBool      hasp = PETSC_FALSE, hasq = PETSC_FALSE;
+          for (PetscInt r = 0; r < nr; r++) hasp = (PetscBool)(hasp || reached[r] == p), hasq = (PetscBool)(hasq || reached[r] == q);
+          if (hasp && !hasq && conn[q] == conn[a]) reached[nr++] = q, grew = PETSC_TRUE;
+        }
+    }
+    for (PetscInt k = 0; k < ne; k++) {
+      const PetscBool in = (PetscBool)(conn[edge[k][0]] == conn[a] && conn[edge[k][1]] == conn[a]);
+      if (in && edge[k][2] >= 0) reached[nr++] = edge[k][2];
+      if (in && edge[k][2] >= 0)
+        CHECK(conn[edge[k][2]] == conn[a], ElemLoc(m, e),
+              "element %" PetscInt_FMT " repeats node %" PetscInt_FMT " at the ends of an edge whose midside node %" PetscInt_FMT
+              " is another (a collapsed %s edge takes one id for all three nodes)",
+              m->elem_id[e], conn[a], conn[edge[k][2]], t->name);
+    }
+    for (PetscInt i = 0; i < ng; i++) {
+      PetscBool found = PETSC_FALSE;
+      for (PetscInt r = 0; r < nr; r++) found = (PetscBool)(found || reached[r] == group[i]);
+      CHECK(found, ElemLoc(m, e),
+            "element %" PetscInt_FMT " repeats node %" PetscInt_FMT " at positions %" PetscInt_FMT " and %" PetscInt_FMT
+            ", which no edge of a %s joins (a collapsed element repeats a node along its edges only)",
+            m->elem_id[e], conn[a], a + 1, group[i] + 1, t->name);
+    }
+  }
+  {
+    PetscReal          x[3 * TSL_MAX_ELEM_NODES] = {0};
+    TslElementSection  sec = {0};
+    TslElementInput    in;
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt c = 0; c < 3; c++) x[3 * a + c] = m->node_xyz[3 * idx[a] + c];
+    in = (TslElementInput){.type = t, .sec = &sec, .x = x};
+    CHECK(TslElementValid(&in), ElemLoc(m, e),
+          "element %" PetscInt_FMT " (%s) repeats a node and collapses to no volume, or is inverted, at an integration point", m->elem_id[e],
+          t->name);
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

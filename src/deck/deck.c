@@ -865,12 +865,13 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
       PetscCall(TslDeckGrow(&m->elem_conn, sizeof(PetscInt), k));
       PetscCall(FieldId(d, 1 + j, "a node id", &m->elem_conn[k]));
       m->elem_conn[k] += IdShift(d, -1, PETSC_TRUE);
-      /* a node given twice collapses the element (a quad into a triangle...): its Jacobian is singular at
-       * the collapsed corner, and no element type here has the special treatment that would need */
-      for (PetscInt i = m->elem_ptr[m->nelem]; i < k; i++)
+      /* a node given twice collapses the element (Abaqus/CAE's triangles and wedges written as quadrilaterals and
+       * bricks): the model check accepts it along the element's edges with a positive volume (check.c,
+       * CheckCollapsed); a conventional shell's expansion takes its nodes' normals, so no shell repeats one */
+      for (PetscInt i = m->elem_ptr[m->nelem]; i < k && shell; i++)
         USER_CHECK(m->elem_conn[i] != m->elem_conn[k],
                    LOC_FMT "element %" PetscInt_FMT " repeats node %" PetscInt_FMT ": collapsed (degenerate) %s elements are not supported", DLOC(d),
-                   id, m->elem_conn[k], shell ? shell : et->name);
+                   id, m->elem_conn[k], shell);
       k++;
     }
     m->elem_id[m->nelem]           = id;

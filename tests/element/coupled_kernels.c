@@ -2,6 +2,7 @@
  * (rigid motion, free thermal expansion, constrained expansion, linear temperature), volumes, tangent
  * against central differences of the residual, face loads, heat change and inverted elements; a continuum
  * shell's STACK DIRECTION (its element renumbered). */
+#include <string.h>
 #include "check.h"
 
 typedef struct {
@@ -270,6 +271,26 @@ static void FaceAreaVector(const Case *c, PetscInt f, PetscReal A[3])
     A[1] += 0.5 * (p[2] * q[0] - p[0] * q[2]);
     A[2] += 0.5 * (p[0] * q[1] - p[1] * q[0]);
   }
+}
+
+/* HRZ lumping of the full quadratic triangle and tetrahedron (CPE6T, C3D10T), straight-sided: V_a = V int N_a^2 /
+ * sum_b int N_b^2 is V/19 at the tri6 corners and 16V/57 at its midside nodes, V/36 at the tet10 corners and 4V/27
+ * at its midside nodes (closed form: int L^4 = 2!4!/6! A ..., docs/elements.md); the lumping rule must be exact
+ * for N_a^2 to give them. */
+static PetscErrorCode CheckExactLumping(TestLog *log, Case *c)
+{
+  const TslGeometry *g = c->type->geom;
+  const PetscBool    tri = (PetscBool)(g->nnode == 6);
+  PetscReal          vol[TSL_MAX_ELEM_NODES], V = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslElementNodalVolume(&c->in, vol));
+  for (PetscInt a = 0; a < g->nnode; a++) V += vol[a];
+  for (PetscInt a = 0; a < g->nnode; a++) {
+    const PetscReal want = a < g->ncorner ? (tri ? 1.0 / 19 : 1.0 / 36) : (tri ? 16.0 / 57 : 4.0 / 27);
+    Check(log, vol[a] / V, want, 1e-13, "%s HRZ lumped weight of node %" PetscInt_FMT " / V", c->type->name, a + 1);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 static PetscErrorCode CheckVolumeAndHeat(TestLog *log, Case *c)
@@ -686,6 +707,10 @@ int main(int argc, char **argv)
     PetscCall(CheckLinearTemperature(&log, &c));
     CaseSetUp(&c, type, 0);
     PetscCall(CheckVolumeAndHeat(&log, &c));
+    if (!strcmp(type->name, "CPE6T") || !strcmp(type->name, "C3D10T")) {
+      CaseSetUp(&c, type, 0);
+      PetscCall(CheckExactLumping(&log, &c));
+    }
     CaseSetUp(&c, type, 0);
     PetscCall(CheckFaceLoads(&log, &c));
     CaseSetUp(&c, type, 0);

@@ -39,7 +39,7 @@ class Result:
     def elements(self):
         """Connectivity (natural node indices) of each element from the Mixed topology."""
         topo, out, k = self.h5["/mesh/topology"][...], [], 0
-        sizes = {4: 3, 5: 4, 6: 4, 8: 6, 9: 8, 36: 6, 37: 8, 38: 10, 48: 20}
+        sizes = {4: 3, 5: 4, 6: 4, 8: 6, 9: 8, 36: 6, 37: 8, 38: 10, 40: 15, 48: 20}
         while k < len(topo):
             n = sizes[int(topo[k])]
             out.append(topo[k + 1:k + 1 + n])

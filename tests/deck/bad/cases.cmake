@@ -28,6 +28,7 @@ tsl_deck_bad(undefined_set undefined_set.inp "error: undefined_set.inp:23: undef
 tsl_deck_bad(undefined_surface undefined_surface.inp "error: undefined_surface.inp:24: undefined surface HOT")
 tsl_deck_bad(unexpected_data unexpected_data.inp "error: unexpected_data.inp:24: data line not expected here (after *END STEP)")
 tsl_deck_bad(unknown_element_type unknown_element_type.inp "error: unknown_element_type.inp:6: unknown element type CPE99T")
+tsl_deck_bad(mechanical_only_type mechanical_only_type.inp "error: mechanical_only_type.inp:6: unknown element type CPE6T: the dialect has no such coupled type (CalculiX's mechanical CPE6 is read with a temperature")
 tsl_deck_bad(unknown_keyword unknown_keyword.inp "error: unknown_keyword.inp:18: unsupported keyword *FROBNICATE")
 tsl_deck_bad(wrong_node_count wrong_node_count.inp "error: wrong_node_count.inp:8: element has 3 nodes but type CPE4T needs 4")
 # Contact keywords
@@ -63,8 +64,9 @@ tsl_deck_bad(young_negative young_negative.inp "error: young_negative.inp:12: ma
 tsl_deck_bad(poisson_low poisson_low.inp "error: poisson_low.inp:12: material STEEL: Poisson's ratio must lie in (-1, 0.5) (got -1.)")
 tsl_deck_bad(film_negative film_negative.inp "error: film_negative.inp:26: the film coefficient must not be negative (got -5.)")
 tsl_deck_bad(smooth_half smooth_half.inp "error: smooth_half.inp:26: *CONTACT PAIR: SMOOTH must lie in [0, 0.5) (got 0.5)")
-tsl_deck_bad(collapsed_quad collapsed_quad.inp "error: collapsed_quad.inp:9: element 1 repeats node 1: collapsed (degenerate) CPE4T elements are not supported")
-tsl_deck_bad(collapsed_hex collapsed_hex.inp "error: collapsed_hex.inp:11: element 1 repeats node 7: collapsed (degenerate) C3D8T elements are not supported")
+# collapsed elements: along the edges, with a volume (a diagonal pair, a brick flattened onto its bottom face)
+tsl_deck_bad(collapsed_quad collapsed_quad.inp "error: collapsed_quad.inp:9: element 1 repeats node 1 at positions 1 and 3, which no edge of a CPE4T joins")
+tsl_deck_bad(collapsed_hex collapsed_hex.inp "error: collapsed_hex.inp:11: element 1 (C3D8T) repeats a node and collapses to no volume, or is inverted, at an integration point")
 tsl_deck_bad(number_overflow number_overflow.inp "error: number_overflow.inp:4: expected a number for the x coordinate, got '1e999'")
 tsl_deck_bad(number_nan number_nan.inp "error: number_nan.inp:18: expected a number for the specific heat, got 'nan'")
 # Files that are no deck
@@ -79,7 +81,7 @@ tsl_deck_bad(generate_huge generate_huge.inp "error: generate_huge.inp:21: GENER
 tsl_deck_bad(generate_near_max generate_near_max.inp "error: generate_near_max.inp:20: node set TOPID contains undefined node 2147483640")
 tsl_deck_bad(node_id_negative node_id_negative.inp "error: node_id_negative.inp:5: the node id must be a positive integer, got '-4'")
 tsl_deck_bad(boundary_node_zero boundary_node_zero.inp "error: boundary_node_zero.inp:24: an id must be a positive integer, got '0'")
-tsl_deck_bad(collapsed_coordinates collapsed_coordinates.inp "error: collapsed_coordinates.inp:9: element 1: nodes 2 and 3 are at the same place (a collapsed element; not supported)")
+tsl_deck_bad(collapsed_coordinates collapsed_coordinates.inp "error: collapsed_coordinates.inp:9: element 1: nodes 2 and 3 are at the same place (a collapsed element repeats one node id; two ids at one place are not supported)")
 tsl_deck_bad(mixed_kinematics mixed_kinematics.inp "error: mixed_kinematics.inp:12: element 2 (CPS4T, plane stress) shares node 2 with element 1 (CPE4T, plane strain) at mixed_kinematics.inp:10: one body, one kinematics")
 tsl_deck_bad(mixed_axisymmetric mixed_axisymmetric.inp "error: mixed_axisymmetric.inp:14: element 2 (CAX4T, axisymmetric) cannot be in one model with element 1 (CPE4T, plane strain) at mixed_axisymmetric.inp:12")
 tsl_deck_bad(wrong_node_count_quadratic wrong_node_count_quadratic.inp "error: wrong_node_count_quadratic.inp:7: element has 4 nodes but type CPE8T needs 8")
