@@ -93,13 +93,31 @@ static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
   CHECK(n <= g->nnode + t->nextra && n >= g->nnode, ElemLoc(m, e), "element %" PetscInt_FMT " has %" PetscInt_FMT " nodes", m->elem_id[e], n);
   ne = FamilyEdges(g, edge);
   for (PetscInt a = 0; a < g->nnode; a++) {
-    PetscInt  group[27], ng = 0, reached[64], nr = 1;
-    PetscBool grew = PETSC_TRUE;
+    PetscInt  group[27], ng = 0, reached[27], nr = 1, pair[2] = {-1, -1};
+    PetscBool grew = PETSC_TRUE, ok = PETSC_TRUE;
     for (PetscInt b = 0; b < g->nnode; b++)
       if (conn[b] == conn[a]) group[ng++] = b;
     if (ng < 2 || group[0] != a) continue; /* each id once, from its first position */
-    /* the corners of the group reached from its first one along edges inside the group; a midside node must be
-     * the midside of such an edge, and such an edge's midside must be in the group */
+    if (a >= g->ncorner) {
+      /* midside nodes only: those of edges that collapse onto one another (a brick's 19 = 20 when 3 = 4 and
+       * 7 = 8), each edge's corners the same two ids */
+      for (PetscInt i = 0; i < ng; i++) {
+        PetscInt k = 0;
+        while (k < ne && edge[k][2] != group[i]) k++;
+        if (k == ne) ok = PETSC_FALSE;
+        else {
+          const PetscInt p = conn[edge[k][0]], q = conn[edge[k][1]];
+          if (i == 0) pair[0] = PetscMin(p, q), pair[1] = PetscMax(p, q);
+          else if (pair[0] != PetscMin(p, q) || pair[1] != PetscMax(p, q)) ok = PETSC_FALSE;
+        }
+      }
+      CHECK(ok && pair[0] != pair[1], ElemLoc(m, e),
+            "element %" PetscInt_FMT " repeats node %" PetscInt_FMT " at midside positions whose edges do not collapse onto one another", m->elem_id[e],
+            conn[a]);
+      continue;
+    }
+    /* corners: those reached from the first one along edges inside the group; a midside node must be the midside
+     * of such an edge, and such an edge's midside must be in the group */
     reached[0] = a;
     while (grew) {
       grew = PETSC_FALSE;
@@ -112,13 +130,15 @@ static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
         }
     }
     for (PetscInt k = 0; k < ne; k++) {
-      const PetscBool in = (PetscBool)(conn[edge[k][0]] == conn[a] && conn[edge[k][1]] == conn[a]);
-      if (in && edge[k][2] >= 0) reached[nr++] = edge[k][2];
-      if (in && edge[k][2] >= 0)
-        CHECK(conn[edge[k][2]] == conn[a], ElemLoc(m, e),
-              "element %" PetscInt_FMT " repeats node %" PetscInt_FMT " at the ends of an edge whose midside node %" PetscInt_FMT
-              " is another (a collapsed %s edge takes one id for all three nodes)",
-              m->elem_id[e], conn[a], conn[edge[k][2]], t->name);
+      const PetscInt mid = edge[k][2];
+      PetscBool      known = PETSC_FALSE;
+      if (conn[edge[k][0]] != conn[a] || conn[edge[k][1]] != conn[a] || mid < 0) continue;
+      CHECK(conn[mid] == conn[a], ElemLoc(m, e),
+            "element %" PetscInt_FMT " repeats node %" PetscInt_FMT " at the ends of an edge whose midside node %" PetscInt_FMT
+            " is another (a collapsed %s edge takes one id for all three nodes)",
+            m->elem_id[e], conn[a], conn[mid], t->name);
+      for (PetscInt r = 0; r < nr; r++) known = (PetscBool)(known || reached[r] == mid);
+      if (!known) reached[nr++] = mid;
     }
     for (PetscInt i = 0; i < ng; i++) {
       PetscBool found = PETSC_FALSE;

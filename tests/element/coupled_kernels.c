@@ -273,6 +273,37 @@ static void FaceAreaVector(const Case *c, PetscInt f, PetscReal A[3])
   }
 }
 
+/* The element as Abaqus/CAE writes a triangle or a wedge at a sweep's axis (docs/elements.md, "Collapsed
+ * elements"): a quadrilateral's face S3 (nodes 3-4, with 7) or a brick's face S5 (3-4-8-7, with 11, 15, 19, 20)
+ * collapsed onto one edge, node 3 onto 4 and 7 onto 8 (their midsides with them, 19 onto 20). The nodes keep their
+ * unknowns apart here: the checks hold for any values, the repeated id of a deck makes them one. Returns
+ * PETSC_FALSE for a family that is not a quadrilateral or a brick. */
+static PetscBool Collapse(Case *c)
+{
+  const TslGeometry *g = c->type->geom;
+  const PetscInt    *v;
+  PetscInt           to[4][2], n = 0;
+
+  if (!((g->dim == 2 && g->ncorner == 4) || (g->dim == 3 && g->ncorner == 8))) return PETSC_FALSE;
+  if (g->dim == 2) {
+    v = g->face_node[2]; /* 3, 4 (, 7) */
+    to[n][0] = v[0], to[n++][1] = v[1];
+    if (g->face_nnode[2] > 2) to[n][0] = v[2], to[n++][1] = v[1];
+  } else {
+    v = g->face_node[4]; /* 3, 4, 8, 7 (, 11, 20, 15, 19) */
+    to[n][0] = v[0], to[n++][1] = v[1];
+    to[n][0] = v[3], to[n++][1] = v[2];
+    if (g->face_nnode[4] > 4) { /* the midsides of the collapsed edges go with them (11 -> 4, 15 -> 8) */
+      c->x[3 * v[4] + 0] = c->x[3 * v[1] + 0], c->x[3 * v[4] + 1] = c->x[3 * v[1] + 1], c->x[3 * v[4] + 2] = c->x[3 * v[1] + 2];
+      c->x[3 * v[6] + 0] = c->x[3 * v[2] + 0], c->x[3 * v[6] + 1] = c->x[3 * v[2] + 1], c->x[3 * v[6] + 2] = c->x[3 * v[2] + 2];
+      to[n][0] = v[7], to[n++][1] = v[5]; /* 19 -> 20 */
+    }
+  }
+  for (PetscInt k = 0; k < n; k++)
+    for (PetscInt d = 0; d < 3; d++) c->x[3 * to[k][0] + d] = c->x[3 * to[k][1] + d];
+  return PETSC_TRUE;
+}
+
 /* HRZ lumping of the full quadratic triangle and tetrahedron (CPE6T, C3D10T), straight-sided: V_a = V int N_a^2 /
  * sum_b int N_b^2 is V/19 at the tri6 corners and 16V/57 at its midside nodes, V/36 at the tet10 corners and 4V/27
  * at its midside nodes (closed form: int L^4 = 2!4!/6! A ..., docs/elements.md); the lumping rule must be exact
@@ -739,6 +770,24 @@ int main(int argc, char **argv)
     }
     CaseSetUp(&c, type, 0);
     PetscCall(CheckInverted(&log, &c));
+    /* collapsed as Abaqus/CAE writes a triangle or wedge: rigid motion, the thermal patch, linear temperature
+     * and the tangent hold for it as they are */
+    CaseSetUp(&c, type, 0.08);
+    if (Collapse(&c)) {
+      printf("(collapsed onto one edge of face S%d)\n", type->dim == 2 ? 3 : 5);
+      PetscCall(CheckRigidMotion(&log, &c));
+      for (PetscInt constrained = 0; constrained < 2; constrained++) {
+        CaseSetUp(&c, type, constrained && type->kin == TSL_KIN_CONTINUUM_SHELL ? 0 : 0.08); /* as above */
+        (void)Collapse(&c);
+        PetscCall(CheckThermalPatch(&log, &c, (PetscBool)constrained));
+      }
+      CaseSetUp(&c, type, 0.08);
+      (void)Collapse(&c);
+      PetscCall(CheckLinearTemperature(&log, &c));
+      CaseSetUp(&c, type, 0.08);
+      (void)Collapse(&c);
+      PetscCall(CheckTangent(&log, &c, 0));
+    }
     if (type->kin == TSL_KIN_CONTINUUM_SHELL) {
       CaseSetUp(&c, type, 0.08);
       PetscCall(CheckStackDirection(&log, &c));
