@@ -186,6 +186,16 @@ def loads_multistep():
 FAMILIES_2D = {"3": ("tri", 1), "4": ("quad", 1), "6": ("tri", 2), "8": ("quad", 2)}
 
 
+# Catalogue rows the dialect has no coupled name for (src/element/catalogue.c, MechanicalOnly): a deck names
+# them by CalculiX's mechanical name (CPE6), which a coupled step reads as the row (CPE6T).
+MECHANICAL_ONLY = ("CPE6T", "CPS6T", "CAX6T", "C3D15T")
+
+
+def deck_type(typ):
+    """The *ELEMENT TYPE= a deck writes for catalogue row typ."""
+    return typ[:-1] if typ.upper() in MECHANICAL_ONLY else typ
+
+
 def family_of(typ):
     """(shape, order, kinematics) of a 2D type name: CPE4RT -> ("quad", 1, "PE")."""
     m = re.match(r"C(GAX|PEG|PE|PS|AX)(\d)", typ.upper())
@@ -330,8 +340,8 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
     fmt = lambda nodes: "".join(" %d, %.10g, %.10g\n" % ((n[0],) + place(n[1], n[2])) for n in nodes)
     text = ("*HEADING\n Finite sliding between coupled temperature-displacement %s blocks: %s series\n" % ("CAX8T and SAX2T" if shell else typ, series) +
             "*NODE, NSET=ALL\n" + fmt(bnodes) + "*NODE, NSET=ALL\n" + fmt(tnodes) +
-            "*ELEMENT, TYPE=%s, ELSET=LARGE\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
-            "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % ("SAX2T" if shell else typ) + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
+            "*ELEMENT, TYPE=%s, ELSET=LARGE\n" % deck_type(typ) + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
+            "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % ("SAX2T" if shell else deck_type(typ)) + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
             nset("BASE", base) + nset("TOPFACE", topface) + (nset("SLIDER", [1001 + nel]) if shell else "") +
             elset("MAINE", main_elems) + elset("SECE", sec_elems) +
             elset("PRESSEDE" if shell else "PRESSED", pressed) + elset("FILMED", filmed) +
@@ -647,8 +657,8 @@ def sliding_blocks_3d(series, typ, outdir=None, surf=False, explicit=None):
     fmt = lambda nodes: "".join(" %d, %.10g, %.10g, %.10g\n" % ((n,) + nodes[n]) for n in sorted(nodes))
     text = ("*HEADING\n Finite sliding between coupled temperature-displacement %s blocks (3D): %s series\n" % (typ, series) +
             "*NODE, NSET=ALL\n" + fmt(bnodes) + "*NODE, NSET=ALL\n" + fmt(tnodes) +
-            "*ELEMENT, TYPE=%s, ELSET=LARGE\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
-            "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % typ + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
+            "*ELEMENT, TYPE=%s, ELSET=LARGE\n" % deck_type(typ) + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
+            "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % deck_type(typ) + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
             nset("BASE", base) + nset("TOPFACE", topface))
     if shell:
         text += (elset("FILMEDE", filmede) + "*SURFACE, NAME=MAIN, TYPE=ELEMENT\n LARGE, SPOS\n*SURFACE, NAME=SECONDARY, TYPE=ELEMENT\n SMALL, SNEG\n"

@@ -355,17 +355,21 @@ static const FastRow Rows[] = {
     {&TslGeomQuad4, &TslFormReduced, TSL_KIN_AXISYMMETRIC, 1, 1, Quad4ReducedAxi, PETSC_FALSE},
     {&TslGeomTet4, &TslFormFull, TSL_KIN_SOLID3D, 1, 0, Tet4Full, PETSC_FALSE},
     {&TslGeomTet10, &TslFormModified, TSL_KIN_SOLID3D, 4, 0, Tet10Full, PETSC_FALSE}, /* modified: lumping and pressure faces differ, not the force */
+    {&TslGeomTet10, &TslFormFullSubFace, TSL_KIN_SOLID3D, 4, 0, Tet10Full, PETSC_FALSE}, /* C3D10T: the same force */
     {&TslGeomWedge6, &TslFormFull, TSL_KIN_SOLID3D, 6, 0, Wedge6Full, PETSC_FALSE},
     {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRAIN, 1, 0, Tri3Full, PETSC_FALSE},
     {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRAIN, 3, 0, Tri6Full, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormFull, TSL_KIN_PLANE_STRAIN, 3, 0, Tri6Full, PETSC_FALSE}, /* the full tri6 (CPE6T ...): the same force */
     {&TslGeomQuad8, &TslFormFull, TSL_KIN_PLANE_STRAIN, 9, 0, Quad8Full, PETSC_FALSE},
     {&TslGeomTri3, &TslFormFull, TSL_KIN_AXISYMMETRIC, 1, 0, Tri3FullAxi, PETSC_FALSE},
     {&TslGeomTri6, &TslFormModified, TSL_KIN_AXISYMMETRIC, 3, 0, Tri6FullAxi, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormFull, TSL_KIN_AXISYMMETRIC, 3, 0, Tri6FullAxi, PETSC_FALSE}, /* the full tri6 (CPE6T ...): the same force */
     {&TslGeomQuad8, &TslFormFull, TSL_KIN_AXISYMMETRIC, 9, 0, Quad8FullAxi, PETSC_FALSE},
     {&TslGeomQuad4, &TslFormFull, TSL_KIN_PLANE_STRESS, 4, 0, Quad4FullPs, PETSC_FALSE},
     {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRESS, 1, 1, Quad4ReducedPs, PETSC_FALSE},
     {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRESS, 1, 0, Tri3FullPs, PETSC_FALSE},
     {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormFull, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, PETSC_FALSE}, /* the full tri6 (CPE6T ...): the same force */
     {&TslGeomHex8, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Hex8Shell, PETSC_FALSE},     /* the default 5 Simpson points */
     {&TslGeomWedge6, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Wedge6Shell, PETSC_FALSE}, /* xi eta, xi eta zeta vanish: zero vectors */
 };

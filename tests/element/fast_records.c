@@ -164,8 +164,8 @@ int main(int argc, char **argv)
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   for (PetscInt t = 0; t < TslElementTypeCount(); t++)
     for (PetscInt k = 0; k < 2; k++) PetscCall(CheckType(&log, TslElementTypeGet(t), k ? 1e4 : 0, &nrows));
-  CheckTrue(&log, (PetscBool)(nrows == 2 * 23),
-            "records for the 23 types of plane strain, plane stress, axisymmetric and 3D displacement formulations and the continuum shells (%d "
+  CheckTrue(&log, (PetscBool)(nrows == 2 * 27),
+            "records for the 27 types of plane strain, plane stress, axisymmetric and 3D displacement formulations and the continuum shells (%d "
             "type-offset pairs)",
             (int)nrows);
   PetscCall(PetscFinalize());
