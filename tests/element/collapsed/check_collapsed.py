@@ -5,7 +5,7 @@ Both meshes pass the patch test: U and NT at every node are the boundary's linea
 too), E and HFL are uniform (the strain given, -k grad theta with k = 50), and the two meshes' S, E and HFL agree
 element by element to round-off (the same elements in the same order). Tolerances: 1e-12 relative to the
 fields' scale.
-usage: check_collapsed.py PROPER_OUTDIR PROPER_JOB COLLAPSED_OUTDIR COLLAPSED_JOB DIM
+usage: check_collapsed.py PROPER_OUTDIR PROPER_JOB COLLAPSED_OUTDIR COLLAPSED_JOB 2d|3d|ax
 """
 import os
 import sys
@@ -16,9 +16,11 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from tslcheck import Result, check, finish
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from make_decks import GRAD, STRAIN  # noqa: E402  (the decks' fields)
+from make_decks import fields  # noqa: E402  (the decks' fields)
 
-pdir, pjob, cdir, cjob, dim = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], int(sys.argv[5])
+pdir, pjob, cdir, cjob, variant = sys.argv[1:6]
+dim = 3 if variant == "3d" else 2
+STRAIN, GRAD = fields(variant)
 proper, collapsed = Result(pdir, pjob), Result(cdir, cjob)
 for name, r in (("proper", proper), ("collapsed", collapsed)):
     x = r.xyz[:, :dim]
@@ -29,6 +31,8 @@ for name, r in (("proper", proper), ("collapsed", collapsed)):
     check("%s: max |NT - exact| / 10" % name, float(np.max(np.abs(nt - tex))) / 10, 0.0, 1e-12)
     hfl = r.field("HFL")[:, :dim]
     check("%s: max |HFL + k grad theta| / 250" % name, float(np.max(np.abs(hfl + 50 * np.array(GRAD[:dim])))) / 250, 0.0, 1e-12)
+    if variant == "ax":  # the hoop strain u_r / r = c at every point, the axis too
+        check("%s: max |E33 - c| / 1e-3" % name, float(np.max(np.abs(r.field("E")[:, 2] - STRAIN[0][0]))) / 1e-3, 0.0, 1e-12)
     eps = r.field("E")
     check("%s: max |E11 - 1e-3| / 1e-3" % name, float(np.max(np.abs(eps[:, 0] - STRAIN[0][0]))) / 1e-3, 0.0, 1e-12)
 for f in ("S", "E", "HFL"):
