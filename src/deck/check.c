@@ -256,15 +256,40 @@ static PetscErrorCode CheckFace(TslModel *m, TslLoc loc, PetscInt id, PetscInt f
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A surface's face of a collapsed element must keep an area (a length in 2D): the face a collapse flattens onto an
+ * edge or a point (a C3D8T's S5 when 3 = 4 and 7 = 8) has no normal for contact to take. Loads on such a face
+ * integrate to zero and need no check. */
+static PetscErrorCode CheckFaceArea(TslModel *m, const TslSurface *sf, PetscInt id, PetscInt face)
+{
+  const PetscInt        e = TslModelElementIndex(m, id);
+  const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
+  const TslGeometry    *g = t->geom;
+  const PetscInt        nc = g->face_geom[face - 1]->ncorner, *conn = &m->elem_conn[m->elem_ptr[e]];
+  PetscInt              distinct = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < nc; a++) {
+    PetscBool seen = PETSC_FALSE;
+    for (PetscInt b = 0; b < a; b++) seen = (PetscBool)(seen || conn[g->face_node[face - 1][a]] == conn[g->face_node[face - 1][b]]);
+    if (!seen) distinct++;
+  }
+  CHECK(distinct >= g->dim, sf->loc,
+        "surface %s: face S%" PetscInt_FMT " of element %" PetscInt_FMT " (%s) is collapsed onto %s (its corners repeat a node): it has no %s",
+        sf->name, face, id, t->name, distinct == 1 ? "a point" : "an edge", g->dim == 2 ? "length" : "area");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckSurfaces(TslModel *m)
 {
   PetscFunctionBeginUser;
   for (PetscInt s = 0; s < m->nsurface; s++) {
     const TslSurface *sf = &m->surfaces[s];
     for (PetscInt k = 0; k < sf->n; k++) {
-      if (sf->kind == TSL_SURFACE_ELEMENT)
+      if (sf->kind == TSL_SURFACE_ELEMENT) {
         PetscCall(CheckFace(m, sf->loc, sf->elem[k], sf->face[k]));
-      else
+        if (sf->face[k] >= 1 && sf->face[k] <= TslElementTypeGet(m->elem_type[TslModelElementIndex(m, sf->elem[k])])->geom->nface)
+          PetscCall(CheckFaceArea(m, sf, sf->elem[k], sf->face[k]));
+      } else
         CHECK(TslModelNodeIndex(m, sf->elem[k]) >= 0, sf->loc, "surface %s: undefined node %" PetscInt_FMT, sf->name, sf->elem[k]);
     }
   }

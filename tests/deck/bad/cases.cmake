@@ -67,6 +67,7 @@ tsl_deck_bad(smooth_half smooth_half.inp "error: smooth_half.inp:26: *CONTACT PA
 # collapsed elements: along the edges, with a volume (a diagonal pair, a brick flattened onto its bottom face)
 tsl_deck_bad(collapsed_quad collapsed_quad.inp "error: collapsed_quad.inp:9: element 1 repeats node 1 at positions 1 and 3, which no edge of a CPE4T joins")
 tsl_deck_bad(collapsed_midside collapsed_midside.inp "error: collapsed_midside.inp:20: element 1 repeats node 18 at midside positions whose edges do not collapse onto one another")
+tsl_deck_bad(collapsed_face_surface collapsed_face_surface.inp "error: collapsed_face_surface.inp:7: surface TOPS: face S3 of element 1 (CPE4T) is collapsed onto a point (its corners repeat a node): it has no length")
 tsl_deck_bad(collapsed_hex collapsed_hex.inp "error: collapsed_hex.inp:11: element 1 (C3D8T) repeats a node and collapses to no volume, or is inverted, at an integration point")
 tsl_deck_bad(number_overflow number_overflow.inp "error: number_overflow.inp:4: expected a number for the x coordinate, got '1e999'")
 tsl_deck_bad(number_nan number_nan.inp "error: number_nan.inp:18: expected a number for the specific heat, got 'nan'")
