@@ -8,7 +8,8 @@ the fluxes the job produced, not with itself.
 A field that is physically zero (reactions of a free body) is only round-off; FIELD=floor gives the
 magnitude it is compared against (e.g. RF=1e4 for forces of order 1e4 elsewhere in the model).
 skip=PREFIX leaves out the datasets whose path starts with PREFIX (skip=mesh: the same cells numbered
-otherwise, e.g. continuum shells with another stack direction).
+otherwise, e.g. continuum shells with another stack direction); skipfield=NAME those of field NAME in every
+frame (skipfield=S: element averages over integration points that two rules place differently).
 renumbered=MAP.txt: B is the model of A with its nodes and elements renumbered (tests/tools/renumber_deck.py
 writes MAP.txt): B's node and element rows are compared with A's rows of the same node or element, and the
 datasets that are ids or connectivity (mesh/node_ids, mesh/element_ids, mesh/topology) are left out.
@@ -28,7 +29,8 @@ def datasets(f):
 a, b = datasets(h5py.File(sys.argv[1], "r")), datasets(h5py.File(sys.argv[2], "r"))
 rtol = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-8
 skips = [kv.split("=", 1)[1] for kv in sys.argv[4:] if kv.startswith("skip=")]
-floors = dict((kv.split("=")[0], float(kv.split("=")[1])) for kv in sys.argv[4:] if not kv.startswith(("skip=", "renumbered=")))
+skipfields = [kv.split("=", 1)[1] for kv in sys.argv[4:] if kv.startswith("skipfield=")]
+floors = dict((kv.split("=")[0], float(kv.split("=")[1])) for kv in sys.argv[4:] if not kv.startswith(("skip=", "skipfield=", "renumbered=")))
 renumbered = [kv.split("=", 1)[1] for kv in sys.argv[4:] if kv.startswith("renumbered=")]
 if renumbered:
     nmap, emap = {}, {}
@@ -48,8 +50,8 @@ if renumbered:
             if b[name].shape[0] == n:
                 b[name] = b[name][perm]
                 break
-a = dict((k, v) for k, v in a.items() if not any(k.startswith(p) for p in skips))
-b = dict((k, v) for k, v in b.items() if not any(k.startswith(p) for p in skips))
+a = dict((k, v) for k, v in a.items() if not any(k.startswith(p) for p in skips) and k.split("/")[-1] not in skipfields)
+b = dict((k, v) for k, v in b.items() if not any(k.startswith(p) for p in skips) and k.split("/")[-1] not in skipfields)
 bad = sorted(set(a) ^ set(b))
 if bad:
     print("datasets present in only one file: %s" % bad)
