@@ -859,11 +859,35 @@ typedef struct {
   PetscInt   bad;
 } StableCtx;
 
+/* A collapsed element (a node id repeated, docs/elements.md "Collapsed elements") is, once assembled, an element on
+ * its distinct nodes: the rows and columns of K and the lumped weights of the positions of one node summed into
+ * its first position. Its eigenvalue bound is that element's: with the positions apart, the mode moving one
+ * position of a node against another, which the assembled problem does not have, bounded the increment of a
+ * collapsed CPE4T 6.4 times below the triangle's (thermal) and 2.5 times (mechanical). K is nd x nd (row-major),
+ * M and C are replaced by the merged weights, first[a] is the first position of position a's node. */
+static void MergeCollapsed(const TslElemData *d, PetscInt nnode, PetscInt ndof, PetscReal K[], PetscReal M[], PetscReal C[], PetscInt first[])
+{
+  const PetscInt nd = d->nd;
+
+  for (PetscInt a = 0; a < nnode; a++) {
+    first[a] = a;
+    for (PetscInt b = 0; b < a && first[a] == a; b++)
+      if (d->ld[a * ndof] == d->ld[b * ndof]) first[a] = b;
+    if (first[a] == a) continue;
+    M[first[a]] += M[a], C[first[a]] += C[a];
+    for (PetscInt i = 0; i < ndof; i++) {
+      const PetscInt ra = a * ndof + i, rb = first[a] * ndof + i;
+      for (PetscInt j = 0; j < nd; j++) K[rb * nd + j] += K[ra * nd + j];
+      for (PetscInt j = 0; j < nd; j++) K[j * nd + rb] += K[j * nd + ra];
+    }
+  }
+}
+
 static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
 {
   StableCtx      *c = (StableCtx *)ctx;
-  PetscReal       M[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES], w[TSL_MAX_ELEM_DOF] = {0}, lam;
-  PetscInt        idx[TSL_MAX_ELEM_DOF] = {0}, n = 0, nnode = d->in.type->geom->nnode, th = p->ndof - 1;
+  PetscReal       M[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES], Mm[TSL_MAX_ELEM_NODES], Cm[TSL_MAX_ELEM_NODES], w[TSL_MAX_ELEM_DOF] = {0}, lam;
+  PetscInt        idx[TSL_MAX_ELEM_DOF] = {0}, first[TSL_MAX_ELEM_NODES], n = 0, nnode = d->in.type->geom->nnode, th = p->ndof - 1;
   PetscBool       inverted = PETSC_FALSE;
   ElemOnGrid      g;
   const PetscReal raise = 1 + 1e-8; /* above the grid's effect on the eigenvalue (StableKey) */
@@ -883,13 +907,18 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(TslElementLumped(&g.in, NULL, C, M));
+  PetscCall(PetscArraycpy(Mm, M, nnode));
+  PetscCall(PetscArraycpy(Cm, C, nnode));
+  MergeCollapsed(d, nnode, p->ndof, c->K, Mm, Cm, first);
   for (PetscInt a = 0; a < nnode; a++)
     for (PetscInt i = 0; i < th; i++)
-      if (!p->pinned[d->ld[a * p->ndof + i]]) idx[n] = a * p->ndof + i, w[n++] = M[a];
+      if (first[a] == a && !p->pinned[d->ld[a * p->ndof + i]]) idx[n] = a * p->ndof + i, w[n++] = Mm[a];
   LargestEigenvalue(n, idx, c->K, d->nd, w, &lam);
   c->dt_mech[e] = lam > 0 ? 2.0 / PetscSqrtReal(lam * raise) : PETSC_MAX_REAL;
-  for (PetscInt a = 0; a < nnode; a++) idx[a] = a * p->ndof + th, w[a] = C[a];
-  LargestEigenvalue(nnode, idx, c->K, d->nd, w, &lam);
+  n = 0;
+  for (PetscInt a = 0; a < nnode; a++)
+    if (first[a] == a) idx[n] = a * p->ndof + th, w[n++] = Cm[a];
+  LargestEigenvalue(n, idx, c->K, d->nd, w, &lam);
   c->dt_heat[e] = lam > 0 ? 2.0 / (lam * raise) : PETSC_MAX_REAL;
   if (g.entry) {
     g.entry->dt_mech = c->dt_mech[e], g.entry->dt_heat = c->dt_heat[e], g.entry->has_dt = PETSC_TRUE;
