@@ -112,7 +112,7 @@ struct TslFormulation {
 #define TSL_MAX_PRESSURE 4
 
 /* The formulations (formulations.c). */
-extern const TslFormulation TslFormFull, TslFormFullSubFace, TslFormReduced, TslFormReducedQuadratic, TslFormReducedQuadraticShell, TslFormHybrid, TslFormReducedHybrid,
+extern const TslFormulation TslFormFull, TslFormFullSubFace, TslFormHybridSubFace, TslFormReducedQuadraticHybrid, TslFormReduced, TslFormReducedQuadratic, TslFormReducedQuadraticShell, TslFormHybrid, TslFormReducedHybrid,
     TslFormModified, TslFormModifiedHybrid, TslFormContinuumShell;
 
 /* Hourglass control of the one-point quad4 and hex8 (formulations.c): the Flanagan-Belytschko vectors

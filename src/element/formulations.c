@@ -351,6 +351,10 @@ const TslFormulation TslFormReducedQuadraticShell = {
  * weights are zero (tri6) or negative (quad8) at the corners; contact takes those faces as the same pieces.
  * Capacity and mass by HRZ lumping (positive), the rest as full. */
 const TslFormulation TslFormFullSubFace = {"full integration, pressure on linear sub-faces", FullRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn};
+/* C3D10HT: the full tet10 with the linear hybrid pressure of the other second-order hybrids and C3D10T's faces. */
+const TslFormulation TslFormHybridSubFace = {"hybrid, pressure on linear sub-faces", FullRule, PressureBasis, NULL, Lump, FaceRuleSub, FaceRuleOwn};
+/* CPE8RHT, CAX8RHT: the 2 x 2 quad8 with the linear hybrid pressure of CPE8HT (3 terms at 4 points). */
+const TslFormulation TslFormReducedQuadraticHybrid = {"reduced integration, hybrid", ReducedRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
 const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
 const TslFormulation TslFormReducedHybrid = {
     "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};
