@@ -61,11 +61,11 @@ static PetscInt FamilyEdges(const TslGeometry *g, PetscInt edge[][3])
  * defined. */
 static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
 {
-  const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
-  const TslGeometry    *g = t->geom;
-  const PetscInt       *conn = &m->elem_conn[m->elem_ptr[e]];
-  PetscInt              n = m->elem_ptr[e + 1] - m->elem_ptr[e], idx[27], edge[24][3], ne;
-  PetscReal             size = 0;
+  const TslElementType *t        = TslElementTypeGet(m->elem_type[e]);
+  const TslGeometry    *g        = t->geom;
+  const PetscInt       *conn     = &m->elem_conn[m->elem_ptr[e]];
+  PetscInt              n        = m->elem_ptr[e + 1] - m->elem_ptr[e], idx[27], edge[24][3], ne;
+  PetscReal             size     = 0;
   PetscBool             repeated = PETSC_FALSE;
 
   PetscFunctionBeginUser;
@@ -85,7 +85,8 @@ static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
       }
       for (PetscInt c = 0; c < 3; c++) dist = PetscMax(dist, PetscAbsReal(m->node_xyz[3 * idx[a] + c] - m->node_xyz[3 * idx[b] + c]));
       CHECK(dist > 1e-10 * size, ElemLoc(m, e),
-            "element %" PetscInt_FMT ": nodes %" PetscInt_FMT " and %" PetscInt_FMT " are at the same place (a collapsed element repeats one node id; "
+            "element %" PetscInt_FMT ": nodes %" PetscInt_FMT " and %" PetscInt_FMT
+            " are at the same place (a collapsed element repeats one node id; "
             "two ids at one place are not supported)",
             m->elem_id[e], conn[a], conn[b]);
     }
@@ -104,16 +105,19 @@ static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
       for (PetscInt i = 0; i < ng; i++) {
         PetscInt k = 0;
         while (k < ne && edge[k][2] != group[i]) k++;
-        if (k == ne) ok = PETSC_FALSE;
+        if (k == ne)
+          ok = PETSC_FALSE;
         else {
           const PetscInt p = conn[edge[k][0]], q = conn[edge[k][1]];
-          if (i == 0) pair[0] = PetscMin(p, q), pair[1] = PetscMax(p, q);
-          else if (pair[0] != PetscMin(p, q) || pair[1] != PetscMax(p, q)) ok = PETSC_FALSE;
+          if (i == 0)
+            pair[0] = PetscMin(p, q), pair[1] = PetscMax(p, q);
+          else if (pair[0] != PetscMin(p, q) || pair[1] != PetscMax(p, q))
+            ok = PETSC_FALSE;
         }
       }
       CHECK(ok && pair[0] != pair[1], ElemLoc(m, e),
-            "element %" PetscInt_FMT " repeats node %" PetscInt_FMT " at midside positions whose edges do not collapse onto one another", m->elem_id[e],
-            conn[a]);
+            "element %" PetscInt_FMT " repeats node %" PetscInt_FMT " at midside positions whose edges do not collapse onto one another",
+            m->elem_id[e], conn[a]);
       continue;
     }
     /* corners: those reached from the first one along edges inside the group; a midside node must be the midside
@@ -130,7 +134,7 @@ static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
         }
     }
     for (PetscInt k = 0; k < ne; k++) {
-      const PetscInt mid = edge[k][2];
+      const PetscInt mid   = edge[k][2];
       PetscBool      known = PETSC_FALSE;
       if (conn[edge[k][0]] != conn[a] || conn[edge[k][1]] != conn[a] || mid < 0) continue;
       CHECK(conn[mid] == conn[a], ElemLoc(m, e),
@@ -150,9 +154,9 @@ static PetscErrorCode CheckCollapsed(TslModel *m, PetscInt e)
     }
   }
   {
-    PetscReal          x[3 * TSL_MAX_ELEM_NODES] = {0};
-    TslElementSection  sec = {0};
-    TslElementInput    in;
+    PetscReal         x[3 * TSL_MAX_ELEM_NODES] = {0};
+    TslElementSection sec                       = {0};
+    TslElementInput   in;
     for (PetscInt a = 0; a < n; a++)
       for (PetscInt c = 0; c < 3; c++) x[3 * a + c] = m->node_xyz[3 * idx[a] + c];
     in = (TslElementInput){.type = t, .sec = &sec, .x = x};
@@ -261,9 +265,9 @@ static PetscErrorCode CheckFace(TslModel *m, TslLoc loc, PetscInt id, PetscInt f
  * integrate to zero and need no check. */
 static PetscErrorCode CheckFaceArea(TslModel *m, const TslSurface *sf, PetscInt id, PetscInt face)
 {
-  const PetscInt        e = TslModelElementIndex(m, id);
-  const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
-  const TslGeometry    *g = t->geom;
+  const PetscInt        e  = TslModelElementIndex(m, id);
+  const TslElementType *t  = TslElementTypeGet(m->elem_type[e]);
+  const TslGeometry    *g  = t->geom;
   const PetscInt        nc = g->face_geom[face - 1]->ncorner, *conn = &m->elem_conn[m->elem_ptr[e]];
   PetscInt              distinct = 0;
 

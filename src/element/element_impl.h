@@ -112,8 +112,9 @@ struct TslFormulation {
 #define TSL_MAX_PRESSURE 4
 
 /* The formulations (formulations.c). */
-extern const TslFormulation TslFormFull, TslFormFullSubFace, TslFormHybridSubFace, TslFormReducedQuadraticHybrid, TslFormReduced, TslFormReducedQuadratic, TslFormReducedQuadraticShell, TslFormHybrid, TslFormReducedHybrid,
-    TslFormModified, TslFormModifiedHybrid, TslFormContinuumShell;
+extern const TslFormulation TslFormFull, TslFormFullSubFace, TslFormHybridSubFace, TslFormReducedQuadraticHybrid, TslFormReduced,
+    TslFormReducedQuadratic, TslFormReducedQuadraticShell, TslFormHybrid, TslFormReducedHybrid, TslFormModified, TslFormModifiedHybrid,
+    TslFormContinuumShell;
 
 /* Hourglass control of the one-point quad4 and hex8 (formulations.c): the Flanagan-Belytschko vectors
  * gamma[k][a] = (h_k[a] - sum_d hx[k][d] dN_a/dx_d) / n at the centre point p (returns their number: 1 in

@@ -369,7 +369,7 @@ static const FastRow Rows[] = {
     {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRESS, 1, 1, Quad4ReducedPs, PETSC_FALSE},
     {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRESS, 1, 0, Tri3FullPs, PETSC_FALSE},
     {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, PETSC_FALSE},
-    {&TslGeomTri6, &TslFormFull, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, PETSC_FALSE}, /* the full tri6 (CPE6T ...): the same force */
+    {&TslGeomTri6, &TslFormFull, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, PETSC_FALSE},                 /* the full tri6 (CPE6T ...): the same force */
     {&TslGeomHex8, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Hex8Shell, PETSC_FALSE},     /* the default 5 Simpson points */
     {&TslGeomWedge6, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Wedge6Shell, PETSC_FALSE}, /* xi eta, xi eta zeta vanish: zero vectors */
 };

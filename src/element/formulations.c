@@ -354,7 +354,8 @@ const TslFormulation TslFormFullSubFace = {"full integration, pressure on linear
 /* C3D10HT: the full tet10 with the linear hybrid pressure of the other second-order hybrids and C3D10T's faces. */
 const TslFormulation TslFormHybridSubFace = {"hybrid, pressure on linear sub-faces", FullRule, PressureBasis, NULL, Lump, FaceRuleSub, FaceRuleOwn};
 /* CPE8RHT, CAX8RHT: the 2 x 2 quad8 with the linear hybrid pressure of CPE8HT (3 terms at 4 points). */
-const TslFormulation TslFormReducedQuadraticHybrid = {"reduced integration, hybrid", ReducedRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
+const TslFormulation TslFormReducedQuadraticHybrid = {
+    "reduced integration, hybrid", ReducedRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
 const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
 const TslFormulation TslFormReducedHybrid = {
     "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};

@@ -191,14 +191,14 @@ static void ShapeWedge15(const PetscReal xi[], PetscReal N[], PetscReal dN[])
   for (int a = 0; a < 6; a++) {
     const PetscInt  c = a % 3;
     const PetscReal s = a < 3 ? -1 : 1, fz = 1 + s * z, gz = 1 - z * z, q = L[c] * (2 * L[c] - 1);
-    N[a]          = 0.5 * q * fz - 0.5 * L[c] * gz;
+    N[a] = 0.5 * q * fz - 0.5 * L[c] * gz;
     for (int j = 0; j < 2; j++) dN[3 * a + j] = (0.5 * (4 * L[c] - 1) * fz - 0.5 * gz) * dL[c][j];
     dN[3 * a + 2] = 0.5 * q * s + L[c] * z;
   }
   for (int e = 0; e < 6; e++) {
     const PetscInt  ea = Tri6Edges[e % 3][0], eb = Tri6Edges[e % 3][1], m = 6 + e;
     const PetscReal s = e < 3 ? -1 : 1, fz = 1 + s * z;
-    N[m]          = 2 * L[ea] * L[eb] * fz;
+    N[m] = 2 * L[ea] * L[eb] * fz;
     for (int j = 0; j < 2; j++) dN[3 * m + j] = 2 * (L[eb] * dL[ea][j] + L[ea] * dL[eb][j]) * fz;
     dN[3 * m + 2] = 2 * L[ea] * L[eb] * s;
   }

@@ -915,7 +915,7 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
       if (first[a] == a && !p->pinned[d->ld[a * p->ndof + i]]) idx[n] = a * p->ndof + i, w[n++] = Mm[a];
   LargestEigenvalue(n, idx, c->K, d->nd, w, &lam);
   c->dt_mech[e] = lam > 0 ? 2.0 / PetscSqrtReal(lam * raise) : PETSC_MAX_REAL;
-  n = 0;
+  n             = 0;
   for (PetscInt a = 0; a < nnode; a++)
     if (first[a] == a) idx[n] = a * p->ndof + th, w[n++] = Cm[a];
   LargestEigenvalue(n, idx, c->K, d->nd, w, &lam);

@@ -286,11 +286,11 @@ static PetscBool Collapse(Case *c)
 
   if (!((g->dim == 2 && g->ncorner == 4) || (g->dim == 3 && g->ncorner == 8))) return PETSC_FALSE;
   if (g->dim == 2) {
-    v = g->face_node[2]; /* 3, 4 (, 7) */
+    v        = g->face_node[2]; /* 3, 4 (, 7) */
     to[n][0] = v[0], to[n++][1] = v[1];
     if (g->face_nnode[2] > 2) to[n][0] = v[2], to[n++][1] = v[1];
   } else {
-    v = g->face_node[4]; /* 3, 4, 8, 7 (, 11, 20, 15, 19) */
+    v        = g->face_node[4]; /* 3, 4, 8, 7 (, 11, 20, 15, 19) */
     to[n][0] = v[0], to[n++][1] = v[1];
     to[n][0] = v[3], to[n++][1] = v[2];
     if (g->face_nnode[4] > 4) { /* the midsides of the collapsed edges go with them (11 -> 4, 15 -> 8) */
@@ -310,7 +310,7 @@ static PetscBool Collapse(Case *c)
  * for N_a^2 to give them. */
 static PetscErrorCode CheckExactLumping(TestLog *log, Case *c)
 {
-  const TslGeometry *g = c->type->geom;
+  const TslGeometry *g   = c->type->geom;
   const PetscBool    tri = (PetscBool)(g->nnode == 6);
   PetscReal          vol[TSL_MAX_ELEM_NODES], V = 0;
 

@@ -17,8 +17,8 @@ typedef struct {
 } Family;
 
 static const Family Families[] = {
-    {&TslGeomLine2, 0}, {&TslGeomLine3, 0}, {&TslGeomTri3, 2},   {&TslGeomTri6, 2}, {&TslGeomQuad4, 0}, {&TslGeomQuad8, 0},
-    {&TslGeomTet4, 3},  {&TslGeomTet10, 3}, {&TslGeomWedge6, 2}, {&TslGeomWedge15, 2}, {&TslGeomHex8, 0}, {&TslGeomHex20, 0},
+    {&TslGeomLine2, 0}, {&TslGeomLine3, 0}, {&TslGeomTri3, 2},   {&TslGeomTri6, 2},    {&TslGeomQuad4, 0}, {&TslGeomQuad8, 0},
+    {&TslGeomTet4, 3},  {&TslGeomTet10, 3}, {&TslGeomWedge6, 2}, {&TslGeomWedge15, 2}, {&TslGeomHex8, 0},  {&TslGeomHex20, 0},
 };
 #define NFAMILY ((PetscInt)(sizeof(Families) / sizeof(Families[0])))
 
