@@ -281,6 +281,58 @@ static PetscErrorCode CheckInitialVelocities(TslModel *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The material of element id (its section's; the sections have been checked), or NULL. */
+static const TslMaterial *ElementMaterial(const TslModel *m, PetscInt id)
+{
+  for (PetscInt s = 0; s < m->nsection; s++) {
+    const PetscInt k = TslModelFindElementSet(m, m->sections[s].elset);
+    PetscInt       at;
+    if (k < 0 || m->sections[s].material_index < 0) continue;
+    if (PetscFindInt(id, m->elsets[k].n, m->elsets[k].ids, &at) == PETSC_SUCCESS && at >= 0) return &m->materials[m->sections[s].material_index];
+  }
+  return NULL;
+}
+
+/* A body force on element id (*DLOAD GRAV, CENTRIF): it is rho times an acceleration, so the element's
+ * material needs a *DENSITY (a model without transient steps may leave it out, and it would be 0); and the
+ * acceleration must lie in the model's plane (2D) or be symmetric about the axis (axisymmetric elements: gravity
+ * along the axis, the spin axis the symmetry axis x = 0 along y), or part of it would be dropped without a word. */
+static PetscErrorCode CheckBodyForce(TslModel *m, const TslLoad *l, PetscInt id)
+{
+  const char           *label = l->dload == TSL_DLOAD_GRAV ? "GRAV" : "CENTRIF";
+  const PetscInt        e     = TslModelElementIndex(m, id);
+  const TslMaterial    *mat   = ElementMaterial(m, id);
+  const TslElementType *t;
+  const PetscReal      *a = l->axis;
+
+  PetscFunctionBeginUser;
+  CHECK(e >= 0, l->loc, "undefined element %" PetscInt_FMT, id);
+  t = TslElementTypeGet(m->elem_type[e]);
+  CHECK(!mat || mat->prop[TSL_PROP_DENSITY].n, l->loc,
+        "*DLOAD %s on element %" PetscInt_FMT ": its material %s has no *DENSITY (the load is rho times the acceleration)", label, id,
+        mat ? mat->name : "");
+  if (TslKinematicsRevolves(t->kin)) {
+    if (l->dload == TSL_DLOAD_GRAV)
+      CHECK(a[0] == 0 && a[2] == 0, l->loc,
+            "*DLOAD GRAV on the axisymmetric element %" PetscInt_FMT " (%s): the gravity must point along the axis (0, +-1, 0)", id, t->name);
+    else
+      CHECK(a[0] == 0 && a[2] == 0 && a[3] == 0 && a[5] == 0, l->loc,
+            "*DLOAD CENTRIF on the axisymmetric element %" PetscInt_FMT
+            " (%s): the axis must be the symmetry axis (point 0, y, 0, direction 0, 1, 0)",
+            id, t->name);
+  } else if (t->dim == 2) {
+    if (l->dload == TSL_DLOAD_GRAV)
+      CHECK(a[2] == 0, l->loc, "*DLOAD GRAV on the plane element %" PetscInt_FMT " (%s): the gravity must lie in the x-y plane (nz = 0)", id,
+            t->name);
+    else
+      CHECK((a[5] == 0 && a[2] == 0) || (a[3] == 0 && a[4] == 0), l->loc,
+            "*DLOAD CENTRIF on the plane element %" PetscInt_FMT
+            " (%s): the axis must lie in the x-y plane (z0 = az = 0) or be normal to it (ax = ay = 0)",
+            id, t->name);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l)
 {
   PetscFunctionBeginUser;
@@ -308,8 +360,11 @@ static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l)
       PetscInt s = TslModelFindElementSet(m, l->target.set);
       CHECK(s >= 0, l->loc, "undefined element set %s", l->target.set);
       for (PetscInt k = 0; k < m->elsets[s].n; k++) PetscCall(CheckFace(m, l->loc, m->elsets[s].ids[k], l->face));
-    } else
+      for (PetscInt k = 0; l->dload != TSL_DLOAD_FACE && k < m->elsets[s].n; k++) PetscCall(CheckBodyForce(m, l, m->elsets[s].ids[k]));
+    } else {
       PetscCall(CheckFace(m, l->loc, l->target.id, l->face));
+      if (l->dload != TSL_DLOAD_FACE) PetscCall(CheckBodyForce(m, l, l->target.id));
+    }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
