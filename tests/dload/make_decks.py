@@ -160,7 +160,33 @@ def freefall():
     return text
 
 
+def plate_sc8rt():
+    """A plate 1 x 1 x 0.02 of 4 x 4 SC8RT continuum shells lying on z = 0 (held there in z), its weight in -z."""
+    n, h = 4, 0.02
+    ids, lines = {}, []
+    for k in range(2):
+        for j in range(n + 1):
+            for i in range(n + 1):
+                ids[i, j, k] = len(ids) + 1
+                lines.append("%d, %.17g, %.17g, %.17g" % (ids[i, j, k], i / n, j / n, h * k))
+    el = []
+    for j in range(n):
+        for i in range(n):
+            c = [ids[i, j, 0], ids[i + 1, j, 0], ids[i + 1, j + 1, 0], ids[i, j + 1, 0]]
+            c += [ids[i, j, 1], ids[i + 1, j, 1], ids[i + 1, j + 1, 1], ids[i, j + 1, 1]]
+            el.append("%d, " % (len(el) + 1) + ", ".join(map(str, c)))
+    bottom = [ids[i, j, 0] for j in range(n + 1) for i in range(n + 1)]
+    text = "*HEADING\nPlate of continuum shells under its own weight, SC8RT (tests/dload/check_dload.py weight)\n"
+    text += "*NODE, NSET=NALL\n" + "\n".join(lines) + "\n*ELEMENT, TYPE=SC8RT, ELSET=EALL\n" + "\n".join(el) + "\n"
+    text += "*NSET, NSET=BOTTOM\n" + ", ".join(map(str, bottom)) + "\n"
+    text += MAT + "*SHELL SECTION, ELSET=EALL, MATERIAL=STEEL\n0.02\n"
+    text += "*STEP, NAME=WEIGHT\n*STATIC\n*BOUNDARY\nBOTTOM, 3, 3\n%d, 1, 2\n%d, 2, 2\n" % (ids[0, 0, 0], ids[n, 0, 0])
+    text += "*DLOAD\nEALL, GRAV, 9.81, 0., 0., -1.\n*END STEP\n"
+    return text
+
+
 os.makedirs(HERE, exist_ok=True)
+write("grav_plate_sc8rt.inp", plate_sc8rt())
 write("grav_column_c3d8t.inp", column_3d())
 write("grav_column_cps4t.inp", column_2d("CPS4T", "*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE", 0.05, 0.0, 0.1))
 write("grav_column_cax4t.inp", column_2d("CAX4T", "*STATIC", None, 0.0, 0.1))
