@@ -200,7 +200,29 @@ def freefall_cps4t():
     return text
 
 
+def shell_s8rt(target):
+    """Two S8RT conventional shells (1 x 0.5 each, thickness 0.1) held at their corners, under their own weight
+    given by element ids (each shell's two expanded elements must both carry it) or by set."""
+    xy = [(0, 0), (1, 0), (1, 1), (0, 1), (0.5, 0), (1, 0.5), (0.5, 1), (0, 0.5)]
+    nodes = []
+    for k, (x, y) in enumerate(xy):
+        nodes.append("%d, %g, %g, 0." % (k + 1, x, 0.5 * y))
+        nodes.append("%d, %g, %g, 0." % (k + 11, x, 0.5 + 0.5 * y))
+    el = ["1, 1, 2, 3, 4, 5, 6, 7, 8", "2, 11, 12, 13, 14, 15, 16, 17, 18"]
+    text = "*HEADING\nTwo conventional shells under their own weight, S8RT (tests/dload/check_dload.py weight)\n"
+    text += "*NODE, NSET=NALL\n" + "\n".join(nodes) + "\n*NODE\n"
+    text = text.replace("\n*NODE\n", "\n")
+    text += "*ELEMENT, TYPE=S8RT, ELSET=EALL\n" + "\n".join(el) + "\n"
+    text += "*NSET, NSET=CORNERS\n1, 2, 13, 14\n"
+    text += MAT + "*SHELL SECTION, ELSET=EALL, MATERIAL=STEEL\n0.1\n"
+    text += "*STEP, NAME=WEIGHT\n*STATIC\n*BOUNDARY\nCORNERS, 1, 3\n"
+    text += "*DLOAD\n" + ("1, GRAV, 9.81, 0., 0., -1.\n2, GRAV, 9.81, 0., 0., -1.\n" if target == "ids" else "EALL, GRAV, 9.81, 0., 0., -1.\n")
+    text += "*END STEP\n"
+    return text
+
+
 os.makedirs(HERE, exist_ok=True)
+write("grav_shell_ids_s8rt.inp", shell_s8rt("ids"))
 write("grav_freefall_cps4t.inp", freefall_cps4t())
 write("grav_plate_sc8rt.inp", plate_sc8rt())
 write("grav_column_c3d8t.inp", column_3d())
