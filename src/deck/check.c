@@ -281,36 +281,42 @@ static PetscErrorCode CheckInitialVelocities(TslModel *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The material of element id (its section's; the sections have been checked), or NULL. */
-static const TslMaterial *ElementMaterial(const TslModel *m, PetscInt id)
+/* A body force (*DLOAD GRAV, CENTRIF) is rho times an acceleration, so the materials of its elements ids[n]
+ * (sorted) need a *DENSITY (a model without transient steps may leave it out, and it would be 0): each section
+ * whose material has none is met with the ids in one merge of the two sorted lists. */
+static PetscErrorCode CheckBodyDensity(TslModel *m, const TslLoad *l, const PetscInt ids[], PetscInt n)
 {
+  PetscFunctionBeginUser;
   for (PetscInt s = 0; s < m->nsection; s++) {
-    const PetscInt k = TslModelFindElementSet(m, m->sections[s].elset);
-    PetscInt       at;
-    if (k < 0 || m->sections[s].material_index < 0) continue;
-    if (PetscFindInt(id, m->elsets[k].n, m->elsets[k].ids, &at) == PETSC_SUCCESS && at >= 0) return &m->materials[m->sections[s].material_index];
+    const TslSection  *sec = &m->sections[s];
+    const PetscInt     k   = TslModelFindElementSet(m, sec->elset);
+    const TslMaterial *mat = sec->material_index >= 0 ? &m->materials[sec->material_index] : NULL;
+    if (k < 0 || !mat || mat->prop[TSL_PROP_DENSITY].n) continue;
+    for (PetscInt i = 0, j = 0; i < n && j < m->elsets[k].n;) {
+      const PetscInt a = ids[i], b = m->elsets[k].ids[j];
+      CHECK(a != b, l->loc, "*DLOAD %s on element %" PetscInt_FMT ": its material %s has no *DENSITY (the load is rho times the acceleration)",
+            l->dload == TSL_DLOAD_GRAV ? "GRAV" : "CENTRIF", a, mat->name);
+      if (a < b)
+        i++;
+      else
+        j++;
+    }
   }
-  return NULL;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A body force on element id (*DLOAD GRAV, CENTRIF): it is rho times an acceleration, so the element's
- * material needs a *DENSITY (a model without transient steps may leave it out, and it would be 0); and the
- * acceleration must lie in the model's plane (2D) or be symmetric about the axis (axisymmetric elements: gravity
- * along the axis, the spin axis the symmetry axis x = 0 along y), or part of it would be dropped without a word. */
+/* A body force (*DLOAD GRAV, CENTRIF) on element id: the acceleration must lie in the model's plane (2D) or be
+ * symmetric about the axis (axisymmetric elements: gravity along the axis, the spin axis the symmetry axis x = 0
+ * along y), or part of it would be dropped without a word. */
 static PetscErrorCode CheckBodyForce(TslModel *m, const TslLoad *l, PetscInt id)
 {
-  const char           *label = l->dload == TSL_DLOAD_GRAV ? "GRAV" : "CENTRIF";
-  const PetscInt        e     = TslModelElementIndex(m, id);
-  const TslMaterial    *mat   = ElementMaterial(m, id);
+  const PetscInt        e = TslModelElementIndex(m, id);
   const TslElementType *t;
   const PetscReal      *a = l->axis;
 
   PetscFunctionBeginUser;
   CHECK(e >= 0, l->loc, "undefined element %" PetscInt_FMT, id);
   t = TslElementTypeGet(m->elem_type[e]);
-  CHECK(!mat || mat->prop[TSL_PROP_DENSITY].n, l->loc,
-        "*DLOAD %s on element %" PetscInt_FMT ": its material %s has no *DENSITY (the load is rho times the acceleration)", label, id,
-        mat ? mat->name : "");
   if (TslKinematicsRevolves(t->kin)) {
     if (l->dload == TSL_DLOAD_GRAV)
       CHECK(a[0] == 0 && a[2] == 0, l->loc,
@@ -361,9 +367,11 @@ static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l)
       CHECK(s >= 0, l->loc, "undefined element set %s", l->target.set);
       for (PetscInt k = 0; k < m->elsets[s].n; k++) PetscCall(CheckFace(m, l->loc, m->elsets[s].ids[k], l->face));
       for (PetscInt k = 0; l->dload != TSL_DLOAD_FACE && k < m->elsets[s].n; k++) PetscCall(CheckBodyForce(m, l, m->elsets[s].ids[k]));
+      if (l->dload != TSL_DLOAD_FACE) PetscCall(CheckBodyDensity(m, l, m->elsets[s].ids, m->elsets[s].n));
     } else {
       PetscCall(CheckFace(m, l->loc, l->target.id, l->face));
       if (l->dload != TSL_DLOAD_FACE) PetscCall(CheckBodyForce(m, l, l->target.id));
+      if (l->dload != TSL_DLOAD_FACE) PetscCall(CheckBodyDensity(m, l, &l->target.id, 1));
     }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
