@@ -60,6 +60,8 @@ def column_2d(typ, procedure, thickness, x0, width):
     text += "*NSET, NSET=TOP\n" + ", ".join(map(str, top)) + "\n"
     text += "*NSET, NSET=PIN\n%d\n" % ids[0, 0]
     text += MAT + "*SOLID SECTION, ELSET=EALL, MATERIAL=STEEL\n%s\n" % (thickness if thickness else "")
+    if coupled:
+        text += "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 20.\n"
     text += "*STEP, NAME=WEIGHT\n%s\n" % procedure
     text += "*BOUNDARY\nBOTTOM, 2, 2\n"
     if typ.startswith("CPS") or typ.startswith("CPE"):
@@ -227,6 +229,7 @@ write("grav_freefall_cps4t.inp", freefall_cps4t())
 write("grav_plate_sc8rt.inp", plate_sc8rt())
 write("grav_column_c3d8t.inp", column_3d())
 write("grav_column_cps4t.inp", column_2d("CPS4T", "*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE", 0.05, 0.0, 0.1))
+write("grav_column_transient_cps4t.inp", column_2d("CPS4T", "*COUPLED TEMPERATURE-DISPLACEMENT\n0.5, 1.", 0.05, 0.0, 0.1))
 write("grav_column_cax4t.inp", column_2d("CAX4T", "*STATIC", None, 0.0, 0.1))
 write("centrif_disc_cax4t.inp", disc_cax4t(0.1, 0.3, 0.01, 40))
 write("centrif_quarter_cps4t.inp", quarter_disc_cps4t(0.1, 0.3, 0.01, 16, 32))
