@@ -278,7 +278,9 @@ typedef enum {
   TSL_FACE_PRESSURE = 0, /* value: pressure (force/area, positive pushing into the body) */
   TSL_FACE_FLUX,         /* value: heat flux per area into the body */
   TSL_FACE_FILM,         /* value: film coefficient h, value2: sink temperature; q_out = h (theta - sink) */
-  TSL_BODY_FLUX          /* value: heat per volume into the body (face ignored); consistent, int N_a q dV */
+  TSL_BODY_FLUX,         /* value: heat per volume into the body (face ignored); consistent, int N_a q dV */
+  TSL_BODY_GRAV,         /* value: g, axis[0..2] the unit direction: force rho g n per volume (TslElementBodyForce) */
+  TSL_BODY_CENTRIF       /* value: omega^2, axis[] a point and the unit direction of the spin axis: rho omega^2 r_perp */
 } TslFaceLoadKind;
 
 /* Adds the face load's contribution to the residual R (as an internal-minus-external residual, i.e.
@@ -287,6 +289,24 @@ typedef enum {
  * body per unit time (flux: positive in; film: negative when heat leaves); may be NULL. */
 PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],
                                   PetscReal K[], PetscReal *heat);
+
+/* Is the kind a body force (TslElementBodyForce) rather than a face load or heat? */
+static inline PetscBool TslFaceLoadKindIsBodyForce(TslFaceLoadKind kind)
+{
+  return kind == TSL_BODY_GRAV || kind == TSL_BODY_CENTRIF ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* Body force per volume b on the reference configuration, as consistent nodal forces added to R in residual
+ * form, R_u(a) -= int N_a rho b dV, with the family's full rule (TslElementFaceLoad's body flux: kernels.c):
+ *   TSL_BODY_GRAV     b = value axis[0..2] (g times the unit direction)
+ *   TSL_BODY_CENTRIF  b = value r_perp, r_perp = (x - x0) - ((x - x0) . a) a, x0 = axis[0..2], a = axis[3..5]
+ *                     (unit); value = omega^2
+ * rho is the density at the initial temperature (the reference state's mass, as small strain keeps it), so the
+ * load depends on no unknown: its tangent is zero, exactly (the centrifugal load's stiffness -rho omega^2 (I - a a)
+ * of a deforming body is a large-displacement term, absent in a small-strain step). force[3] (may be NULL) gets
+ * int rho b dV, the element's total. Nothing is added for an inverted element (TslElementInternal reports it). */
+PetscErrorCode TslElementBodyForce(const TslElementInput *in, TslFaceLoadKind kind, PetscReal value, const PetscReal axis[6], PetscReal R[],
+                                   PetscReal force[3]);
 
 /* Element results: integration-point averages of stress S (Voigt 11 22 33 12 13 23), total strain E
  * (engineering shear) and heat flux HFL = -k grad theta; strain energy and the hourglass-control energy

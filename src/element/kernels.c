@@ -613,6 +613,44 @@ static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
   return heat;
 }
 
+/* Body forces (element.h): the acceleration b at each point of the full rule, times rho at the point's initial
+ * temperature and N_a dV. The full rule integrates N_a dV exactly on an undistorted element of any family, so a
+ * uniform gravity gives the element's weight to rounding in every formulation, reduced ones included (their
+ * mechanical points would do as well for the sum, not for its split among the nodes of a quadratic family). */
+PetscErrorCode TslElementBodyForce(const TslElementInput *in, TslFaceLoadKind kind, PetscReal value, const PetscReal axis[6], PetscReal R[],
+                                   PetscReal force[3])
+{
+  const TslGeometry *g    = in->type->geom;
+  const PetscInt     ndof = in->type->ndof, dim = in->type->dim;
+  PetscReal          total[3] = {0, 0, 0};
+  TslElementPoint    p;
+
+  PetscFunctionBeginUser;
+  PetscCheck(TslFaceLoadKindIsBodyForce(kind), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Not a body force: kind %d", (int)kind);
+  for (PetscInt k = 0; k < g->full.n; k++) {
+    TslMaterialPoint mp;
+    PetscReal        b[3];
+
+    if (!TslElementPointEvaluate(in->type, in->sec, in->x, g->full.xi[k], g->full.w[k], &p)) break;
+    if (kind == TSL_BODY_GRAV)
+      for (PetscInt i = 0; i < 3; i++) b[i] = value * axis[i];
+    else {
+      PetscReal r[3], along = 0;
+      for (PetscInt i = 0; i < 3; i++) r[i] = p.x[i] - axis[i], along += r[i] * axis[3 + i];
+      for (PetscInt i = 0; i < 3; i++) b[i] = value * (r[i] - along * axis[3 + i]);
+    }
+    TslMaterialEval(in->sec->mat, PointInitialTheta(in, &p), &mp);
+    for (PetscInt i = 0; i < dim; i++) {
+      const PetscReal f = mp.rho * b[i] * p.dV;
+      for (PetscInt a = 0; a < g->nnode; a++) R[ndof * a + i] -= p.N[a] * f;
+      total[i] += f;
+    }
+  }
+  if (force)
+    for (PetscInt i = 0; i < 3; i++) force[i] = total[i];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Face loads on the reference configuration (small strain), with n the outward unit normal:
  *   pressure p (pushes inward, traction -p n):  R_u(a)     += int N_a p n dA
  *   flux q into the body:                       R_theta(a) -= int N_a q dA,            heat = int q dA

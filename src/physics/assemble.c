@@ -248,6 +248,20 @@ PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemRecordLoad(TslProblem p, const TslFaceRecord *r, const TslElementInput *in, PetscReal R[], PetscReal K[], PetscReal *heat)
+{
+  PetscReal value, sink;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemFaceLoadValue(p, r, &value, &sink));
+  *heat = 0;
+  if (TslFaceLoadKindIsBodyForce(r->kind))
+    PetscCall(TslElementBodyForce(in, r->kind, value, r->axis, R, NULL)); /* no tangent: the load depends on no unknown */
+  else
+    PetscCall(TslElementFaceLoad(in, r->kind, r->face, value, sink, R, K, heat));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Capacity term of the time discretisation chosen by the solver: R_theta(a) += shift (Q_a - Q_old_a),
  * K += shift C_a (backward Euler: shift = 1/dt; steady state: 0, skipped). */
 static PetscErrorCode AddCapacity(TslProblem p, const TslElemData *d, PetscReal R[], PetscReal K[], AsmHeat *heat)
@@ -306,11 +320,10 @@ static PetscErrorCode ElementRest(TslProblem p, PetscInt e, const TslElemData *d
   PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
     const TslFaceRecord *r = &p->face[i];
-    PetscReal            value, sink, h = 0;
-    PetscCall(TslProblemFaceLoadValue(p, r, &value, &sink));
+    PetscReal            h = 0;
     PetscCall(PetscArrayzero(R, d->nd));
     if (K) PetscCall(PetscArrayzero(K, d->nd * d->nd));
-    PetscCall(TslElementFaceLoad(&d->in, r->kind, r->face, value, sink, R, K, &h));
+    PetscCall(TslProblemRecordLoad(p, r, &d->in, R, K, &h));
     PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
     if (c->heat) {
       if (r->kind == TSL_FACE_FILM)
