@@ -331,30 +331,31 @@ static PetscErrorCode ShellHourglass(const TslElementInput *in, const TslMateria
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-const TslFormulation TslFormFull    = {"full integration", FullRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
+const TslFormulation TslFormFull    = {"full integration", FullRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
 const TslFormulation TslFormReduced = {
-    "reduced integration, hourglass control", ReducedRule, NULL, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};
+    "reduced integration, hourglass control", ReducedRule, NULL, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_FALSE};
 /* Reduced integration of a second-order brick (C3D20RT: 2 x 2 x 2): no hourglass control, as in the dialect (its
  * one spurious mode does not propagate through a mesh). */
-const TslFormulation TslFormReducedQuadratic = {"reduced integration", ReducedRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
+const TslFormulation TslFormReducedQuadratic = {"reduced integration", ReducedRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
 /* the expanded S8RT (src/deck/shell.c): C3D20RT with its pressure on the faces' linear pieces (quad8: six tri3),
  * as the modified types take theirs: the serendipity face's consistent corner weights (-A/12) lift a thin
  * shell's corners off a contact surface under pressure */
 const TslFormulation TslFormReducedQuadraticShell = {
-    "reduced integration, pressure on linear sub-faces", ReducedRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn};
-const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
+    "reduced integration, pressure on linear sub-faces", ReducedRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
+const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
 const TslFormulation TslFormReducedHybrid = {
-    "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};
-const TslFormulation TslFormModified       = {"modified second order", FullRule, NULL, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn};
+    "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_FALSE};
+const TslFormulation TslFormModified       = {"modified second order", FullRule, NULL, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
 const TslFormulation TslFormModifiedHybrid = {
-    "modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn};
+    "modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
 const TslFormulation TslFormContinuumShell = {"continuum shell: reduced in-plane, Simpson through the thickness, hourglass control",
                                               ShellRule,
                                               NULL,
                                               ShellHourglass,
                                               Lump,
                                               FaceRuleOwn,
-                                              FaceRuleOwn};
+                                              FaceRuleOwn,
+                                              PETSC_FALSE};
 
 PetscBool TslElementTypeSubdividedFace(const TslElementType *t, PetscInt face)
 {
