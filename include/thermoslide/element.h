@@ -271,7 +271,8 @@ void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[
  *   C[a] dQ/dtheta_a = rho V_a c(theta_a)
  *   M[a] mass rho V_a
  * with V_a the row's lumped nodal volume (row sums; sub-elements for the modified types). Any of the
- * arrays may be NULL. The heat stored in an increment is sum_a Q(theta_a) - Q(theta_old_a). */
+ * arrays may be NULL. The explicit procedure's (and, through TslElementHeatContent, the implicit capacity of
+ * the linear families). */
 PetscErrorCode TslElementLumped(const TslElementInput *in, PetscReal Q[], PetscReal C[], PetscReal M[]);
 
 /* The heat content of the element's nodes for the implicit procedures, the term their time discretisation

@@ -1,15 +1,17 @@
 /* The formulation table: what distinguishes full, reduced (R), hybrid (H) and modified (M) elements.
  *
  *   full       the family's full rule for every term; lumping by row sums (linear families) or HRZ
- *              (quadratic families, whose row sums are negative at the corners)
+ *              (quadratic families, whose row sums are negative at the corners); the implicit capacity of
+ *              the quadratic families is consistent (consistent_capacity, TslElementHeatContent): their
+ *              lumped weights do not match the conduction's and the face flux's across an element
  *   reduced    one mechanical point (the family's reduced rule) with stiffness-based hourglass control;
  *              conduction keeps the full rule, so there is no thermal hourglass mode
  *   hybrid     an independent pressure, constant (linear families) or linear (quadratic families),
  *              condensed in the element (kernels.c)
  *   continuum shell  one point in the shell plane, Simpson points along the stack direction, hourglass
  *              control of the modes they miss (ShellHourglass); conduction keeps the full rule
- *   modified   second-order triangles and tetrahedra that behave well in contact: capacity, mass and 3D
- *              pressure loads are lumped over the linear sub-elements (tri6 -> 4 tri3, tet10 -> 8 tet4),
+ *   modified   second-order triangles and tetrahedra that behave well in contact: mass (and the explicit
+ *              capacity) and 3D pressure loads are lumped over the linear sub-elements (tri6 -> 4 tri3, tet10 -> 8 tet4),
  *              so every nodal weight is positive (the plain tet10 face gives zero corner forces under a
  *              uniform pressure and negative corner capacities)
  *

@@ -975,7 +975,7 @@ PetscErrorCode TslProblemPreallocateIfChanged(TslProblem p)
 
 /* The totals of the solved state from one raw residual pass (every element row, prescribed ones too): the
  * reactions at prescribed temperatures, the face, nodal and contact heat, the heat stored over the increment,
- * sum_a Q(theta_a) - Q(theta_old_a) (the residual's own lumped content, so that heat in - heat out - stored
+ * sum_a Q(theta_a) - Q(theta_old_a) (the residual's own heat content, lumped or consistent, so that heat in - heat out - stored
  * closes to solver tolerance), and the elements' strain and hourglass energies (TslElementInternalEnergy:
  * an implicit increment's history row costs one element pass, not three). */
 PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
