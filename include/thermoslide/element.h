@@ -271,8 +271,22 @@ void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[
  *   C[a] dQ/dtheta_a = rho V_a c(theta_a)
  *   M[a] mass rho V_a
  * with V_a the row's lumped nodal volume (row sums; sub-elements for the modified types). Any of the
- * arrays may be NULL. The heat stored in an increment is sum_a Q(theta_a) - Q(theta_old_a). */
+ * arrays may be NULL. The explicit procedure's (and, through TslElementHeatContent, the implicit capacity of
+ * the linear families). */
 PetscErrorCode TslElementLumped(const TslElementInput *in, PetscReal Q[], PetscReal C[], PetscReal M[]);
+
+/* The heat content of the element's nodes for the implicit procedures, the term their time discretisation
+ * differentiates (the solver adds shift (Q - Q_old) and shift C):
+ *   Q[a]          the nodal heat content,
+ *   C[a n + b]    dQ_a / dtheta_b, n = the element's nodes (may be NULL).
+ * Second-order families (TslElementCapacityConsistent): the consistent capacity, Q_a = int N_a rho e(theta) dV;
+ * their lumped weights (HRZ, linear sub-elements) do not match the distribution of the conduction and of
+ * the flux across an element and put spurious modes into a transient (docs/elements.md, "Capacity").
+ * Linear families: TslElementLumped's Q and C on the diagonal. Either way the heat stored in an increment is
+ * sum_a Q(theta) - Q(theta_old). The explicit procedure keeps TslElementLumped. */
+PetscErrorCode TslElementHeatContent(const TslElementInput *in, PetscReal Q[], PetscReal C[]);
+/* Whether the row's implicit capacity is the consistent matrix (TslElementHeatContent). */
+PetscBool TslElementCapacityConsistent(const TslElementType *t);
 
 typedef enum {
   TSL_FACE_PRESSURE = 0, /* value: pressure (force/area, positive pushing into the body) */

@@ -90,21 +90,23 @@ static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
 }
 
 /* What the implicit solver assembles for an element: internal force and heat flow, plus
- * shift (Q - Q_old) with the lumped heat content. */
+ * shift (Q - Q_old) with the implicit heat content (lumped, or consistent for second-order families), so that
+ * the tangent check covers its capacity matrix. */
 static PetscErrorCode Residual(Case *c, PetscReal R[], PetscReal K[], PetscBool *inv)
 {
   const PetscInt ndof = c->type->ndof, n = c->type->geom->nnode, nd = TslElementTypeNodes(c->type) * ndof;
-  PetscReal      Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES];
+  PetscReal      Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES * TSL_MAX_ELEM_NODES];
 
   PetscFunctionBeginUser;
   PetscCall(TslElementInternal(&c->in, R, K, inv));
   if (*inv || c->shift == 0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(TslElementLumped(&c->in, Q, C, NULL));
-  PetscCall(TslElementLumped(&c->in_old, Qo, NULL, NULL));
+  PetscCall(TslElementHeatContent(&c->in, Q, C));
+  PetscCall(TslElementHeatContent(&c->in_old, Qo, NULL));
   for (PetscInt a = 0; a < n; a++) {
     const PetscInt row = ndof * a + ndof - 1;
     R[row] += c->shift * (Q[a] - Qo[a]);
-    if (K) K[row * nd + row] += c->shift * C[a];
+    if (K)
+      for (PetscInt b = 0; b < n; b++) K[row * nd + ndof * b + ndof - 1] += c->shift * C[a * n + b];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
