@@ -277,14 +277,30 @@ void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[
  *   C[a] dQ/dtheta_a = rho V_a c(theta_a)
  *   M[a] mass rho V_a
  * with V_a the row's lumped nodal volume (row sums; sub-elements for the modified types). Any of the
- * arrays may be NULL. The heat stored in an increment is sum_a Q(theta_a) - Q(theta_old_a). */
+ * arrays may be NULL. The explicit procedure's (and, through TslElementHeatContent, the implicit capacity of
+ * the linear families). */
 PetscErrorCode TslElementLumped(const TslElementInput *in, PetscReal Q[], PetscReal C[], PetscReal M[]);
+
+/* The heat content of the element's nodes for the implicit procedures, the term their time discretisation
+ * differentiates (the solver adds shift (Q - Q_old) and shift C):
+ *   Q[a]          the nodal heat content,
+ *   C[a n + b]    dQ_a / dtheta_b, n = the element's nodes (may be NULL).
+ * Second-order families (TslElementCapacityConsistent): the consistent capacity, Q_a = int N_a rho e(theta) dV;
+ * their lumped weights (HRZ, linear sub-elements) do not match the distribution of the conduction and of
+ * the flux across an element and put spurious modes into a transient (docs/elements.md, "Capacity").
+ * Linear families: TslElementLumped's Q and C on the diagonal. Either way the heat stored in an increment is
+ * sum_a Q(theta) - Q(theta_old). The explicit procedure keeps TslElementLumped. */
+PetscErrorCode TslElementHeatContent(const TslElementInput *in, PetscReal Q[], PetscReal C[]);
+/* Whether the row's implicit capacity is the consistent matrix (TslElementHeatContent). */
+PetscBool TslElementCapacityConsistent(const TslElementType *t);
 
 typedef enum {
   TSL_FACE_PRESSURE = 0, /* value: pressure (force/area, positive pushing into the body) */
   TSL_FACE_FLUX,         /* value: heat flux per area into the body */
   TSL_FACE_FILM,         /* value: film coefficient h, value2: sink temperature; q_out = h (theta - sink) */
-  TSL_BODY_FLUX          /* value: heat per volume into the body (face ignored); consistent, int N_a q dV */
+  TSL_BODY_FLUX,         /* value: heat per volume into the body (face ignored); consistent, int N_a q dV */
+  TSL_BODY_GRAV,         /* value: g, axis[0..2] the unit direction: force rho g n per volume (TslElementBodyForce) */
+  TSL_BODY_CENTRIF       /* value: omega^2, axis[] a point and the unit direction of the spin axis: rho omega^2 r_perp */
 } TslFaceLoadKind;
 
 /* Adds the face load's contribution to the residual R (as an internal-minus-external residual, i.e.
@@ -293,6 +309,24 @@ typedef enum {
  * body per unit time (flux: positive in; film: negative when heat leaves); may be NULL. */
 PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],
                                   PetscReal K[], PetscReal *heat);
+
+/* Is the kind a body force (TslElementBodyForce) rather than a face load or heat? */
+static inline PetscBool TslFaceLoadKindIsBodyForce(TslFaceLoadKind kind)
+{
+  return kind == TSL_BODY_GRAV || kind == TSL_BODY_CENTRIF ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* Body force per volume b on the reference configuration, as consistent nodal forces added to R in residual
+ * form, R_u(a) -= int N_a rho b dV, with the family's full rule (TslElementFaceLoad's body flux: kernels.c):
+ *   TSL_BODY_GRAV     b = value axis[0..2] (g times the unit direction)
+ *   TSL_BODY_CENTRIF  b = value r_perp, r_perp = (x - x0) - ((x - x0) . a) a, x0 = axis[0..2], a = axis[3..5]
+ *                     (unit); value = omega^2
+ * rho is the density at the initial temperature (the reference state's mass, as small strain keeps it), so the
+ * load depends on no unknown: its tangent is zero, exactly (the centrifugal load's stiffness -rho omega^2 (I - a a)
+ * of a deforming body is a large-displacement term, absent in a small-strain step). force[3] (may be NULL) gets
+ * int rho b dV, the element's total. Nothing is added for an inverted element (TslElementInternal reports it). */
+PetscErrorCode TslElementBodyForce(const TslElementInput *in, TslFaceLoadKind kind, PetscReal value, const PetscReal axis[6], PetscReal R[],
+                                   PetscReal force[3]);
 
 /* Element results: integration-point averages of stress S (Voigt 11 22 33 12 13 23), total strain E
  * (engineering shear) and heat flux HFL = -k grad theta; strain energy and the hourglass-control energy

@@ -135,11 +135,15 @@ typedef enum {
   TSL_LOAD_BOUNDARY = 0, /* *BOUNDARY: prescribed dofs dof_first..dof_last = value */
   TSL_LOAD_CLOAD,        /* *CLOAD: nodal force on dof_first */
   TSL_LOAD_CFLUX,        /* *CFLUX: nodal heat flux (dof 11) */
-  TSL_LOAD_DLOAD,        /* *DLOAD: pressure on face (face 1..6 = P1..P6) */
+  TSL_LOAD_DLOAD,        /* *DLOAD: pressure on face (face 1..6 = P1..P6), or a body force (GRAV, CENTRIF: face 0, body) */
   TSL_LOAD_DFLUX,        /* *DFLUX (face 1..6 = S1..S6, face 0 = BF body flux) and *DSFLUX (surface) */
   TSL_LOAD_FILM,         /* *FILM / *SFILM: face 1..6 = F1..F6 or surface; value = h, sink */
   TSL_LOAD_NKINDS
 } TslLoadKind;
+
+/* *DLOAD's body forces (face 0): none (a pressure: TSL_DLOAD_FACE), GRAV (value g, axis[0..2] the unit direction) or CENTRIF
+ * (value omega^2, axis[0..2] a point of the axis, axis[3..5] its unit direction). */
+typedef enum { TSL_DLOAD_FACE = 0, TSL_DLOAD_GRAV, TSL_DLOAD_CENTRIF } TslDload;
 
 /* A load whose target is empty (set[0] == 0, id < 0) comes from a keyword line with OP=NEW and no data
  * lines: it only removes the earlier loads of its kind. */
@@ -148,7 +152,9 @@ typedef struct {
   TslTarget   target;            /* node/nset (BOUNDARY, CLOAD, CFLUX), element/elset or surface (faces) */
   PetscBool   target_is_surface; /* target.set names a *SURFACE (DSFLUX, surface film, surface dload) */
   PetscInt    dof_first, dof_last;
-  PetscInt    face;           /* 1..6 for face loads; 0 = body (BF) */
+  PetscInt    face;           /* 1..6 for face loads; 0 = body (BF, GRAV, CENTRIF) */
+  TslDload    dload;          /* *DLOAD GRAV / CENTRIF (TSL_DLOAD_FACE otherwise) */
+  PetscReal   axis[6];        /* GRAV: unit direction; CENTRIF: point, unit axis direction */
   PetscReal   value;          /* magnitude, prescribed value, flux, or film coefficient */
   PetscReal   sink;           /* FILM sink temperature */
   PetscInt    amplitude;      /* index into amplitudes[], -1 = step default */

@@ -121,8 +121,9 @@ PetscErrorCode TslProblemContactIncrements(TslProblem prob, Vec M, Vec W, PetscR
 
 /* Largest temperature change over the increment (all ranks). */
 PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta);
-/* Reference magnitudes of the displacement and temperature residuals (for convergence tests). */
-PetscErrorCode TslProblemResidualNorms(TslProblem prob, Vec F, PetscReal *norm_u, PetscReal *norm_theta);
+/* 2-norms of a vector in the problem's layout over its displacement rows and its temperature rows (residuals,
+ * solutions, updates: the per-field convergence test). */
+PetscErrorCode TslProblemFieldNorms(TslProblem prob, Vec F, PetscReal *norm_u, PetscReal *norm_theta);
 
 /* ---- explicit dynamics (src/solve/explicit.c): vectors, no matrix -------------------------------
  * Every Vec below is a duplicate of the solution vector (ghosted, block size ndof). */

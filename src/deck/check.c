@@ -414,6 +414,64 @@ static PetscErrorCode CheckInitialVelocities(TslModel *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A body force (*DLOAD GRAV, CENTRIF) is rho times an acceleration, so the materials of its elements ids[n]
+ * (sorted) need a *DENSITY (a model without transient steps may leave it out, and it would be 0): each section
+ * whose material has none is met with the ids in one merge of the two sorted lists. */
+static PetscErrorCode CheckBodyDensity(TslModel *m, const TslLoad *l, const PetscInt ids[], PetscInt n)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt s = 0; s < m->nsection; s++) {
+    const TslSection  *sec = &m->sections[s];
+    const PetscInt     k   = TslModelFindElementSet(m, sec->elset);
+    const TslMaterial *mat = sec->material_index >= 0 ? &m->materials[sec->material_index] : NULL;
+    if (k < 0 || !mat || mat->prop[TSL_PROP_DENSITY].n) continue;
+    for (PetscInt i = 0, j = 0; i < n && j < m->elsets[k].n;) {
+      const PetscInt a = ids[i], b = m->elsets[k].ids[j];
+      CHECK(a != b, l->loc, "*DLOAD %s on element %" PetscInt_FMT ": its material %s has no *DENSITY (the load is rho times the acceleration)",
+            l->dload == TSL_DLOAD_GRAV ? "GRAV" : "CENTRIF", a, mat->name);
+      if (a < b)
+        i++;
+      else
+        j++;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A body force (*DLOAD GRAV, CENTRIF) on element id: the acceleration must lie in the model's plane (2D) or be
+ * symmetric about the axis (axisymmetric elements: gravity along the axis, the spin axis the symmetry axis x = 0
+ * along y), or part of it would be dropped without a word. */
+static PetscErrorCode CheckBodyForce(TslModel *m, const TslLoad *l, PetscInt id)
+{
+  const PetscInt        e = TslModelElementIndex(m, id);
+  const TslElementType *t;
+  const PetscReal      *a = l->axis;
+
+  PetscFunctionBeginUser;
+  CHECK(e >= 0, l->loc, "undefined element %" PetscInt_FMT, id);
+  t = TslElementTypeGet(m->elem_type[e]);
+  if (TslKinematicsRevolves(t->kin)) {
+    if (l->dload == TSL_DLOAD_GRAV)
+      CHECK(a[0] == 0 && a[2] == 0, l->loc,
+            "*DLOAD GRAV on the axisymmetric element %" PetscInt_FMT " (%s): the gravity must point along the axis (0, +-1, 0)", id, t->name);
+    else
+      CHECK(a[0] == 0 && a[2] == 0 && a[3] == 0 && a[5] == 0, l->loc,
+            "*DLOAD CENTRIF on the axisymmetric element %" PetscInt_FMT
+            " (%s): the axis must be the symmetry axis (point 0, y, 0, direction 0, 1, 0)",
+            id, t->name);
+  } else if (t->dim == 2) {
+    if (l->dload == TSL_DLOAD_GRAV)
+      CHECK(a[2] == 0, l->loc, "*DLOAD GRAV on the plane element %" PetscInt_FMT " (%s): the gravity must lie in the x-y plane (nz = 0)", id,
+            t->name);
+    else
+      CHECK((a[5] == 0 && a[2] == 0) || (a[3] == 0 && a[4] == 0), l->loc,
+            "*DLOAD CENTRIF on the plane element %" PetscInt_FMT
+            " (%s): the axis must lie in the x-y plane (z0 = az = 0) or be normal to it (ax = ay = 0)",
+            id, t->name);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l)
 {
   PetscFunctionBeginUser;
@@ -441,8 +499,13 @@ static PetscErrorCode CheckLoad(TslModel *m, const TslLoad *l)
       PetscInt s = TslModelFindElementSet(m, l->target.set);
       CHECK(s >= 0, l->loc, "undefined element set %s", l->target.set);
       for (PetscInt k = 0; k < m->elsets[s].n; k++) PetscCall(CheckFace(m, l->loc, m->elsets[s].ids[k], l->face));
-    } else
+      for (PetscInt k = 0; l->dload != TSL_DLOAD_FACE && k < m->elsets[s].n; k++) PetscCall(CheckBodyForce(m, l, m->elsets[s].ids[k]));
+      if (l->dload != TSL_DLOAD_FACE) PetscCall(CheckBodyDensity(m, l, m->elsets[s].ids, m->elsets[s].n));
+    } else {
       PetscCall(CheckFace(m, l->loc, l->target.id, l->face));
+      if (l->dload != TSL_DLOAD_FACE) PetscCall(CheckBodyForce(m, l, l->target.id));
+      if (l->dload != TSL_DLOAD_FACE) PetscCall(CheckBodyDensity(m, l, &l->target.id, 1));
+    }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -2156,10 +2156,59 @@ static PetscErrorCode LoadFace(Deck *d, TslLoad *l, char prefix, PetscBool surfa
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *DLOAD's body-force labels, one row each: the values after the label (the magnitude first, then axis[]) and
+ * where in axis[] the direction lies, which the reader normalises. Both dialects give a direction there: CalculiX
+ * normalises it (a GRAV direction (0, 0, -2) gives the reactions of (0, 0, -1): ccx 2.20, measured), and Abaqus
+ * reads "components of the gravity vector direction"; a direction without length is an error here (CalculiX runs
+ * it into NaN). */
+typedef struct {
+  const char *label;
+  TslDload    type;
+  PetscInt    nvalue; /* values after the label */
+  PetscInt    dir;    /* the direction's place in axis[] */
+  PetscBool   square; /* the magnitude is a square (omega^2): not negative */
+  const char *what;   /* the data line, for the message */
+} DloadBody;
+
+static const DloadBody dload_body[] = {
+    {"GRAV", TSL_DLOAD_GRAV, 4, 0, PETSC_FALSE, "element or element set, GRAV, g, nx, ny, nz (the gravity direction)"},
+    {"CENTRIF", TSL_DLOAD_CENTRIF, 7, 3, PETSC_TRUE,
+     "element or element set, CENTRIF, omega^2, x0, y0, z0 (a point of the axis), ax, ay, az (its direction)"},
+};
+
+static PetscErrorCode LineDloadBody(Deck *d, TslLoad *l, const DloadBody *b)
+{
+  PetscReal len = 0;
+
+  PetscFunctionBeginUser;
+  USER_CHECK(d->nfield == 2 + b->nvalue, LOC_FMT "*DLOAD %s data line needs %d values after the label (got %d): %s", DLOC(d), b->label,
+             (int)b->nvalue, (int)(d->nfield - 2), b->what);
+  l->dload = b->type;
+  l->face  = 0;
+  PetscCall(FieldReal(d, 2, "the magnitude", &l->value));
+  USER_CHECK(!b->square || l->value >= 0, LOC_FMT "*DLOAD %s: omega^2 must not be negative (got %g)", DLOC(d), b->label, (double)l->value);
+  for (PetscInt i = 0; i < b->nvalue - 1; i++) {
+    USER_CHECK(d->field[3 + i][0], LOC_FMT "*DLOAD %s: value %d is blank: %s", DLOC(d), b->label, (int)(i + 2), b->what);
+    PetscCall(FieldReal(d, 3 + i, "a coordinate", &l->axis[i]));
+  }
+  for (PetscInt i = 0; i < 3; i++) len += l->axis[b->dir + i] * l->axis[b->dir + i];
+  len = PetscSqrtReal(len);
+  USER_CHECK(len > 0, LOC_FMT "*DLOAD %s: the direction (%g, %g, %g) has no length", DLOC(d), b->label, (double)l->axis[b->dir],
+             (double)l->axis[b->dir + 1], (double)l->axis[b->dir + 2]);
+  for (PetscInt i = 0; i < 3; i++) l->axis[b->dir + i] /= len;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode LineDload(Deck *d, TslLoad *l)
 {
   PetscFunctionBeginUser;
-  USER_CHECK(d->nfield == 3, LOC_FMT "*DLOAD data line needs: element, element set or surface, P1..P6 or P, magnitude", DLOC(d));
+  for (size_t k = 0; d->nfield >= 2 && k < sizeof(dload_body) / sizeof(dload_body[0]); k++)
+    if (TslDeckNameEqual(d->field[1], dload_body[k].label)) {
+      PetscCall(LineDloadBody(d, l, &dload_body[k]));
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
+  USER_CHECK(d->nfield == 3,
+             LOC_FMT "*DLOAD data line needs: element, element set or surface, P1..P6 or P, magnitude (or GRAV, CENTRIF: body forces)", DLOC(d));
   PetscCall(LoadFace(d, l, 'P', PETSC_FALSE, PETSC_FALSE));
   PetscCall(FieldReal(d, 2, "the magnitude", &l->value));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -14,7 +14,8 @@
  *    ids, and joins every element set the shell is in; new nodes get ids above the deck's;
  *  - faces SPOS / SNEG (surfaces, *DFLUX labels SPOS / SNEG, *FILM labels FPOS / FNEG) become the top
  *    element's top face and the bottom element's bottom face; *DLOAD's P on an element set of shells is a
- *    pressure on their SPOS faces (pushing against the normal, as the dialect's shell pressure);
+ *    pressure on their SPOS faces (pushing against the normal, as the dialect's shell pressure); a body load
+ *    (*DFLUX BF, *DLOAD GRAV, CENTRIF) on a shell's id loads both of its elements;
  *  - a *BOUNDARY, *TEMPERATURE or initial condition on a shell node holds its whole fibre (the shell's
  *    thickness moves with it, its temperature is the node's through the thickness).
  */
@@ -211,6 +212,22 @@ static PetscErrorCode MapLoadFace(TslModel *m, const TwinMap *tw, TslLoad *l)
     for (PetscInt i = 0; all && i < m->elsets[src].n; i++)
       if (TwinOf(tw, m->elsets[src].ids[i]) < 0) all = PETSC_FALSE;
     if (all) l->target_is_surface = PETSC_FALSE, l->face = TSL_FACE_POS;
+  }
+  /* a body load (BF, GRAV, CENTRIF) on a shell named by its id: both of its elements (a set that holds the shell
+   * holds both already) */
+  if (!l->target_is_surface && l->face == 0 && !l->target.set[0] && TwinOf(tw, l->target.id) >= 0) {
+    char      id[32], name[TSL_NAME_LEN];
+    PetscInt  k;
+    PetscBool created;
+    PetscCall(PetscSNPrintf(id, sizeof(id), "%" PetscInt_FMT, l->target.id));
+    PetscCall(DerivedName(name, id, "BODY", l->target.id));
+    PetscCall(DerivedSet(&m->elsets, &m->nelset, name, l->loc, &k, &created));
+    if (created) {
+      PetscCall(SetAdd(&m->elsets[k], l->target.id));
+      PetscCall(SetAdd(&m->elsets[k], TwinOf(tw, l->target.id)));
+      PetscCall(PetscSortRemoveDupsInt(&m->elsets[k].n, m->elsets[k].ids));
+    }
+    PetscCall(PetscStrncpy(l->target.set, name, TSL_NAME_LEN));
   }
   if (l->target_is_surface || l->face <= 0) PetscFunctionReturn(PETSC_SUCCESS);
   if (!l->target.set[0]) {

@@ -86,11 +86,15 @@ void TslElementLame(const TslMaterialPoint *mp, PetscReal *lambda, PetscReal *mu
  *                values P[] (NULL: displacement formulation)
  *   hourglass    stabilisation added to a reduced-integration element (NULL: none); adds to R and K
  *                (may be NULL) and returns the stabilisation energy
- *   nodal_volume the lumping weights V_a (capacity and mass only; the body flux is consistent, kernels.c)
+ *   nodal_volume the lumping weights V_a (the explicit procedure's capacity and mass, and the implicit
+ *                capacity unless consistent_capacity; the body flux is consistent, kernels.c)
  *   pressure_face_rule, thermal_face_rule
  *                the points of a face integral of a pressure, and of a surface flux or film: the face
  *                family's own shape functions with its as_face rule (exact for N_a N_b, the film), or
- *                for the pressure of a modified element its linear sub-faces (positive nodal weights) */
+ *                for the pressure of a modified element its linear sub-faces (positive nodal weights)
+ *   consistent_capacity
+ *                the implicit procedures' capacity of a second-order family is the consistent matrix
+ *                int rho c N_a N_b dV (TslElementHeatContent); linear families keep the lumped one */
 typedef struct {
   PetscInt  n;
   PetscReal N[TSL_MAX_QP * 4][TSL_MAX_FACE_NODES]; /* face shape values at each point */
@@ -106,6 +110,7 @@ struct TslFormulation {
   PetscBool (*nodal_volume)(const TslElementInput *in, PetscReal vol[]);
   void (*pressure_face_rule)(const TslGeometry *g, PetscInt face, TslFaceRule *rule);
   void (*thermal_face_rule)(const TslGeometry *g, PetscInt face, TslFaceRule *rule);
+  PetscBool consistent_capacity;
 };
 
 /* Hybrid pressure spaces are at most linear: 1 + dim terms. */

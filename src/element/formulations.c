@@ -1,15 +1,17 @@
 /* The formulation table: what distinguishes full, reduced (R), hybrid (H) and modified (M) elements.
  *
  *   full       the family's full rule for every term; lumping by row sums (linear families) or HRZ
- *              (quadratic families, whose row sums are negative at the corners)
+ *              (quadratic families, whose row sums are negative at the corners); the implicit capacity of
+ *              the quadratic families is consistent (consistent_capacity, TslElementHeatContent): their
+ *              lumped weights do not match the conduction's and the face flux's across an element
  *   reduced    one mechanical point (the family's reduced rule) with stiffness-based hourglass control;
  *              conduction keeps the full rule, so there is no thermal hourglass mode
  *   hybrid     an independent pressure, constant (linear families) or linear (quadratic families),
  *              condensed in the element (kernels.c)
  *   continuum shell  one point in the shell plane, Simpson points along the stack direction, hourglass
  *              control of the modes they miss (ShellHourglass); conduction keeps the full rule
- *   modified   second-order triangles and tetrahedra that behave well in contact: capacity, mass and 3D
- *              pressure loads are lumped over the linear sub-elements (tri6 -> 4 tri3, tet10 -> 8 tet4),
+ *   modified   second-order triangles and tetrahedra that behave well in contact: mass (and the explicit
+ *              capacity) and 3D pressure loads are lumped over the linear sub-elements (tri6 -> 4 tri3, tet10 -> 8 tet4),
  *              so every nodal weight is positive (the plain tet10 face gives zero corner forces under a
  *              uniform pressure and negative corner capacities)
  *
@@ -335,40 +337,43 @@ static PetscErrorCode ShellHourglass(const TslElementInput *in, const TslMateria
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-const TslFormulation TslFormFull    = {"full integration", FullRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
+const TslFormulation TslFormFull    = {"full integration", FullRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
 const TslFormulation TslFormReduced = {
-    "reduced integration, hourglass control", ReducedRule, NULL, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};
+    "reduced integration, hourglass control", ReducedRule, NULL, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_FALSE};
 /* Reduced integration of a second-order brick (C3D20RT: 2 x 2 x 2): no hourglass control, as in the dialect (its
  * one spurious mode does not propagate through a mesh). */
-const TslFormulation TslFormReducedQuadratic = {"reduced integration", ReducedRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
+const TslFormulation TslFormReducedQuadratic = {"reduced integration", ReducedRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
 /* the expanded S8RT (src/deck/shell.c): C3D20RT with its pressure on the faces' linear pieces (quad8: six tri3),
  * as the modified types take theirs: the serendipity face's consistent corner weights (-A/12) lift a thin
  * shell's corners off a contact surface under pressure */
 const TslFormulation TslFormReducedQuadraticShell = {
-    "reduced integration, pressure on linear sub-faces", ReducedRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn};
+    "reduced integration, pressure on linear sub-faces", ReducedRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
 /* Full integration with the 3D pressure on the faces' linear pieces (tri6 -> 4 tri3, quad8 -> 6 tri3), as the
  * modified types take theirs: the full quadratic tetrahedron and wedge (C3D10T, C3D15T), whose consistent face
  * weights are zero (tri6) or negative (quad8) at the corners; contact takes those faces as the same pieces.
- * Capacity and mass by HRZ lumping (positive), the rest as full. */
-const TslFormulation TslFormFullSubFace = {"full integration, pressure on linear sub-faces", FullRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn};
+ * Mass (and the explicit capacity) by HRZ lumping (positive), the implicit capacity consistent, the rest as full. */
+const TslFormulation TslFormFullSubFace = {
+    "full integration, pressure on linear sub-faces", FullRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
 /* C3D10HT: the full tet10 with the linear hybrid pressure of the other second-order hybrids and C3D10T's faces. */
-const TslFormulation TslFormHybridSubFace = {"hybrid, pressure on linear sub-faces", FullRule, PressureBasis, NULL, Lump, FaceRuleSub, FaceRuleOwn};
+const TslFormulation TslFormHybridSubFace = {
+    "hybrid, pressure on linear sub-faces", FullRule, PressureBasis, NULL, Lump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
 /* CPE8RHT, CAX8RHT: the 2 x 2 quad8 with the linear hybrid pressure of CPE8HT (3 terms at 4 points). */
 const TslFormulation TslFormReducedQuadraticHybrid = {
-    "reduced integration, hybrid", ReducedRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
-const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn};
+    "reduced integration, hybrid", ReducedRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
+const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
 const TslFormulation TslFormReducedHybrid = {
-    "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn};
-const TslFormulation TslFormModified       = {"modified second order", FullRule, NULL, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn};
+    "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_FALSE};
+const TslFormulation TslFormModified       = {"modified second order", FullRule, NULL, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
 const TslFormulation TslFormModifiedHybrid = {
-    "modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn};
+    "modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
 const TslFormulation TslFormContinuumShell = {"continuum shell: reduced in-plane, Simpson through the thickness, hourglass control",
                                               ShellRule,
                                               NULL,
                                               ShellHourglass,
                                               Lump,
                                               FaceRuleOwn,
-                                              FaceRuleOwn};
+                                              FaceRuleOwn,
+                                              PETSC_FALSE};
 
 PetscBool TslElementTypeSubdividedFace(const TslElementType *t, PetscInt face)
 {

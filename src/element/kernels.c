@@ -550,6 +550,51 @@ PetscErrorCode TslElementLumped(const TslElementInput *in, PetscReal Q[], PetscR
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Heat content for the implicit procedures (TslElementHeatContent, element.h). Consistent (a formulation with
+ * consistent_capacity on a second-order family): Q_a = int N_a rho e(theta_h) dV, C_ab = int N_a rho c(theta_h)
+ * N_b dV, with theta_h = sum_b N_b theta_b, at the points of the family's full rule (exact for N_a N_b on
+ * straight-sided elements, the conduction's points). sum_a Q_a = int rho e(theta_h) dV, so the heat stored is
+ * still the residual's own and the heat balance closes. rho is taken at theta_h and its derivative left out,
+ * as the lumped kernel leaves it out. Lumped otherwise: TslElementLumped's Q and C on the diagonal. */
+PetscErrorCode TslElementHeatContent(const TslElementInput *in, PetscReal Q[], PetscReal C[])
+{
+  const TslGeometry *g    = in->type->geom;
+  const PetscInt     ndof = in->type->ndof, th = ndof - 1, n = g->nnode;
+  TslElementPoint    p;
+
+  PetscFunctionBeginUser;
+  if (C)
+    for (PetscInt a = 0; a < n * n; a++) C[a] = 0;
+  if (!TslElementCapacityConsistent(in->type)) {
+    PetscReal c[TSL_MAX_ELEM_NODES];
+    PetscCall(TslElementLumped(in, Q, C ? c : NULL, NULL));
+    if (C)
+      for (PetscInt a = 0; a < n; a++) C[a * n + a] = c[a];
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  for (PetscInt a = 0; a < n; a++) Q[a] = 0;
+  for (PetscInt q = 0; q < g->full.n; q++) {
+    TslMaterialPoint mp;
+    PetscReal        theta = 0, c, e;
+    PetscCheck(TslElementPointEvaluate(in->type, in->sec, in->x, g->full.xi[q], g->full.w[q], &p), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+               "Inverted %s element", in->type->name);
+    for (PetscInt b = 0; b < n; b++) theta += p.N[b] * in->u[ndof * b + th];
+    e = TslMaterialHeatContent(in->sec->mat, theta, &c);
+    TslMaterialEval(in->sec->mat, theta, &mp);
+    for (PetscInt a = 0; a < n; a++) {
+      Q[a] += p.N[a] * mp.rho * e * p.dV;
+      if (C)
+        for (PetscInt b = 0; b < n; b++) C[a * n + b] += p.N[a] * mp.rho * c * p.N[b] * p.dV;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscBool TslElementCapacityConsistent(const TslElementType *t)
+{
+  return (PetscBool)(t->form->consistent_capacity && t->geom->order >= 2);
+}
+
 /* One face integration point: shape values of the face nodes, position, and the outward normal
  * scaled by the area element, n dA (2D: (dy, -dx) dxi times t or 2 pi r; 3D: x_xi x x_eta dxi deta). */
 typedef struct {
@@ -611,6 +656,44 @@ static PetscReal BodyFlux(const TslElementInput *in, PetscReal q, PetscReal R[])
   }
   for (PetscInt a = 0; a < g->nnode; a++) R[ndof * a + th] -= load[a];
   return heat;
+}
+
+/* Body forces (element.h): the acceleration b at each point of the full rule, times rho at the point's initial
+ * temperature and N_a dV. The full rule integrates N_a dV exactly on an undistorted element of any family, so a
+ * uniform gravity gives the element's weight to rounding in every formulation, reduced ones included (their
+ * mechanical points would do as well for the sum, not for its split among the nodes of a quadratic family). */
+PetscErrorCode TslElementBodyForce(const TslElementInput *in, TslFaceLoadKind kind, PetscReal value, const PetscReal axis[6], PetscReal R[],
+                                   PetscReal force[3])
+{
+  const TslGeometry *g    = in->type->geom;
+  const PetscInt     ndof = in->type->ndof, dim = in->type->dim;
+  PetscReal          total[3] = {0, 0, 0};
+  TslElementPoint    p;
+
+  PetscFunctionBeginUser;
+  PetscCheck(TslFaceLoadKindIsBodyForce(kind), PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Not a body force: kind %d", (int)kind);
+  for (PetscInt k = 0; k < g->full.n; k++) {
+    TslMaterialPoint mp;
+    PetscReal        b[3];
+
+    if (!TslElementPointEvaluate(in->type, in->sec, in->x, g->full.xi[k], g->full.w[k], &p)) break;
+    if (kind == TSL_BODY_GRAV)
+      for (PetscInt i = 0; i < 3; i++) b[i] = value * axis[i];
+    else {
+      PetscReal r[3], along = 0;
+      for (PetscInt i = 0; i < 3; i++) r[i] = p.x[i] - axis[i], along += r[i] * axis[3 + i];
+      for (PetscInt i = 0; i < 3; i++) b[i] = value * (r[i] - along * axis[3 + i]);
+    }
+    TslMaterialEval(in->sec->mat, PointInitialTheta(in, &p), &mp);
+    for (PetscInt i = 0; i < dim; i++) {
+      const PetscReal f = mp.rho * b[i] * p.dV;
+      for (PetscInt a = 0; a < g->nnode; a++) R[ndof * a + i] -= p.N[a] * f;
+      total[i] += f;
+    }
+  }
+  if (force)
+    for (PetscInt i = 0; i < 3; i++) force[i] = total[i];
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Face loads on the reference configuration (small strain), with n the outward unit normal:

@@ -248,23 +248,39 @@ PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemRecordLoad(TslProblem p, const TslFaceRecord *r, const TslElementInput *in, PetscReal R[], PetscReal K[], PetscReal *heat)
+{
+  PetscReal value, sink;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemFaceLoadValue(p, r, &value, &sink));
+  *heat = 0;
+  if (TslFaceLoadKindIsBodyForce(r->kind))
+    PetscCall(TslElementBodyForce(in, r->kind, value, r->axis, R, NULL)); /* no tangent: the load depends on no unknown */
+  else
+    PetscCall(TslElementFaceLoad(in, r->kind, r->face, value, sink, R, K, heat));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Capacity term of the time discretisation chosen by the solver: R_theta(a) += shift (Q_a - Q_old_a),
- * K += shift C_a (backward Euler: shift = 1/dt; steady state: 0, skipped). */
+ * K += shift C (backward Euler: shift = 1/dt; steady state: 0, skipped). C is diagonal for the linear
+ * families and the consistent matrix for the second-order ones (TslElementHeatContent). */
 static PetscErrorCode AddCapacity(TslProblem p, const TslElemData *d, PetscReal R[], PetscReal K[], AsmHeat *heat)
 {
-  PetscReal Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES];
-  PetscInt  th = p->ndof - 1;
+  PetscReal      Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES * TSL_MAX_ELEM_NODES];
+  const PetscInt th = p->ndof - 1, n = d->in.type->geom->nnode;
 
   PetscFunctionBeginUser;
   if (p->shift == 0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(TslElementLumped(&d->in, Q, K ? C : NULL, NULL));
-  PetscCall(TslElementLumped(&d->in_old, Qo, NULL, NULL));
+  PetscCall(TslElementHeatContent(&d->in, Q, K ? C : NULL));
+  PetscCall(TslElementHeatContent(&d->in_old, Qo, NULL));
   /* the element's own nodes: d->n also counts a generalized plane strain element's reference node, which
-   * has no capacity (TslElementLumped leaves its slot unset) */
-  for (PetscInt a = 0; a < d->in.type->geom->nnode; a++) {
+   * has no capacity */
+  for (PetscInt a = 0; a < n; a++) {
     const PetscInt row = p->ndof * a + th;
     R[row] += p->shift * (Q[a] - Qo[a]);
-    if (K) K[row * d->nd + row] += p->shift * C[a];
+    if (K)
+      for (PetscInt b = 0; b < n; b++) K[row * d->nd + p->ndof * b + th] += p->shift * C[a * n + b];
     if (heat) heat->stored += Q[a] - Qo[a];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -306,11 +322,10 @@ static PetscErrorCode ElementRest(TslProblem p, PetscInt e, const TslElemData *d
   PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
     const TslFaceRecord *r = &p->face[i];
-    PetscReal            value, sink, h = 0;
-    PetscCall(TslProblemFaceLoadValue(p, r, &value, &sink));
+    PetscReal            h = 0;
     PetscCall(PetscArrayzero(R, d->nd));
     if (K) PetscCall(PetscArrayzero(K, d->nd * d->nd));
-    PetscCall(TslElementFaceLoad(&d->in, r->kind, r->face, value, sink, R, K, &h));
+    PetscCall(TslProblemRecordLoad(p, r, &d->in, R, K, &h));
     PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
     if (c->heat) {
       if (r->kind == TSL_FACE_FILM)
@@ -973,7 +988,7 @@ PetscErrorCode TslProblemPreallocateIfChanged(TslProblem p)
 
 /* The totals of the solved state from one raw residual pass (every element row, prescribed ones too): the
  * reactions at prescribed temperatures, the face, nodal and contact heat, the heat stored over the increment,
- * sum_a Q(theta_a) - Q(theta_old_a) (the residual's own lumped content, so that heat in - heat out - stored
+ * sum_a Q(theta_a) - Q(theta_old_a) (the residual's own heat content, lumped or consistent, so that heat in - heat out - stored
  * closes to solver tolerance), and the elements' strain and hourglass energies (TslElementInternalEnergy:
  * an implicit increment's history row costs one element pass, not three). */
 PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)

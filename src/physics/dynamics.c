@@ -25,7 +25,7 @@ typedef struct {
   PetscInt           bad;
 } ForceCtx;
 
-/* One element's face loads: mechanical rows (pressure) as forces into fe, heat rows (flux, film) in
+/* One element's face loads: mechanical rows (pressure, body forces) as forces into fe, heat rows (flux, film) in
  * residual form into fi. */
 static PetscErrorCode FaceLoads(TslProblem p, PetscInt e, TslElemData *d, ForceCtx *c)
 {
@@ -35,10 +35,9 @@ static PetscErrorCode FaceLoads(TslProblem p, PetscInt e, TslElemData *d, ForceC
   PetscFunctionBeginUser;
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
     const TslFaceRecord *rec = &p->face[i];
-    PetscReal            value, sink, h = 0;
-    PetscCall(TslProblemFaceLoadValue(p, rec, &value, &sink));
+    PetscReal            h   = 0;
     PetscCall(PetscArrayzero(R, d->nd));
-    PetscCall(TslElementFaceLoad(&d->in, rec->kind, rec->face, value, sink, R, NULL, &h));
+    PetscCall(TslProblemRecordLoad(p, rec, &d->in, R, NULL, &h));
     for (PetscInt r = 0; r < d->nd; r++) {
       if (r % p->ndof == th)
         c->fi[d->ld[r]] += R[r];
@@ -220,7 +219,8 @@ static void            FastBatch(TslProblem p, PetscInt b, const PetscScalar *xa
 }
 
 /* The face loads' integrals of the elements with a record (problem_impl.h, fcache): formed once per edit of
- * the face list by the generic face kernel itself at unit values (pressure: R_u = int N_a n dA; flux: R_theta =
+ * the face list by the generic kernels themselves at unit values (body forces: R_u = -int N_a rho b dV on the
+ * reference configuration at the initial temperature; pressure: R_u = int N_a n dA; flux: R_theta =
  * -int N_a dA, heat = area; film: its tangent int N_a N_b dA, whose rows sum to int N_a dA, as the shape
  * functions sum to one), so FaceLoadsCached gives the generic results to rounding. */
 static PetscErrorCode FaceCache(TslProblem p, const PetscScalar *xa)
@@ -238,11 +238,12 @@ static PetscErrorCode FaceCache(TslProblem p, const PetscScalar *xa)
     const TslGeometry *g = TslElementTypeGet(p->m->elem_type[e])->geom;
     for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
       const TslFaceLoadKind k    = p->face[i].kind;
-      const PetscInt        fn   = k == TSL_BODY_FLUX ? 0 : g->face_nnode[p->face[i].face - 1];
+      const PetscInt        fn   = p->face[i].face < 1 ? 0 : g->face_nnode[p->face[i].face - 1]; /* body loads: face 0 */
       const PetscInt        size = !(p->fast_off && p->fast_off[e] >= 0) ? 0
                                    : k == TSL_FACE_PRESSURE              ? fn * dim
                                    : k == TSL_FACE_FLUX                  ? fn + 1
                                    : k == TSL_FACE_FILM                  ? fn * fn + fn + 1
+                                   : TslFaceLoadKindIsBodyForce(k)       ? g->nnode * dim
                                                                          : 0;
       p->fcache_off[i]           = size ? total : -1;
       total += size;
@@ -261,7 +262,15 @@ static PetscErrorCode FaceCache(TslProblem p, const PetscScalar *xa)
       PetscInt             fn;
       const PetscInt      *fnode;
       if (p->fcache_off[i] < 0) continue;
-      c = &p->fcache[p->fcache_off[i]], fn = g->face_nnode[rec->face - 1], fnode = g->face_node[rec->face - 1];
+      c = &p->fcache[p->fcache_off[i]];
+      if (TslFaceLoadKindIsBodyForce(rec->kind)) { /* R_u = -int N_a rho b dV at unit magnitude (the load is linear in it) */
+        PetscCall(PetscArrayzero(R, d.nd));
+        PetscCall(TslElementBodyForce(&d.in, rec->kind, 1.0, rec->axis, R, NULL));
+        for (PetscInt a = 0; a < g->nnode; a++)
+          for (PetscInt k = 0; k < dim; k++) c[a * dim + k] = R[nd * a + k];
+        continue;
+      }
+      fn = g->face_nnode[rec->face - 1], fnode = g->face_node[rec->face - 1];
       PetscCall(PetscArrayzero(R, d.nd));
       if (rec->kind == TSL_FACE_FILM) PetscCall(PetscArrayzero(K, d.nd * d.nd));
       PetscCall(TslElementFaceLoad(&d.in, rec->kind, rec->face, 1.0, 0.0, R, rec->kind == TSL_FACE_FILM ? K : NULL, &heat));
@@ -302,11 +311,14 @@ static PetscErrorCode FaceLoadsCached(TslProblem p, PetscInt e, const PetscScala
     if (p->fcache_off[i] < 0) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
     const TslFaceRecord *rec = &p->face[i];
-    const PetscInt       fn = g->face_nnode[rec->face - 1], *fnode = g->face_node[rec->face - 1];
+    const PetscInt       fn = rec->face < 1 ? 0 : g->face_nnode[rec->face - 1], *fnode = rec->face < 1 ? NULL : g->face_node[rec->face - 1];
     const PetscReal     *C = &p->fcache[p->fcache_off[i]];
     PetscReal            value, sink;
     PetscCall(TslProblemFaceLoadValue(p, rec, &value, &sink));
-    if (rec->kind == TSL_FACE_PRESSURE)
+    if (TslFaceLoadKindIsBodyForce(rec->kind))
+      for (PetscInt a = 0; a < g->nnode; a++)
+        for (PetscInt k = 0; k < dim; k++) c->fe[nd * ln[a] + k] -= value * C[a * dim + k];
+    else if (rec->kind == TSL_FACE_PRESSURE)
       for (PetscInt f = 0; f < fn; f++)
         for (PetscInt k = 0; k < dim; k++) c->fe[nd * ln[fnode[f]] + k] -= value * C[f * dim + k];
     else if (rec->kind == TSL_FACE_FLUX) {

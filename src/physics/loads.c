@@ -196,11 +196,20 @@ static PetscErrorCode CompactFaces(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The keyword of each distributed load kind: its OP=NEW removes them. */
+static const TslLoadKind face_keyword[] = {
+    [TSL_FACE_PRESSURE] = TSL_LOAD_DLOAD, [TSL_FACE_FLUX] = TSL_LOAD_DFLUX, [TSL_FACE_FILM] = TSL_LOAD_FILM,
+    [TSL_BODY_FLUX] = TSL_LOAD_DFLUX,     [TSL_BODY_GRAV] = TSL_LOAD_DLOAD, [TSL_BODY_CENTRIF] = TSL_LOAD_DLOAD};
+
+/* The kind of each *DLOAD: a pressure or one of the body forces. */
+static const TslFaceLoadKind dload_kind[] = {
+    [TSL_DLOAD_FACE] = TSL_FACE_PRESSURE, [TSL_DLOAD_GRAV] = TSL_BODY_GRAV, [TSL_DLOAD_CENTRIF] = TSL_BODY_CENTRIF};
+
 static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
 {
   TslModel       *m = p->m;
   PetscInt        n, *elem, *face;
-  TslFaceLoadKind kind = ld->kind == TSL_LOAD_DLOAD                ? TSL_FACE_PRESSURE
+  TslFaceLoadKind kind = ld->kind == TSL_LOAD_DLOAD                ? dload_kind[ld->dload]
                          : ld->kind == TSL_LOAD_FILM               ? TSL_FACE_FILM
                          : ld->face == 0 && !ld->target_is_surface ? TSL_BODY_FLUX /* BF; *DSFLUX's S (face 0 too) is on the surface's faces */
                                                                    : TSL_FACE_FLUX;
@@ -213,9 +222,9 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
     const TslElementType *type = TslElementTypeGet(m->elem_type[elem[i]]);
     TslFaceRecord        *r    = &p->face[p->nface++];
 
-    PetscCheck(kind == TSL_BODY_FLUX || (face[i] >= 1 && face[i] <= type->geom->nface), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-               "%s: element %" PetscInt_FMT " (%s) has no face %" PetscInt_FMT, TslLocString(m, ld->loc, loc, sizeof(loc)), m->elem_id[elem[i]],
-               type->name, face[i]);
+    PetscCheck(kind == TSL_BODY_FLUX || TslFaceLoadKindIsBodyForce(kind) || (face[i] >= 1 && face[i] <= type->geom->nface), PETSC_COMM_SELF,
+               PETSC_ERR_USER_INPUT, "%s: element %" PetscInt_FMT " (%s) has no face %" PetscInt_FMT, TslLocString(m, ld->loc, loc, sizeof(loc)),
+               m->elem_id[elem[i]], type->name, face[i]);
     PetscCall(PetscMemzero(r, sizeof(*r)));
     r->elem = elem[i];
     r->face = face[i];
@@ -229,6 +238,7 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
       r->value    = (TslLoadValue){PETSC_TRUE, 0, ld->value, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT, PETSC_FALSE, 0, 0, PETSC_FALSE};
       r->film_amp = -1;
     }
+    PetscCall(PetscArraycpy(r->axis, ld->axis, 6));
   }
   PetscCall(PetscFree2(elem, face));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -299,10 +309,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
   if (clear[TSL_LOAD_DLOAD] || clear[TSL_LOAD_DFLUX] || clear[TSL_LOAD_FILM]) {
     PetscInt n = 0;
     for (PetscInt i = 0; i < p->nface; i++) {
-      TslFaceLoadKind k = p->face[i].kind;
-      PetscBool drop = (k == TSL_FACE_PRESSURE && clear[TSL_LOAD_DLOAD]) || ((k == TSL_FACE_FLUX || k == TSL_BODY_FLUX) && clear[TSL_LOAD_DFLUX]) ||
-                       (k == TSL_FACE_FILM && clear[TSL_LOAD_FILM]);
-      if (!drop) p->face[n++] = p->face[i];
+      if (!clear[face_keyword[p->face[i].kind]]) p->face[n++] = p->face[i];
     }
     p->nface = n;
     p->face_gen++;

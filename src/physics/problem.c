@@ -479,7 +479,7 @@ PetscErrorCode TslProblemMaxTemperatureChange(TslProblem p, PetscReal *dtheta)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslProblemResidualNorms(TslProblem p, Vec F, PetscReal *norm_u, PetscReal *norm_theta)
+PetscErrorCode TslProblemFieldNorms(TslProblem p, Vec F, PetscReal *norm_u, PetscReal *norm_theta)
 {
   const PetscScalar *f;
   PetscReal          s[2] = {0, 0}, g[2];

@@ -79,6 +79,7 @@ typedef struct {
   TslLoadValue    sink;     /* film sink temperature */
   PetscInt        film_amp; /* amplitude scaling the film coefficient, or -1 */
   PetscInt        seq;      /* order of definition (later replaces earlier) */
+  PetscReal       axis[6];  /* body forces (GRAV, CENTRIF): the load's direction, point and axis (TslLoad.axis) */
 } TslFaceRecord;
 
 struct _p_TslProblem {
@@ -172,7 +173,8 @@ struct _p_TslProblem {
   /* explicit face loads of elements with a record (dynamics.c, FaceCache): every load is linear in its value
    * and sink on the reference faces, so each face record's integrals are formed once: fcache_off[i] the
    * offset in fcache of face record i's (pressure: int N_a n dA per face node; flux: int N_a dA and the area;
-   * film: those and int N_a N_b dA), -1 for a kind without (body flux: that element takes the generic path);
+   * film: those and int N_a N_b dA; body forces: -int N_a rho b dV per node at unit magnitude), -1 for a kind
+   * without (body flux: that element takes the generic path);
    * rebuilt when face_gen (the face list's edits) moves past fcache_gen */
   PetscInt   face_gen, fcache_gen;
   PetscInt  *fcache_off;
@@ -256,6 +258,9 @@ PetscBool      TslProblemContact3Departed(TslProblem p, const TslContactNode *cn
 PetscErrorCode TslProblemContact3Normals(TslProblem p, TslContactSurface *cs, const PetscScalar *xa);
 /* A face record's load value and sink at the current time (amplitudes, film amplitude). */
 PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscReal *value, PetscReal *sink);
+/* A distributed load of the element of in at the current time through its kernel (TslElementFaceLoad, or
+ * TslElementBodyForce for a body force), added to R and K (NULL: not wanted); *heat as TslElementFaceLoad's. */
+PetscErrorCode TslProblemRecordLoad(TslProblem p, const TslFaceRecord *r, const TslElementInput *in, PetscReal R[], PetscReal K[], PetscReal *heat);
 /* Collective: bad >= 0 (a local element) on any rank is the user error "element is inverted" on all. */
 PetscErrorCode TslProblemCheckBadElement(TslProblem p, PetscInt bad);
 PetscErrorCode TslProblemContactDestroy(TslProblem p);

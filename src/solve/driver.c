@@ -47,80 +47,135 @@ static PetscErrorCode SetDefaultOption(Driver *d, const char *name, const char *
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Converged when each field's residual (displacement rows, temperature rows) has dropped by rtol from
- * the start of the increment, or is below atol_rel times the largest initial residual of the job: the
- * two fields have different units, so one norm over both would let one hide the other. A solve that
- * starts below that floor is converged without a step, unless the SNES is told to force an iteration:
- * the driver does so after an augmented-Lagrange update (SolveIncrement). */
+/* Each field's round-off scale: |D x| over its rows, D the diagonal of the Jacobian of the last Newton step.
+ * A residual row sums terms of about that size (K x, with the penalty and constraint rows' own entries), so
+ * a few hundred ulps of it is as small as that field's residual can get, in that field's units alone. */
+static PetscErrorCode RoundoffScales(Driver *d, SNES snes, PetscReal *ru, PetscReal *rt)
+{
+  Mat       J;
+  Vec       X;
+  PetscBool has;
+
+  PetscFunctionBeginUser;
+  *ru = *rt = 0;
+  PetscCall(SNESGetJacobian(snes, &J, NULL, NULL, NULL));
+  PetscCall(SNESGetSolution(snes, &X));
+  if (!J) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MatHasOperation(J, MATOP_GET_DIAGONAL, &has));
+  if (!has) PetscFunctionReturn(PETSC_SUCCESS); /* a matrix-free Jacobian (-snes_mf): no round-off path */
+  if (!d->diag) PetscCall(VecDuplicate(X, &d->diag));
+  PetscCall(MatGetDiagonal(J, d->diag));
+  PetscCall(VecPointwiseMult(d->diag, d->diag, X));
+  PetscCall(TslProblemFieldNorms(d->prob, d->diag, ru, rt));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The Newton solve of an increment ends here alone (SolveIncrement refuses any other ending), and each field
+ * decides for itself in its own units: the displacement rows are forces, the temperature rows heat rates,
+ * and in SI units the two differ by 1e12 or more, so no norm over both may end a solve (PETSc's tests on
+ * |F|, on the step |dx| / |x| and on divergence all look at both at once: with E ~ 1e11 they saw the
+ * mechanical residual fall and a step of metres against kelvins, and accepted increments whose thermal part
+ * the linear solve never reached). A field is converged when
+ *  (a) its residual has dropped by -tsl_rtol from the solve's reference (the residual at its start, or after
+ *      its first step if that is larger: a field loaded only by the other one's step, such as the thermal
+ *      stress of a body heated in its first increment), or is below -tsl_atol_rel times the largest initial
+ *      residual of that field in the job; at iteration 0 only this floor counts, and not when the SNES is
+ *      told to force an iteration (after an augmented-Lagrange update, SolveIncrement);
+ *  (b) after a step, its residual is at the round-off of its own terms (RoundoffScales: a field never loaded,
+ *      or stiff penalty contact, whose floor lies above (a)'s); or
+ *  (c) after a step, that field's own update is below -snes_stol of its own solution and the linear solve
+ *      that made it reached the field: the field's residual was at least 1e3 times what the linear tolerance
+ *      left of the whole one, so the step is the field's own answer, not a field the solver never saw.
+ * Divergence is per field too: a residual -snes_divergence_tolerance times its reference. */
 static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason,
                                       void *ctx)
 {
   Driver   *d = (Driver *)ctx;
   Vec       F;
-  PetscReal nu, nt;
+  PetscReal nu, nt, tol_u, tol_t, eta_prev = 0;
   PetscBool ok_u, ok_t, force;
+  KSP       ksp;
 
   PetscFunctionBeginUser;
+  (void)xnorm;
+  (void)snorm;
+  d->accepted = PETSC_FALSE;
   /* asked to stop (a signal): the increment ends here, unconverged, and RunStep stops the job */
   PetscCall(TslStopRequested(d->comm, &d->stop));
   if (d->stop) {
     *reason = SNES_DIVERGED_FUNCTION_DOMAIN;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
+  /* PETSc's test for what is not a matter of units: a NaN, the function count */
   PetscCall(SNESConvergedDefault(snes, it, xnorm, snorm, fnorm, reason, NULL));
-  PetscCall(SNESGetForceIteration(snes, &force));
   if (*reason < 0) PetscFunctionReturn(PETSC_SUCCESS);
-  /* a Newton update below round-off of the solution: the residual is as small as it will get (stiff
-   * penalty contact puts that floor above the absolute tolerance) */
-  if (*reason == SNES_CONVERGED_SNORM_RELATIVE && it > 0) PetscFunctionReturn(PETSC_SUCCESS);
-  /* the same when the whole residual has also fallen by -snes_rtol (PETSc then says FNORM_RELATIVE first): a
-   * field whose only load is the other one's (the thermal stress of a body heated in its first increment, with
-   * no force: its residual scale is 0 and its round-off, relative to the internal forces, is not) would
-   * otherwise iterate to the increment's limit */
-  if (*reason == SNES_CONVERGED_FNORM_RELATIVE && it > 0) {
-    PetscReal stol;
-    PetscCall(SNESGetTolerances(snes, NULL, NULL, &stol, NULL, NULL));
-    if (snorm < stol * xnorm) {
-      *reason = SNES_CONVERGED_SNORM_RELATIVE;
-      PetscFunctionReturn(PETSC_SUCCESS);
-    }
-  }
   *reason = SNES_CONVERGED_ITERATING;
+  PetscCall(SNESGetForceIteration(snes, &force));
+  PetscCall(SNESGetKSP(snes, &ksp));
+  PetscCall(KSPGetTolerances(ksp, &eta_prev, NULL, NULL, NULL));
   PetscCall(SNESGetFunction(snes, &F, NULL, NULL));
-  PetscCall(TslProblemResidualNorms(d->prob, F, &nu, &nt));
+  PetscCall(TslProblemFieldNorms(d->prob, F, &nu, &nt));
   if (it == 0) {
     d->r0_u        = nu;
     d->r0_theta    = nt;
     d->scale_u     = PetscMax(d->scale_u, nu);
     d->scale_theta = PetscMax(d->scale_theta, nt);
+    d->fnorm_prev  = 0;
+  } else if (it == 1) {
+    d->r0_u     = PetscMax(d->r0_u, nu);
+    d->r0_theta = PetscMax(d->r0_theta, nt);
   }
-  {
-    /* a field that has never been loaded (scale 0) borrows a scale from the other one, so that its
-     * round-off counts as zero */
-    PetscReal su = PetscMax(d->scale_u, 1e-6 * d->scale_theta), st = PetscMax(d->scale_theta, 1e-6 * d->scale_u);
-    ok_u = (PetscBool)(nu <= PetscMax(d->rtol * d->r0_u, d->atol_rel * su) || nu == 0);
-    ok_t = (PetscBool)(nt <= PetscMax(d->rtol * d->r0_theta, d->atol_rel * st) || nt == 0);
-    if (ok_u && ok_t && (it > 0 || (!force && nu <= d->atol_rel * su && nt <= d->atol_rel * st))) *reason = SNES_CONVERGED_FNORM_RELATIVE;
-    if (*reason == SNES_CONVERGED_ITERATING && d->forcing_max > 0) {
-      /* The linear tolerance of the next Newton step (inexact Newton): never tighter than what lands each
-       * field below its Newton tolerance with a tenth to spare (so the last step is not over-solved, nor
-       * the first of a solve that starts near the job's residual floor, e.g. after contact re-pairing);
-       * after the first step also the Eisenstat-Walker term 0.9 (|F_k| / |F_k-1|)^2, so that far from the
-       * solution the linear solve does not go beyond what the next Newton step can use; both at most
-       * forcing_max and at least -ksp_rtol. The first step of an increment thus gets 1e-9 (the job's first
-       * increment, whose tolerance is the 1e-8 floor) to 1e-10 (a 1e-9 reduction): a linear model converges
-       * in that one step. */
-      const PetscReal tol = PetscMin(PetscMax(d->rtol * d->r0_u, d->atol_rel * su), PetscMax(d->rtol * d->r0_theta, d->atol_rel * st));
-      PetscReal       eta = fnorm > 0 ? 0.1 * tol / fnorm : 0;
-      KSP             ksp;
-      if (it > 0 && fnorm > 0 && d->fnorm_prev > 0) eta = PetscMax(eta, 0.9 * PetscSqr(fnorm / d->fnorm_prev));
-      eta           = PetscMax(d->ksp_rtol, PetscMin(d->forcing_max, eta));
-      d->fnorm_prev = fnorm;
-      PetscCall(SNESGetKSP(snes, &ksp));
-      PetscCall(KSPSetTolerances(ksp, eta, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
-    }
+  tol_u = PetscMax(d->rtol * d->r0_u, d->atol_rel * d->scale_u);
+  tol_t = PetscMax(d->rtol * d->r0_theta, d->atol_rel * d->scale_theta);
+  ok_u  = (PetscBool)(nu <= tol_u || nu == 0);
+  ok_t  = (PetscBool)(nt <= tol_t || nt == 0);
+  if (it > 0 && d->divtol > 0 && (nu > d->divtol * PetscMax(d->r0_u, tol_u) || nt > d->divtol * PetscMax(d->r0_theta, tol_t))) {
+    *reason = SNES_DIVERGED_DTOL;
+    PetscFunctionReturn(PETSC_SUCCESS);
   }
-  PetscCall(PetscInfo(snes, "it %" PetscInt_FMT ": |R_u| %g |R_theta| %g\n", it, (double)nu, (double)nt));
+  if (it > 0 && (!ok_u || !ok_t)) {
+    PetscReal ru, rt, yu, yt, xu, xt, stol;
+    Vec       X, Y;
+    PetscBool reached_u, reached_t;
+    PetscCall(RoundoffScales(d, snes, &ru, &rt));
+    const PetscReal ulps = 256 * PETSC_MACHINE_EPSILON;
+    if (!ok_u && nu <= ulps * ru) ok_u = PETSC_TRUE;
+    if (!ok_t && nt <= ulps * rt) ok_t = PETSC_TRUE;
+    PetscCall(SNESGetTolerances(snes, NULL, NULL, &stol, NULL, NULL));
+    PetscCall(SNESGetSolution(snes, &X));
+    PetscCall(SNESGetSolutionUpdate(snes, &Y));
+    PetscCall(TslProblemFieldNorms(d->prob, X, &xu, &xt));
+    PetscCall(TslProblemFieldNorms(d->prob, Y, &yu, &yt));
+    reached_u = (PetscBool)(d->nu_prev >= 1e3 * eta_prev * d->fnorm_prev);
+    reached_t = (PetscBool)(d->nt_prev >= 1e3 * eta_prev * d->fnorm_prev);
+    if (!ok_u && reached_u && yu <= stol * xu) ok_u = PETSC_TRUE;
+    if (!ok_t && reached_t && yt <= stol * xt) ok_t = PETSC_TRUE;
+    PetscCall(PetscInfo(snes, "it %" PetscInt_FMT ": round-off |D x| %g %g, steps %g %g of %g %g, reached by the linear solve %d %d\n", it, (double)ru,
+                        (double)rt, (double)yu, (double)yt, (double)xu, (double)xt, (int)reached_u, (int)reached_t));
+  }
+  if (ok_u && ok_t && (it > 0 || (!force && nu <= d->atol_rel * d->scale_u && nt <= d->atol_rel * d->scale_theta))) {
+    *reason     = SNES_CONVERGED_FNORM_RELATIVE;
+    d->accepted = PETSC_TRUE;
+  }
+  if (*reason == SNES_CONVERGED_ITERATING && d->forcing_max > 0) {
+    /* The linear tolerance of the next Newton step (inexact Newton): never tighter than what lands each
+     * field below its Newton tolerance with a tenth to spare (so the last step is not over-solved, nor
+     * the first of a solve that starts near the job's residual floor, e.g. after contact re-pairing);
+     * after the first step also the Eisenstat-Walker term 0.9 (|F_k| / |F_k-1|)^2, so that far from the
+     * solution the linear solve does not go beyond what the next Newton step can use; both at most
+     * forcing_max and at least -ksp_rtol. The first step of an increment thus gets 1e-9 (the job's first
+     * increment, whose tolerance is the 1e-8 floor) to 1e-10 (a 1e-9 reduction): a linear model converges
+     * in that one step. A field far below the other in scale may get no reduction of its own from this
+     * tolerance: (c) above then waits for the next step, whose residual that field dominates. */
+    const PetscReal tol = PetscMin(tol_u, tol_t);
+    PetscReal       eta = fnorm > 0 ? 0.1 * tol / fnorm : 0;
+    if (it > 0 && fnorm > 0 && d->fnorm_prev > 0) eta = PetscMax(eta, 0.9 * PetscSqr(fnorm / d->fnorm_prev));
+    eta = PetscMax(d->ksp_rtol, PetscMin(d->forcing_max, eta));
+    PetscCall(KSPSetTolerances(ksp, eta, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT));
+  }
+  d->fnorm_prev = fnorm, d->nu_prev = nu, d->nt_prev = nt;
+  PetscCall(PetscInfo(snes, "it %" PetscInt_FMT ": |R_u| %g (tolerance %g) |R_theta| %g (tolerance %g)%s\n", it, (double)nu, (double)tol_u, (double)nt,
+                      (double)tol_t, d->accepted ? ": converged" : ""));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -365,6 +420,9 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(TslSplitSetTriangular(pc, ksp, d->block_solves));
   PetscCall(TslSplitSetAmg(pc, d->jacobi_scale, d->amg_cycle));
   PetscCall(SNESSetFromOptions(d->snes));
+  /* divergence is decided per field (ConvergenceTest): PETSc's own test compares the norm of both fields */
+  PetscCall(SNESGetDivergenceTolerance(d->snes, &d->divtol));
+  PetscCall(SNESSetDivergenceTolerance(d->snes, -1));
   {
     /* -pc_type fieldsplit: PETSc's own field split over the same two fields (its Schur and other types) */
     PetscBool fs, ours;
@@ -649,6 +707,12 @@ static PetscErrorCode SolveIncrement(Driver *d, Vec X, SNESConvergedReason *reas
       }
     }
     *its += i, *lits += l;
+    if (*reason > 0 && !d->accepted) {
+      /* a PETSc test other than the per-field one ended the solve (a solver type or option of the user's that
+       * brings its own test): nothing says each field converged, so the increment is not accepted */
+      d->refused = "the Newton solve ended without each field's residual below its tolerance";
+      *reason    = SNES_DIVERGED_FUNCTION_DOMAIN;
+    }
     if (*reason <= 0) break;
     PetscCall(TslPhaseBegin(TSL_PHASE_CONTACT));
     PetscCall(TslProblemContactUpdate(d->prob, &again, &repattern, &augmented));
@@ -821,6 +885,8 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscCall(TslProblemContactRollback(d->prob));
       d->trial = PETSC_FALSE;
       PetscCall(TslProblemGetFailureMessage(d->prob, &why));
+      if (d->refused) why = d->refused;
+      d->refused = NULL;
       if (reason > 0)
         why = "temperature change exceeds DELTMX";
       else if (reason != SNES_DIVERGED_FUNCTION_DOMAIN && reason != SNES_DIVERGED_JACOBIAN_DOMAIN)
@@ -964,6 +1030,7 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
   PetscCall(VecDestroy(&d.velocity));
   PetscCall(VecDestroy(&d.mass));
   PetscCall(VecDestroy(&d.F));
+  PetscCall(VecDestroy(&d.diag));
   for (PetscInt i = 0; i < d.ndefault; i++) PetscCall(PetscOptionsClearValue(NULL, d.defaults[i]));
   PetscFunctionReturn(ierr);
 }

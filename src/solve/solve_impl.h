@@ -39,6 +39,11 @@ typedef struct {
   PetscBool  implicit_records;     /* -tsl_implicit_records: residuals from the element force records */
   PetscBool  records_done;         /* ... built (or declined) at the first implicit step */
   PetscReal  fnorm_prev;           /* residual norm at the previous Newton iteration of the current solve */
+  PetscReal  nu_prev, nt_prev;     /* ... and each field's */
+  PetscReal  divtol;               /* -snes_divergence_tolerance, applied to each field (ConvergenceTest) */
+  PetscBool  accepted;             /* the per-field test ended the last Newton solve (no other test may) */
+  const char *refused;             /* why the last solve's convergence was refused, for the cutback line */
+  Vec        diag;                 /* the Jacobian's diagonal: each field's round-off scale (ConvergenceTest) */
   PetscBool  field_on[MAX_FIELDS]; /* rows of the problem's field table written in frames */
   PetscInt   frequency;
   PetscInt   frame_step, frame_inc; /* last frame written */

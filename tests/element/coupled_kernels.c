@@ -1,6 +1,6 @@
 /* Coupled temperature-displacement kernels, for every type in the catalogue: patch-type checks
  * (rigid motion, free thermal expansion, constrained expansion, linear temperature), volumes, tangent
- * against central differences of the residual, face loads, heat change and inverted elements; a continuum
+ * against central differences of the residual, face loads, body forces, heat change and inverted elements; a continuum
  * shell's STACK DIRECTION (its element renumbered). */
 #include <string.h>
 #include "check.h"
@@ -91,21 +91,23 @@ static void CaseSetUp(Case *c, const TslElementType *type, PetscReal distortion)
 }
 
 /* What the implicit solver assembles for an element: internal force and heat flow, plus
- * shift (Q - Q_old) with the lumped heat content. */
+ * shift (Q - Q_old) with the implicit heat content (lumped, or consistent for second-order families), so that
+ * the tangent check covers its capacity matrix. */
 static PetscErrorCode Residual(Case *c, PetscReal R[], PetscReal K[], PetscBool *inv)
 {
   const PetscInt ndof = c->type->ndof, n = c->type->geom->nnode, nd = TslElementTypeNodes(c->type) * ndof;
-  PetscReal      Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES];
+  PetscReal      Q[TSL_MAX_ELEM_NODES], Qo[TSL_MAX_ELEM_NODES], C[TSL_MAX_ELEM_NODES * TSL_MAX_ELEM_NODES];
 
   PetscFunctionBeginUser;
   PetscCall(TslElementInternal(&c->in, R, K, inv));
   if (*inv || c->shift == 0) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(TslElementLumped(&c->in, Q, C, NULL));
-  PetscCall(TslElementLumped(&c->in_old, Qo, NULL, NULL));
+  PetscCall(TslElementHeatContent(&c->in, Q, C));
+  PetscCall(TslElementHeatContent(&c->in_old, Qo, NULL));
   for (PetscInt a = 0; a < n; a++) {
     const PetscInt row = ndof * a + ndof - 1;
     R[row] += c->shift * (Q[a] - Qo[a]);
-    if (K) K[row * nd + row] += c->shift * C[a];
+    if (K)
+      for (PetscInt b = 0; b < n; b++) K[row * nd + ndof * b + ndof - 1] += c->shift * C[a * n + b];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -531,6 +533,77 @@ static PetscErrorCode CheckBodyFlux(TestLog *log, Case *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Body forces (*DLOAD GRAV, CENTRIF) on the undistorted unit element. Gravity rho g n: the nodal forces are the
+ * consistent ones, -rho g n_i int N_a dV, checked as the body flux's are, through the moments sum_a R_ai f(x_a)
+ * = -rho g n_i int f dV of the monomials the family interpolates (where the full rule integrates f dV exactly);
+ * nothing on the temperature rows or the extra nodes. Centrifugal rho omega^2 r_perp about an axis through the
+ * origin (z; the symmetry axis y of axisymmetric types): the forces sum to -rho omega^2 int r_perp dV, where the
+ * full rule integrates it exactly. Neither depends on the unknowns: displacements and temperatures moved (with
+ * temperature-dependent properties) change nothing, since rho is taken at the initial temperature. */
+static PetscErrorCode CheckBodyForce(TestLog *log, Case *c)
+{
+  const TslGeometry *g   = c->type->geom;
+  const PetscInt     dim = c->type->dim, ndof = c->type->ndof, nd = NDof(c), th = ndof - 1;
+  const PetscBool    axi = IsAxi(c->type);
+  const PetscReal    gr = 9.81, w2 = 4, scale = axi ? 2 * PETSC_PI : (dim == 2 ? c->sec.thickness : 1);
+  const PetscReal    n3[3] = {0.36, -0.48, 0.8}, n2[3] = {0.6, -0.8, 0}, *n = dim == 3 ? n3 : n2;
+  const PetscReal    grav[6] = {n[0], n[1], n[2], 0, 0, 0}, spin[6] = {0, 0, 0, 0, axi ? 1 : 0, axi ? 0 : 1};
+  const PetscInt     degree = PetscMin(g->order, g->full.degree - (axi ? 1 : 0));
+  PetscReal          R[TSL_MAX_ELEM_DOF], R2[TSL_MAX_ELEM_DOF], force[3], diff = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < nd; i++) R[i] = 0;
+  PetscCall(TslElementBodyForce(&c->in, TSL_BODY_GRAV, gr, grav, R, force));
+  for (PetscInt i = 0; i < dim; i++)
+    Check(log, force[i], c->rho * gr * n[i] * UnitVolume(c), 1e-12, "%s gravity total %" PetscInt_FMT, c->type->name, i + 1);
+  for (PetscInt a = 0; a < TslElementTypeNodes(c->type); a++)
+    for (PetscInt i = a < g->nnode ? th : 0; i < ndof; i++)
+      Check(log, R[ndof * a + i], 0, 0, "%s gravity on node %" PetscInt_FMT " slot %" PetscInt_FMT, c->type->name, a + 1, i);
+  for (PetscInt k = 0; k < (dim == 3 ? 27 : 9); k++) {
+    const PetscInt p[3] = {k % 3, (k / 3) % 3, k / 9};
+    if (p[0] + p[1] + p[2] > degree) continue;
+    for (PetscInt i = 0; i < dim; i++) {
+      PetscReal moment = 0, exact;
+      for (PetscInt a = 0; a < g->nnode; a++) {
+        PetscReal f = 1;
+        for (PetscInt d = 0; d < dim; d++) f *= PetscPowRealInt(c->x[3 * a + d] - (axi && d == 0 ? 1 : 0), p[d]);
+        moment += R[ndof * a + i] * f;
+      }
+      if (axi) {
+        const PetscInt p1[3] = {p[0] + 1, p[1], p[2]};
+        exact                = UnitMonomial(g, p1) + UnitMonomial(g, p);
+      } else
+        exact = UnitMonomial(g, p);
+      Check(log, moment, -c->rho * gr * n[i] * scale * exact, 1e-12,
+            "%s gravity moment %" PetscInt_FMT " u^(%" PetscInt_FMT ",%" PetscInt_FMT ",%" PetscInt_FMT ")", c->type->name, i + 1, p[0], p[1], p[2]);
+    }
+  }
+  /* centrifugal: int r_perp_i dV, r_perp = (x, y, 0) about z, (r, 0, 0) about the symmetry axis */
+  if (g->full.degree >= (axi ? 2 : 1)) {
+    PetscReal sum[3] = {0, 0, 0};
+    for (PetscInt i = 0; i < nd; i++) R[i] = 0;
+    PetscCall(TslElementBodyForce(&c->in, TSL_BODY_CENTRIF, w2, spin, R, force));
+    for (PetscInt a = 0; a < g->nnode; a++)
+      for (PetscInt i = 0; i < dim; i++) sum[i] += R[ndof * a + i];
+    for (PetscInt i = 0; i < (axi ? 1 : 2); i++) {
+      const PetscInt  e0[3] = {0, 0, 0}, e1[3] = {i == 0, i == 1, 0}, e2[3] = {2, 0, 0};
+      const PetscReal moment = axi ? UnitMonomial(g, e2) + 2 * UnitMonomial(g, e1) + UnitMonomial(g, e0) : UnitMonomial(g, e1);
+      Check(log, force[i], c->rho * w2 * scale * moment, 1e-12, "%s centrifugal total %" PetscInt_FMT, c->type->name, i + 1);
+      Check(log, sum[i], -force[i], 1e-12, "%s centrifugal nodal sum %" PetscInt_FMT, c->type->name, i + 1);
+    }
+    for (PetscInt i = axi ? 1 : 2; i < dim; i++) Check(log, force[i], 0, 1e-12, "%s centrifugal along the axis %" PetscInt_FMT, c->type->name, i + 1);
+  }
+  /* no unknown enters: move every unknown, make the properties depend on temperature, the same forces */
+  for (PetscInt i = 0; i < nd; i++) R[i] = R2[i] = 0;
+  TemperatureDependent(c);
+  PetscCall(TslElementBodyForce(&c->in, TSL_BODY_GRAV, gr, grav, R, NULL));
+  for (PetscInt i = 0; i < nd; i++) c->u[i] += i % ndof == th ? 15 : 1e-3 * PetscSinReal(1.7 * i);
+  PetscCall(TslElementBodyForce(&c->in, TSL_BODY_GRAV, gr, grav, R2, NULL));
+  for (PetscInt i = 0; i < nd; i++) diff = PetscMax(diff, PetscAbsReal(R2[i] - R[i]));
+  Check(log, diff, 0, 0, "%s gravity independent of the unknowns", c->type->name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Second-order types under a linear temperature theta = THETA0 + g.x (free expansion): the stress-free
  * displacement is quadratic, u_i = s [(g.x) x_i - g_i |x|^2 / 2] with s = alpha (3D, plane stress) or
  * (1 + nu) alpha (plane strain, in-plane); axisymmetric with g along z only (u_r = s g z r,
@@ -746,6 +819,8 @@ int main(int argc, char **argv)
     PetscCall(CheckFaceLoads(&log, &c));
     CaseSetUp(&c, type, 0);
     PetscCall(CheckBodyFlux(&log, &c));
+    CaseSetUp(&c, type, 0);
+    PetscCall(CheckBodyForce(&log, &c));
     for (PetscInt f = 0; f <= type->geom->nface; f++) {
       CaseSetUp(&c, type, 0.08);
       PetscCall(CheckTangent(&log, &c, f));

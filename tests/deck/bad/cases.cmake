@@ -162,3 +162,13 @@ tsl_deck_bad(s8rt_flipped s8rt_flipped.inp "error: s8rt_flipped.inp:18: S8RT ele
 tsl_deck_bad(s8rt_nodes s8rt_nodes.inp "error: s8rt_nodes.inp:19: element has 7 nodes but type S8RT needs 8")
 tsl_deck_bad(s8rt_mixed_section s8rt_mixed_section.inp "error: s8rt_mixed_section.inp:42: *SHELL SECTION of ELSET=PLATE holds conventional shells (S8RT, SAX2T) and element 3 (C3D8T): give them sections of their own")
 tsl_deck_bad(solid_face_spos solid_face_spos.inp "error: solid_face_spos.inp:24: element 1 is not a conventional shell (S8RT, SAX2T): it has faces S1..S6, not SPOS / SNEG")
+# *DLOAD body forces (GRAV, CENTRIF; tests/dload): a material without *DENSITY (a *STATIC model may leave it out),
+# a direction without length, the wrong number of values, an axisymmetric spin axis off the symmetry axis, a plane
+# model's gravity normal to its plane, a negative omega^2
+tsl_deck_bad(dload_grav_no_density dload_grav_no_density.inp "error: dload_grav_no_density.inp:19: *DLOAD GRAV on element 1: its material STEEL has no *DENSITY")
+tsl_deck_bad(dload_grav_zero_direction dload_grav_zero_direction.inp "error: dload_grav_zero_direction.inp:20: *DLOAD GRAV: the direction (0., 0., 0.) has no length")
+tsl_deck_bad(dload_grav_values dload_grav_values.inp "error: dload_grav_values.inp:20: *DLOAD GRAV data line needs 4 values after the label (got 3)")
+tsl_deck_bad(dload_centrif_values dload_centrif_values.inp "error: dload_centrif_values.inp:20: *DLOAD CENTRIF data line needs 7 values after the label (got 8)")
+tsl_deck_bad(dload_centrif_axis_cax4t dload_centrif_axis_cax4t.inp "error: dload_centrif_axis_cax4t.inp:20: *DLOAD CENTRIF on the axisymmetric element 1 (CAX4T): the axis must be the symmetry axis")
+tsl_deck_bad(dload_grav_out_of_plane dload_grav_out_of_plane.inp "error: dload_grav_out_of_plane.inp:20: *DLOAD GRAV on the plane element 1 (CPS4T): the gravity must lie in the x-y plane")
+tsl_deck_bad(dload_centrif_negative dload_centrif_negative.inp "error: dload_centrif_negative.inp:20: *DLOAD CENTRIF: omega^2 must not be negative (got -10000.)")
