@@ -552,13 +552,16 @@ PetscErrorCode TslElementLumped(const TslElementInput *in, PetscReal Q[], PetscR
 
 /* Heat content for the implicit procedures (TslElementHeatContent, element.h). Consistent (a formulation with
  * consistent_capacity on a second-order family): Q_a = int N_a rho e(theta_h) dV, C_ab = int N_a rho c(theta_h)
- * N_b dV, with theta_h = sum_b N_b theta_b, at the points of the family's full rule (exact for N_a N_b on
- * straight-sided elements, the conduction's points). sum_a Q_a = int rho e(theta_h) dV, so the heat stored is
+ * N_b dV, with theta_h = sum_b N_b theta_b, at the points of a rule exact for N_a N_b on straight-sided elements:
+ * the family's lumping rule where it has one (tri6: 6 points, tet10: 14), else its full rule (quad8, hex20,
+ * wedge15). The full rules of tri6 and tet10 (3 and 4 points, degree 2) are not: with fewer points than nodes
+ * they gave a capacity matrix of rank 3 (of 6) and 4 (of 10). sum_a Q_a = int rho e(theta_h) dV, so the heat stored is
  * still the residual's own and the heat balance closes. rho is taken at theta_h and its derivative left out,
  * as the lumped kernel leaves it out. Lumped otherwise: TslElementLumped's Q and C on the diagonal. */
 PetscErrorCode TslElementHeatContent(const TslElementInput *in, PetscReal Q[], PetscReal C[])
 {
-  const TslGeometry *g    = in->type->geom;
+  const TslGeometry   *g    = in->type->geom;
+  const TslQuadrature *rule = g->lump.n ? &g->lump : &g->full;
   const PetscInt     ndof = in->type->ndof, th = ndof - 1, n = g->nnode;
   TslElementPoint    p;
 
@@ -573,10 +576,10 @@ PetscErrorCode TslElementHeatContent(const TslElementInput *in, PetscReal Q[], P
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (PetscInt a = 0; a < n; a++) Q[a] = 0;
-  for (PetscInt q = 0; q < g->full.n; q++) {
+  for (PetscInt q = 0; q < rule->n; q++) {
     TslMaterialPoint mp;
     PetscReal        theta = 0, c, e;
-    PetscCheck(TslElementPointEvaluate(in->type, in->sec, in->x, g->full.xi[q], g->full.w[q], &p), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+    PetscCheck(TslElementPointEvaluate(in->type, in->sec, in->x, rule->xi[q], rule->w[q], &p), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
                "Inverted %s element", in->type->name);
     for (PetscInt b = 0; b < n; b++) theta += p.N[b] * in->u[ndof * b + th];
     e = TslMaterialHeatContent(in->sec->mat, theta, &c);

@@ -41,12 +41,14 @@ L, H, Q = 1.0, 0.25, 1.0
 TIMES = (0.02, 0.05, 0.1)
 
 FAMILY = {
-    "C3D20T": "hex20", "C3D20RT": "hex20", "C3D10MT": "tet10",
+    "C3D20T": "hex20", "C3D20RT": "hex20", "C3D10MT": "tet10", "C3D10T": "tet10", "C3D10HT": "tet10",
 }
-for t in ("CPE8T", "CPE8HT", "CPS8T", "CPEG8T", "CAX8T", "CGAX8T"):
+for t in ("CPE8T", "CPE8HT", "CPS8T", "CPEG8T", "CAX8T", "CGAX8T", "CPE8RT", "CPE8RHT", "CPS8RT", "CAX8RT", "CAX8RHT"):
     FAMILY[t] = "quad8"
-for t in ("CPE6MT", "CPE6MHT", "CPS6MT", "CPEG6MT", "CPEG6MHT", "CAX6MT", "CAX6MHT", "CGAX6MT", "CGAX6MHT"):
+for t in ("CPE6MT", "CPE6MHT", "CPS6MT", "CPEG6MT", "CPEG6MHT", "CAX6MT", "CAX6MHT", "CGAX6MT", "CGAX6MHT", "CPE6T", "CPS6T", "CAX6T"):
     FAMILY[t] = "tri6"
+# rows the dialect has no coupled name for: a deck names them by CalculiX's mechanical name (docs/elements.md)
+DECK_TYPE = {"CPE6T": "CPE6", "CPS6T": "CPS6", "CAX6T": "CAX6"}
 fam = FAMILY[typ]
 axi = typ.startswith("CAX") or typ.startswith("CGAX")
 dim = 3 if fam in ("hex20", "tet10") else 2
@@ -136,7 +138,7 @@ def deck(n, dt):
     gen = typ.startswith("CPEG")
     if gen:
         lines += ["*NODE, NSET=REF", " %d, -1, 0" % ref]  # outside the bar: examine() leaves it out
-    lines += ["*ELEMENT, TYPE=%s, ELSET=BODY" % typ] + [" %d, " % (e + 1) + ", ".join(str(v) for v in c) for e, c in enumerate(elems)]
+    lines += ["*ELEMENT, TYPE=%s, ELSET=BODY" % DECK_TYPE.get(typ, typ)] + [" %d, " % (e + 1) + ", ".join(str(v) for v in c) for e, c in enumerate(elems)]
     lines += ["*MATERIAL, NAME=M", "*ELASTIC", " 1000.0, 0.3", "*EXPANSION", " 1e-5", "*CONDUCTIVITY", " 1.0", "*DENSITY", " 1.0",
               "*SPECIFIC HEAT", " 1.0"]
     lines += ["*SOLID SECTION, ELSET=BODY, MATERIAL=M" + (", REF NODE=%d" % ref if gen else ""), " 1.0"]
