@@ -1846,8 +1846,9 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
 {
   TslModel   *m = d->m;
   TslStep    *s;
-  const char *name = Param(d, "NAME"), *nl;
+  const char *name = Param(d, "NAME"), *nl, *title;
   char        buf[32];
+  PetscBool   got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -1864,6 +1865,12 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
   nl = ParamUpper(d, "NLGEOM", buf, sizeof(buf));
   USER_CHECK(!nl || !nl[0] || !strcmp(nl, "YES") || !strcmp(nl, "NO"), LOC_FMT "NLGEOM=%s: expected YES or NO", KLOC(d), nl);
   s->nlgeom = (nl && strcmp(nl, "NO")) ? PETSC_TRUE : PETSC_FALSE;
+  if (s->nlgeom) /* NLGEOM alone means YES in the dialect */
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          LOC_FMT
+                          "warning: *STEP, NLGEOM: step %s runs with small-strain kinematics (finite strain is not available): the "
+                          "results hold for small rotations and strains only; rotations or strains of more than a few percent will be wrong\n",
+                          KLOC(d), s->name));
   nl        = ParamUpper(d, "AMPLITUDE", buf, sizeof(buf));
   if (nl) {
     USER_CHECK(!strcmp(nl, "RAMP") || !strcmp(nl, "STEP"), LOC_FMT "*STEP, AMPLITUDE=%s: expected RAMP or STEP", KLOC(d), nl);
@@ -1874,6 +1881,10 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
   s->dtmin                      = 1e-5;
   d->step                       = m->nstep++;
   d->out_frequency              = d->out_frequency_model;
+  /* Abaqus allows one data line here, the step's title (free text, commas included): read and not kept (the
+   * model has no place for it); a second data line is an error (DeckParse) */
+  PetscCall(RawNext(d, &title, &got));
+  if (got && IsKeywordLine(title)) RawUnget(d);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -158,3 +158,5 @@ tsl_deck_bad(s8rt_flipped s8rt_flipped.inp "error: s8rt_flipped.inp:18: S8RT ele
 tsl_deck_bad(s8rt_nodes s8rt_nodes.inp "error: s8rt_nodes.inp:19: element has 7 nodes but type S8RT needs 8")
 tsl_deck_bad(s8rt_mixed_section s8rt_mixed_section.inp "error: s8rt_mixed_section.inp:42: *SHELL SECTION of ELSET=PLATE holds conventional shells (S8RT, SAX2T) and element 3 (C3D8T): give them sections of their own")
 tsl_deck_bad(solid_face_spos solid_face_spos.inp "error: solid_face_spos.inp:24: element 1 is not a conventional shell (S8RT, SAX2T): it has faces S1..S6, not SPOS / SNEG")
+# The line syntax: *STEP takes one title line, not two
+tsl_deck_bad(step_title_twice step_title_twice.inp "error: step_title_twice.inp:19: data line not expected here (after *STEP)")
