@@ -587,20 +587,71 @@ static PetscErrorCode ParseKeyword(Deck *d, char *line)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Reads the keyword line starting at s (joining continuation lines that follow a trailing comma) into kwbuf. */
+/* Whether key is in list ('|'-separated names). */
+static PetscBool ParamKnown(const char *list, const char *key)
+{
+  size_t n = strlen(key);
+  for (const char *p = list; *p;) {
+    const char *e = strchr(p, '|');
+    size_t      l = e ? (size_t)(e - p) : strlen(p);
+    if (l == n && !strncmp(p, key, n)) return PETSC_TRUE;
+    if (!e) break;
+    p = e + 1;
+  }
+  return PETSC_FALSE;
+}
+
+static const char *KeywordParams(const char *name);
+
+/* Whether line, which follows a keyword line ending in a comma, continues it rather than being the keyword's
+ * first data line. The dialect continues a keyword line only onto more parameters, and a trailing comma alone
+ * is common before data (CalculiX-Examples' leaf spring: "*node file," then "U"): so a line continues it when
+ * it gives a value (NAME=value) or holds nothing but parameter names the keyword knows (params, from the
+ * keyword table; NULL for an unknown or ignored keyword). */
+static PetscBool ContinuesKeyword(const char *line, const char *params)
+{
+  PetscBool any = PETSC_FALSE;
+
+  if (strchr(line, '=')) return PETSC_TRUE;
+  if (!params) return PETSC_FALSE;
+  for (const char *p = line;;) {
+    const char *c = strchr(p, ',');
+    size_t      n = c ? (size_t)(c - p) : strlen(p);
+    char        item[64], *w;
+    if (n >= sizeof(item)) return PETSC_FALSE;
+    memcpy(item, p, n);
+    item[n] = 0;
+    w       = Normalize(item);
+    if (w[0]) {
+      if (!ParamKnown(params, w)) return PETSC_FALSE;
+      any = PETSC_TRUE;
+    }
+    if (!c) break;
+    p = c + 1;
+  }
+  return any;
+}
+
+/* Reads the keyword line starting at s into kwbuf, joined with the lines that continue it (ContinuesKeyword)
+ * while it ends in a comma. */
 static PetscErrorCode KeywordLine(Deck *d, const char *s)
 {
-  size_t n = strlen(s);
+  size_t      n = strlen(s);
+  char        name[64];
+  const char *params;
 
   PetscFunctionBeginUser;
   d->kwloc = d->loc;
   PetscCall(BufReserve(&d->kwbuf, &d->kwcap, n + 1));
   memcpy(d->kwbuf, s, n + 1);
+  n = strcspn(s + 1, ",");
+  PetscCall(PetscStrncpy(name, s + 1, PetscMin(n + 1, sizeof(name))));
+  params = KeywordParams(Normalize(name));
   while (EndsWithComma(d->kwbuf)) {
     PetscBool more;
     PetscCall(RawNext(d, &s, &more));
     if (!more) break;
-    if (IsKeywordLine(s)) {
+    if (IsKeywordLine(s) || !ContinuesKeyword(s, params)) {
       RawUnget(d);
       break;
     }
@@ -2787,17 +2838,11 @@ static const DeckKeyword Keywords[] = {
     {"CONTROLS", AT_STEP, IN_NONE, NULL, KwIgnored, IGNORED_CONTROLS, NULL},
 };
 
-static PetscBool ParamKnown(const char *list, const char *key)
+static const char *KeywordParams(const char *name)
 {
-  size_t n = strlen(key);
-  for (const char *p = list; *p;) {
-    const char *e = strchr(p, '|');
-    size_t      l = e ? (size_t)(e - p) : strlen(p);
-    if (l == n && !strncmp(p, key, n)) return PETSC_TRUE;
-    if (!e) break;
-    p = e + 1;
-  }
-  return PETSC_FALSE;
+  for (size_t i = 0; i < sizeof(Keywords) / sizeof(Keywords[0]); i++)
+    if (!strcmp(Keywords[i].name, name)) return Keywords[i].params;
+  return NULL;
 }
 
 /* Where the reader is now: inside a step, before the first one (model data) or between steps. */
