@@ -2285,10 +2285,11 @@ static PetscErrorCode AmplitudeParam(Deck *d, const char *key, PetscInt *index)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A load keyword in the model data (only *BOUNDARY may be there) holds dofs at zero from the first step
- * on: the dialect allows only homogeneous conditions there (CalculiX: "inhomogeneous conditions can be
- * defined between a *STEP card and an *END STEP card only"; Abaqus likewise), and nothing that needs a
- * step (an amplitude, OP=NEW, FIXED at the step's start values). */
+/* A load keyword in the model data (only *BOUNDARY may be there) prescribes dofs from the first step on, its
+ * lines prepended to that step's (DeckModelLoads). A nonzero value is read as CalculiX's reader takes it (its
+ * manual: "inhomogeneous conditions can be defined between a *STEP card and an *END STEP card only"; Abaqus
+ * reads zero values only): the first step's, under that step's default amplitude. Nothing that needs a step
+ * (an amplitude, OP=NEW, FIXED at the step's start values) is allowed. */
 static PetscErrorCode ModelLoadCheck(Deck *d, const char *op)
 {
   static const char *history_only[] = {"AMPLITUDE", "FIXED"};
@@ -2321,7 +2322,7 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
   USER_CHECK(!type || velocity || !strcmp(type, "DISPLACEMENT"), LOC_FMT "*BOUNDARY, TYPE=%s is not supported (DISPLACEMENT or VELOCITY)", KLOC(d),
              type);
   USER_CHECK(!velocity || !model,
-             LOC_FMT "*BOUNDARY, TYPE=VELOCITY belongs to a step (in the model data a boundary condition only holds dofs at zero)", KLOC(d));
+             LOC_FMT "*BOUNDARY, TYPE=VELOCITY belongs to a step (in the model data a boundary condition prescribes displacements)", KLOC(d));
   USER_CHECK(!velocity || !Param(d, "FIXED"), LOC_FMT "*BOUNDARY: FIXED and TYPE=VELOCITY exclude each other", KLOC(d));
   if (model) PetscCall(ModelLoadCheck(d, op));
   PetscCall(AmplitudeParam(d, "AMPLITUDE", &amp));
@@ -2345,9 +2346,6 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
       d->skip_line = PETSC_FALSE;
       continue;
     }
-    USER_CHECK(!model || l.value == 0,
-               LOC_FMT "*%s in the model data holds dofs at zero; a nonzero value (%g) needs a step: give this line inside *STEP ... *END STEP",
-               DLOC(d), d->kw, (double)l.value);
     PetscCall(TslDeckGrow(loads, sizeof(TslLoad), *nload));
     (*loads)[(*nload)++] = l;
     nline++;

@@ -46,7 +46,6 @@ tsl_deck_bad(friction_negative friction_negative.inp "error: friction_negative.i
 tsl_deck_bad(friction_outside_interaction friction_outside_interaction.inp "error: friction_outside_interaction.inp:30: *FRICTION must follow *SURFACE INTERACTION (interface properties outside a surface interaction)")
 tsl_deck_bad(friction_twice friction_twice.inp "error: friction_twice.inp:33: *FRICTION is given twice for surface interaction I1 (first at friction_twice.inp:31)")
 # Placement: model data before the first *STEP, history data inside a step (docs/keywords.md)
-tsl_deck_bad(boundary_nonzero_model boundary_nonzero_model.inp "error: boundary_nonzero_model.inp:21: *BOUNDARY in the model data holds dofs at zero; a nonzero value (0.5) needs a step")
 tsl_deck_bad(boundary_amplitude_model boundary_amplitude_model.inp "error: boundary_amplitude_model.inp:22: *BOUNDARY, AMPLITUDE is history data: give this *BOUNDARY inside a step")
 tsl_deck_bad(boundary_opnew_model boundary_opnew_model.inp "error: boundary_opnew_model.inp:20: *BOUNDARY, OP=NEW in the model data: OP=NEW removes earlier conditions, so it belongs in a step")
 tsl_deck_bad(model_data_between_steps model_data_between_steps.inp "error: model_data_between_steps.inp:26: *NSET is model data: it belongs before the first *STEP (here it comes after the first step, which starts at model_data_between_steps.inp:20)")
