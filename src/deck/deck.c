@@ -63,6 +63,8 @@ typedef struct {
   PetscInt  interaction;         /* surface interaction the interface-law keywords apply to, or -1 */
   PetscInt  out_frequency;       /* *OUTPUT, FREQUENCY= in the open step */
   PetscInt  out_frequency_model; /* *OUTPUT, FREQUENCY= in the model data: each step's default */
+  PetscInt  out_number_model;    /* *OUTPUT, NUMBER INTERVAL= in the model data: each step's default (0: none) */
+  PetscReal out_time_model;      /* *OUTPUT, TIME INTERVAL= in the model data: each step's default (0: none) */
   PetscInt *node_line;           /* [2*nnode] (file, line) of each node, for duplicate messages */
   PetscInt  nkeyword;            /* keyword lines read */
 
@@ -1930,6 +1932,8 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
   }
   s->dt0 = s->period = s->dtmax = 1.0;
   s->dtmin                      = 1e-5;
+  s->out_number_interval        = d->out_number_model;
+  s->out_time_interval          = d->out_time_model;
   d->step                       = m->nstep++;
   d->out_frequency              = d->out_frequency_model;
   /* Abaqus allows one data line here, the step's title (free text, commas included): read and not kept (the
@@ -2385,14 +2389,20 @@ static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
     if (v && strcmp(v, "PRESELECT"))
       PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *OUTPUT, VARIABLE=%s is ignored (the default variables are written)\n", KLOC(d), v));
   }
-  if (Param(d, "NUMBER INTERVAL") || Param(d, "TIME INTERVAL")) { /* Abaqus/Explicit's output intervals */
-    TslStep  *s = d->step >= 0 ? &d->m->steps[d->step] : NULL;
-    PetscBool set;
-    USER_CHECK(s && s->explicit_dynamics, LOC_FMT "NUMBER INTERVAL= and TIME INTERVAL= belong to the *OUTPUT of an explicit step (after *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT)", KLOC(d));
-    PetscCall(ParamInt(d, "NUMBER INTERVAL", &s->out_number_interval));
-    PetscCall(ParamReal(d, "TIME INTERVAL", &s->out_time_interval, &set));
-    USER_CHECK(!Param(d, "NUMBER INTERVAL") || s->out_number_interval > 0, LOC_FMT "NUMBER INTERVAL must be positive", KLOC(d));
-    USER_CHECK(!set || s->out_time_interval > 0, LOC_FMT "TIME INTERVAL must be positive", KLOC(d));
+  if (Param(d, "NUMBER INTERVAL") || Param(d, "TIME INTERVAL")) {
+    /* frames at n equal intervals of the step or every dt of step time, the increments ending there (implicit
+     * and explicit steps alike: src/solve/driver.c, TslFrameTimes); in the model data, every step's default */
+    TslStep   *s      = d->step >= 0 ? &d->m->steps[d->step] : NULL;
+    PetscInt  *number = s ? &s->out_number_interval : &d->out_number_model;
+    PetscReal *time   = s ? &s->out_time_interval : &d->out_time_model;
+    PetscBool  set;
+    USER_CHECK(!(Param(d, "NUMBER INTERVAL") && Param(d, "TIME INTERVAL")) && !Param(d, "FREQUENCY"),
+               LOC_FMT "*OUTPUT: FREQUENCY=, NUMBER INTERVAL= and TIME INTERVAL= exclude each other", KLOC(d));
+    *number = 0, *time = 0; /* the one given replaces the other */
+    PetscCall(ParamInt(d, "NUMBER INTERVAL", number));
+    PetscCall(ParamReal(d, "TIME INTERVAL", time, &set));
+    USER_CHECK(!Param(d, "NUMBER INTERVAL") || *number > 0, LOC_FMT "NUMBER INTERVAL must be positive (got %" PetscInt_FMT ")", KLOC(d), *number);
+    USER_CHECK(!set || *time > 0, LOC_FMT "TIME INTERVAL must be positive (got %g)", KLOC(d), (double)*time);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -91,7 +91,9 @@ tsl_deck_bad(explicit_cpeg explicit_cpeg.inp "error: explicit_cpeg.inp:8: elemen
 tsl_deck_bad(explicit_implicit_dynamic explicit_implicit_dynamic.inp "error: explicit_implicit_dynamic.inp:19: *DYNAMIC TEMPERATURE-DISPLACEMENT is supported with EXPLICIT only (implicit dynamics is not available)")
 tsl_deck_bad(explicit_equation explicit_equation.inp "error: explicit_equation.inp:19: *EQUATION is not supported in explicit steps (step Step-1 at explicit_equation.inp:21)")
 tsl_deck_bad(mass_scaling_implicit mass_scaling_implicit.inp "error: mass_scaling_implicit.inp:21: mass scaling belongs to an explicit step (*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT); step Step-1 is not one")
-tsl_deck_bad(explicit_output_interval_implicit explicit_output_interval_implicit.inp "error: explicit_output_interval_implicit.inp:21: NUMBER INTERVAL= and TIME INTERVAL= belong to the *OUTPUT of an explicit step")
+tsl_deck_bad(output_number_interval_zero output_number_interval_zero.inp "error: output_number_interval_zero.inp:21: NUMBER INTERVAL must be positive (got 0)")
+tsl_deck_bad(output_time_interval_negative output_time_interval_negative.inp "error: output_time_interval_negative.inp:21: TIME INTERVAL must be positive (got -0.1)")
+tsl_deck_bad(output_interval_frequency output_interval_frequency.inp "error: output_interval_frequency.inp:21: *OUTPUT: FREQUENCY=, NUMBER INTERVAL= and TIME INTERVAL= exclude each other")
 # Contact in explicit steps: node-to-surface (PENALTY or KINEMATIC) only for now
 tsl_deck_bad(explicit_surface_to_surface explicit_surface_to_surface.inp "error: explicit_surface_to_surface.inp:34: *CONTACT PAIR, TYPE=SURFACE TO SURFACE with MECHANICAL CONSTRAINT=KINEMATIC is not supported in explicit steps")
 tsl_deck_bad(contact_pair_constraint contact_pair_constraint.inp "error: contact_pair_constraint.inp:33: *CONTACT PAIR, MECHANICAL CONSTRAINT=LAGRANGE is not supported (PENALTY or KINEMATIC)")
