@@ -38,9 +38,18 @@ typedef struct {
   PetscInt  ntext;
 
   /* raw line pushback */
-  PetscBool   back;
-  const char *raw;
-  TslLoc      rawloc;
+  PetscBool back;
+  char     *raw;
+  TslLoc    rawloc;
+  PetscBool raw_verbatim; /* raw was read verbatim (no <name> substitution) */
+
+  /* *PARAMETER: the parameters defined so far; every later line has its <name> references replaced by their
+   * values (Substitute) into subst, except *HEADING's free text (verbatim) */
+  struct DeckParameter *parameters;
+  PetscInt              nparameter;
+  char                 *subst;
+  size_t                substcap;
+  PetscBool             verbatim;
 
   /* current data line */
   char    *buf;
@@ -104,6 +113,12 @@ typedef struct DeckPart {
   PetscInt   first;              /* its first instance, or -1 */
   TslLoc     loc;
 } DeckPart;
+
+/* A *PARAMETER: its name (case-insensitive, as the deck's other names) and value. */
+typedef struct DeckParameter {
+  char      name[TSL_NAME_LEN];
+  PetscReal value;
+} DeckParameter;
 
 /* An instance: the part placed, its ids (offsets) and names ("name.x"). */
 typedef struct DeckInstance {
@@ -404,6 +419,73 @@ static PetscErrorCode DeckInclude(Deck *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* ---- parameters (*PARAMETER) and their substitution ------------------------------------------ */
+
+static PetscInt ParameterFind(const Deck *d, const char *name)
+{
+  for (PetscInt i = 0; i < d->nparameter; i++)
+    if (TslDeckNameEqual(d->parameters[i].name, name)) return i;
+  return -1;
+}
+
+static PetscBool ParameterLookup(void *ctx, const char *name, PetscReal *value)
+{
+  const Deck *d = (const Deck *)ctx;
+  PetscInt    i = ParameterFind(d, name);
+
+  if (i < 0) return PETSC_FALSE;
+  *value = d->parameters[i].value;
+  return PETSC_TRUE;
+}
+
+/* The length of the reference "<name>" at s (0: s is no reference, such as "a < b" or "<1>"). */
+static size_t ReferenceLength(const char *s)
+{
+  size_t n = 1;
+  if (s[0] != '<' || !TslDeckIsIdentifierStart(s[1])) return 0;
+  while (TslDeckIsIdentifierChar(s[n])) n++;
+  return s[n] == '>' ? n + 1 : 0;
+}
+
+/* *line with every <name> replaced by the parameter's value, written in the fewest digits that read back
+ * as the same number (so 4 stays 4, where an integer is wanted), in d->subst; unchanged when it has none.
+ * An undefined name is an error at the line. */
+static PetscErrorCode Substitute(Deck *d, char **line)
+{
+  size_t n = 0;
+
+  PetscFunctionBeginUser;
+  if (!strchr(*line, '<')) PetscFunctionReturn(PETSC_SUCCESS);
+  for (const char *c = *line; *c;) {
+    size_t len = ReferenceLength(c);
+    char   num[40];
+    if (!len) {
+      PetscCall(BufReserve(&d->subst, &d->substcap, n + 2));
+      d->subst[n++] = *c++;
+      continue;
+    }
+    {
+      char     name[TSL_NAME_LEN];
+      PetscInt k;
+      USER_CHECK(len - 2 < sizeof(name), LOC_FMT "parameter name %.*s is longer than %d characters", TSL_LOC_ARGS(d->m, d->rawloc), (int)len, c,
+                 TSL_NAME_LEN - 1);
+      memcpy(name, c + 1, len - 2);
+      name[len - 2] = 0;
+      k             = ParameterFind(d, name);
+      USER_CHECK(k >= 0, LOC_FMT "undefined parameter <%s> (a *PARAMETER line before its use defines it)", TSL_LOC_ARGS(d->m, d->rawloc), name);
+      PetscCall(PetscSNPrintf(num, sizeof(num), "%.15g", (double)d->parameters[k].value));
+      if (strtod(num, NULL) != d->parameters[k].value) PetscCall(PetscSNPrintf(num, sizeof(num), "%.17g", (double)d->parameters[k].value));
+    }
+    PetscCall(BufReserve(&d->subst, &d->substcap, n + strlen(num) + 1));
+    memcpy(d->subst + n, num, strlen(num));
+    n += strlen(num);
+    c += len;
+  }
+  d->subst[n] = 0;
+  *line       = d->subst;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscBool IsKeywordLine(const char *s)
 {
   return (s[0] == '*' && s[1] != '*') ? PETSC_TRUE : PETSC_FALSE;
@@ -416,9 +498,13 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
   PetscFunctionBeginUser;
   if (d->back) {
     d->back = PETSC_FALSE;
-    *s      = d->raw;
-    d->loc  = d->rawloc;
-    *got    = PETSC_TRUE;
+    if (d->raw_verbatim && !d->verbatim) { /* the line after a *HEADING's text, read ahead: its references now */
+      PetscCall(Substitute(d, &d->raw));
+      d->raw_verbatim = PETSC_FALSE;
+    }
+    *s     = d->raw;
+    d->loc = d->rawloc;
+    *got   = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   *got = PETSC_FALSE;
@@ -439,8 +525,10 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
     f->line++;
     line = Trim(line);
     if (!line[0] || (line[0] == '*' && line[1] == '*')) continue;
-    d->rawloc.file = f->file;
-    d->rawloc.line = f->line;
+    d->rawloc.file  = f->file;
+    d->rawloc.line  = f->line;
+    d->raw_verbatim = d->verbatim;
+    if (!d->verbatim) PetscCall(Substitute(d, &line));
     if (line[0] == '*') {
       /* cheap test for *INCLUDE before a full parse */
       char   head[16];
@@ -783,7 +871,8 @@ static PetscErrorCode KwHeading(Deck *d, const DeckKeyword *kw)
 
   PetscFunctionBeginUser;
   (void)kw;
-  for (;;) { /* the text is free-form: take raw lines, commas included */
+  d->verbatim = PETSC_TRUE; /* a title may say "<" and ">" */
+  for (;;) {                /* the text is free-form: take raw lines, commas included */
     PetscCall(RawNext(d, &s, &got));
     if (!got) break;
     if (IsKeywordLine(s)) {
@@ -793,6 +882,7 @@ static PetscErrorCode KwHeading(Deck *d, const DeckKeyword *kw)
     if (first) PetscCall(PetscStrncpy(d->m->heading, s, sizeof(d->m->heading)));
     first = PETSC_FALSE;
   }
+  d->verbatim = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2448,6 +2538,52 @@ static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *PARAMETER (Abaqus): data lines "name = expression" (expr.c), each name's value substituted for <name> in
+ * every later line (Substitute). A name defined again takes the new value from there on. */
+static PetscErrorCode KwParameter(Deck *d, const DeckKeyword *kw)
+{
+  const char *s;
+  PetscBool   got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  for (;;) {
+    char         *name, *expr, *eq, undefined[TSL_NAME_LEN];
+    PetscReal     value;
+    PetscInt      k;
+    TslExprStatus status;
+    PetscCall(RawNext(d, &s, &got));
+    if (!got) break;
+    if (IsKeywordLine(s)) {
+      RawUnget(d);
+      break;
+    }
+    PetscCall(BufReserve(&d->buf, &d->bufcap, strlen(s) + 1));
+    memcpy(d->buf, s, strlen(s) + 1);
+    eq = strchr(d->buf, '=');
+    USER_CHECK(eq, LOC_FMT "*PARAMETER data line needs: name = expression", DLOC(d));
+    *eq  = 0;
+    name = Trim(d->buf);
+    expr = Trim(eq + 1);
+    USER_CHECK(TslDeckIsIdentifierStart(name[0]), LOC_FMT "*PARAMETER: '%s' is not a parameter name (a letter or _, then letters, digits or _)",
+               DLOC(d), name);
+    for (const char *c = name; *c; c++)
+      USER_CHECK(TslDeckIsIdentifierChar(*c), LOC_FMT "*PARAMETER: '%s' is not a parameter name (a letter or _, then letters, digits or _)", DLOC(d),
+                 name);
+    status = TslDeckEvaluate(expr, ParameterLookup, d, &value, undefined);
+    USER_CHECK(status == TSL_EXPR_OK, LOC_FMT "*PARAMETER %s = %s: %s%s%s", DLOC(d), name, expr, TslDeckExprMessage(status),
+               status == TSL_EXPR_UNDEFINED ? " " : "", status == TSL_EXPR_UNDEFINED ? undefined : "");
+    k = ParameterFind(d, name);
+    if (k < 0) {
+      PetscCall(TslDeckGrow(&d->parameters, sizeof(DeckParameter), d->nparameter));
+      k = d->nparameter++;
+      PetscCall(CopyName(d, d->loc, d->parameters[k].name, name));
+    }
+    d->parameters[k].value = value;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* *SOILS: the consolidation procedure (pore fluid flow) is not one thermoslide runs. */
 static PetscErrorCode KwSoils(Deck *d, const DeckKeyword *kw)
 {
@@ -2805,6 +2941,7 @@ static const DeckKeyword Keywords[] = {
     {"GAP RADIATION", AT_MODEL, IN_INTERACTION, "", KwGapRadiation, 0, NULL},
     {"GAP HEAT GENERATION", AT_MODEL, IN_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
     {"CONTACT PAIR", AT_MODEL, IN_NONE, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED|MECHANICAL CONSTRAINT", KwContactPair, 0, NULL},
+    {"PARAMETER", AT_MODEL, IN_NONE, "", KwParameter, 0, NULL},
     {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
@@ -3045,6 +3182,8 @@ static PetscErrorCode DeckFree(Deck *d)
   for (PetscInt i = 0; i < d->npart; i++) PetscCall(PetscFree(d->parts[i].xyz));
   PetscCall(PetscFree(d->parts));
   PetscCall(PetscFree(d->inst));
+  PetscCall(PetscFree(d->parameters));
+  PetscCall(PetscFree(d->subst));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -1,6 +1,7 @@
 /* The dialect's line syntax (docs/keywords.md, "General syntax"): a keyword line ending in a comma continues
  * only onto parameters (data/continuation.inp: "*node file," then "U" is a request for U); *STEP's optional
- * title line (data/step_title.inp). */
+ * title line (data/step_title.inp); *PARAMETER and its <name> substitution in data lines and keyword-line
+ * values (data/parameter.inp). */
 #include <thermoslide/model.h>
 #include <string.h>
 
@@ -44,11 +45,31 @@ static PetscErrorCode TestStepTitle(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode TestParameter(void)
+{
+  TslModel      *m;
+  const TslStep *s;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslDeckRead(TSL_DECK_DATA "/parameter.inp", &m));
+  EXPECT(!strcmp(m->heading, "Parameters: <w> stays as written in the title"));
+  /* w = 2, then w = w + 1 = 3; h = w / 4 = 0.5 (with the w of then); h2 = <h> * 2 = 1 */
+  EXPECT(m->nnode == 4 && m->node_xyz[3 * 1] == 3.0 && m->node_xyz[3 * 2] == 3.0 && m->node_xyz[3 * 2 + 1] == 1.0 && m->node_xyz[3 * 3 + 1] == 1.0);
+  EXPECT(m->materials[0].prop[TSL_PROP_ELASTIC].value[0][0] == 2.1e5); /* E = 2.1D5 */
+  s = &m->steps[0];
+  EXPECT(!strcmp(s->name, "S2") && s->max_inc == 20); /* n = 2**3 - (1 + 1) * 3 = 2: NAME=S<n>, INC=<n>0 */
+  EXPECT(s->deltmx == 0.5 && s->dt0 == 0.25);         /* DELTMX=<h>; dt = 1 / n * 0.5 */
+  EXPECT(s->nload == 3 && s->loads[2].value == -4.0); /* k = -2**2: ** binds tighter than the sign, as in Python */
+  PetscCall(TslModelDestroy(&m));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(TestContinuation());
   PetscCall(TestStepTitle());
+  PetscCall(TestParameter());
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s: %d failed check(s)\n", nfail ? "FAILED" : "PASSED", nfail));
   PetscCall(PetscFinalize());
   return nfail ? 1 : 0;

@@ -159,5 +159,9 @@ tsl_deck_bad(s8rt_flipped s8rt_flipped.inp "error: s8rt_flipped.inp:18: S8RT ele
 tsl_deck_bad(s8rt_nodes s8rt_nodes.inp "error: s8rt_nodes.inp:19: element has 7 nodes but type S8RT needs 8")
 tsl_deck_bad(s8rt_mixed_section s8rt_mixed_section.inp "error: s8rt_mixed_section.inp:42: *SHELL SECTION of ELSET=PLATE holds conventional shells (S8RT, SAX2T) and element 3 (C3D8T): give them sections of their own")
 tsl_deck_bad(solid_face_spos solid_face_spos.inp "error: solid_face_spos.inp:24: element 1 is not a conventional shell (S8RT, SAX2T): it has faces S1..S6, not SPOS / SNEG")
-# The line syntax: *STEP takes one title line, not two
+# The line syntax: *STEP takes one title line, not two; *PARAMETER's errors at their line
 tsl_deck_bad(step_title_twice step_title_twice.inp "error: step_title_twice.inp:19: data line not expected here (after *STEP)")
+tsl_deck_bad(parameter_undefined parameter_undefined.inp "error: parameter_undefined.inp:20: undefined parameter <shift> (a *PARAMETER line before its use defines it)")
+tsl_deck_bad(parameter_undefined_name parameter_undefined_name.inp "error: parameter_undefined_name.inp:3: *PARAMETER h = w * q: undefined parameter q")
+tsl_deck_bad(parameter_malformed parameter_malformed.inp "error: parameter_malformed.inp:3: *PARAMETER h = 2 * (w + 1: malformed expression")
+tsl_deck_bad(parameter_division parameter_division.inp "error: parameter_division.inp:3: *PARAMETER h = 1. / (w - 2): division by zero")
