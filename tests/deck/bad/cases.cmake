@@ -47,6 +47,12 @@ tsl_deck_bad(friction_outside_interaction friction_outside_interaction.inp "erro
 tsl_deck_bad(friction_twice friction_twice.inp "error: friction_twice.inp:33: *FRICTION is given twice for surface interaction I1 (first at friction_twice.inp:31)")
 # Placement: model data before the first *STEP, history data inside a step (docs/keywords.md)
 tsl_deck_bad(boundary_amplitude_model boundary_amplitude_model.inp "error: boundary_amplitude_model.inp:22: *BOUNDARY, AMPLITUDE is history data: give this *BOUNDARY inside a step")
+# The line syntax: *STEP takes one title line, not two; *PARAMETER's errors at their line
+tsl_deck_bad(step_title_twice step_title_twice.inp "error: step_title_twice.inp:19: data line not expected here (after *STEP)")
+tsl_deck_bad(parameter_undefined parameter_undefined.inp "error: parameter_undefined.inp:20: undefined parameter <shift> (a *PARAMETER line before its use defines it)")
+tsl_deck_bad(parameter_undefined_name parameter_undefined_name.inp "error: parameter_undefined_name.inp:3: *PARAMETER h = w * q: undefined parameter q")
+tsl_deck_bad(parameter_malformed parameter_malformed.inp "error: parameter_malformed.inp:3: *PARAMETER h = 2 * (w + 1: malformed expression")
+tsl_deck_bad(parameter_division parameter_division.inp "error: parameter_division.inp:3: *PARAMETER h = 1. / (w - 2): division by zero")
 tsl_deck_bad(boundary_opnew_model boundary_opnew_model.inp "error: boundary_opnew_model.inp:20: *BOUNDARY, OP=NEW in the model data: OP=NEW removes earlier conditions, so it belongs in a step")
 tsl_deck_bad(model_data_between_steps model_data_between_steps.inp "error: model_data_between_steps.inp:26: *NSET is model data: it belongs before the first *STEP (here it comes after the first step, which starts at model_data_between_steps.inp:20)")
 tsl_deck_bad(boundary_between_steps boundary_between_steps.inp "error: boundary_between_steps.inp:26: *BOUNDARY is model or history data: it belongs before the first *STEP or inside a step (here it comes after the first step")
@@ -159,9 +165,3 @@ tsl_deck_bad(s8rt_flipped s8rt_flipped.inp "error: s8rt_flipped.inp:18: S8RT ele
 tsl_deck_bad(s8rt_nodes s8rt_nodes.inp "error: s8rt_nodes.inp:19: element has 7 nodes but type S8RT needs 8")
 tsl_deck_bad(s8rt_mixed_section s8rt_mixed_section.inp "error: s8rt_mixed_section.inp:42: *SHELL SECTION of ELSET=PLATE holds conventional shells (S8RT, SAX2T) and element 3 (C3D8T): give them sections of their own")
 tsl_deck_bad(solid_face_spos solid_face_spos.inp "error: solid_face_spos.inp:24: element 1 is not a conventional shell (S8RT, SAX2T): it has faces S1..S6, not SPOS / SNEG")
-# The line syntax: *STEP takes one title line, not two; *PARAMETER's errors at their line
-tsl_deck_bad(step_title_twice step_title_twice.inp "error: step_title_twice.inp:19: data line not expected here (after *STEP)")
-tsl_deck_bad(parameter_undefined parameter_undefined.inp "error: parameter_undefined.inp:20: undefined parameter <shift> (a *PARAMETER line before its use defines it)")
-tsl_deck_bad(parameter_undefined_name parameter_undefined_name.inp "error: parameter_undefined_name.inp:3: *PARAMETER h = w * q: undefined parameter q")
-tsl_deck_bad(parameter_malformed parameter_malformed.inp "error: parameter_malformed.inp:3: *PARAMETER h = 2 * (w + 1: malformed expression")
-tsl_deck_bad(parameter_division parameter_division.inp "error: parameter_division.inp:3: *PARAMETER h = 1. / (w - 2): division by zero")
