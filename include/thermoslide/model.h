@@ -341,8 +341,8 @@ typedef struct {
   TslLoc            bv_loc;
   PetscInt          nmass;                     /* explicit: mass scaling definitions of the step */
   TslMassScaling    mass[TSL_MAX_MASS_SCALING];
-  PetscInt          out_number_interval;       /* explicit, *OUTPUT, FIELD, NUMBER INTERVAL= (0: not given) */
-  PetscReal         out_time_interval;         /* explicit, *OUTPUT, FIELD, TIME INTERVAL= (0: not given) */
+  PetscInt          out_number_interval;       /* *OUTPUT, NUMBER INTERVAL= (0: not given): frames at n equal intervals (TslFrameTimes) */
+  PetscReal         out_time_interval;         /* *OUTPUT, TIME INTERVAL= (0: not given): frames every dt of step time */
   PetscBool         steady;                    /* STEADY STATE (and *STATIC) */
   PetscBool         statik;                    /* *STATIC: mechanical equilibrium with every temperature held at its value (no heat transfer) */
   PetscBool         direct;                    /* DIRECT: fixed increments */

@@ -499,6 +499,28 @@ PetscErrorCode TslDriverSetOutputRequests(Driver *d, const TslStep *step)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void TslFrameTimesSetUp(TslFrameTimes *ft, const TslStep *step, PetscInt default_number)
+{
+  PetscInt n = step->out_number_interval > 0 ? step->out_number_interval : default_number;
+
+  ft->period = step->period;
+  ft->eps    = 1e-12 * step->period;
+  ft->dt     = step->out_time_interval > 0 ? step->out_time_interval : n > 0 ? step->period / n : 0;
+  ft->next   = ft->dt > 0 ? ft->dt : step->period;
+}
+
+PetscReal TslFrameTimesBound(const TslFrameTimes *ft)
+{
+  return PetscMin(ft->next, ft->period);
+}
+
+PetscBool TslFrameTimesReached(TslFrameTimes *ft, PetscReal t)
+{
+  if (!(ft->dt > 0) || t < ft->next - ft->eps) return PETSC_FALSE;
+  while (ft->next <= t + ft->eps) ft->next += ft->dt;
+  return PETSC_TRUE;
+}
+
 /* The increment's time and its time discretisation: the kernels return heat content and capacity, and
  * the implicit procedures are backward Euler in the capacity term (rate = (Q - Q_old) / dt), or steady
  * state (no capacity term at all). */
@@ -808,6 +830,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   Vec             X, Xold;
   PetscReal       t   = 0, dt, eps;
   PetscInt        inc = 0, attempts = 0;
+  TslFrameTimes   frames;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
@@ -839,14 +862,16 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
 
   dt  = PetscMin(step->dt0, step->period);
   eps = 1e-12 * step->period;
+  TslFrameTimesSetUp(&frames, step, 0);
   while (t < step->period - eps) {
     SNESConvergedReason reason;
     PetscInt            its, lits;
     PetscReal           dtheta = 0, h, t_end;
-    PetscBool           accept, last;
+    PetscBool           accept, last, frame;
     const char         *why;
 
-    PetscCall(TslProblemNextAmplitudeCorner(d->prob, t, step->period, &t_end));
+    /* the increment ends at the next output time too (*OUTPUT, NUMBER INTERVAL= / TIME INTERVAL=), as Abaqus/Standard cuts it */
+    PetscCall(TslProblemNextAmplitudeCorner(d->prob, t, TslFrameTimesBound(&frames), &t_end));
     h    = PetscMin(dt, t_end - t);
     last = (PetscBool)(t + h >= step->period - eps);
     PetscCheck(inc < step->max_inc, d->comm, PETSC_ERR_NOT_CONVERGED,
@@ -918,7 +943,8 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
                               lits / its, d->fallback_its));
       PetscCall(FallBackToDirect(d, X, s, inc - 1, why, &switched));
     }
-    if (last || inc % d->frequency == 0) PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
+    frame = frames.dt > 0 ? TslFrameTimesReached(&frames, t) : (PetscBool)(inc % d->frequency == 0); /* intervals replace FREQUENCY= */
+    if (last || frame) PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
     if (!step->direct) {
       /* the controller grows from the increment it asked for, not from one cut short at a corner */
