@@ -158,3 +158,7 @@ tsl_deck_bad(s8rt_flipped s8rt_flipped.inp "error: s8rt_flipped.inp:18: S8RT ele
 tsl_deck_bad(s8rt_nodes s8rt_nodes.inp "error: s8rt_nodes.inp:19: element has 7 nodes but type S8RT needs 8")
 tsl_deck_bad(s8rt_mixed_section s8rt_mixed_section.inp "error: s8rt_mixed_section.inp:42: *SHELL SECTION of ELSET=PLATE holds conventional shells (S8RT, SAX2T) and element 3 (C3D8T): give them sections of their own")
 tsl_deck_bad(solid_face_spos solid_face_spos.inp "error: solid_face_spos.inp:24: element 1 is not a conventional shell (S8RT, SAX2T): it has faces S1..S6, not SPOS / SNEG")
+tsl_deck_bad(controls_not_integer controls_not_integer.inp "error: controls_not_integer.inp:20: expected an integer for I_C (an iteration count), got '16.5'")
+tsl_deck_bad(controls_too_many controls_too_many.inp "error: controls_too_many.inp:20: *CONTROLS, PARAMETERS=TIME INCREMENTATION first data line: at most 10 integers")
+tsl_deck_bad(controls_factor controls_factor.inp "error: controls_factor.inp:21: *CONTROLS: D_f must lie in (0, 1) (got 1.5)")
+tsl_deck_bad(controls_reset_parameters controls_reset_parameters.inp "error: controls_reset_parameters.inp:19: *CONTROLS: RESET and PARAMETERS= exclude each other")
