@@ -329,6 +329,19 @@ typedef struct {
   TslLoc    loc;
 } TslMassScaling;
 
+/* *CONTROLS, PARAMETERS=TIME INCREMENTATION: the dialect's increment controller, CalculiX's names (docs/keywords.md).
+ * given: the step has such a *CONTROLS (or RESET); it holds for this and the later steps until the next one.
+ * reset: *CONTROLS, RESET: back to thermoslide's own controller (-tsl_growth, -tsl_easy_its, -tsl_cutback).
+ * A blank field keeps the dialect's default; unused ones (I_0, I_R, I_P, I_S, I_J, I_T, D_C, D_S, D_H, W_G)
+ * are read and checked only. contact_defaults: the surface-to-surface (face-to-face penalty) raise of I_G and
+ * I_L applies to the fields left blank. */
+typedef struct {
+  PetscBool given, reset;
+  TslLoc    loc;
+  PetscInt  i0, ir, ip, ic, il, ig, is, ia, ij, it;
+  PetscReal df, dc, db, da, ds, dh, dd, wg;
+} TslIncrementControls;
+
 typedef struct {
   char              name[TSL_NAME_LEN];
   TslLoc            loc;
@@ -356,6 +369,7 @@ typedef struct {
   TslLoad          *loads;
   PetscInt          nout;
   TslOutputRequest *out;
+  TslIncrementControls controls; /* *CONTROLS, PARAMETERS=TIME INCREMENTATION or RESET (given = FALSE: none in this step) */
 } TslStep;
 
 typedef struct {

@@ -133,7 +133,8 @@ typedef struct DeckInstance {
 #define USER_CHECK(c, ...) PetscCheck(c, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
 /* Why the pore fluid's data is read past (docs/elements.md, "Pore pressure types"). */
 #define CONTROLS_NOTE                                                                                                                                \
-  "the solver's own increment and Newton controls apply (options -tsl_cutback, -snes_rtol, ...: docs/running.md); they do not read it"
+  "only PARAMETERS=TIME INCREMENTATION and RESET are read; the solver's own Newton tolerances and line search apply (-tsl_rtol, ...: "               \
+  "docs/running.md)"
 #define PORE_FLUID_NOTE "pore fluid flow is not modelled (the pore pressure of CPE4PT, ... is not active in coupled temperature-displacement steps)"
 
 /* ---- small string helpers -------------------------------------------------------------------- */
@@ -2065,6 +2066,85 @@ static PetscErrorCode StepIncrements(Deck *d, TslStep *s, const char *what)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *CONTROLS (CalculiX's form): PARAMETERS=TIME INCREMENTATION sets the increment controller from two data lines,
+ *   I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A, I_J, I_T
+ *   D_f, D_C, D_B, D_A, D_S, D_H, D_D, W_G
+ * (blank fields: the dialect's defaults 4, 8, 9, 16, 10, 4, -, 5, -, - and 0.25, 0.5, 0.75, 0.85, -, -, 1.5, -; the
+ * second line may be absent); RESET goes back to the defaults, here thermoslide's own controller. What the driver
+ * applies (I_C, I_L, I_G, I_A, D_f, D_B, D_A, D_D) is in docs/keywords.md; the rest is read and checked. Other
+ * PARAMETERS= (FIELD, LINE SEARCH, CONTACT, NETWORK, CFD) and Abaqus's forms are read past with a warning. */
+static PetscErrorCode KwControls(Deck *d, const DeckKeyword *kw)
+{
+  TslIncrementControls *c = &d->m->steps[d->step].controls;
+  char                  buf[64];
+  const char           *par       = ParamUpper(d, "PARAMETERS", buf, sizeof(buf));
+  PetscBool             reset     = Param(d, "RESET") ? PETSC_TRUE : PETSC_FALSE, got;
+  static const char    *iname[10] = {"I_0", "I_R", "I_P", "I_C", "I_L", "I_G", "I_S", "I_A", "I_J", "I_T"};
+  static const char    *dname[8]  = {"D_f", "D_C", "D_B", "D_A", "D_S", "D_H", "D_D", "W_G"};
+  const PetscInt        idef[10]  = {4, 8, 9, 16, 10, 4, 0, 5, 0, 0};
+  const PetscReal       ddef[8]   = {0.25, 0.5, 0.75, 0.85, 0, 0, 1.5, 0};
+  PetscInt              iv[10];
+  PetscReal             dv[8];
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!(reset && par), LOC_FMT "*CONTROLS: RESET and PARAMETERS= exclude each other", KLOC(d));
+  if (reset) {
+    PetscCall(DataLine(d, 0, &got));
+    USER_CHECK(!got, LOC_FMT "*CONTROLS, RESET takes no data lines", DLOC(d));
+    memset(c, 0, sizeof(*c));
+    c->given = c->reset = PETSC_TRUE;
+    c->loc              = d->kwloc;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (!par || strcmp(par, "TIME INCREMENTATION")) {
+    char what[96];
+    PetscCall(PetscSNPrintf(what, sizeof(what), "*CONTROLS%s%s", par ? ", PARAMETERS=" : "", par ? par : ""));
+    PetscCall(ReadPast(d, what, CONTROLS_NOTE));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(got, LOC_FMT "*CONTROLS, PARAMETERS=TIME INCREMENTATION needs a data line: I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A, I_J, I_T", KLOC(d));
+  USER_CHECK(d->nfield <= 10,
+             LOC_FMT "*CONTROLS, PARAMETERS=TIME INCREMENTATION first data line: at most 10 integers (I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A, I_J, "
+                     "I_T), got %" PetscInt_FMT,
+             DLOC(d), d->nfield);
+  for (PetscInt i = 0; i < 10; i++) {
+    char what[48];
+    iv[i] = idef[i];
+    if (i >= d->nfield || !d->field[i][0]) continue;
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s (an iteration count)", iname[i]));
+    PetscCall(FieldInt(d, i, what, &iv[i]));
+    USER_CHECK(iv[i] >= 0, LOC_FMT "*CONTROLS: %s must not be negative (got %" PetscInt_FMT ")", DLOC(d), iname[i], iv[i]);
+  }
+  USER_CHECK(iv[3] >= 1, LOC_FMT "*CONTROLS: I_C, the most iterations of an increment, must be at least 1", DLOC(d));
+  for (PetscInt i = 0; i < 8; i++) dv[i] = ddef[i];
+  PetscCall(DataLine(d, 0, &got));
+  if (got) {
+    USER_CHECK(
+        d->nfield <= 8,
+        LOC_FMT
+        "*CONTROLS, PARAMETERS=TIME INCREMENTATION second data line: at most 8 factors (D_f, D_C, D_B, D_A, D_S, D_H, D_D, W_G), got %" PetscInt_FMT,
+        DLOC(d), d->nfield);
+    for (PetscInt i = 0; i < 8; i++) {
+      char what[48];
+      PetscCall(PetscSNPrintf(what, sizeof(what), "%s (a factor)", dname[i]));
+      PetscCall(FieldRealDefault(d, i, what, ddef[i], &dv[i]));
+    }
+    /* the cutback factors shrink the increment, the growth factor enlarges it */
+    for (PetscInt i = 0; i < 4; i++)
+      USER_CHECK(dv[i] > 0 && dv[i] < 1, LOC_FMT "*CONTROLS: %s must lie in (0, 1) (got %g)", DLOC(d), dname[i], (double)dv[i]);
+    USER_CHECK(dv[6] >= 1, LOC_FMT "*CONTROLS: D_D, the growth factor, must be at least 1 (got %g)", DLOC(d), (double)dv[6]);
+  }
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(!got, LOC_FMT "*CONTROLS, PARAMETERS=TIME INCREMENTATION takes two data lines at most", DLOC(d));
+  c->given = PETSC_TRUE, c->reset = PETSC_FALSE, c->loc = d->kwloc;
+  c->i0 = iv[0], c->ir = iv[1], c->ip = iv[2], c->ic = iv[3], c->il = iv[4], c->ig = iv[5], c->is = iv[6], c->ia = iv[7], c->ij = iv[8],
+  c->it = iv[9];
+  c->df = dv[0], c->dc = dv[1], c->db = dv[2], c->da = dv[3], c->ds = dv[4], c->dh = dv[5], c->dd = dv[6], c->wg = dv[7];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode KwCoupled(Deck *d, const DeckKeyword *kw)
 {
   TslStep  *s = &d->m->steps[d->step];
@@ -3029,7 +3109,7 @@ static const DeckKeyword Keywords[] = {
     {"ENERGY PRINT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"CONTACT CONTROLS", AT_BOTH, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"CONTACT OUTPUT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
-    {"CONTROLS", AT_STEP, IN_NONE, NULL, KwIgnored, IGNORED_CONTROLS, NULL},
+    {"CONTROLS", AT_STEP, IN_NONE, NULL, KwControls, 0, NULL},
 };
 
 static const char *KeywordParams(const char *name)

@@ -74,6 +74,11 @@ typedef struct {
   PetscReal explicit_kin_tol;    /* -tsl_explicit_kinematic_tol */
   PetscReal explicit_kin_gap;    /* -tsl_explicit_kinematic_gap_tol (0: the pressure criterion alone) */
   PetscBool explicit_records;    /* -tsl_explicit_records */
+  /* the deck's *CONTROLS, PARAMETERS=TIME INCREMENTATION in force (ctrl_on), with the surface-to-surface raise of
+   * I_G and I_L applied; snes_max_it: the SNES's own limit, restored when the controls are reset */
+  TslIncrementControls ctrl;
+  PetscBool            ctrl_on;
+  PetscInt             snes_max_it;
 } Driver;
 
 #define HIST_ENERGY 17 /* first energy column */

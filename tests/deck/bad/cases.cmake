@@ -175,3 +175,7 @@ tsl_deck_bad(dload_centrif_values dload_centrif_values.inp "error: dload_centrif
 tsl_deck_bad(dload_centrif_axis_cax4t dload_centrif_axis_cax4t.inp "error: dload_centrif_axis_cax4t.inp:20: *DLOAD CENTRIF on the axisymmetric element 1 (CAX4T): the axis must be the symmetry axis")
 tsl_deck_bad(dload_grav_out_of_plane dload_grav_out_of_plane.inp "error: dload_grav_out_of_plane.inp:20: *DLOAD GRAV on the plane element 1 (CPS4T): the gravity must lie in the x-y plane")
 tsl_deck_bad(dload_centrif_negative dload_centrif_negative.inp "error: dload_centrif_negative.inp:20: *DLOAD CENTRIF: omega^2 must not be negative (got -10000.)")
+tsl_deck_bad(controls_not_integer controls_not_integer.inp "error: controls_not_integer.inp:20: expected an integer for I_C (an iteration count), got '16.5'")
+tsl_deck_bad(controls_too_many controls_too_many.inp "error: controls_too_many.inp:20: *CONTROLS, PARAMETERS=TIME INCREMENTATION first data line: at most 10 integers")
+tsl_deck_bad(controls_factor controls_factor.inp "error: controls_factor.inp:21: *CONTROLS: D_f must lie in (0, 1) (got 1.5)")
+tsl_deck_bad(controls_reset_parameters controls_reset_parameters.inp "error: controls_reset_parameters.inp:19: *CONTROLS: RESET and PARAMETERS= exclude each other")
