@@ -329,6 +329,19 @@ typedef struct {
   TslLoc    loc;
 } TslMassScaling;
 
+/* *CONTROLS, PARAMETERS=TIME INCREMENTATION: the dialect's increment controller, CalculiX's names (docs/keywords.md).
+ * given: the step has such a *CONTROLS (or RESET); it holds for this and the later steps until the next one.
+ * reset: *CONTROLS, RESET: back to thermoslide's own controller (-tsl_growth, -tsl_easy_its, -tsl_cutback).
+ * A blank field keeps the dialect's default; unused ones (I_0, I_R, I_P, I_S, I_J, I_T, D_C, D_S, D_H, W_G)
+ * are read and checked only. contact_defaults: the surface-to-surface (face-to-face penalty) raise of I_G and
+ * I_L applies to the fields left blank. */
+typedef struct {
+  PetscBool given, reset;
+  TslLoc    loc;
+  PetscInt  i0, ir, ip, ic, il, ig, is, ia, ij, it;
+  PetscReal df, dc, db, da, ds, dh, dd, wg;
+} TslIncrementControls;
+
 typedef struct {
   char              name[TSL_NAME_LEN];
   TslLoc            loc;
@@ -341,8 +354,8 @@ typedef struct {
   TslLoc            bv_loc;
   PetscInt          nmass;                     /* explicit: mass scaling definitions of the step */
   TslMassScaling    mass[TSL_MAX_MASS_SCALING];
-  PetscInt          out_number_interval;       /* explicit, *OUTPUT, FIELD, NUMBER INTERVAL= (0: not given) */
-  PetscReal         out_time_interval;         /* explicit, *OUTPUT, FIELD, TIME INTERVAL= (0: not given) */
+  PetscInt          out_number_interval;       /* *OUTPUT, NUMBER INTERVAL= (0: not given): frames at n equal intervals (TslFrameTimes) */
+  PetscReal         out_time_interval;         /* *OUTPUT, TIME INTERVAL= (0: not given): frames every dt of step time */
   PetscBool         steady;                    /* STEADY STATE (and *STATIC) */
   PetscBool         statik;                    /* *STATIC: mechanical equilibrium with every temperature held at its value (no heat transfer) */
   PetscBool         direct;                    /* DIRECT: fixed increments */
@@ -356,6 +369,7 @@ typedef struct {
   TslLoad          *loads;
   PetscInt          nout;
   TslOutputRequest *out;
+  TslIncrementControls controls; /* *CONTROLS, PARAMETERS=TIME INCREMENTATION or RESET (given = FALSE: none in this step) */
 } TslStep;
 
 typedef struct {

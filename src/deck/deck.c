@@ -38,9 +38,18 @@ typedef struct {
   PetscInt  ntext;
 
   /* raw line pushback */
-  PetscBool   back;
-  const char *raw;
-  TslLoc      rawloc;
+  PetscBool back;
+  char     *raw;
+  TslLoc    rawloc;
+  PetscBool raw_verbatim; /* raw was read verbatim (no <name> substitution) */
+
+  /* *PARAMETER: the parameters defined so far; every later line has its <name> references replaced by their
+   * values (Substitute) into subst, except *HEADING's free text (verbatim) */
+  struct DeckParameter *parameters;
+  PetscInt              nparameter;
+  char                 *subst;
+  size_t                substcap;
+  PetscBool             verbatim;
 
   /* current data line */
   char    *buf;
@@ -63,6 +72,8 @@ typedef struct {
   PetscInt  interaction;         /* surface interaction the interface-law keywords apply to, or -1 */
   PetscInt  out_frequency;       /* *OUTPUT, FREQUENCY= in the open step */
   PetscInt  out_frequency_model; /* *OUTPUT, FREQUENCY= in the model data: each step's default */
+  PetscInt  out_number_model;    /* *OUTPUT, NUMBER INTERVAL= in the model data: each step's default (0: none) */
+  PetscReal out_time_model;      /* *OUTPUT, TIME INTERVAL= in the model data: each step's default (0: none) */
   PetscInt *node_line;           /* [2*nnode] (file, line) of each node, for duplicate messages */
   PetscInt  nkeyword;            /* keyword lines read */
 
@@ -103,6 +114,12 @@ typedef struct DeckPart {
   TslLoc     loc;
 } DeckPart;
 
+/* A *PARAMETER: its name (case-insensitive, as the deck's other names) and value. */
+typedef struct DeckParameter {
+  char      name[TSL_NAME_LEN];
+  PetscReal value;
+} DeckParameter;
+
 /* An instance: the part placed, its ids (offsets) and names ("name.x"). */
 typedef struct DeckInstance {
   char     name[TSL_NAME_LEN];
@@ -116,7 +133,8 @@ typedef struct DeckInstance {
 #define USER_CHECK(c, ...) PetscCheck(c, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
 /* Why the pore fluid's data is read past (docs/elements.md, "Pore pressure types"). */
 #define CONTROLS_NOTE                                                                                                                                \
-  "the solver's own increment and Newton controls apply (options -tsl_cutback, -snes_rtol, ...: docs/running.md); they do not read it"
+  "only PARAMETERS=TIME INCREMENTATION and RESET are read; the solver's own Newton tolerances and line search apply (-tsl_rtol, ...: "               \
+  "docs/running.md)"
 #define PORE_FLUID_NOTE "pore fluid flow is not modelled (the pore pressure of CPE4PT, ... is not active in coupled temperature-displacement steps)"
 
 /* ---- small string helpers -------------------------------------------------------------------- */
@@ -402,6 +420,73 @@ static PetscErrorCode DeckInclude(Deck *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* ---- parameters (*PARAMETER) and their substitution ------------------------------------------ */
+
+static PetscInt ParameterFind(const Deck *d, const char *name)
+{
+  for (PetscInt i = 0; i < d->nparameter; i++)
+    if (TslDeckNameEqual(d->parameters[i].name, name)) return i;
+  return -1;
+}
+
+static PetscBool ParameterLookup(void *ctx, const char *name, PetscReal *value)
+{
+  const Deck *d = (const Deck *)ctx;
+  PetscInt    i = ParameterFind(d, name);
+
+  if (i < 0) return PETSC_FALSE;
+  *value = d->parameters[i].value;
+  return PETSC_TRUE;
+}
+
+/* The length of the reference "<name>" at s (0: s is no reference, such as "a < b" or "<1>"). */
+static size_t ReferenceLength(const char *s)
+{
+  size_t n = 1;
+  if (s[0] != '<' || !TslDeckIsIdentifierStart(s[1])) return 0;
+  while (TslDeckIsIdentifierChar(s[n])) n++;
+  return s[n] == '>' ? n + 1 : 0;
+}
+
+/* *line with every <name> replaced by the parameter's value, written in the fewest digits that read back
+ * as the same number (so 4 stays 4, where an integer is wanted), in d->subst; unchanged when it has none.
+ * An undefined name is an error at the line. */
+static PetscErrorCode Substitute(Deck *d, char **line)
+{
+  size_t n = 0;
+
+  PetscFunctionBeginUser;
+  if (!strchr(*line, '<')) PetscFunctionReturn(PETSC_SUCCESS);
+  for (const char *c = *line; *c;) {
+    size_t len = ReferenceLength(c);
+    char   num[40];
+    if (!len) {
+      PetscCall(BufReserve(&d->subst, &d->substcap, n + 2));
+      d->subst[n++] = *c++;
+      continue;
+    }
+    {
+      char     name[TSL_NAME_LEN];
+      PetscInt k;
+      USER_CHECK(len - 2 < sizeof(name), LOC_FMT "parameter name %.*s is longer than %d characters", TSL_LOC_ARGS(d->m, d->rawloc), (int)len, c,
+                 TSL_NAME_LEN - 1);
+      memcpy(name, c + 1, len - 2);
+      name[len - 2] = 0;
+      k             = ParameterFind(d, name);
+      USER_CHECK(k >= 0, LOC_FMT "undefined parameter <%s> (a *PARAMETER line before its use defines it)", TSL_LOC_ARGS(d->m, d->rawloc), name);
+      PetscCall(PetscSNPrintf(num, sizeof(num), "%.15g", (double)d->parameters[k].value));
+      if (strtod(num, NULL) != d->parameters[k].value) PetscCall(PetscSNPrintf(num, sizeof(num), "%.17g", (double)d->parameters[k].value));
+    }
+    PetscCall(BufReserve(&d->subst, &d->substcap, n + strlen(num) + 1));
+    memcpy(d->subst + n, num, strlen(num));
+    n += strlen(num);
+    c += len;
+  }
+  d->subst[n] = 0;
+  *line       = d->subst;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscBool IsKeywordLine(const char *s)
 {
   return (s[0] == '*' && s[1] != '*') ? PETSC_TRUE : PETSC_FALSE;
@@ -414,9 +499,13 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
   PetscFunctionBeginUser;
   if (d->back) {
     d->back = PETSC_FALSE;
-    *s      = d->raw;
-    d->loc  = d->rawloc;
-    *got    = PETSC_TRUE;
+    if (d->raw_verbatim && !d->verbatim) { /* the line after a *HEADING's text, read ahead: its references now */
+      PetscCall(Substitute(d, &d->raw));
+      d->raw_verbatim = PETSC_FALSE;
+    }
+    *s     = d->raw;
+    d->loc = d->rawloc;
+    *got   = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   *got = PETSC_FALSE;
@@ -437,8 +526,10 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
     f->line++;
     line = Trim(line);
     if (!line[0] || (line[0] == '*' && line[1] == '*')) continue;
-    d->rawloc.file = f->file;
-    d->rawloc.line = f->line;
+    d->rawloc.file  = f->file;
+    d->rawloc.line  = f->line;
+    d->raw_verbatim = d->verbatim;
+    if (!d->verbatim) PetscCall(Substitute(d, &line));
     if (line[0] == '*') {
       /* cheap test for *INCLUDE before a full parse */
       char   head[16];
@@ -587,20 +678,71 @@ static PetscErrorCode ParseKeyword(Deck *d, char *line)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Reads the keyword line starting at s (joining continuation lines that follow a trailing comma) into kwbuf. */
+/* Whether key is in list ('|'-separated names). */
+static PetscBool ParamKnown(const char *list, const char *key)
+{
+  size_t n = strlen(key);
+  for (const char *p = list; *p;) {
+    const char *e = strchr(p, '|');
+    size_t      l = e ? (size_t)(e - p) : strlen(p);
+    if (l == n && !strncmp(p, key, n)) return PETSC_TRUE;
+    if (!e) break;
+    p = e + 1;
+  }
+  return PETSC_FALSE;
+}
+
+static const char *KeywordParams(const char *name);
+
+/* Whether line, which follows a keyword line ending in a comma, continues it rather than being the keyword's
+ * first data line. The dialect continues a keyword line only onto more parameters, and a trailing comma alone
+ * is common before data (CalculiX-Examples' leaf spring: "*node file," then "U"): so a line continues it when
+ * it gives a value (NAME=value) or holds nothing but parameter names the keyword knows (params, from the
+ * keyword table; NULL for an unknown or ignored keyword). */
+static PetscBool ContinuesKeyword(const char *line, const char *params)
+{
+  PetscBool any = PETSC_FALSE;
+
+  if (strchr(line, '=')) return PETSC_TRUE;
+  if (!params) return PETSC_FALSE;
+  for (const char *p = line;;) {
+    const char *c = strchr(p, ',');
+    size_t      n = c ? (size_t)(c - p) : strlen(p);
+    char        item[64], *w;
+    if (n >= sizeof(item)) return PETSC_FALSE;
+    memcpy(item, p, n);
+    item[n] = 0;
+    w       = Normalize(item);
+    if (w[0]) {
+      if (!ParamKnown(params, w)) return PETSC_FALSE;
+      any = PETSC_TRUE;
+    }
+    if (!c) break;
+    p = c + 1;
+  }
+  return any;
+}
+
+/* Reads the keyword line starting at s into kwbuf, joined with the lines that continue it (ContinuesKeyword)
+ * while it ends in a comma. */
 static PetscErrorCode KeywordLine(Deck *d, const char *s)
 {
-  size_t n = strlen(s);
+  size_t      n = strlen(s);
+  char        name[64];
+  const char *params;
 
   PetscFunctionBeginUser;
   d->kwloc = d->loc;
   PetscCall(BufReserve(&d->kwbuf, &d->kwcap, n + 1));
   memcpy(d->kwbuf, s, n + 1);
+  n = strcspn(s + 1, ",");
+  PetscCall(PetscStrncpy(name, s + 1, PetscMin(n + 1, sizeof(name))));
+  params = KeywordParams(Normalize(name));
   while (EndsWithComma(d->kwbuf)) {
     PetscBool more;
     PetscCall(RawNext(d, &s, &more));
     if (!more) break;
-    if (IsKeywordLine(s)) {
+    if (IsKeywordLine(s) || !ContinuesKeyword(s, params)) {
       RawUnget(d);
       break;
     }
@@ -730,7 +872,8 @@ static PetscErrorCode KwHeading(Deck *d, const DeckKeyword *kw)
 
   PetscFunctionBeginUser;
   (void)kw;
-  for (;;) { /* the text is free-form: take raw lines, commas included */
+  d->verbatim = PETSC_TRUE; /* a title may say "<" and ">" */
+  for (;;) {                /* the text is free-form: take raw lines, commas included */
     PetscCall(RawNext(d, &s, &got));
     if (!got) break;
     if (IsKeywordLine(s)) {
@@ -740,6 +883,7 @@ static PetscErrorCode KwHeading(Deck *d, const DeckKeyword *kw)
     if (first) PetscCall(PetscStrncpy(d->m->heading, s, sizeof(d->m->heading)));
     first = PETSC_FALSE;
   }
+  d->verbatim = PETSC_FALSE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1851,8 +1995,9 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
 {
   TslModel   *m = d->m;
   TslStep    *s;
-  const char *name = Param(d, "NAME"), *nl;
+  const char *name = Param(d, "NAME"), *nl, *title;
   char        buf[32];
+  PetscBool   got;
 
   PetscFunctionBeginUser;
   (void)kw;
@@ -1869,6 +2014,12 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
   nl = ParamUpper(d, "NLGEOM", buf, sizeof(buf));
   USER_CHECK(!nl || !nl[0] || !strcmp(nl, "YES") || !strcmp(nl, "NO"), LOC_FMT "NLGEOM=%s: expected YES or NO", KLOC(d), nl);
   s->nlgeom = (nl && strcmp(nl, "NO")) ? PETSC_TRUE : PETSC_FALSE;
+  if (s->nlgeom) /* NLGEOM alone means YES in the dialect */
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          LOC_FMT
+                          "warning: *STEP, NLGEOM: step %s runs with small-strain kinematics (finite strain is not available): the "
+                          "results hold for small rotations and strains only; rotations or strains of more than a few percent will be wrong\n",
+                          KLOC(d), s->name));
   nl        = ParamUpper(d, "AMPLITUDE", buf, sizeof(buf));
   if (nl) {
     USER_CHECK(!strcmp(nl, "RAMP") || !strcmp(nl, "STEP"), LOC_FMT "*STEP, AMPLITUDE=%s: expected RAMP or STEP", KLOC(d), nl);
@@ -1877,8 +2028,14 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
   }
   s->dt0 = s->period = s->dtmax = 1.0;
   s->dtmin                      = 1e-5;
+  s->out_number_interval        = d->out_number_model;
+  s->out_time_interval          = d->out_time_model;
   d->step                       = m->nstep++;
   d->out_frequency              = d->out_frequency_model;
+  /* Abaqus allows one data line here, the step's title (free text, commas included): read and not kept (the
+   * model has no place for it); a second data line is an error (DeckParse) */
+  PetscCall(RawNext(d, &title, &got));
+  if (got && IsKeywordLine(title)) RawUnget(d);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1911,6 +2068,85 @@ static PetscErrorCode StepIncrements(Deck *d, TslStep *s, const char *what)
     s->dtmin = PetscMin(s->dt0, 1e-5 * s->period);
     s->dtmax = s->period;
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *CONTROLS (CalculiX's form): PARAMETERS=TIME INCREMENTATION sets the increment controller from two data lines,
+ *   I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A, I_J, I_T
+ *   D_f, D_C, D_B, D_A, D_S, D_H, D_D, W_G
+ * (blank fields: the dialect's defaults 4, 8, 9, 16, 10, 4, -, 5, -, - and 0.25, 0.5, 0.75, 0.85, -, -, 1.5, -; the
+ * second line may be absent); RESET goes back to the defaults, here thermoslide's own controller. What the driver
+ * applies (I_C, I_L, I_G, I_A, D_f, D_B, D_A, D_D) is in docs/keywords.md; the rest is read and checked. Other
+ * PARAMETERS= (FIELD, LINE SEARCH, CONTACT, NETWORK, CFD) and Abaqus's forms are read past with a warning. */
+static PetscErrorCode KwControls(Deck *d, const DeckKeyword *kw)
+{
+  TslIncrementControls *c = &d->m->steps[d->step].controls;
+  char                  buf[64];
+  const char           *par       = ParamUpper(d, "PARAMETERS", buf, sizeof(buf));
+  PetscBool             reset     = Param(d, "RESET") ? PETSC_TRUE : PETSC_FALSE, got;
+  static const char    *iname[10] = {"I_0", "I_R", "I_P", "I_C", "I_L", "I_G", "I_S", "I_A", "I_J", "I_T"};
+  static const char    *dname[8]  = {"D_f", "D_C", "D_B", "D_A", "D_S", "D_H", "D_D", "W_G"};
+  const PetscInt        idef[10]  = {4, 8, 9, 16, 10, 4, 0, 5, 0, 0};
+  const PetscReal       ddef[8]   = {0.25, 0.5, 0.75, 0.85, 0, 0, 1.5, 0};
+  PetscInt              iv[10];
+  PetscReal             dv[8];
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!(reset && par), LOC_FMT "*CONTROLS: RESET and PARAMETERS= exclude each other", KLOC(d));
+  if (reset) {
+    PetscCall(DataLine(d, 0, &got));
+    USER_CHECK(!got, LOC_FMT "*CONTROLS, RESET takes no data lines", DLOC(d));
+    memset(c, 0, sizeof(*c));
+    c->given = c->reset = PETSC_TRUE;
+    c->loc              = d->kwloc;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (!par || strcmp(par, "TIME INCREMENTATION")) {
+    char what[96];
+    PetscCall(PetscSNPrintf(what, sizeof(what), "*CONTROLS%s%s", par ? ", PARAMETERS=" : "", par ? par : ""));
+    PetscCall(ReadPast(d, what, CONTROLS_NOTE));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(got, LOC_FMT "*CONTROLS, PARAMETERS=TIME INCREMENTATION needs a data line: I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A, I_J, I_T", KLOC(d));
+  USER_CHECK(d->nfield <= 10,
+             LOC_FMT "*CONTROLS, PARAMETERS=TIME INCREMENTATION first data line: at most 10 integers (I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A, I_J, "
+                     "I_T), got %" PetscInt_FMT,
+             DLOC(d), d->nfield);
+  for (PetscInt i = 0; i < 10; i++) {
+    char what[48];
+    iv[i] = idef[i];
+    if (i >= d->nfield || !d->field[i][0]) continue;
+    PetscCall(PetscSNPrintf(what, sizeof(what), "%s (an iteration count)", iname[i]));
+    PetscCall(FieldInt(d, i, what, &iv[i]));
+    USER_CHECK(iv[i] >= 0, LOC_FMT "*CONTROLS: %s must not be negative (got %" PetscInt_FMT ")", DLOC(d), iname[i], iv[i]);
+  }
+  USER_CHECK(iv[3] >= 1, LOC_FMT "*CONTROLS: I_C, the most iterations of an increment, must be at least 1", DLOC(d));
+  for (PetscInt i = 0; i < 8; i++) dv[i] = ddef[i];
+  PetscCall(DataLine(d, 0, &got));
+  if (got) {
+    USER_CHECK(
+        d->nfield <= 8,
+        LOC_FMT
+        "*CONTROLS, PARAMETERS=TIME INCREMENTATION second data line: at most 8 factors (D_f, D_C, D_B, D_A, D_S, D_H, D_D, W_G), got %" PetscInt_FMT,
+        DLOC(d), d->nfield);
+    for (PetscInt i = 0; i < 8; i++) {
+      char what[48];
+      PetscCall(PetscSNPrintf(what, sizeof(what), "%s (a factor)", dname[i]));
+      PetscCall(FieldRealDefault(d, i, what, ddef[i], &dv[i]));
+    }
+    /* the cutback factors shrink the increment, the growth factor enlarges it */
+    for (PetscInt i = 0; i < 4; i++)
+      USER_CHECK(dv[i] > 0 && dv[i] < 1, LOC_FMT "*CONTROLS: %s must lie in (0, 1) (got %g)", DLOC(d), dname[i], (double)dv[i]);
+    USER_CHECK(dv[6] >= 1, LOC_FMT "*CONTROLS: D_D, the growth factor, must be at least 1 (got %g)", DLOC(d), (double)dv[6]);
+  }
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(!got, LOC_FMT "*CONTROLS, PARAMETERS=TIME INCREMENTATION takes two data lines at most", DLOC(d));
+  c->given = PETSC_TRUE, c->reset = PETSC_FALSE, c->loc = d->kwloc;
+  c->i0 = iv[0], c->ir = iv[1], c->ip = iv[2], c->ic = iv[3], c->il = iv[4], c->ig = iv[5], c->is = iv[6], c->ia = iv[7], c->ij = iv[8],
+  c->it = iv[9];
+  c->df = dv[0], c->dc = dv[1], c->db = dv[2], c->da = dv[3], c->ds = dv[4], c->dh = dv[5], c->dd = dv[6], c->wg = dv[7];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -2277,10 +2513,11 @@ static PetscErrorCode AmplitudeParam(Deck *d, const char *key, PetscInt *index)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A load keyword in the model data (only *BOUNDARY may be there) holds dofs at zero from the first step
- * on: the dialect allows only homogeneous conditions there (CalculiX: "inhomogeneous conditions can be
- * defined between a *STEP card and an *END STEP card only"; Abaqus likewise), and nothing that needs a
- * step (an amplitude, OP=NEW, FIXED at the step's start values). */
+/* A load keyword in the model data (only *BOUNDARY may be there) prescribes dofs from the first step on, its
+ * lines prepended to that step's (DeckModelLoads). A nonzero value is read as CalculiX's reader takes it (its
+ * manual: "inhomogeneous conditions can be defined between a *STEP card and an *END STEP card only"; Abaqus
+ * reads zero values only): the first step's, under that step's default amplitude. Nothing that needs a step
+ * (an amplitude, OP=NEW, FIXED at the step's start values) is allowed. */
 static PetscErrorCode ModelLoadCheck(Deck *d, const char *op)
 {
   static const char *history_only[] = {"AMPLITUDE", "FIXED"};
@@ -2313,7 +2550,7 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
   USER_CHECK(!type || velocity || !strcmp(type, "DISPLACEMENT"), LOC_FMT "*BOUNDARY, TYPE=%s is not supported (DISPLACEMENT or VELOCITY)", KLOC(d),
              type);
   USER_CHECK(!velocity || !model,
-             LOC_FMT "*BOUNDARY, TYPE=VELOCITY belongs to a step (in the model data a boundary condition only holds dofs at zero)", KLOC(d));
+             LOC_FMT "*BOUNDARY, TYPE=VELOCITY belongs to a step (in the model data a boundary condition prescribes displacements)", KLOC(d));
   USER_CHECK(!velocity || !Param(d, "FIXED"), LOC_FMT "*BOUNDARY: FIXED and TYPE=VELOCITY exclude each other", KLOC(d));
   if (model) PetscCall(ModelLoadCheck(d, op));
   PetscCall(AmplitudeParam(d, "AMPLITUDE", &amp));
@@ -2337,9 +2574,6 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
       d->skip_line = PETSC_FALSE;
       continue;
     }
-    USER_CHECK(!model || l.value == 0,
-               LOC_FMT "*%s in the model data holds dofs at zero; a nonzero value (%g) needs a step: give this line inside *STEP ... *END STEP",
-               DLOC(d), d->kw, (double)l.value);
     PetscCall(TslDeckGrow(loads, sizeof(TslLoad), *nload));
     (*loads)[(*nload)++] = l;
     nline++;
@@ -2379,14 +2613,20 @@ static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
     if (v && strcmp(v, "PRESELECT"))
       PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *OUTPUT, VARIABLE=%s is ignored (the default variables are written)\n", KLOC(d), v));
   }
-  if (Param(d, "NUMBER INTERVAL") || Param(d, "TIME INTERVAL")) { /* Abaqus/Explicit's output intervals */
-    TslStep  *s = d->step >= 0 ? &d->m->steps[d->step] : NULL;
-    PetscBool set;
-    USER_CHECK(s && s->explicit_dynamics, LOC_FMT "NUMBER INTERVAL= and TIME INTERVAL= belong to the *OUTPUT of an explicit step (after *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT)", KLOC(d));
-    PetscCall(ParamInt(d, "NUMBER INTERVAL", &s->out_number_interval));
-    PetscCall(ParamReal(d, "TIME INTERVAL", &s->out_time_interval, &set));
-    USER_CHECK(!Param(d, "NUMBER INTERVAL") || s->out_number_interval > 0, LOC_FMT "NUMBER INTERVAL must be positive", KLOC(d));
-    USER_CHECK(!set || s->out_time_interval > 0, LOC_FMT "TIME INTERVAL must be positive", KLOC(d));
+  if (Param(d, "NUMBER INTERVAL") || Param(d, "TIME INTERVAL")) {
+    /* frames at n equal intervals of the step or every dt of step time, the increments ending there (implicit
+     * and explicit steps alike: src/solve/driver.c, TslFrameTimes); in the model data, every step's default */
+    TslStep   *s      = d->step >= 0 ? &d->m->steps[d->step] : NULL;
+    PetscInt  *number = s ? &s->out_number_interval : &d->out_number_model;
+    PetscReal *time   = s ? &s->out_time_interval : &d->out_time_model;
+    PetscBool  set;
+    USER_CHECK(!(Param(d, "NUMBER INTERVAL") && Param(d, "TIME INTERVAL")) && !Param(d, "FREQUENCY"),
+               LOC_FMT "*OUTPUT: FREQUENCY=, NUMBER INTERVAL= and TIME INTERVAL= exclude each other", KLOC(d));
+    *number = 0, *time = 0; /* the one given replaces the other */
+    PetscCall(ParamInt(d, "NUMBER INTERVAL", number));
+    PetscCall(ParamReal(d, "TIME INTERVAL", time, &set));
+    USER_CHECK(!Param(d, "NUMBER INTERVAL") || *number > 0, LOC_FMT "NUMBER INTERVAL must be positive (got %" PetscInt_FMT ")", KLOC(d), *number);
+    USER_CHECK(!set || *time > 0, LOC_FMT "TIME INTERVAL must be positive (got %g)", KLOC(d), (double)*time);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -2428,6 +2668,52 @@ static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw)
       USER_CHECK(r->nvar < (PetscInt)(sizeof(r->var) / sizeof(r->var[0])), LOC_FMT "too many output variables (at most 16)", DLOC(d));
       PetscCall(PetscStrncpy(r->var[r->nvar++], v, sizeof(r->var[0])));
     }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *PARAMETER (Abaqus): data lines "name = expression" (expr.c), each name's value substituted for <name> in
+ * every later line (Substitute). A name defined again takes the new value from there on. */
+static PetscErrorCode KwParameter(Deck *d, const DeckKeyword *kw)
+{
+  const char *s;
+  PetscBool   got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  for (;;) {
+    char         *name, *expr, *eq, undefined[TSL_NAME_LEN];
+    PetscReal     value;
+    PetscInt      k;
+    TslExprStatus status;
+    PetscCall(RawNext(d, &s, &got));
+    if (!got) break;
+    if (IsKeywordLine(s)) {
+      RawUnget(d);
+      break;
+    }
+    PetscCall(BufReserve(&d->buf, &d->bufcap, strlen(s) + 1));
+    memcpy(d->buf, s, strlen(s) + 1);
+    eq = strchr(d->buf, '=');
+    USER_CHECK(eq, LOC_FMT "*PARAMETER data line needs: name = expression", DLOC(d));
+    *eq  = 0;
+    name = Trim(d->buf);
+    expr = Trim(eq + 1);
+    USER_CHECK(TslDeckIsIdentifierStart(name[0]), LOC_FMT "*PARAMETER: '%s' is not a parameter name (a letter or _, then letters, digits or _)",
+               DLOC(d), name);
+    for (const char *c = name; *c; c++)
+      USER_CHECK(TslDeckIsIdentifierChar(*c), LOC_FMT "*PARAMETER: '%s' is not a parameter name (a letter or _, then letters, digits or _)", DLOC(d),
+                 name);
+    status = TslDeckEvaluate(expr, ParameterLookup, d, &value, undefined);
+    USER_CHECK(status == TSL_EXPR_OK, LOC_FMT "*PARAMETER %s = %s: %s%s%s", DLOC(d), name, expr, TslDeckExprMessage(status),
+               status == TSL_EXPR_UNDEFINED ? " " : "", status == TSL_EXPR_UNDEFINED ? undefined : "");
+    k = ParameterFind(d, name);
+    if (k < 0) {
+      PetscCall(TslDeckGrow(&d->parameters, sizeof(DeckParameter), d->nparameter));
+      k = d->nparameter++;
+      PetscCall(CopyName(d, d->loc, d->parameters[k].name, name));
+    }
+    d->parameters[k].value = value;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -2789,6 +3075,7 @@ static const DeckKeyword Keywords[] = {
     {"GAP RADIATION", AT_MODEL, IN_INTERACTION, "", KwGapRadiation, 0, NULL},
     {"GAP HEAT GENERATION", AT_MODEL, IN_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
     {"CONTACT PAIR", AT_MODEL, IN_NONE, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED|MECHANICAL CONSTRAINT", KwContactPair, 0, NULL},
+    {"PARAMETER", AT_MODEL, IN_NONE, "", KwParameter, 0, NULL},
     {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
@@ -2827,20 +3114,14 @@ static const DeckKeyword Keywords[] = {
     {"ENERGY PRINT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"CONTACT CONTROLS", AT_BOTH, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"CONTACT OUTPUT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
-    {"CONTROLS", AT_STEP, IN_NONE, NULL, KwIgnored, IGNORED_CONTROLS, NULL},
+    {"CONTROLS", AT_STEP, IN_NONE, NULL, KwControls, 0, NULL},
 };
 
-static PetscBool ParamKnown(const char *list, const char *key)
+static const char *KeywordParams(const char *name)
 {
-  size_t n = strlen(key);
-  for (const char *p = list; *p;) {
-    const char *e = strchr(p, '|');
-    size_t      l = e ? (size_t)(e - p) : strlen(p);
-    if (l == n && !strncmp(p, key, n)) return PETSC_TRUE;
-    if (!e) break;
-    p = e + 1;
-  }
-  return PETSC_FALSE;
+  for (size_t i = 0; i < sizeof(Keywords) / sizeof(Keywords[0]); i++)
+    if (!strcmp(Keywords[i].name, name)) return Keywords[i].params;
+  return NULL;
 }
 
 /* Where the reader is now: inside a step, before the first one (model data) or between steps. */
@@ -3035,6 +3316,8 @@ static PetscErrorCode DeckFree(Deck *d)
   for (PetscInt i = 0; i < d->npart; i++) PetscCall(PetscFree(d->parts[i].xyz));
   PetscCall(PetscFree(d->parts));
   PetscCall(PetscFree(d->inst));
+  PetscCall(PetscFree(d->parameters));
+  PetscCall(PetscFree(d->subst));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

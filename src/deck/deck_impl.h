@@ -23,3 +23,14 @@ PetscErrorCode TslDeckGrow(void *ptr, size_t sz, PetscInt n);
  * elements through its thickness, with its faces, sets and node conditions (before TslModelCheck). */
 PetscErrorCode TslDeckShellType(const char *name, const char **shell, PetscInt *type, PetscInt *nnode, const char **what);
 PetscErrorCode TslDeckExpandShells(TslModel *model);
+
+/* *PARAMETER's expressions (expr.c): numbers, names of parameters, + - * / ** and parentheses, in Python's
+ * precedence. lookup gives the value of the parameter called name, or PETSC_FALSE when there is none.
+ * TslDeckEvaluate returns the first failure (name: the undefined name), TslDeckExprMessage its words. */
+typedef enum { TSL_EXPR_OK, TSL_EXPR_MALFORMED, TSL_EXPR_UNDEFINED, TSL_EXPR_DIVISION_BY_ZERO, TSL_EXPR_NOT_FINITE } TslExprStatus;
+typedef PetscBool (*TslDeckLookup)(void *ctx, const char *name, PetscReal *value);
+TslExprStatus TslDeckEvaluate(const char *text, TslDeckLookup lookup, void *ctx, PetscReal *value, char name[TSL_NAME_LEN]);
+const char   *TslDeckExprMessage(TslExprStatus status);
+/* A parameter name: a letter or _, then letters, digits and _. */
+PetscBool TslDeckIsIdentifierStart(char c);
+PetscBool TslDeckIsIdentifierChar(char c);

@@ -320,9 +320,9 @@ void TslS2SCompareCut(const S2SPoint *old, PetscInt nold, const S2SPoint *pnew, 
 }
 
 /* Cuts face fc at the state xa and appends its points (new list), carrying the history of its old points
- * (old[0..nold)); *changed when the main faces it couples to changed. */
+ * (old[0..nold)); *changed when the main faces it couples to changed, *recut when the cut differs at all. */
 static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, PetscInt nold, TslContactBinGrid grid, const PetscScalar *xa,
-                              PetscInt **cand, PetscInt *cap, PetscBool *changed)
+                              PetscInt **cand, PetscInt *cap, PetscBool *changed, PetscBool *recut)
 {
   TslContactS2S            s  = p->s2s;
   const TslContactSurface *cs = &p->csurf[fc->pair];
@@ -372,6 +372,7 @@ static PetscErrorCode CutFace(TslProblem p, S2SFace *fc, const S2SPoint *old, Pe
     }
   }
   TslS2SCompareCut(old, nold, s->pt + start, s->npt - start, &same, changed);
+  *recut = (PetscBool)!same;
   for (PetscInt q = start; q < s->npt; q++) {
     S2SPoint               *pt = &s->pt[q];
     TslContactInput         in;
@@ -446,14 +447,14 @@ PetscErrorCode TslProblemContactS2SReach(TslProblem p, PetscInt k, const PetscSc
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, PetscInt *changed)
+PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, PetscInt *changed, PetscInt *recut)
 {
   TslContactS2S s = p->s2s;
   S2SPoint     *old;
   PetscInt      nold, *cand, cap = 64;
 
   PetscFunctionBeginUser;
-  *changed = 0;
+  *changed = *recut = 0;
   if (!s || !s->nface) PetscFunctionReturn(PETSC_SUCCESS);
   /* the old list moves aside; the new one is built face by face into one allocation sized for more points
    * than it will likely hold (a quarter more than the old list; at the first search 40 per face held, the
@@ -475,11 +476,12 @@ PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, P
       PetscInt ch;
       PetscCall(TslS2S3SearchPair(p, k, old, nold, xa, &ch));
       *changed += ch;
+      *recut += s->nface; /* the 3D cut reports pattern changes only: count every face as possibly cut anew */
       continue;
     }
     for (PetscInt i = 0; i < s->nface; i++) {
       S2SFace  *fc = &s->face[i];
-      PetscBool ch;
+      PetscBool ch, rc;
       if (fc->pair != k) continue;
       if (!grid) {
         PetscCall(PetscMalloc1(4 * cs->nmain, &box));
@@ -490,8 +492,9 @@ PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, P
         PetscCall(TslContactBinGridCreate(cs->nmain, box, cs->search_radius, &grid));
         PetscCall(PetscFree(box));
       }
-      PetscCall(CutFace(p, fc, old + fc->first, PetscMin(fc->npt, nold - fc->first), grid, xa, &cand, &cap, &ch));
+      PetscCall(CutFace(p, fc, old + fc->first, PetscMin(fc->npt, nold - fc->first), grid, xa, &cand, &cap, &ch, &rc));
       *changed += ch;
+      *recut += rc;
     }
     if (grid) PetscCall(TslContactBinGridDestroy(&grid));
   }

@@ -130,6 +130,7 @@ struct _p_TslProblem {
   TslContactNode    *cnode;
   PetscReal          augment_tol;
   PetscBool          pattern_stale;    /* a rollback changed the pairing: the matrix pattern is the failed attempt's */
+  PetscInt           search_moved;     /* the last search's re-paired nodes and re-cut faces, over all ranks (0: it changed nothing) */
   PetscErrorCode (*repattern)(void *); /* called before a new pattern replaces the old one (TslProblemSetRepatternCallback) */
   void              *repattern_ctx;
   PetscReal          margin_rerun;  /* > 0: a node left its rank's held region; the job restarts with this -tsl_contact_margin */
@@ -277,7 +278,8 @@ PetscErrorCode TslProblemContactFaceMetric(TslProblem p, const TslContactSurface
 PetscErrorCode TslProblemContactS2SSetUp(TslProblem p);
 PetscErrorCode TslProblemContactS2SDestroy(TslProblem p);
 PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);
-PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, PetscInt *changed);
+/* *changed: faces whose main faces (the matrix pattern) changed; *recut: faces cut differently (points or weights moved) */
+PetscErrorCode TslProblemContactS2SSearch(TslProblem p, const PetscScalar *xa, PetscInt *changed, PetscInt *recut);
 /* The secondary faces this rank inserts and their points in contact reach, per pair: counts[2 k], counts[2 k + 1]
  * (zeros without surface-to-surface pairs). */
 void TslProblemContactS2SCount(TslProblem p, PetscInt counts[]);

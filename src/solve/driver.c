@@ -499,6 +499,28 @@ PetscErrorCode TslDriverSetOutputRequests(Driver *d, const TslStep *step)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+void TslFrameTimesSetUp(TslFrameTimes *ft, const TslStep *step, PetscInt default_number)
+{
+  PetscInt n = step->out_number_interval > 0 ? step->out_number_interval : default_number;
+
+  ft->period = step->period;
+  ft->eps    = 1e-12 * step->period;
+  ft->dt     = step->out_time_interval > 0 ? step->out_time_interval : n > 0 ? step->period / n : 0;
+  ft->next   = ft->dt > 0 ? ft->dt : step->period;
+}
+
+PetscReal TslFrameTimesBound(const TslFrameTimes *ft)
+{
+  return PetscMin(ft->next, ft->period);
+}
+
+PetscBool TslFrameTimesReached(TslFrameTimes *ft, PetscReal t)
+{
+  if (!(ft->dt > 0) || t < ft->next - ft->eps) return PETSC_FALSE;
+  while (ft->next <= t + ft->eps) ft->next += ft->dt;
+  return PETSC_TRUE;
+}
+
 /* The increment's time and its time discretisation: the kernels return heat content and capacity, and
  * the implicit procedures are backward Euler in the capacity term (rate = (Q - Q_old) / dt), or steady
  * state (no capacity term at all). */
@@ -800,14 +822,48 @@ static const char *SavedState(const Driver *d, PetscReal t, char buf[], size_t l
 /* Increments of one step. dt is the controller's increment; each increment h = dt cut short at the step
  * end and at the next corner of an amplitude the step follows (so a slide reversal is never straddled).
  * A failed increment is retried from the last converged state with h * cutback. */
+/* The step's *CONTROLS, PARAMETERS=TIME INCREMENTATION (or RESET) replaces the controls in force; a step without
+ * one keeps them (the dialect's controls hold until changed). With a surface-to-surface pair (the dialect's
+ * face-to-face penalty contact) I_G and I_L left blank are raised by 12, as CalculiX does for that contact, whose
+ * increments take more iterations: steady increments of up to 16 iterations grow. I_C caps each Newton solve. */
+static PetscErrorCode TakeControls(Driver *d, const TslModel *m, const TslStep *step)
+{
+  PetscBool s2s = PETSC_FALSE;
+  char      where[PETSC_MAX_PATH_LEN + 32];
+
+  PetscFunctionBeginUser;
+  if (!d->snes_max_it) PetscCall(SNESGetTolerances(d->snes, NULL, NULL, NULL, &d->snes_max_it, NULL));
+  if (!step->controls.given) PetscFunctionReturn(PETSC_SUCCESS);
+  d->ctrl    = step->controls;
+  d->ctrl_on = (PetscBool)!step->controls.reset;
+  for (PetscInt k = 0; k < m->npair; k++) s2s = (PetscBool)(s2s || m->pairs[k].type == TSL_CONTACT_SURFACE_TO_SURFACE);
+  if (d->ctrl_on && s2s) { /* CalculiX raises both by 12 for face-to-face penalty contact, whatever the deck gives */
+    d->ctrl.ig += 12;
+    d->ctrl.il += 12;
+  }
+  PetscCall(SNESSetTolerances(d->snes, PETSC_DEFAULT, PETSC_DEFAULT, PETSC_DEFAULT, d->ctrl_on ? d->ctrl.ic : d->snes_max_it, PETSC_DEFAULT));
+  if (d->ctrl_on)
+    PetscCall(PetscPrintf(d->comm,
+                          "  increment control: *CONTROLS (%s): grow x%g after two increments of at most %" PetscInt_FMT
+                          " Newton iterations, x%g after one of more than %" PetscInt_FMT "; cut back x%g, at most %" PetscInt_FMT
+                          " times per increment; at most %" PetscInt_FMT " iterations per solve\n",
+                          TslLocString(m, d->ctrl.loc, where, sizeof(where)), (double)d->ctrl.dd, d->ctrl.ig, (double)d->ctrl.db, d->ctrl.il,
+                          (double)d->ctrl.df, d->ctrl.ia, d->ctrl.ic));
+  else
+    PetscCall(PetscPrintf(d->comm, "  increment control: *CONTROLS, RESET (%s): thermoslide's own (-tsl_growth, -tsl_easy_its, -tsl_cutback)\n",
+                          TslLocString(m, d->ctrl.loc, where, sizeof(where))));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
 {
-  char            saved[128];
+  char            saved[128], where[PETSC_MAX_PATH_LEN + 32];
   const TslModel *m;
   const TslStep  *step;
   Vec             X, Xold;
   PetscReal       t   = 0, dt, eps;
-  PetscInt        inc = 0, attempts = 0;
+  PetscInt        inc = 0, attempts = 0, cutbacks = 0, its_prev = PETSC_MAX_INT; /* cutbacks of this increment; its of the last accepted one */
+  TslFrameTimes   frames;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
@@ -837,16 +893,20 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslProblemGetSolution(d->prob, &X));
   PetscCall(TslProblemGetOldSolution(d->prob, &Xold));
 
+  PetscCall(TakeControls(d, m, step));
+
   dt  = PetscMin(step->dt0, step->period);
   eps = 1e-12 * step->period;
+  TslFrameTimesSetUp(&frames, step, 0);
   while (t < step->period - eps) {
     SNESConvergedReason reason;
     PetscInt            its, lits;
     PetscReal           dtheta = 0, h, t_end;
-    PetscBool           accept, last;
+    PetscBool           accept, last, frame;
     const char         *why;
 
-    PetscCall(TslProblemNextAmplitudeCorner(d->prob, t, step->period, &t_end));
+    /* the increment ends at the next output time too (*OUTPUT, NUMBER INTERVAL= / TIME INTERVAL=), as Abaqus/Standard cuts it */
+    PetscCall(TslProblemNextAmplitudeCorner(d->prob, t, TslFrameTimesBound(&frames), &t_end));
     h    = PetscMin(dt, t_end - t);
     last = (PetscBool)(t + h >= step->period - eps);
     PetscCheck(inc < step->max_inc, d->comm, PETSC_ERR_NOT_CONVERGED,
@@ -880,7 +940,8 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       }
     }
     if (!accept) {
-      PetscReal f = reason > 0 ? PetscMax(d->cutback, 0.85 * step->deltmx / dtheta) : d->cutback;
+      const PetscReal cut = d->ctrl_on ? d->ctrl.df : d->cutback, da = d->ctrl_on ? d->ctrl.da : 0.85;
+      PetscReal       f = reason > 0 ? PetscMax(cut, da * step->deltmx / dtheta) : cut;
       PetscCall(VecCopy(Xold, X));
       PetscCall(TslProblemContactRollback(d->prob));
       d->trial = PETSC_FALSE;
@@ -899,6 +960,12 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscCheck(!step->direct, d->comm, PETSC_ERR_NOT_CONVERGED,
                  "step %" PetscInt_FMT ": increment %" PetscInt_FMT " did not converge (%s) and DIRECT forbids a cutback", s + 1, inc + 1, why);
       dt = h * f;
+      cutbacks++;
+      PetscCheck(!d->ctrl_on || cutbacks <= d->ctrl.ia, d->comm, PETSC_ERR_NOT_CONVERGED,
+                 "step %" PetscInt_FMT ": increment %" PetscInt_FMT " was cut back %" PetscInt_FMT " times, more than I_A = %" PetscInt_FMT
+                 " of *CONTROLS (%s) allows, at step time %g; %s",
+                 s + 1, inc + 1, cutbacks, d->ctrl.ia, TslLocString(m, d->ctrl.loc, where, sizeof(where)), (double)t,
+                 SavedState(d, t, saved, sizeof(saved)));
       PetscCheck(dt >= step->dtmin * (1 - 1e-12), d->comm, PETSC_ERR_NOT_CONVERGED,
                  "step %" PetscInt_FMT ": the increment fell below the minimum %g at step time %g; %s", s + 1, (double)step->dtmin, (double)t,
                  SavedState(d, t, saved, sizeof(saved)));
@@ -918,14 +985,23 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
                               lits / its, d->fallback_its));
       PetscCall(FallBackToDirect(d, X, s, inc - 1, why, &switched));
     }
-    if (last || inc % d->frequency == 0) PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
+    frame = frames.dt > 0 ? TslFrameTimesReached(&frames, t) : (PetscBool)(inc % d->frequency == 0); /* intervals replace FREQUENCY= */
+    if (last || frame) PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
     if (!step->direct) {
-      /* the controller grows from the increment it asked for, not from one cut short at a corner */
-      PetscReal f = its <= d->easy_its ? d->growth : 1.0;
-      if (!step->steady && step->deltmx > 0 && dtheta > 0) f = PetscMin(f, 0.85 * step->deltmx / dtheta);
-      dt = PetscMin(step->dtmax, dt * PetscMax(f, d->cutback));
+      /* the controller grows from the increment it asked for, not from one cut short at a corner. The deck's
+       * *CONTROLS: D_D after two consecutive increments of at most I_G iterations, D_B after one of more than I_L
+       * (the dialect's rule); else thermoslide's: -tsl_growth after one of at most -tsl_easy_its */
+      PetscReal f;
+      if (d->ctrl_on)
+        f = its > d->ctrl.il ? d->ctrl.db : its <= d->ctrl.ig && its_prev <= d->ctrl.ig ? d->ctrl.dd : 1.0;
+      else
+        f = its <= d->easy_its ? d->growth : 1.0;
+      if (!step->steady && step->deltmx > 0 && dtheta > 0) f = PetscMin(f, (d->ctrl_on ? d->ctrl.da : 0.85) * step->deltmx / dtheta);
+      dt = PetscMin(step->dtmax, dt * PetscMax(f, d->ctrl_on ? PetscMin(d->ctrl.df, d->ctrl.db) : d->cutback));
     }
+    its_prev = its;
+    cutbacks = 0;
   }
   PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
   PetscCall(TslDriverPrintTables(d, step));

@@ -568,7 +568,8 @@ static PetscErrorCode Destroy(Explicit *x)
 PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
 {
   Explicit        x;
-  PetscReal t = 0, h_prev = 0, eps, t_frame, dt_frame = 0, t_hist, dt_hist, wall0, now;
+  PetscReal       t = 0, h_prev = 0, eps, t_hist, dt_hist, wall0, now;
+  TslFrameTimes   frames;
   PetscInt  inc = 0;
   Energies *en = (Energies *)d->energy;
 
@@ -668,16 +669,14 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
 
   /* output times: NUMBER INTERVAL= (default 20, as in the dialect) or TIME INTERVAL= */
-  if (x.step->out_time_interval > 0) dt_frame = x.step->out_time_interval;
-  else dt_frame = x.step->period / (x.step->out_number_interval > 0 ? x.step->out_number_interval : 20);
-  t_frame = dt_frame;
+  TslFrameTimesSetUp(&frames, x.step, 20);
   dt_hist = x.history_rows > 0 ? x.step->period / x.history_rows : PETSC_MAX_REAL;
   t_hist  = dt_hist;
   eps     = 1e-12 * x.step->period;
   wall0   = MPI_Wtime();
-  PetscCall(PetscPrintf(d->comm, "  about %.0f increments; frames every %g\n", (double)PetscCeilReal(x.step->period / x.dt), (double)dt_frame));
+  PetscCall(PetscPrintf(d->comm, "  about %.0f increments; frames every %g\n", (double)PetscCeilReal(x.step->period / x.dt), (double)frames.dt));
   while (t < x.step->period - eps) {
-    PetscReal h, t_new, to_frame = PetscMin(t_frame, x.step->period) - t;
+    PetscReal h, t_new, to_frame = TslFrameTimesBound(&frames) - t;
     PetscBool frame, last;
     /* increments end on the frame times: the time to the next frame is cut into equal increments of at
      * most dt, so that a constant dt gives constant increments. Changing the increment from one to the next
@@ -714,9 +713,8 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
       CombineLimits(&x);
       if (x.step->dt_user <= 0) x.dt = x.dt_stable;
     }
-    frame = (PetscBool)(last || x.stop || t >= t_frame - eps); /* asked to stop: this increment's state is the one saved */
-    if (frame)
-      while (t_frame <= t + eps) t_frame += dt_frame;
+    frame = TslFrameTimesReached(&frames, t);
+    frame = (PetscBool)(frame || last || x.stop); /* asked to stop: this increment's state is the one saved */
     PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
     if (frame || t >= t_hist - eps) {
       PetscCall(HistoryRow(&x, en, s, inc, t, h, *total_time));

@@ -74,9 +74,28 @@ typedef struct {
   PetscReal explicit_kin_tol;    /* -tsl_explicit_kinematic_tol */
   PetscReal explicit_kin_gap;    /* -tsl_explicit_kinematic_gap_tol (0: the pressure criterion alone) */
   PetscBool explicit_records;    /* -tsl_explicit_records */
+  /* the deck's *CONTROLS, PARAMETERS=TIME INCREMENTATION in force (ctrl_on), with the surface-to-surface raise of
+   * I_G and I_L applied; snes_max_it: the SNES's own limit, restored when the controls are reset */
+  TslIncrementControls ctrl;
+  PetscBool            ctrl_on;
+  PetscInt             snes_max_it;
 } Driver;
 
 #define HIST_ENERGY 17 /* first energy column */
+
+/* The output times of a step given by *OUTPUT, NUMBER INTERVAL=n (every period/n) or TIME INTERVAL=dt (every dt,
+ * and the step's end): increments end on them and frames are written there, in implicit and explicit steps
+ * alike. The times are accumulated (t += dt), as the explicit procedure always did, so its increments keep their
+ * bits. dt = 0: the step has no output times (an implicit step without intervals: frames follow FREQUENCY=). */
+typedef struct {
+  PetscReal dt, next, period, eps;
+} TslFrameTimes;
+/* default_number: the intervals when the step gives neither (explicit: 20, as in the dialect; implicit: 0) */
+void TslFrameTimesSetUp(TslFrameTimes *ft, const TslStep *step, PetscInt default_number);
+/* The next output time, or the step's end (the bound that TslProblemNextAmplitudeCorner cuts further). */
+PetscReal TslFrameTimesBound(const TslFrameTimes *ft);
+/* Whether step time t reached an output time, moving on to the next one after t when it did. */
+PetscBool TslFrameTimesReached(TslFrameTimes *ft, PetscReal t);
 
 /* Helpers of driver.c used by explicit.c */
 PetscErrorCode TslDriverSetOutputRequests(Driver *d, const TslStep *step);
