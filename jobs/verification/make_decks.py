@@ -264,14 +264,14 @@ def series_interaction(series, auglagr=False, surf=False):
     sliding amplitude and the initial temperature."""
     if series == "conductance":
         text = "*SURFACE INTERACTION, NAME=IFACE\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 100.0\n 5.0, 200.0\n"
-        if auglagr:
-            text += "*SURFACE BEHAVIOR, AUGMENTED LAGRANGE\n"
     elif series == "radiation":
         text = ("*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.16, STEFAN BOLTZMANN=1.0\n"
                 "*SURFACE INTERACTION, NAME=IFACE\n*GAP RADIATION\n 1.0, 1.0\n 1.0E-6, 0.0\n 1.0E-6, 1.0\n")
     else:
         text = ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION, LAGRANGE\n 0.1\n*GAP CONDUCTANCE, PRESSURE\n 20.0, 0.0\n"
                 "*GAP HEAT GENERATION\n 0.5, 0.5\n")
+    if auglagr:  # the spec's *_auglagr decks: every series (ei23tssc, ei23tssr, ei23tssf) with augmented Lagrange normal contact
+        text += "*SURFACE BEHAVIOR, AUGMENTED LAGRANGE\n"
     return text + ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05%s\n SECONDARY, MAIN\n" % (", TYPE=SURFACE TO SURFACE" if surf else "") +
                    "*AMPLITUDE, NAME=SLIDE\n 0.0, 0.0, 1.0, 1.0, 2.0, -1.0, 3.0, 0.0\n"
                    "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")

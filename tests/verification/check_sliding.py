@@ -35,8 +35,8 @@ ring volume V = pi (16 x 2.5 - 10.75) = 29.25 pi (0.1 %); the applied force 211.
 (the share the ring's hoop stiffness takes depends a little on the element and mesh: 195.6 on the
 coarser quadratic rings), so the dissipation is 120 within 3 %. Second-order meshes (job *_cpe8t, *_cax6mt, ...): the interface
 averages use Simpson weights over the line3 faces.
-With AUGMENTED LAGRANGE normal contact (job name *_auglagr_*) the penetration at the end of step 4
-must also be below 1 % of the penalty method's p / eps_n (eps_n = 10 E / main face length: 0.5, or 1.0
+With AUGMENTED LAGRANGE normal contact (job name *_auglagr_*) the penetration at the end of step 4 (friction:
+step 1, the pressing) must also be below 1 % of the penalty method's p / eps_n (eps_n = 10 E / main face length: 0.5, or 1.0
 on the second-order meshes).
 usage: check_sliding.py OUTDIR JOB conductance|radiation|friction
 """
@@ -148,7 +148,22 @@ if series == "friction" and axi:
     check("final temperature, hottest node (absorbed / 29.25 pi)", nt.max(), 0.5 * dis / volume, 1e-3, relative=True)
     finish()
 
+def check_penetration(step, pressure):
+    """Augmented Lagrange: the deepest penetration of a secondary node at the end of the step, against 1 % of what
+    the penalty alone leaves at the nominal pressure (p / eps_n)."""
+    u = r.field("U", r.frame_of_step(step))
+    y0 = xyz[small, 1].min()
+    sec = [i for i in range(len(ids)) if small[i] and abs(xyz[i, 1] - y0) < 1e-9]
+    top = sorted([i for i in range(len(ids)) if large[i] and abs(xyz[i, 1] - y0) < 1e-9], key=lambda i: xyz[i, 0])
+    ym = np.interp([xyz[i, 0] + u[i, 0] for i in sec], [xyz[i, 0] + u[i, 0] for i in top], [y0 + u[i, 1] for i in top])
+    pen = max(0.0, float(np.max(ym - (y0 + u[sec, 1]))))
+    penalty_pen = pressure / (10 * 30.0e6 / (1.0 if quadratic else 0.5))
+    check("step %d penetration with augmented Lagrange (penalty alone: %.3g)" % (step, penalty_pen), pen, 0.0, 0.01 * penalty_pen)
+
+
 if series == "friction":
+    if "auglagr" in job:  # pressed by 200 on the block's length 2 before it slides
+        check_penetration(1, 100.0)
     # planar blocks: area 8 (thickness 1); 3D blocks: volume 6 x 1.25 x 1.2 + 2 x 0.25 x 1 = 9.5
     final = 60.0 / (9.5 if three_d else 8.0)
     check("total frictional dissipation", h["friction_dissipation_total"][-1], 120.0, 1e-3, relative=True)
@@ -274,15 +289,7 @@ else:
     check("step 4 / step 3 mean temperature drop across the interface", drops[4] / drops[3], 1.0, 5e-6 if surf else 1e-6, relative=True)
 
 if "auglagr" in job:
-    f4 = r.frame_of_step(4)
-    u = r.field("U", f4)
-    y0 = xyz[small, 1].min()
-    sec = [i for i in range(len(ids)) if small[i] and abs(xyz[i, 1] - y0) < 1e-9]
-    top = sorted([i for i in range(len(ids)) if large[i] and abs(xyz[i, 1] - y0) < 1e-9], key=lambda i: xyz[i, 0])
-    ym = np.interp([xyz[i, 0] + u[i, 0] for i in sec], [xyz[i, 0] + u[i, 0] for i in top], [y0 + u[i, 1] for i in top])
-    pen = max(0.0, float(np.max(ym - (y0 + u[sec, 1]))))
-    penalty_pen = 200.0 / (10 * 30.0e6 / (1.0 if quadratic else 0.5))
-    check("step 4 penetration with augmented Lagrange (penalty alone: %.3g)" % penalty_pen, pen, 0.0, 0.01 * penalty_pen)
+    check_penetration(4, 200.0)
 
 nt = r.field("NT")[:, 0][small]
 check("step 5 small block isothermal: spread / mean", (nt.max() - nt.min()) / abs(nt.mean()), 0.0, 1e-6)
