@@ -131,10 +131,11 @@ typedef struct DeckInstance {
 #define KLOC(d)            TSL_LOC_ARGS((d)->m, (d)->kwloc)
 #define USER_ERR(...)      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
 #define USER_CHECK(c, ...) PetscCheck(c, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
-/* Why the pore fluid's data is read past (docs/elements.md, "Pore pressure types"). */
+/* Why a *CONTROLS other than TIME INCREMENTATION or RESET is read past (docs/keywords.md, *CONTROLS). */
 #define CONTROLS_NOTE                                                                                                                                \
   "only PARAMETERS=TIME INCREMENTATION and RESET are read; the solver's own Newton tolerances and line search apply (-tsl_rtol, ...: "               \
   "docs/running.md)"
+/* Why the pore fluid's data is read past (docs/elements.md, "Pore pressure types"). */
 #define PORE_FLUID_NOTE "pore fluid flow is not modelled (the pore pressure of CPE4PT, ... is not active in coupled temperature-displacement steps)"
 
 /* ---- small string helpers -------------------------------------------------------------------- */
@@ -2732,11 +2733,10 @@ static PetscErrorCode KwSoils(Deck *d, const DeckKeyword *kw)
 /* A keyword read past with a warning; kind IGNORED_PORE_FLUID: the pore fluid's material data (*PERMEABILITY,
  * *POROUS BULK MODULI), which the pore pressure types do not use in coupled temperature-displacement steps. */
 #define IGNORED_PORE_FLUID 1
-#define IGNORED_CONTROLS   2
 static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
 {
   PetscFunctionBeginUser;
-  PetscCall(ReadPast(d, NULL, kw->kind == IGNORED_PORE_FLUID ? PORE_FLUID_NOTE : kw->kind == IGNORED_CONTROLS ? CONTROLS_NOTE : NULL));
+  PetscCall(ReadPast(d, NULL, kw->kind == IGNORED_PORE_FLUID ? PORE_FLUID_NOTE : NULL));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -97,8 +97,6 @@ static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, P
   KSP       ksp;
 
   PetscFunctionBeginUser;
-  (void)xnorm;
-  (void)snorm;
   d->accepted = PETSC_FALSE;
   /* asked to stop (a signal): the increment ends here, unconverged, and RunStep stops the job */
   PetscCall(TslStopRequested(d->comm, &d->stop));
