@@ -5,6 +5,7 @@
 #include <thermoslide/output.h>
 #include <thermoslide/sys.h>
 #include <petscsnes.h>
+#include <stdint.h>
 
 /* History columns: the implicit increment's figures, then the energies of explicit steps (zero in implicit
  * steps; docs/explicit.md): kinetic ALLKE, internal ALLIE (work of the element forces), external work ALLWK
@@ -55,6 +56,12 @@ typedef struct {
   PetscInt   fallback_max;  /* -tsl_fallback_max_dofs: a failed iterative solve switches to MUMPS up to this size */
   PetscInt   fallback_its;  /* -tsl_fallback_its: ... or an increment needs more linear iterations per Newton iteration */
   PetscBool  fell_back;     /* the switch happened (once per job) */
+  PetscBool  reuse_pc;      /* -tsl_reuse_unchanged_jacobian: a Jacobian equal to the last one keeps its preconditioner */
+  PetscBool  jac_known;     /* jac_hash / jac_nzstate describe the last Jacobian assembled (FormJacobian) */
+  PetscBool  jac_reused;    /* the last Jacobian was the one before it (the preconditioner was kept) */
+  PetscInt   jac_reuses, jac_count; /* ... how many times in the job, of how many Jacobians */
+  uint64_t   jac_hash;
+  PetscObjectState jac_nzstate;
   PetscReal  done_time, done_step_time, done_dt;
   PetscBool  trial;     /* X holds an unconverged trial state (Xold the last converged one) */
   PetscBool  in_output; /* inside a frame: a failure there leaves the output unusable */
