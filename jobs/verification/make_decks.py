@@ -256,6 +256,27 @@ def faces(shape):
 # r in [1.25, 2.5] fixed on its outside, the small block an inner ring r in [1, 1.25] pressed outward
 # and slid axially. Volume pi (16 R - 10.75) = 29.25 pi for R = 2.5 (docs/verification.md).
 R_AXI = 2.5
+RING_A, RING_B = 1.0, 1.25  # the small ring's pressed bore and its contact face
+
+
+def ring_pressure(pc, main_length=None):
+    """The pressure on the small ring's bore r = a that presses it with the uniform contact pressure pc onto
+    the large ring's bore r = b, which the ring decks hold radially (MAINN), the small ring moved axially as
+    a whole (every node, SMALLN) and free radially: a thick cylinder in plane strain, sigma_r(a) = -p,
+    sigma_r(b) = -pc, and u(b) the interface's compliance pc / eps_n (main_length: the solver's default
+    penalty eps_n = 10 E / mean main face length; None: kinematic contact, u(b) = 0). Lame's u = A r + B / r,
+    sigma_r = c1 A - c2 B / r^2 with c1 / c2 = 1 / (1 - 2 nu) (plane strain) and c2 = E / (1 + nu), gives
+        p / pc = (c1 / c2 + b^2 / a^2) / (c1 / c2 + 1) (1 - s / b) + s b / a^2,
+    s = c2 / eps_n = main_length / (10 (1 + nu)) (E cancels): 1.1607143 for kinematic contact, 1.1730769 and
+    1.1854396 for the penalty at main faces 0.5 and 1.0 long. The radius ratio b / a = 1.25 alone, which the
+    decks used until 2026-12, is the thin ring free of hoop stress; a ring that cannot expand carries a
+    compressive hoop stress (its radial compression, through Poisson's ratio), which adds to the force on
+    the bore, and the penalty's small overlap lets it expand by pc / eps_n, which takes some away
+    (docs/verification.md, "Axisymmetric decks")."""
+    nu, a, b = 0.3, RING_A, RING_B
+    s = 0.0 if main_length is None else main_length / (10.0 * (1.0 + nu))
+    q = 1.0 / (1.0 - 2.0 * nu)
+    return pc * ((q + b * b / (a * a)) / (q + 1.0) * (1.0 - s / b) + s * b / (a * a))
 
 
 def series_interaction(series, auglagr=False, surf=False):
@@ -277,7 +298,7 @@ def series_interaction(series, auglagr=False, surf=False):
                    "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
 
 
-def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, refine=1, top_rows=6):
+def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, refine=1, top_rows=6, ring_sets=False):
     """The spec's finite-sliding problems: a block 2 x 0.25 (4 x 6 cells) pressed on a block 6 x 1.25
     (12 x 2 cells) fixed at its bottom; total area 8, rho c = 1. The thin upper block passes the applied
     pressure on nearly uniformly (a few % spread), and the blocks' nodes meet along the interface at the
@@ -288,21 +309,27 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
     types get midside nodes, generalized plane strain types a reference node per block (9001, 9002:
     free, so each block expands out of plane freely; the in-plane problem is that of plane strain),
     types get midside nodes, axisymmetric types the rings described at R_AXI (slide along z, press
-    along r; the applied pressure scaled by r_interface / r_face so that the interface sees 100; with
-    twist (CGAX) the sliding face also turns by 0.4 rad with the axial slide (circumferential motion,
-    the spec's twist tests) and the twist (dof 5) is held where the axial motion is; the
-    friction series' radial force 211.6, of which the inner ring's hoop stiffness takes about 5 %, so
-    that the interface carries about 200 as in the planar decks).
+    along r). The rings' conductance and radiation series hold the large ring's bore radially (MAINN) and
+    move the small ring axially as a whole (SMALLN), so that it is a thick cylinder in plane strain pressed
+    onto a held bore, uniformly: the pressure on its face r = 1 is Lame's for 100 and 200 at the interface
+    (ring_pressure, with the default penalty's compliance). With twist (CGAX) the sliding face also turns
+    by 0.4 rad with the axial slide (circumferential motion, the spec's twist tests) and the twist (dof 5)
+    is held on the base and the pressed face. The rings' friction series keeps the *EQUATION-tied face of
+    the planar decks on a large ring free at its bore: a radial force 211.6, of which the inner ring's hoop
+    stiffness takes about 5 %, so that the interface carries about 200 as in the planar decks (its
+    explicit decks, sliding_explicit, press the held bore as the conductance series does).
     surf: TYPE=SURFACE TO SURFACE (job name *_surf_*); refine: cells per cell each way (job name *_rN_*);
-    top_rows: cells across the small block (6; the explicit decks take 2).
+    top_rows: cells across the small block (6; the explicit decks take 2); ring_sets: the rings' node sets
+    SMALLN and MAINN in the friction series too (its explicit decks use them; the conductance and radiation
+    series always have them).
     typ SAX2T (the spec's CAX8T, SAX2T decks): the large ring as the CAX8T deck has it, the small ring as a
     line of 4 SAX2T shells on its mid-surface r = 1.125 (thickness 0.25, along +z: the positive normal -r,
     so SNEG is the contact face r = 1.25 and SPOS the pressed face r = 1); TOPFACE is the shell nodes (a
     boundary condition holds each one's whole fiber through the thickness, the *EQUATIONs of the friction
-    series tie the mid-surface nodes themselves); loads on the surface PRESSED (the SPOS side). The axial
-    motion of the conductance and radiation series is driven on the centre fiber alone (SLIDER, z = 3):
-    held axially all through its thickness and length, the ring would press like a rigid punch (contact
-    pressure 85 .. 133 under 100 at the ends against 89 .. 100). The friction series' radial force is
+    series tie the mid-surface nodes themselves); loads on the surface PRESSED (the SPOS side). The
+    conductance and radiation series hold every shell node axially (SMALLN, the whole ring: plane strain on
+    the held bore, as the solid rings; before the bore was held, the centre fibre alone was driven, since a
+    ring held axially all through pressed a compliant bore like a rigid punch). The friction series' radial force is
     224.3: the ring's hoop stiffness takes more of it than the CAX8T ring's (about 11 %), and the interface
     force is again about 200."""
     typ = typ.upper()
@@ -323,26 +350,31 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
         telems = [(1001 + k, 1001 + 2 * k, 1002 + 2 * k, 1003 + 2 * k) for k in range(nel)]
         topface = [n[0] for n in tnodes]
         sec_elems = pressed = [e[0] for e in telems]
-        drive = "SLIDER"  # the centre shell node's fiber: the ring's axial motion (docstring)
+        drive = "SMALLN"  # every shell node's fibre: the ring moved axially as a whole (docstring)
+        small_nodes = topface
     else:
         tnodes, telems, trows = mesh2d(4 * refine // c, top_rows * refine // c, 2.0, 4.0, 1.25, 1.5, shape, order, 1000, 1000, mirror=3.0)
         topface = [n[0] for n in tnodes if abs(n[2] - 1.5) < 1e-12]
         sec_elems = trows[0][0]     # bottom row of the small block
         pressed = trows[-1][1]      # top row of the small block
-        drive = "TOPFACE"
+        # rings: every node of the small ring moved axially (SMALLN), so that it is pressed as a thick cylinder
+        # in plane strain (ring_pressure); planar blocks: the top face
+        drive = "SMALLN" if axi else "TOPFACE"
+        small_nodes = [n[0] for n in tnodes]
     base = [n[0] for n in bnodes if abs(n[2]) < 1e-12]
     main_elems = brows[-1][1]   # top row of the large block
+    mainn = [n[0] for n in bnodes if abs(n[2] - 1.25) < 1e-12]  # its top face (rings: the bore, held radially)
+    main_length = 6.0 / len(main_elems)  # the main faces' length (the default penalty's 10 E / length)
     # centre of the large block's bottom, 2.5 <= x <= 3.5
     filmed = [brows[0][0][k] for k in (range(5 * refine // c, 7 * refine // c) if refine > 1 else (6 // c - 1, 6 // c))]
     place = (lambda x, y: (R_AXI - y, x)) if axi else (lambda x, y: (x, y))
     slide, press = ("2", "1") if axi else ("1", "2")
-    pscale = (R_AXI - 1.25) / (R_AXI - 1.5) if axi else 1.0
     fmt = lambda nodes: "".join(" %d, %.10g, %.10g\n" % ((n[0],) + place(n[1], n[2])) for n in nodes)
     text = ("*HEADING\n Finite sliding between coupled temperature-displacement %s blocks: %s series\n" % ("CAX8T and SAX2T" if shell else typ, series) +
             "*NODE, NSET=ALL\n" + fmt(bnodes) + "*NODE, NSET=ALL\n" + fmt(tnodes) +
             "*ELEMENT, TYPE=%s, ELSET=LARGE\n" % deck_type(typ) + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in belems) +
             "*ELEMENT, TYPE=%s, ELSET=SMALL\n" % ("SAX2T" if shell else deck_type(typ)) + "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in telems) +
-            nset("BASE", base) + nset("TOPFACE", topface) + (nset("SLIDER", [1001 + nel]) if shell else "") +
+            nset("BASE", base) + nset("TOPFACE", topface) + (nset("SMALLN", small_nodes) + nset("MAINN", mainn) if axi and (series != "friction" or ring_sets) else "") +
             elset("MAINE", main_elems) + elset("SECE", sec_elems) +
             elset("PRESSEDE" if shell else "PRESSED", pressed) + elset("FILMED", filmed) +
             "*SURFACE, NAME=MAIN, TYPE=ELEMENT\n MAINE, S%s\n*SURFACE, NAME=SECONDARY, TYPE=ELEMENT\n SECE, S%s\n" % (ft, "NEG" if shell else fb) +
@@ -372,11 +404,13 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
                  "*BOUNDARY, AMPLITUDE=SLIDE\n %d, %s, %s, %s\n%s*END STEP\n" % (ref, slide, slide, amount, turn) +
                  "*STEP, NAME=EQUILIBRATE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 20.0, 1e-5, 2.0\n*END STEP\n")
     else:
-        p1, p2 = "%.10g" % (100.0 * pscale), "%.10g" % (200.0 * pscale)
+        # rings: the large ring's bore held radially and the pressure of a thick cylinder pressed on it with 100
+        # (ring_pressure, the default penalty's compliance included); planar blocks: 100 on the top face
+        p1, p2 = ("%.10g" % ring_pressure(p, main_length) if axi else "%.10g" % p for p in (100.0, 200.0))
         text += ("*AMPLITUDE, NAME=OFF\n 0.0, 0.0, 1.0, 1.0\n*AMPLITUDE, NAME=FLUXDOWN\n 0.0, 1.0, 0.1, 0.0\n"
                  "*STEP, NAME=HEAT, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 1.0, 1e-5, 0.1\n"
-                 "*BOUNDARY\n BASE, 1, 2\n %s, %s, %s\n%s*DLOAD\n%s%s"
-                 % (drive, slide, slide, " BASE, 5, 5\n TOPFACE, 5, 5\n" if twist else "", pload(p1), dflux % "") +
+                 "*BOUNDARY\n BASE, 1, 2\n%s %s, %s, %s\n%s*DLOAD\n%s%s"
+                 % (" MAINN, 1, 1\n" if axi else "", drive, slide, slide, " BASE, 5, 5\n TOPFACE, 5, 5\n" if twist else "", pload(p1), dflux % "") +
                  "*FILM\n FILMED, F%s, 0.0, 10.0\n*END STEP\n" % fb +
                  "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.05\n"
                  "*BOUNDARY, AMPLITUDE=SLIDE\n %s, %s, %s, 1.5\n%s*END STEP\n" % (drive, slide, slide, " TOPFACE, 5, 5, 0.4\n" if twist else "") +
@@ -432,19 +466,20 @@ EXPLICIT_STEADY = 5.0      # the "steady" periods: 6 time constants C / (h A) = 
 EXPLICIT_EQUILIBRATE = 2.0 # friction series: 5.5 time constants L^2 / (pi^2 k / rho c) = 0.36 of the large block's length 6
 
 
-def explicit_steps(series, hold, sd, pd, pressed, film, p100):
+def explicit_steps(series, hold, sd, pd, pressed, film, p100, drive="TOPFACE"):
     """The explicit steps of the spec's series (planar and 3D decks alike; see sliding_explicit): the
     amplitudes and the steps. hold: the *BOUNDARY lines of the first step (base fixed, the small block's top
     face held along the slide dof sd, and in 3D across z); pd: the pressing dof; pressed(kind, value): the
     load lines on the pressed face (kind P or S); film: the film lines; p100: the pressure giving 100 at the
-    interface."""
+    interface (friction: the interface force 200); drive: the node set whose motion along sd slides the small
+    block (the rings: SMALLN, every node of the small ring)."""
     T = EXPLICIT_SLIDE
     # 0 -> 1.5 -> -1.5 -> 0 as the implicit decks, each leg a smooth step: at rest at the reversals and the ends
     slide = [(0, 0), (T / 3, 1.5), (2 * T / 3, -1.5), (T, 0)]
     mass = "*FIXED MASS SCALING, DT=%g, TYPE=BELOW MIN\n" % EXPLICIT_TARGET
     dyn = lambda period, scaled=False: "*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , %g\n" % period + (mass if scaled else "")
     text = amplitude("SLIDE", slide, True) + amplitude("RAMP", [(0.0, 0.0), (0.25, 1.0)], True)
-    move = "*BOUNDARY, AMPLITUDE=SLIDE\n TOPFACE, %s, %s, 1.0\n*END STEP\n" % (sd, sd)
+    move = "*BOUNDARY, AMPLITUDE=SLIDE\n %s, %s, %s, 1.0\n*END STEP\n" % (drive, sd, sd)
     if series == "friction":
         return text + ("*STEP, NAME=PRESS\n" + dyn(0.25) + "*BOUNDARY\n" + hold + "*DLOAD, AMPLITUDE=RAMP\n" + pressed("P", p100) +
                        "*END STEP\n*STEP, NAME=SLIDE\n" + dyn(T) + move +
@@ -458,7 +493,7 @@ def explicit_steps(series, hold, sd, pd, pressed, film, p100):
                    "*STEP, NAME=STEADY\n" + dyn(S, True) + "*END STEP\n"
                    "*STEP, NAME=DOUBLE PRESSURE\n" + dyn(S, True) + "*DLOAD, AMPLITUDE=DOUBLE, OP=NEW\n" + pressed("P", p100) + "*END STEP\n"
                    "*STEP, NAME=SLIDE OFF\n" + dyn(4.0) + "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n"
-                   "*BOUNDARY, AMPLITUDE=OFF\n TOPFACE, %s, %s, 5.0\n*DFLUX, AMPLITUDE=FLUXDOWN\n" % (pd, pd, sd, sd) +
+                   "*BOUNDARY, AMPLITUDE=OFF\n %s, %s, %s, 5.0\n*DFLUX, AMPLITUDE=FLUXDOWN\n" % (pd, pd, drive, sd, sd) +
                    pressed("S", "100.0") + "*END STEP\n")
 
 
@@ -467,14 +502,18 @@ def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None, sur
     interaction and loads, with MECHANICAL CONSTRAINT=constraint (PENALTY or KINEMATIC) and these
     changes, each needed by explicit steps: no *EQUATION (the friction series' straight, non-rotating top
     face becomes a prescribed horizontal motion of the top face with the force 200 as a pressure of 100
-    on it); the slide 0 -> 1.5 -> -1.5 -> 0 as three SMOOTH STEP legs (the same slip path 6, but no
+    on it; the rings as sliding_blocks' conductance series has them in every series: the large ring's bore
+    held radially, the small ring moved axially as a whole, pressed with the thick cylinder's pressure
+    (ring_pressure: no compliance with kinematic contact, the default penalty's with penalty contact) for
+    100 at the interface, or in the friction series for the planar blocks' interface force 200, pc = 200 /
+    (2 pi b x 2) = 12.73); the slide 0 -> 1.5 -> -1.5 -> 0 as three SMOOTH STEP legs (the same slip path 6, but no
     velocity or acceleration jumps, which would send waves through the undamped blocks: the 16-point
     tables used before rang them up to ALLIE ~ 10); loads ramped in by smooth steps; steady-state steps as transient
     steps of EXPLICIT_STEADY; density / specific heat as above (the steps: explicit_steps). surf: TYPE=SURFACE
     TO SURFACE (PENALTY only; job name *_surf_*)."""
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:  # the implicit deck of the same name must not be overwritten
-        sliding_blocks(series, typ=typ, outdir=tmp, top_rows=2)
+        sliding_blocks(series, typ=typ, outdir=tmp, top_rows=2, ring_sets=True)
         with open(os.path.join(tmp, "sliding_%s_%s.inp" % (series, typ.lower()))) as f:
             text = f.read()
     head = text[:text.index("*CONTACT PAIR")]
@@ -482,16 +521,20 @@ def sliding_explicit(series, constraint="PENALTY", typ="CPE4T", outdir=None, sur
     shape, order, kin = family_of(typ)
     fb, ft = faces(shape)
     # axisymmetric rings (CAX*): slide along z (dof 2), press along r (dof 1), the pressure on the inner face
-    # (r = 1) scaled so that the interface (r = 1.25) sees 100, as sliding_blocks does
+    # (r = 1) the thick cylinder's (ring_pressure) for a contact pressure of 100 on the held bore (r = 1.25), or
+    # for the interface force 200 in the friction series (docstring)
     axi = kin in ("AX", "GAX")
     sd, pd = ("2", "1") if axi else ("1", "2")
-    pscale = (R_AXI - 1.25) / (R_AXI - 1.5) if axi else 1.0
-    p100 = "%.10g" % (100.0 * pscale)
-    p100 += "" if "." in p100 else ".0"
+    if axi:
+        pc = 200.0 / (2.0 * math.pi * RING_B * 2.0) if series == "friction" else 100.0
+        p100 = "%.10g" % ring_pressure(pc, 0.5 * (2 if order == 2 else 1) if constraint == "PENALTY" else None)  # the main faces' length
+    else:
+        p100 = "100.0"
+    hold = " BASE, 1, 2\n MAINN, 1, 1\n SMALLN, %s, %s\n" % (sd, sd) if axi else " BASE, 1, 2\n TOPFACE, %s, %s\n" % (sd, sd)
     text = head + ("*CONTACT PAIR, INTERACTION=IFACE, SMOOTH=0.05, MECHANICAL CONSTRAINT=%s%s\n SECONDARY, MAIN\n"
                    % (constraint, ", TYPE=SURFACE TO SURFACE" if surf else "") + "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
-    text += explicit_steps(series, " BASE, 1, 2\n TOPFACE, %s, %s\n" % (sd, sd), sd, pd,
-                           lambda kind, value: " PRESSED, %s%s, %s\n" % (kind, ft, value), " FILMED, F%s, 0.0, 10.0\n" % fb, p100)
+    text += explicit_steps(series, hold, sd, pd, lambda kind, value: " PRESSED, %s%s, %s\n" % (kind, ft, value),
+                           " FILMED, F%s, 0.0, 10.0\n" % fb, p100, "SMALLN" if axi else "TOPFACE")
     name = "sliding_%s_explicit_%s%s_%s.inp" % (series, constraint.lower(), "_surf" if surf else "", typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:
         f.write(text)

@@ -22,9 +22,17 @@ when the slide has stopped, checked below 1 % of the frictional work).
 radiation (the conductance series' steps with gap radiation): the same checks, and the step 4 drop equal to
 step 3's (1 %), where conductance's lies within the bounds its pressure spread allows around 4.
 Axisymmetric rings (job *_cax*, make_decks.py's rings r = 2.5 - y, z = x): turned back into the planar
-picture; the flux in is 100 x 2 pi x 1 x 2, and friction is checked against the interface force N measured
-at the end of the press (dissipation = mu N x 6, absorbed = eta x dissipation, final temperature = absorbed
-/ 29.25 pi; 1 %).
+picture; the flux in is 100 x 2 pi x 1 x 2. Every series holds the large ring's bore radially and presses
+the small ring (moved axially as a whole) as a thick cylinder (make_decks.py ring_pressure): conductance
+at 100 and 200, whose drop-ratio bounds must also lie within 4 +- 3 % and contain 4 (the ratio's 1 %
+slack), friction with the interface force N = 200 of the planar blocks. Friction is checked against N
+measured at the end of the press (dissipation = mu N x 6, absorbed = eta x dissipation, final temperature
+= absorbed / 29.25 pi; 1 %), and against the spec's own numbers: dissipation 120, absorbed 60, final
+temperature 60 / (rho c 29.25 pi) = 0.65294, each within 0.1 % (see the derivation at that check).
+The mean drop across the interface is weighted by the secondary nodes' lengths int N_a ds (2D), as
+tests/verification/check_sliding.py weighs it: the mean the heat balance fixes (the heat across = k x the
+weighted drop), where the nodes' plain mean weighs the block's end nodes double and drifts with the
+drop's profile (CAX4T rings: 3.946 against 3.991 weighted, at a uniform pressure giving 3.989).
 usage: check_sliding_explicit.py OUTDIR JOB friction|conductance|radiation
 """
 import re
@@ -159,6 +167,21 @@ if series == "friction" and axi:
     nt = r.field("NT")[:, 0]
     check("final temperature, coldest node (absorbed / 29.25 pi)", nt.min(), 0.5 * dis / volume, 0.01, relative=True)
     check("final temperature, hottest node (absorbed / 29.25 pi)", nt.max(), 0.5 * dis / volume, 0.01, relative=True)
+    # The spec's numbers themselves (the decks press the ring for N = 200, make_decks.py ring_pressure): 120
+    # generated, 60 absorbed, 60 / (rho c V) = 0.65294. Tolerance 0.1 %, from what separates them from the
+    # exact values: (a) N differs from 200 by the thick cylinder's discretisation on these meshes (2 linear
+    # or 1 quadratic cell across the ring): the pressure error goes as h^2, 4.4e-5 on the Standard decks' 6
+    # cells, so 4e-4 on 2 (measured: CAX4T -3.6e-4, CAX3T -6e-5, CAX4RT and CAX6MT below 1e-5); (b) the slip
+    # lost while the friction sticks at the slide's reversals and the kinetic energy left (measured below
+    # 1e-4 and 1e-9 of ALLFD); (c) the heat absorbed is eta x the dissipation, and the final temperature
+    # absorbed / (rho c V) by the energy balance (1e-6), so they carry (a) + (b) alone. 5e-4 in all, 1e-3
+    # with a factor 2 for the meshes not measured. The same 0.1 % as the Standard planar decks' 120 / 60 / 7.5.
+    final = 60.0 / volume
+    check("frictional dissipation ALLFD after the slide (the spec's 120)", h["ALLFD"][s2], 120.0, 1e-3, relative=True)
+    check("frictional dissipation, end of the job (the spec's 120)", dis, 120.0, 1e-3, relative=True)
+    check("heat absorbed by the rings (the spec's 60)", h["friction_heat_total"][-1], 60.0, 1e-3, relative=True)
+    check("final temperature, coldest node (60 / 29.25 pi = %.5f)" % final, nt.min(), final, 1e-3, relative=True)
+    check("final temperature, hottest node (60 / 29.25 pi = %.5f)" % final, nt.max(), final, 1e-3, relative=True)
     finish()
 
 if series == "friction":
@@ -185,7 +208,8 @@ for step in (3, 4):
 
 def interface_drop(step):
     """Mean temperature drop main -> secondary over the secondary nodes in contact at the end of a step (the
-    main temperature interpolated along x on the large block's top face), and their pressure range."""
+    main temperature interpolated along x on the large block's top face; 2D: weighted by the nodes' lengths
+    int N_a ds, the docstring), and their pressure range."""
     i = r.frame_of_step(step)
     cp, u, nt = r.field("CPRESS", i)[:, 0], r.field("U", i), r.field("NT", i)[:, 0]
     sec = np.nonzero(small & (cp > 0))[0]
@@ -203,7 +227,10 @@ def interface_drop(step):
     for n in sec:
         f, N = line_locate(faces, pos[:, 0], pos[n, 0])
         tm.append(np.nan if f is None else float(N @ nt[f]))
-    return np.nanmean(np.array(tm) - nt[sec]), cp[sec].min(), cp[sec].max()
+    lengths = line_weights(r.xyz, line_faces(r.xyz, np.nonzero(small & (abs(r.xyz[:, 1] - y0) < 1e-9))[0], quadratic))
+    d, w = np.array(tm) - nt[sec], np.array([lengths[n] for n in sec])
+    ok = ~np.isnan(d)
+    return float(np.sum((w * d)[ok]) / np.sum(w[ok])), cp[sec].min(), cp[sec].max()
 
 
 # step 4 doubles the pressure: the conductance table (20 at 100, 5 at 200, clipped) makes the drop 4 times
@@ -216,6 +243,9 @@ if series == "conductance":
     k = lambda p: np.interp(p, [100.0, 200.0], [20.0, 5.0])
     lo, hi = k(hi3) / k(lo4), k(lo3) / k(hi4)
     check_true("step 4 drop / step 3 drop within [%.4g, %.4g] (4 at a uniform pressure)" % (lo, hi), lo * 0.99 <= d4 / d3 <= hi * 1.01, "ratio %.6g" % (d4 / d3))
+    if axi:  # the rings press a held bore uniformly (make_decks.py ring_pressure), as check_sliding.py asks of them
+        check_true("rings: pressure-spread bounds within 4 +- 3 % and containing 4", 0.97 * 4 <= lo and hi <= 1.03 * 4 and lo * 0.99 <= 4.0 <= hi * 1.01,
+                   "ratio %.6f in [%.6f, %.6f]; pressures %.4f .. %.4f and %.4f .. %.4f" % (d4 / d3, lo, hi, lo3, hi3, lo4, hi4))
 else:
     check("step 4 drop / step 3 drop (radiation: pressure-independent)", d4 / d3, 1.0, 0.01, relative=True)
 nt = r.field("NT")[:, 0][small]
