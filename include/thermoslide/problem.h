@@ -124,6 +124,9 @@ PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta
 /* 2-norms of a vector in the problem's layout over its displacement rows and its temperature rows (residuals,
  * solutions, updates: the per-field convergence test). */
 PetscErrorCode TslProblemFieldNorms(TslProblem prob, Vec F, PetscReal *norm_u, PetscReal *norm_theta);
+/* Collective. The largest nodal translation of the solution X over the model's size (the diagonal of the bounding
+ * box of the reference coordinates); reference nodes and rotations are left out. */
+PetscErrorCode TslProblemDisplacementReach(TslProblem prob, Vec X, PetscReal *reach);
 
 /* ---- explicit dynamics (src/solve/explicit.c): vectors, no matrix -------------------------------
  * Every Vec below is a duplicate of the solution vector (ghosted, block size ndof). */

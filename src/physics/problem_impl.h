@@ -109,7 +109,7 @@ struct _p_TslProblem {
   PetscInt          *elem_lnode;   /* local node of each element node (model elem_ptr layout) */
   TslElementSection *esec;         /* [nelem] material and thickness of each element */
   PetscReal         *theta_init;   /* [nn] */
-  PetscReal          row_scale[2]; /* constraint-row scale for displacement and temperature dofs */
+  PetscReal          row_scale[3]; /* constraint-row scale for translations, temperature, twist (assemble.c, RowGroup) */
 
   /* step state */
   PetscInt      step;
