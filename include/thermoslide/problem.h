@@ -124,6 +124,9 @@ PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta
 /* 2-norms of a vector in the problem's layout over its displacement rows and its temperature rows (residuals,
  * solutions, updates: the per-field convergence test). */
 PetscErrorCode TslProblemFieldNorms(TslProblem prob, Vec F, PetscReal *norm_u, PetscReal *norm_theta);
+/* Collective. The largest nodal translation of the solution X over the model's size (the diagonal of the bounding
+ * box of the reference coordinates); reference nodes and rotations are left out. */
+PetscErrorCode TslProblemDisplacementReach(TslProblem prob, Vec X, PetscReal *reach);
 
 /* ---- explicit dynamics (src/solve/explicit.c): vectors, no matrix -------------------------------
  * Every Vec below is a duplicate of the solution vector (ghosted, block size ndof). */
@@ -171,15 +174,17 @@ PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc,
  * a boundary condition of that step (or pinned) keeps zero, the condition wins; *held counts those dofs where a
  * nonzero velocity was given, over all ranks. Collective. */
 PetscErrorCode TslProblemInitialVelocity(TslProblem prob, Vec V, PetscInt *held);
-/* Kinematic contact (src/physics/contact_kinematic.c; docs/explicit.md). SetKinematic: the pairs with
- * MECHANICAL CONSTRAINT=KINEMATIC become kinematic for an explicit step (explicit_step true) or ordinary
- * again (false); *any: some pair is (the same on all ranks). Kinematic pairs are left out of
+/* The contact of an explicit step (explicit_step true) or of an implicit one (false; src/physics/contact.c): the
+ * pairs with MECHANICAL CONSTRAINT=KINEMATIC become kinematic or ordinary again (*any: some pair is, the same on
+ * all ranks), and plain *FRICTION sticks with the normal penalty in explicit steps, with its automatic elastic
+ * slip in implicit ones (docs/explicit.md, "Friction in explicit steps").
+ * Kinematic contact (src/physics/contact_kinematic.c; docs/explicit.md). Kinematic pairs are left out of
  * TslProblemExplicitForces' Fc and of the stable increment's contact term. KinematicStiffness (collective):
  * each kinematic node's stiffness that closes its gap in an increment with h h_avg = hh, from the lumped
  * masses M and the prescribed-dof mask Mask (ghosts updated), W a work vector. KinematicForces (collective):
  * the kinematic pairs' forces and heat at the current solution (the predicted state, its ghosts current) into Fk, as Fc, and
  * their heat rates. */
-PetscErrorCode TslProblemContactSetKinematic(TslProblem prob, PetscBool explicit_step, PetscBool *any);
+PetscErrorCode TslProblemContactSetExplicit(TslProblem prob, PetscBool explicit_step, PetscBool *any);
 PetscErrorCode TslProblemContactKinematicStiffness(TslProblem prob, Vec M, Vec Mask, Vec W, PetscReal hh);
 /* Collective. A further corrector pass (projected Jacobi on the contact problem, linearised): each kinematic
  * node's gap after the correction -hh M^-1 Fk (Fk the corrector's forces so far, summed on their owners) from

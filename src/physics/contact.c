@@ -626,6 +626,31 @@ PetscErrorCode TslProblemContactExplicitIncrement(TslProblem p, PetscBool search
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* An explicit step's contact (explicit_step) or an implicit one's. MECHANICAL CONSTRAINT=KINEMATIC applies to
+ * explicit steps only. The stick of plain *FRICTION: implicit steps allow the automatic elastic slip (the stick
+ * stiffness mu pN / e_max, soft enough for Newton: issue 8); explicit steps stick with the normal penalty eps_n,
+ * as Abaqus/Explicit does (its SLIP TOLERANCE and ELASTIC SLIP are Abaqus/Standard settings). With e_max an
+ * explicit slide lost heat wherever the interface rang: every opening restarted a node's stick from zero and it
+ * had to slide e_max (0.005 of a facet) again before it dissipated, a fifth of the heat of a two-block slide
+ * whose pressure chattered at 100 Hz (docs/explicit.md, "Friction in explicit steps"). The normal penalty is the
+ * interface's own stiffness: the stable increment's nodal bound (contact_bound.c) bounds the norm of each
+ * point's block, k n n^T then and k I now, alike. */
+PetscErrorCode TslProblemContactSetExplicit(TslProblem p, PetscBool explicit_step, PetscBool *any)
+{
+  PetscFunctionBeginUser;
+  *any = PETSC_FALSE;
+  for (PetscInt k = 0; k < p->ncsurf; k++) {
+    TslContactSurface *cs = &p->csurf[k];
+    cs->kinematic         = (PetscBool)(explicit_step && p->m->pairs[k].kinematic);
+    if (cs->kinematic) *any = PETSC_TRUE; /* the pairs are the model's, the same on every rank */
+    if (cs->elastic_slip_implicit > 0) {
+      cs->law.elastic_slip = explicit_step ? 0 : cs->elastic_slip_implicit;
+      cs->law.eps_t        = explicit_step ? cs->law.eps_n : 0;
+    }
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscReal TslProblemContactNodeArea(TslProblem p, const TslContactNode *cn)
 {
   const TslContactSurface *cs = &p->csurf[cn->pair];
@@ -858,6 +883,7 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
       }
     }
     PetscCall(SetUpLaw(p, pair, pair->mean_length, penalty[k], &cs->law));
+    cs->elastic_slip_implicit = cs->law.friction == TSL_CONTACT_FRICTION_PENALTY ? cs->law.elastic_slip : 0; /* see TslProblemContactSetExplicit */
     /* the held region's shrink per unit of main-surface motion: the pair's face family (2D: one per pair;
      * 3D: the first face's, the degree of a wedge's tri and quad faces alike) */
     if (cs->dim == 3) cs->hull = TslContactFace3HullBound(pair->main_face);

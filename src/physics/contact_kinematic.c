@@ -24,17 +24,6 @@
  * frictional heat of the corrected slip) come from the same kernel evaluation. */
 #include "problem_impl.h"
 
-PetscErrorCode TslProblemContactSetKinematic(TslProblem p, PetscBool explicit_step, PetscBool *any)
-{
-  PetscFunctionBeginUser;
-  *any = PETSC_FALSE;
-  for (PetscInt k = 0; k < p->ncsurf; k++) {
-    p->csurf[k].kinematic = (PetscBool)(explicit_step && p->m->pairs[k].kinematic);
-    if (p->csurf[k].kinematic) *any = PETSC_TRUE; /* the pairs are the model's, the same on every rank */
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 /* The face shape functions of node cn at the projection its history starts from (last: at its last
  * evaluation instead), inside the face, non-negative, summing to 1; *n of them, main face nodes main[]
  * (local, -1 padded). */

@@ -479,6 +479,35 @@ PetscErrorCode TslProblemMaxTemperatureChange(TslProblem p, PetscReal *dtheta)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemDisplacementReach(TslProblem p, Vec X, PetscReal *reach)
+{
+  const PetscScalar *x;
+  PetscInt           slot[3];
+  PetscReal          loc[7] = {0, PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL, -PETSC_MAX_REAL, -PETSC_MAX_REAL, -PETSC_MAX_REAL}, g[7];
+
+  PetscFunctionBeginUser;
+  for (PetscInt d = 0; d < p->dim; d++) slot[d] = TslProblemDofSlot(p, d + 1);
+  PetscCall(VecGetArrayRead(X, &x));
+  for (PetscInt n = 0; n < p->nown; n++) {
+    if (p->extra[n]) continue; /* a reference node: its dofs are no translations */
+    for (PetscInt d = 0; d < p->dim; d++) {
+      const PetscReal c = p->m->node_xyz[3 * n + d];
+      if (slot[d] >= 0) loc[0] = PetscMax(loc[0], PetscAbsReal(PetscRealPart(x[n * p->ndof + slot[d]])));
+      loc[1 + d] = PetscMin(loc[1 + d], c), loc[4 + d] = PetscMax(loc[4 + d], c);
+    }
+  }
+  PetscCall(VecRestoreArrayRead(X, &x));
+  for (PetscInt d = 0; d < 3; d++) loc[1 + d] = -loc[1 + d]; /* one MAX reduction for all */
+  PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_MAX, p->comm));
+  {
+    PetscReal diag = 0;
+    for (PetscInt d = 0; d < p->dim; d++) diag += PetscSqr(g[4 + d] + g[1 + d]);
+    diag   = PetscSqrtReal(diag);
+    *reach = diag > 0 ? g[0] / diag : 0; /* a model of one point has no size to compare with */
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemFieldNorms(TslProblem p, Vec F, PetscReal *norm_u, PetscReal *norm_theta)
 {
   const PetscScalar *f;

@@ -27,10 +27,15 @@ typedef struct {
   PetscInt   dim;
   PetscInt  *kind;
   PetscReal *nnormal;
-  /* MECHANICAL CONSTRAINT=KINEMATIC in the running explicit step (TslProblemContactSetKinematic): the pair is
+  /* MECHANICAL CONSTRAINT=KINEMATIC in the running explicit step (TslProblemContactSetExplicit): the pair is
    * evaluated only by the kinematic corrector (src/physics/contact_kinematic.c), each node with its own
    * penalty k_kin / A */
   PetscBool kinematic;
+  /* plain *FRICTION (PENALTY friction without a stick slope): the elastic slip the automatic stick allows in implicit
+   * steps (SLIP TOLERANCE x the facet size, or ELASTIC SLIP=; 0 for any other law). Explicit steps stick with the
+   * normal penalty eps_n instead, as Abaqus/Explicit (TslProblemContactSetExplicit; docs/explicit.md, "Friction
+   * in explicit steps"); law.elastic_slip and law.eps_t hold the running step's choice. */
+  PetscReal elastic_slip_implicit;
 } TslContactSurface;
 
 /* A secondary node owned by this rank: its pairing and history (current and committed). */
@@ -104,7 +109,7 @@ struct _p_TslProblem {
   PetscInt          *elem_lnode;   /* local node of each element node (model elem_ptr layout) */
   TslElementSection *esec;         /* [nelem] material and thickness of each element */
   PetscReal         *theta_init;   /* [nn] */
-  PetscReal          row_scale[2]; /* constraint-row scale for displacement and temperature dofs */
+  PetscReal          row_scale[3]; /* constraint-row scale for translations, temperature, twist (assemble.c, RowGroup) */
 
   /* step state */
   PetscInt      step;

@@ -47,6 +47,11 @@ static PetscErrorCode SetDefaultOption(Driver *d, const char *name, const char *
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The largest nodal translation of a Newton iterate, in model sizes (the reference bounding box's diagonal), that
+ * is not taken for divergence: a small-strain solution moves no node by more than a few model sizes, a singular
+ * step by 1e10 of them. */
+#define MAX_REACH 100.0
+
 /* Each field's round-off scale: |D x| over its rows, D the diagonal of the Jacobian of the last Newton step.
  * A residual row sums terms of about that size (K x, with the penalty and constraint rows' own entries), so
  * a few hundred ulps of it is as small as that field's residual can get, in that field's units alone. */
@@ -130,6 +135,21 @@ static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, P
   if (it > 0 && d->divtol > 0 && (nu > d->divtol * PetscMax(d->r0_u, tol_u) || nt > d->divtol * PetscMax(d->r0_theta, tol_t))) {
     *reason = SNES_DIVERGED_DTOL;
     PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (it > 0) {
+    /* an iterate that moved a node by more than MAX_REACH model sizes came from a singular Jacobian (a body that
+     * the iterate before left without support): diverged, whatever the residual, which such a state can make
+     * look small against its own enormous terms (issue 44, item 7) */
+    PetscReal reach;
+    Vec       X;
+    PetscCall(SNESGetSolution(snes, &X));
+    PetscCall(TslProblemDisplacementReach(d->prob, X, &reach));
+    if (reach > MAX_REACH) {
+      d->refused = "a Newton iterate moved a node by more than 100 times the model's size (a singular Jacobian: a body the iterate before "
+                   "left without support, such as a load-controlled part whose contact nodes all opened)";
+      *reason    = SNES_DIVERGED_FUNCTION_DOMAIN;
+      PetscFunctionReturn(PETSC_SUCCESS);
+    }
   }
   if (it > 0 && (!ok_u || !ok_t)) {
     PetscReal ru, rt, yu, yt, xu, xt, stol;

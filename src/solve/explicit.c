@@ -625,7 +625,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscBool kinematic;
     PetscCall(VecDuplicate(x.X, &x.Fc));
     PetscCall(VecDuplicate(x.X, &x.W));
-    PetscCall(TslProblemContactSetKinematic(x.p, PETSC_TRUE, &kinematic));
+    PetscCall(TslProblemContactSetExplicit(x.p, PETSC_TRUE, &kinematic));
     if (kinematic) {
       PetscCall(VecDuplicate(x.X, &x.Fk));
       PetscCall(VecZeroEntries(x.Fk));
@@ -751,7 +751,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   d->explicit_last = s;
   if (x.m->npair) {
     PetscBool any;
-    PetscCall(TslProblemContactSetKinematic(x.p, PETSC_FALSE, &any)); /* implicit steps ignore the parameter */
+    PetscCall(TslProblemContactSetExplicit(x.p, PETSC_FALSE, &any)); /* implicit steps: no kinematic pairs, the automatic stick */
   }
   PetscCall(VecDestroy(&d->mass));
   d->mass = x.M;
