@@ -119,9 +119,10 @@ static PetscErrorCode PartitionMetis(const TslModel *g, PetscInt nparts, PetscIn
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Slabs of equal element count ordered by the centroid coordinate along one axis: lets tests force a cut
- * (e.g. between two bodies in contact). */
-static PetscErrorCode PartitionAxis(const TslModel *g, PetscInt axis, PetscInt nparts, PetscInt epart[])
+/* Slabs of equal element count ordered by the centroid coordinate along one axis, or, given ncut = nparts - 1
+ * increasing coordinates, the slabs between them: lets tests force a cut (e.g. between two bodies in contact,
+ * whatever their element counts). */
+static PetscErrorCode PartitionAxis(const TslModel *g, PetscInt axis, PetscInt nparts, PetscInt ncut, const PetscReal cut[], PetscInt epart[])
 {
   PetscReal *c;
   PetscInt  *perm;
@@ -135,8 +136,15 @@ static PetscErrorCode PartitionAxis(const TslModel *g, PetscInt axis, PetscInt n
     c[e] /= n;
     perm[e] = e;
   }
-  PetscCall(PetscSortRealWithArrayInt(g->nelem, c, perm));
-  for (PetscInt i = 0; i < g->nelem; i++) epart[perm[i]] = (i * nparts) / g->nelem;
+  if (ncut) { /* given cuts: part k holds the centroids between cut k-1 and cut k */
+    for (PetscInt e = 0; e < g->nelem; e++) {
+      epart[e] = 0;
+      for (PetscInt k = 0; k < ncut; k++) epart[e] += c[e] > cut[k];
+    }
+  } else {
+    PetscCall(PetscSortRealWithArrayInt(g->nelem, c, perm));
+    for (PetscInt i = 0; i < g->nelem; i++) epart[perm[i]] = (i * nparts) / g->nelem;
+  }
   PetscCall(PetscFree2(c, perm));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -847,7 +855,9 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
 {
   PetscInt *epart, *owner, *gnum, *node_nat, *elem_nat, *node_by_id, *elem_by_id, *elem_order, *count, *offset, *mark, nused = 0;
   char      method[32] = "metis", order[32] = "locality";
-  PetscReal margin     = -1;
+  PetscReal margin     = -1, cut[64];
+  PetscInt  ncut       = 64;
+  PetscBool cuts_given = PETSC_FALSE;
   PetscInt  ndof       = g->nelem ? TslElementTypeGet(g->elem_type[0])->ndof : g->dim + 1;
 
   PetscFunctionBeginUser;
@@ -857,6 +867,8 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
   PetscOptionsBegin(PETSC_COMM_SELF, NULL, "thermoslide mesh partition", NULL);
   PetscCall(PetscOptionsString("-tsl_partition", "element partition: metis, or slabs by element centroid axis_x|axis_y|axis_z", NULL, method, method,
                                sizeof(method), NULL));
+  PetscCall(PetscOptionsRealArray("-tsl_partition_cuts", "axis_*: the slabs' bounds along the axis (one fewer than the ranks, increasing) instead of equal element counts", NULL,
+                                  cut, &ncut, &cuts_given));
   PetscCall(PetscOptionsReal("-tsl_contact_margin", "contact: inflation of each rank's held region of the main surface (default 2 (largest prescribed displacement + search radius))", NULL, margin, &margin, NULL));
   PetscCall(PetscOptionsString("-tsl_mesh_order",
                                "order of each rank's elements and owned nodes in memory: locality (along a Hilbert curve) or input (by number)", NULL,
@@ -878,6 +890,12 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
     PetscBool empty = PETSC_FALSE;
 
     PetscCheck(metis || axis, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_partition %s: expected metis, axis_x, axis_y or axis_z", method);
+    if (!cuts_given) ncut = 0;
+    PetscCheck(!ncut || axis, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_partition_cuts: needs -tsl_partition axis_x, axis_y or axis_z (not %s)", method);
+    PetscCheck(!ncut || size == 1 || ncut == size - 1, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_partition_cuts: %" PetscInt_FMT " value(s) for %d ranks; give %d",
+               ncut, (int)size, (int)size - 1);
+    for (PetscInt k = 1; k < ncut; k++)
+      PetscCheck(cut[k] > cut[k - 1], PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_partition_cuts: the values must increase (%g after %g)", (double)cut[k], (double)cut[k - 1]);
     if (g->nelem <= size) { /* one element per rank; ranks beyond the elements hold nothing */
       for (PetscInt e = 0; e < g->nelem; e++) epart[e] = e;
     } else if (size == 1) {
@@ -885,16 +903,17 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
     } else if (metis) {
       PetscCall(PartitionMetis(g, size, epart));
     } else {
-      PetscCall(PartitionAxis(g, method[5] - 'x', size, epart));
+      PetscCall(PartitionAxis(g, method[5] - 'x', size, ncut, cut, epart));
     }
     /* METIS may leave a part empty on very small meshes: fall back to slabs along x */
     PetscCall(PetscCalloc1(size, &count_e));
     for (PetscInt e = 0; e < g->nelem; e++) count_e[epart[e]]++;
     for (PetscMPIInt r = 0; r < size && g->nelem > size; r++) empty = (PetscBool)(empty || count_e[r] == 0); /* fewer: empty by design */
     PetscCall(PetscFree(count_e));
+    PetscCheck(!empty || !ncut, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "-tsl_partition_cuts: a slab holds no element centroid; every rank needs one");
     if (empty) {
       PetscCall(PetscInfo(NULL, "METIS left a part empty; partitioning along x instead\n"));
-      PetscCall(PartitionAxis(g, 0, size, epart));
+      PetscCall(PartitionAxis(g, 0, size, 0, NULL, epart));
     }
   }
 
