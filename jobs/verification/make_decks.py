@@ -298,7 +298,8 @@ def series_interaction(series, auglagr=False, surf=False):
                    "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n ALL, 0.0\n")
 
 
-def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, refine=1, top_rows=6, ring_sets=False):
+def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, refine=1, top_rows=6, ring_sets=False,
+                   film_amplitude=False):
     """The spec's finite-sliding problems: a block 2 x 0.25 (4 x 6 cells) pressed on a block 6 x 1.25
     (12 x 2 cells) fixed at its bottom; total area 8, rho c = 1. The thin upper block passes the applied
     pressure on nearly uniformly (a few % spread), and the blocks' nodes meet along the interface at the
@@ -322,6 +323,10 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
     top_rows: cells across the small block (6; the explicit decks take 2); ring_sets: the rings' node sets
     SMALLN and MAINN in the friction series too (its explicit decks use them; the conductance and radiation
     series always have them).
+    film_amplitude (the conductance series; job name *_filmamp_*): the film coefficient varies in
+    time, as the spec's eia2tssc illustrates: *FILM, FILM AMPLITUDE=FILMH with the total-time amplitude
+    FILM_AMPLITUDE below (h = 10 x 0.5 at the start, 10 at the end of step 1 and through step 3, 20 from the
+    end of step 4 on), so that the steady steps' film faces sit at flux / (h A) with h = 10 and then 20.
     typ SAX2T (the spec's CAX8T, SAX2T decks): the large ring as the CAX8T deck has it, the small ring as a
     line of 4 SAX2T shells on its mid-surface r = 1.125 (thickness 0.25, along +z: the positive normal -r,
     so SNEG is the contact face r = 1.25 and SPOS the pressed face r = 1); TOPFACE is the shell nodes (a
@@ -407,11 +412,13 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
         # rings: the large ring's bore held radially and the pressure of a thick cylinder pressed on it with 100
         # (ring_pressure, the default penalty's compliance included); planar blocks: 100 on the top face
         p1, p2 = ("%.10g" % ring_pressure(p, main_length) if axi else "%.10g" % p for p in (100.0, 200.0))
+        if film_amplitude:
+            text += "*AMPLITUDE, NAME=FILMH, TIME=TOTAL TIME\n" + "".join(" %g, %g\n" % p for p in FILM_AMPLITUDE)
         text += ("*AMPLITUDE, NAME=OFF\n 0.0, 0.0, 1.0, 1.0\n*AMPLITUDE, NAME=FLUXDOWN\n 0.0, 1.0, 0.1, 0.0\n"
                  "*STEP, NAME=HEAT, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.1, 1.0, 1e-5, 0.1\n"
                  "*BOUNDARY\n BASE, 1, 2\n%s %s, %s, %s\n%s*DLOAD\n%s%s"
                  % (" MAINN, 1, 1\n" if axi else "", drive, slide, slide, " BASE, 5, 5\n TOPFACE, 5, 5\n" if twist else "", pload(p1), dflux % "") +
-                 "*FILM\n FILMED, F%s, 0.0, 10.0\n*END STEP\n" % fb +
+                 ("*FILM, FILM AMPLITUDE=FILMH\n" if film_amplitude else "*FILM\n") + " FILMED, F%s, 0.0, 10.0\n*END STEP\n" % fb +
                  "*STEP, NAME=SLIDE, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n 0.05, 3.0, 1e-5, 0.05\n"
                  "*BOUNDARY, AMPLITUDE=SLIDE\n %s, %s, %s, 1.5\n%s*END STEP\n" % (drive, slide, slide, " TOPFACE, 5, 5, 0.4\n" if twist else "") +
                  "*STEP, NAME=STEADY\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n 1.0, 1.0\n*END STEP\n"
@@ -421,10 +428,19 @@ def sliding_blocks(series, auglagr=False, typ="CPE4T", outdir=None, surf=False, 
                  "*DLOAD, OP=NEW\n*BOUNDARY, FIXED\n TOPFACE, %s, %s\n%s*BOUNDARY, AMPLITUDE=OFF\n %s, %s, %s, 5.0\n"
                  % (press, press, " TOPFACE, 5, 5\n" if twist else "", drive, slide, slide) +
                  dflux % ", AMPLITUDE=FLUXDOWN" + "*END STEP\n")
-    name = "sliding_%s%s%s%s_%s.inp" % (series, "_auglagr" if auglagr else "", "_surf" if surf else "", "_r%d" % refine if refine > 1 else "",
-                                         "sax2t" if shell else typ.lower())
+    # the conductance series only: the radiation series' step 4 drop equals step 3's only at the same level
+    assert not film_amplitude or series == "conductance", "--film-amplitude: the conductance series (the spec's eia2tssc)"
+    name = "sliding_%s%s%s%s%s_%s.inp" % (series, "_auglagr" if auglagr else "", "_surf" if surf else "", "_r%d" % refine if refine > 1 else "",
+                                           "_filmamp" if film_amplitude else "", "sax2t" if shell else typ.lower())
     with open(os.path.join(outdir or HERE, name), "w") as f:
         f.write(text)
+
+
+# The film coefficient's factor over the total time for make_decks.py --sliding ... --film-amplitude (the spec's
+# eia2tssc: "the procedure to specify a time-dependent variation of the film coefficient"); the conductance and
+# radiation series' steps end at total times 1 (HEAT), 4 (SLIDE), 5 (STEADY), 6 (DOUBLE PRESSURE) and 9 (SLIDE OFF).
+# A total-time amplitude keeps following its table across the steps and holds its last value beyond it.
+FILM_AMPLITUDE = [(0.0, 0.5), (1.0, 1.0), (5.0, 1.0), (6.0, 2.0)]
 
 
 # The 3D series (issue 7): the planar blocks extruded to the spec's "three-dimensional model with width
@@ -857,7 +873,7 @@ def temperature_tables():
 if __name__ == "__main__":
     import sys
     if len(sys.argv) >= 5 and sys.argv[1] == "--sliding":
-        # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR [--auglagr] [--surf] [--refine=N] [--stack2]
+        # the suite's per-type decks: make_decks.py --sliding TYPE SERIES OUTDIR [--auglagr] [--surf] [--refine=N] [--stack2] [--film-amplitude]
         # (TYPE S8RT: the blocks as shell plates, sliding_blocks_3d; SAX2T: the small ring as shells on a CAX8T ring, sliding_blocks)
         flags = sys.argv[5:]
         if "--stack2" in flags:
@@ -868,7 +884,7 @@ if __name__ == "__main__":
             sliding_blocks_3d(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], surf="--surf" in flags)
         else:
             sliding_blocks(sys.argv[3], typ=sys.argv[2], outdir=sys.argv[4], auglagr="--auglagr" in flags, surf="--surf" in flags,
-                           refine=refine[0] if refine else 1)
+                           refine=refine[0] if refine else 1, film_amplitude="--film-amplitude" in flags)
         sys.exit(0)
     if len(sys.argv) == 6 and sys.argv[1] == "--explicit-series":
         # the spec's explicit decks per type: make_decks.py --explicit-series TYPE SERIES PENALTY|KINEMATIC OUTDIR

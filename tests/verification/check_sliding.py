@@ -197,6 +197,42 @@ s3 = last_row(3)
 check("step 3 heat across the interface = flux in", abs(h["interface_heat"][s3]), h["heat_in"][s3], 1e-6, relative=True)
 check("step 3 film heat out = flux in", h["film_heat_out"][s3], h["heat_in"][s3], 1e-6, relative=True)
 
+if "_filmamp" in job:
+    # A time-dependent film coefficient (the spec's eia2tssc; make_decks.py --film-amplitude): h(t) = 10 a(t), a
+    # the total-time amplitude FILM_AMPLITUDE. The film faces are the bottom faces (y = 0; the rings' outer face
+    # r = 2.5) of the deck's elements FILMED (x in [2.5, 3.5], [2, 4] on the second-order meshes' coarser cells);
+    # their heat out h(t) int theta dA (sink 0) is exact for the faces'
+    # interpolation (nodal weights int N_a ds, times 2 pi r on the rings), so in every frame the history's film
+    # heat out is h(t) at that frame's total time times the frame's int theta dA (1e-9). In the steady steps
+    # the film takes out the flux in whatever h is, so the film faces' mean temperature is flux in / (h A):
+    # h = 10 at the end of step 3, 20 at the end of step 4 (1e-6, the steady solves' tolerance).
+    sys.path.insert(0, sys.path[0] + "/../../jobs/verification")
+    from make_decks import FILM_AMPLITUDE
+    assert not three_d
+    lines = open("%s/%s.inp" % (outdir, job)).read().split("*ELSET, ELSET=FILMED\n")[1].split("*")[0].split()
+    filmed = set(int(v) for v in ",".join(lines).replace(",,", ",").strip(",").split(","))
+    conn = dict(zip(r.h5["/mesh/element_ids"][...], r.elements()))
+    film_nodes = sorted(set(int(n) for e in filmed for n in conn[e] if abs(xyz[n, 1]) < 1e-9))
+    film_w = line_weights(xyz, line_faces(xyz, film_nodes, quadratic))
+    ring = 2 * np.pi * R_AXI if axi else 1.0  # the film faces lie at r = R_AXI on the rings; unit thickness otherwise
+    film_area = ring * sum(film_w.values())
+    hfilm = lambda t: 10.0 * np.interp(t, [p[0] for p in FILM_AMPLITUDE], [p[1] for p in FILM_AMPLITUDE])
+    times = h["time"]
+    worst, largest = 0.0, abs(h["film_heat_out"]).max()
+    for i, f in enumerate(r.frames):
+        t = float(r.h5["/frames/" + f].attrs["time"])
+        row = int(np.argmin(abs(times - t)))
+        nt = r.field("NT", i)[:, 0]
+        worst = max(worst, abs(h["film_heat_out"][row] - hfilm(t) * ring * sum(w * nt[n] for n, w in film_w.items())))
+    check("time-dependent film: film heat out = h(t) int theta dA in every frame (worst / largest film heat)", worst / largest, 0.0, 1e-9)
+    for step in (3, 4):
+        i = r.frame_of_step(step)
+        t, nt = float(r.frame(i).attrs["time"]), r.field("NT", i)[:, 0]
+        mean = ring * sum(w * nt[n] for n, w in film_w.items()) / film_area
+        row = last_row(step)
+        check("step %d film faces' mean temperature = flux in / (h A), h(%g) = %g, A = %.6g" % (step, t, hfilm(t), film_area),
+              mean, h["heat_in"][row] / (hfilm(t) * film_area), 1e-6, relative=True)
+
 
 def interface(frame):
     """Secondary nodes (small block, y = 1) with theta_s, theta_main interpolated at their current x,
