@@ -125,7 +125,7 @@ print("quasi-static: largest ALLKE %.4g, ALLIE at that row %.4g (ALLKE / ALLIE %
 # to 400 against 100; docs/explicit.md "What a quasi-static explicit solution reaches"), more is left and the
 # friction falls short of mu N: those rows' measured figures, bounded (KE left / largest, ALLFD's shortfall).
 CHATTER = {"friction_kinematic_cpe3t": (1e-6, 2.5e-3), "friction_kinematic_cpe6mt": (1e-5, 6e-3), "friction_kinematic_c3d6t": (1e-6, 1.5e-3),
-           "friction_kinematic_c3d10mt": (1e-5, 6e-3), "friction_kinematic_sc8rt": (1e-5, 2.5e-3), "friction_kinematic_cax6mt": (2e-5, None)}
+           "friction_kinematic_c3d10mt": (1e-5, 6e-3), "friction_kinematic_sc8rt": (1e-5, 2.5e-3)}
 chatter = CHATTER.get(job.replace("sliding_", "", 1).replace("_explicit_", "_", 1), None)
 s2 = step_rows(2)
 check("kinetic energy left when the slide has stopped / largest in the slide%s" % (" (chatter)" if chatter else ""),
@@ -293,7 +293,7 @@ if series == "friction":
     dis = h["friction_dissipation_total"][-1]
     # the heat of each increment's slip enters over that increment (forward Euler), its dissipation is booked
     # over the increment the slip was measured on: they part only where the increments change (frames)
-    check("heat absorbed / dissipation (eta = 0.5)", h["friction_heat_total"][-1] / dis, 0.5, 1e-6, relative=True)
+    check("heat absorbed / heat generated (eta = 0.5)", h["friction_heat_total"][-1] / dis, 0.5, 1e-6, relative=True)
     check("heat absorbed by the blocks (eta = 0.5 of 120)", h["friction_heat_total"][-1], 60.0, fd_tol, relative=True)
     # the planar blocks' volume is 8 (unit thickness), the 3D blocks' 9.5 (make_decks.py, sliding_blocks_3d)
     volume, vname = (9.5, "9.5") if three_d else (8.0, "8")
@@ -356,7 +356,7 @@ for step in (3, 4):
     print("step %d: film heat out extrapolated to steady state %.8g, slowest mode tau_1 %.4g s, noise %.3g (gain %.3g)" % (step, film_inf, tau1, noise, gain))
     # what the extrapolation leaves: the faster modes (tau_2 < 0.37 s) after the 3 s before the first sample,
     # exp(-8) of an imbalance of 1 - 3 %, below 1e-5; and the samples' noise times its gain
-    check("step %d film heat out at steady state (extrapolated) = flux in" % step, film_inf, h["heat_in"][i], 1e-5 + gain * noise / h["heat_in"][i], relative=True)
+    check("step %d film heat out = flux in at steady state (extrapolated)" % step, film_inf, h["heat_in"][i], 1e-5 + gain * noise / h["heat_in"][i], relative=True)
     m = step_rows(step)
     dev = abs(h["heat_in"][m] - h["film_heat_out"][m]) / h["heat_in"][m]
     k = int(np.argmax(dev))
@@ -367,10 +367,12 @@ for step in (3, 4):
     else:
         print("step %d: the film heat out no longer decays above its noise over the last 2 s" % step)
         bound = 0.0
+    # (a floor of 1e-8 of the flux in: where the period starts that close to steady state, as the rings'
+    # radiation series does (1.7e-7), what remains is no longer the slowest mode's)
     check("step %d end of the period: |film heat out - flux in| / flux in (largest %.3g at %.3g s, decayed; noise %.2g)" % (step, dev[k], h["step_time"][m[k]], noise / h["heat_in"][i]),
-          dev[-1], 0.0, bound + 3 * noise / h["heat_in"][i])
+          dev[-1], 0.0, bound + 3 * noise / h["heat_in"][i] + 1e-8)
     w = m[h["step_time"][m] >= T - 1.0 - 1e-9]
-    check("step %d last second: mean |interface heat| - flux in, against the film's mean imbalance" % step,
+    check("step %d heat across the interface = flux in, within the film heat's imbalance (means over the last second)" % step,
           abs(np.mean(abs(h["interface_heat"][w]) - h["heat_in"][w])), 0.0, np.mean(abs(h["heat_in"][w] - h["film_heat_out"][w])) + 1e-9 * h["heat_in"][i])
 
 

@@ -53,6 +53,10 @@ EXCEPTIONS = {
     "eip2tssc_cpeg4rht_post": "a POST OUTPUT analysis of eip2tssc_cpeg4rht: it reads restart data (the restart issue, 49)",
 }
 
+# The spec's decks whose counterpart carries a time-dependent film coefficient (the spec: "eia2tssc.inp illustrates the
+# procedure to specify a time-dependent variation of the film coefficient"; make_decks.py --film-amplitude)
+FILM_AMPLITUDE = {"eia2tssc"}
+
 SERIES = {"Interface conductance tests": "conductance", "Interface radiation tests": "radiation",
           "Frictional heat generation tests": "friction"}
 
@@ -135,6 +139,8 @@ def candidates(d):
         job = "sliding_%s_explicit_%s_%s" % (d["series"], d["contact"], t)
         return ["explicit_spec_" + job, "explicit_" + job]
     variant = {"surface to surface": "_surf", "augmented Lagrange": "_auglagr"}.get(d["contact"], "")
+    if d["name"] in FILM_AMPLITUDE:  # the spec's illustration of a time-dependent film coefficient
+        variant = "_filmamp"
     return ["sliding_%s%s_%s" % (d["series"], variant, t)]
 
 
@@ -258,6 +264,7 @@ OUTCOMES = [
     ("generated", r"dissipation"),
     ("absorbed", r"heat absorbed"),
     ("final temperature", r"final temperature"),
+    ("time-dependent film", r"(time-dependent film|film faces' mean temperature)"),
 ]
 
 
