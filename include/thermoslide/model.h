@@ -342,6 +342,19 @@ typedef struct {
   PetscReal df, dc, db, da, ds, dh, dd, wg;
 } TslIncrementControls;
 
+/* *CONTROLS, PARAMETERS=FIELD (FIELD=GLOBAL, DISPLACEMENT or TEMPERATURE): the dialect's Newton convergence test
+ * for a field (docs/keywords.md, *CONTROLS): the largest residual at most R_n q~ (R_P after I_P iterations) and
+ * the largest correction at most C_n times the largest change of the field over the increment; or the residual
+ * at most R_l q~ alone; a field without flux (q~ at most eps q_0) converges on its correction alone (C_eps).
+ * q~: q_u when given (> 0), else the mean over the step's converged increments and the current iterate of the
+ * instantaneous flux (TslProblemElementFlux). given: this step has such a *CONTROLS (or RESET, which clears it:
+ * on = FALSE); it holds for the later steps until the next. */
+typedef struct {
+  PetscBool given, on;
+  TslLoc    loc;
+  PetscReal rn, cn, q0, qu, rp, eps, ceps, rl;
+} TslFieldControls;
+
 typedef struct {
   char              name[TSL_NAME_LEN];
   TslLoc            loc;
@@ -360,6 +373,7 @@ typedef struct {
   PetscBool         statik;                    /* *STATIC: mechanical equilibrium with every temperature held at its value (no heat transfer) */
   PetscBool         direct;                    /* DIRECT: fixed increments */
   PetscBool         nlgeom;                    /* NLGEOM accepted (small-strain kinematics used; see docs) */
+  PetscBool         no_extrapolation;          /* EXTRAPOLATION=NO: each increment starts from the last converged state */
   PetscReal         dt0, period, dtmin, dtmax; /* data line; defaults dt0=period=1, dtmin=1e-5*period, dtmax=period */
   PetscReal         deltmx;                    /* DELTMX (0 = none) */
   PetscInt          max_inc;                   /* INC= (default 100) */
@@ -370,6 +384,7 @@ typedef struct {
   PetscInt          nout;
   TslOutputRequest *out;
   TslIncrementControls controls; /* *CONTROLS, PARAMETERS=TIME INCREMENTATION or RESET (given = FALSE: none in this step) */
+  TslFieldControls     field_controls[2]; /* *CONTROLS, PARAMETERS=FIELD for the displacement and the temperature field */
 } TslStep;
 
 typedef struct {

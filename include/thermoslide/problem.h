@@ -124,6 +124,12 @@ PetscErrorCode TslProblemMaxTemperatureChange(TslProblem prob, PetscReal *dtheta
 /* 2-norms of a vector in the problem's layout over its displacement rows and its temperature rows (residuals,
  * solutions, updates: the per-field convergence test). */
 PetscErrorCode TslProblemFieldNorms(TslProblem prob, Vec F, PetscReal *norm_u, PetscReal *norm_theta);
+/* ... in the norm of type (NORM_2 or NORM_INFINITY: the largest entry of each field) */
+PetscErrorCode TslProblemFieldNormsType(TslProblem prob, Vec F, NormType type, PetscReal *norm_u, PetscReal *norm_theta);
+/* The dialect's instantaneous flux of each field at the last residual evaluation (collective): the mean of |R_i|
+ * over the displacement (q[0]) and the temperature (q[1]) components of every element's force vector (internal
+ * force; conducted and stored heat), the scale of *CONTROLS, PARAMETERS=FIELD's residual test. */
+PetscErrorCode TslProblemElementFlux(TslProblem prob, PetscReal q[2]);
 /* Collective. The largest nodal translation of the solution X over the model's size (the diagonal of the bounding
  * box of the reference coordinates); reference nodes and rotations are left out. */
 PetscErrorCode TslProblemDisplacementReach(TslProblem prob, Vec X, PetscReal *reach);

@@ -131,10 +131,9 @@ typedef struct DeckInstance {
 #define KLOC(d)            TSL_LOC_ARGS((d)->m, (d)->kwloc)
 #define USER_ERR(...)      SETERRQ(PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
 #define USER_CHECK(c, ...) PetscCheck(c, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, __VA_ARGS__)
-/* Why a *CONTROLS other than TIME INCREMENTATION or RESET is read past (docs/keywords.md, *CONTROLS). */
+/* Why a *CONTROLS other than TIME INCREMENTATION, FIELD or RESET is read past (docs/keywords.md, *CONTROLS). */
 #define CONTROLS_NOTE                                                                                                                                \
-  "only PARAMETERS=TIME INCREMENTATION and RESET are read; the solver's own Newton tolerances and line search apply (-tsl_rtol, ...: "               \
-  "docs/running.md)"
+  "only PARAMETERS=TIME INCREMENTATION, FIELD and RESET are read; the solver's own line search applies (docs/running.md)"
 /* Why the pore fluid's data is read past (docs/elements.md, "Pore pressure types"). */
 #define PORE_FLUID_NOTE "pore fluid flow is not modelled (the pore pressure of CPE4PT, ... is not active in coupled temperature-displacement steps)"
 
@@ -2021,7 +2020,15 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
                           "warning: *STEP, NLGEOM: step %s runs with small-strain kinematics (finite strain is not available): the "
                           "results hold for small rotations and strains only; rotations or strains of more than a few percent will be wrong\n",
                           KLOC(d), s->name));
-  nl        = ParamUpper(d, "AMPLITUDE", buf, sizeof(buf));
+  /* EXTRAPOLATION=LINEAR (the dialect's default: each increment starts from the last one's change, scaled),
+   * NO; PARABOLIC is taken as LINEAR, with a warning */
+  nl = ParamUpper(d, "EXTRAPOLATION", buf, sizeof(buf));
+  USER_CHECK(!nl || !strcmp(nl, "LINEAR") || !strcmp(nl, "NO") || !strcmp(nl, "PARABOLIC"),
+             LOC_FMT "*STEP, EXTRAPOLATION=%s: expected LINEAR, PARABOLIC or NO", KLOC(d), nl);
+  s->no_extrapolation = (PetscBool)(nl && !strcmp(nl, "NO"));
+  if (nl && !strcmp(nl, "PARABOLIC"))
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *STEP, EXTRAPOLATION=PARABOLIC is taken as LINEAR (the start of each increment)\n", KLOC(d)));
+  nl = ParamUpper(d, "AMPLITUDE", buf, sizeof(buf));
   if (nl) {
     USER_CHECK(!strcmp(nl, "RAMP") || !strcmp(nl, "STEP"), LOC_FMT "*STEP, AMPLITUDE=%s: expected RAMP or STEP", KLOC(d), nl);
     s->amp_given   = PETSC_TRUE;
@@ -2072,13 +2079,52 @@ static PetscErrorCode StepIncrements(Deck *d, TslStep *s, const char *what)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *CONTROLS, PARAMETERS=FIELD[, FIELD=GLOBAL | DISPLACEMENT | TEMPERATURE]: one data line
+ *   R_n, C_n, q_0, q_u, R_P, eps, C_eps, R_l
+ * (blank fields: the dialect's defaults 0.005, 0.01, 0.01, none, 0.02, 1e-5, 1e-3, 1e-8), for both fields (GLOBAL,
+ * the default, and CalculiX's only form) or the one named (TslFieldControls). */
+static PetscErrorCode FieldControls(Deck *d)
+{
+  char            buf[32];
+  const char     *which  = ParamUpper(d, "FIELD", buf, sizeof(buf));
+  const char     *name[8] = {"R_n", "C_n", "q_0", "q_u", "R_P", "eps", "C_eps", "R_l"};
+  const PetscReal def[8] = {0.005, 0.01, 0.01, 0, 0.02, 1e-5, 1e-3, 1e-8};
+  PetscReal       v[8];
+  PetscBool       got;
+
+  PetscFunctionBeginUser;
+  USER_CHECK(!which || !strcmp(which, "GLOBAL") || !strcmp(which, "DISPLACEMENT") || !strcmp(which, "TEMPERATURE"),
+             LOC_FMT "*CONTROLS, PARAMETERS=FIELD: FIELD=%s is not a field of coupled temperature-displacement steps (GLOBAL, DISPLACEMENT or "
+                     "TEMPERATURE)",
+             KLOC(d), which);
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(got, LOC_FMT "*CONTROLS, PARAMETERS=FIELD needs a data line: R_n, C_n, q_0, q_u, R_P, eps, C_eps, R_l", KLOC(d));
+  USER_CHECK(d->nfield <= 8, LOC_FMT "*CONTROLS, PARAMETERS=FIELD data line: at most 8 values (R_n, C_n, q_0, q_u, R_P, eps, C_eps, R_l), got %" PetscInt_FMT,
+             DLOC(d), d->nfield);
+  for (PetscInt i = 0; i < 8; i++) {
+    PetscCall(FieldRealDefault(d, i, name[i], def[i], &v[i]));
+    if (i == 2 || i == 3) USER_CHECK(v[i] >= 0, LOC_FMT "*CONTROLS, PARAMETERS=FIELD: %s must not be negative (got %g)", DLOC(d), name[i], (double)v[i]);
+    else USER_CHECK(v[i] > 0, LOC_FMT "*CONTROLS, PARAMETERS=FIELD: %s must be positive (got %g)", DLOC(d), name[i], (double)v[i]);
+  }
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(!got, LOC_FMT "*CONTROLS, PARAMETERS=FIELD takes one data line", DLOC(d));
+  for (PetscInt k = 0; k < 2; k++) {
+    TslFieldControls *f = &d->m->steps[d->step].field_controls[k];
+    if (which && !strcmp(which, k ? "DISPLACEMENT" : "TEMPERATURE")) continue;
+    f->given = f->on = PETSC_TRUE, f->loc = d->kwloc;
+    f->rn = v[0], f->cn = v[1], f->q0 = v[2], f->qu = v[3], f->rp = v[4], f->eps = v[5], f->ceps = v[6], f->rl = v[7];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* *CONTROLS (CalculiX's form): PARAMETERS=TIME INCREMENTATION sets the increment controller from two data lines,
  *   I_0, I_R, I_P, I_C, I_L, I_G, I_S, I_A, I_J, I_T
  *   D_f, D_C, D_B, D_A, D_S, D_H, D_D, W_G
  * (blank fields: the dialect's defaults 4, 8, 9, 16, 10, 4, -, 5, -, - and 0.25, 0.5, 0.75, 0.85, -, -, 1.5, -; the
  * second line may be absent); RESET goes back to the defaults, here thermoslide's own controller. What the driver
- * applies (I_C, I_L, I_G, I_A, D_f, D_B, D_A, D_D) is in docs/keywords.md; the rest is read and checked. Other
- * PARAMETERS= (FIELD, LINE SEARCH, CONTACT, NETWORK, CFD) and Abaqus's forms are read past with a warning. */
+ * applies (I_C, I_L, I_G, I_A, I_P, D_f, D_B, D_A, D_D) is in docs/keywords.md; the rest is read and checked. FIELD:
+ * FieldControls. Other PARAMETERS= (LINE SEARCH, CONTACT, NETWORK, CFD) and Abaqus's forms are read past with a
+ * warning. */
 static PetscErrorCode KwControls(Deck *d, const DeckKeyword *kw)
 {
   TslIncrementControls *c = &d->m->steps[d->step].controls;
@@ -2101,6 +2147,15 @@ static PetscErrorCode KwControls(Deck *d, const DeckKeyword *kw)
     memset(c, 0, sizeof(*c));
     c->given = c->reset = PETSC_TRUE;
     c->loc              = d->kwloc;
+    for (PetscInt k = 0; k < 2; k++) {
+      TslFieldControls *f = &d->m->steps[d->step].field_controls[k];
+      memset(f, 0, sizeof(*f));
+      f->given = PETSC_TRUE, f->loc = d->kwloc;
+    }
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (par && !strcmp(par, "FIELD")) {
+    PetscCall(FieldControls(d));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   if (!par || strcmp(par, "TIME INCREMENTATION")) {
@@ -3076,7 +3131,7 @@ static const DeckKeyword Keywords[] = {
     {"GAP HEAT GENERATION", AT_MODEL, IN_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
     {"CONTACT PAIR", AT_MODEL, IN_NONE, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED|MECHANICAL CONSTRAINT", KwContactPair, 0, NULL},
     {"PARAMETER", AT_MODEL, IN_NONE, "", KwParameter, 0, NULL},
-    {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE", KwStep, 0, NULL},
+    {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE|EXTRAPOLATION", KwStep, 0, NULL},
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
     {"STATIC", AT_STEP, IN_NONE, "DIRECT|RIKS", KwStatic, 0, NULL},

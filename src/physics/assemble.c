@@ -319,6 +319,11 @@ static PetscErrorCode ElementRest(TslProblem p, PetscInt e, const TslElemData *d
 
   PetscFunctionBeginUser;
   PetscCall(AddCapacity(p, d, R, K, c->heat));
+  if (c->mode == ASM_RESIDUAL) /* the dialect's instantaneous flux: |R_i| over the element's components, per field */
+    for (PetscInt i = 0; i < d->nd; i++) {
+      const PetscInt f = d->ld[i] % p->ndof == p->ndof - 1;
+      p->flux_abs[f] += PetscAbsReal(R[i]), p->flux_n[f] += 1;
+    }
   PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
     const TslFaceRecord *r = &p->face[i];
@@ -400,6 +405,7 @@ static PetscErrorCode AssembleLoop(TslProblem p, AsmMode mode, const PetscScalar
   const PetscBool records = (mode == ASM_RESIDUAL || mode == ASM_RAW) && p->fast_implicit && p->fast_built;
 
   PetscFunctionBeginUser;
+  if (mode == ASM_RESIDUAL) p->flux_abs[0] = p->flux_abs[1] = p->flux_n[0] = p->flux_n[1] = 0;
   if (records) {
     PetscCall(AssembleRecords(p, xa, xoa, &ctx));
     for (PetscInt e = 0; e < p->m->nelem; e++) {

@@ -508,20 +508,42 @@ PetscErrorCode TslProblemDisplacementReach(TslProblem p, Vec X, PetscReal *reach
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslProblemFieldNorms(TslProblem p, Vec F, PetscReal *norm_u, PetscReal *norm_theta)
+PetscErrorCode TslProblemFieldNormsType(TslProblem p, Vec F, NormType type, PetscReal *norm_u, PetscReal *norm_theta)
 {
   const PetscScalar *f;
   PetscReal          s[2] = {0, 0}, g[2];
+  const PetscBool    inf  = (PetscBool)(type == NORM_INFINITY);
 
   PetscFunctionBeginUser;
+  PetscCheck(type == NORM_2 || inf, p->comm, PETSC_ERR_SUP, "field norms: NORM_2 or NORM_INFINITY");
   PetscCall(VecGetArrayRead(F, &f));
   for (PetscInt n = 0; n < p->nown; n++) {
-    for (PetscInt c = 0; c < p->ndof - 1; c++) s[0] += PetscSqr(PetscRealPart(f[n * p->ndof + c]));
-    s[1] += PetscSqr(PetscRealPart(f[n * p->ndof + p->ndof - 1]));
+    for (PetscInt c = 0; c < p->ndof; c++) {
+      const PetscReal v = PetscRealPart(f[n * p->ndof + c]);
+      const PetscInt  k = c == p->ndof - 1;
+      s[k]              = inf ? PetscMax(s[k], PetscAbsReal(v)) : s[k] + v * v;
+    }
   }
   PetscCall(VecRestoreArrayRead(F, &f));
-  PetscCall(MPIU_Allreduce(s, g, 2, MPIU_REAL, MPIU_SUM, p->comm));
-  *norm_u     = PetscSqrtReal(g[0]);
-  *norm_theta = PetscSqrtReal(g[1]);
+  PetscCall(MPIU_Allreduce(s, g, 2, MPIU_REAL, inf ? MPIU_MAX : MPIU_SUM, p->comm));
+  *norm_u     = inf ? g[0] : PetscSqrtReal(g[0]);
+  *norm_theta = inf ? g[1] : PetscSqrtReal(g[1]);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemFieldNorms(TslProblem p, Vec F, PetscReal *norm_u, PetscReal *norm_theta)
+{
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemFieldNormsType(p, F, NORM_2, norm_u, norm_theta));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemElementFlux(TslProblem p, PetscReal q[2])
+{
+  PetscReal s[4] = {p->flux_abs[0], p->flux_abs[1], p->flux_n[0], p->flux_n[1]}, g[4];
+
+  PetscFunctionBeginUser;
+  PetscCall(MPIU_Allreduce(s, g, 4, MPIU_REAL, MPIU_SUM, p->comm));
+  for (PetscInt k = 0; k < 2; k++) q[k] = g[2 + k] > 0 ? g[k] / g[2 + k] : 0;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -191,6 +191,10 @@ struct _p_TslProblem {
    * how many did (this rank), and the global id of the first of them */
   PetscInt chatter_run, chatter_count, chatter_node;
 
+  /* the last residual evaluation's element forces (TslProblemElementFlux): sums of |R_i| over the displacement and
+   * the temperature components of every element's vector on this rank, and their counts */
+  PetscReal flux_abs[2], flux_n[2];
+
   /* failures decided by all ranks (sys.h) */
   TslInject inject;
   char      fail_msg[TSL_FAIL_MSG_LEN]; /* the last convergence-type failure */

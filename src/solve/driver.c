@@ -92,6 +92,52 @@ static PetscErrorCode RoundoffScales(Driver *d, SNES snes, PetscReal *ru, PetscR
  *      that made it reached the field: the field's residual was at least 1e3 times what the linear tolerance
  *      left of the whole one, so the step is the field's own answer, not a field the solver never saw.
  * Divergence is per field too: a residual -snes_divergence_tolerance times its reference. */
+/* The dialect's test (*CONTROLS, PARAMETERS=FIELD; TslFieldControls) for each field that has one, in place of
+ * the per-field test below: ok[k] after a Newton step, ok0[k] at iteration 0 (no step taken yet). With r the
+ * field's largest residual entry, q~ its time-averaged flux, c its largest correction (the last Newton update)
+ * and du its largest change over the increment:
+ *   converged if r <= R_l q~ (at any iteration), or after a step if r <= R q~ and c <= C_n du, R = R_n up to
+ *   iteration I_P (*CONTROLS, PARAMETERS=TIME INCREMENTATION; 9 by default) and R_P after it;
+ *   without flux (q~ <= eps max(q_0, the mean flux of the steps before)): after a step if c <= C_eps du.
+ * A field whose residual is exactly zero (every dof prescribed, or none) is converged. */
+static PetscErrorCode DialectFieldTest(Driver *d, SNES snes, PetscInt it, PetscBool ok[2], PetscBool ok0[2])
+{
+  PetscReal r[2], q[2], c[2] = {0, 0}, du[2];
+  Vec       F, X, Xold, Y;
+  PetscInt  ip = d->ctrl_on ? d->ctrl.ip : 9;
+
+  PetscFunctionBeginUser;
+  if (!d->fctrl[0].on && !d->fctrl[1].on) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(SNESGetFunction(snes, &F, NULL, NULL));
+  PetscCall(SNESGetSolution(snes, &X));
+  PetscCall(TslProblemGetOldSolution(d->prob, &Xold));
+  PetscCall(TslProblemFieldNormsType(d->prob, F, NORM_INFINITY, &r[0], &r[1]));
+  PetscCall(TslProblemElementFlux(d->prob, q));
+  if (!d->work) PetscCall(VecDuplicate(X, &d->work));
+  PetscCall(VecWAXPY(d->work, -1.0, Xold, X));
+  PetscCall(TslProblemFieldNormsType(d->prob, d->work, NORM_INFINITY, &du[0], &du[1]));
+  if (it > 0) {
+    PetscCall(SNESGetSolutionUpdate(snes, &Y));
+    PetscCall(TslProblemFieldNormsType(d->prob, Y, NORM_INFINITY, &c[0], &c[1]));
+  }
+  for (PetscInt k = 0; k < 2; k++) {
+    const TslFieldControls *fc = &d->fctrl[k];
+    const PetscReal         qt = fc->qu > 0 ? fc->qu : (d->q_sum[k] + q[k]) / (d->q_n + 1);
+    PetscBool               yes;
+
+    if (!fc->on) continue;
+    d->q_last[k] = q[k];
+    if (fc->qu <= 0 && qt <= fc->eps * PetscMax(fc->q0, d->q_before[k])) yes = (PetscBool)(it > 0 && c[k] <= fc->ceps * du[k]);
+    else yes = (PetscBool)(r[k] <= fc->rl * qt || (it > 0 && r[k] <= (it > ip ? fc->rp : fc->rn) * qt && c[k] <= fc->cn * du[k]));
+    if (r[k] == 0) yes = PETSC_TRUE;
+    if (it == 0) ok[k] = ok0[k] = yes;
+    else ok[k] = yes;
+    PetscCall(PetscInfo(snes, "it %" PetscInt_FMT " field %" PetscInt_FMT " (*CONTROLS, FIELD): largest residual %g, flux %g (mean %g), correction %g of %g: %s\n",
+                        it, k, (double)r[k], (double)q[k], (double)qt, (double)c[k], (double)du[k], yes ? "converged" : "not yet"));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, PetscReal snorm, PetscReal fnorm, SNESConvergedReason *reason,
                                       void *ctx)
 {
@@ -171,7 +217,13 @@ static PetscErrorCode ConvergenceTest(SNES snes, PetscInt it, PetscReal xnorm, P
     PetscCall(PetscInfo(snes, "it %" PetscInt_FMT ": round-off |D x| %g %g, steps %g %g of %g %g, reached by the linear solve %d %d\n", it, (double)ru,
                         (double)rt, (double)yu, (double)yt, (double)xu, (double)xt, (int)reached_u, (int)reached_t));
   }
-  if (ok_u && ok_t && (it > 0 || (!force && nu <= d->atol_rel * d->scale_u && nt <= d->atol_rel * d->scale_theta))) {
+  {
+    PetscBool ok[2] = {ok_u, ok_t}, ok0[2] = {nu <= d->atol_rel * d->scale_u, nt <= d->atol_rel * d->scale_theta};
+    PetscCall(DialectFieldTest(d, snes, it, ok, ok0));
+    ok_u = ok[0], ok_t = ok[1];
+    if (it == 0 && (force || !ok0[0] || !ok0[1])) ok_u = PETSC_FALSE;
+  }
+  if (ok_u && ok_t) {
     *reason     = SNES_CONVERGED_FNORM_RELATIVE;
     d->accepted = PETSC_TRUE;
   }
@@ -269,6 +321,7 @@ static PetscErrorCode SetUpSolver(Driver *d)
   d->jacobi_scale       = 1.6;
   d->amg_cycle          = PETSC_TRUE;
   d->reuse_pc           = PETSC_TRUE;
+  d->extrapolate        = PETSC_TRUE;
   d->implicit_records   = PETSC_TRUE;
   PetscOptionsBegin(d->comm, NULL, "thermoslide increment control", NULL);
   PetscCall(TslOptionsReal(PetscOptionsObject, "-tsl_linear_forcing",
@@ -296,6 +349,10 @@ static PetscErrorCode SetUpSolver(Driver *d)
                            "a Jacobian equal bit for bit to the last one assembled keeps the preconditioner built on it (a factorisation, or "
                            "the AMG hierarchies) instead of building the same one again",
                            &d->reuse_pc));
+  PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_extrapolate",
+                           "each increment's Newton solve starts from the last increment's change extrapolated linearly (the dialect's "
+                           "EXTRAPOLATION=LINEAR)",
+                           &d->extrapolate));
   PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_implicit_records",
                            "implicit residuals from the element force records (geometry and conduction computed once; docs/running.md)",
                            &d->implicit_records));
@@ -888,6 +945,8 @@ static PetscErrorCode Accept(Driver *d, PetscInt s, PetscInt inc, PetscReal t, P
   for (PetscInt c = HIST_ENERGY; c < NHISTORY; c++) row[c] = 0; /* the energies of explicit steps */
   PetscCall(TslHistoryAppend(d->hist, row));
   d->done_step = s + 1, d->done_inc = inc, d->done_time = total, d->done_step_time = t, d->done_dt = h;
+  for (PetscInt k = 0; k < 2; k++) d->q_sum[k] += d->q_last[k];
+  d->q_n++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -937,6 +996,23 @@ static PetscErrorCode TakeControls(Driver *d, const TslModel *m, const TslStep *
 
   PetscFunctionBeginUser;
   if (!d->snes_max_it) PetscCall(SNESGetTolerances(d->snes, NULL, NULL, NULL, &d->snes_max_it, NULL));
+  /* the field controls, and the time-averaged flux that starts anew with the step */
+  for (PetscInt k = 0; k < 2; k++) {
+    if (d->q_n) d->q_before[k] = d->q_sum[k] / d->q_n;
+    d->q_sum[k] = d->q_last[k] = 0;
+    if (step->field_controls[k].given) d->fctrl[k] = step->field_controls[k];
+  }
+  d->q_n = 0;
+  for (PetscInt k = 0; k < 2; k++) {
+    const TslFieldControls *f = &d->fctrl[k];
+    if (!step->field_controls[k].given || !f->on || (k == 1 && step->statik)) continue; /* *STATIC: temperatures held */
+    PetscCall(PetscPrintf(d->comm,
+                          "  convergence: *CONTROLS, PARAMETERS=FIELD (%s), %s field: largest residual at most %g (%g after %" PetscInt_FMT
+                          " iterations) of %s and largest correction at most %g of its change over the increment, or residual at most %g of it\n",
+                          TslLocString(m, f->loc, where, sizeof(where)), k ? "temperature" : "displacement", (double)f->rn, (double)f->rp,
+                          d->ctrl_on ? d->ctrl.ip : (PetscInt)9, f->qu > 0 ? "the given flux" : "the time-averaged flux", (double)f->cn, (double)f->rl));
+    if (f->qu > 0) PetscCall(PetscPrintf(d->comm, "    (the given flux q_u = %g)\n", (double)f->qu));
+  }
   if (!step->controls.given) PetscFunctionReturn(PETSC_SUCCESS);
   d->ctrl    = step->controls;
   d->ctrl_on = (PetscBool)!step->controls.reset;
@@ -998,6 +1074,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslProblemGetOldSolution(d->prob, &Xold));
 
   PetscCall(TakeControls(d, m, step));
+  d->h_prev = 0; /* no extrapolation into a step's first increment */
 
   dt  = PetscMin(step->dt0, step->period);
   eps = 1e-12 * step->period;
@@ -1020,6 +1097,10 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscCall(VecCopy(X, Xold));
     d->trial = PETSC_TRUE;
     PetscCall(SetIncrement(d, step, t + h, h, *total_time + h));
+    /* the start of the Newton solve: the last increment's change scaled to this one (the dialect's EXTRAPOLATION=LINEAR),
+     * X + (h / h_prev)(X - Xprev), then the prescribed values; not in a step's first increment, nor after an
+     * increment cut short at an amplitude's corner or an output time (the rate may change there) */
+    if (d->extrapolate && !step->no_extrapolation && d->h_prev > 0) PetscCall(VecAXPBY(X, -h / d->h_prev, 1.0 + h / d->h_prev, d->Xprev));
     PetscCall(TslProblemApplyPrescribed(d->prob, X));
     PetscCall(SolveIncrement(d, X, &reason, &its, &lits));
     PetscCheck(!d->stop, d->comm, PETSC_ERR_SIG, "step %" PetscInt_FMT ": %s received at step time %g, in increment %" PetscInt_FMT "; %s", s + 1,
@@ -1078,6 +1159,11 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     t = last ? step->period : t + h;
     *total_time += h;
     inc++;
+    if (d->extrapolate) {
+      if (!d->Xprev) PetscCall(VecDuplicate(X, &d->Xprev));
+      PetscCall(VecCopy(Xold, d->Xprev));
+      d->h_prev = h < dt * (1 - 1e-12) ? 0 : h;
+    }
     d->trial = PETSC_FALSE;
     PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
     PetscCall(Accept(d, s, inc, t, h, *total_time, its, lits));
@@ -1214,6 +1300,8 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
   PetscCall(VecDestroy(&d.mass));
   PetscCall(VecDestroy(&d.F));
   PetscCall(VecDestroy(&d.diag));
+  PetscCall(VecDestroy(&d.work));
+  PetscCall(VecDestroy(&d.Xprev));
   for (PetscInt i = 0; i < d.ndefault; i++) PetscCall(PetscOptionsClearValue(NULL, d.defaults[i]));
   PetscFunctionReturn(ierr);
 }

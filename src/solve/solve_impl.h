@@ -86,6 +86,16 @@ typedef struct {
   TslIncrementControls ctrl;
   PetscBool            ctrl_on;
   PetscInt             snes_max_it;
+  /* the deck's *CONTROLS, PARAMETERS=FIELD in force per field (displacement, temperature; DialectFieldTest), the
+   * instantaneous flux of the last residual evaluation, its sum over the step's converged increments and their
+   * count, and the mean of the steps before */
+  TslFieldControls fctrl[2];
+  PetscReal        q_last[2], q_sum[2], q_before[2];
+  PetscInt         q_n;
+  Vec              work; /* X - Xold: each field's change over the increment */
+  PetscBool        extrapolate; /* -tsl_extrapolate */
+  Vec              Xprev;       /* the converged state before Xold */
+  PetscReal        h_prev;      /* the last accepted increment of the step (0: none yet) */
 } Driver;
 
 #define HIST_ENERGY 17 /* first energy column */

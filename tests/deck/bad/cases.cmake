@@ -183,3 +183,7 @@ tsl_deck_bad(controls_not_integer controls_not_integer.inp "error: controls_not_
 tsl_deck_bad(controls_too_many controls_too_many.inp "error: controls_too_many.inp:20: *CONTROLS, PARAMETERS=TIME INCREMENTATION first data line: at most 10 integers")
 tsl_deck_bad(controls_factor controls_factor.inp "error: controls_factor.inp:21: *CONTROLS: D_f must lie in (0, 1) (got 1.5)")
 tsl_deck_bad(controls_reset_parameters controls_reset_parameters.inp "error: controls_reset_parameters.inp:19: *CONTROLS: RESET and PARAMETERS= exclude each other")
+tsl_deck_bad(controls_field_negative controls_field_negative.inp "error: controls_field_negative.inp:20: *CONTROLS, PARAMETERS=FIELD: C_n must be positive (got -0.01)")
+tsl_deck_bad(controls_field_unknown controls_field_unknown.inp "error: controls_field_unknown.inp:19: *CONTROLS, PARAMETERS=FIELD: FIELD=ROTATION is not a field of coupled temperature-displacement steps")
+tsl_deck_bad(controls_field_too_many controls_field_too_many.inp "error: controls_field_too_many.inp:20: *CONTROLS, PARAMETERS=FIELD data line: at most 8 values")
+tsl_deck_bad(step_extrapolation step_extrapolation.inp "error: step_extrapolation.inp:18: *STEP, EXTRAPOLATION=QUADRATIC: expected LINEAR, PARABOLIC or NO")
