@@ -406,8 +406,14 @@ static PetscErrorCode SetUpSolver(Driver *d)
       if (size > 1) d->fell_back = PETSC_TRUE;
     }
   }
-  /* whether a -pc_type (the user's, or the direct solve above) replaces thermoslide's split */
-  PetscCall(PetscOptionsHasName(NULL, NULL, "-pc_type", &pc_set));
+  /* whether a -pc_type (the user's, or the direct solve above) replaces thermoslide's split; -pc_type tslsplit
+   * names it (TslSplitRegister makes the name known to PETSc's options) */
+  PetscCall(TslSplitRegister());
+  {
+    char type[64] = "";
+    PetscCall(PetscOptionsGetString(NULL, NULL, "-pc_type", type, sizeof(type), &pc_set));
+    if (pc_set && !strcmp(type, PCTSLSPLIT)) pc_set = PETSC_FALSE;
+  }
   {
     /* the default split's type, checked before any solver object exists (a type it lacks stops the job here) */
     PetscBool additive;
@@ -505,9 +511,7 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(SNESSetDivergenceTolerance(d->snes, -1));
   {
     /* -pc_type fieldsplit: PETSc's own field split over the same two fields (its Schur and other types) */
-    PetscBool fs, ours;
-    PetscCall(TslSplitIs(pc, &ours));
-    if (ours) PetscCall(TslSplitSetFromOptions(pc));
+    PetscBool fs;
     PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
     if (fs) {
       KSP     *sub;

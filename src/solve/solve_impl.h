@@ -124,10 +124,13 @@ PetscErrorCode TslExplicitSetFromOptions(Driver *d);
 PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time);
 
 /* thermoslide's default preconditioner (split.c): the temperature-displacement block Gauss-Seidel with the
- * displacement block held once */
+ * displacement block held once, a PC type of its own (PCTSLSPLIT, registered by TslSplitRegister: -pc_type
+ * tslsplit selects it, -ksp_view names it, -pc_fieldsplit_type multiplicative|additive is its option) */
+#define PCTSLSPLIT "tslsplit"
+PetscErrorCode TslSplitRegister(void);
+/* pc becomes a PCTSLSPLIT over the temperature and displacement index sets (referenced) */
 PetscErrorCode TslSplitSetUp(PC pc, IS is_theta, IS is_u);
 PetscErrorCode TslSplitOptionType(const char *prefix, PetscBool *additive);
-PetscErrorCode TslSplitSetFromOptions(PC pc);
 PetscErrorCode TslSplitSetAmg(PC pc, PetscReal jacobi_scale, PetscBool cycle);
 /* BoomerAMG's plain V-cycle applied by thermoslide (amg.c), set after pc's set-up; *used: whether it applies */
 PetscErrorCode TslAmgCycleSet(PC pc, PetscBool on, PetscBool *used);

@@ -451,7 +451,7 @@ PetscErrorCode TslSplitReset(PC pc)
   Split *s;
 
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
+  s = (Split *)pc->data;
   if (!s) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = 0; i < 2; i++) {
     PetscCall(KSPDestroy(&s->ksp[i]));
@@ -477,10 +477,10 @@ static PetscErrorCode Destroy(PC pc)
 
   PetscFunctionBeginUser;
   PetscCall(TslSplitReset(pc));
-  PetscCall(PCShellGetContext(pc, &s));
+  s = (Split *)pc->data;
   PetscCall(ISDestroy(&s->is[0]));
   PetscCall(ISDestroy(&s->is[1]));
-  PetscCall(PetscFree(s));
+  PetscCall(PetscFree(pc->data));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -584,7 +584,7 @@ static PetscErrorCode SetUp(PC pc)
   PetscBool        hypre, tri = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
+  s = (Split *)pc->data;
   PetscCall(PCGetOperators(pc, NULL, &P));
   PetscCall(MatGetNonzeroState(P, &state));
   if (s->from != P || s->state != state) PetscCall(TslSplitReset(pc));
@@ -724,7 +724,7 @@ static PetscErrorCode Apply(PC pc, Vec b, Vec y)
   Split *s;
 
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
+  s = (Split *)pc->data;
   if (s->tri) {
     /* each block's residual below a part of the outer tolerance (relative to this application's input, the
      * outer method's normalised Krylov vector), so that the outer residual is below it after one iteration:
@@ -760,7 +760,7 @@ static PetscErrorCode View(PC pc, PetscViewer v)
   PetscBool ascii;
 
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
+  s = (Split *)pc->data;
   PetscCall(PetscObjectTypeCompare((PetscObject)v, PETSCVIEWERASCII, &ascii));
   if (!ascii) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscViewerASCIIPrintf(v, "thermoslide field split (%s): temperature block, then displacement block%s\n",
@@ -804,16 +804,45 @@ PetscErrorCode TslSplitOptionType(const char *pre, PetscBool *additive)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Reads the split's type (TslSplitOptionType) into pc. */
-PetscErrorCode TslSplitSetFromOptions(PC pc)
+/* The type's options (PCSetFromOptions): -pc_fieldsplit_type under the PC's prefix (TslSplitOptionType). */
+static PetscErrorCode SetFromOptions(PC pc, PetscOptionItems *items)
 {
-  Split      *s;
+  Split      *s = (Split *)pc->data;
   const char *pre;
 
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
+  (void)items;
   PetscCall(PCGetOptionsPrefix(pc, &pre));
   PetscCall(TslSplitOptionType(pre, &s->additive));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The type's constructor (PCSetType): an empty split, its fields given by TslSplitSetUp. */
+static PetscErrorCode PCCreate_TslSplit(PC pc)
+{
+  Split *s;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscNew(&s));
+  s->amg_cycle            = PETSC_TRUE;
+  pc->data                = s;
+  pc->ops->setup          = SetUp;
+  pc->ops->apply          = Apply;
+  pc->ops->view           = View;
+  pc->ops->destroy        = Destroy;
+  pc->ops->reset          = TslSplitReset;
+  pc->ops->setfromoptions = SetFromOptions;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslSplitRegister(void)
+{
+  static PetscBool done = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  if (done) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PCRegister(PCTSLSPLIT, PCCreate_TslSplit));
+  done = PETSC_TRUE;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -823,19 +852,15 @@ PetscErrorCode TslSplitSetUp(PC pc, IS is_theta, IS is_u)
   Split *s;
 
   PetscFunctionBeginUser;
-  PetscCall(PetscNew(&s));
+  PetscCall(TslSplitRegister());
+  PetscCall(PCSetType(pc, PCTSLSPLIT));
+  s = (Split *)pc->data;
   PetscCall(PetscObjectReference((PetscObject)is_theta));
   PetscCall(PetscObjectReference((PetscObject)is_u));
+  PetscCall(ISDestroy(&s->is[0]));
+  PetscCall(ISDestroy(&s->is[1]));
   s->is[0] = is_theta;
   s->is[1] = is_u;
-  s->amg_cycle = PETSC_TRUE;
-  PetscCall(PCSetType(pc, PCSHELL));
-  PetscCall(PCShellSetContext(pc, s));
-  PetscCall(PCShellSetName(pc, "thermoslide field split"));
-  PetscCall(PCShellSetSetUp(pc, SetUp));
-  PetscCall(PCShellSetApply(pc, Apply));
-  PetscCall(PCShellSetView(pc, View));
-  PetscCall(PCShellSetDestroy(pc, Destroy));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -846,7 +871,7 @@ PetscErrorCode TslSplitSetTriangular(PC pc, KSP outer, PetscBool allowed)
   Split *s;
 
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
+  s = (Split *)pc->data;
   s->outer       = outer;
   s->tri_allowed = allowed;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -859,7 +884,7 @@ PetscErrorCode TslSplitTakeExtraCycles(PC pc, PetscInt *extra)
   Split *s;
 
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
+  s = (Split *)pc->data;
   *extra   = s->extra;
   s->extra = 0;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -874,7 +899,7 @@ PetscErrorCode TslSplitSetAmg(PC pc, PetscReal scale, PetscBool cycle)
   Split *s;
 
   PetscFunctionBeginUser;
-  PetscCall(PCShellGetContext(pc, &s));
+  s = (Split *)pc->data;
   s->jacobi_scale = scale;
   s->amg_cycle    = cycle;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -883,14 +908,7 @@ PetscErrorCode TslSplitSetAmg(PC pc, PetscReal scale, PetscBool cycle)
 /* Whether pc is thermoslide's split. */
 PetscErrorCode TslSplitIs(PC pc, PetscBool *is)
 {
-  const char *name = NULL;
-  PetscBool   shell;
-
   PetscFunctionBeginUser;
-  *is = PETSC_FALSE;
-  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCSHELL, &shell));
-  if (!shell) PetscFunctionReturn(PETSC_SUCCESS);
-  PetscCall(PCShellGetName(pc, &name));
-  *is = (PetscBool)(name && !strcmp(name, "thermoslide field split"));
+  PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCTSLSPLIT, is));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

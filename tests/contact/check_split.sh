@@ -9,7 +9,7 @@
 # smoothing. Then the default ("blocks": the first solve, before the contact couples the fields, is block
 # triangular and its blocks are solved by CG; weighted-Jacobi smoothing with per-level weights, shown by
 # -ksp_view) and -pc_fieldsplit_type additive (no coupling update) reach the same Newton iterations and
-# interface heat to 1e-8 relative.
+# interface heat to 1e-8 relative; -pc_type tslsplit, the split's registered type, is the default bit for bit.
 # usage: check_split.sh THERMOSLIDE MPIEXEC OUTDIR BENCHDIR TOOLSDIR
 set -u
 exe=$1 mpiexec=$2 out=$3 bench=$4 tools=$5
@@ -18,17 +18,20 @@ rm -rf "$out" && mkdir -p "$out" || exit 1
 its() { grep -E "^  step 1 increment 1:" "$1" | tail -1 | sed -n 's/.*newton \([0-9]*\).*linear \([0-9]*\).*/\1 \2/p'; }
 heat() { /usr/bin/python3 -c 'import csv, sys; print(list(csv.DictReader(open(sys.argv[1])))[-1]["interface_heat"])' "$1"; }
 for np in 1 2; do
-  for run in ours petsc additive blocks; do
+  for run in ours petsc additive blocks named; do
     opt="-tsl_block_solves 0 -tsl_amg_jacobi_scale 0"
     [ $run = petsc ] && opt="-pc_type fieldsplit"
     [ $run = additive ] && opt="-pc_fieldsplit_type additive -tsl_block_solves 0 -tsl_amg_jacobi_scale 0"
     [ $run = blocks ] && opt=""
+    [ $run = named ] && opt="-pc_type tslsplit"
     # shellcheck disable=SC2086
     $mpiexec -n $np "$exe" "$out/block.inp" -o "$out/${run}_$np" -tsl_partition axis_x -ksp_view $opt > "$out/${run}_$np.log" 2>&1 ||
       { cat "$out/${run}_$np.log"; exit 1; }
     echo "$np rank(s), $run: Newton, linear iterations $(its "$out/${run}_$np.log"), interface heat $(heat "$out/${run}_$np/block.csv")"
   done
   grep -q "thermoslide field split (multiplicative)" "$out/ours_$np.log" || { echo "FAIL: the default is not thermoslide's split"; exit 1; }
+  grep -q "type: tslsplit" "$out/ours_$np.log" || { echo "FAIL: -ksp_view does not name the split's PC type"; exit 1; }
+  /usr/bin/python3 "$tools/compare_h5.py" "$out/named_$np/block.h5" "$out/blocks_$np/block.h5" 0 || { echo "FAIL: -pc_type tslsplit is not the default"; exit 1; }
   grep -q "type: hypre" "$out/ours_$np.log" || { echo "FAIL: no hypre displacement block in -ksp_view"; exit 1; }
   grep -q "type: fieldsplit" "$out/petsc_$np.log" || { echo "FAIL: -pc_type fieldsplit did not give PETSc's split"; exit 1; }
   grep -q "thermoslide field split (additive)" "$out/additive_$np.log" || { echo "FAIL: -pc_fieldsplit_type additive not taken"; exit 1; }
