@@ -5,32 +5,6 @@
 #include <malloc.h>
 #endif
 
-const char *const TslHistoryColumns[NHISTORY] = {"step",
-                                             "increment",
-                                             "time",
-                                             "step_time",
-                                             "dt",
-                                             "newton_its",
-                                             "heat_in",
-                                             "film_heat_out",
-                                             "reaction_heat",
-                                             "stored_heat_rate",
-                                             "interface_heat",
-                                             "friction_dissipation_rate",
-                                             "friction_dissipation_total",
-                                             "friction_heat_total",
-                                             "balance_residual",
-                                             "strain_energy",
-                                             "hourglass_energy",
-                                             "ALLKE",
-                                             "ALLIE",
-                                             "ALLWK",
-                                             "ALLFD",
-                                             "ALLCW",
-                                             "ALLMW",
-                                             "ALLVD",
-                                             "ETOTAL"};
-
 /* Default solver choices, entered only where the user gave none, and remembered: a default that the
  * user's own choice makes irrelevant (fieldsplit options under -pc_type lu) is removed again at the end,
  * so that the unused-option warnings speak of the user's options only. */
@@ -527,84 +501,6 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode SetUpOutput(Driver *d, const char *dir, const char *jobname)
-{
-  const TslModel *m;
-  PetscInt       *xtype, *conn, *ptr;
-
-  PetscFunctionBeginUser;
-  PetscCall(TslProblemGetModel(d->prob, &m));
-  PetscCall(TslOutputCreate(d->comm, dir, jobname, &d->out));
-  PetscCall(TslOutputSetSyncInterval(d->out, d->sync_interval));
-  PetscCall(PetscMalloc3(m->nelem, &xtype, m->elem_ptr[m->nelem], &conn, m->nelem + 1, &ptr));
-  /* cells are the geometry families' nodes (an element's extra reference node is not part of its cell) */
-  ptr[0] = 0;
-  for (PetscInt e = 0; e < m->nelem; e++) {
-    const TslGeometry *g = TslElementTypeGet(m->elem_type[e])->geom;
-    xtype[e]             = g->xdmf_type;
-    ptr[e + 1]           = ptr[e] + g->nnode;
-    for (PetscInt a = 0; a < g->nnode; a++) conn[ptr[e] + a] = m->node_nat[TslModelNodeIndex(m, m->elem_conn[m->elem_ptr[e] + a])];
-  }
-  PetscCall(TslOutputSetMesh(d->out, m->nnode_global, m->nnode_owned, m->node_nat, m->node_id, m->node_xyz, m->nelem_global, m->nelem, m->elem_nat,
-                             m->elem_id, xtype, ptr, conn));
-  PetscCall(PetscFree3(xtype, conn, ptr));
-  PetscCall(TslHistoryCreate(d->comm, dir, jobname, NHISTORY, TslHistoryColumns, &d->hist));
-  for (PetscInt i = 0; i < TslFieldCount(); i++) {
-    PetscInt deflt;
-    (void)TslFieldName(i, NULL, &deflt);
-    d->field_on[i] = (PetscBool)(deflt == 1 || (deflt == 2 && m->npair > 0));
-  }
-  d->frequency = 1;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* Field output requests of a step: they replace the previous step's when present. */
-PetscErrorCode TslDriverSetOutputRequests(Driver *d, const TslStep *step)
-{
-  PetscBool any = PETSC_FALSE;
-
-  PetscFunctionBeginUser;
-  for (PetscInt r = 0; r < step->nout; r++)
-    if (!step->out[r].print) any = PETSC_TRUE;
-  if (!any) PetscFunctionReturn(PETSC_SUCCESS);
-  for (PetscInt i = 0; i < TslFieldCount(); i++) d->field_on[i] = PETSC_FALSE;
-  for (PetscInt r = 0; r < step->nout; r++) {
-    const TslOutputRequest *req = &step->out[r];
-    if (req->print) continue;
-    d->frequency = PetscMax(1, req->frequency);
-    for (PetscInt v = 0; v < req->nvar; v++) {
-      PetscInt i = TslFieldFind(req->var[v]);
-      if (i >= 0)
-        d->field_on[i] = PETSC_TRUE;
-      else
-        PetscCall(PetscPrintf(d->comm, "warning: output variable %s is not available; ignored\n", req->var[v]));
-    }
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-void TslFrameTimesSetUp(TslFrameTimes *ft, const TslStep *step, PetscInt default_number)
-{
-  PetscInt n = step->out_number_interval > 0 ? step->out_number_interval : default_number;
-
-  ft->period = step->period;
-  ft->eps    = 1e-12 * step->period;
-  ft->dt     = step->out_time_interval > 0 ? step->out_time_interval : n > 0 ? step->period / n : 0;
-  ft->next   = ft->dt > 0 ? ft->dt : step->period;
-}
-
-PetscReal TslFrameTimesBound(const TslFrameTimes *ft)
-{
-  return PetscMin(ft->next, ft->period);
-}
-
-PetscBool TslFrameTimesReached(TslFrameTimes *ft, PetscReal t)
-{
-  if (!(ft->dt > 0) || t < ft->next - ft->eps) return PETSC_FALSE;
-  while (ft->next <= t + ft->eps) ft->next += ft->dt;
-  return PETSC_TRUE;
-}
-
 /* The increment's time and its time discretisation: the kernels return heat content and capacity, and
  * the implicit procedures are backward Euler in the capacity term (rate = (Q - Q_old) / dt), or steady
  * state (no capacity term at all). */
@@ -613,114 +509,6 @@ static PetscErrorCode SetIncrement(Driver *d, const TslStep *step, PetscReal ste
   PetscFunctionBeginUser;
   PetscCall(TslProblemSetTime(d->prob, step_time, h, total_time));
   PetscCall(TslProblemSetCapacityRate(d->prob, step->steady || !(h > 0) ? 0.0 : 1.0 / h));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-PetscErrorCode TslDriverWriteFrame(Driver *d, PetscInt step, PetscInt inc, PetscReal time)
-{
-  PetscFunctionBeginUser;
-  d->in_output = PETSC_TRUE;
-  PetscCall(TslOutputBeginFrame(d->out, step, inc, time));
-  for (PetscInt i = 0; i < TslFieldCount(); i++) {
-    PetscInt     nc;
-    PetscReal   *v;
-    TslFieldKind kind;
-    const char  *name = TslFieldName(i, &kind, NULL);
-    if (!d->field_on[i]) continue;
-    PetscCall(TslProblemField(d->prob, i, &nc, &v));
-    if (kind == TSL_FIELD_NODE)
-      PetscCall(TslOutputNodeField(d->out, name, nc, v));
-    else
-      PetscCall(TslOutputElementField(d->out, name, nc, v));
-    PetscCall(PetscFree(v));
-  }
-  PetscCall(TslOutputEndFrame(d->out));
-  d->in_output  = PETSC_FALSE;
-  d->frame_step = step;
-  d->frame_inc  = inc;
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* *NODE PRINT / *EL PRINT tables at the end of a step: one line per node (element) of the set, printed
- * by the rank that owns it; with TOTALS= their sum. */
-#define TSL_PRINT_MAX_COMPONENTS 16
-typedef struct {
-  const TslModel         *m;
-  const TslOutputRequest *req;
-  const TslSet           *set;
-  const char             *var;
-  PetscInt                nc;
-  const PetscReal        *vals;
-  PetscReal               sum[TSL_PRINT_MAX_COMPONENTS]; /* TOTALS=: this rank's part of the sum */
-} PrintCtx;
-
-/* This rank's lines of one variable of a printed table (none with TOTALS=ONLY): its owned nodes / its
- * elements of the set; their sum into c->sum. */
-static PetscErrorCode PrintRows(TslPrintSink sink, void *ctx)
-{
-  PrintCtx *c = (PrintCtx *)ctx;
-
-  PetscFunctionBeginUser;
-  for (PetscInt k = 0; k < TSL_PRINT_MAX_COMPONENTS; k++) c->sum[k] = 0;
-  for (PetscInt i = 0; c->set && i < c->set->n; i++) {
-    PetscInt n;
-    if (c->req->node) {
-      n = TslModelNodeIndex(c->m, c->set->ids[i]);
-      if (n < 0 || n >= c->m->nnode_owned) continue;
-    } else {
-      n = TslModelElementIndex(c->m, c->set->ids[i]);
-      if (n < 0) continue;
-    }
-    for (PetscInt k = 0; k < PetscMin(c->nc, TSL_PRINT_MAX_COMPONENTS); k++) c->sum[k] += c->vals[n * c->nc + k];
-    if (!sink) continue;
-    PetscCall(TslPrintLine(sink, "  %8" PetscInt_FMT " %-4s", c->set->ids[i], c->var));
-    for (PetscInt k = 0; k < c->nc; k++) PetscCall(TslPrintLine(sink, " % .6e", (double)c->vals[n * c->nc + k]));
-    PetscCall(TslPrintLine(sink, "\n"));
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* *NODE PRINT / *EL PRINT tables at the end of a step, streamed in rank order (TslPrintOrdered). */
-PetscErrorCode TslDriverPrintTables(Driver *d, const TslStep *step)
-{
-  const TslModel *m;
-
-  PetscFunctionBeginUser;
-  PetscCall(TslProblemGetModel(d->prob, &m));
-  for (PetscInt r = 0; r < step->nout; r++) {
-    const TslOutputRequest *req = &step->out[r];
-    PetscInt                k;
-    PrintCtx                c = {m, req, NULL, NULL, 0, NULL, {0}};
-    if (!req->print) continue;
-    k     = req->node ? TslModelFindNodeSet(m, req->set) : TslModelFindElementSet(m, req->set);
-    c.set = k < 0 ? NULL : req->node ? &m->nsets[k] : &m->elsets[k];
-    PetscCall(PetscPrintf(d->comm, "%s print, step %s, set %s:\n", req->node ? "node" : "element", step->name, req->set));
-    for (PetscInt v = 0; v < req->nvar; v++) {
-      PetscInt     f = TslFieldFind(req->var[v]);
-      PetscReal   *vals;
-      TslFieldKind kind = TSL_FIELD_NODE;
-      if (f >= 0) (void)TslFieldName(f, &kind, NULL);
-      if (f < 0 || (kind == TSL_FIELD_NODE) != req->node) {
-        PetscCall(PetscPrintf(d->comm, "  %s: not available\n", req->var[v]));
-        continue;
-      }
-      PetscCall(TslProblemField(d->prob, f, &c.nc, &vals));
-      c.var  = req->var[v];
-      c.vals = vals;
-      if (req->totals == 2)
-        PetscCall(PrintRows(NULL, &c));
-      else
-        PetscCall(TslPrintOrdered(d->comm, PrintRows, &c));
-      if (req->totals) {
-        /* TOTALS=YES / ONLY: the sum over the set (each node once, from its owner) */
-        PetscCall(MPIU_Allreduce(MPI_IN_PLACE, c.sum, TSL_PRINT_MAX_COMPONENTS, MPIU_REAL, MPIU_SUM, d->comm));
-        PetscCall(PetscPrintf(d->comm, "  %8s %-4s", "total", c.var));
-        for (PetscInt k = 0; k < PetscMin(c.nc, TSL_PRINT_MAX_COMPONENTS); k++) PetscCall(PetscPrintf(d->comm, " % .6e", (double)c.sum[k]));
-        PetscCall(PetscPrintf(d->comm, "\n"));
-      }
-      PetscCall(PetscFree(vals));
-    }
-  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1073,7 +861,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   }
   PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
   PetscCall(HandJacobian(d));
-  PetscCall(TslDriverSetOutputRequests(d, step));
+  PetscCall(TslFramesSetRequests(d, step));
   PetscCall(TslProblemGetSolution(d->prob, &X));
   PetscCall(TslProblemGetOldSolution(d->prob, &Xold));
 
@@ -1180,7 +968,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscCall(FallBackToDirect(d, X, s, inc - 1, why, &switched));
     }
     frame = frames.dt > 0 ? TslFrameTimesReached(&frames, t) : (PetscBool)(inc % d->frequency == 0); /* intervals replace FREQUENCY= */
-    if (last || frame) PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
+    if (last || frame) PetscCall(TslFramesWrite(d, s + 1, inc, *total_time));
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
     if (!step->direct) {
       /* the controller grows from the increment it asked for, not from one cut short at a corner. The deck's
@@ -1198,7 +986,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     cutbacks = 0;
   }
   PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
-  PetscCall(TslDriverPrintTables(d, step));
+  PetscCall(TslFramesPrintTables(d, step));
   PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
   PetscCall(PetscInfo(NULL, "step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %" PetscInt_FMT " attempts\n", s + 1, inc, attempts));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -1224,7 +1012,7 @@ static PetscErrorCode SaveLastConverged(Driver *d)
     PetscCall(TslProblemGetModel(d->prob, &m));
     PetscCall(SetIncrement(d, &m->steps[d->done_step - 1], d->done_step_time, d->done_dt, d->done_time));
     PetscCall(TslProblemHeatBalance(d->prob, &hb)); /* contact outputs at that state */
-    PetscCall(TslDriverWriteFrame(d, d->done_step, d->done_inc, d->done_time));
+    PetscCall(TslFramesWrite(d, d->done_step, d->done_inc, d->done_time));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -1279,7 +1067,7 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
   PetscCall(SetUpSolver(&d));
   PetscCall(TslExplicitSetFromOptions(&d));
   PetscCall(TslOptionsCheckUnused(d.comm, PETSC_TRUE)); /* every -tsl_ option has been read by now */
-  PetscCall(SetUpOutput(&d, dir, jobname));
+  PetscCall(TslFramesSetUp(&d, dir, jobname));
   /* every failure inside a step is decided by all ranks together (sys.h), so all ranks stop here alike */
   for (PetscInt s = 0; s < m->nstep && !ierr; s++) {
     PetscCall(TslProblemSetMatrixFree(prob, m->steps[s].explicit_dynamics));

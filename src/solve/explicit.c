@@ -599,7 +599,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));
   TslCallCollective(d->comm, TslProblemSetStep(x.p, s));
   PetscCall(TslProblemSetCapacityRate(x.p, 0));
-  PetscCall(TslDriverSetOutputRequests(d, x.step));
+  PetscCall(TslFramesSetRequests(d, x.step));
   PetscCall(TslProblemGetSolution(x.p, &x.X));
   PetscCall(TslProblemGetOldSolution(x.p, &x.Xold));
   PetscCall(VecGetBlockSize(x.X, &x.ndof));
@@ -726,7 +726,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscCall(HistoryRow(&x, en, s, inc, t, h, *total_time));
       while (t_hist <= t + eps) t_hist += dt_hist;
     }
-    if (frame) PetscCall(TslDriverWriteFrame(d, s + 1, inc, *total_time));
+    if (frame) PetscCall(TslFramesWrite(d, s + 1, inc, *total_time));
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
     PetscCheck(!x.stop || last, d->comm, PETSC_ERR_SIG, /* at the step's end: its results are whole; a next step stops at once */
                "explicit step %s: %s received at step time %g, in increment %" PetscInt_FMT "; this state is saved", x.step->name,
@@ -753,7 +753,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   if (x.Fk && inc)
     PetscCall(PetscPrintf(d->comm, "  kinematic contact: %.3g corrector passes per increment (at most %" PetscInt_FMT ", -tsl_explicit_kinematic_passes)\n",
                           (double)x.kin_total / (double)inc, x.kin_passes));
-  PetscCall(TslDriverPrintTables(d, x.step));
+  PetscCall(TslFramesPrintTables(d, x.step));
   d->explicit_last = s;
   if (x.m->npair) {
     PetscBool any;

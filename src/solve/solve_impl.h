@@ -1,5 +1,6 @@
-/* Private to src/solve/: the step driver's state, shared by the implicit procedures (driver.c) and the
- * explicit one (explicit.c), which write the same frames and the same history. */
+/* Private to src/solve/: the step driver's state, shared by the implicit procedures (driver.c), the explicit one
+ * (explicit.c) and the output both write, the same frames and the same history (frames.c). driver.c calls
+ * explicit.c and frames.c; explicit.c calls frames.c alone. */
 #pragma once
 #include <thermoslide/solve.h>
 #include <thermoslide/output.h>
@@ -114,10 +115,13 @@ PetscReal TslFrameTimesBound(const TslFrameTimes *ft);
 /* Whether step time t reached an output time, moving on to the next one after t when it did. */
 PetscBool TslFrameTimesReached(TslFrameTimes *ft, PetscReal t);
 
-/* Helpers of driver.c used by explicit.c */
-PetscErrorCode TslDriverSetOutputRequests(Driver *d, const TslStep *step);
-PetscErrorCode TslDriverWriteFrame(Driver *d, PetscInt step, PetscInt inc, PetscReal time);
-PetscErrorCode TslDriverPrintTables(Driver *d, const TslStep *step);
+/* The procedures' output (frames.c), used by the implicit (driver.c) and the explicit (explicit.c) procedure:
+ * the result files and the history of the job, a step's field requests (they replace the previous step's when
+ * present), a frame of the fields requested, and the step's *NODE PRINT / *EL PRINT tables. */
+PetscErrorCode TslFramesSetUp(Driver *d, const char *dir, const char *jobname);
+PetscErrorCode TslFramesSetRequests(Driver *d, const TslStep *step);
+PetscErrorCode TslFramesWrite(Driver *d, PetscInt step, PetscInt inc, PetscReal time);
+PetscErrorCode TslFramesPrintTables(Driver *d, const TslStep *step);
 /* The explicit procedure's run-time options (read with the others, before the unused-option check). */
 PetscErrorCode TslExplicitSetFromOptions(Driver *d);
 /* One explicit step (explicit.c); *total_time advances by the step period. */
