@@ -393,11 +393,6 @@ static PetscErrorCode SetUpSolver(Driver *d)
     PetscBool additive;
     if (!pc_set) PetscCall(TslSplitOptionType(NULL, &additive));
   }
-  PetscCall(SetDefaultOption(d, "-ksp_type", "fgmres"));
-  PetscCall(SetDefaultOption(d, "-ksp_rtol", "1e-10"));
-  PetscCall(SetDefaultOption(d, "-ksp_max_it", "1000"));
-  PetscCall(SetDefaultOption(d, "-ksp_gmres_restart", "100"));
-  PetscCall(SetDefaultOption(d, "-pc_fieldsplit_type", "multiplicative"));
   {
     /* block solves (split.c) replace the sub-solvers' preonly only where the user did not choose their type */
     PetscBool set_t, set_u;
@@ -405,61 +400,73 @@ static PetscErrorCode SetUpSolver(Driver *d)
     PetscCall(PetscOptionsHasName(NULL, NULL, "-fieldsplit_u_ksp_type", &set_u));
     if (set_t || set_u) d->block_solves = PETSC_FALSE;
   }
-  PetscCall(SetDefaultOption(d, "-fieldsplit_T_ksp_type", "preonly"));
-  PetscCall(SetDefaultOption(d, "-fieldsplit_T_pc_type", "hypre"));
-  PetscCall(SetDefaultOption(d, "-fieldsplit_u_ksp_type", "preonly"));
-  PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_type", "hypre"));
   {
-    /* contact: two bodies coupled by penalty springs (a thin block held normal to the interface only
-     * through it). With the lean hierarchy below the displacement block's iterations doubled with each
-     * halving of the mesh (50 / 99 / 199 / 391 per Newton iteration at 289 / 1 089 / 4 225 / 16 641 contact
-     * nodes); without aggressive coarsening and with strong threshold 0.8 on the displacement block they
-     * take 19 / 23 / 38 / 71, and with strong threshold 0.7 on the temperature block as well (whose
-     * hierarchy, with BoomerAMG's 0.25, was what still grew: with it solved exactly the count was flat)
-     * 19 / 20 / 20 (docs/running.md, "Contact at scale"). Without contact, dropping the aggressive coarsening
-     * costs more than it saves (the steady block: 25 instead of 29 iterations for twice the set-up and a
-     * slower solve), so these are the contact models' defaults only. */
-    if (m->npair > 0) {
-      PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.8"));
-      PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_agg_nl", "0"));
-      PetscCall(SetDefaultOption(d, "-fieldsplit_T_pc_hypre_boomeramg_strong_threshold", "0.7"));
+    /* the linear solver's defaults, one row each, entered in this order where the user gave none (a row for a
+     * case comes before the general row of the same option). JACOBI: thermoslide's split with its per-level
+     * Jacobi weights (-tsl_amg_jacobi_scale > 0, no -pc_type of the user's) */
+    enum { ALL, CONTACT, JACOBI, JACOBI_NO_CONTACT, NOT_JACOBI };
+    static const struct {
+      const char *name, *value;
+      int         when;
+    } rows[] = {
+        {"-ksp_type", "fgmres", ALL},
+        {"-ksp_rtol", "1e-10", ALL},
+        {"-ksp_max_it", "1000", ALL},
+        {"-ksp_gmres_restart", "100", ALL},
+        {"-pc_fieldsplit_type", "multiplicative", ALL},
+        {"-fieldsplit_T_ksp_type", "preonly", ALL},
+        {"-fieldsplit_T_pc_type", "hypre", ALL},
+        {"-fieldsplit_u_ksp_type", "preonly", ALL},
+        {"-fieldsplit_u_pc_type", "hypre", ALL},
+        /* contact: two bodies coupled by penalty springs (a thin block held normal to the interface only
+         * through it). With the lean hierarchy below the displacement block's iterations doubled with each
+         * halving of the mesh (50 / 99 / 199 / 391 per Newton iteration at 289 / 1 089 / 4 225 / 16 641 contact
+         * nodes); without aggressive coarsening and with strong threshold 0.8 on the displacement block they
+         * take 19 / 23 / 38 / 71, and with strong threshold 0.7 on the temperature block as well (whose
+         * hierarchy, with BoomerAMG's 0.25, was what still grew: with it solved exactly the count was flat)
+         * 19 / 20 / 20 (docs/running.md, "Contact at scale"). Without contact, dropping the aggressive
+         * coarsening costs more than it saves (the steady block: 25 instead of 29 iterations for twice the
+         * set-up and a slower solve), so these are the contact models' defaults only. */
+        {"-fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.8", CONTACT},
+        {"-fieldsplit_u_pc_hypre_boomeramg_agg_nl", "0", CONTACT},
+        {"-fieldsplit_T_pc_hypre_boomeramg_strong_threshold", "0.7", CONTACT},
+        {"-fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.5", ALL},
+        /* lean hierarchies (HMIS coarsening, ext+i interpolation, one level of aggressive coarsening): on the
+         * 3D benchmark 25-35 % faster and 20 % less memory than BoomerAMG's defaults, for 24-29 instead of
+         * 17-18 iterations from 5.5k to 122k dofs (docs/running.md, tests/bench/) */
+        {"-fieldsplit_u_pc_hypre_boomeramg_coarsen_type", "HMIS", ALL},
+        {"-fieldsplit_u_pc_hypre_boomeramg_interp_type", "ext+i", ALL},
+        {"-fieldsplit_u_pc_hypre_boomeramg_agg_nl", "1", ALL},
+        {"-fieldsplit_T_pc_hypre_boomeramg_coarsen_type", "HMIS", ALL},
+        {"-fieldsplit_T_pc_hypre_boomeramg_interp_type", "ext+i", ALL},
+        {"-fieldsplit_T_pc_hypre_boomeramg_agg_nl", "1", ALL},
+        {"-fieldsplit_u_pc_hypre_boomeramg_P_max", "4", ALL},
+        /* Smoothing by matrix-vector products instead of hybrid Gauss-Seidel sweeps, and interpolation
+         * truncated at 0.3, on the displacement hierarchy. Thermoslide's split weights BoomerAMG's Jacobi sweeps
+         * level by level from each level's spectrum (split.c, JacobiWeights): a third of a Chebyshev sweep's
+         * products, the linear solve of the peer benchmark's block 22 % faster than with Chebyshev, which was
+         * twice as fast as hybrid Gauss-Seidel. Without it (PETSc's -pc_type fieldsplit, -tsl_amg_jacobi_scale
+         * 0) a fixed Jacobi weight can let the cycle diverge, so Chebyshev, which estimates its own spectrum,
+         * stays the default there (docs/running.md, tests/bench/bench_peer.sh). */
+        {"-fieldsplit_u_pc_hypre_boomeramg_relax_type_all", "Jacobi", JACOBI},
+        {"-fieldsplit_u_pc_hypre_boomeramg_no_CF", "true", JACOBI},
+        /* the temperature block too, without contact: 19 instead of 15 CG iterations on the peer benchmark's
+         * block, each cheaper than hybrid Gauss-Seidel's, and a cheaper set-up (the job 5-8 % faster on 1 and 2
+         * ranks); with contact the coupled outer iterations grew (the 3D contact benchmark at N = 32: 76 -> 94
+         * displacement cycles for the same time), so hybrid Gauss-Seidel stays there */
+        {"-fieldsplit_T_pc_hypre_boomeramg_relax_type_all", "Jacobi", JACOBI_NO_CONTACT},
+        {"-fieldsplit_T_pc_hypre_boomeramg_no_CF", "true", JACOBI_NO_CONTACT},
+        {"-fieldsplit_u_pc_hypre_boomeramg_relax_type_all", "Chebyshev", NOT_JACOBI},
+        {"-fieldsplit_u_pc_hypre_boomeramg_truncfactor", "0.3", ALL},
+    };
+    const PetscBool contact = (PetscBool)(m->npair > 0), jacobi = (PetscBool)(!pc_set && d->jacobi_scale > 0);
+    for (size_t i = 0; i < sizeof(rows) / sizeof(rows[0]); i++) {
+      const int w  = rows[i].when;
+      PetscBool on = (PetscBool)(w == ALL || (w == CONTACT && contact) || (w == JACOBI && jacobi) || (w == JACOBI_NO_CONTACT && jacobi && !contact) ||
+                                 (w == NOT_JACOBI && !jacobi));
+      if (on) PetscCall(SetDefaultOption(d, rows[i].name, rows[i].value));
     }
   }
-  PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_strong_threshold", "0.5"));
-  /* lean hierarchies (HMIS coarsening, ext+i interpolation, one level of aggressive coarsening): on the
-   * 3D benchmark 25-35 % faster and 20 % less memory than BoomerAMG's defaults, for 24-29 instead of
-   * 17-18 iterations from 5.5k to 122k dofs (docs/running.md, tests/bench/) */
-  for (const char *const *f = (const char *const[]){"u", "T", NULL}; *f; f++) {
-    char name[64];
-    PetscCall(PetscSNPrintf(name, sizeof(name), "-fieldsplit_%s_pc_hypre_boomeramg_coarsen_type", *f));
-    PetscCall(SetDefaultOption(d, name, "HMIS"));
-    PetscCall(PetscSNPrintf(name, sizeof(name), "-fieldsplit_%s_pc_hypre_boomeramg_interp_type", *f));
-    PetscCall(SetDefaultOption(d, name, "ext+i"));
-    PetscCall(PetscSNPrintf(name, sizeof(name), "-fieldsplit_%s_pc_hypre_boomeramg_agg_nl", *f));
-    PetscCall(SetDefaultOption(d, name, "1"));
-  }
-  PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_P_max", "4"));
-  /* Smoothing by matrix-vector products instead of hybrid Gauss-Seidel sweeps, and interpolation truncated
-   * at 0.3, on the displacement hierarchy. Thermoslide's split weights BoomerAMG's Jacobi sweeps level by
-   * level from each level's spectrum (split.c, JacobiWeights): a third of a Chebyshev sweep's products, the
-   * linear solve of the peer benchmark's block 22 % faster than with Chebyshev, which was twice as fast as
-   * hybrid Gauss-Seidel. Without it (PETSc's -pc_type fieldsplit, -tsl_amg_jacobi_scale 0) a fixed Jacobi
-   * weight can let the cycle diverge, so Chebyshev, which estimates its own spectrum, stays the default there
-   * (docs/running.md, tests/bench/bench_peer.sh). */
-  if (!pc_set && d->jacobi_scale > 0) {
-    PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_relax_type_all", "Jacobi"));
-    PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_no_CF", "true"));
-    /* the temperature block too, without contact: 19 instead of 15 CG iterations on the peer benchmark's
-     * block, each cheaper than hybrid Gauss-Seidel's, and a cheaper set-up (the job 5-8 % faster on 1 and 2
-     * ranks); with contact the coupled outer iterations grew (the 3D contact benchmark at N = 32: 76 -> 94
-     * displacement cycles for the same time), so hybrid Gauss-Seidel stays there */
-    if (m->npair == 0) {
-      PetscCall(SetDefaultOption(d, "-fieldsplit_T_pc_hypre_boomeramg_relax_type_all", "Jacobi"));
-      PetscCall(SetDefaultOption(d, "-fieldsplit_T_pc_hypre_boomeramg_no_CF", "true"));
-    }
-  } else
-    PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_relax_type_all", "Chebyshev"));
-  PetscCall(SetDefaultOption(d, "-fieldsplit_u_pc_hypre_boomeramg_truncfactor", "0.3"));
 
   PetscCall(SNESCreate(d->comm, &d->snes));
   PetscCall(TslProblemSetRepatternCallback(d->prob, Repattern, d));
