@@ -678,26 +678,24 @@ PetscErrorCode TslProblemContactRollback(TslProblem p)
 /* Contact node fields over owned nodes (zero where a node is not a secondary node):
  * CPRESS contact pressure, CSLIP accumulated slip, CSTATUS 0 open / 1 stick / 2 slip, HFLA heat flux per
  * area into the secondary surface. */
-PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[])
+PetscErrorCode TslProblemContactNodeField(TslProblem p, TslContactField kind, PetscReal vals[])
 {
-  PetscInt which = !strcmp(name, "CPRESS") ? 0 : !strcmp(name, "CSLIP") ? 1 : !strcmp(name, "CSTATUS") ? 2 : 3;
-
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < p->ncnode; i++) {
     const TslContactNode *cn = &p->cnode[i];
     PetscReal             v  = 0;
     if (cn->seg >= 0) {
-      if (which == 0)
+      if (kind == TSL_CONTACT_FIELD_PRESSURE)
         v = cn->out.pressure;
-      else if (which == 2)
+      else if (kind == TSL_CONTACT_FIELD_STATUS)
         v = (PetscReal)cn->out.status;
-      else if (which == 3)
+      else if (kind == TSL_CONTACT_FIELD_HEAT_FLUX)
         v = cn->out.heat_flux;
     }
-    if (which == 1) v = cn->cslip;
+    if (kind == TSL_CONTACT_FIELD_SLIP) v = cn->cslip;
     vals[cn->lnode] = v;
   }
-  PetscCall(TslProblemContactS2SNodeField(p, name, vals));
+  PetscCall(TslProblemContactS2SNodeField(p, kind, vals));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -561,7 +561,7 @@ PetscErrorCode TslProblemContactS2SAugment(TslProblem p)
 /* Nodal values over the local nodes: v[l] = sum over the points of N_b w value / trib[l] (CPRESS, HFLA,
  * slip), or the largest status of the points with N_b != 0 (which = 2). which: 0 pressure, 1 |slip|,
  * 2 status, 3 heat flux. */
-static PetscErrorCode NodalValues(TslProblem p, PetscInt which, PetscReal v[])
+static PetscErrorCode NodalValues(TslProblem p, TslContactField which, PetscReal v[])
 {
   TslContactS2S s = p->s2s;
 
@@ -574,12 +574,15 @@ static PetscErrorCode NodalValues(TslProblem p, PetscInt which, PetscReal v[])
       const S2SPoint *pt = &s->pt[q];
       PetscReal       N[TSL_CONTACT3_MAX_FACE_NODES], dN[TSL_CONTACT_MAX_FACE_NODES], d2N[TSL_CONTACT_MAX_FACE_NODES], val;
       if (pt->seg < 0) continue;
-      val = which == 0 ? pt->out.pressure : which == 1 ? PetscHypotReal(pt->out.slip, pt->out.slip_circ) : which == 2 ? (PetscReal)pt->out.status : pt->out.heat_flux;
+      val = which == TSL_CONTACT_FIELD_PRESSURE ? pt->out.pressure
+            : which == TSL_CONTACT_FIELD_SLIP   ? PetscHypotReal(pt->out.slip, pt->out.slip_circ)
+            : which == TSL_CONTACT_FIELD_STATUS ? (PetscReal)pt->out.status
+                                                : pt->out.heat_flux;
       if (p->dim == 3) PetscCall(PetscArraycpy(N, pt->N, fc->nsn));
       else TslContactFaceShape(face, pt->zeta, N, dN, d2N);
       for (PetscInt b = 0; b < fc->nsn; b++) {
         PetscInt l = fc->lnode[b];
-        if (which == 2) {
+        if (which == TSL_CONTACT_FIELD_STATUS) {
           if (N[b] != 0) v[l] = PetscMax(v[l], val);
         } else v[l] += N[b] * pt->length * val / s->trib[l];
       }
@@ -618,7 +621,7 @@ PetscErrorCode TslProblemContactS2SCommit(TslProblem p)
     PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
   }
   PetscCall(PetscMalloc1(p->nn, &slip));
-  PetscCall(NodalValues(p, 1, slip));
+  PetscCall(NodalValues(p, TSL_CONTACT_FIELD_SLIP, slip));
   for (PetscInt l = 0; l < p->nn; l++) s->cslip[l] += slip[l];
   PetscCall(PetscFree(slip));
   for (PetscInt q = 0; q < s->npt; q++)
@@ -643,17 +646,16 @@ PetscErrorCode TslProblemContactS2SRollback(TslProblem p)
 }
 
 /* Node fields at the owned secondary-face nodes (see the top of this file); other nodes keep vals. */
-PetscErrorCode TslProblemContactS2SNodeField(TslProblem p, const char *name, PetscReal vals[])
+PetscErrorCode TslProblemContactS2SNodeField(TslProblem p, TslContactField kind, PetscReal vals[])
 {
-  TslContactS2S s     = p->s2s;
-  PetscInt      which = !strcmp(name, "CPRESS") ? 0 : !strcmp(name, "CSLIP") ? 1 : !strcmp(name, "CSTATUS") ? 2 : 3;
+  TslContactS2S s = p->s2s;
   PetscReal    *v;
 
   PetscFunctionBeginUser;
   if (!s || !s->nface) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscMalloc1(p->nn, &v));
-  if (which == 1) PetscCall(PetscArraycpy(v, s->cslip, p->nn));
-  else PetscCall(NodalValues(p, which, v));
+  if (kind == TSL_CONTACT_FIELD_SLIP) PetscCall(PetscArraycpy(v, s->cslip, p->nn));
+  else PetscCall(NodalValues(p, kind, v));
   for (PetscInt i = 0; i < s->nface; i++)
     for (PetscInt b = 0; b < s->face[i].nsn; b++)
       if (s->face[i].lnode[b] < p->nown) vals[s->face[i].lnode[b]] = v[s->face[i].lnode[b]];

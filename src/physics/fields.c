@@ -47,11 +47,9 @@ static PetscErrorCode NodeReaction(TslProblem p, PetscInt which, PetscInt ncomp,
 
 static PetscErrorCode NodeContact(TslProblem p, PetscInt which, PetscInt ncomp, PetscReal vals[])
 {
-  static const char *const name[] = {"CPRESS", "CSLIP", "CSTATUS", "HFLA"};
-
   PetscFunctionBeginUser;
   (void)ncomp;
-  PetscCall(TslProblemContactNodeField(p, name[which], vals));
+  PetscCall(TslProblemContactNodeField(p, (TslContactField)which, vals));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -100,8 +98,10 @@ typedef struct {
 static const FieldRow Fields[] = {
     {"U", TSL_FIELD_NODE, 1, 3, 0, NodeSolution},         {"NT", TSL_FIELD_NODE, 1, 1, 1, NodeSolution},
     {"RF", TSL_FIELD_NODE, 1, 3, 0, NodeReaction},        {"RFL", TSL_FIELD_NODE, 1, 1, 1, NodeReaction},
-    {"CPRESS", TSL_FIELD_NODE, 2, 1, 0, NodeContact},     {"CSLIP", TSL_FIELD_NODE, 2, 1, 1, NodeContact},
-    {"CSTATUS", TSL_FIELD_NODE, 2, 1, 2, NodeContact},    {"HFLA", TSL_FIELD_NODE, 2, 1, 3, NodeContact},
+    {"CPRESS", TSL_FIELD_NODE, 2, 1, TSL_CONTACT_FIELD_PRESSURE, NodeContact},
+    {"CSLIP", TSL_FIELD_NODE, 2, 1, TSL_CONTACT_FIELD_SLIP, NodeContact},
+    {"CSTATUS", TSL_FIELD_NODE, 2, 1, TSL_CONTACT_FIELD_STATUS, NodeContact},
+    {"HFLA", TSL_FIELD_NODE, 2, 1, TSL_CONTACT_FIELD_HEAT_FLUX, NodeContact},
     {"S", TSL_FIELD_ELEMENT, 1, 6, 0, ElementValues},     {"E", TSL_FIELD_ELEMENT, 1, 6, 1, ElementValues},
     {"HFL", TSL_FIELD_ELEMENT, 1, 3, 2, ElementValues},   {"ELSE", TSL_FIELD_ELEMENT, 0, 1, 3, ElementValues},
     {"ELASE", TSL_FIELD_ELEMENT, 0, 1, 4, ElementValues},

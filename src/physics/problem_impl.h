@@ -274,7 +274,9 @@ PetscErrorCode TslProblemRecordLoad(TslProblem p, const TslFaceRecord *r, const 
 /* Collective: bad >= 0 (a local element) on any rank is the user error "element is inverted" on all. */
 PetscErrorCode TslProblemCheckBadElement(TslProblem p, PetscInt bad);
 PetscErrorCode TslProblemContactDestroy(TslProblem p);
-PetscErrorCode TslProblemContactNodeField(TslProblem p, const char *name, PetscReal vals[]);
+/* The contact node fields (fields.c's rows CPRESS, CSLIP, CSTATUS, HFLA, in this order: a row's index is its kind) */
+typedef enum { TSL_CONTACT_FIELD_PRESSURE, TSL_CONTACT_FIELD_SLIP, TSL_CONTACT_FIELD_STATUS, TSL_CONTACT_FIELD_HEAT_FLUX } TslContactField;
+PetscErrorCode TslProblemContactNodeField(TslProblem p, TslContactField kind, PetscReal vals[]);
 /* What surface-to-surface contact takes from node-to-surface (src/physics/contact.c): the kernel input of
  * node cn on its segment (nodes[] in kernel order, *n of them; in points into nb) and a node's reference
  * coordinates and contact unknowns; a main face's metric. */
@@ -298,7 +300,7 @@ PetscErrorCode TslProblemContactS2SUpdate(TslProblem p, PetscInt *depart, PetscR
 PetscErrorCode TslProblemContactS2SAugment(TslProblem p);
 PetscErrorCode TslProblemContactS2SCommit(TslProblem p);
 PetscErrorCode TslProblemContactS2SRollback(TslProblem p);
-PetscErrorCode TslProblemContactS2SNodeField(TslProblem p, const char *name, PetscReal vals[]);
+PetscErrorCode TslProblemContactS2SNodeField(TslProblem p, TslContactField kind, PetscReal vals[]);
 PetscReal      TslProblemEvalLoadValue(TslProblem p, const TslLoadValue *h);
 /* The slot of dialect dof number dof (1..6, 11) among an ordinary node's unknowns (TslProblemDofSlot) or
  * among local node l's (TslProblemNodeDofSlot: reference nodes have their own), -1 when it has no such dof. */
