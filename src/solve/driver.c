@@ -1054,6 +1054,24 @@ static PetscErrorCode Finish(Driver *d, PetscErrorCode ierr, const char *dir, co
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The procedures, one row each: its options and solvers (read for every job, so that the unused-option check sees
+ * them all), one step of it, and whether its steps assemble no matrix. A step takes the row of its procedure. */
+typedef struct {
+  PetscErrorCode (*setup)(Driver *);
+  PetscErrorCode (*run_step)(Driver *, PetscInt, PetscReal *);
+  PetscBool matrix_free;
+} Procedure;
+
+static const Procedure Procedures[] = {
+    {SetUpSolver, RunStep, PETSC_FALSE},                         /* implicit: *STATIC, *COUPLED TEMPERATURE-DISPLACEMENT */
+    {TslExplicitSetFromOptions, TslExplicitRunStep, PETSC_TRUE}, /* *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT */
+};
+
+static const Procedure *StepProcedure(const TslStep *step)
+{
+  return &Procedures[step->explicit_dynamics ? 1 : 0];
+}
+
 PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobname)
 {
   Driver          d;
@@ -1071,14 +1089,14 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
     PetscCall(TslProblemGetSolution(prob, &X));
     PetscCall(PetscObjectGetComm((PetscObject)X, &d.comm));
   }
-  PetscCall(SetUpSolver(&d));
-  PetscCall(TslExplicitSetFromOptions(&d));
+  for (size_t k = 0; k < sizeof(Procedures) / sizeof(Procedures[0]); k++) PetscCall(Procedures[k].setup(&d));
   PetscCall(TslOptionsCheckUnused(d.comm, PETSC_TRUE)); /* every -tsl_ option has been read by now */
   PetscCall(TslFramesSetUp(&d, dir, jobname));
   /* every failure inside a step is decided by all ranks together (sys.h), so all ranks stop here alike */
   for (PetscInt s = 0; s < m->nstep && !ierr; s++) {
-    PetscCall(TslProblemSetMatrixFree(prob, m->steps[s].explicit_dynamics));
-    ierr = m->steps[s].explicit_dynamics ? TslExplicitRunStep(&d, s, &total) : RunStep(&d, s, &total);
+    const Procedure *pr = StepProcedure(&m->steps[s]);
+    PetscCall(TslProblemSetMatrixFree(prob, pr->matrix_free));
+    ierr = pr->run_step(&d, s, &total);
   }
   if (d.jac_reuses)
     PetscCall(PetscPrintf(d.comm, "thermoslide: %" PetscInt_FMT " of %" PetscInt_FMT " Jacobians equal to the one before them: the preconditioner built on that one was kept\n",
