@@ -297,17 +297,27 @@ PetscBool TslElementCapacityConsistent(const TslElementType *t);
 typedef enum {
   TSL_FACE_PRESSURE = 0, /* value: pressure (force/area, positive pushing into the body) */
   TSL_FACE_FLUX,         /* value: heat flux per area into the body */
-  TSL_FACE_FILM,         /* value: film coefficient h, value2: sink temperature; q_out = h (theta - sink) */
+  TSL_FACE_FILM,         /* value: film coefficient h, sink: sink temperature; q_out = h (theta - sink) */
   TSL_BODY_FLUX,         /* value: heat per volume into the body (face ignored); consistent, int N_a q dV */
   TSL_BODY_GRAV,         /* value: g, axis[0..2] the unit direction: force rho g n per volume (TslElementBodyForce) */
-  TSL_BODY_CENTRIF       /* value: omega^2, axis[] a point and the unit direction of the spin axis: rho omega^2 r_perp */
+  TSL_BODY_CENTRIF,      /* value: omega^2, axis[] a point and the unit direction of the spin axis: rho omega^2 r_perp */
+  TSL_FACE_RADIATION     /* value: sigma eps, sink: ambient temperature, zero: absolute zero;
+                            q_out = sigma eps [(theta - zero)^4 - (sink - zero)^4] */
 } TslFaceLoadKind;
 
+/* A face load's numbers at the current time: value (pressure, flux, film coefficient h, or the radiation
+ * coefficient sigma eps), the film's sink or the radiation's ambient temperature, and the absolute zero of
+ * the deck's temperature scale (*PHYSICAL CONSTANTS, ABSOLUTE ZERO; radiation only). */
+typedef struct {
+  PetscReal value, sink, zero;
+} TslFaceLoadValue;
+
 /* Adds the face load's contribution to the residual R (as an internal-minus-external residual, i.e.
- * applied loads enter with a minus sign, the film's heat loss with a plus sign) and to K where the load
- * depends on the unknowns (film). face is 1-based (S1..S6). *heat returns the heat the load adds to the
- * body per unit time (flux: positive in; film: negative when heat leaves); may be NULL. */
-PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],
+ * applied loads enter with a minus sign, the heat lost by a film or radiation with a plus sign) and to K
+ * where the load depends on the unknowns (film, radiation). face is 1-based (S1..S6). *heat returns the heat
+ * the load adds to the body per unit time (flux: positive in; film, radiation: negative when heat leaves); may
+ * be NULL. */
+PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, const TslFaceLoadValue *v, PetscReal R[],
                                   PetscReal K[], PetscReal *heat);
 
 /* Is the kind a body force (TslElementBodyForce) rather than a face load or heat? */

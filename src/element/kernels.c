@@ -704,15 +704,22 @@ PetscErrorCode TslElementBodyForce(const TslElementInput *in, TslFaceLoadKind ki
  *   flux q into the body:                       R_theta(a) -= int N_a q dA,            heat = int q dA
  *   film h, sink:                               R_theta(a) += int N_a h (theta - sink) dA,
  *                                               K_ab       += int h N_a N_b dA,        heat = -int h (theta - sink) dA
+ *   radiation c = sigma eps, ambient theta_a:   R_theta(a) += int N_a q_r dA,  q_r = c [(theta - theta_Z)^4 - (theta_a - theta_Z)^4],
+ *                                               K_ab       += int 4 c (theta - theta_Z)^3 N_a N_b dA,   heat = -int q_r dA
  *   body flux q per volume:                     R_theta(a) -= int N_a q dV,            heat = int q dV
- * The points are the formulation's face rules: for flux and film the face family's own shape functions
- * with a rule exact for h N_a N_b; for pressure the same, or the linear sub-faces of a modified element,
- * whose nodal weights are all positive. The body flux takes the family's full rule, as conduction does. */
-PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, PetscReal value, PetscReal value2, PetscReal R[],
+ * theta is the face's interpolated temperature at the point, so the radiation's K is the exact derivative of its
+ * R (the Stefan-Boltzmann law in absolute temperature, theta_Z = *PHYSICAL CONSTANTS, ABSOLUTE ZERO; the
+ * CalculiX manual's *RADIATE, Abaqus's "Thermal loads"). The points are the formulation's face rules: for
+ * flux, film and radiation the face family's own shape functions with a rule exact for h N_a N_b (the
+ * radiation's quartic is integrated by the same points, not exactly: it converges with the mesh as the
+ * temperature does); for pressure the same, or the linear sub-faces of a modified element, whose nodal
+ * weights are all positive. The body flux takes the family's full rule, as conduction does. */
+PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kind, PetscInt face, const TslFaceLoadValue *v, PetscReal R[],
                                   PetscReal K[], PetscReal *heat)
 {
   const TslGeometry *g    = in->type->geom;
   const PetscInt     ndof = in->type->ndof, dim = in->type->dim, th = ndof - 1, nd = TslElementTypeNodes(in->type) * ndof;
+  const PetscReal    value = v->value;
   PetscReal          total = 0;
   TslFaceRule        rule;
 
@@ -733,7 +740,7 @@ PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kin
     const PetscInt *node = g->face_node[face];
     const PetscInt  fn   = g->face_nnode[face];
     FacePoint       fp;
-    PetscReal       theta = 0;
+    PetscReal       theta = 0, drive = 0, dq = 0;
 
     FacePointEvaluate(in, face, &rule, q, &fp);
     switch (kind) {
@@ -746,14 +753,24 @@ PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kin
       total += value * fp.dA;
       break;
     case TSL_FACE_FILM:
+    case TSL_FACE_RADIATION:
       for (PetscInt f = 0; f < fn; f++) theta += fp.N[f] * in->u[ndof * node[f] + th];
+      /* q_out = value drive, d q_out / d theta = dq */
+      if (kind == TSL_FACE_FILM) {
+        drive = theta - v->sink;
+        dq    = value;
+      } else {
+        const PetscReal ta = theta - v->zero, tsa = v->sink - v->zero;
+        drive = ta * ta * ta * ta - tsa * tsa * tsa * tsa;
+        dq    = 4 * value * ta * ta * ta;
+      }
       for (PetscInt f = 0; f < fn; f++) {
         const PetscInt row = ndof * node[f] + th;
-        R[row] += fp.N[f] * value * (theta - value2) * fp.dA;
+        R[row] += fp.N[f] * value * drive * fp.dA;
         if (K)
-          for (PetscInt e = 0; e < fn; e++) K[row * nd + ndof * node[e] + th] += value * fp.N[f] * fp.N[e] * fp.dA;
+          for (PetscInt e = 0; e < fn; e++) K[row * nd + ndof * node[e] + th] += dq * fp.N[f] * fp.N[e] * fp.dA;
       }
-      total -= value * (theta - value2) * fp.dA;
+      total -= value * drive * fp.dA;
       break;
     default:
       SETERRQ(PETSC_COMM_SELF, PETSC_ERR_ARG_OUTOFRANGE, "Unknown face load kind %d", (int)kind);

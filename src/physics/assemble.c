@@ -236,29 +236,30 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscReal *value, PetscReal *sink)
+PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, TslFaceLoadValue *v)
 {
   PetscFunctionBeginUser;
-  *value = TslProblemEvalLoadValue(p, &r->value);
-  *sink  = TslProblemEvalLoadValue(p, &r->sink);
+  v->value = TslProblemEvalLoadValue(p, &r->value);
+  v->sink  = TslProblemEvalLoadValue(p, &r->sink);
+  v->zero  = p->m->absolute_zero;
   if (r->film_amp >= 0) {
     const TslAmplitude *a = &p->m->amplitudes[r->film_amp];
-    *value *= TslAmplitudeEval(a, a->total_time ? p->ttot : p->t);
+    v->value *= TslAmplitudeEval(a, a->total_time ? p->ttot : p->t);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode TslProblemRecordLoad(TslProblem p, const TslFaceRecord *r, const TslElementInput *in, PetscReal R[], PetscReal K[], PetscReal *heat)
 {
-  PetscReal value, sink;
+  TslFaceLoadValue v;
 
   PetscFunctionBeginUser;
-  PetscCall(TslProblemFaceLoadValue(p, r, &value, &sink));
+  PetscCall(TslProblemFaceLoadValue(p, r, &v));
   *heat = 0;
   if (TslFaceLoadKindIsBodyForce(r->kind))
-    PetscCall(TslElementBodyForce(in, r->kind, value, r->axis, R, NULL)); /* no tangent: the load depends on no unknown */
+    PetscCall(TslElementBodyForce(in, r->kind, v.value, r->axis, R, NULL)); /* no tangent: the load depends on no unknown */
   else
-    PetscCall(TslElementFaceLoad(in, r->kind, r->face, value, sink, R, K, heat));
+    PetscCall(TslElementFaceLoad(in, r->kind, r->face, &v, R, K, heat));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -273,7 +273,7 @@ static PetscErrorCode FaceCache(TslProblem p, const PetscScalar *xa)
       fn = g->face_nnode[rec->face - 1], fnode = g->face_node[rec->face - 1];
       PetscCall(PetscArrayzero(R, d.nd));
       if (rec->kind == TSL_FACE_FILM) PetscCall(PetscArrayzero(K, d.nd * d.nd));
-      PetscCall(TslElementFaceLoad(&d.in, rec->kind, rec->face, 1.0, 0.0, R, rec->kind == TSL_FACE_FILM ? K : NULL, &heat));
+      PetscCall(TslElementFaceLoad(&d.in, rec->kind, rec->face, &(TslFaceLoadValue){1.0, 0.0, 0.0}, R, rec->kind == TSL_FACE_FILM ? K : NULL, &heat));
       if (rec->kind == TSL_FACE_PRESSURE)
         for (PetscInt f = 0; f < fn; f++)
           for (PetscInt k = 0; k < dim; k++) c[f * dim + k] = R[nd * fnode[f] + k];
@@ -313,8 +313,10 @@ static PetscErrorCode FaceLoadsCached(TslProblem p, PetscInt e, const PetscScala
     const TslFaceRecord *rec = &p->face[i];
     const PetscInt       fn = rec->face < 1 ? 0 : g->face_nnode[rec->face - 1], *fnode = rec->face < 1 ? NULL : g->face_node[rec->face - 1];
     const PetscReal     *C = &p->fcache[p->fcache_off[i]];
+    TslFaceLoadValue     v;
     PetscReal            value, sink;
-    PetscCall(TslProblemFaceLoadValue(p, rec, &value, &sink));
+    PetscCall(TslProblemFaceLoadValue(p, rec, &v));
+    value = v.value, sink = v.sink;
     if (TslFaceLoadKindIsBodyForce(rec->kind))
       for (PetscInt a = 0; a < g->nnode; a++)
         for (PetscInt k = 0; k < dim; k++) c->fe[nd * ln[a] + k] -= value * C[a * dim + k];

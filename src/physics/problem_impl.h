@@ -266,8 +266,9 @@ PetscErrorCode TslProblemContact3Input(TslProblem p, const TslContactNode *cn, c
 PetscErrorCode TslProblemContact3Search(TslProblem p, PetscInt pair, const PetscScalar *xa, PetscInt *changed);
 PetscBool      TslProblemContact3Departed(TslProblem p, const TslContactNode *cn, PetscReal tol);
 PetscErrorCode TslProblemContact3Normals(TslProblem p, TslContactSurface *cs, const PetscScalar *xa);
-/* A face record's load value and sink at the current time (amplitudes, film amplitude). */
-PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, PetscReal *value, PetscReal *sink);
+/* A face record's load value and sink at the current time (amplitudes, film or radiation amplitude), and the
+ * model's absolute zero. */
+PetscErrorCode TslProblemFaceLoadValue(TslProblem p, const TslFaceRecord *r, TslFaceLoadValue *v);
 /* A distributed load of the element of in at the current time through its kernel (TslElementFaceLoad, or
  * TslElementBodyForce for a body force), added to R and K (NULL: not wanted); *heat as TslElementFaceLoad's. */
 PetscErrorCode TslProblemRecordLoad(TslProblem p, const TslFaceRecord *r, const TslElementInput *in, PetscReal R[], PetscReal K[], PetscReal *heat);

@@ -363,9 +363,13 @@ static PetscErrorCode CheckVolumeAndHeat(TestLog *log, Case *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The element residual (face == 0) or a film on one face alone (face > 0), so that the small film
- * Jacobian is not hidden behind the stiffness in a relative comparison. */
-static PetscErrorCode PartResidual(Case *c, PetscInt face, PetscReal R[], PetscReal K[])
+/* Radiation to an ambient of 12 with sigma eps = 5.67e-8 * 0.7 on the Celsius scale (absolute zero -273.15):
+ * at the tests' temperatures (20 +- 10) its tangent 4 sigma eps (theta - theta_Z)^3 is about 4, near the film's 7. */
+static const TslFaceLoadValue RADIATION = {5.67e-8 * 0.7, 12.0, -273.15};
+
+/* The element residual (face == 0) or a film or radiation (kind) on one face alone (face > 0), so that the
+ * small face Jacobian is not hidden behind the stiffness in a relative comparison. */
+static PetscErrorCode PartResidual(Case *c, PetscInt face, TslFaceLoadKind kind, PetscReal R[], PetscReal K[])
 {
   const PetscInt nd  = NDof(c);
   PetscBool      inv = PETSC_FALSE;
@@ -377,7 +381,7 @@ static PetscErrorCode PartResidual(Case *c, PetscInt face, PetscReal R[], PetscR
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
     if (K)
       for (PetscInt i = 0; i < nd * nd; i++) K[i] = 0;
-    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_FILM, face, 7.0, 12.0, R, K, NULL));
+    PetscCall(TslElementFaceLoad(&c->in, kind, face, kind == TSL_FACE_FILM ? &(TslFaceLoadValue){7.0, 12.0, 0} : &RADIATION, R, K, NULL));
   }
   PetscCheck(!inv, PETSC_COMM_SELF, PETSC_ERR_PLIB, "unexpected inverted element");
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -385,8 +389,9 @@ static PetscErrorCode PartResidual(Case *c, PetscInt face, PetscReal R[], PetscR
 
 /* K against central differences of R on a distorted element with a transient capacity term, block by
  * block (u-u, u-theta, theta-u, theta-theta), each relative to the largest entry of its block. */
-static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face)
+static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face, TslFaceLoadKind kind)
 {
+  const char        *what = kind == TSL_FACE_FILM ? "film" : "radiation";
   static const char *block_name[2][2] = {{"uu", "u-theta"}, {"theta-u", "theta-theta"}};
   const PetscInt     nd = NDof(c), ndof = c->type->ndof;
   PetscReal          K[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF], R[TSL_MAX_ELEM_DOF], Rp[TSL_MAX_ELEM_DOF], Rm[TSL_MAX_ELEM_DOF];
@@ -395,13 +400,13 @@ static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face)
   PetscFunctionBeginUser;
   c->shift = 10;
   for (PetscInt i = 0; i < nd; i++) c->u[i] = (i % ndof == ndof - 1) ? THETA0 + 10 * PetscSinReal(1.1 * i + 0.3) : 0.01 * PetscCosReal(2.3 * i + 0.1);
-  PetscCall(PartResidual(c, face, R, K));
+  PetscCall(PartResidual(c, face, kind, R, K));
   for (PetscInt j = 0; j < nd; j++) {
     const PetscReal save = c->u[j], h = 1e-6 * PetscMax(1, PetscAbsReal(save));
     c->u[j] = save + h;
-    PetscCall(PartResidual(c, face, Rp, NULL));
+    PetscCall(PartResidual(c, face, kind, Rp, NULL));
     c->u[j] = save - h;
-    PetscCall(PartResidual(c, face, Rm, NULL));
+    PetscCall(PartResidual(c, face, kind, Rm, NULL));
     c->u[j] = save;
     for (PetscInt i = 0; i < nd; i++) {
       const PetscInt bi = i % ndof == ndof - 1, bj = j % ndof == ndof - 1;
@@ -412,15 +417,15 @@ static PetscErrorCode CheckTangent(TestLog *log, Case *c, PetscInt face)
   c->shift = 0;
   for (PetscInt bi = 0; bi < 2; bi++)
     for (PetscInt bj = 0; bj < 2; bj++) {
-      /* blocks that are exactly zero (theta-u; all but theta-theta for a film) compare absolutely */
+      /* blocks that are exactly zero (theta-u; all but theta-theta for a film or radiation) compare absolutely */
       const PetscReal scale = kmax[bi][bj] > 0 ? kmax[bi][bj] : 1;
       if (face > 0)
-        Check(log, err[bi][bj] / scale, 0, 1e-6, "%s film on S%" PetscInt_FMT " tangent %s block vs central differences (relative)", c->type->name,
-              face, block_name[bi][bj]);
+        Check(log, err[bi][bj] / scale, 0, 1e-6, "%s %s on S%" PetscInt_FMT " tangent %s block vs central differences (relative)", c->type->name,
+              what, face, block_name[bi][bj]);
       else
         Check(log, err[bi][bj] / scale, 0, 1e-6, "%s tangent %s block vs central differences (relative)", c->type->name, block_name[bi][bj]);
     }
-  if (face > 0) Check(log, kmax[1][1] > 0, 1, 0, "%s film on S%" PetscInt_FMT " has a theta-theta tangent", c->type->name, face);
+  if (face > 0) Check(log, kmax[1][1] > 0, 1, 0, "%s %s on S%" PetscInt_FMT " has a theta-theta tangent", c->type->name, what, face);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -440,25 +445,37 @@ static PetscErrorCode CheckFaceLoads(TestLog *log, Case *c)
     FaceAreaVector(c, f, Avec);
     area = PetscSqrtReal(Avec[0] * Avec[0] + Avec[1] * Avec[1] + Avec[2] * Avec[2]);
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
-    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_PRESSURE, f + 1, p, 0, R, NULL, NULL));
+    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_PRESSURE, f + 1, &(TslFaceLoadValue){p, 0, 0}, R, NULL, NULL));
     for (PetscInt a = 0; a < g->nnode; a++)
       for (PetscInt i = 0; i < dim; i++) force[i] -= R[ndof * a + i];
     for (PetscInt i = 0; i < dim; i++)
       Check(log, force[i], -p * Avec[i], 1e-12, "%s S%" PetscInt_FMT " pressure force %" PetscInt_FMT, c->type->name, f + 1, i + 1);
 
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
-    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_FLUX, f + 1, q, 0, R, NULL, &heat));
+    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_FLUX, f + 1, &(TslFaceLoadValue){q, 0, 0}, R, NULL, &heat));
     sumt = 0;
     for (PetscInt i = ndof - 1; i < nd; i += ndof) sumt += R[i];
     Check(log, heat, q * area, 1e-12, "%s S%" PetscInt_FMT " flux heat", c->type->name, f + 1);
     Check(log, sumt, -q * area, 1e-12, "%s S%" PetscInt_FMT " flux residual sum", c->type->name, f + 1);
 
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
-    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_FILM, f + 1, h, sink, R, NULL, &heat));
+    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_FILM, f + 1, &(TslFaceLoadValue){h, sink, 0}, R, NULL, &heat));
     sumt = 0;
     for (PetscInt i = ndof - 1; i < nd; i += ndof) sumt += R[i];
     Check(log, heat, -h * (theta - sink) * area, 1e-10, "%s S%" PetscInt_FMT " film heat", c->type->name, f + 1);
     Check(log, sumt, h * (theta - sink) * area, 1e-10, "%s S%" PetscInt_FMT " film residual sum", c->type->name, f + 1);
+
+    /* radiation at a uniform temperature: q = sigma eps [(theta - theta_Z)^4 - (theta_a - theta_Z)^4] over the area */
+    {
+      const PetscReal ta = theta - RADIATION.zero, sa = RADIATION.sink - RADIATION.zero;
+      const PetscReal qr = RADIATION.value * (ta * ta * ta * ta - sa * sa * sa * sa);
+      for (PetscInt i = 0; i < nd; i++) R[i] = 0;
+      PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_RADIATION, f + 1, &RADIATION, R, NULL, &heat));
+      sumt = 0;
+      for (PetscInt i = ndof - 1; i < nd; i += ndof) sumt += R[i];
+      CheckRel(log, heat, -qr * area, 1e-12, 0, "%s S%" PetscInt_FMT " radiation heat", c->type->name, f + 1);
+      CheckRel(log, sumt, qr * area, 1e-12, 0, "%s S%" PetscInt_FMT " radiation residual sum", c->type->name, f + 1);
+    }
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -502,7 +519,7 @@ static PetscErrorCode CheckBodyFlux(TestLog *log, Case *c)
 
   PetscFunctionBeginUser;
   for (PetscInt i = 0; i < nd; i++) R[i] = 0;
-  PetscCall(TslElementFaceLoad(&c->in, TSL_BODY_FLUX, 0, q, 0, R, NULL, &heat));
+  PetscCall(TslElementFaceLoad(&c->in, TSL_BODY_FLUX, 0, &(TslFaceLoadValue){q, 0, 0}, R, NULL, &heat));
   for (PetscInt a = 0; a < g->nnode; a++) sum += R[ndof * a + th];
   Check(log, heat, q * UnitVolume(c), 1e-12, "%s body flux heat", c->type->name);
   Check(log, sum, -q * UnitVolume(c), 1e-12, "%s body flux residual sum", c->type->name);
@@ -654,7 +671,7 @@ static PetscErrorCode CheckPositivePressure(TestLog *log, Case *c)
     FaceAreaVector(c, f, A);
     for (PetscInt i = 0; i < dim; i++) a2 += A[i] * A[i];
     for (PetscInt i = 0; i < nd; i++) R[i] = 0;
-    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_PRESSURE, f + 1, 1.0, 0, R, NULL, NULL));
+    PetscCall(TslElementFaceLoad(&c->in, TSL_FACE_PRESSURE, f + 1, &(TslFaceLoadValue){1.0, 0, 0}, R, NULL, NULL));
     for (PetscInt k = 0; k < g->face_nnode[f]; k++) {
       PetscReal fn = 0;
       for (PetscInt i = 0; i < dim; i++) fn += R[ndof * g->face_node[f][k] + i] * A[i];
@@ -823,12 +840,15 @@ int main(int argc, char **argv)
     PetscCall(CheckBodyForce(&log, &c));
     for (PetscInt f = 0; f <= type->geom->nface; f++) {
       CaseSetUp(&c, type, 0.08);
-      PetscCall(CheckTangent(&log, &c, f));
+      PetscCall(CheckTangent(&log, &c, f, TSL_FACE_FILM));
+      if (f == 0) continue;
+      CaseSetUp(&c, type, 0.08);
+      PetscCall(CheckTangent(&log, &c, f, TSL_FACE_RADIATION));
     }
     CaseSetUp(&c, type, 0.08);
     TemperatureDependent(&c);
     printf("(temperature-dependent properties)\n");
-    PetscCall(CheckTangent(&log, &c, 0));
+    PetscCall(CheckTangent(&log, &c, 0, TSL_FACE_FILM));
     if (type->kin == TSL_KIN_AXISYMMETRIC_TWIST) {
       CaseSetUp(&c, type, 0);
       PetscCall(CheckTorsion(&log, &c));
@@ -861,7 +881,7 @@ int main(int argc, char **argv)
       PetscCall(CheckLinearTemperature(&log, &c));
       CaseSetUp(&c, type, 0.08);
       (void)Collapse(&c);
-      PetscCall(CheckTangent(&log, &c, 0));
+      PetscCall(CheckTangent(&log, &c, 0, TSL_FACE_FILM));
     }
     if (type->kin == TSL_KIN_CONTINUUM_SHELL) {
       CaseSetUp(&c, type, 0.08);

@@ -355,14 +355,14 @@ static PetscErrorCode ElementFaceLoads(const Grid *grid, PetscInt e, const TslEl
     const GridFaceLoad *ld = &grid->load[l];
     if (ld->kind == TSL_BODY_FLUX) {
       PetscReal h;
-      PetscCall(TslElementFaceLoad(in, ld->kind, 0, ld->value, ld->value2, Re, Ke, &h));
+      PetscCall(TslElementFaceLoad(in, ld->kind, 0, &(TslFaceLoadValue){ld->value, ld->value2, 0}, Re, Ke, &h));
       if (heat) *heat += h;
       continue;
     }
     for (PetscInt f = 0; f < grid->type->geom->nface; f++) {
       PetscReal h;
       if (!GridFaceOnPlane(grid, e, f, ld->d, ld->plane)) continue;
-      PetscCall(TslElementFaceLoad(in, ld->kind, f + 1, ld->value, ld->value2, Re, Ke, &h));
+      PetscCall(TslElementFaceLoad(in, ld->kind, f + 1, &(TslFaceLoadValue){ld->value, ld->value2, 0}, Re, Ke, &h));
       if (heat) *heat += h;
     }
   }
