@@ -138,8 +138,15 @@ typedef enum {
   TSL_LOAD_DLOAD,        /* *DLOAD: pressure on face (face 1..6 = P1..P6), or a body force (GRAV, CENTRIF: face 0, body) */
   TSL_LOAD_DFLUX,        /* *DFLUX (face 1..6 = S1..S6, face 0 = BF body flux) and *DSFLUX (surface) */
   TSL_LOAD_FILM,         /* *FILM / *SFILM: face 1..6 = F1..F6 or surface; value = h, sink */
+  TSL_LOAD_RADIATE,      /* *RADIATE / *SRADIATE: face 1..6 = R1..R6 or surface; value = emissivity, sink = ambient temperature */
   TSL_LOAD_NKINDS
 } TslLoadKind;
+
+/* Does the kind act on element faces or bodies (DLOAD, DFLUX, FILM, RADIATE) rather than on nodes? */
+static inline PetscBool TslLoadKindOnElements(TslLoadKind kind)
+{
+  return kind > TSL_LOAD_CFLUX && kind < TSL_LOAD_NKINDS ? PETSC_TRUE : PETSC_FALSE;
+}
 
 /* *DLOAD's body forces (face 0): none (a pressure: TSL_DLOAD_FACE), GRAV (value g, axis[0..2] the unit direction) or CENTRIF
  * (value omega^2, axis[0..2] a point of the axis, axis[3..5] its unit direction). */
@@ -150,15 +157,15 @@ typedef enum { TSL_DLOAD_FACE = 0, TSL_DLOAD_GRAV, TSL_DLOAD_CENTRIF } TslDload;
 typedef struct {
   TslLoadKind kind;
   TslTarget   target;            /* node/nset (BOUNDARY, CLOAD, CFLUX), element/elset or surface (faces) */
-  PetscBool   target_is_surface; /* target.set names a *SURFACE (DSFLUX, surface film, surface dload) */
+  PetscBool   target_is_surface; /* target.set names a *SURFACE (DSFLUX, surface film or radiation, surface dload) */
   PetscInt    dof_first, dof_last;
   PetscInt    face;           /* 1..6 for face loads; 0 = body (BF, GRAV, CENTRIF) */
   TslDload    dload;          /* *DLOAD GRAV / CENTRIF (TSL_DLOAD_FACE otherwise) */
   PetscReal   axis[6];        /* GRAV: unit direction; CENTRIF: point, unit axis direction */
-  PetscReal   value;          /* magnitude, prescribed value, flux, or film coefficient */
-  PetscReal   sink;           /* FILM sink temperature */
-  PetscInt    amplitude;      /* index into amplitudes[], -1 = step default */
-  PetscInt    film_amplitude; /* FILM AMPLITUDE= (scales h), -1 = none */
+  PetscReal   value;          /* magnitude, prescribed value, flux, film coefficient, or emissivity */
+  PetscReal   sink;           /* FILM sink temperature, RADIATE ambient temperature */
+  PetscInt    amplitude;      /* index into amplitudes[], -1 = step default (FILM, RADIATE: scales the sink) */
+  PetscInt    film_amplitude; /* FILM AMPLITUDE= (scales h) or RADIATION AMPLITUDE= (scales the emissivity), -1 = none */
   PetscBool   op_new;         /* OP=NEW on this keyword: previous loads of this kind are removed */
   PetscBool   fixed;          /* *BOUNDARY, FIXED: hold the dofs at their values at the start of the step */
   PetscBool   velocity;       /* *BOUNDARY, TYPE=VELOCITY: value is a velocity, the dof follows its time integral */

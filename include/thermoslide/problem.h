@@ -23,12 +23,13 @@ typedef struct _p_TslProblem *TslProblem;
 typedef struct {
   PetscReal heat_in;        /* applied heat: CFLUX + surface and body fluxes */
   PetscReal film_out;       /* heat leaving through films */
+  PetscReal radiation_out;  /* heat radiated to the ambient (*RADIATE, *SRADIATE) */
   PetscReal reaction_heat;  /* heat entering through prescribed temperatures (sum of RFL) */
   PetscReal stored_rate;    /* change of stored heat over the increment / dt (0 in steady state) */
   PetscReal interface_heat; /* heat crossing contact interfaces, main -> secondary (internal) */
   PetscReal dissipation;    /* frictional dissipation rate */
   PetscReal friction_heat;  /* part of the dissipation converted to heat (eta) */
-  PetscReal balance;        /* heat_in + reaction_heat + friction_heat - film_out - stored_rate */
+  PetscReal balance;        /* heat_in + reaction_heat + friction_heat - film_out - radiation_out - stored_rate */
   PetscReal strain_energy, hourglass_energy; /* of the elements, as TslProblemEnergies (from the same pass) */
 } TslHeatBalance;
 
@@ -153,6 +154,7 @@ PetscErrorCode TslProblemImplicitRecords(TslProblem prob, PetscBool use, PetscIn
 typedef struct {
   PetscReal heat_in;        /* applied heat: CFLUX + surface and body fluxes */
   PetscReal film_out;       /* heat leaving through films */
+  PetscReal radiation_out;  /* heat radiated to the ambient */
   PetscReal interface_heat; /* heat crossing contact interfaces (main -> secondary) */
   PetscReal dissipation;    /* frictional dissipation */
   PetscReal friction_heat;  /* part of it converted to heat */

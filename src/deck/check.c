@@ -561,7 +561,7 @@ static PetscErrorCode CheckSteps(TslModel *m)
     PetscCall(CheckExplicitStep(m, s));
     for (PetscInt k = 0; k < s->nload; k++) {
       const TslLoad     *l                   = &s->loads[k];
-      static const char *kw[TSL_LOAD_NKINDS] = {NULL, NULL, "*CFLUX", NULL, "*DFLUX or *DSFLUX", "*FILM or *SFILM"};
+      static const char *kw[TSL_LOAD_NKINDS] = {NULL, NULL, "*CFLUX", NULL, "*DFLUX or *DSFLUX", "*FILM or *SFILM", "*RADIATE or *SRADIATE"};
       CHECK(!s->statik || !kw[l->kind] || (!l->target.set[0] && l->target.id < 0), l->loc,
             "%s in a *STATIC step: a static step holds the temperatures (no heat transfer); thermal loads need *COUPLED TEMPERATURE-DISPLACEMENT "
             "(step %s)",

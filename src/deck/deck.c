@@ -2440,6 +2440,7 @@ static PetscErrorCode LoadFace(Deck *d, TslLoad *l, char prefix, PetscBool surfa
              body ? " or BF" : "", prefix,
              prefix == 'S'   ? ", or SPOS / SNEG on shells"
              : prefix == 'F' ? ", or FPOS / FNEG on shells"
+             : prefix == 'R' ? ", or RPOS / RNEG on shells"
                              : "");
   if (l->face == 0) {
     USER_CHECK(l->target.set[0], LOC_FMT "label %c needs a surface name, not an element id", DLOC(d), prefix);
@@ -2557,6 +2558,40 @@ static PetscErrorCode LineFilm(Deck *d, TslLoad *l)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *RADIATE (element or element set, R1..R6 / RPOS / RNEG, or surface, R) and *SRADIATE (surface, R): "target,
+ * label, ambient temperature, emissivity" (the CalculiX manual's *RADIATE; Abaqus's *SRADIATE). The law works
+ * in absolute temperature, so both physical constants must be given in the model data before the first step
+ * (a deck without them would radiate on the wrong scale). Nonuniform (RxNU: a user subroutine) and cavity
+ * radiation (RxCR: view factors between faces) are not modelled: errors, not a uniform radiation. */
+static PetscErrorCode LineRadiate(Deck *d, TslLoad *l)
+{
+  const PetscBool sradiate = d->kw[0] == 'S' ? PETSC_TRUE : PETSC_FALSE;
+  const char     *f        = d->field[1], *rest;
+
+  PetscFunctionBeginUser;
+  rest = f + (toupper((unsigned char)f[0]) == 'R' ? 1 : 0);
+  if (*rest >= '0' && *rest <= '9') rest++;
+  USER_CHECK(!(toupper((unsigned char)rest[0]) == 'N' && toupper((unsigned char)rest[1]) == 'U'),
+             LOC_FMT "nonuniform radiation (label %s: the emissivity and ambient temperature from a user subroutine) is not supported", DLOC(d), f);
+  USER_CHECK(!(toupper((unsigned char)rest[0]) == 'C' && toupper((unsigned char)rest[1]) == 'R'),
+             LOC_FMT "cavity radiation (label %s: view factors between faces) is not supported (Rx radiates to an ambient temperature)", DLOC(d), f);
+  USER_CHECK(d->nfield == 4, LOC_FMT "*%s data line needs: %s, ambient temperature, emissivity", DLOC(d), d->kw,
+             sradiate ? "surface, R" : "element, element set or surface, R1..R6 or R");
+  if (sradiate) USER_CHECK(l->target.set[0], LOC_FMT "*SRADIATE needs a surface name", DLOC(d));
+  USER_CHECK(d->m->has_absolute_zero && d->m->has_stefan_boltzmann,
+             LOC_FMT "*%s needs *PHYSICAL CONSTANTS with ABSOLUTE ZERO= and STEFAN BOLTZMANN= in the model data (missing: %s)", KLOC(d), d->kw,
+             !d->m->has_absolute_zero && !d->m->has_stefan_boltzmann ? "both"
+             : !d->m->has_absolute_zero                              ? "ABSOLUTE ZERO"
+                                                                     : "STEFAN BOLTZMANN");
+  PetscCall(LoadFace(d, l, 'R', sradiate, PETSC_FALSE));
+  PetscCall(FieldReal(d, 2, "the ambient temperature", &l->sink));
+  PetscCall(FieldReal(d, 3, "the emissivity", &l->value));
+  USER_CHECK(l->value > 0 && l->value <= 1, LOC_FMT "the emissivity must lie in (0, 1] (got %g)", DLOC(d), (double)l->value);
+  USER_CHECK(l->sink >= d->m->absolute_zero, LOC_FMT "the ambient temperature %g lies below absolute zero (%g, *PHYSICAL CONSTANTS)", DLOC(d),
+             (double)l->sink, (double)d->m->absolute_zero);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode AmplitudeParam(Deck *d, const char *key, PetscInt *index)
 {
   const char *a = Param(d, key);
@@ -2610,7 +2645,7 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
   USER_CHECK(!velocity || !Param(d, "FIXED"), LOC_FMT "*BOUNDARY: FIXED and TYPE=VELOCITY exclude each other", KLOC(d));
   if (model) PetscCall(ModelLoadCheck(d, op));
   PetscCall(AmplitudeParam(d, "AMPLITUDE", &amp));
-  PetscCall(AmplitudeParam(d, "FILM AMPLITUDE", &famp));
+  PetscCall(AmplitudeParam(d, kw->kind == TSL_LOAD_RADIATE ? "RADIATION AMPLITUDE" : "FILM AMPLITUDE", &famp));
   for (;;) {
     TslLoad l;
     PetscCall(DataLine(d, 0, &got));
@@ -3152,6 +3187,8 @@ static const DeckKeyword Keywords[] = {
     {"DSFLUX", AT_STEP, IN_NONE, LOAD_PARAMS, KwLoad, TSL_LOAD_DFLUX, LineDsflux},
     {"FILM", AT_STEP, IN_NONE, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
     {"SFILM", AT_STEP, IN_NONE, LOAD_PARAMS "|FILM AMPLITUDE", KwLoad, TSL_LOAD_FILM, LineFilm},
+    {"RADIATE", AT_STEP, IN_NONE, LOAD_PARAMS "|RADIATION AMPLITUDE", KwLoad, TSL_LOAD_RADIATE, LineRadiate},
+    {"SRADIATE", AT_STEP, IN_NONE, LOAD_PARAMS "|RADIATION AMPLITUDE", KwLoad, TSL_LOAD_RADIATE, LineRadiate},
     {"OUTPUT", AT_BOTH, IN_NONE, "FIELD|HISTORY|FREQUENCY|NUMBER INTERVAL|TIME INTERVAL|VARIABLE", KwOutput, 0, NULL},
     {"NODE OUTPUT", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
     {"NODE FILE", AT_STEP, IN_NONE, "NSET|FREQUENCY", KwOutputRequest, OUT_NODE, NULL},
@@ -3260,6 +3297,8 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
       } Meaningful[] = {
           {"USER", NULL},      {"INPUT", NULL},  {"DEPENDENCIES", "0"},       {"SYSTEM", "R"},       {"VALUE", "RELATIVE"}, {"PERTURBATION", NULL},
           {"COMPOSITE", NULL}, {"TAUMAX", NULL}, {"EXPONENTIAL DECAY", NULL}, {"ANISOTROPIC", NULL}, {"TIME DELAY", NULL},  {"SUBMODEL", NULL},
+          {"RADIATION TIME DELAY", NULL},
+          {"ENVNODE", NULL},
       };
       if (ParamKnown(kw->params, d->pkey[i])) continue;
       for (size_t k = 0; k < sizeof(Meaningful) / sizeof(Meaningful[0]); k++) {

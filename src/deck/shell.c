@@ -12,7 +12,7 @@
  * What follows the expansion (docs/elements.md, "Conventional shells"):
  *  - the element id is the bottom (SNEG side) element's, the top one gets a new id above the deck's
  *    ids, and joins every element set the shell is in; new nodes get ids above the deck's;
- *  - faces SPOS / SNEG (surfaces, *DFLUX labels SPOS / SNEG, *FILM labels FPOS / FNEG) become the top
+ *  - faces SPOS / SNEG (surfaces, *DFLUX labels SPOS / SNEG, *FILM labels FPOS / FNEG, *RADIATE labels RPOS / RNEG) become the top
  *    element's top face and the bottom element's bottom face; *DLOAD's P on an element set of shells is a
  *    pressure on their SPOS faces (pushing against the normal, as the dialect's shell pressure); a body load
  *    (*DFLUX BF, *DLOAD GRAV, CENTRIF) on a shell's id loads both of its elements;
@@ -555,7 +555,7 @@ static PetscErrorCode MapSetsAndFaces(TslModel *m, const TwinMap *tw)
   for (PetscInt s = 0; s < m->nstep; s++)
     for (PetscInt k = 0; k < m->steps[s].nload; k++) {
       TslLoad *l = &m->steps[s].loads[k];
-      if (l->kind == TSL_LOAD_DLOAD || l->kind == TSL_LOAD_DFLUX || l->kind == TSL_LOAD_FILM) PetscCall(MapLoadFace(m, tw, l));
+      if (TslLoadKindOnElements(l->kind)) PetscCall(MapLoadFace(m, tw, l));
     }
   for (PetscInt i = 0; i < nelset; i++) {
     TslSet        *set = &m->elsets[i];

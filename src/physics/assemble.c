@@ -333,12 +333,7 @@ static PetscErrorCode ElementRest(TslProblem p, PetscInt e, const TslElemData *d
     if (K) PetscCall(PetscArrayzero(K, d->nd * d->nd));
     PetscCall(TslProblemRecordLoad(p, r, &d->in, R, K, &h));
     PetscCall(InsertElement(p, c->mode, c->A, c->f, e, d, R, K));
-    if (c->heat) {
-      if (r->kind == TSL_FACE_FILM)
-        c->heat->film += h;
-      else if (r->kind != TSL_FACE_PRESSURE)
-        c->heat->flux_in += h;
-    }
+    if (c->heat) TslAsmHeatAdd(c->heat, r->kind, h);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -1015,7 +1010,7 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
 {
   AsmHeat            heat;
   const PetscScalar *r;
-  PetscReal          loc[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0}, g[9];
+  PetscReal          loc[10] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, g[10];
   TslFailure         fail;
 
   PetscFunctionBeginUser;
@@ -1036,15 +1031,17 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
   loc[3] = heat.stored * p->shift;
   loc[7] = heat.energy[0];
   loc[8] = heat.energy[1];
-  PetscCall(MPIU_Allreduce(loc, g, 9, MPIU_REAL, MPIU_SUM, p->comm));
-  hb->heat_in        = g[0];
-  hb->film_out       = g[1];
-  hb->reaction_heat  = g[2];
-  hb->stored_rate    = g[3];
-  hb->interface_heat = g[4];
-  hb->dissipation    = g[5];
-  hb->friction_heat  = g[6];
-  hb->balance        = g[0] + g[2] + g[6] - g[1] - g[3];
+  loc[9] = -heat.radiation;
+  PetscCall(MPIU_Allreduce(loc, g, 10, MPIU_REAL, MPIU_SUM, p->comm));
+  hb->heat_in          = g[0];
+  hb->film_out         = g[1];
+  hb->radiation_out    = g[9];
+  hb->reaction_heat    = g[2];
+  hb->stored_rate      = g[3];
+  hb->interface_heat   = g[4];
+  hb->dissipation      = g[5];
+  hb->friction_heat    = g[6];
+  hb->balance          = g[0] + g[2] + g[6] - g[1] - g[9] - g[3];
   hb->strain_energy    = g[7];
   hb->hourglass_energy = g[8];
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -25,8 +25,8 @@ typedef struct {
   PetscInt           bad;
 } ForceCtx;
 
-/* One element's face loads: mechanical rows (pressure, body forces) as forces into fe, heat rows (flux, film) in
- * residual form into fi. */
+/* One element's face loads: mechanical rows (pressure, body forces) as forces into fe, heat rows (flux, film,
+ * radiation) in residual form into fi. */
 static PetscErrorCode FaceLoads(TslProblem p, PetscInt e, TslElemData *d, ForceCtx *c)
 {
   PetscReal R[TSL_MAX_ELEM_DOF];
@@ -44,10 +44,7 @@ static PetscErrorCode FaceLoads(TslProblem p, PetscInt e, TslElemData *d, ForceC
       else
         c->fe[d->ld[r]] -= R[r];
     }
-    if (rec->kind == TSL_FACE_FILM)
-      c->heat->film += h;
-    else if (rec->kind != TSL_FACE_PRESSURE)
-      c->heat->flux_in += h;
+    TslAsmHeatAdd(c->heat, rec->kind, h);
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -222,7 +219,8 @@ static void            FastBatch(TslProblem p, PetscInt b, const PetscScalar *xa
  * the face list by the generic kernels themselves at unit values (body forces: R_u = -int N_a rho b dV on the
  * reference configuration at the initial temperature; pressure: R_u = int N_a n dA; flux: R_theta =
  * -int N_a dA, heat = area; film: its tangent int N_a N_b dA, whose rows sum to int N_a dA, as the shape
- * functions sum to one), so FaceLoadsCached gives the generic results to rounding. */
+ * functions sum to one), so FaceLoadsCached gives the generic results to rounding. Radiation, not linear in the
+ * temperature, has no integrals here: its elements take the generic path. */
 static PetscErrorCode FaceCache(TslProblem p, const PetscScalar *xa)
 {
   const PetscInt dim = p->dim, nd = p->ndof, th = nd - 1;
@@ -500,7 +498,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   /* with records on every element and a central-difference move since the last evaluation, the rate of the
    * bulk viscosity comes from the records' centre strains: v is neither exchanged nor gathered */
   const PetscBool    from_u = (PetscBool)(q && h > 0 && p->fast_built && p->fast_all);
-  PetscReal          loc[7], g[7];
+  PetscReal          loc[8], g[8];
   TslFailure         fail;
   PetscErrorCode     ierr;
 
@@ -549,10 +547,10 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(TslProblemCheckBadElement(p, c.bad));
   if (Fc && !p->ncsurf) PetscCall(VecZeroEntries(Fc));
   loc[0] = heat.flux_in, loc[1] = -heat.film, loc[2] = heat.interface, loc[3] = heat.dissipation, loc[4] = heat.friction_heat, loc[5] = c.power;
-  loc[6] = c.prev;
-  PetscCall(MPIU_Allreduce(loc, g, 7, MPIU_REAL, MPIU_SUM, p->comm));
+  loc[6] = c.prev, loc[7] = -heat.radiation;
+  PetscCall(MPIU_Allreduce(loc, g, 8, MPIU_REAL, MPIU_SUM, p->comm));
   rates->heat_in = g[0], rates->film_out = g[1], rates->interface_heat = g[2], rates->dissipation = g[3], rates->friction_heat = g[4];
-  rates->viscous = g[5], rates->viscous_prev = g[6];
+  rates->viscous = g[5], rates->viscous_prev = g[6], rates->radiation_out = g[7];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -7,7 +7,8 @@
  *  - OP=NEW on any line of a kind removes all earlier loads of that kind at the start of the step;
  *  - a value defined without amplitude ramps from its previous value (or, for a newly prescribed dof,
  *    from the current solution) under AMPLITUDE=RAMP, and applies at once under AMPLITUDE=STEP;
- *  - film coefficients and sink temperatures apply at once, scaled by their amplitudes if given;
+ *  - film coefficients, emissivities and sink (ambient) temperatures apply at once, scaled by their
+ *    amplitudes if given;
  *  - *BOUNDARY, FIXED holds the dofs at the values they have at the start of the step.
  */
 #include "problem_impl.h"
@@ -199,7 +200,8 @@ static PetscErrorCode CompactFaces(TslProblem p)
 /* The keyword of each distributed load kind: its OP=NEW removes them. */
 static const TslLoadKind face_keyword[] = {
     [TSL_FACE_PRESSURE] = TSL_LOAD_DLOAD, [TSL_FACE_FLUX] = TSL_LOAD_DFLUX, [TSL_FACE_FILM] = TSL_LOAD_FILM,
-    [TSL_BODY_FLUX] = TSL_LOAD_DFLUX,     [TSL_BODY_GRAV] = TSL_LOAD_DLOAD, [TSL_BODY_CENTRIF] = TSL_LOAD_DLOAD};
+    [TSL_BODY_FLUX] = TSL_LOAD_DFLUX,     [TSL_BODY_GRAV] = TSL_LOAD_DLOAD, [TSL_BODY_CENTRIF] = TSL_LOAD_DLOAD,
+    [TSL_FACE_RADIATION] = TSL_LOAD_RADIATE};
 
 /* The kind of each *DLOAD: a pressure or one of the body forces. */
 static const TslFaceLoadKind dload_kind[] = {
@@ -211,6 +213,7 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
   PetscInt        n, *elem, *face;
   TslFaceLoadKind kind = ld->kind == TSL_LOAD_DLOAD                ? dload_kind[ld->dload]
                          : ld->kind == TSL_LOAD_FILM               ? TSL_FACE_FILM
+                         : ld->kind == TSL_LOAD_RADIATE            ? TSL_FACE_RADIATION
                          : ld->face == 0 && !ld->target_is_surface ? TSL_BODY_FLUX /* BF; *DSFLUX's S (face 0 too) is on the surface's faces */
                                                                    : TSL_FACE_FLUX;
   char            loc[PETSC_MAX_PATH_LEN + 32];
@@ -230,8 +233,10 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
     r->face = face[i];
     r->kind = kind;
     r->seq  = p->face_seq++;
-    if (kind == TSL_FACE_FILM) {
-      r->value    = (TslLoadValue){PETSC_TRUE, ld->value, ld->value, TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE};
+    if (kind == TSL_FACE_FILM || kind == TSL_FACE_RADIATION) {
+      /* the film coefficient h, or the radiation coefficient sigma eps (the kernels' value) */
+      const PetscReal c = kind == TSL_FACE_RADIATION ? m->stefan_boltzmann * ld->value : ld->value;
+      r->value          = (TslLoadValue){PETSC_TRUE, c, c, TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE};
       r->sink     = (TslLoadValue){PETSC_TRUE, ld->sink, ld->sink, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE};
       r->film_amp = ld->film_amplitude;
     } else {
@@ -306,7 +311,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
     if (clear[TSL_LOAD_BOUNDARY]) p->bc[d].active = PETSC_FALSE;
     if ((clear[TSL_LOAD_CLOAD] && !theta) || (clear[TSL_LOAD_CFLUX] && theta)) p->nload[d].active = PETSC_FALSE;
   }
-  if (clear[TSL_LOAD_DLOAD] || clear[TSL_LOAD_DFLUX] || clear[TSL_LOAD_FILM]) {
+  if (clear[TSL_LOAD_DLOAD] || clear[TSL_LOAD_DFLUX] || clear[TSL_LOAD_FILM] || clear[TSL_LOAD_RADIATE]) {
     PetscInt n = 0;
     for (PetscInt i = 0; i < p->nface; i++) {
       if (!clear[face_keyword[p->face[i].kind]]) p->face[n++] = p->face[i];

@@ -80,9 +80,9 @@ typedef struct {
 typedef struct {
   PetscInt        elem, face; /* local element, face 1..6 (0: body) */
   TslFaceLoadKind kind;
-  TslLoadValue    value;    /* pressure, flux or film coefficient */
-  TslLoadValue    sink;     /* film sink temperature */
-  PetscInt        film_amp; /* amplitude scaling the film coefficient, or -1 */
+  TslLoadValue    value;    /* pressure, flux, film coefficient, or radiation coefficient sigma eps */
+  TslLoadValue    sink;     /* film sink or radiation ambient temperature */
+  PetscInt        film_amp; /* amplitude scaling the film or radiation coefficient (FILM / RADIATION AMPLITUDE), or -1 */
   PetscInt        seq;      /* order of definition (later replaces earlier) */
   PetscReal       axis[6];  /* body forces (GRAV, CENTRIF): the load's direction, point and axis (TslLoad.axis) */
 } TslFaceRecord;
@@ -236,12 +236,33 @@ static inline void TslProblemContactChatterNote(TslProblem p, TslContactStatus w
 typedef struct {
   PetscReal flux_in;       /* heat added by fluxes (faces, body, nodes) */
   PetscReal film;          /* heat added by films (negative when heat leaves) */
+  PetscReal radiation;     /* heat added by radiation to the ambient (negative when heat leaves) */
   PetscReal interface;     /* heat conducted and radiated across contact interfaces (main -> secondary) */
   PetscReal dissipation;   /* frictional dissipation rate */
   PetscReal friction_heat; /* part of it converted to heat (eta) */
   PetscReal stored;        /* sum of the lumped heat contents' change over the increment (Q - Q_old) */
   PetscReal energy[2];     /* the elements' strain and hourglass energies (TslElementInternalEnergy) */
 } AsmHeat;
+
+/* Books the heat h that a face record of this kind added (TslElementFaceLoad's *heat) in its total; mechanical
+ * kinds add none. */
+static inline void TslAsmHeatAdd(AsmHeat *heat, TslFaceLoadKind kind, PetscReal h)
+{
+  switch (kind) {
+  case TSL_FACE_FLUX:
+  case TSL_BODY_FLUX:
+    heat->flux_in += h;
+    break;
+  case TSL_FACE_FILM:
+    heat->film += h;
+    break;
+  case TSL_FACE_RADIATION:
+    heat->radiation += h;
+    break;
+  default:
+    break;
+  }
+}
 
 /* Local form (owned + ghosts) of the current solution, ghosts updated; restore when done. */
 PetscErrorCode TslProblemGetLocalSolution(TslProblem p, Vec *xl, const PetscScalar **xa);

@@ -4,7 +4,7 @@
  * sharing nodes, or tied by *EQUATION) must have its rigid-body modes removed by prescribed
  * displacements: the Gram matrix of the modes restricted to the prescribed dofs must have full rank
  * (3 modes in plane models, 1 (axial translation) in axisymmetric ones, 6 in 3D). In steady-state steps
- * each body also needs a prescribed temperature or a film, or its temperature is undetermined.
+ * each body also needs a prescribed temperature, a film or radiation, or its temperature is undetermined.
  * Bodies joined by a contact pair count as one: contact is assumed to hold the secondary body.
  */
 #include <thermoslide/problem.h>
@@ -63,15 +63,15 @@ static void MarkTarget(const TslModel *g, const TslTarget *t, PetscInt dof_first
   }
 }
 
-/* Elements of a face-load target get a film mark. */
-static void MarkFilm(const TslModel *g, const TslLoad *ld, char *film)
+/* Elements of a face-load target get the mark bit (the exchanges that fix a steady temperature: film, radiation). */
+static void MarkExchange(const TslModel *g, const TslLoad *ld, char bit, char *film)
 {
   PetscInt k, n;
   if (ld->target_is_surface) {
     k = TslModelFindSurface(g, ld->target.set);
     for (PetscInt i = 0; k >= 0 && i < g->surfaces[k].n; i++) {
       PetscInt e = TslModelElementIndex(g, g->surfaces[k].elem[i]);
-      if (e >= 0) film[e] = 1;
+      if (e >= 0) film[e] |= bit;
     }
     return;
   }
@@ -79,7 +79,7 @@ static void MarkFilm(const TslModel *g, const TslLoad *ld, char *film)
   n = k >= 0 ? g->elsets[k].n : 1;
   for (PetscInt i = 0; i < n; i++) {
     PetscInt e = TslModelElementIndex(g, k >= 0 ? g->elsets[k].ids[i] : ld->target.id);
-    if (e >= 0) film[e] = 1;
+    if (e >= 0) film[e] |= bit;
   }
 }
 
@@ -144,18 +144,21 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
   PetscCall(PetscMalloc2(36 * nbody, &gram, nbody, &thermal));
   for (PetscInt s = 0; s < g->nstep; s++) {
     const TslStep *step     = &g->steps[s];
-    PetscBool      clear_bc = PETSC_FALSE, clear_film = PETSC_FALSE;
-    char           loc[PETSC_MAX_PATH_LEN + 32];
+    /* film[e]: bit 1 a film, bit 2 radiation, each removed by its own keyword's OP=NEW */
+    PetscBool clear_bc   = PETSC_FALSE;
+    char      clear_film = 0, loc[PETSC_MAX_PATH_LEN + 32];
     for (PetscInt i = 0; i < step->nload; i++) {
       if (step->loads[i].kind == TSL_LOAD_BOUNDARY && step->loads[i].op_new) clear_bc = PETSC_TRUE;
-      if (step->loads[i].kind == TSL_LOAD_FILM && step->loads[i].op_new) clear_film = PETSC_TRUE;
+      if (step->loads[i].kind == TSL_LOAD_FILM && step->loads[i].op_new) clear_film |= 1;
+      if (step->loads[i].kind == TSL_LOAD_RADIATE && step->loads[i].op_new) clear_film |= 2;
     }
     if (clear_bc) PetscCall(PetscArrayzero(fixed, TSL_MAX_NODE_DOF * nn));
-    if (clear_film) PetscCall(PetscArrayzero(film, g->nelem));
+    for (PetscInt e = 0; clear_film && e < g->nelem; e++) film[e] &= (char)~clear_film;
     for (PetscInt i = 0; i < step->nload; i++) {
       const TslLoad *ld = &step->loads[i];
       if (ld->kind == TSL_LOAD_BOUNDARY) MarkTarget(g, &ld->target, ld->dof_first, ld->dof_last, extra, fixed);
-      if (ld->kind == TSL_LOAD_FILM) MarkFilm(g, ld, film);
+      if (ld->kind == TSL_LOAD_FILM) MarkExchange(g, ld, 1, film);
+      if (ld->kind == TSL_LOAD_RADIATE) MarkExchange(g, ld, 2, film);
     }
     /* one pass over the nodes and elements: Gram matrix and thermal support of every body */
     PetscCall(PetscArrayzero(gram, 36 * nbody));

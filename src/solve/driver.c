@@ -722,25 +722,28 @@ static PetscErrorCode Accept(Driver *d, PetscInt s, PetscInt inc, PetscReal t, P
   d->absorbed += hb.friction_heat * h;
   PetscCall(PetscPrintf(d->comm,
                         "  step %" PetscInt_FMT " increment %" PetscInt_FMT ": time %.6g  dt %.4g  newton %" PetscInt_FMT "  linear %" PetscInt_FMT
-                        "  heat in %.6g  film out %.6g  balance %.3g\n",
-                        s + 1, inc, (double)total, (double)h, its, lits, (double)hb.heat_in, (double)hb.film_out, (double)hb.balance));
-  row[0]  = (PetscReal)(s + 1);
-  row[1]  = (PetscReal)inc;
-  row[2]  = total;
-  row[3]  = t;
-  row[4]  = h;
-  row[5]  = (PetscReal)its;
-  row[6]  = hb.heat_in;
-  row[7]  = hb.film_out;
-  row[8]  = hb.reaction_heat;
-  row[9]  = hb.stored_rate;
-  row[10] = hb.interface_heat;
-  row[11] = hb.dissipation;
-  row[12] = d->dissipated;
-  row[13] = d->absorbed;
-  row[14] = hb.balance;
-  row[15] = hb.strain_energy;
-  row[16] = hb.hourglass_energy;
+                        "  heat in %.6g  film out %.6g",
+                        s + 1, inc, (double)total, (double)h, its, lits, (double)hb.heat_in, (double)hb.film_out));
+  if (d->radiates) PetscCall(PetscPrintf(d->comm, "  radiated %.6g", (double)hb.radiation_out));
+  PetscCall(PetscPrintf(d->comm, "  balance %.3g\n", (double)hb.balance));
+  row[HIST_STEP]                = (PetscReal)(s + 1);
+  row[HIST_INCREMENT]           = (PetscReal)inc;
+  row[HIST_TIME]                = total;
+  row[HIST_STEP_TIME]           = t;
+  row[HIST_DT]                  = h;
+  row[HIST_NEWTON_ITS]          = (PetscReal)its;
+  row[HIST_HEAT_IN]             = hb.heat_in;
+  row[HIST_FILM_OUT]            = hb.film_out;
+  row[HIST_RADIATION_OUT]       = hb.radiation_out;
+  row[HIST_REACTION_HEAT]       = hb.reaction_heat;
+  row[HIST_STORED_RATE]         = hb.stored_rate;
+  row[HIST_INTERFACE_HEAT]      = hb.interface_heat;
+  row[HIST_DISSIPATION_RATE]    = hb.dissipation;
+  row[HIST_DISSIPATION_TOTAL]   = d->dissipated;
+  row[HIST_FRICTION_HEAT_TOTAL] = d->absorbed;
+  row[HIST_BALANCE]             = hb.balance;
+  row[HIST_STRAIN_ENERGY]       = hb.strain_energy;
+  row[HIST_HOURGLASS_ENERGY]    = hb.hourglass_energy;
   for (PetscInt c = HIST_ENERGY; c < NHISTORY; c++) row[c] = 0; /* the energies of explicit steps */
   PetscCall(TslHistoryAppend(d->hist, row));
   d->done_step = s + 1, d->done_inc = inc, d->done_time = total, d->done_step_time = t, d->done_dt = h;

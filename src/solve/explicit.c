@@ -475,7 +475,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
    * against the heat stored over it; round-off. The history row is written after the next force evaluation,
    * whose rates (state n+1) its heat columns show: their balance with this stored heat would be off by the
    * rates' change over one increment (up to 0.6 of a heat input of 200 where the flux is ramped down) */
-  x->balance = x->rates.heat_in + g[5] + x->rates.friction_heat + x->krates.friction_heat - x->rates.film_out - g[6];
+  x->balance = x->rates.heat_in + g[5] + x->rates.friction_heat + x->krates.friction_heat - x->rates.film_out - x->rates.radiation_out - g[6];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -526,22 +526,23 @@ static PetscErrorCode HistoryRow(Explicit *x, Energies *en, PetscInt s, PetscInt
 
   PetscFunctionBeginUser;
   PetscCall(KineticEnergy(x, &en->ke));
-  row[0]  = (PetscReal)(s + 1);
-  row[1]  = (PetscReal)inc;
-  row[2]  = total;
-  row[3]  = t;
-  row[4]  = h;
-  row[5]  = 0;
-  row[6]  = x->rates.heat_in;
-  row[7]  = x->rates.film_out;
-  row[8]  = x->rates_reaction_heat;
-  row[9]  = x->stored_rate;
-  row[10] = x->rates.interface_heat + x->krates.interface_heat;
-  row[11] = x->rates.dissipation + x->krates.dissipation;
-  row[12] = en->fd;
-  row[13] = d->absorbed;
-  row[14] = x->balance;
-  PetscCall(TslProblemEnergies(x->p, &row[15], &row[16]));
+  row[HIST_STEP]                = (PetscReal)(s + 1);
+  row[HIST_INCREMENT]           = (PetscReal)inc;
+  row[HIST_TIME]                = total;
+  row[HIST_STEP_TIME]           = t;
+  row[HIST_DT]                  = h;
+  row[HIST_NEWTON_ITS]          = 0;
+  row[HIST_HEAT_IN]             = x->rates.heat_in;
+  row[HIST_FILM_OUT]            = x->rates.film_out;
+  row[HIST_RADIATION_OUT]       = x->rates.radiation_out;
+  row[HIST_REACTION_HEAT]       = x->rates_reaction_heat;
+  row[HIST_STORED_RATE]         = x->stored_rate;
+  row[HIST_INTERFACE_HEAT]      = x->rates.interface_heat + x->krates.interface_heat;
+  row[HIST_DISSIPATION_RATE]    = x->rates.dissipation + x->krates.dissipation;
+  row[HIST_DISSIPATION_TOTAL]   = en->fd;
+  row[HIST_FRICTION_HEAT_TOTAL] = d->absorbed;
+  row[HIST_BALANCE]             = x->balance;
+  PetscCall(TslProblemEnergies(x->p, &row[HIST_STRAIN_ENERGY], &row[HIST_HOURGLASS_ENERGY]));
   row[HIST_ENERGY + 0] = en->ke;
   row[HIST_ENERGY + 1] = en->ie;
   row[HIST_ENERGY + 2] = en->wk;

@@ -11,6 +11,7 @@ const char *const TslHistoryColumns[NHISTORY] = {"step",
                                              "newton_its",
                                              "heat_in",
                                              "film_heat_out",
+                                             "radiation_heat_out",
                                              "reaction_heat",
                                              "stored_heat_rate",
                                              "interface_heat",
@@ -52,6 +53,9 @@ PetscErrorCode TslFramesSetUp(Driver *d, const char *dir, const char *jobname)
                              m->elem_id, xtype, ptr, conn));
   PetscCall(PetscFree3(xtype, conn, ptr));
   PetscCall(TslHistoryCreate(d->comm, dir, jobname, NHISTORY, TslHistoryColumns, &d->hist));
+  for (PetscInt s = 0; s < m->nstep; s++) /* every rank holds the steps whole */
+    for (PetscInt i = 0; i < m->steps[s].nload; i++)
+      if (m->steps[s].loads[i].kind == TSL_LOAD_RADIATE && (m->steps[s].loads[i].target.set[0] || m->steps[s].loads[i].target.id >= 0)) d->radiates = PETSC_TRUE;
   for (PetscInt i = 0; i < TslFieldCount(); i++) {
     PetscInt deflt;
     (void)TslFieldName(i, NULL, &deflt);

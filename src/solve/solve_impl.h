@@ -17,7 +17,29 @@
 #define MAX_FIELDS   32
 
 extern const char *const TslHistoryColumns[];
-#define NHISTORY 25
+#define NHISTORY 26
+/* The place of each column in a row (TslHistoryColumns names them in this order). */
+enum {
+  HIST_STEP = 0,
+  HIST_INCREMENT,
+  HIST_TIME,
+  HIST_STEP_TIME,
+  HIST_DT,
+  HIST_NEWTON_ITS,
+  HIST_HEAT_IN,
+  HIST_FILM_OUT,
+  HIST_RADIATION_OUT,
+  HIST_REACTION_HEAT,
+  HIST_STORED_RATE,
+  HIST_INTERFACE_HEAT,
+  HIST_DISSIPATION_RATE,
+  HIST_DISSIPATION_TOTAL,
+  HIST_FRICTION_HEAT_TOTAL,
+  HIST_BALANCE,
+  HIST_STRAIN_ENERGY,
+  HIST_HOURGLASS_ENERGY,
+  HIST_ENERGY /* the first energy column of explicit steps: ALLKE, ALLIE, ALLWK, ALLFD, ALLCW, ALLMW, ALLVD, ETOTAL */
+};
 
 typedef struct {
   TslProblem prob;
@@ -51,6 +73,7 @@ typedef struct {
   PetscInt   frame_step, frame_inc; /* last frame written */
   PetscInt   done_step, done_inc;   /* last converged increment */
   PetscReal  dissipated, absorbed;  /* frictional dissipation and the heat made of it, since the start */
+  PetscBool  radiates;              /* some step has *RADIATE / *SRADIATE: the increment lines show the heat radiated */
   PetscInt   max_contact_its;
   PetscReal  sync_interval; /* -tsl_output_sync: seconds between syncs of the result files */
   PetscInt   direct_max;    /* -tsl_direct_max_dofs: direct solver by default up to this size */
@@ -99,7 +122,6 @@ typedef struct {
   PetscReal        h_prev;      /* the last accepted increment of the step (0: none yet) */
 } Driver;
 
-#define HIST_ENERGY 17 /* first energy column */
 
 /* The output times of a step given by *OUTPUT, NUMBER INTERVAL=n (every period/n) or TIME INTERVAL=dt (every dt,
  * and the step's end): increments end on them and frames are written there, in implicit and explicit steps
