@@ -187,3 +187,15 @@ tsl_deck_bad(controls_field_negative controls_field_negative.inp "error: control
 tsl_deck_bad(controls_field_unknown controls_field_unknown.inp "error: controls_field_unknown.inp:19: *CONTROLS, PARAMETERS=FIELD: FIELD=ROTATION is not a field of coupled temperature-displacement steps")
 tsl_deck_bad(controls_field_too_many controls_field_too_many.inp "error: controls_field_too_many.inp:20: *CONTROLS, PARAMETERS=FIELD data line: at most 8 values")
 tsl_deck_bad(step_extrapolation step_extrapolation.inp "error: step_extrapolation.inp:18: *STEP, EXTRAPOLATION=QUADRATIC: expected LINEAR, PARABOLIC or NO")
+# *RADIATE / *SRADIATE (issue 45): the physical constants, the emissivity's range, the face, the forms not modelled (nonuniform,
+# cavity), an ambient below absolute zero, a surface form given an element, and radiation in a *STATIC step
+tsl_deck_bad(radiate_no_constants radiate_no_constants.inp "error: radiate_no_constants.inp:25: *RADIATE needs *PHYSICAL CONSTANTS with ABSOLUTE ZERO= and STEFAN BOLTZMANN= in the model data (missing: both)")
+tsl_deck_bad(radiate_no_stefan_boltzmann radiate_no_stefan_boltzmann.inp "error: radiate_no_stefan_boltzmann.inp:26: *RADIATE needs *PHYSICAL CONSTANTS with ABSOLUTE ZERO= and STEFAN BOLTZMANN= in the model data (missing: STEFAN BOLTZMANN)")
+tsl_deck_bad(radiate_emissivity_zero radiate_emissivity_zero.inp "error: radiate_emissivity_zero.inp:27: the emissivity must lie in (0, 1] (got 0.)")
+tsl_deck_bad(radiate_emissivity_above_one radiate_emissivity_above_one.inp "error: radiate_emissivity_above_one.inp:27: the emissivity must lie in (0, 1] (got 1.2)")
+tsl_deck_bad(radiate_no_face radiate_no_face.inp "error: radiate_no_face.inp:27: element 1 (CPE4T) has no face 5")
+tsl_deck_bad(radiate_nonuniform radiate_nonuniform.inp "error: radiate_nonuniform.inp:27: nonuniform radiation (label R1NU: the emissivity and ambient temperature from a user subroutine) is not supported")
+tsl_deck_bad(radiate_cavity radiate_cavity.inp "error: radiate_cavity.inp:27: cavity radiation (label R1CR: view factors between faces) is not supported (Rx radiates to an ambient temperature)")
+tsl_deck_bad(radiate_below_absolute_zero radiate_below_absolute_zero.inp "error: radiate_below_absolute_zero.inp:27: the ambient temperature -300. lies below absolute zero (-273.15, *PHYSICAL CONSTANTS)")
+tsl_deck_bad(sradiate_element sradiate_element.inp "error: sradiate_element.inp:27: *SRADIATE needs a surface name")
+tsl_deck_bad(radiate_static radiate_static.inp "error: radiate_static.inp:27: *RADIATE or *SRADIATE in a *STATIC step: a static step holds the temperatures (no heat transfer); thermal loads need *COUPLED TEMPERATURE-DISPLACEMENT (step Step-1)")
