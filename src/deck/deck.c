@@ -2577,6 +2577,8 @@ static PetscErrorCode LineRadiate(Deck *d, TslLoad *l)
              LOC_FMT "cavity radiation (label %s: view factors between faces) is not supported (Rx radiates to an ambient temperature)", DLOC(d), f);
   USER_CHECK(d->nfield == 4, LOC_FMT "*%s data line needs: %s, ambient temperature, emissivity", DLOC(d), d->kw,
              sradiate ? "surface, R" : "element, element set or surface, R1..R6 or R");
+  /* CalculiX writes a surface's label with the face number zero (R0; ccx 2.20 refuses a bare R there) */
+  if ((f[1] == '0') && !f[2] && toupper((unsigned char)f[0]) == 'R') d->field[1][1] = 0;
   if (sradiate) USER_CHECK(l->target.set[0], LOC_FMT "*SRADIATE needs a surface name", DLOC(d));
   USER_CHECK(d->m->has_absolute_zero && d->m->has_stefan_boltzmann,
              LOC_FMT "*%s needs *PHYSICAL CONSTANTS with ABSOLUTE ZERO= and STEFAN BOLTZMANN= in the model data (missing: %s)", KLOC(d), d->kw,

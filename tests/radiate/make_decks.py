@@ -9,7 +9,7 @@ plate_explicit_c3d8t  the same cooling in an explicit step (*DYNAMIC TEMPERATURE
 steady_cpe8t     a bar 2 x 0.5 (4 x 1 CPE8T, k = 20, thickness 1) heated by a flux q = 5000 on x = 0 (*DFLUX S4) and
                  radiating from x = 2 (*SRADIATE on a surface, emissivity 0.6) in kelvin (ABSOLUTE ZERO=0) to 300 K,
                  steady; step 2 the ambient under AMPLITUDE= (x 1.5: 450 K) and the emissivity under RADIATION
-                 AMPLITUDE= (x 0.5: 0.3), step 3 *SRADIATE, OP=NEW with the same surface at 500 K, emissivity 1
+                 AMPLITUDE= (x 0.5: 0.3), step 3 *RADIATE, OP=NEW on the same surface with CalculiX's label R0 at 500 K, emissivity 1
 jacobian_cpe4t   distorted CPE4T with a transient step, radiation on an element face (*RADIATE R3) and a surface
                  (*SRADIATE), an ambient under an amplitude, a flux and a film: for -snes_test_jacobian
 
@@ -109,7 +109,7 @@ def steady():
             "*SRADIATE, AMPLITUDE=AMB, RADIATION AMPLITUDE=EMI", "HOT, R, 300., 0.6",
             "*END STEP",
             "*STEP", "*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE", "1., 1.",
-            "*RADIATE, OP=NEW", "HOT, R, 500., 1.",
+            "*RADIATE, OP=NEW", "HOT, R0, 500., 1.",
             "*END STEP"]
     return out
 
