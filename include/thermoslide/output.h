@@ -13,6 +13,8 @@
  * Layout of <job>.h5:
  *   /mesh/coordinates   [N][3]  double
  *   /mesh/topology      [L]     int64, XDMF "Mixed" records (cell type id, then natural node indices)
+ *   /mesh/connectivity  [M][n]  int64 natural node indices, when every element has one XDMF cell type of n nodes
+ *                               (the .xmf then names that type's topology, Hexahedron_20 ..., instead of Mixed)
  *   /mesh/node_ids      [N]     int64 deck node ids
  *   /mesh/element_ids   [M]     int64 deck element ids
  *   /frames/NNNNNN/<name>  [N][ncomp] (node fields) or [M][ncomp] (element fields) double

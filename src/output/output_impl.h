@@ -58,11 +58,17 @@ struct _p_TslOutput {
   PetscBool           mesh_set, in_frame, finalized;
   PetscInt            nnode_global, nelem_global;
   int64_t             topo_len; /* length of /mesh/topology */
+  const char         *cell_name; /* every element of one XDMF cell type: its topology name (/mesh/connectivity written); NULL: Mixed */
+  PetscInt            cell_nodes; /* ... and its nodes per element */
   TslRedist           nodes, elems;
   PetscInt            nframe, maxframe;
   TslOutputFrameInfo *frames;
   double              sync_interval, last_sync; /* wall seconds between syncs of the .h5 and .xmf.part; last one */
 };
+
+/* The XDMF topology type of a cell type id (XDMF's numbering, as in /mesh/topology): its name and node count, for
+ * a mesh of that type alone; NULL for an id without a fixed node count. */
+const char *TslXdmfTopologyName(PetscInt xdmf_type, PetscInt *nodes);
 
 /* Writes the whole .xmf text for the frames so far to path. Called on rank 0 only; returns 0 or an
  * errno value in *err instead of raising, so the caller can broadcast the outcome. */

@@ -165,6 +165,32 @@ static PetscErrorCode WriteIds(TslOutput out, const TslRedist *rd, const char *n
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* /mesh/connectivity, [M][n] natural node indices, when every element is of one XDMF cell type with n nodes (on every
+ * rank: a rank without elements agrees with any type): the .xmf then gives that type's own topology, which readers
+ * without the quadratic Mixed records take (meshio). blkpad holds this rank's block of the padded records
+ * [type, n0, ...] (maxlen each, natural order). */
+static PetscErrorCode WriteConnectivity(TslOutput out, PetscInt nelem, const PetscInt xdmf_type[], PetscInt maxlen, const int64_t blkpad[])
+{
+  const TslRedist *rd = &out->elems;
+  PetscInt         range[2] = {PETSC_MAX_INT, PETSC_MAX_INT}, n; /* min type, -max type */
+  int64_t         *conn;
+
+  PetscFunctionBeginUser;
+  out->cell_name = NULL;
+  for (PetscInt e = 0; e < nelem; e++) range[0] = PetscMin(range[0], xdmf_type[e]), range[1] = PetscMin(range[1], -xdmf_type[e]);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, range, 2, MPIU_INT, MPI_MIN, out->comm));
+  if (out->nelem_global == 0 || range[0] != -range[1]) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!TslXdmfTopologyName(range[0], &n) || n != maxlen - 1) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscMalloc1(rd->nblock * n, &conn));
+  for (PetscInt k = 0; k < rd->nblock; k++)
+    for (PetscInt j = 0; j < n; j++) conn[k * n + j] = blkpad[k * maxlen + 1 + j];
+  PetscCall(WriteRows(out, out->file, "/mesh/connectivity", H5T_STD_I64LE, H5T_NATIVE_INT64, (hsize_t)rd->nglobal, (hsize_t)n, (hsize_t)rd->bstart,
+                      (hsize_t)rd->nblock, conn));
+  PetscCall(PetscFree(conn));
+  out->cell_name  = TslXdmfTopologyName(range[0], &out->cell_nodes);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* /mesh/topology: XDMF Mixed records [type, n0, n1, ...] in natural element order. Records differ in
  * length, so they travel padded to the longest one; each block then packs its records and finds its
  * offset in the file by an exclusive scan of the block lengths. */
@@ -211,6 +237,7 @@ static PetscErrorCode WriteTopology(TslOutput out, PetscInt nelem, const PetscIn
     while (n < maxlen && blkpad[k * maxlen + n] >= 0) n++;
     for (PetscInt j = 0; j < n; j++) rec[blklen++] = blkpad[k * maxlen + j];
   }
+  PetscCall(WriteConnectivity(out, nelem, xdmf_type, maxlen, blkpad));
   PetscCallMPI(MPI_Exscan(&blklen, &offset, 1, MPI_INT64_T, MPI_SUM, out->comm));
   if (out->rank == 0) offset = 0; /* MPI_Exscan leaves rank 0's result undefined */
   PetscCallMPI(MPI_Allreduce(&blklen, &total, 1, MPI_INT64_T, MPI_SUM, out->comm));

@@ -47,12 +47,46 @@ static void PutXml(FILE *fp, const char *text)
   }
 }
 
+/* XDMF's cell types (XdmfTopologyType: the ids of its Mixed records, the names of a single-type topology) with a
+ * fixed node count. */
+static const struct {
+  PetscInt    id, nodes;
+  const char *name;
+} XdmfTypes[] = {
+    {1, 1, "Polyvertex"},     {2, 2, "Polyline"},         {4, 3, "Triangle"},   {5, 4, "Quadrilateral"}, {6, 4, "Tetrahedron"},
+    {7, 5, "Pyramid"},        {8, 6, "Wedge"},            {9, 8, "Hexahedron"}, {34, 3, "Edge_3"},       {36, 6, "Triangle_6"},
+    {37, 8, "Quadrilateral_8"}, {38, 10, "Tetrahedron_10"}, {39, 13, "Pyramid_13"}, {40, 15, "Wedge_15"}, {48, 20, "Hexahedron_20"},
+};
+
+const char *TslXdmfTopologyName(PetscInt xdmf_type, PetscInt *nodes)
+{
+  for (size_t i = 0; i < sizeof(XdmfTypes) / sizeof(XdmfTypes[0]); i++)
+    if (XdmfTypes[i].id == xdmf_type) {
+      *nodes = XdmfTypes[i].nodes;
+      return XdmfTypes[i].name;
+    }
+  *nodes = 0;
+  return NULL;
+}
+
+/* A mesh of one cell type gets that type's own topology (Hexahedron_20, ...: every reader knows those, meshio
+ * included) on /mesh/connectivity; a mixed one the Mixed records of /mesh/topology (docs/output.md says which
+ * readers take which). */
 static void WriteMesh(FILE *fp, TslOutput out)
 {
-  fprintf(fp, "        <Topology TopologyType=\"Mixed\" NumberOfElements=\"%" PetscInt_FMT "\">\n", out->nelem_global);
-  fprintf(fp, "          <DataItem Dimensions=\"%lld\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">", (long long)out->topo_len);
-  PutXml(fp, out->h5_base);
-  fprintf(fp, ":/mesh/topology</DataItem>\n");
+  if (out->cell_name) {
+    fprintf(fp, "        <Topology TopologyType=\"%s\" NumberOfElements=\"%" PetscInt_FMT "\" NodesPerElement=\"%" PetscInt_FMT "\">\n", out->cell_name,
+            out->nelem_global, out->cell_nodes);
+    fprintf(fp, "          <DataItem Dimensions=\"%" PetscInt_FMT " %" PetscInt_FMT "\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">",
+            out->nelem_global, out->cell_nodes);
+    PutXml(fp, out->h5_base);
+    fprintf(fp, ":/mesh/connectivity</DataItem>\n");
+  } else {
+    fprintf(fp, "        <Topology TopologyType=\"Mixed\" NumberOfElements=\"%" PetscInt_FMT "\">\n", out->nelem_global);
+    fprintf(fp, "          <DataItem Dimensions=\"%lld\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">", (long long)out->topo_len);
+    PutXml(fp, out->h5_base);
+    fprintf(fp, ":/mesh/topology</DataItem>\n");
+  }
   fprintf(fp, "        </Topology>\n");
   fprintf(fp, "        <Geometry GeometryType=\"XYZ\">\n");
   fprintf(fp, "          <DataItem Dimensions=\"%" PetscInt_FMT " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">", out->nnode_global);

@@ -1,6 +1,6 @@
 #include "mesh_fixture.h"
 
-PetscErrorCode TestMeshCreate(PetscInt nx, PetscInt ny, TestMesh *m)
+PetscErrorCode TestMeshCreate(PetscInt nx, PetscInt ny, PetscBool quads, TestMesh *m)
 {
   PetscInt nsq = (nx - 1) * (ny - 1), e = 0, k = 0;
 
@@ -10,7 +10,7 @@ PetscErrorCode TestMeshCreate(PetscInt nx, PetscInt ny, TestMesh *m)
   m->N  = nx * ny;
   m->M  = 0;
   for (PetscInt j = 0; j < ny - 1; j++)
-    for (PetscInt i = 0; i < nx - 1; i++) m->M += (i + j) % 2 ? 2 : 1;
+    for (PetscInt i = 0; i < nx - 1; i++) m->M += (i + j) % 2 && !quads ? 2 : 1;
   PetscCall(PetscMalloc4(3 * m->N, &m->xyz, m->M, &m->type, m->M + 1, &m->ptr, 6 * nsq, &m->conn));
   for (PetscInt j = 0; j < ny; j++)
     for (PetscInt i = 0; i < nx; i++) {
@@ -23,7 +23,7 @@ PetscErrorCode TestMeshCreate(PetscInt nx, PetscInt ny, TestMesh *m)
   for (PetscInt j = 0; j < ny - 1; j++)
     for (PetscInt i = 0; i < nx - 1; i++) {
       const PetscInt n00 = j * nx + i, n10 = n00 + 1, n01 = n00 + nx, n11 = n01 + 1;
-      if ((i + j) % 2 == 0) { /* quad, XDMF 5 */
+      if ((i + j) % 2 == 0 || quads) { /* quad, XDMF 5 */
         m->type[e]   = 5;
         m->conn[k++] = n00, m->conn[k++] = n10, m->conn[k++] = n11, m->conn[k++] = n01;
         m->ptr[++e] = k;

@@ -1,4 +1,4 @@
-/* A small mixed quad/triangle mesh for the output tests, with a deliberately scrambled distribution:
+/* A small mixed quad/triangle mesh (or, with quads, one of quadrilaterals alone) for the output tests, with a deliberately scrambled distribution:
  * each rank owns nodes and elements scattered over the natural numbering, listed in descending
  * natural order, so that nothing lines up with rank order by accident. Field values are known in
  * closed form, so any run (1 or n ranks) is checked against the same figures. */
@@ -17,7 +17,7 @@ typedef struct {
   PetscReal *xyz;
 } TestLocal;
 
-PetscErrorCode TestMeshCreate(PetscInt nx, PetscInt ny, TestMesh *m);
+PetscErrorCode TestMeshCreate(PetscInt nx, PetscInt ny, PetscBool quads, TestMesh *m);
 PetscErrorCode TestMeshDestroy(TestMesh *m);
 PetscErrorCode TestLocalCreate(const TestMesh *m, PetscMPIInt rank, PetscMPIInt size, TestLocal *l);
 PetscErrorCode TestLocalDestroy(TestLocal *l);

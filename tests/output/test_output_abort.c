@@ -95,7 +95,7 @@ int main(int argc, char **argv)
   }
   PetscCallMPI(MPI_Barrier(PETSC_COMM_WORLD));
 
-  PetscCall(TestMeshCreate(4, 3, &m));
+  PetscCall(TestMeshCreate(4, 3, PETSC_FALSE, &m));
   PetscCall(TestLocalCreate(&m, rank, size, &l));
   PetscCall(TslOutputCreate(PETSC_COMM_WORLD, dir, "abort", &out));
   PetscCall(TslHistoryCreate(PETSC_COMM_WORLD, dir, "abort", 2, cols, &hist));

@@ -2,7 +2,9 @@
  * ranks run it, then reads <job>.h5 back on rank 0 with the plain HDF5 API and checks every value
  * against the closed-form figures of mesh_fixture.h. Since those figures do not depend on the rank
  * count, passing on 1, 2 and 3 ranks proves the files are identical. Also writes and checks a
- * history CSV. Options: -dir, -job, -nx, -ny. */
+ * history CSV. With -quads the mesh is of quadrilaterals alone: /mesh/connectivity (M x 4) is written besides the
+ * Mixed records and the .xmf names the Quadrilateral topology (a mixed mesh: Mixed, and no connectivity). Options:
+ * -dir, -job, -nx, -ny, -quads. */
 #include "mesh_fixture.h"
 #include <hdf5.h>
 #include <string.h>
@@ -85,7 +87,7 @@ static void ExpectAttr(hid_t grp, const char *gname, const char *name, hid_t mem
   H5Aclose(attr);
 }
 
-static PetscErrorCode CheckH5(const TestMesh *m, const char *path)
+static PetscErrorCode CheckH5(const TestMesh *m, PetscBool quads, const char *path)
 {
   hid_t      file;
   PetscReal *xyz;
@@ -116,6 +118,16 @@ static PetscErrorCode CheckH5(const TestMesh *m, const char *path)
       EXPECT(topo[r] == m->conn[j], "topology record %d: node %lld, expected %d", (int)e, (long long)topo[r], (int)m->conn[j]);
   }
   PetscCall(PetscFree(topo));
+  if (quads) {
+    int64_t *conn;
+    PetscCall(ReadAll(file, "/mesh/connectivity", H5T_NATIVE_INT64, 2, m->M, 4, (void **)&conn));
+    for (PetscInt e = 0; conn && e < m->M; e++)
+      for (PetscInt j = 0; j < 4; j++)
+        EXPECT(conn[4 * e + j] == m->conn[m->ptr[e] + j], "connectivity[%d][%d] = %lld, expected %d", (int)e, (int)j, (long long)conn[4 * e + j],
+               (int)m->conn[m->ptr[e] + j]);
+    PetscCall(PetscFree(conn));
+  } else
+    EXPECT(H5Lexists(file, "/mesh/connectivity", H5P_DEFAULT) == 0, "a mixed mesh has no /mesh/connectivity");
 
   for (PetscInt f = 1; f <= NFRAME; f++) {
     char  gname[64];
@@ -168,7 +180,7 @@ static PetscErrorCode ReadText(const char *path, char **text)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode CheckXmf(const char *dir, const char *job)
+static PetscErrorCode CheckXmf(const char *dir, const char *job, const TestMesh *m, PetscBool quads)
 {
   char path[PETSC_MAX_PATH_LEN], want[512], *text;
 
@@ -177,8 +189,15 @@ static PetscErrorCode CheckXmf(const char *dir, const char *job)
   PetscCall(ReadText(path, &text));
   if (!text) PetscFunctionReturn(PETSC_SUCCESS);
   EXPECT(strstr(text, "CollectionType=\"Temporal\""), "%s: no temporal collection", path);
-  EXPECT(strstr(text, "TopologyType=\"Mixed\""), "%s: no Mixed topology", path);
-  snprintf(want, sizeof(want), ">%s.h5:/mesh/topology<", job);
+  if (quads) {
+    snprintf(want, sizeof(want), "TopologyType=\"Quadrilateral\" NumberOfElements=\"%d\" NodesPerElement=\"4\"", (int)m->M);
+    EXPECT(strstr(text, want), "%s: does not mention %s", path, want);
+    EXPECT(!strstr(text, "Mixed"), "%s: a Mixed topology for a mesh of one cell type", path);
+    snprintf(want, sizeof(want), "Dimensions=\"%d 4\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">%s.h5:/mesh/connectivity<", (int)m->M, job);
+  } else {
+    EXPECT(strstr(text, "TopologyType=\"Mixed\""), "%s: no Mixed topology", path);
+    snprintf(want, sizeof(want), ">%s.h5:/mesh/topology<", job);
+  }
   EXPECT(strstr(text, want), "%s: does not mention %s", path, want);
   snprintf(want, sizeof(want), ">%s.h5:/mesh/coordinates<", job);
   EXPECT(strstr(text, want), "%s: does not mention %s", path, want);
@@ -225,6 +244,7 @@ int main(int argc, char **argv)
 {
   char        dir[PETSC_MAX_PATH_LEN] = ".", job[64] = "write", path[PETSC_MAX_PATH_LEN];
   PetscInt    nx = 7, ny = 5;
+  PetscBool   quads = PETSC_FALSE;
   PetscMPIInt rank, size;
   TestMesh    m;
   TestLocal   l;
@@ -239,10 +259,11 @@ int main(int argc, char **argv)
   PetscCall(PetscOptionsGetString(NULL, NULL, "-job", job, sizeof(job), NULL));
   PetscCall(PetscOptionsGetInt(NULL, NULL, "-nx", &nx, NULL));
   PetscCall(PetscOptionsGetInt(NULL, NULL, "-ny", &ny, NULL));
+  PetscCall(PetscOptionsGetBool(NULL, NULL, "-quads", &quads, NULL));
   if (rank == 0) (void)mkdir(dir, 0777);
   PetscCallMPI(MPI_Barrier(PETSC_COMM_WORLD));
 
-  PetscCall(TestMeshCreate(nx, ny, &m));
+  PetscCall(TestMeshCreate(nx, ny, quads, &m));
   PetscCall(TestLocalCreate(&m, rank, size, &l));
   PetscCall(TslOutputCreate(PETSC_COMM_WORLD, dir, job, &out));
   PetscCall(TslHistoryCreate(PETSC_COMM_WORLD, dir, job, 3, cols, &hist));
@@ -277,8 +298,8 @@ int main(int argc, char **argv)
 
   if (rank == 0) {
     snprintf(path, sizeof(path), "%s/%s.h5", dir, job);
-    PetscCall(CheckH5(&m, path));
-    PetscCall(CheckXmf(dir, job));
+    PetscCall(CheckH5(&m, quads, path));
+    PetscCall(CheckXmf(dir, job, &m, quads));
     PetscCall(CheckCsv(dir, job));
     ExpectAbsent(dir, job, ".h5.part");
     ExpectAbsent(dir, job, ".xmf.part");

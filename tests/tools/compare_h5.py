@@ -12,7 +12,7 @@ otherwise, e.g. continuum shells with another stack direction); skipfield=NAME t
 frame (skipfield=S: element averages over integration points that two rules place differently).
 renumbered=MAP.txt: B is the model of A with its nodes and elements renumbered (tests/tools/renumber_deck.py
 writes MAP.txt): B's node and element rows are compared with A's rows of the same node or element, and the
-datasets that are ids or connectivity (mesh/node_ids, mesh/element_ids, mesh/topology) are left out.
+datasets that are ids or connectivity (mesh/node_ids, mesh/element_ids, mesh/topology, mesh/connectivity) are left out.
 """
 import sys
 
@@ -37,7 +37,7 @@ if renumbered:
     for line in open(renumbered[0]):
         kind, old, new = line.split()
         (nmap if kind == "node" else emap)[int(old)] = int(new)
-    skips += ["mesh/node_ids", "mesh/element_ids", "mesh/topology"]
+    skips += ["mesh/node_ids", "mesh/element_ids", "mesh/topology", "mesh/connectivity"]
     # B's row of each of A's nodes (elements): A's id, renumbered, found among B's ids
     rows = []
     for ids, m in (("mesh/node_ids", nmap), ("mesh/element_ids", emap)):
