@@ -61,6 +61,9 @@ typedef struct TslGeometry {
    * not integrate them exactly (tri6, tet10); n = 0: the full rule. */
   TslQuadrature lump;
   PetscInt      xdmf_type; /* XDMF mixed-topology cell type id */
+  /* The cell's nodes in XDMF's (VTK's) order: the family's node xdmf_order[k] is the cell's k-th; NULL: the family's
+   * own order. A wedge's base 1-2-3 runs the other way round there (VTK: its normal points away from 4-5-6). */
+  const PetscInt *xdmf_order;
   /* Linear subdivision of a second-order family (line3: 2 line2, tri6: 4 tri3, tet10: 8 tet4; nsub = 0
    * otherwise). The "modified" types lump capacity and pressure loads on it, where the quadratic shape
    * functions would give zero or negative corner weights. sub_node[s][] are element-local node

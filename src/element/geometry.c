@@ -512,6 +512,13 @@ const TslGeometry TslGeomTet10 = {
     .sub_node   = {{0, 4, 6, 7}, {4, 1, 5, 8}, {6, 5, 2, 9}, {7, 8, 9, 3}, {4, 5, 6, 9}, {4, 6, 7, 9}, {4, 7, 8, 9}, {4, 8, 5, 9}},
 };
 
+/* XDMF and VTK number a wedge with its base 1-2-3 clockwise seen from the top (its right-hand normal points away
+ * from 4-5-6), the dialect counter-clockwise: written in the dialect's order, ParaView measures every wedge with a
+ * negative volume (vtkCellSizeFilter; tests/output/check_readers.py). The cell swaps 2 and 3, 5 and 6, and the
+ * midsides with them: 7 (1-2) becomes 9 (3-1) and so on. */
+static const PetscInt XdmfOrderWedge6[6]   = {0, 2, 1, 3, 5, 4};
+static const PetscInt XdmfOrderWedge15[15] = {0, 2, 1, 3, 5, 4, 8, 7, 6, 11, 10, 9, 12, 14, 13};
+
 /* Faces (outward): S1 1-3-2, S2 4-5-6, S3 1-2-5-4, S4 2-3-6-5, S5 3-1-4-6. */
 const TslGeometry TslGeomWedge6 = {
     .name       = "wedge6",
@@ -529,6 +536,7 @@ const TslGeometry TslGeomWedge6 = {
     .full       = QUAD_WEDGE_6,
     .reduced    = QUAD_WEDGE_1,
     .xdmf_type  = 8,
+    .xdmf_order = XdmfOrderWedge6,
 };
 
 const TslGeometry TslGeomHex8 = {
@@ -605,5 +613,6 @@ const TslGeometry TslGeomWedge15 = {
     .ref_volume = 1,
     .full       = QUAD_WEDGE_18,
     .reduced    = QUAD_WEDGE_6,
-    .xdmf_type  = 40, /* Wedge_15 (ParaView's node order is the dialect's) */
+    .xdmf_type  = 40, /* Wedge_15 */
+    .xdmf_order = XdmfOrderWedge15,
 };

@@ -41,13 +41,15 @@ PetscErrorCode TslFramesSetUp(Driver *d, const char *dir, const char *jobname)
   PetscCall(TslOutputCreate(d->comm, dir, jobname, &d->out));
   PetscCall(TslOutputSetSyncInterval(d->out, d->sync_interval));
   PetscCall(PetscMalloc3(m->nelem, &xtype, m->elem_ptr[m->nelem], &conn, m->nelem + 1, &ptr));
-  /* cells are the geometry families' nodes (an element's extra reference node is not part of its cell) */
+  /* cells are the geometry families' nodes (an element's extra reference node is not part of its cell), in XDMF's
+   * order (a wedge's differs from the dialect's: TslGeometry.xdmf_order) */
   ptr[0] = 0;
   for (PetscInt e = 0; e < m->nelem; e++) {
     const TslGeometry *g = TslElementTypeGet(m->elem_type[e])->geom;
     xtype[e]             = g->xdmf_type;
     ptr[e + 1]           = ptr[e] + g->nnode;
-    for (PetscInt a = 0; a < g->nnode; a++) conn[ptr[e] + a] = m->node_nat[TslModelNodeIndex(m, m->elem_conn[m->elem_ptr[e] + a])];
+    for (PetscInt a = 0; a < g->nnode; a++)
+      conn[ptr[e] + a] = m->node_nat[TslModelNodeIndex(m, m->elem_conn[m->elem_ptr[e] + (g->xdmf_order ? g->xdmf_order[a] : a)])];
   }
   PetscCall(TslOutputSetMesh(d->out, m->nnode_global, m->nnode_owned, m->node_nat, m->node_id, m->node_xyz, m->nelem_global, m->nelem, m->elem_nat,
                              m->elem_id, xtype, ptr, conn));

@@ -37,12 +37,16 @@ class Result:
         return idx[-1] if last else idx[0]
 
     def elements(self):
-        """Connectivity (natural node indices) of each element from the Mixed topology."""
+        """Connectivity (natural node indices) of each element from the Mixed topology, in the dialect's node order
+        (the file's is XDMF's, whose wedges run their base the other way round: the swaps undo it)."""
         topo, out, k = self.h5["/mesh/topology"][...], [], 0
         sizes = {4: 3, 5: 4, 6: 4, 8: 6, 9: 8, 36: 6, 37: 8, 38: 10, 40: 15, 48: 20}
+        dialect = {8: [0, 2, 1, 3, 5, 4], 40: [0, 2, 1, 3, 5, 4, 8, 7, 6, 11, 10, 9, 12, 14, 13]}
         while k < len(topo):
-            n = sizes[int(topo[k])]
-            out.append(topo[k + 1:k + 1 + n])
+            t = int(topo[k])
+            n = sizes[t]
+            cell = topo[k + 1:k + 1 + n]
+            out.append(cell[dialect[t]] if t in dialect else cell)
             k += 1 + n
         return out
 
