@@ -16,7 +16,7 @@ plate     a thin plate (rho c V = 24300 J/K, top face A = 1 m^2, eps = 0.8, Cels
           - thermoslide = the closed form within 2 % of the drop: backward Euler's own first-order error, which the
             recurrence above shows as 1.72 % at dt = 20 s (0.87 % at 10 s, 0.44 % at 5 s);
           - the heat balance: radiated = - stored heat rate (1e-6 of the radiated heat: the Newton tolerance; measured
-            6e-8) and the
+            4e-11) and the
             heat radiated over the step, sum of q dt, = rho c V (T0 - T_end) (1e-8: backward Euler conserves heat);
 plate_explicit  the same cooling in an explicit step (rho c V = 2.43, A = 1, t = 0.001, k = 50: Biot number
           4 sigma eps T^3 t / k = 3.6e-3): forward Euler with the stable increment (2.2e-5 s, 1/600 of the initial
