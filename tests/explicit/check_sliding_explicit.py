@@ -120,12 +120,17 @@ print("quasi-static: largest ALLKE %.4g, ALLIE at that row %.4g (ALLKE / ALLIE %
 # jerk / omega^3, so the kinetic energy left over the slide's largest (1/2 M (15 A / 8 T_leg)^2) is
 # 1024 / (omega T_leg)^4: 4e-9 for the blocks' lowest mode (shear of the large block on its fixed bottom,
 # omega = pi c_s / 2H = 135 / s), less with the bulk viscosity's damping.
-# Where kinematic contact chatters in the slide (triangle, line3 and tri6 faces, the continuum shell's soft
-# thickness: nodes leave the main face and strike it again, 3 or 4 of the 5 in contact in some frames, pressures up
-# to 400 against 100; docs/explicit.md "What a quasi-static explicit solution reaches"), more is left and the
-# friction falls short of mu N: those rows' measured figures, bounded (KE left / largest, ALLFD's shortfall).
-CHATTER = {"friction_kinematic_cpe3t": (1e-6, 2.5e-3), "friction_kinematic_cpe6mt": (1e-5, 6e-3), "friction_kinematic_c3d6t": (1e-6, 1.5e-3),
-           "friction_kinematic_c3d10mt": (1e-5, 6e-3), "friction_kinematic_sc8rt": (1e-5, 2.5e-3)}
+# A steady slide with Coulomb friction on a stiff normal constraint can be dynamically unstable (friction-induced
+# flutter; docs/explicit.md "Friction-induced flutter", tests/explicit/sliding_flutter.py): the kinematic friction
+# decks damp their slide with b1 = 0.3 (make_decks.py EXPLICIT_SLIDE_BULK_VISCOSITY), which makes every row meet the
+# bounds derived here but the continuum shell's. Its flutter (about 97 Hz, in a mode with the large block's soft
+# thickness modulus 2G) is hardly volumetric, and the bulk viscosity, the solver's only damping, does not stop it
+# (growing at 4.3 /s with b1 = 0.06, 2.8 /s with 0.5): the nodes leave the face and strike it again, more kinetic
+# energy is left and the friction falls short of mu N, by amounts the damping moves about (KE left 1.1e-6 - 5.1e-6,
+# ALLFD 6e-4 - 1.5e-3 short with b1 = 0.06, 0.3, 0.5; 1.9e-6 and 6e-4 with the decks' 0.3, on 1 and 2 ranks). That
+# row keeps the bound it had, over that spread (KE left / largest, ALLFD's shortfall), so that it cannot get worse
+# unseen.
+CHATTER = {"friction_kinematic_sc8rt": (1e-5, 2.5e-3)}
 chatter = CHATTER.get(job.replace("sliding_", "", 1).replace("_explicit_", "_", 1), None)
 s2 = step_rows(2)
 check("kinetic energy left when the slide has stopped / largest in the slide%s" % (" (chatter)" if chatter else ""),
