@@ -131,6 +131,8 @@ PetscErrorCode TslProblemFieldNormsType(TslProblem prob, Vec F, NormType type, P
  * over the displacement (q[0]) and the temperature (q[1]) components of every element's force vector (internal
  * force; conducted and stored heat), the scale of *CONTROLS, PARAMETERS=FIELD's residual test. */
 PetscErrorCode TslProblemElementFlux(TslProblem prob, PetscReal q[2]);
+/* Whether the residual evaluations gather that flux (off by default: it costs a pass over every element's vector) */
+PetscErrorCode TslProblemSetElementFlux(TslProblem prob, PetscBool on);
 /* Collective. The largest nodal translation of the solution X over the model's size (the diagonal of the bounding
  * box of the reference coordinates); reference nodes and rotations are left out. */
 PetscErrorCode TslProblemDisplacementReach(TslProblem prob, Vec X, PetscReal *reach);

@@ -320,7 +320,7 @@ static PetscErrorCode ElementRest(TslProblem p, PetscInt e, const TslElemData *d
 
   PetscFunctionBeginUser;
   PetscCall(AddCapacity(p, d, R, K, c->heat));
-  if (c->mode == ASM_RESIDUAL) /* the dialect's instantaneous flux: |R_i| over the element's components, per field */
+  if (c->mode == ASM_RESIDUAL && p->flux_on) /* the dialect's instantaneous flux: |R_i| over the element's components, per field */
     for (PetscInt i = 0; i < d->nd; i++) {
       const PetscInt f = d->ld[i] % p->ndof == p->ndof - 1;
       p->flux_abs[f] += PetscAbsReal(R[i]), p->flux_n[f] += 1;

@@ -538,6 +538,13 @@ PetscErrorCode TslProblemFieldNorms(TslProblem p, Vec F, PetscReal *norm_u, Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemSetElementFlux(TslProblem p, PetscBool on)
+{
+  PetscFunctionBeginUser;
+  p->flux_on = on;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemElementFlux(TslProblem p, PetscReal q[2])
 {
   PetscReal s[4] = {p->flux_abs[0], p->flux_abs[1], p->flux_n[0], p->flux_n[1]}, g[4];

@@ -194,6 +194,7 @@ struct _p_TslProblem {
   /* the last residual evaluation's element forces (TslProblemElementFlux): sums of |R_i| over the displacement and
    * the temperature components of every element's vector on this rank, and their counts */
   PetscReal flux_abs[2], flux_n[2];
+  PetscBool flux_on; /* ... gathered at all (TslProblemSetElementFlux: only for the dialect's field test) */
 
   /* failures decided by all ranks (sys.h) */
   TslInject inject;

@@ -805,6 +805,7 @@ static PetscErrorCode TakeControls(Driver *d, const TslModel *m, const TslStep *
     if (step->field_controls[k].given) d->fctrl[k] = step->field_controls[k];
   }
   d->q_n = 0;
+  PetscCall(TslProblemSetElementFlux(d->prob, (PetscBool)(d->fctrl[0].on || d->fctrl[1].on)));
   for (PetscInt k = 0; k < 2; k++) {
     const TslFieldControls *f = &d->fctrl[k];
     if (!step->field_controls[k].given || !f->on || (k == 1 && step->statik)) continue; /* *STATIC: temperatures held */
