@@ -273,6 +273,23 @@ static PetscBool MechanicsSolid3DTangent(const TslElementInput *in, const TslEle
   return PETSC_TRUE;
 }
 
+/* The reference map's Jacobian J[i][j] = dx_i / dxi_j of the family's nodes x[] at xi (dim x dim) and its determinant. */
+static PetscReal ReferenceJacobian(const TslGeometry *g, const PetscReal x[], const PetscReal xi[], PetscReal J[3][3])
+{
+  const PetscInt gd = g->dim;
+  PetscReal      N[TSL_MAX_ELEM_NODES], dN[TSL_MAX_ELEM_NODES * 3];
+
+  g->shape(xi, N, dN);
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = 0; j < 3; j++) J[i][j] = 0;
+  for (PetscInt a = 0; a < g->nnode; a++)
+    for (PetscInt i = 0; i < gd; i++)
+      for (PetscInt j = 0; j < gd; j++) J[i][j] += x[3 * a + i] * dN[gd * a + j];
+  return gd == 2 ? J[0][0] * J[1][1] - J[0][1] * J[1][0]
+                 : J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                       J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+}
+
 /* Incompatible modes (TslFormulation.incompatible; docs/elements.md "Incompatible modes"): the displacement
  * u = N u_hat + sum_k P_k alpha_k (P_k = 1 - xi_k^2, a vector alpha_k per bubble, every displacement component) adds the
  * strain G alpha. G is the bubbles' symmetric gradient with the centre's Jacobian, grad P_k = J0^-T dP_k/dxi (det J0 /
@@ -292,7 +309,7 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
   const TslGeometry    *g    = t->geom;
   const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
   const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof, ncol = n * nu, dim = t->dim, gd = g->dim;
-  PetscReal             xi0[3], N0[TSL_MAX_ELEM_NODES], dN0[TSL_MAX_ELEM_NODES * 3], J0[3][3] = {{0}}, J0i[3][3], det0, dP[3][3], vol = 0;
+  PetscReal             xi0[3], J0[3][3], J0i[3][3], det0, dP[3][3], vol = 0;
   PetscReal             G[TSL_MAX_QP][6][TSL_MAX_ENHANCED], Gbar[6][TSL_MAX_ENHANCED] = {{0}}, Kaa[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED] = {0},
                         Kai[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED], r0[TSL_MAX_ENHANCED] = {0}, alpha[TSL_MAX_ENHANCED] = {0};
   PetscReal             Kau[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES * 3], sb[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES];
@@ -303,15 +320,9 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
 
   /* the centre's Jacobian J0[i][j] = dx_i / dxi_j and its inverse */
   TslElementCentre(g, xi0);
-  nm = t->form->incompatible(g, xi0, dP);
-  na = nm * dim;
-  g->shape(xi0, N0, dN0);
-  for (PetscInt a = 0; a < n; a++)
-    for (PetscInt i = 0; i < gd; i++)
-      for (PetscInt j = 0; j < gd; j++) J0[i][j] += in->x[3 * a + i] * dN0[gd * a + j];
-  det0 = gd == 2 ? J0[0][0] * J0[1][1] - J0[0][1] * J0[1][0]
-                 : J0[0][0] * (J0[1][1] * J0[2][2] - J0[1][2] * J0[2][1]) - J0[0][1] * (J0[1][0] * J0[2][2] - J0[1][2] * J0[2][0]) +
-                       J0[0][2] * (J0[1][0] * J0[2][1] - J0[1][1] * J0[2][0]);
+  nm   = t->form->incompatible(g, xi0, dP);
+  na   = nm * dim;
+  det0 = ReferenceJacobian(g, in->x, xi0, J0);
   if (!(det0 > 0)) return PETSC_FALSE;
   if (gd == 2) {
     J0i[0][0] = J0[1][1] / det0, J0i[0][1] = -J0[0][1] / det0, J0i[1][0] = -J0[1][0] / det0, J0i[1][1] = J0[0][0] / det0;
@@ -323,15 +334,9 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
       }
   /* G at each point, and its mean */
   for (PetscInt q = 0; q < quad->n; q++) {
-    PetscReal N[TSL_MAX_ELEM_NODES], dN[TSL_MAX_ELEM_NODES * 3], J[3][3] = {{0}}, det, grad[3][3];
+    PetscReal J[3][3], det, grad[3][3];
     if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
-    g->shape(quad->xi[q], N, dN);
-    for (PetscInt a = 0; a < n; a++)
-      for (PetscInt i = 0; i < gd; i++)
-        for (PetscInt j = 0; j < gd; j++) J[i][j] += in->x[3 * a + i] * dN[gd * a + j];
-    det = gd == 2 ? J[0][0] * J[1][1] - J[0][1] * J[1][0]
-                  : J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                        J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+    det = ReferenceJacobian(g, in->x, quad->xi[q], J);
     (void)t->form->incompatible(g, quad->xi[q], dP);
     for (PetscInt k = 0; k < nm; k++)
       for (PetscInt i = 0; i < dim; i++) {
