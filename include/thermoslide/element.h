@@ -127,6 +127,8 @@ static inline PetscInt TslElementTypeThetaSlot(const TslElementType *t)
  * quadratic corner weights would be zero or negative. Contact follows it: such a face on a main surface is
  * its sub-faces (src/mesh/distribute.c). */
 PetscBool TslElementTypeSubdividedFace(const TslElementType *t, PetscInt face);
+/* Does the type take Mises plasticity (*PLASTIC; kernels.c)? If not, *why names what it lacks. */
+PetscBool TslElementTypePlasticSupported(const TslElementType *t, const char **why);
 /* Short names of the type's formulation and kinematics (docs, messages). */
 const char *TslElementTypeFormulationName(const TslElementType *t);
 const char *TslElementTypeKinematicsName(const TslElementType *t);
@@ -176,7 +178,17 @@ typedef struct {
   const TslElementType    *type;
   const TslElementSection *sec;
   const PetscReal         *x, *u, *theta_init;
+  /* Mises plasticity (*PLASTIC): the committed state at each mechanical point, TSL_PLASTIC_STATE reals a point
+   * (plastic strain, Voigt with engineering shear; equivalent plastic strain); pstate_new (NULL: not wanted) gets the
+   * state the current u reaches from it; inelastic_rate scales the plastic work of the increment into a heat rate
+   * (1 / dt; 0: no plastic heating, as in steady and static steps). pstate NULL: an elastic element. */
+  const PetscReal *pstate;
+  PetscReal       *pstate_new;
+  PetscReal        inelastic_rate;
 } TslElementInput;
+#define TSL_PLASTIC_STATE 7
+/* Mechanical points of the type (the plastic state's points). */
+PetscInt TslElementTypeMechanicalPoints(const TslElementType *t, const TslElementSection *sec);
 
 /* Internal force and heat flow: R_u = int B^T sigma dV (+ hourglass forces), R_theta = int grad N . q
  * dV with q = k grad theta, and the consistent tangent K = dR/du (row-major, nd x nd, nd = nnode*ndof;
@@ -187,8 +199,10 @@ typedef struct {
 PetscBool      TslElementValid(const TslElementInput *in);
 PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted);
 /* The same, and energy[0], energy[1] the element's strain energy int 1/2 sigma : eps_mech dV and hourglass energy
- * as TslElementOutput's (at no extra element pass: the implicit history takes them from its heat-balance residual). */
-PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted, PetscReal energy[2]);
+ * as TslElementOutput's (at no extra element pass: the implicit history takes them from its heat-balance residual),
+ * energy[2] the plastic work of the increment int sigma : d eps_p dV and energy[3] the heat it gives per unit time
+ * (eta inelastic_rate energy[2]). */
+PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted, PetscReal energy[4]);
 /* Nodes of the element's vectors: the family's nodes and the type's extra nodes. */
 static inline PetscInt TslElementTypeNodes(const TslElementType *t)
 {
@@ -347,6 +361,7 @@ PetscErrorCode TslElementBodyForce(const TslElementInput *in, TslFaceLoadKind ki
 typedef struct {
   PetscReal S[6], E[6], HFL[3];
   PetscReal strain_energy, hourglass_energy;
+  PetscReal PE[6], PEEQ; /* plastic strain (engineering shear) and equivalent plastic strain: point averages (0: elastic) */
 } TslElementResult;
 
 PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res);

@@ -33,5 +33,17 @@ PetscReal TslMaterialHeatContent(const TslMaterial *mat, PetscReal theta, PetscR
  * theta_init, and its derivative in theta. */
 PetscReal TslMaterialThermalStrain(const TslMaterial *mat, PetscReal theta, PetscReal theta_init, PetscReal *deps);
 
+/* The Mises yield stress of *PLASTIC at equivalent plastic strain peeq and temperature theta, its slope H =
+ * d sigma_y / d peeq and d sigma_y / d theta (either may be NULL): linear between the table's points, the last
+ * point's stress held beyond it (perfect plasticity), the end temperatures' curves held outside their range. */
+PetscReal TslMaterialYield(const TslMaterial *mat, PetscReal peeq, PetscReal theta, PetscReal *H, PetscReal *dtheta);
+/* The plastic work of a flow from p0 to p1 >= p0 at theta, int_p0^p1 sigma_y(p, theta) dp (exact for the table's
+ * piecewise linear curves), and its derivative in theta. */
+PetscReal TslMaterialYieldIntegral(const TslMaterial *mat, PetscReal p0, PetscReal p1, PetscReal theta, PetscReal *dtheta);
+static inline PetscBool TslMaterialIsPlastic(const TslMaterial *mat)
+{
+  return mat->plastic.n > 0 ? PETSC_TRUE : PETSC_FALSE;
+}
+
 /* True when any property varies with temperature (the kernels then add the property-derivative terms). */
 PetscBool TslMaterialIsTemperatureDependent(const TslMaterial *mat);

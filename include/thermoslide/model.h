@@ -63,10 +63,23 @@ typedef struct {
   TslLoc    loc;                          /* the keyword line */
 } TslPropertyTable;
 
+/* *PLASTIC, HARDENING=ISOTROPIC: the Mises yield stress against the equivalent plastic strain (and temperature),
+ * rows (yield stress, plastic strain, temperature) as the deck gives them: per temperature the plastic strains
+ * ascend from 0, the temperatures ascend between groups (material.c, TslMaterialYield: linear in both, the end
+ * values held beyond). n = 0: elastic. */
+typedef struct {
+  PetscInt  n;
+  PetscReal row[TSL_MAX_TABLE_ROWS][3];
+  TslLoc    loc;
+} TslPlasticTable;
+
 typedef struct {
   char             name[TSL_NAME_LEN];
   TslPropertyTable prop[TSL_NPROP];
   PetscReal        alpha_zero; /* *EXPANSION, ZERO= (reference temperature of alpha; default 0) */
+  TslPlasticTable  plastic;
+  PetscReal        heat_fraction; /* *INELASTIC HEAT FRACTION (0: none given: no plastic heating) */
+  TslLoc           heat_fraction_loc;
   TslLoc           loc;
 } TslMaterial;
 

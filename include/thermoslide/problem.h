@@ -29,7 +29,9 @@ typedef struct {
   PetscReal interface_heat; /* heat crossing contact interfaces, main -> secondary (internal) */
   PetscReal dissipation;    /* frictional dissipation rate */
   PetscReal friction_heat;  /* part of the dissipation converted to heat (eta) */
-  PetscReal balance;        /* heat_in + reaction_heat + friction_heat - film_out - radiation_out - stored_rate */
+  PetscReal plastic_work;   /* plastic work of the increment (int sigma : d eps_p dV; not a rate) */
+  PetscReal plastic_heat;   /* the heat it gives per unit time (*INELASTIC HEAT FRACTION eta / dt) */
+  PetscReal balance;        /* heat_in + reaction_heat + friction_heat + plastic_heat - film_out - radiation_out - stored_rate */
   PetscReal strain_energy, hourglass_energy; /* of the elements, as TslProblemEnergies (from the same pass) */
 } TslHeatBalance;
 
@@ -55,6 +57,9 @@ PetscErrorCode TslProblemGetFieldIS(TslProblem prob, IS *is_u, IS *is_theta);
 PetscErrorCode TslProblemSetStep(TslProblem prob, PetscInt s);
 /* Time of the increment being solved: step time t (end of increment), increment dt, total time. */
 PetscErrorCode TslProblemSetTime(TslProblem prob, PetscReal step_time, PetscReal dt, PetscReal total_time);
+/* Mises plasticity: the state the last TslProblemHeatBalance found at its solution becomes the committed one (an
+ * accepted increment; a cutback keeps the committed state, so nothing is rolled back). */
+PetscErrorCode TslProblemCommitState(TslProblem prob);
 /* *TEMPERATURE, FILE= (src/physics/tfile.c): every step's results file checked against the model (the same nodes, the
  * frames it names, NT in them); collective, an error at the keyword's line. Before the run writes anything. */
 PetscErrorCode TslProblemTemperatureFilesCheck(TslProblem prob);

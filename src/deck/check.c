@@ -2,6 +2,7 @@
  * that made the reference (a section, a load, an element...). */
 #include "deck_impl.h"
 #include <thermoslide/element.h>
+#include <thermoslide/material.h>
 #include <string.h>
 
 #define CHECK(c, loc, fmt, ...) PetscCheck(c, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, TSL_LOC_FMT fmt, TSL_LOC_ARGS(m, loc), __VA_ARGS__)
@@ -348,6 +349,12 @@ static PetscErrorCode CheckMaterialsAndSections(TslModel *m)
       covered[e] = PETSC_TRUE;
       const PetscBool same_kw = strcmp(TslElementTypeSectionKeyword(t), kw) ? PETSC_FALSE : PETSC_TRUE;
       const PetscBool stack   = !sec->shell || TslElementTypeStackAllowed(t, sec->shell_stack - 1);
+      const char     *why     = NULL;
+      if (TslMaterialIsPlastic(&m->materials[sec->material_index]) && !TslElementTypePlasticSupported(t, &why)) {
+        PetscCall(PetscFree(covered));
+        CHECK(PETSC_FALSE, sec->loc, "material %s has *PLASTIC, and element %" PetscInt_FMT " of type %s has no plasticity yet (%s)", sec->material,
+              m->elem_id[e], t->name, why);
+      }
       if (same_kw && stack) continue;
       PetscCall(PetscFree(covered));
       CHECK(same_kw, sec->loc, "*%s on element %" PetscInt_FMT " of type %s (%s): its section is *%s", kw, m->elem_id[e], t->name,
@@ -529,6 +536,9 @@ static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
     CHECK(s->explicit_dynamics, s->bv_loc, "*BULK VISCOSITY belongs to an explicit step (*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT); step %s is not one", s->name);
   if (!s->explicit_dynamics) PetscFunctionReturn(PETSC_SUCCESS);
   CHECK(!s->tfile.given, s->tfile.loc, "*TEMPERATURE, FILE= belongs to a *STATIC or *COUPLED TEMPERATURE-DISPLACEMENT step; step %s is explicit", s->name);
+  for (PetscInt k = 0; k < m->nmaterial; k++)
+    CHECK(!TslMaterialIsPlastic(&m->materials[k]), m->materials[k].plastic.loc, "*PLASTIC in an explicit step is not supported yet (step %s at %s)",
+          s->name, where);
   if (m->nequation) CHECK(PETSC_FALSE, m->equations[0].loc, "*EQUATION is not supported in explicit steps (step %s at %s)", s->name, where);
   /* the kinematic predictor-corrector works on secondary nodes: surface-to-surface pairs take the penalty */
   for (PetscInt k = 0; k < m->npair; k++) {

@@ -1280,6 +1280,87 @@ static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *PLASTIC (Mises plasticity, HARDENING=ISOTROPIC, the dialect's default): "yield stress, plastic strain[,
+ * temperature]" (TslPlasticTable). For each temperature the curve starts at plastic strain 0 and its strains
+ * ascend; the temperatures ascend from one curve to the next; every line gives a temperature or none does. The
+ * other hardening laws, rate dependence and *CYCLIC HARDENING are refused (docs/keywords.md). */
+static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
+{
+  TslMaterial     *mat = &d->m->materials[d->material];
+  TslPlasticTable *t   = &mat->plastic;
+  char             hb[32];
+  const char      *hard = ParamUpper(d, "HARDENING", hb, sizeof(hb));
+  PetscBool        got, first_theta = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!hard || !strcmp(hard, "ISOTROPIC"),
+             LOC_FMT "*PLASTIC, HARDENING=%s is not supported yet (ISOTROPIC: Mises yield with isotropic hardening)", KLOC(d), hard);
+  USER_CHECK(!Param(d, "RATE"), LOC_FMT "*PLASTIC, RATE= (rate-dependent yield curves) is not supported yet", KLOC(d));
+  USER_CHECK(!t->n, LOC_FMT "material %s: a second *PLASTIC (the first at line %" PetscInt_FMT ")", KLOC(d), mat->name, t->loc.line);
+  t->loc = d->kwloc;
+  for (;;) {
+    PetscReal     *r;
+    PetscBool      theta;
+    const PetscInt n = t->n;
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    USER_CHECK(n < TSL_MAX_TABLE_ROWS, LOC_FMT "*PLASTIC: at most %d data lines", DLOC(d), TSL_MAX_TABLE_ROWS);
+    USER_CHECK(d->nfield >= 1 && d->nfield <= 3, LOC_FMT "*PLASTIC data line needs: yield stress, plastic strain[, temperature]", DLOC(d));
+    r = t->row[n];
+    PetscCall(FieldReal(d, 0, "the yield stress", &r[0]));
+    PetscCall(FieldRealDefault(d, 1, "the plastic strain", 0.0, &r[1]));
+    theta = d->nfield > 2 && d->field[2][0] ? PETSC_TRUE : PETSC_FALSE;
+    r[2]  = 0;
+    if (theta) PetscCall(FieldReal(d, 2, "the temperature", &r[2]));
+    if (!n) first_theta = theta;
+    USER_CHECK(theta == first_theta, LOC_FMT "*PLASTIC: a temperature-dependent table needs the temperature on every data line", DLOC(d));
+    USER_CHECK(r[0] > 0, LOC_FMT "material %s: *PLASTIC: the yield stress must be positive (got %g)", DLOC(d), mat->name, (double)r[0]);
+    USER_CHECK(r[1] >= 0, LOC_FMT "material %s: *PLASTIC: the plastic strain must not be negative (got %g)", DLOC(d), mat->name, (double)r[1]);
+    if (!n || r[2] != t->row[n - 1][2]) { /* the first point of a temperature's curve */
+      USER_CHECK(!n || r[2] > t->row[n - 1][2], LOC_FMT "*PLASTIC: temperatures must ascend from one curve to the next (%g after %g)", DLOC(d),
+                 (double)r[2], (double)t->row[n - 1][2]);
+      USER_CHECK(r[1] == 0, LOC_FMT "*PLASTIC: the first yield point%s must be at plastic strain 0 (got %g)", DLOC(d), theta ? " of each temperature" : "",
+                 (double)r[1]);
+    } else
+      USER_CHECK(r[1] > t->row[n - 1][1], LOC_FMT "*PLASTIC: the plastic strains must ascend (%g after %g)", DLOC(d), (double)r[1],
+                 (double)t->row[n - 1][1]);
+    t->n++;
+  }
+  USER_CHECK(t->n > 0, LOC_FMT "*PLASTIC needs a data line", KLOC(d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *INELASTIC HEAT FRACTION: the share eta of the plastic work that turns into heat (default 0.9, in [0, 1]). */
+static PetscErrorCode KwInelasticHeatFraction(Deck *d, const DeckKeyword *kw)
+{
+  TslMaterial *mat = &d->m->materials[d->material];
+  PetscBool    got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  mat->heat_fraction     = 0.9;
+  mat->heat_fraction_loc = d->kwloc;
+  PetscCall(DataLine(d, 0, &got));
+  if (got) {
+    USER_CHECK(d->nfield == 1, LOC_FMT "*INELASTIC HEAT FRACTION data line needs one value, the fraction", DLOC(d));
+    PetscCall(FieldRealDefault(d, 0, "the fraction", 0.9, &mat->heat_fraction));
+    USER_CHECK(mat->heat_fraction >= 0 && mat->heat_fraction <= 1, LOC_FMT "*INELASTIC HEAT FRACTION must lie in [0, 1] (got %g)", DLOC(d),
+               (double)mat->heat_fraction);
+    PetscCall(DataLine(d, 0, &got));
+    USER_CHECK(!got, LOC_FMT "*INELASTIC HEAT FRACTION takes one data line", DLOC(d));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Material keywords of plasticity thermoslide does not have yet: refused at their line, never ignored. */
+static PetscErrorCode KwPlasticUnsupported(Deck *d, const DeckKeyword *kw)
+{
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_ERR(LOC_FMT "*%s is not supported yet (plasticity: *PLASTIC, HARDENING=ISOTROPIC, rate-independent)", KLOC(d), d->kw);
+}
+
 /* A new section from ELSET= and MATERIAL= (both keywords). */
 static PetscErrorCode NewSection(Deck *d, TslSection **sp)
 {
@@ -3216,6 +3297,10 @@ static const DeckKeyword Keywords[] = {
     {"DENSITY", AT_MODEL, IN_MATERIAL, "", KwProperty, TSL_PROP_DENSITY, NULL},
     {"SPECIFIC HEAT", AT_MODEL, IN_MATERIAL, "", KwProperty, TSL_PROP_SPECIFIC_HEAT, NULL},
     {"EXPANSION", AT_MODEL, IN_MATERIAL, "TYPE|ZERO", KwProperty, TSL_PROP_EXPANSION, NULL},
+    {"PLASTIC", AT_MODEL, IN_MATERIAL, "HARDENING|RATE", KwPlastic, 0, NULL},
+    {"INELASTIC HEAT FRACTION", AT_MODEL, IN_MATERIAL, "", KwInelasticHeatFraction, 0, NULL},
+    {"RATE DEPENDENT", AT_MODEL, IN_MATERIAL, "TYPE", KwPlasticUnsupported, 0, NULL},
+    {"CYCLIC HARDENING", AT_MODEL, IN_MATERIAL, "PARAMETERS", KwPlasticUnsupported, 0, NULL},
     {"SOLID SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL|REF NODE", KwSolidSection, 0, NULL},
     {"SHELL SECTION", AT_MODEL, IN_NONE,
      "ELSET|MATERIAL|THICKNESS MODULUS|STACK DIRECTION|SECTION INTEGRATION|POISSON|OFFSET|NODAL THICKNESS|COMPOSITE|DENSITY", KwShellSection, 0,

@@ -462,7 +462,7 @@ PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *s
 PetscInt TslElementFastSize(const TslElementInput *in)
 {
   const PetscInt r = RowOf(in->type);
-  if (r < 0 || TslMaterialIsTemperatureDependent(in->sec->mat) || RowLayout(r).size > TSL_FAST_MAX_SIZE) return 0;
+  if (r < 0 || TslMaterialIsTemperatureDependent(in->sec->mat) || TslMaterialIsPlastic(in->sec->mat) || RowLayout(r).size > TSL_FAST_MAX_SIZE) return 0;
   if (in->type->form->quadrature(in->type->geom, in->sec) != in->type->form->quadrature(in->type->geom, NULL))
     return 0; /* a shell section's own rule */
   return RowLayout(r).size;

@@ -398,3 +398,15 @@ const char *TslElementTypeFormulationName(const TslElementType *t)
 {
   return t->form->name;
 }
+
+PetscBool TslElementTypePlasticSupported(const TslElementType *t, const char **why)
+{
+  const struct TslKinematicsRow *k = TslKinematicsRowGet(t->kin);
+
+  *why = NULL;
+  if (k->free_normal || k->shell) *why = "a plane-stress return: plane stress types and continuum shells";
+  else if (t->form->pressure) *why = "the hybrid types' deviatoric return";
+  else if (t->form->incompatible) *why = "the incompatible modes' bubbles with a plastic state";
+  else if (t->nextra) *why = "generalized plane strain";
+  return *why ? PETSC_FALSE : PETSC_TRUE;
+}

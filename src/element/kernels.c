@@ -470,6 +470,148 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
   return PETSC_TRUE;
 }
 
+/* Mises plasticity with isotropic hardening (*PLASTIC; docs/keywords.md, docs/elements.md "Plasticity"), the
+ * displacement formulations of every kinematics with the whole 3D strain (3D, plane strain, axisymmetric with and
+ * without twist, generalized plane strain). At each point, from the committed plastic strain eps_p and equivalent
+ * plastic strain p (in->pstate), the radial return (backward Euler) of the trial e = eps - eps_th m - eps_p:
+ *   q_tr = 3 mu ebar, ebar = sqrt(2/3) |dev e|, yield when q_tr > sigma_y(p, theta); then
+ *   3 mu (ebar - dl) = sigma_y(p + dl, theta)        (Newton, safeguarded by bisection on [0, ebar])
+ *   sigma = K tr(e) m + sqrt(2/3) sigma_y n,  n = dev e / |dev e|,  d eps_p = dl sqrt(3/2) n (engineering shear x 2).
+ * The consistent tangent C = K m m^T + 2 mu beta (P_dev - n n^T) + 2 mu H / (3 mu + H) n n^T (beta = sigma_y / q_tr, H
+ * = d sigma_y / dp), its temperature column from d dl / d theta = (3 dmu (ebar - dl) - d sigma_y / d theta) / (3 mu + H),
+ * and the plastic heat: a source eta w inelastic_rate with w = int_p^(p + dl) sigma_y dp the plastic work of the
+ * increment (per volume; exact for the table's piecewise linear curves, so the heat of a flow does not depend on the
+ * increments), linearised in u and theta through dl. Nothing is stored here: the state the current u reaches goes to
+ * in->pstate_new when asked (the commit of an accepted increment). */
+static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
+                                  PetscReal energy[4])
+{
+  const TslElementType *t    = in->type;
+  const TslGeometry    *g    = t->geom;
+  const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
+  const TslMaterial    *mat  = in->sec->mat;
+  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
+  const PetscReal       heat = mat->heat_fraction * in->inelastic_rate, s23 = PetscSqrtReal(2.0 / 3.0), s32 = PetscSqrtReal(1.5);
+  MechPoint             mq;
+
+  if (energy) energy[0] = energy[2] = energy[3] = 0;
+  for (PetscInt q = 0; q < quad->n; q++) {
+    const PetscReal *st = in->pstate + TSL_PLASTIC_STATE * q;
+    PetscReal        lam, mu, Kb, dlam, dmu, dKb, e[6], d[6], nh[6] = {0}, tr, nrm, ebar, qtr, theta, sy, H, dsy, dl = 0, sig[6], deps[6], w = 0;
+    PetscReal        dw_th_fixed = 0; /* d w / d theta at fixed p0, p1 */
+    PetscBool        plastic = PETSC_FALSE;
+
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
+    theta = NodalTheta(in, mq.p->N, in->u);
+    {
+      const PetscReal E = mq.mp.E, v = mq.mp.nu, a = (1 + v) * (1 - 2 * v);
+      TslElementLame(&mq.mp, &lam, &mu);
+      dlam = mq.mp.dE * v / a + mq.mp.dnu * E * (1 + 2 * v * v) / (a * a);
+      dmu  = mq.mp.dE / (2 * (1 + v)) - mq.mp.dnu * E / (2 * (1 + v) * (1 + v));
+      Kb = lam + 2 * mu / 3, dKb = dlam + 2 * dmu / 3;
+    }
+    for (PetscInt r = 0; r < 6; r++) e[r] = mq.eps[r] - VoigtM[r] * mq.eps_th - st[r];
+    tr = e[0] + e[1] + e[2];
+    for (PetscInt r = 0; r < 6; r++) d[r] = r < 3 ? e[r] - tr / 3 : 0.5 * e[r];
+    nrm  = PetscSqrtReal(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + 2 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5]));
+    ebar = s23 * nrm;
+    qtr  = 3 * mu * ebar;
+    sy   = TslMaterialYield(mat, st[6], theta, &H, &dsy);
+    if (qtr > sy * (1 + 1e-12)) { /* plastic: 3 mu (ebar - dl) = sigma_y(p + dl) on [0, ebar] */
+      PetscReal lo = 0, hi = ebar;
+      plastic = PETSC_TRUE;
+      for (PetscInt it = 0; it < 100; it++) {
+        const PetscReal gv = 3 * mu * (ebar - dl) - sy;
+        PetscReal       next;
+        if (PetscAbsReal(gv) <= 1e-15 * sy) break;
+        if (gv > 0) lo = dl;
+        else hi = dl;
+        next = 3 * mu + H > 0 ? dl + gv / (3 * mu + H) : 0.5 * (lo + hi);
+        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+        dl = next;
+        sy = TslMaterialYield(mat, st[6] + dl, theta, &H, &dsy);
+      }
+      for (PetscInt r = 0; r < 6; r++) nh[r] = d[r] / nrm;
+      w = TslMaterialYieldIntegral(mat, st[6], st[6] + dl, theta, &dw_th_fixed);
+    } else if (nrm > 0)
+      for (PetscInt r = 0; r < 6; r++) nh[r] = d[r] / nrm;
+    for (PetscInt r = 0; r < 6; r++) {
+      sig[r]  = (r < 3 ? Kb * tr : 0) + (plastic ? s23 * sy * nh[r] : 2 * mu * d[r]);
+      deps[r] = plastic ? dl * s32 * nh[r] * (r < 3 ? 1 : 2) : 0;
+    }
+    for (PetscInt a = 0; a < nv; a++)
+      for (PetscInt i = 0; i < nu; i++) {
+        PetscReal f = 0;
+        for (PetscInt r = 0; r < 6; r++) f += mq.B[r][nu * a + i] * sig[r];
+        R[ndof * a + i] += f * mq.p->dV;
+      }
+    for (PetscInt a = 0; a < n; a++) R[ndof * a + th] -= mq.p->N[a] * heat * w * mq.p->dV; /* the plastic heat, a source */
+    if (in->pstate_new) {
+      PetscReal *sn = in->pstate_new + TSL_PLASTIC_STATE * q;
+      for (PetscInt r = 0; r < 6; r++) sn[r] = st[r] + deps[r];
+      sn[6] = st[6] + dl;
+    }
+    if (res) {
+      for (PetscInt r = 0; r < 6; r++) res->E[r] += mq.eps[r] / quad->n, res->S[r] += sig[r] / quad->n, res->PE[r] += (st[r] + deps[r]) / quad->n;
+      res->PEEQ += (st[6] + dl) / quad->n;
+    }
+    {
+      PetscReal se = 0;
+      for (PetscInt r = 0; r < 6; r++) se += 0.5 * sig[r] * (e[r] - deps[r]) * mq.p->dV;
+      if (res) res->strain_energy += se;
+      if (energy) energy[0] += se, energy[2] += w * mq.p->dV, energy[3] += heat * w * mq.p->dV;
+    }
+    if (!K) continue;
+    {
+      PetscReal C[6][6], dsig[6], dw_de[6] = {0}, dw_dth = 0;
+      const PetscReal beta = plastic ? sy / qtr : 1, hn = plastic ? 2 * mu * H / (3 * mu + H) - 2 * mu * beta : 0;
+      for (PetscInt r = 0; r < 6; r++)
+        for (PetscInt c = 0; c < 6; c++) {
+          const PetscReal pdev = r < 3 && c < 3 ? (r == c) - 1.0 / 3 : (r == c ? 0.5 : 0);
+          C[r][c] = (r < 3 && c < 3 ? Kb : 0) + 2 * mu * beta * pdev + hn * nh[r] * nh[c];
+        }
+      if (plastic) {
+        const PetscReal ddl = (3 * dmu * (ebar - dl) - dsy) / (3 * mu + H), dsyn = H * ddl + dsy;
+        for (PetscInt r = 0; r < 6; r++) dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + s23 * dsyn * nh[r];
+        for (PetscInt c = 0; c < 6; c++) dw_de[c] = sy * 3 * mu / (3 * mu + H) * s23 * nh[c]; /* d w / d p1 = sigma_y(p1) */
+        dw_dth = dw_th_fixed + sy * ddl;
+      } else
+        for (PetscInt r = 0; r < 6; r++) dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + 2 * dmu * d[r];
+      for (PetscInt c1 = 0; c1 < ncol; c1++) {
+        const PetscInt r1 = ndof * (c1 / nu) + c1 % nu;
+        PetscReal      CB[6], Bds = 0;
+        for (PetscInt r = 0; r < 6; r++) {
+          CB[r] = 0;
+          for (PetscInt s2 = 0; s2 < 6; s2++) CB[r] += C[s2][r] * mq.B[s2][c1]; /* (B^T C)_c1, column r */
+          Bds += mq.B[r][c1] * dsig[r];
+        }
+        for (PetscInt c2 = 0; c2 < ncol; c2++) {
+          PetscReal kv = 0;
+          for (PetscInt r = 0; r < 6; r++) kv += CB[r] * mq.B[r][c2];
+          K[r1 * nd + ndof * (c2 / nu) + c2 % nu] += kv * mq.p->dV;
+        }
+        for (PetscInt b = 0; b < n; b++) K[r1 * nd + ndof * b + th] += Bds * mq.p->N[b] * mq.p->dV;
+      }
+      if (heat > 0 && plastic)
+        for (PetscInt a = 0; a < n; a++) {
+          const PetscReal f = -mq.p->N[a] * heat * mq.p->dV;
+          for (PetscInt c2 = 0; c2 < ncol; c2++) {
+            PetscReal kv = 0;
+            for (PetscInt r = 0; r < 6; r++) kv += dw_de[r] * mq.B[r][c2];
+            K[(ndof * a + th) * nd + ndof * (c2 / nu) + c2 % nu] += f * kv;
+          }
+          for (PetscInt b = 0; b < n; b++) K[(ndof * a + th) * nd + ndof * b + th] += f * dw_dth * mq.p->N[b];
+        }
+    }
+  }
+  return PETSC_TRUE;
+}
+
+PetscInt TslElementTypeMechanicalPoints(const TslElementType *t, const TslElementSection *sec)
+{
+  return t->form->quadrature(t->geom, sec)->n;
+}
+
 /* Mechanical terms over the formulation's points. Displacement formulation:
  *   sigma = D (eps - eps_th m),  R_u = int B^T sigma dV,
  *   K_uu = int B^T D B dV,  K_u_theta_b = int B^T (dD (eps - eps_th m) - D m deps_th) N_b dV.
@@ -494,6 +636,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   MechPoint             mq;
   PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 
+  if (in->pstate) return MechanicsPlastic(in, full, R, K, res, NULL);
   if (t->form->incompatible) return MechanicsIncompatible(in, full, R, K, res, energy);
   if (K && !se && !hybrid && LeanStrain(in)) return MechanicsSolid3DTangent(in, full, R, K);
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
@@ -700,7 +843,7 @@ PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], Pets
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted, PetscReal energy[2])
+PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted, PetscReal energy[4])
 {
   const PetscInt  nd = TslElementTypeNodes(in->type) * in->type->ndof;
   Hybrid          hy;
@@ -709,7 +852,7 @@ PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[]
 
   PetscFunctionBeginUser;
   *inverted = PETSC_FALSE;
-  if (energy) energy[0] = energy[1] = 0;
+  if (energy) energy[0] = energy[1] = energy[2] = energy[3] = 0;
   PetscCall(PetscArrayzero(R, nd));
   if (K) PetscCall(PetscArrayzero(K, nd * nd));
   if (!FullPoints(in, full)) {
@@ -717,7 +860,7 @@ PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[]
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   Conduction(in, full, R, K);
-  if (!Mechanics(in, full, R, K, &hy, NULL, energy)) {
+  if (!(in->pstate ? MechanicsPlastic(in, full, R, K, NULL, energy) : Mechanics(in, full, R, K, &hy, NULL, energy))) {
     *inverted = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }

@@ -80,5 +80,89 @@ PetscBool TslMaterialIsTemperatureDependent(const TslMaterial *mat)
 {
   for (PetscInt k = 0; k < TSL_NPROP; k++)
     if (mat->prop[k].n > 1) return PETSC_TRUE;
+  for (PetscInt i = 1; i < mat->plastic.n; i++)
+    if (mat->plastic.row[i][2] != mat->plastic.row[0][2]) return PETSC_TRUE;
   return PETSC_FALSE;
+}
+
+/* One temperature's curve (rows s..e-1): sigma_y at peeq and its slope. */
+static PetscReal Curve(const PetscReal (*row)[3], PetscInt s, PetscInt e, PetscReal peeq, PetscReal *H)
+{
+  PetscInt k = s;
+
+  *H = 0;
+  if (peeq >= row[e - 1][1]) return row[e - 1][0];
+  if (peeq <= row[s][1]) {
+    if (e - s > 1) *H = (row[s + 1][0] - row[s][0]) / (row[s + 1][1] - row[s][1]); /* the first segment's slope at its start */
+    return row[s][0];
+  }
+  while (k + 2 < e && peeq >= row[k + 1][1]) k++;
+  *H = (row[k + 1][0] - row[k][0]) / (row[k + 1][1] - row[k][1]);
+  return row[k][0] + *H * (peeq - row[k][1]);
+}
+
+PetscReal TslMaterialYield(const TslMaterial *mat, PetscReal peeq, PetscReal theta, PetscReal *H, PetscReal *dtheta)
+{
+  const TslPlasticTable *t = &mat->plastic;
+  PetscInt               g0 = 0, g1, g2;
+  PetscReal              h0, h1, s0, s1, w;
+
+  if (dtheta) *dtheta = 0;
+  /* groups of equal temperature: [g0, g1) the last one at or below theta (or the first), [g1, g2) the next */
+  for (;;) {
+    g1 = g0 + 1;
+    while (g1 < t->n && t->row[g1][2] == t->row[g0][2]) g1++;
+    if (g1 >= t->n || theta < t->row[g1][2]) break;
+    g0 = g1;
+  }
+  s0 = Curve(t->row, g0, g1, peeq, &h0);
+  if (g1 >= t->n || theta <= t->row[g0][2]) {
+    if (H) *H = h0;
+    return s0;
+  }
+  g2 = g1 + 1;
+  while (g2 < t->n && t->row[g2][2] == t->row[g1][2]) g2++;
+  s1 = Curve(t->row, g1, g2, peeq, &h1);
+  w  = (theta - t->row[g0][2]) / (t->row[g1][2] - t->row[g0][2]);
+  if (H) *H = (1 - w) * h0 + w * h1;
+  if (dtheta) *dtheta = (s1 - s0) / (t->row[g1][2] - t->row[g0][2]);
+  return (1 - w) * s0 + w * s1;
+}
+
+/* int_a^b of one temperature's curve (rows s..e-1; a <= b): the trapezoids between its breakpoints, the last value
+ * held beyond the last point */
+static PetscReal CurveIntegral(const PetscReal (*row)[3], PetscInt s, PetscInt e, PetscReal a, PetscReal b)
+{
+  PetscReal H, x = a, fx = Curve(row, s, e, a, &H), sum = 0;
+
+  for (PetscInt k = s; k < e; k++) {
+    const PetscReal y = row[k][1];
+    if (y <= x || y >= b) continue;
+    sum += 0.5 * (fx + row[k][0]) * (y - x);
+    x = y, fx = row[k][0];
+  }
+  return sum + 0.5 * (fx + Curve(row, s, e, b, &H)) * (b - x);
+}
+
+PetscReal TslMaterialYieldIntegral(const TslMaterial *mat, PetscReal p0, PetscReal p1, PetscReal theta, PetscReal *dtheta)
+{
+  const TslPlasticTable *t = &mat->plastic;
+  PetscInt               g0 = 0, g1, g2;
+  PetscReal              i0, i1, w;
+
+  if (dtheta) *dtheta = 0;
+  for (;;) { /* the groups of TslMaterialYield */
+    g1 = g0 + 1;
+    while (g1 < t->n && t->row[g1][2] == t->row[g0][2]) g1++;
+    if (g1 >= t->n || theta < t->row[g1][2]) break;
+    g0 = g1;
+  }
+  i0 = CurveIntegral(t->row, g0, g1, p0, p1);
+  if (g1 >= t->n || theta <= t->row[g0][2]) return i0;
+  g2 = g1 + 1;
+  while (g2 < t->n && t->row[g2][2] == t->row[g1][2]) g2++;
+  i1 = CurveIntegral(t->row, g1, g2, p0, p1);
+  w  = (theta - t->row[g0][2]) / (t->row[g1][2] - t->row[g0][2]);
+  if (dtheta) *dtheta = (i1 - i0) / (t->row[g1][2] - t->row[g0][2]);
+  return (1 - w) * i0 + w * i1;
 }

@@ -33,8 +33,14 @@ void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const Pet
   d->in.x          = d->x;
   d->in.u          = d->u;
   d->in.theta_init = d->ti;
-  d->in_old        = d->in;
-  d->in_old.u      = d->uo;
+  d->in.pstate         = p->pstate_off && p->pstate_off[e] >= 0 ? p->pstate + p->pstate_off[e] : NULL;
+  d->in.pstate_new     = d->in.pstate && p->pstate_write ? p->pstate_new + p->pstate_off[e] : NULL;
+  d->in.inelastic_rate = p->shift;
+  d->in_old            = d->in;
+  d->in_old.u          = d->uo;
+  /* the old state is the committed one: no further flow, no heat, nothing written */
+  d->in_old.pstate_new     = NULL;
+  d->in_old.inelastic_rate = 0;
 }
 
 /* The one element loop: gathers each local element's data (current and old state; NULL arrays read as
@@ -342,7 +348,7 @@ static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, 
 {
   AsmCtx   *c        = (AsmCtx *)ctx;
   PetscBool inverted = PETSC_FALSE;
-  PetscReal energy[2];
+  PetscReal energy[4];
 
   PetscFunctionBeginUser;
   (void)stop;
@@ -356,7 +362,10 @@ static PetscErrorCode AssembleElement(TslProblem p, PetscInt e, TslElemData *d, 
     if (*c->bad_elem < 0) *c->bad_elem = e;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  if (c->heat) c->heat->energy[0] += energy[0], c->heat->energy[1] += energy[1];
+  if (c->heat) {
+    c->heat->energy[0] += energy[0], c->heat->energy[1] += energy[1];
+    c->heat->plastic_work += energy[2], c->heat->plastic_heat += energy[3];
+  }
   PetscCall(ElementRest(p, e, d, c));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -1010,11 +1019,13 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
 {
   AsmHeat            heat;
   const PetscScalar *r;
-  PetscReal          loc[10] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, g[10];
+  PetscReal          loc[12] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, g[12];
   TslFailure         fail;
 
   PetscFunctionBeginUser;
+  p->pstate_write = p->pstate ? PETSC_TRUE : PETSC_FALSE; /* the plastic state at this solution, for TslProblemCommitState */
   PetscCall(Residual(p, ASM_RAW, p->X, p->Rraw, &heat, &fail));
+  p->pstate_write = PETSC_FALSE;
   /* the state was solved, so its contact projections exist: a failure here is not a cutback matter */
   PetscCheck(!fail, p->comm, PETSC_ERR_PLIB, "%s", p->fail_msg);
   PetscCall(VecGetArrayRead(p->Rraw, &r));
@@ -1031,8 +1042,10 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
   loc[3] = heat.stored * p->shift;
   loc[7] = heat.energy[0];
   loc[8] = heat.energy[1];
-  loc[9] = -heat.radiation;
-  PetscCall(MPIU_Allreduce(loc, g, 10, MPIU_REAL, MPIU_SUM, p->comm));
+  loc[9]  = -heat.radiation;
+  loc[10] = heat.plastic_work;
+  loc[11] = heat.plastic_heat;
+  PetscCall(MPIU_Allreduce(loc, g, 12, MPIU_REAL, MPIU_SUM, p->comm));
   hb->heat_in          = g[0];
   hb->film_out         = g[1];
   hb->radiation_out    = g[9];
@@ -1041,7 +1054,9 @@ PetscErrorCode TslProblemHeatBalance(TslProblem p, TslHeatBalance *hb)
   hb->interface_heat   = g[4];
   hb->dissipation      = g[5];
   hb->friction_heat    = g[6];
-  hb->balance          = g[0] + g[2] + g[6] - g[1] - g[9] - g[3];
+  hb->plastic_work     = g[10];
+  hb->plastic_heat     = g[11];
+  hb->balance          = g[0] + g[2] + g[6] + g[11] - g[1] - g[9] - g[3];
   hb->strain_energy    = g[7];
   hb->hourglass_energy = g[8];
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -67,7 +67,13 @@ static PetscErrorCode ElementResult(TslProblem p, PetscInt e, TslElemData *d, vo
   PetscFunctionBeginUser;
   (void)p, (void)stop;
   PetscCall(TslElementOutput(&d->in, &res));
-  src = c->which == 0 ? res.S : c->which == 1 ? res.E : c->which == 2 ? res.HFL : c->which == 3 ? &res.strain_energy : &res.hourglass_energy;
+  src = c->which == 0   ? res.S
+        : c->which == 1 ? res.E
+        : c->which == 2 ? res.HFL
+        : c->which == 3 ? &res.strain_energy
+        : c->which == 4 ? &res.hourglass_energy
+        : c->which == 5 ? res.PE
+                        : &res.PEEQ;
   for (PetscInt k = 0; k < c->ncomp; k++) c->vals[e * c->ncomp + k] = src[k];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -90,7 +96,7 @@ static PetscErrorCode ElementValues(TslProblem p, PetscInt which, PetscInt ncomp
 typedef struct {
   const char  *name;
   TslFieldKind kind;
-  PetscInt     deflt; /* written without an *OUTPUT request: 0 no, 1 yes, 2 when the model has contact */
+  PetscInt     deflt; /* written without an *OUTPUT request: 0 no, 1 yes, 2 when the model has contact, 3 when it has plasticity */
   PetscInt     ncomp, which;
   PetscErrorCode (*eval)(TslProblem, PetscInt which, PetscInt ncomp, PetscReal vals[]);
 } FieldRow;
@@ -105,6 +111,7 @@ static const FieldRow Fields[] = {
     {"S", TSL_FIELD_ELEMENT, 1, 6, 0, ElementValues},     {"E", TSL_FIELD_ELEMENT, 1, 6, 1, ElementValues},
     {"HFL", TSL_FIELD_ELEMENT, 1, 3, 2, ElementValues},   {"ELSE", TSL_FIELD_ELEMENT, 0, 1, 3, ElementValues},
     {"ELASE", TSL_FIELD_ELEMENT, 0, 1, 4, ElementValues},
+    {"PE", TSL_FIELD_ELEMENT, 3, 6, 5, ElementValues},    {"PEEQ", TSL_FIELD_ELEMENT, 3, 1, 6, ElementValues},
 };
 
 PetscInt TslFieldCount(void)

@@ -327,6 +327,37 @@ static PetscErrorCode SetUpLocal(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The plastic elements' state (TSL_PLASTIC_STATE reals at each mechanical point), zero: no plastic strain yet. */
+static PetscErrorCode SetUpPlasticState(TslProblem p)
+{
+  PetscInt n = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt e = 0; e < p->m->nelem; e++)
+    if (TslMaterialIsPlastic(p->esec[e].mat)) n++;
+  if (!n) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscMalloc1(p->m->nelem, &p->pstate_off));
+  n = 0;
+  for (PetscInt e = 0; e < p->m->nelem; e++) {
+    const TslElementType *t = TslElementTypeGet(p->m->elem_type[e]);
+    p->pstate_off[e]        = TslMaterialIsPlastic(p->esec[e].mat) ? n : -1;
+    if (p->pstate_off[e] >= 0) n += TSL_PLASTIC_STATE * TslElementTypeMechanicalPoints(t, &p->esec[e]);
+  }
+  PetscCall(PetscCalloc1(n, &p->pstate)); /* two blocks, not one: TslProblemCommitState swaps them */
+  PetscCall(PetscCalloc1(n, &p->pstate_new));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemCommitState(TslProblem p)
+{
+  PetscReal *s = p->pstate;
+
+  PetscFunctionBeginUser;
+  p->pstate     = p->pstate_new;
+  p->pstate_new = s;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemCreate(MPI_Comm comm, TslModel *local, TslProblem *prob)
 {
   TslProblem p;
@@ -357,6 +388,7 @@ PetscErrorCode TslProblemCreate(MPI_Comm comm, TslModel *local, TslProblem *prob
   PetscCall(PetscCalloc2(p->nn * p->ndof, &p->bc, p->nn * p->ndof, &p->nload));
   PetscCall(PetscCalloc1(local->nelem + 1, &p->face_start));
   PetscCall(TslProblemCheckElements(p));
+  PetscCall(SetUpPlasticState(p));
   PetscCall(TslProblemContactSetUp(p));
   *prob = p;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -382,6 +414,9 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(PetscFree(p->amp_active));
   PetscCall(TslProblemTemperatureFileEnd(p));
   PetscCall(PetscFree(p->esec));
+  PetscCall(PetscFree(p->pstate_off));
+  PetscCall(PetscFree(p->pstate));
+  PetscCall(PetscFree(p->pstate_new));
   PetscCall(PetscFree2(p->extra, p->pinned));
   PetscCall(PetscFree(p->theta_init));
   PetscCall(PetscFree2(p->bc, p->nload));

@@ -4,6 +4,7 @@
 #include <thermoslide/contact.h>
 #include <thermoslide/sys.h>
 #include <thermoslide/output.h>
+#include <thermoslide/material.h>
 #include <string.h>
 
 /* One contact pair on this rank: the law and the part of the main surface the rank holds (the faces its
@@ -122,6 +123,14 @@ struct _p_TslProblem {
     PetscInt         nwin, *win, a, b;
     PetscReal        t0, *Ts, *Ta, *Tb, *T;
   } tfile;
+
+  /* Mises plasticity (kernels.c, MechanicsPlastic): the committed state of the plastic elements' points (TSL_PLASTIC_STATE
+   * reals a point; pstate_off[e] the element's first, -1 for an elastic element; NULL arrays: no plastic element here),
+   * pstate_new the state the heat balance's pass reaches at the converged solution (pstate_write), made the committed
+   * one by TslProblemCommitState */
+  PetscReal *pstate, *pstate_new;
+  PetscInt  *pstate_off;
+  PetscBool  pstate_write;
 
   /* step state */
   PetscInt      step;
@@ -255,6 +264,8 @@ typedef struct {
   PetscReal friction_heat; /* part of it converted to heat (eta) */
   PetscReal stored;        /* sum of the lumped heat contents' change over the increment (Q - Q_old) */
   PetscReal energy[2];     /* the elements' strain and hourglass energies (TslElementInternalEnergy) */
+  PetscReal plastic_work;  /* plastic work of the increment, int sigma : d eps_p dV */
+  PetscReal plastic_heat;  /* the heat it gives per unit time (eta / dt) */
 } AsmHeat;
 
 /* Books the heat h that a face record of this kind added (TslElementFaceLoad's *heat) in its total; mechanical

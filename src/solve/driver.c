@@ -356,7 +356,16 @@ static PetscErrorCode SetUpSolver(Driver *d)
   PetscCall(TslOptionsInt(PetscOptionsObject, "-tsl_debug_diverge_step", "testing aid: treat every increment of this step (1-based) as diverged", 0,
                           PETSC_MAX_INT, &d->debug_diverge_step));
   PetscOptionsEnd();
-  PetscCall(SetDefaultOption(d, "-snes_linesearch_type", "basic"));
+  {
+    /* full Newton steps by default; a model with *PLASTIC backtracks (bt): its points switch between elastic and
+     * plastic from one iterate to the next, and full steps can cycle where the yield surface is crossed (a quadratic
+     * brick unloaded from a plastic state: 45 iterations with l2, none converging with basic, 7 with bt) */
+    const TslModel *m;
+    PetscBool       plastic = PETSC_FALSE;
+    PetscCall(TslProblemGetModel(d->prob, &m));
+    for (PetscInt k = 0; k < m->nmaterial; k++) plastic = (PetscBool)(plastic || TslMaterialIsPlastic(&m->materials[k]));
+    PetscCall(SetDefaultOption(d, "-snes_linesearch_type", plastic ? "bt" : "basic"));
+  }
   {
     /* a small model: a sparse direct solve costs less than building and applying the AMG hierarchies,
      * whose set-up dominates the increments of a few-hundred-unknown contact deck. The factorisation
@@ -718,6 +727,8 @@ static PetscErrorCode Accept(Driver *d, PetscInt s, PetscInt inc, PetscReal t, P
   PetscFunctionBeginUser;
   PetscCall(TslProblemHeatBalance(d->prob, &hb));
   PetscCall(TslProblemContactCommit(d->prob));
+  PetscCall(TslProblemCommitState(d->prob));
+  d->plastic_dissipated += hb.plastic_work;
   d->dissipated += hb.dissipation * h;
   d->absorbed += hb.friction_heat * h;
   PetscCall(PetscPrintf(d->comm,
@@ -744,6 +755,8 @@ static PetscErrorCode Accept(Driver *d, PetscInt s, PetscInt inc, PetscReal t, P
   row[HIST_BALANCE]             = hb.balance;
   row[HIST_STRAIN_ENERGY]       = hb.strain_energy;
   row[HIST_HOURGLASS_ENERGY]    = hb.hourglass_energy;
+  row[HIST_PLASTIC_HEAT]        = hb.plastic_heat;
+  row[HIST_PLASTIC_DISSIPATION] = d->plastic_dissipated;
   for (PetscInt c = HIST_ENERGY; c < NHISTORY; c++) row[c] = 0; /* the energies of explicit steps */
   PetscCall(TslHistoryAppend(d->hist, row));
   d->done_step = s + 1, d->done_inc = inc, d->done_time = total, d->done_step_time = t, d->done_dt = h;

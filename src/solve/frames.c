@@ -21,6 +21,8 @@ const char *const TslHistoryColumns[NHISTORY] = {"step",
                                              "balance_residual",
                                              "strain_energy",
                                              "hourglass_energy",
+                                             "plastic_heat_rate",
+                                             "ALLPD",
                                              "ALLKE",
                                              "ALLIE",
                                              "ALLWK",
@@ -58,10 +60,12 @@ PetscErrorCode TslFramesSetUp(Driver *d, const char *dir, const char *jobname)
   for (PetscInt s = 0; s < m->nstep; s++) /* every rank holds the steps whole */
     for (PetscInt i = 0; i < m->steps[s].nload; i++)
       if (m->steps[s].loads[i].kind == TSL_LOAD_RADIATE && (m->steps[s].loads[i].target.set[0] || m->steps[s].loads[i].target.id >= 0)) d->radiates = PETSC_TRUE;
+  PetscBool plastic = PETSC_FALSE; /* every rank holds the materials whole */
+  for (PetscInt k = 0; k < m->nmaterial; k++) plastic = (PetscBool)(plastic || TslMaterialIsPlastic(&m->materials[k]));
   for (PetscInt i = 0; i < TslFieldCount(); i++) {
     PetscInt deflt;
     (void)TslFieldName(i, NULL, &deflt);
-    d->field_on[i] = (PetscBool)(deflt == 1 || (deflt == 2 && m->npair > 0));
+    d->field_on[i] = (PetscBool)(deflt == 1 || (deflt == 2 && m->npair > 0) || (deflt == 3 && plastic));
   }
   d->frequency = 1;
   PetscFunctionReturn(PETSC_SUCCESS);

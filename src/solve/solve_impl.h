@@ -5,6 +5,7 @@
 #include <thermoslide/solve.h>
 #include <thermoslide/output.h>
 #include <thermoslide/sys.h>
+#include <thermoslide/material.h>
 #include <petscsnes.h>
 #include <stdint.h>
 
@@ -17,7 +18,7 @@
 #define MAX_FIELDS   32
 
 extern const char *const TslHistoryColumns[];
-#define NHISTORY 26
+#define NHISTORY 28
 /* The place of each column in a row (TslHistoryColumns names them in this order). */
 enum {
   HIST_STEP = 0,
@@ -38,6 +39,8 @@ enum {
   HIST_BALANCE,
   HIST_STRAIN_ENERGY,
   HIST_HOURGLASS_ENERGY,
+  HIST_PLASTIC_HEAT,        /* *INELASTIC HEAT FRACTION x the plastic work rate */
+  HIST_PLASTIC_DISSIPATION, /* ALLPD: the plastic work so far */
   HIST_ENERGY /* the first energy column of explicit steps: ALLKE, ALLIE, ALLWK, ALLFD, ALLCW, ALLMW, ALLVD, ETOTAL */
 };
 
@@ -73,6 +76,7 @@ typedef struct {
   PetscInt   frame_step, frame_inc; /* last frame written */
   PetscInt   done_step, done_inc;   /* last converged increment */
   PetscReal  dissipated, absorbed;  /* frictional dissipation and the heat made of it, since the start */
+  PetscReal  plastic_dissipated;    /* the plastic work since the start (ALLPD) */
   PetscBool  radiates;              /* some step has *RADIATE / *SRADIATE: the increment lines show the heat radiated */
   PetscInt   max_contact_its;
   PetscReal  sync_interval; /* -tsl_output_sync: seconds between syncs of the result files */

@@ -769,7 +769,7 @@ static PetscErrorCode CheckStackDirection(TestLog *log, Case *c)
   const PetscInt        n = g->nnode, ndof = t->ndof;
   PetscInt              perm[TSL_MAX_ELEM_NODES];
   PetscReal         x[TSL_MAX_ELEM_NODES * 3], u[TSL_MAX_ELEM_DOF], ti[TSL_MAX_ELEM_NODES], R[TSL_MAX_ELEM_DOF], Rp[TSL_MAX_ELEM_DOF], d = 0, m = 0;
-  PetscReal         en[2], enp[2];
+  PetscReal         en[4], enp[4];
   PetscBool         inv, invp;
   TslElementSection sec1 = c->sec;
   TslElementInput   in1;

@@ -1,0 +1,139 @@
+#!/usr/bin/python3
+"""Decks of the plasticity tests (CMakeLists.txt here; docs/keywords.md *PLASTIC): a unit cube (a ring of unit
+cross-section for CAX4T) in uniaxial stress, held on its three symmetry planes and pulled along x (the ring: along
+its axis) by a prescribed displacement, through loading, unloading and reverse loading; Mises plasticity with
+isotropic hardening, E = 200000, nu = 0.3, sigma_y = 200 + 1000 p (two points; constant past p = 0.5).
+
+  uniaxial_<type>.inp   *STATIC steps: to strain 0.01, back to 0.004, on to -0.01 (check.py uniaxial)
+  adiabatic_<type>.inp  one transient coupled step pulling to strain 0.02 in 1 s with no heat leaving, and
+                        *INELASTIC HEAT FRACTION 0.9, rho c = 2: Delta theta = 0.9 ALLPD / (rho c V); the _soft variant
+                        has a yield stress falling with temperature (200 + 1000 p at 0, 100 + 500 p at 50)
+  jacobian_plastic_c3d8t.inp  a distorted brick pulled past yield, heated, a temperature-dependent modulus and yield
+                        table: -snes_test_jacobian with the plastic flow, its heat and their temperature columns
+  bad_*.inp             bad input (CMakeLists.txt gives each message)
+usage: make_decks.py [OUTDIR]"""
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+E, NU, RHO, C = 200000.0, 0.3, 1.0, 2.0
+R0 = 10.0  # the ring's inner radius
+PLASTIC = "*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n"
+PLASTIC_SOFT = "*PLASTIC\n 200.0, 0.0, 0.0\n 700.0, 0.5, 0.0\n 100.0, 0.0, 50.0\n 350.0, 0.5, 50.0\n"
+# the strain path of the uniaxial decks: (step, period, increment, target strain)
+PATH = [("LOAD", 1.0, 0.1, 0.01), ("UNLOAD", 1.0, 0.25, 0.004), ("REVERSE", 1.0, 0.1, -0.01)]
+
+
+def cube(typ):
+    """A unit cube of one element (C3D20T: its midside nodes too), or the CAX4T ring r in [R0, R0 + 1], z in [0, 1]."""
+    if typ == "CAX4T":
+        nodes = [(1, R0, 0.0), (2, R0 + 1, 0.0), (3, R0 + 1, 1.0), (4, R0, 1.0)]
+        return nodes, [[1, 1, 2, 3, 4]], "*NSET, NSET=X0\n 1, 2\n*NSET, NSET=X1\n 3, 4\n"  # X0: z = 0, X1: z = 1 (the pulled face)
+    corner = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)]
+    pts = list(corner)
+    conn = list(range(1, 9))
+    if typ == "C3D20T":
+        edges = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
+        for a, b in edges:
+            pts.append(tuple(0.5 * (corner[a][k] + corner[b][k]) for k in range(3)))
+        conn = list(range(1, 21))
+    nodes = [(i + 1,) + p for i, p in enumerate(pts)]
+    sel = lambda k, v: [n[0] for n in nodes if abs(n[1 + k] - v) < 1e-12]
+    sets = "".join("*NSET, NSET=%s\n" % name + "".join(" %d,\n" % i for i in sel(k, v)) for name, k, v in
+                   [("X0", 0, 0.0), ("X1", 0, 1.0), ("Y0", 1, 0.0), ("Z0", 2, 0.0)])
+    return nodes, [[1] + conn], sets
+
+
+def model(typ, plastic, heat=False):
+    nodes, elems, sets = cube(typ)
+    dim = 2 if typ == "CAX4T" else 3
+    fmt = lambda n: " %d, " % n[0] + ", ".join("%.12g" % v for v in n[1:1 + dim]) + "\n"
+    return ("*NODE, NSET=NALL\n" + "".join(fmt(n) for n in nodes) + "*ELEMENT, TYPE=%s, ELSET=ALL\n" % typ +
+            "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in elems) + sets +
+            "*MATERIAL, NAME=STEEL\n*ELASTIC\n %g, %g\n" % (E, NU) + plastic + ("*INELASTIC HEAT FRACTION\n 0.9\n" if heat else "") +
+            "*CONDUCTIVITY\n 50.0\n*DENSITY\n %g\n*SPECIFIC HEAT\n %g\n*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL\n 1.0\n" % (RHO, C) +
+            "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n NALL, 0.0\n")
+
+
+def holds(typ):
+    """The symmetry planes (the ring: z = 0 axially, radially free) and the pulled direction's dof."""
+    return ("*BOUNDARY\n X0, 2, 2\n" if typ == "CAX4T" else "*BOUNDARY\n X0, 1, 1\n Y0, 2, 2\n Z0, 3, 3\n"), (2 if typ == "CAX4T" else 1)
+
+
+def uniaxial(typ):
+    hold, dof = holds(typ)
+    text = "*HEADING\n Uniaxial stress of one %s: loading, unloading, reverse loading (Mises, isotropic hardening)\n" % typ + model(typ, PLASTIC)
+    for k, (name, period, inc, strain) in enumerate(PATH):
+        text += ("*STEP, NAME=%s, INC=100\n*STATIC, DIRECT\n %g, %g\n" % (name, inc, period) + (hold if k == 0 else "") +
+                 "*BOUNDARY\n X1, %d, %d, %.12g\n*END STEP\n" % (dof, dof, strain))
+    return text
+
+
+def adiabatic(typ, soft):
+    hold, dof = holds(typ)
+    return ("*HEADING\n Adiabatic heating of one %s pulled past yield%s\n" % (typ, " (a yield stress falling with temperature)" if soft else "") +
+            model(typ, PLASTIC_SOFT if soft else PLASTIC, heat=True) +
+            "*STEP, NAME=PULL, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.05, 1.0\n" + hold +
+            "*BOUNDARY\n X1, %d, %d, 0.02\n*END STEP\n" % (dof, dof))
+
+
+def jacobian():
+    """One distorted C3D8T pulled well past yield in two increments (every point flows in both: a point near the yield
+    surface would put the finite differences across its kink), heated at a corner, with a modulus and a yield stress
+    falling with temperature, expansion and the plastic heat. In millimetres (a brick of about 1000): PETSc's
+    finite-difference step is 1.5e-8 of a value but at least 1.5e-6, which on a unit brick would move a point's strain by
+    1e-6, a thousandth of its elastic strain, and the differences would measure the return's curvature, not the tangent
+    (1e-5 against 1e-8 in millimetres)."""
+    corner = [(1000 * a, 1000 * b, 1000 * c) for a, b, c in
+              [(0, 0, 0), (1, 0, 0), (1.1, 1.2, 0.1), (0, 1, 0), (0, 0.1, 1), (1.2, 0, 1.1), (1, 1, 1), (-0.1, 1, 0.9)]]
+    return ("*HEADING\n A distorted C3D8T pulled past yield and heated: the plastic tangent against finite differences\n"
+            "*NODE, NSET=NALL\n" + "".join(" %d, %g, %g, %g\n" % ((i + 1,) + c) for i, c in enumerate(corner)) +
+            "*ELEMENT, TYPE=C3D8T, ELSET=ALL\n 1, 1, 2, 3, 4, 5, 6, 7, 8\n*NSET, NSET=FIX\n 1, 4, 5, 8\n*NSET, NSET=PULL\n 2, 3, 6, 7\n"
+            "*MATERIAL, NAME=STEEL\n*ELASTIC\n 200000., 0.3, 0.\n 150000., 0.3, 100.\n" + PLASTIC_SOFT +
+            "*INELASTIC HEAT FRACTION\n*EXPANSION\n 1.2E-5\n*CONDUCTIVITY\n 50.0\n*DENSITY\n 1.0\n*SPECIFIC HEAT\n 2.0\n"
+            "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\n NALL, 20.0\n"
+            "*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.5, 1.0\n*BOUNDARY\n FIX, 1, 1\n 1, 2, 3\n 4, 3, 3\n"
+            " PULL, 1, 1, 40.0\n*CFLUX\n 7, 11, 5.0E6\n*END STEP\n")
+
+
+def bad(name):
+    base = uniaxial("C3D8T")
+    if name == "first_strain":
+        return base.replace("*PLASTIC\n 200.0, 0.0\n", "*PLASTIC\n 200.0, 0.001\n")
+    if name == "yield_zero":
+        return base.replace(" 200.0, 0.0\n", " 0.0, 0.0\n")
+    if name == "descending":
+        return base.replace(" 700.0, 0.5\n", " 700.0, 0.5\n 800.0, 0.4\n")
+    if name == "kinematic":
+        return base.replace("*PLASTIC\n", "*PLASTIC, HARDENING=KINEMATIC\n")
+    if name == "rate":
+        return base.replace("*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n", "*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n*RATE DEPENDENT, TYPE=POWER LAW\n 1.0, 5.0\n")
+    if name == "plane_stress":
+        return uniaxial("CAX4T").replace("TYPE=CAX4T", "TYPE=CPS4T")
+    if name == "explicit":
+        return base.split("*STEP")[0] + "*STEP\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , 1e-4\n*BOUNDARY\n X0, 1, 1\n*END STEP\n"
+    if name == "heat_fraction":
+        return base.replace("*CONDUCTIVITY", "*INELASTIC HEAT FRACTION\n 1.5\n*CONDUCTIVITY")
+    raise KeyError(name)
+
+
+BAD = ["first_strain", "yield_zero", "descending", "kinematic", "rate", "plane_stress", "explicit", "heat_fraction"]
+
+
+def main():
+    out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "decks")
+    decks = {"jacobian_plastic_c3d8t": jacobian()}
+    for typ in ("C3D8T", "C3D8RT", "C3D20T", "CAX4T"):
+        decks["uniaxial_%s" % typ.lower()] = uniaxial(typ)
+    for typ in ("C3D8T", "CAX4T"):
+        decks["adiabatic_%s" % typ.lower()] = adiabatic(typ, False)
+    decks["adiabatic_soft_c3d8t"] = adiabatic("C3D8T", True)
+    for b in BAD:
+        decks["bad_%s" % b] = bad(b)
+    for name, text in decks.items():
+        with open(os.path.join(out, name + ".inp"), "w") as f:
+            f.write(text)
+
+
+if __name__ == "__main__":
+    main()
