@@ -291,6 +291,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   MechPoint             mq;
   PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 
+  if (nu == 0) return PETSC_TRUE; /* a heat-transfer type: no displacement, no mechanical term */
   if (K && !se && !hybrid && LeanStrain(in)) return MechanicsSolid3DTangent(in, full, R, K);
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
   if (K) PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(Kuu, ncol * ncol));

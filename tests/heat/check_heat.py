@@ -1,0 +1,61 @@
+#!/usr/bin/python3
+"""Checks of the heat-transfer decks (tests/heat/decks, written by make_decks.py).
+
+bar       transient 1D conduction (alpha = k / (rho c) = 1, L = 1, T(0, t) = 1, T(x, 0) = 0, insulated at x = L): the
+          Fourier series T = 1 - sum_n 4 / ((2n+1) pi) sin(lambda_n x) exp(-lambda_n^2 t), lambda_n = (2n+1) pi / 2,
+          at t = 0.1 and t = 0.2 (frames 2 and 4) at every node; tolerance 5e-3 of the unit drop, which covers the
+          mesh (h = 0.05, lumped capacity) and backward Euler (dt = 0.0025) errors together: measured 3.4e-3 at t = 0.1
+          and 1.3e-3 at t = 0.2, backward Euler's first-order error (6.8e-3 and 2.6e-3 at dt = 0.005);
+          the heat balance residual at most 1e-10 per increment, and the heat that entered (the reaction heat summed
+          over the increments) = the heat stored, rho c A int T dx, within 1e-9 relative (backward Euler conserves heat).
+same      the temperatures of this job equal those of another job (OTHER_OUTDIR OTHER_JOB): at every node and frame
+          within 1e-8 of the unit drop (the two solves' tolerance).
+usage: check_heat.py OUTDIR JOB CASE [OTHER_OUTDIR OTHER_JOB]
+"""
+import math
+import sys
+
+import numpy as np
+
+sys.path.insert(0, sys.path[0] + "/../tools")
+from tslcheck import Result, check, finish
+
+r = Result(sys.argv[1], sys.argv[2])
+case = sys.argv[3]
+h = r.history
+
+
+def fourier(x, t, terms=200):
+    T = np.ones_like(x)
+    for n in range(terms):
+        lam = (2 * n + 1) * math.pi / 2
+        T -= 4 / ((2 * n + 1) * math.pi) * np.sin(lam * x) * math.exp(-lam * lam * t)
+    return T
+
+
+if case == "bar":
+    x = r.xyz[:, 0]
+    for idx, t in ((1, 0.1), (3, 0.2)):
+        nt = r.field("NT", idx)[:, 0]
+        err = float(np.max(np.abs(nt - fourier(x, t))))
+        check("bar: max |T - Fourier series| at t = %g" % t, err, 0.0, 5e-3)
+    rate = np.abs(h["balance_residual"])
+    check("bar: largest heat balance residual", float(np.max(rate)), 0.0, 1e-10)
+    entered = float(np.sum(h["reaction_heat"] * h["dt"]))
+    # the stored heat from the last frame: rho c times the integral of T over the bar (trapezoidal = exact for the
+    # lumped capacity of the linear bricks: each node carries its share of the volume)
+    nt = r.field("NT", -1)[:, 0]
+    xs = np.unique(np.round(x, 12))
+    Tx = np.array([np.mean(nt[np.abs(x - xv) < 1e-9]) for xv in xs])
+    stored = 0.5 * 2.0 * 0.1 * 0.1 * float(np.sum(0.5 * (Tx[1:] + Tx[:-1]) * np.diff(xs)))
+    check("bar: heat in over the step / heat stored", entered / stored, 1.0, 1e-9)
+elif case == "same":
+    o = Result(sys.argv[4], sys.argv[5])
+    check("same: frames", len(r.frames), len(o.frames), 0)
+    worst = 0.0
+    for i in range(len(r.frames)):
+        worst = max(worst, float(np.max(np.abs(r.field("NT", i) - o.field("NT", i)))))
+    check("same: max |NT - NT of %s| over every frame" % sys.argv[5], worst, 0.0, 1e-8)
+else:
+    sys.exit("unknown case " + case)
+finish()

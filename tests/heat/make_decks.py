@@ -1,0 +1,64 @@
+"""The heat-transfer decks of tests/heat/decks (issue 45): written here so that the meshes are reproducible.
+
+bar_<type>: a bar 0 <= x <= L = 1 of n elements along x, one across, T = 0 at the start, T = 1 held at x = 0 from
+t = 0, insulated elsewhere: the transient 1D conduction whose Fourier series check_heat.py sums. alpha = k/(rho c)
+= 1 (k = 1, rho = 0.5, c = 2). The DC3D8 bar and the C3D8T bar in *HEAT TRANSFER (read as DC3D8) must give the
+same temperatures; the C3D8T bar in *COUPLED TEMPERATURE-DISPLACEMENT with every displacement held too.
+"""
+import os
+import sys
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def bar(etype, procedure, name, n=20, tdep=False, film=False, end_ss=False, heat_load=False):
+    L, w = 1.0, 0.1
+    lines = ["*HEADING", f" 1D transient conduction along a bar of {n} {etype} (tests/heat/make_decks.py)", "*NODE, NSET=NALL"]
+    nid = 0
+    ids = {}
+    for k in range(2):
+        for j in range(2):
+            for i in range(n + 1):
+                nid += 1
+                ids[(i, j, k)] = nid
+                lines.append(f"{nid}, {L * i / n:.12g}, {w * j:.12g}, {w * k:.12g}")
+    lines.append(f"*ELEMENT, TYPE={etype}, ELSET=BAR")
+    for i in range(n):
+        c = [ids[(i, 0, 0)], ids[(i + 1, 0, 0)], ids[(i + 1, 1, 0)], ids[(i, 1, 0)],
+             ids[(i, 0, 1)], ids[(i + 1, 0, 1)], ids[(i + 1, 1, 1)], ids[(i, 1, 1)]]
+        lines.append(f"{i + 1}, " + ", ".join(str(x) for x in c))
+    lines.append("*NSET, NSET=HOT")
+    lines.append(", ".join(str(ids[(0, j, k)]) for j in range(2) for k in range(2)))
+    lines.append("*NSET, NSET=COLD")
+    lines.append(", ".join(str(ids[(n, j, k)]) for j in range(2) for k in range(2)))
+    lines += ["*MATERIAL, NAME=M"]
+    if procedure.startswith("*COUPLED"):
+        lines += ["*ELASTIC", "1000., 0.3"]
+    if tdep:
+        lines += ["*CONDUCTIVITY", "1.5, 0.", "2.5, 1."]
+    else:
+        lines += ["*CONDUCTIVITY", "1."]
+    lines += ["*DENSITY", "0.5", "*SPECIFIC HEAT"]
+    lines += (["1.5, 0.", "2.5, 1."] if tdep else ["2."])
+    lines += ["*SOLID SECTION, ELSET=BAR, MATERIAL=M", "*INITIAL CONDITIONS, TYPE=TEMPERATURE", "NALL, 0.", "*STEP, INC=1000", procedure]
+    lines += ["0.0025, 0.2, 1e-6, 0.0025" + (", 0.01" if end_ss else "")]
+    lines += ["*BOUNDARY", "HOT, 11, 11, 1."]
+    if procedure.startswith("*COUPLED"):
+        lines += ["NALL, 1, 3"]
+    if film:
+        lines += ["*FILM", f"{n}, F4, 0.5, 3."]
+    if heat_load:
+        lines += ["*CFLUX", "COLD, 11, 0.01", "*DFLUX", "BAR, BF, 0.3"]
+    lines += ["*OUTPUT, FIELD, FREQUENCY=20", "*NODE OUTPUT", "NT", "*EL FILE", "HFL", "*END STEP"]
+    with open(os.path.join(HERE, "decks", name + ".inp"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def main():
+    bar("DC3D8", "*HEAT TRANSFER", "bar_dc3d8")
+    bar("C3D8T", "*HEAT TRANSFER", "bar_c3d8t_heat")
+    bar("C3D8T", "*COUPLED TEMPERATURE-DISPLACEMENT", "bar_c3d8t_coupled")
+
+
+if __name__ == "__main__":
+    sys.exit(main())
