@@ -379,6 +379,7 @@ typedef struct {
   PetscBool         steady;                    /* STEADY STATE (and *STATIC) */
   PetscBool         statik;                    /* *STATIC: mechanical equilibrium with every temperature held at its value (no heat transfer) */
   PetscBool         heat;                      /* *HEAT TRANSFER: the temperature alone (a model of such steps only: docs/design.md) */
+  TslLoc            heat_loc;                  /* the *HEAT TRANSFER line */
   PetscReal         end_ss_rate;               /* *HEAT TRANSFER, END=SS: the step ends once no temperature changes faster (0: END=PERIOD) */
   PetscBool         direct;                    /* DIRECT: fixed increments */
   PetscBool         nlgeom;                    /* NLGEOM accepted (small-strain kinematics used; see docs) */

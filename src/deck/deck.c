@@ -2269,8 +2269,9 @@ static PetscErrorCode KwHeatTransfer(Deck *d, const DeckKeyword *kw)
   USER_CHECK(!Param(d, "FREQUENCY") && !Param(d, "MODAL DYNAMIC"),
              LOC_FMT "*HEAT TRANSFER, FREQUENCY and MODAL DYNAMIC (eigenmodes) are not supported: transient or steady state only", KLOC(d));
   USER_CHECK(!end || !strcmp(end, "PERIOD") || !strcmp(end, "SS"), LOC_FMT "*HEAT TRANSFER, END=%s: END is PERIOD or SS", KLOC(d), end);
-  s->coupled = PETSC_TRUE;
-  s->heat    = PETSC_TRUE;
+  s->coupled  = PETSC_TRUE;
+  s->heat     = PETSC_TRUE;
+  s->heat_loc = d->kwloc;
   s->steady  = Param(d, "STEADY STATE") ? PETSC_TRUE : PETSC_FALSE;
   s->direct  = Param(d, "DIRECT") ? PETSC_TRUE : PETSC_FALSE;
   USER_CHECK(!(end && !strcmp(end, "SS") && s->steady), LOC_FMT "*HEAT TRANSFER: END=SS ends a transient step; STEADY STATE has no rate to watch",
@@ -3469,7 +3470,7 @@ static PetscErrorCode DeckHeatTransferModel(Deck *d)
     const TslStep *h = &m->steps[heat], *o = &m->steps[other];
     USER_ERR(LOC_FMT "step %s: *HEAT TRANSFER steps cannot be mixed with the mechanical step %s at %s:%" PetscInt_FMT
                      " (a heat-transfer model has the temperature alone; run the heat transfer as *COUPLED TEMPERATURE-DISPLACEMENT)",
-             TSL_LOC_ARGS(m, h->loc), h->name, o->name, TSL_LOC_ARGS(m, o->loc));
+             TSL_LOC_ARGS(m, h->heat_loc), h->name, o->name, TSL_LOC_ARGS(m, o->loc));
   }
   for (PetscInt e = 0; e < m->nelem; e++) {
     const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
@@ -3478,9 +3479,8 @@ static PetscErrorCode DeckHeatTransferModel(Deck *d)
     if (!nheat) {
       USER_CHECK(!TslElementTypeHeatOnly(t) || other < 0,
                  LOC_FMT "element %" PetscInt_FMT " is of the heat-transfer type %s, which runs in *HEAT TRANSFER steps only: step %s at %s:%" PetscInt_FMT
-                         " is a mechanical one (use the coupled type, %s with T, in coupled steps)",
-                 TSL_LOC_ARGS(m, l), m->elem_id[e], t->name, other >= 0 ? m->steps[other].name : "", TSL_LOC_ARGS(m, m->steps[PetscMax(other, 0)].loc),
-                 t->name);
+                         " is a mechanical one (mechanical steps take the coupled temperature-displacement types: CPE4T, C3D8T, ...)",
+                 TSL_LOC_ARGS(m, l), m->elem_id[e], t->name, other >= 0 ? m->steps[other].name : "", TSL_LOC_ARGS(m, m->steps[PetscMax(other, 0)].loc));
       continue;
     }
     if (TslElementTypeHeatOnly(t)) continue;

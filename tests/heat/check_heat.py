@@ -8,6 +8,12 @@ bar       transient 1D conduction (alpha = k / (rho c) = 1, L = 1, T(0, t) = 1, 
           and 1.3e-3 at t = 0.2, backward Euler's first-order error (6.8e-3 and 2.6e-3 at dt = 0.005);
           the heat balance residual at most 1e-10 per increment, and the heat that entered (the reaction heat summed
           over the increments) = the heat stored, rho c A int T dx, within 1e-9 relative (backward Euler conserves heat).
+endss     the bar of k(theta) = 1.5 + theta (a table 1.5 at 0, 2.5 at 1; c likewise) with T = 1 at x = 0 and a film
+          (h = 0.5, sink 0) at x = L, transient with END=SS (rate 1e-4): the step must end before its period (50) with
+          the steady state, whose flux q = -k dT/dx is one constant: with Kirchhoff's phi(T) = 1.5 T + T^2 / 2, linear in
+          x, phi(1) - phi(T_L) = q L = h T_L L, so T_L = sqrt(8) - 2. Checks: the last frame before t = 50; T_L within
+          1e-4 (the rate 1e-4 times the time constant left, and k's interpolation by the nodal temperatures; measured
+          1.0e-5); the film heat out = the reaction heat in at the end within 1e-3 relative (the last increment's rate).
 same      the temperatures of this job equal those of another job (OTHER_OUTDIR OTHER_JOB): at every node and frame
           within 1e-8 of the unit drop (the two solves' tolerance).
 usage: check_heat.py OUTDIR JOB CASE [OTHER_OUTDIR OTHER_JOB]
@@ -49,6 +55,13 @@ if case == "bar":
     Tx = np.array([np.mean(nt[np.abs(x - xv) < 1e-9]) for xv in xs])
     stored = 0.5 * 2.0 * 0.1 * 0.1 * float(np.sum(0.5 * (Tx[1:] + Tx[:-1]) * np.diff(xs)))
     check("bar: heat in over the step / heat stored", entered / stored, 1.0, 1e-9)
+elif case == "endss":
+    fr = r.frame(-1)
+    check("endss: the step ended at its steady state before its period 50", float(fr.attrs["time"]) < 50, True, 0)
+    x = r.xyz[:, 0]
+    TL = float(np.mean(r.field("NT", -1)[:, 0][x > 1 - 1e-9]))
+    check("endss: T at the film face (Kirchhoff's closed form)", TL, math.sqrt(8) - 2, 1e-4)
+    check("endss: film heat out / reaction heat in, last increment", h["film_heat_out"][-1] / h["reaction_heat"][-1], 1.0, 1e-3)
 elif case == "same":
     o = Result(sys.argv[4], sys.argv[5])
     check("same: frames", len(r.frames), len(o.frames), 0)

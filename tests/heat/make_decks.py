@@ -11,7 +11,7 @@ import sys
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def bar(etype, procedure, name, n=20, tdep=False, film=False, end_ss=False, heat_load=False):
+def bar(etype, procedure, name, n=20, tdep=False, film=False, heat_load=False, data="0.0025, 0.2, 1e-6, 0.0025", freq=20):
     L, w = 1.0, 0.1
     lines = ["*HEADING", f" 1D transient conduction along a bar of {n} {etype} (tests/heat/make_decks.py)", "*NODE, NSET=NALL"]
     nid = 0
@@ -41,23 +41,87 @@ def bar(etype, procedure, name, n=20, tdep=False, film=False, end_ss=False, heat
     lines += ["*DENSITY", "0.5", "*SPECIFIC HEAT"]
     lines += (["1.5, 0.", "2.5, 1."] if tdep else ["2."])
     lines += ["*SOLID SECTION, ELSET=BAR, MATERIAL=M", "*INITIAL CONDITIONS, TYPE=TEMPERATURE", "NALL, 0.", "*STEP, INC=1000", procedure]
-    lines += ["0.0025, 0.2, 1e-6, 0.0025" + (", 0.01" if end_ss else "")]
+    lines += [data]
     lines += ["*BOUNDARY", "HOT, 11, 11, 1."]
     if procedure.startswith("*COUPLED"):
         lines += ["NALL, 1, 3"]
     if film:
-        lines += ["*FILM", f"{n}, F4, 0.5, 3."]
+        lines += ["*FILM", f"{n}, F4, 0., 0.5"]
     if heat_load:
         lines += ["*CFLUX", "COLD, 11, 0.01", "*DFLUX", "BAR, BF, 0.3"]
-    lines += ["*OUTPUT, FIELD, FREQUENCY=20", "*NODE OUTPUT", "NT", "*EL FILE", "HFL", "*END STEP"]
+    lines += [f"*OUTPUT, FIELD, FREQUENCY={freq}", "*NODE OUTPUT", "NT", "*EL FILE", "HFL", "*END STEP"]
     with open(os.path.join(HERE, "decks", name + ".inp"), "w") as f:
         f.write("\n".join(lines) + "\n")
+
+
+JACOBIAN = """*HEADING
+ Heat transfer on distorted DC2D4 elements for -snes_test_jacobian (tests/heat/make_decks.py): k(theta), c(theta), a film,
+ radiation, a surface flux, a body flux and a concentrated flux
+*NODE, NSET=ALL
+ 1, 0, 0
+ 2, 0.5, 0.0125
+ 3, 1, 0.05
+ 4, 0, 0.5
+ 5, 0.5175, 0.5125
+ 6, 1.035, 0.55
+ 7, 0, 1
+ 8, 0.535, 1.0125
+ 9, 1.07, 1.05
+*ELEMENT, TYPE=DC2D4, ELSET=BODY
+ 1, 1, 2, 5, 4
+ 2, 2, 3, 6, 5
+ 3, 4, 5, 8, 7
+ 4, 5, 6, 9, 8
+*NSET, NSET=BOTTOM
+ 1, 2, 3
+*ELSET, ELSET=TOP
+ 3, 4
+*SURFACE, NAME=RIGHT
+ 2, S2
+ 4, S2
+*MATERIAL, NAME=M
+*CONDUCTIVITY
+ 5.0, 300.
+ 15.0, 500.
+*DENSITY
+ 1.0
+*SPECIFIC HEAT
+ 1.0, 300.
+ 3.0, 500.
+*SOLID SECTION, ELSET=BODY, MATERIAL=M
+ 1.0
+*PHYSICAL CONSTANTS, ABSOLUTE ZERO=-273.15, STEFAN BOLTZMANN=5.670374419e-8
+*INITIAL CONDITIONS, TYPE=TEMPERATURE
+ ALL, 380.0
+ 9, 450.0
+*STEP
+*HEAT TRANSFER
+ 0.1, 0.1
+*BOUNDARY
+ 1, 11, 11, 400.
+*DFLUX
+ TOP, S3, 50.0
+ BODY, BF, 20.0
+*CFLUX
+ 6, 11, 3.0
+*FILM
+ 1, F4, 0.0, 10.0
+ 2, F1, 100.0, 4.0
+*RADIATE
+ TOP, R3, 20.0, 0.9
+*SFILM
+ RIGHT, F, 300.0, 2.0
+*END STEP
+"""
 
 
 def main():
     bar("DC3D8", "*HEAT TRANSFER", "bar_dc3d8")
     bar("C3D8T", "*HEAT TRANSFER", "bar_c3d8t_heat")
     bar("C3D8T", "*COUPLED TEMPERATURE-DISPLACEMENT", "bar_c3d8t_coupled")
+    bar("DC3D8", "*HEAT TRANSFER, END=SS", "endss_dc3d8", n=10, film=True, tdep=True, data="0.01, 50., 1e-6, 1., 1e-4", freq=1000)
+    with open(os.path.join(HERE, "decks", "jacobian_dc2d4.inp"), "w") as f:
+        f.write(JACOBIAN)
 
 
 if __name__ == "__main__":

@@ -199,3 +199,11 @@ tsl_deck_bad(radiate_cavity radiate_cavity.inp "error: radiate_cavity.inp:27: ca
 tsl_deck_bad(radiate_below_absolute_zero radiate_below_absolute_zero.inp "error: radiate_below_absolute_zero.inp:27: the ambient temperature -300. lies below absolute zero (-273.15, *PHYSICAL CONSTANTS)")
 tsl_deck_bad(sradiate_element sradiate_element.inp "error: sradiate_element.inp:27: *SRADIATE needs a surface name")
 tsl_deck_bad(radiate_static radiate_static.inp "error: radiate_static.inp:27: *RADIATE or *SRADIATE in a *STATIC step: a static step holds the temperatures (no heat transfer); thermal loads need *COUPLED TEMPERATURE-DISPLACEMENT (step Step-1)")
+# *HEAT TRANSFER (issue 45): a DC type in a mechanical step, heat transfer mixed with mechanical steps, a pressure or a
+# displacement dof in a heat-transfer model, END=SS without its rate, the eigenmode forms
+tsl_deck_bad(heat_dc_in_coupled heat_dc_in_coupled.inp "error: heat_dc_in_coupled.inp:7: element 1 is of the heat-transfer type DC2D4, which runs in *HEAT TRANSFER steps only: step Step-1 at heat_dc_in_coupled.inp:14 is a mechanical one")
+tsl_deck_bad(heat_mixed_steps heat_mixed_steps.inp "error: heat_mixed_steps.inp:15: step Step-1: *HEAT TRANSFER steps cannot be mixed with the mechanical step Step-2 at heat_mixed_steps.inp:19")
+tsl_deck_bad(heat_dload heat_dload.inp "error: heat_dload.inp:22: *DLOAD in the *HEAT TRANSFER step Step-1: a heat-transfer model has no displacement for a pressure or body force to act on")
+tsl_deck_bad(heat_displacement_dof heat_displacement_dof.inp "error: heat_displacement_dof.inp:19: bad degree of freedom 1 (valid: 11)")
+tsl_deck_bad(heat_end_ss_rate heat_end_ss_rate.inp "error: heat_end_ss_rate.inp:18: *HEAT TRANSFER, END=SS data line: initial increment, step period, minimum, maximum increment, steady-state temperature rate")
+tsl_deck_bad(heat_frequency heat_frequency.inp "error: heat_frequency.inp:17: *HEAT TRANSFER, FREQUENCY and MODAL DYNAMIC (eigenmodes) are not supported")
