@@ -98,6 +98,7 @@ typedef struct {
                                             (C3D8 for C3D8T; line 0: none), noted once the procedures are known (DeckTypeNotes) */
   PetscBool         *type_mech;          /* per catalogue row: type_note is an *ELEMENT by the mechanical name */
   PetscBool          shell_noted;        /* the note that conventional shells are expanded was given */
+  PetscBool          dof0_noted;         /* the note that dof 0 is read as 11 in heat transfer was given (HeatDofZero) */
 } Deck;
 
 /* A part (*PART ... *END PART), read straight into the model with its ids shifted past those defined before
@@ -2396,6 +2397,20 @@ static PetscErrorCode CheckDof(Deck *d, PetscInt dof)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* CalculiX's heat-transfer decks name the temperature dof 0 (its own internal number) in *BOUNDARY and *CFLUX: inside
+ * a *HEAT TRANSFER step it is read as 11, and told once. */
+static PetscErrorCode HeatDofZero(Deck *d, PetscInt *dof)
+{
+  PetscFunctionBeginUser;
+  if (*dof != 0 || d->step < 0 || !d->m->steps[d->step].heat) PetscFunctionReturn(PETSC_SUCCESS);
+  *dof = 11;
+  if (!d->dof0_noted)
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "note: degree of freedom 0 read as 11, the temperature (CalculiX's heat-transfer numbering)\n",
+                          DLOC(d)));
+  d->dof0_noted = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode LineBoundary(Deck *d, TslLoad *l)
 {
   const char *f;
@@ -2423,8 +2438,10 @@ static PetscErrorCode LineBoundary(Deck *d, TslLoad *l)
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(FieldInt(d, 1, "the first dof", &l->dof_first));
+  PetscCall(HeatDofZero(d, &l->dof_first));
   l->dof_last = l->dof_first;
   if (d->nfield > 2 && d->field[2][0]) PetscCall(FieldInt(d, 2, "the last dof", &l->dof_last));
+  PetscCall(HeatDofZero(d, &l->dof_last));
   PetscCall(FieldRealDefault(d, 3, "the prescribed value", 0.0, &l->value));
   if (l->dof_first == 8 && l->dof_last == 8 && (d->pore || !d->m->nelem)) {
     /* the pore pressure of CPE4PT, ...: not active in the procedures thermoslide runs (docs/elements.md) */
@@ -2462,6 +2479,7 @@ static PetscErrorCode LineConcentrated(Deck *d, TslLoad *l)
   PetscFunctionBeginUser;
   USER_CHECK(d->nfield == 3, LOC_FMT "data line needs: node or node set, dof, magnitude", DLOC(d));
   PetscCall(FieldInt(d, 1, "the dof", &l->dof_first));
+  if (l->kind == TSL_LOAD_CFLUX) PetscCall(HeatDofZero(d, &l->dof_first));
   l->dof_last = l->dof_first;
   if (l->kind == TSL_LOAD_CFLUX)
     USER_CHECK(l->dof_first == 11, LOC_FMT "bad degree of freedom %" PetscInt_FMT " for *CFLUX (must be 11)", DLOC(d), l->dof_first);
