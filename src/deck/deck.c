@@ -3503,8 +3503,10 @@ static PetscErrorCode DeckHeatTransferModel(Deck *d)
     }
     if (TslElementTypeHeatOnly(t)) continue;
     h = TslElementTypeHeatCounterpart(t);
-    USER_CHECK(h >= 0, LOC_FMT "element %" PetscInt_FMT " of type %s has no heat-transfer counterpart (its extra nodes), and every step is *HEAT TRANSFER",
-               TSL_LOC_ARGS(m, l), m->elem_id[e], t->name);
+    USER_CHECK(h >= 0,
+               LOC_FMT "element %" PetscInt_FMT " of type %s (%s) has no heat-transfer counterpart, and every step is *HEAT TRANSFER (docs/elements.md, "
+                       "\"Heat transfer\")",
+               TSL_LOC_ARGS(m, l), m->elem_id[e], t->name, TslElementTypeKinematicsName(t));
     if (!d->type_note) PetscCall(PetscCalloc2(TslElementTypeCount(), &d->type_note, TslElementTypeCount(), &d->type_mech));
     if (!d->type_note[m->elem_type[e]].line) d->type_note[m->elem_type[e]] = l;
     m->elem_type[e] = h;

@@ -121,10 +121,10 @@ PetscBool TslElementTypeMechanicalOnly(const TslElementType *t)
 /* The heat-transfer row of a type's interpolation and measure: a DC row is its own; a coupled or mechanical-name row
  * (C3D8T, C3D8RT, CPS4T, ...) maps to the DC row on its geometry family with its measure (revolved or not), its
  * reduced integration, hybrid pressure and hourglass control being mechanical alone. -1 where none exists (the
- * extra nodes of generalized plane strain; a model dimension without the family). */
+ * extra nodes of generalized plane strain; the continuum shells, whose *SHELL SECTION a solid row does not take). */
 PetscInt TslElementTypeHeatCounterpart(const TslElementType *t)
 {
-  if (t->nextra) return -1;
+  if (t->nextra || TslKinematicsRowGet(t->kin)->shell) return -1;
   for (PetscInt i = 0; i < TslElementTypeCount(); i++) {
     const TslElementType *c = &Catalogue[i];
     if (TslElementTypeHeatOnly(c) && c->geom == t->geom && c->dim == t->dim && TslKinematicsRevolves(c->kin) == TslKinematicsRevolves(t->kin))

@@ -14,6 +14,11 @@ endss     the bar of k(theta) = 1.5 + theta (a table 1.5 at 0, 2.5 at 1; c likew
           x, phi(1) - phi(T_L) = q L = h T_L L, so T_L = sqrt(8) - 2. Checks: the last frame before t = 50; T_L within
           1e-4 (the rate 1e-4 times the time constant left, and k's interpolation by the nodal temperatures; measured
           1.0e-5); the film heat out = the reaction heat in at the end within 1e-3 relative (the last increment's rate).
+cylinder  steady radial conduction through a thick cylinder (CAX8 read as DCAX8; r1 = 1, r2 = 2, height H = 0.1, k = 3):
+          T = 100 at r1, a film h = 5 to 20 at r2. The heat flow Q = 2 pi H (T1 - Ts) / (ln(r2/r1) / k + 1 / (h r2)) and
+          T(r) = T1 - Q ln(r/r1) / (2 pi k H). Checks: every node within 1e-5 of the drop T1 - Ts (8 quadratic elements;
+          measured 1.1e-6), the reaction heat and the film heat out both = Q (1e-5 relative; axisymmetric loads and
+          reactions are totals around the axis), the balance residual (1e-10 of Q).
 same      the temperatures of this job equal those of another job (OTHER_OUTDIR OTHER_JOB): at every node and frame
           within 1e-8 of the unit drop (the two solves' tolerance).
 usage: check_heat.py OUTDIR JOB CASE [OTHER_OUTDIR OTHER_JOB]
@@ -62,6 +67,15 @@ elif case == "endss":
     TL = float(np.mean(r.field("NT", -1)[:, 0][x > 1 - 1e-9]))
     check("endss: T at the film face (Kirchhoff's closed form)", TL, math.sqrt(8) - 2, 1e-4)
     check("endss: film heat out / reaction heat in, last increment", h["film_heat_out"][-1] / h["reaction_heat"][-1], 1.0, 1e-3)
+elif case == "cylinder":
+    k, hf, Ts, T1, r1, r2, H = 3.0, 5.0, 20.0, 100.0, 1.0, 2.0, 0.1
+    Q = 2 * math.pi * H * (T1 - Ts) / (math.log(r2 / r1) / k + 1 / (hf * r2))
+    x = r.xyz[:, 0]
+    exact = T1 - Q * np.log(x / r1) / (2 * math.pi * k * H)
+    check("cylinder: max |T - closed form| / (T1 - Ts)", float(np.max(np.abs(r.field("NT")[:, 0] - exact))) / (T1 - Ts), 0.0, 1e-5)
+    check("cylinder: reaction heat / Q", h["reaction_heat"][-1] / Q, 1.0, 1e-5)
+    check("cylinder: film heat out / Q", h["film_heat_out"][-1] / Q, 1.0, 1e-5)
+    check("cylinder: balance residual / Q", abs(h["balance_residual"][-1]) / Q, 0.0, 1e-10)
 elif case == "same":
     o = Result(sys.argv[4], sys.argv[5])
     check("same: frames", len(r.frames), len(o.frames), 0)

@@ -54,6 +54,31 @@ def bar(etype, procedure, name, n=20, tdep=False, film=False, heat_load=False, d
         f.write("\n".join(lines) + "\n")
 
 
+def cylinder(name, n=8, r1=1.0, r2=2.0):
+    """A thick cylinder r1 <= r <= r2 of n CAX8 (CalculiX's name, read as DCAX8) along r, one along z: T = 100 at r1, a
+    film h = 5 to a sink 20 at r2, steady; the closed form is check_heat.py's (cylinder)."""
+    lines = ["*HEADING", f" Steady radial conduction in a thick cylinder of {n} CAX8 read as DCAX8 (tests/heat/make_decks.py)", "*NODE, NSET=NALL"]
+    ids, nid = {}, 0
+    for j in range(3):
+        for i in range(2 * n + 1):
+            if j == 1 and i % 2:
+                continue
+            nid += 1
+            ids[(i, j)] = nid
+            lines.append(f"{nid}, {r1 + (r2 - r1) * i / (2 * n):.12g}, {0.05 * j:.12g}")
+    lines.append("*ELEMENT, TYPE=CAX8, ELSET=CYL")
+    for e in range(n):
+        i = 2 * e
+        c = [ids[(i, 0)], ids[(i + 2, 0)], ids[(i + 2, 2)], ids[(i, 2)], ids[(i + 1, 0)], ids[(i + 2, 1)], ids[(i + 1, 2)], ids[(i, 1)]]
+        lines.append(f"{e + 1}, " + ", ".join(str(x) for x in c))
+    lines.append("*NSET, NSET=INNER")
+    lines.append(", ".join(str(ids[(0, j)]) for j in range(3)))
+    lines += ["*MATERIAL, NAME=M", "*CONDUCTIVITY", "3.", "*SOLID SECTION, ELSET=CYL, MATERIAL=M", "*STEP", "*HEAT TRANSFER, STEADY STATE",
+              "*BOUNDARY", "INNER, 11, 11, 100.", "*FILM", f"{n}, F2, 20., 5.", "*NODE PRINT, NSET=INNER", "RFL", "*END STEP"]
+    with open(os.path.join(HERE, "decks", name + ".inp"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
 JACOBIAN = """*HEADING
  Heat transfer on distorted DC2D4 elements for -snes_test_jacobian (tests/heat/make_decks.py): k(theta), c(theta), a film,
  radiation, a surface flux, a body flux and a concentrated flux
@@ -120,6 +145,7 @@ def main():
     bar("C3D8T", "*HEAT TRANSFER", "bar_c3d8t_heat")
     bar("C3D8T", "*COUPLED TEMPERATURE-DISPLACEMENT", "bar_c3d8t_coupled")
     bar("DC3D8", "*HEAT TRANSFER, END=SS", "endss_dc3d8", n=10, film=True, tdep=True, data="0.01, 50., 1e-6, 1., 1e-4", freq=1000)
+    cylinder("cylinder_cax8")
     with open(os.path.join(HERE, "decks", "jacobian_dc2d4.inp"), "w") as f:
         f.write(JACOBIAN)
 
