@@ -496,9 +496,10 @@ static PetscErrorCode SetUpSolver(Driver *d)
     PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
     if (fs) {
       KSP     *sub;
-      PetscInt n;
+      PetscInt n, nu_global;
+      PetscCall(ISGetSize(is_u, &nu_global));
       PetscCall(PCFieldSplitSetIS(pc, "T", is_theta));
-      PetscCall(PCFieldSplitSetIS(pc, "u", is_u));
+      if (nu_global) PetscCall(PCFieldSplitSetIS(pc, "u", is_u)); /* a heat-transfer model has the temperature alone */
       PetscCall(PCFieldSplitGetSubKSP(pc, &n, &sub));
       for (PetscInt i = 0; i < n; i++) PetscCall(KSPSetFromOptions(sub[i]));
       PetscCall(PetscFree(sub));
