@@ -638,10 +638,6 @@ static PetscErrorCode CheckContactPair(TslModel *m, TslContactPair *p)
   PetscInt s, mn;
 
   PetscFunctionBeginUser;
-  CHECK(!(m->nstep && m->steps[0].heat), p->loc,
-        "*CONTACT PAIR in a model of *HEAT TRANSFER steps is not supported yet (its gap conductance and radiation need the contact "
-        "geometry without displacement); run it in *COUPLED TEMPERATURE-DISPLACEMENT steps%s",
-        "");
   p->interaction_index = TslModelFindInteraction(m, p->interaction);
   CHECK(p->interaction_index >= 0, p->loc, "undefined surface interaction %s", p->interaction);
   s  = TslModelFindSurface(m, p->secondary);

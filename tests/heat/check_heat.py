@@ -19,6 +19,16 @@ cylinder  steady radial conduction through a thick cylinder (CAX8 read as DCAX8;
           T(r) = T1 - Q ln(r/r1) / (2 pi k H). Checks: every node within 1e-5 of the drop T1 - Ts (8 quadratic elements;
           measured 1.1e-6), the reaction heat and the film heat out both = Q (1e-5 relative; axisymmetric loads and
           reactions are totals around the axis), the balance residual (1e-10 of Q).
+gap       two blocks (k = 50, unit height, unit area) across a clearance d = 0.01 with the gap conductance
+          k(d) = 1000 (1 - d / 0.02) = 500, T = 0 and 1 on the outer faces, steady, no displacement (the contact
+          geometry as the deck gives it): the interface is a film between the blocks, q = 1 / (2 / 50 + 1 / 500). Checks:
+          the interface heat of the history, the heat in at the hot face (reaction) and HFLA at every secondary node
+          against q (1e-9 relative); the balance residual (1e-10 of q).
+gap_nodes the same with the upper block's bottom tilted, d = 0.01 + 0.01 x: at every secondary node (above its
+          main-surface node at the same x) HFLA = k(d) (T_main - T_secondary), d from the deck's coordinates (1e-9 of
+          the largest HFLA): the interface law node by node.
+gap_off   the upper block moved off the lower one (x in [1.5, 2.5]): no contact, no interface heat (0), the upper
+          block isothermal at its held 1 and the lower at 0 (1e-12), no heat in.
 same      the temperatures of this job equal those of another job (OTHER_OUTDIR OTHER_JOB): at every node and frame
           within 1e-8 of the unit drop (the two solves' tolerance).
 usage: check_heat.py OUTDIR JOB CASE [OTHER_OUTDIR OTHER_JOB]
@@ -76,6 +86,30 @@ elif case == "cylinder":
     check("cylinder: reaction heat / Q", h["reaction_heat"][-1] / Q, 1.0, 1e-5)
     check("cylinder: film heat out / Q", h["film_heat_out"][-1] / Q, 1.0, 1e-5)
     check("cylinder: balance residual / Q", abs(h["balance_residual"][-1]) / Q, 0.0, 1e-10)
+elif case in ("gap", "gap_nodes", "gap_off"):
+    x, y = r.xyz[:, 0], r.xyz[:, 1]
+    nt, hfla, rfl = r.field("NT")[:, 0], r.field("HFLA")[:, 0], r.field("RFL")[:, 0]
+    upper = y > 1 + 1e-9
+    sec = upper & (y < 1.03)  # the upper block's bottom nodes
+    kd = lambda d: 1000 * (1 - d / 0.02)
+    if case == "gap":
+        q = 1 / (2 / 50 + 1 / 500)
+        check("gap: interface heat / q", -h["interface_heat"][-1] / q, 1.0, 1e-9)
+        check("gap: heat in at the hot face / q", float(np.sum(rfl[upper & (y > 2)])) / q, 1.0, 1e-9)
+        check("gap: largest |HFLA + q| / q over the secondary nodes", float(np.max(np.abs(hfla[sec] + q))) / q, 0.0, 1e-9)
+        check("gap: balance residual / q", abs(h["balance_residual"][-1]) / q, 0.0, 1e-10)
+    elif case == "gap_nodes":
+        worst, scale = 0.0, float(np.max(np.abs(hfla[sec])))
+        for i in np.where(sec)[0]:
+            j = np.where((np.abs(y - 1) < 1e-9) & (np.abs(x - x[i]) < 1e-9) & (np.abs(r.xyz[:, 2] - r.xyz[i, 2]) < 1e-9))[0][0]
+            worst = max(worst, abs(hfla[i] - kd(y[i] - 1) * (nt[j] - nt[i])))
+        check("gap_nodes: largest |HFLA - k(d) (T_main - T_secondary)| / largest HFLA, node by node", worst / scale, 0.0, 1e-9)
+        check("gap_nodes: the clearance varies (HFLA at the ends differ)", float(np.ptp(hfla[sec])) > 0.1 * scale, True, 0)
+    else:
+        check("gap_off: interface heat", abs(h["interface_heat"][-1]), 0.0, 0)
+        check("gap_off: the upper block isothermal at 1", float(np.max(np.abs(nt[upper] - 1))), 0.0, 1e-12)
+        check("gap_off: the lower block at 0", float(np.max(np.abs(nt[~upper]))), 0.0, 1e-12)
+        check("gap_off: heat in", float(np.max(np.abs(rfl))), 0.0, 1e-12)
 elif case == "same":
     o = Result(sys.argv[4], sys.argv[5])
     check("same: frames", len(r.frames), len(o.frames), 0)

@@ -79,6 +79,50 @@ def cylinder(name, n=8, r1=1.0, r2=2.0):
         f.write("\n".join(lines) + "\n")
 
 
+def blocks(name, dim=2, gap=0.01, tilt=0.0, shift=0.0, s2s=False, n=4):
+    """Two blocks (unit squares, DC2D4, thickness 1; or unit cubes, DC3D8) one above the other across a clearance
+    gap + tilt x (the upper block's bottom rises along x), the upper one moved along x by shift: T = 0 held at the
+    lower block's bottom, T = 1 at the upper block's top, k = 50, a *GAP CONDUCTANCE k(d) = 1000 (1 - d / 0.02)
+    (Abaqus's clearance table), no displacement: a heat-transfer model (check_heat.py gap, gap_nodes, gap_off)."""
+    etype = "DC2D4" if dim == 2 else "DC3D8"
+    nz = 1 if dim == 3 else 0
+    L = ["*HEADING", f" two {etype} blocks across a clearance (tests/heat/make_decks.py)", "*NODE, NSET=NALL"]
+    ids, nid = {}, 0
+    for b in range(2):
+        for k in range(nz + 1):
+            for j in range(3):
+                for i in range(n + 1):
+                    nid += 1
+                    ids[(b, i, j, k)] = nid
+                    x = i / n + (shift if b else 0)
+                    y = (1 + gap + tilt * i / n + j / 2) if b else j / 2
+                    L.append(f"{nid}, {x:.12g}, {y:.12g}" + (f", {k:.12g}" if dim == 3 else ""))
+    eid = 0
+    for b in range(2):
+        L.append(f"*ELEMENT, TYPE={etype}, ELSET={'UPPER' if b else 'LOWER'}")
+        for j in range(2):
+            for i in range(n):
+                eid += 1
+                q = [ids[(b, i, j, 0)], ids[(b, i + 1, j, 0)], ids[(b, i + 1, j + 1, 0)], ids[(b, i, j + 1, 0)]]
+                if dim == 3:
+                    q = [ids[(b, i, j, 0)], ids[(b, i, j, 1)], ids[(b, i + 1, j, 1)], ids[(b, i + 1, j, 0)],
+                         ids[(b, i, j + 1, 0)], ids[(b, i, j + 1, 1)], ids[(b, i + 1, j + 1, 1)], ids[(b, i + 1, j + 1, 0)]]
+                L.append(f"{eid}, " + ", ".join(str(x) for x in q))
+    # 2D: S3 is the quad's top (nodes 3-4), S1 its bottom; 3D (nodes ordered y-up): S2 the top (5-8), S1 the bottom
+    top, bottom = ("S3", "S1") if dim == 2 else ("S2", "S1")
+    L += ["*ELSET, ELSET=ALL", "LOWER, UPPER", "*SURFACE, NAME=TOP"] + [f"{n + i + 1}, {top}" for i in range(n)]
+    L += ["*SURFACE, NAME=BOTTOM"] + [f"{2 * n + i + 1}, {bottom}" for i in range(n)]
+    L += ["*NSET, NSET=COLD", ", ".join(str(ids[(0, i, 0, k)]) for i in range(n + 1) for k in range(nz + 1))]
+    L += ["*NSET, NSET=HOT", ", ".join(str(ids[(1, i, 2, k)]) for i in range(n + 1) for k in range(nz + 1))]
+    L += ["*MATERIAL, NAME=M", "*CONDUCTIVITY", "50.", "*SOLID SECTION, ELSET=ALL, MATERIAL=M"] + (["1."] if dim == 2 else [])
+    L += ["*SURFACE INTERACTION, NAME=INT", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD", "*GAP CONDUCTANCE", "1000., 0.", "0., 0.02"]
+    L += ["*CONTACT PAIR, INTERACTION=INT" + (", TYPE=SURFACE TO SURFACE" if s2s else ""), "BOTTOM, TOP"]
+    L += ["*STEP", "*HEAT TRANSFER, STEADY STATE", "*BOUNDARY", "COLD, 11, 11, 0.", "HOT, 11, 11, 1.",
+          "*OUTPUT, FIELD", "*NODE OUTPUT", "NT, RFL, HFLA", "*END STEP"]
+    with open(os.path.join(HERE, "decks", name + ".inp"), "w") as f:
+        f.write("\n".join(L) + "\n")
+
+
 JACOBIAN = """*HEADING
  Heat transfer on distorted DC2D4 elements for -snes_test_jacobian (tests/heat/make_decks.py): k(theta), c(theta), a film,
  radiation, a surface flux, a body flux and a concentrated flux
@@ -146,6 +190,10 @@ def main():
     bar("C3D8T", "*COUPLED TEMPERATURE-DISPLACEMENT", "bar_c3d8t_coupled")
     bar("DC3D8", "*HEAT TRANSFER, END=SS", "endss_dc3d8", n=10, film=True, tdep=True, data="0.01, 50., 1e-6, 1., 1e-4", freq=1000)
     cylinder("cylinder_cax8")
+    blocks("gap_dc2d4")
+    blocks("gap_s2s_dc3d8", dim=3, s2s=True)
+    blocks("gap_nodes_dc2d4", tilt=0.01)
+    blocks("gap_off_dc2d4", shift=1.5)
     with open(os.path.join(HERE, "decks", "jacobian_dc2d4.inp"), "w") as f:
         f.write(JACOBIAN)
 

@@ -207,4 +207,3 @@ tsl_deck_bad(heat_dload heat_dload.inp "error: heat_dload.inp:22: *DLOAD in the 
 tsl_deck_bad(heat_displacement_dof heat_displacement_dof.inp "error: heat_displacement_dof.inp:19: bad degree of freedom 1 (valid: 11)")
 tsl_deck_bad(heat_end_ss_rate heat_end_ss_rate.inp "error: heat_end_ss_rate.inp:18: *HEAT TRANSFER, END=SS data line: initial increment, step period, minimum, maximum increment, steady-state temperature rate")
 tsl_deck_bad(heat_frequency heat_frequency.inp "error: heat_frequency.inp:17: *HEAT TRANSFER, FREQUENCY and MODAL DYNAMIC (eigenmodes) are not supported")
-tsl_deck_bad(heat_contact heat_contact.inp "error: heat_contact.inp:29: *CONTACT PAIR in a model of *HEAT TRANSFER steps is not supported yet")
