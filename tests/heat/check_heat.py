@@ -29,6 +29,10 @@ gap_nodes the same with the upper block's bottom tilted, d = 0.01 + 0.01 x: at e
           the largest HFLA): the interface law node by node.
 gap_off   the upper block moved off the lower one (x in [1.5, 2.5]): no contact, no interface heat (0), the upper
           block isothermal at its held 1 and the lower at 0 (1e-12), no heat in.
+gap_radiation  the two DC3D8 blocks across the clearance 0.01 with *GAP RADIATION alone (eps 0.8, 0.8, view factor 1;
+          kelvin), T = 300 and 600 held outside: q = C (T_b^4 - T_a^4), C = sigma / (1/0.8 + 1/0.8 - 1), with
+          T_a = 300 + q / 50 and T_b = 600 - q / 50 (each block's conduction), solved here by bisection. Checks: the
+          interface heat and the heat in against q (1e-8 relative: the Newton tolerance of the nonlinear solve).
 same      the temperatures of this job equal those of another job (OTHER_OUTDIR OTHER_JOB): at every node and frame
           within 1e-8 of the unit drop (the two solves' tolerance).
 usage: check_heat.py OUTDIR JOB CASE [OTHER_OUTDIR OTHER_JOB]
@@ -110,6 +114,15 @@ elif case in ("gap", "gap_nodes", "gap_off"):
         check("gap_off: the upper block isothermal at 1", float(np.max(np.abs(nt[upper] - 1))), 0.0, 1e-12)
         check("gap_off: the lower block at 0", float(np.max(np.abs(nt[~upper]))), 0.0, 1e-12)
         check("gap_off: heat in", float(np.max(np.abs(rfl))), 0.0, 1e-12)
+elif case == "gap_radiation":
+    C = 5.67e-8 / (1 / 0.8 + 1 / 0.8 - 1)
+    lo, hi = 0.0, 300 * 50 / 2
+    for _ in range(200):
+        q = 0.5 * (lo + hi)
+        lo, hi = (q, hi) if C * ((600 - q / 50) ** 4 - (300 + q / 50) ** 4) > q else (lo, q)
+    y = r.xyz[:, 1]
+    check("gap_radiation: interface heat / q", -h["interface_heat"][-1] / q, 1.0, 1e-8)
+    check("gap_radiation: heat in at the hot face / q", float(np.sum(r.field("RFL")[:, 0][y > 2])) / q, 1.0, 1e-8)
 elif case == "same":
     o = Result(sys.argv[4], sys.argv[5])
     check("same: frames", len(r.frames), len(o.frames), 0)

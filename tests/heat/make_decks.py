@@ -79,11 +79,13 @@ def cylinder(name, n=8, r1=1.0, r2=2.0):
         f.write("\n".join(lines) + "\n")
 
 
-def blocks(name, dim=2, gap=0.01, tilt=0.0, shift=0.0, s2s=False, n=4):
+def blocks(name, dim=2, gap=0.01, tilt=0.0, shift=0.0, s2s=False, n=4, radiation=False):
     """Two blocks (unit squares, DC2D4, thickness 1; or unit cubes, DC3D8) one above the other across a clearance
     gap + tilt x (the upper block's bottom rises along x), the upper one moved along x by shift: T = 0 held at the
     lower block's bottom, T = 1 at the upper block's top, k = 50, a *GAP CONDUCTANCE k(d) = 1000 (1 - d / 0.02)
-    (Abaqus's clearance table), no displacement: a heat-transfer model (check_heat.py gap, gap_nodes, gap_off)."""
+    (Abaqus's clearance table), no displacement: a heat-transfer model (check_heat.py gap, gap_nodes, gap_off). With
+    radiation: no conductance but *GAP RADIATION (eps 0.8 and 0.8, view factor 1), T = 300 K and 600 K held
+    (check_heat.py gap_radiation)."""
     etype = "DC2D4" if dim == 2 else "DC3D8"
     nz = 1 if dim == 3 else 0
     L = ["*HEADING", f" two {etype} blocks across a clearance (tests/heat/make_decks.py)", "*NODE, NSET=NALL"]
@@ -115,9 +117,14 @@ def blocks(name, dim=2, gap=0.01, tilt=0.0, shift=0.0, s2s=False, n=4):
     L += ["*NSET, NSET=COLD", ", ".join(str(ids[(0, i, 0, k)]) for i in range(n + 1) for k in range(nz + 1))]
     L += ["*NSET, NSET=HOT", ", ".join(str(ids[(1, i, 2, k)]) for i in range(n + 1) for k in range(nz + 1))]
     L += ["*MATERIAL, NAME=M", "*CONDUCTIVITY", "50.", "*SOLID SECTION, ELSET=ALL, MATERIAL=M"] + (["1."] if dim == 2 else [])
-    L += ["*SURFACE INTERACTION, NAME=INT", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD", "*GAP CONDUCTANCE", "1000., 0.", "0., 0.02"]
+    L += ["*SURFACE INTERACTION, NAME=INT", "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=HARD"]
+    if radiation:
+        L += ["*GAP RADIATION", "0.8, 0.8", "1., 0.", "1., 0.1", "*PHYSICAL CONSTANTS, ABSOLUTE ZERO=0., STEFAN BOLTZMANN=5.67e-8"]
+    else:
+        L += ["*GAP CONDUCTANCE", "1000., 0.", "0., 0.02"]
     L += ["*CONTACT PAIR, INTERACTION=INT" + (", TYPE=SURFACE TO SURFACE" if s2s else ""), "BOTTOM, TOP"]
-    L += ["*STEP", "*HEAT TRANSFER, STEADY STATE", "*BOUNDARY", "COLD, 11, 11, 0.", "HOT, 11, 11, 1.",
+    cold, hot = (300, 600) if radiation else (0, 1)
+    L += ["*STEP", "*HEAT TRANSFER, STEADY STATE", "*BOUNDARY", f"COLD, 11, 11, {cold}.", f"HOT, 11, 11, {hot}.",
           "*OUTPUT, FIELD", "*NODE OUTPUT", "NT, RFL, HFLA", "*END STEP"]
     with open(os.path.join(HERE, "decks", name + ".inp"), "w") as f:
         f.write("\n".join(L) + "\n")
@@ -194,6 +201,7 @@ def main():
     blocks("gap_s2s_dc3d8", dim=3, s2s=True)
     blocks("gap_nodes_dc2d4", tilt=0.01)
     blocks("gap_off_dc2d4", shift=1.5)
+    blocks("gap_radiation_dc3d8", dim=3, radiation=True)
     with open(os.path.join(HERE, "decks", "jacobian_dc2d4.inp"), "w") as f:
         f.write(JACOBIAN)
 
