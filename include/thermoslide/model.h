@@ -362,6 +362,19 @@ typedef struct {
   PetscReal rn, cn, q0, qu, rp, eps, ceps, rl;
 } TslFieldControls;
 
+/* *TEMPERATURE, FILE= (sequential coupling): the nodal temperatures of an earlier job's results (<path>, its .h5)
+ * prescribed at every node, from the frames (bstep, binc) .. (estep, einc) of that file (0: the default, see
+ * docs/keywords.md: binc the first frame of bstep, estep = bstep, einc the last frame of estep). One frame: its
+ * values are the step's target, reached as any *TEMPERATURE value (the step's amplitude); several: followed in time,
+ * step time t read at the file's total time t0 + t (t0 the end of the step before bstep in the file). */
+typedef struct {
+  PetscBool given;
+  TslLoc    loc;
+  char      path[PETSC_MAX_PATH_LEN]; /* the file found when the deck was read */
+  PetscInt  bstep, binc, estep, einc;
+  PetscInt  amplitude; /* AMPLITUDE= (one frame), -1: the step's default */
+} TslTemperatureFile;
+
 typedef struct {
   char              name[TSL_NAME_LEN];
   TslLoc            loc;
@@ -395,6 +408,7 @@ typedef struct {
   TslOutputRequest *out;
   TslIncrementControls controls; /* *CONTROLS, PARAMETERS=TIME INCREMENTATION or RESET (given = FALSE: none in this step) */
   TslFieldControls     field_controls[2]; /* *CONTROLS, PARAMETERS=FIELD for the displacement and the temperature field */
+  TslTemperatureFile   tfile;             /* *TEMPERATURE, FILE= (given = FALSE: none in this step) */
 } TslStep;
 
 typedef struct {

@@ -70,3 +70,21 @@ PetscErrorCode TslHistoryDestroy(TslHistory *hist);
 typedef struct _p_TslPrintSink *TslPrintSink;
 PetscErrorCode TslPrintOrdered(MPI_Comm comm, PetscErrorCode (*emit)(TslPrintSink sink, void *ctx), void *ctx);
 PetscErrorCode TslPrintLine(TslPrintSink sink, const char *fmt, ...) PETSC_ATTRIBUTE_FORMAT(2, 3);
+
+/* Reading a job's results back (*TEMPERATURE, FILE=: src/physics/tfile.c). Not collective: each rank opens the file
+ * read-only for itself and reads the rows of its own nodes, nothing of global size beyond the list of frames. A
+ * failure is an error on PETSC_COMM_SELF (PETSC_ERR_FILE_READ, naming the file and what was looked for): callers
+ * capture it and decide with the other ranks (TslAgree). Rows are natural node indices (the file's node order). */
+typedef struct _p_TslResults *TslResults;
+typedef struct {
+  PetscInt  step, increment;
+  PetscReal time; /* total time */
+} TslResultsFrame;
+PetscErrorCode TslResultsOpen(const char *path, TslResults *r);
+/* the number of nodes, and the frames in file order (frame k is /frames/%06d of k + 1) */
+PetscErrorCode TslResultsInfo(TslResults r, PetscInt *nnode, PetscInt *nframe, const TslResultsFrame **frames);
+/* ncomp values of each of n rows of a node dataset ("/mesh/coordinates", "/frames/000003/NT"); n may be 0 */
+PetscErrorCode TslResultsReadRows(TslResults r, const char *dataset, PetscInt n, const PetscInt rows[], PetscInt ncomp, PetscReal vals[]);
+/* the deck ids of n rows (/mesh/node_ids) */
+PetscErrorCode TslResultsReadNodeIds(TslResults r, PetscInt n, const PetscInt rows[], PetscInt ids[]);
+PetscErrorCode TslResultsClose(TslResults *r);

@@ -55,6 +55,9 @@ PetscErrorCode TslProblemGetFieldIS(TslProblem prob, IS *is_u, IS *is_theta);
 PetscErrorCode TslProblemSetStep(TslProblem prob, PetscInt s);
 /* Time of the increment being solved: step time t (end of increment), increment dt, total time. */
 PetscErrorCode TslProblemSetTime(TslProblem prob, PetscReal step_time, PetscReal dt, PetscReal total_time);
+/* *TEMPERATURE, FILE= (src/physics/tfile.c): every step's results file checked against the model (the same nodes, the
+ * frames it names, NT in them); collective, an error at the keyword's line. Before the run writes anything. */
+PetscErrorCode TslProblemTemperatureFilesCheck(TslProblem prob);
 /* The capacity term's time discretisation, chosen by the solver (src/solve/): the residual gets
  * shift (Q(theta) - Q(theta_old)) per node and the Jacobian shift dQ/dtheta, with Q the lumped heat
  * content (element.h). Backward Euler: shift = 1/dt; steady state: 0. The kernels know nothing of it. */

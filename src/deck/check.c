@@ -530,6 +530,7 @@ static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
   if (s->bv_given)
     CHECK(s->explicit_dynamics, s->bv_loc, "*BULK VISCOSITY belongs to an explicit step (*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT); step %s is not one", s->name);
   if (!s->explicit_dynamics) PetscFunctionReturn(PETSC_SUCCESS);
+  CHECK(!s->tfile.given, s->tfile.loc, "*TEMPERATURE, FILE= belongs to a *STATIC or *COUPLED TEMPERATURE-DISPLACEMENT step; step %s is explicit", s->name);
   if (m->nequation) CHECK(PETSC_FALSE, m->equations[0].loc, "*EQUATION is not supported in explicit steps (step %s at %s)", s->name, where);
   /* the kinematic predictor-corrector works on secondary nodes: surface-to-surface pairs take the penalty */
   for (PetscInt k = 0; k < m->npair; k++) {

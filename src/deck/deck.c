@@ -2756,6 +2756,72 @@ static PetscErrorCode KwLoad(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *TEMPERATURE: node lines (KwLoad, LineTemperature), or FILE=job (sequential coupling, TslTemperatureFile): the
+ * temperatures of an earlier job's results at every node, from the frames BSTEP, BINC .. ESTEP, EINC. The file is
+ * job.h5 (".h5" added when missing), found relative to the working directory, else to the deck file's directory; it
+ * is checked against the model (the same nodes) and read where the step starts (src/physics/tfile.c). */
+static PetscErrorCode KwTemperature(Deck *d, const DeckKeyword *kw)
+{
+  const char         *file = Param(d, "FILE"), *from = d->m->files[d->kwloc.file], *slash;
+  TslTemperatureFile *tf;
+  char                name[PETSC_MAX_PATH_LEN], path[PETSC_MAX_PATH_LEN];
+  PetscBool           got, found = PETSC_FALSE;
+  size_t              len;
+
+  PetscFunctionBeginUser;
+  if (!file) {
+    static const char *only_file[] = {"BSTEP", "BINC", "ESTEP", "EINC", "INTERPOLATE"};
+    for (size_t i = 0; i < sizeof(only_file) / sizeof(only_file[0]); i++)
+      USER_CHECK(!Param(d, only_file[i]), LOC_FMT "*TEMPERATURE, %s= belongs to the FILE= form (temperatures read from an earlier job's results)",
+                 KLOC(d), only_file[i]);
+    PetscCall(KwLoad(d, kw));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  USER_CHECK(d->step >= 0, LOC_FMT "*TEMPERATURE, FILE= belongs to a step", KLOC(d));
+  USER_CHECK(file[0], LOC_FMT "*TEMPERATURE, FILE= needs the earlier job's name (its results job.h5)", KLOC(d));
+  USER_CHECK(!Param(d, "INTERPOLATE"), LOC_FMT "*TEMPERATURE, FILE=, INTERPOLATE (temperatures mapped from another mesh) is not supported: "
+             "the earlier job must have the same nodes", KLOC(d));
+  USER_CHECK(!Param(d, "OP") || !strcmp(Param(d, "OP"), "MOD") || !strcmp(Param(d, "OP"), "mod"),
+             LOC_FMT "*TEMPERATURE, FILE= sets every node's temperature: OP=NEW does not apply", KLOC(d));
+  tf = &d->m->steps[d->step].tfile;
+  USER_CHECK(!tf->given, LOC_FMT "a second *TEMPERATURE, FILE= in step %s (the first at line %" PetscInt_FMT ")", KLOC(d), d->m->steps[d->step].name,
+             tf->loc.line);
+  PetscCall(PetscMemzero(tf, sizeof(*tf)));
+  tf->given = PETSC_TRUE;
+  tf->loc   = d->kwloc;
+  PetscCall(ParamInt(d, "BSTEP", &tf->bstep));
+  PetscCall(ParamInt(d, "BINC", &tf->binc));
+  PetscCall(ParamInt(d, "ESTEP", &tf->estep));
+  PetscCall(ParamInt(d, "EINC", &tf->einc));
+  USER_CHECK(tf->bstep >= 0 && tf->binc >= 0 && tf->estep >= 0 && tf->einc >= 0, LOC_FMT "*TEMPERATURE, FILE=: BSTEP, BINC, ESTEP and EINC are "
+             "step and increment numbers (1, 2, ...)", KLOC(d));
+  if (!tf->bstep) tf->bstep = 1;
+  if (!tf->estep) tf->estep = tf->bstep;
+  USER_CHECK(tf->estep > tf->bstep || (tf->estep == tf->bstep && (!tf->einc || !tf->binc || tf->einc >= tf->binc)),
+             LOC_FMT "*TEMPERATURE, FILE=: the end (ESTEP %" PetscInt_FMT ", EINC %" PetscInt_FMT ") comes before the beginning (BSTEP %" PetscInt_FMT
+             ", BINC %" PetscInt_FMT ")", KLOC(d), tf->estep, tf->einc, tf->bstep, tf->binc);
+  PetscCall(AmplitudeParam(d, "AMPLITUDE", &tf->amplitude));
+  len = strlen(file);
+  USER_CHECK(len + 4 < sizeof(name), LOC_FMT "*TEMPERATURE, FILE=: the name is too long", KLOC(d));
+  PetscCall(PetscSNPrintf(name, sizeof(name), "%s%s", file, len > 3 && !strcmp(file + len - 3, ".h5") ? "" : ".h5"));
+  USER_CHECK(!(len > 4 && (!strcmp(file + len - 4, ".odb") || !strcmp(file + len - 4, ".fil") || !strcmp(file + len - 4, ".frd"))),
+             LOC_FMT "*TEMPERATURE, FILE=%s: thermoslide reads its own results (job or job.h5), not another code's", KLOC(d), file);
+  /* the working directory first, then the deck file's directory */
+  PetscCall(PetscTestFile(name, 'r', &found));
+  if (found) PetscCall(PetscStrncpy(path, name, sizeof(path)));
+  slash = strrchr(from, '/');
+  if (!found && name[0] != '/' && slash) {
+    PetscCall(PetscSNPrintf(path, sizeof(path), "%.*s/%s", (int)(slash - from), from, name));
+    PetscCall(PetscTestFile(path, 'r', &found));
+  }
+  USER_CHECK(found, LOC_FMT "*TEMPERATURE, FILE=%s: no results file %s (looked in the working directory%s)", KLOC(d), file, name,
+             slash && name[0] != '/' ? " and the deck's directory" : "");
+  PetscCall(PetscStrncpy(tf->path, path, sizeof(tf->path)));
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(!got, LOC_FMT "*TEMPERATURE, FILE= reads every node's temperature from the file: no data lines", DLOC(d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* ---- output requests ------------------------------------------------------------------------- */
 
 static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
@@ -3242,7 +3308,7 @@ static const DeckKeyword Keywords[] = {
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
     {"STATIC", AT_STEP, IN_NONE, "DIRECT|RIKS", KwStatic, 0, NULL},
     {"HEAT TRANSFER", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT|END|FREQUENCY|MODAL DYNAMIC", KwHeatTransfer, 0, NULL},
-    {"TEMPERATURE", AT_STEP, IN_NONE, "AMPLITUDE", KwLoad, TSL_LOAD_BOUNDARY, LineTemperature},
+    {"TEMPERATURE", AT_STEP, IN_NONE, "AMPLITUDE|OP|FILE|BSTEP|BINC|ESTEP|EINC|INTERPOLATE", KwTemperature, TSL_LOAD_BOUNDARY, LineTemperature},
     {"SOILS", AT_STEP, IN_NONE, NULL, KwSoils, 0, NULL},
     {"PERMEABILITY", AT_MODEL, IN_MATERIAL, NULL, KwIgnored, IGNORED_PORE_FLUID, NULL},
     {"POROUS BULK MODULI", AT_MODEL, IN_MATERIAL, NULL, KwIgnored, IGNORED_PORE_FLUID, NULL},

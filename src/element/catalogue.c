@@ -41,6 +41,7 @@ static const TslElementType Catalogue[] = {
     {"CPE8RT",  &TslGeomQuad8,  &TslFormReducedQuadratic, PLANE_STRAIN, "8-node plane strain, reduced integration"},
     {"CPE8RHT", &TslGeomQuad8,  &TslFormReducedQuadraticHybrid, PLANE_STRAIN, "8-node plane strain, reduced integration, hybrid"},
     {"CPE6T",   &TslGeomTri6,   &TslFormFull,           PLANE_STRAIN, "6-node plane strain (CalculiX's CPE6 in a coupled step)"},
+    {"CPE4IT",  &TslGeomQuad4,  &TslFormIncompatible,   PLANE_STRAIN, "4-node plane strain, incompatible modes (CalculiX's and Abaqus's CPE4I in a coupled or static step)"},
     {"CPE4PT",   &TslGeomQuad4, &TslFormFull,          PORE_PLANE,   "4-node plane strain, pore pressure (not active)"},
     {"CPE4PHT",  &TslGeomQuad4, &TslFormHybrid,        PORE_PLANE,   "4-node plane strain, pore pressure (not active), hybrid"},
     {"CPE4RPT",  &TslGeomQuad4, &TslFormReduced,       PORE_PLANE,   "4-node plane strain, pore pressure (not active), reduced integration, hourglass control"},
@@ -53,6 +54,7 @@ static const TslElementType Catalogue[] = {
     {"CPEG8T",   &TslGeomQuad8, &TslFormFull,           GENPLANE,     "8-node generalized plane strain"},
     {"CPS3T",   &TslGeomTri3,   &TslFormFull,           PLANE_STRESS, "3-node plane stress"},
     {"CPS4T",   &TslGeomQuad4,  &TslFormFull,           PLANE_STRESS, "4-node plane stress"},
+    {"CPS4IT",  &TslGeomQuad4,  &TslFormIncompatible,   PLANE_STRESS, "4-node plane stress, incompatible modes (CPS4I in a coupled or static step)"},
     {"CPS4RT",  &TslGeomQuad4,  &TslFormReduced,        PLANE_STRESS, "4-node plane stress, reduced integration, hourglass control"},
     {"CPS6MT",  &TslGeomTri6,   &TslFormModified,       PLANE_STRESS, "6-node modified second-order plane stress"},
     {"CPS8T",   &TslGeomQuad8,  &TslFormFull,           PLANE_STRESS, "8-node plane stress"},
@@ -60,6 +62,7 @@ static const TslElementType Catalogue[] = {
     {"CPS6T",   &TslGeomTri6,   &TslFormFull,           PLANE_STRESS, "6-node plane stress (CalculiX's CPS6 in a coupled step)"},
     {"CAX3T",   &TslGeomTri3,   &TslFormFull,           AXISYMMETRIC, "3-node axisymmetric"},
     {"CAX4T",   &TslGeomQuad4,  &TslFormFull,           AXISYMMETRIC, "4-node axisymmetric"},
+    {"CAX4IT",  &TslGeomQuad4,  &TslFormIncompatible,   AXISYMMETRIC, "4-node axisymmetric, incompatible modes (CAX4I in a coupled or static step)"},
     {"CAX4RT",  &TslGeomQuad4,  &TslFormReduced,        AXISYMMETRIC, "4-node axisymmetric, reduced integration, hourglass control"},
     {"CAX4RHT", &TslGeomQuad4,  &TslFormReducedHybrid,  AXISYMMETRIC, "4-node axisymmetric, reduced integration, hourglass control, hybrid"},
     {"CAX6MT",  &TslGeomTri6,   &TslFormModified,       AXISYMMETRIC, "6-node modified second-order axisymmetric"},
@@ -77,6 +80,7 @@ static const TslElementType Catalogue[] = {
     {"C3D4T",   &TslGeomTet4,   &TslFormFull,           SOLID,        "4-node tetrahedron"},
     {"C3D6T",   &TslGeomWedge6, &TslFormFull,           SOLID,        "6-node triangular prism"},
     {"C3D8T",   &TslGeomHex8,   &TslFormFull,           SOLID,        "8-node brick"},
+    {"C3D8IT",  &TslGeomHex8,   &TslFormIncompatible,   SOLID,        "8-node brick, incompatible modes (C3D8I in a coupled or static step)"},
     {"C3D8RT",  &TslGeomHex8,   &TslFormReduced,        SOLID,        "8-node brick, reduced integration, hourglass control"},
     {"C3D8RHT", &TslGeomHex8,   &TslFormReducedHybrid,  SOLID,        "8-node brick, reduced integration, hourglass control, hybrid"},
     {"C3D10MT", &TslGeomTet10,  &TslFormModified,       SOLID,        "10-node modified second-order tetrahedron"},
@@ -107,9 +111,10 @@ static const TslElementType Catalogue[] = {
 
 /* Rows whose name is not one of the dialect's: the coupled counterparts of CalculiX's mechanical CPE6, CPS6, CAX6
  * and C3D15, which Abaqus has no coupled temperature-displacement type for (its coupled triangles are the modified
- * ones, CPE6MT, ...; its coupled wedges C3D6T). A deck reaches them by the mechanical name in a coupled step
+ * ones, CPE6MT, ...; its coupled wedges C3D6T), and of the incompatible-mode types C3D8I, CPE4I, CPS4I, CAX4I (no
+ * coupled incompatible-mode type in either). A deck reaches them by the mechanical name in a coupled or static step
  * (src/deck/deck.c); the name with T is refused as the dialect refuses it. */
-static const char *const MechanicalOnly[] = {"CPE6T", "CPS6T", "CAX6T", "C3D15T"};
+static const char *const MechanicalOnly[] = {"CPE6T", "CPS6T", "CAX6T", "C3D15T", "CPE4IT", "CPS4IT", "CAX4IT", "C3D8IT"};
 
 PetscBool TslElementTypeMechanicalOnly(const TslElementType *t)
 {

@@ -111,7 +111,12 @@ struct TslFormulation {
   void (*pressure_face_rule)(const TslGeometry *g, PetscInt face, TslFaceRule *rule);
   void (*thermal_face_rule)(const TslGeometry *g, PetscInt face, TslFaceRule *rule);
   PetscBool consistent_capacity;
+  /* incompatible modes (NULL: none): the reference derivatives dP[k][0..2] of each bubble P_k at xi, their number */
+  PetscInt (*incompatible)(const TslGeometry *g, const PetscReal xi[], PetscReal dP[][3]);
 };
+
+/* Incompatible modes: at most one per reference direction, in each of 3 displacement components. */
+#define TSL_MAX_ENHANCED 9
 
 /* Hybrid pressure spaces are at most linear: 1 + dim terms. */
 #define TSL_MAX_PRESSURE 4
@@ -119,7 +124,7 @@ struct TslFormulation {
 /* The formulations (formulations.c). */
 extern const TslFormulation TslFormFull, TslFormFullSubFace, TslFormHybridSubFace, TslFormReducedQuadraticHybrid, TslFormReduced,
     TslFormReducedQuadratic, TslFormReducedQuadraticShell, TslFormHybrid, TslFormReducedHybrid, TslFormModified, TslFormModifiedHybrid,
-    TslFormContinuumShell;
+    TslFormContinuumShell, TslFormIncompatible;
 
 /* Hourglass control of the one-point quad4 and hex8 (formulations.c): the Flanagan-Belytschko vectors
  * gamma[k][a] = (h_k[a] - sum_d hx[k][d] dN_a/dx_d) / n at the centre point p (returns their number: 1 in

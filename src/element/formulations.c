@@ -337,35 +337,35 @@ static PetscErrorCode ShellHourglass(const TslElementInput *in, const TslMateria
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-const TslFormulation TslFormFull    = {"full integration", FullRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
+const TslFormulation TslFormFull    = {"full integration", FullRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE, NULL};
 const TslFormulation TslFormReduced = {
-    "reduced integration, hourglass control", ReducedRule, NULL, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_FALSE};
+    "reduced integration, hourglass control", ReducedRule, NULL, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_FALSE, NULL};
 /* Reduced integration of a second-order brick (C3D20RT: 2 x 2 x 2): no hourglass control, as in the dialect (its
  * one spurious mode does not propagate through a mesh). */
-const TslFormulation TslFormReducedQuadratic = {"reduced integration", ReducedRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
+const TslFormulation TslFormReducedQuadratic = {"reduced integration", ReducedRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE, NULL};
 /* the expanded S8RT (src/deck/shell.c): C3D20RT with its pressure on the faces' linear pieces (quad8: six tri3),
  * as the modified types take theirs: the serendipity face's consistent corner weights (-A/12) lift a thin
  * shell's corners off a contact surface under pressure */
 const TslFormulation TslFormReducedQuadraticShell = {
-    "reduced integration, pressure on linear sub-faces", ReducedRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
+    "reduced integration, pressure on linear sub-faces", ReducedRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE, NULL};
 /* Full integration with the 3D pressure on the faces' linear pieces (tri6 -> 4 tri3, quad8 -> 6 tri3), as the
  * modified types take theirs: the full quadratic tetrahedron and wedge (C3D10T, C3D15T), whose consistent face
  * weights are zero (tri6) or negative (quad8) at the corners; contact takes those faces as the same pieces.
  * Mass (and the explicit capacity) by HRZ lumping (positive), the implicit capacity consistent, the rest as full. */
 const TslFormulation TslFormFullSubFace = {
-    "full integration, pressure on linear sub-faces", FullRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
+    "full integration, pressure on linear sub-faces", FullRule, NULL, NULL, Lump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE, NULL};
 /* C3D10HT: the full tet10 with the linear hybrid pressure of the other second-order hybrids and C3D10T's faces. */
 const TslFormulation TslFormHybridSubFace = {
-    "hybrid, pressure on linear sub-faces", FullRule, PressureBasis, NULL, Lump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
+    "hybrid, pressure on linear sub-faces", FullRule, PressureBasis, NULL, Lump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE, NULL};
 /* CPE8RHT, CAX8RHT: the 2 x 2 quad8 with the linear hybrid pressure of CPE8HT (3 terms at 4 points). */
 const TslFormulation TslFormReducedQuadraticHybrid = {
-    "reduced integration, hybrid", ReducedRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
-const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE};
+    "reduced integration, hybrid", ReducedRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE, NULL};
+const TslFormulation TslFormHybrid        = {"hybrid", FullRule, PressureBasis, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE, NULL};
 const TslFormulation TslFormReducedHybrid = {
-    "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_FALSE};
-const TslFormulation TslFormModified       = {"modified second order", FullRule, NULL, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
+    "reduced integration, hourglass control, hybrid", ReducedRule, PressureBasis, HourglassStiffness, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_FALSE, NULL};
+const TslFormulation TslFormModified       = {"modified second order", FullRule, NULL, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE, NULL};
 const TslFormulation TslFormModifiedHybrid = {
-    "modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE};
+    "modified second order, hybrid", FullRule, PressureBasis, NULL, SubElementLump, FaceRuleSub, FaceRuleOwn, PETSC_TRUE, NULL};
 const TslFormulation TslFormContinuumShell = {"continuum shell: reduced in-plane, Simpson through the thickness, hourglass control",
                                               ShellRule,
                                               NULL,
@@ -373,7 +373,20 @@ const TslFormulation TslFormContinuumShell = {"continuum shell: reduced in-plane
                                               Lump,
                                               FaceRuleOwn,
                                               FaceRuleOwn,
-                                              PETSC_FALSE};
+                                              PETSC_FALSE,
+                                              NULL};
+
+/* Incompatible modes (C3D8I, CPE4I, CPS4I, CAX4I; Wilson, Taylor et al.): the full rule with the bubble
+ * displacements P_k = 1 - xi_k^2 (one per reference direction, each in every displacement component) condensed in
+ * the element (kernels.c, MechanicsIncompatible): dP[k][j] = dP_k / dxi_j at xi; returns their number. */
+static PetscInt IncompatibleModes(const TslGeometry *g, const PetscReal xi[], PetscReal dP[][3])
+{
+  for (PetscInt k = 0; k < g->dim; k++)
+    for (PetscInt j = 0; j < 3; j++) dP[k][j] = j == k ? -2 * xi[k] : 0;
+  return g->dim;
+}
+const TslFormulation TslFormIncompatible = {
+    "full integration, incompatible modes", FullRule, NULL, NULL, Lump, FaceRuleOwn, FaceRuleOwn, PETSC_TRUE, IncompatibleModes};
 
 PetscBool TslElementTypeSubdividedFace(const TslElementType *t, PetscInt face)
 {

@@ -152,12 +152,13 @@ typedef struct {
   PetscReal p[TSL_MAX_PRESSURE]; /* condensed pressure coefficients (mean stress, tension positive) */
 } Hybrid;
 
-/* Small dense solve by Gauss elimination with partial pivoting (n <= TSL_MAX_PRESSURE), in place. */
-static void SmallInverse(PetscInt n, PetscReal A[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], PetscReal Ai[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE])
+/* Inverse of a small dense matrix (n <= TSL_MAX_ENHANCED, row stride lda) by Gauss-Jordan elimination with partial
+ * pivoting: the hybrid pressure's H and the incompatible modes' K_aa, both symmetric positive definite. */
+static void DenseInverse(PetscInt n, PetscInt lda, const PetscReal *A, PetscReal *Ai)
 {
-  PetscReal M[TSL_MAX_PRESSURE][2 * TSL_MAX_PRESSURE];
+  PetscReal M[TSL_MAX_ENHANCED][2 * TSL_MAX_ENHANCED];
   for (PetscInt i = 0; i < n; i++)
-    for (PetscInt j = 0; j < 2 * n; j++) M[i][j] = j < n ? A[i][j] : (j - n == i);
+    for (PetscInt j = 0; j < 2 * n; j++) M[i][j] = j < n ? A[i * lda + j] : (j - n == i);
   for (PetscInt c = 0; c < n; c++) {
     PetscInt piv = c;
     for (PetscInt i = c + 1; i < n; i++)
@@ -174,7 +175,12 @@ static void SmallInverse(PetscInt n, PetscReal A[TSL_MAX_PRESSURE][TSL_MAX_PRESS
     }
   }
   for (PetscInt i = 0; i < n; i++)
-    for (PetscInt j = 0; j < n; j++) Ai[i][j] = M[i][n + j] / M[i][i];
+    for (PetscInt j = 0; j < n; j++) Ai[i * lda + j] = M[i][n + j] / M[i][i];
+}
+
+static void SmallInverse(PetscInt n, PetscReal A[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], PetscReal Ai[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE])
+{
+  DenseInverse(n, TSL_MAX_PRESSURE, &A[0][0], &Ai[0][0]);
 }
 
 /* B_a^T s dV for a 3D solid's node a with spatial gradient g and a Voigt vector s (engineering shear), the
@@ -267,6 +273,203 @@ static PetscBool MechanicsSolid3DTangent(const TslElementInput *in, const TslEle
   return PETSC_TRUE;
 }
 
+/* The reference map's Jacobian J[i][j] = dx_i / dxi_j of the family's nodes x[] at xi (dim x dim) and its determinant. */
+static PetscReal ReferenceJacobian(const TslGeometry *g, const PetscReal x[], const PetscReal xi[], PetscReal J[3][3])
+{
+  const PetscInt gd = g->dim;
+  PetscReal      N[TSL_MAX_ELEM_NODES], dN[TSL_MAX_ELEM_NODES * 3];
+
+  g->shape(xi, N, dN);
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = 0; j < 3; j++) J[i][j] = 0;
+  for (PetscInt a = 0; a < g->nnode; a++)
+    for (PetscInt i = 0; i < gd; i++)
+      for (PetscInt j = 0; j < gd; j++) J[i][j] += x[3 * a + i] * dN[gd * a + j];
+  return gd == 2 ? J[0][0] * J[1][1] - J[0][1] * J[1][0]
+                 : J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
+                       J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
+}
+
+/* Incompatible modes (TslFormulation.incompatible; docs/elements.md "Incompatible modes"): the displacement
+ * u = N u_hat + sum_k P_k alpha_k (P_k = 1 - xi_k^2, a vector alpha_k per bubble, every displacement component) adds the
+ * strain G alpha. G is the bubbles' symmetric gradient with the centre's Jacobian, grad P_k = J0^-T dP_k/dxi (det J0 /
+ * det J) (Taylor, Beresford and Wilson), less its volume mean, so that int G dV = 0 holds exactly on every shape and
+ * kinematics (the axisymmetric r too): a constant stress does no work on the bubbles, and the patch test passes. No
+ * hoop or out-of-plane strain from the bubbles. With sigma = D (B u + G alpha - eps_th m) the element's bubble equations
+ * int G^T sigma dV = 0 give
+ *   alpha = -K_aa^-1 r0,  K_aa = int G^T D G dV,  r0 = int G^T D (B u - eps_th m) dV,
+ * the residual R_u = int B^T sigma dV at that alpha, and the condensed tangent
+ *   K_uu = int B^T D B dV - K_ua K_aa^-1 K_au,  K_u_theta_b = t_b - K_ua K_aa^-1 s_b,
+ * with t_b, s_b = int (B, G)^T dsigma_b dV, dsigma_b = (dD (eps - eps_th m) - D m deps_th) N_b at fixed alpha. The
+ * material is elastic, so alpha follows from (u, theta) in each evaluation: no state is kept. */
+static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
+                                       PetscReal *energy)
+{
+  const TslElementType *t    = in->type;
+  const TslGeometry    *g    = t->geom;
+  const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
+  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof, ncol = n * nu, dim = t->dim, gd = g->dim;
+  PetscReal             xi0[3], J0[3][3], J0i[3][3], det0, dP[3][3], vol = 0;
+  PetscReal             G[TSL_MAX_QP][6][TSL_MAX_ENHANCED], Gbar[6][TSL_MAX_ENHANCED] = {{0}}, Kaa[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED] = {0},
+                        Kai[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED], r0[TSL_MAX_ENHANCED] = {0}, alpha[TSL_MAX_ENHANCED] = {0};
+  PetscReal             Kau[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES * 3], sb[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES];
+  PetscReal            *se = res ? &res->strain_energy : energy;
+  PetscInt              nm, na;
+  MechPoint             mq;
+  static const PetscInt vi[6] = {0, 1, 2, 0, 0, 1}, vj[6] = {0, 1, 2, 1, 2, 2};
+
+  /* the centre's Jacobian J0[i][j] = dx_i / dxi_j and its inverse */
+  TslElementCentre(g, xi0);
+  nm   = t->form->incompatible(g, xi0, dP);
+  na   = nm * dim;
+  det0 = ReferenceJacobian(g, in->x, xi0, J0);
+  if (!(det0 > 0)) return PETSC_FALSE;
+  if (gd == 2) {
+    J0i[0][0] = J0[1][1] / det0, J0i[0][1] = -J0[0][1] / det0, J0i[1][0] = -J0[1][0] / det0, J0i[1][1] = J0[0][0] / det0;
+  } else
+    for (PetscInt i = 0; i < 3; i++)
+      for (PetscInt j = 0; j < 3; j++) {
+        const PetscInt i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
+        J0i[i][j] = (J0[i1][j1] * J0[i2][j2] - J0[i1][j2] * J0[i2][j1]) / det0;
+      }
+  /* G at each point, and its mean */
+  for (PetscInt q = 0; q < quad->n; q++) {
+    PetscReal J[3][3], det, grad[3][3];
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
+    det = ReferenceJacobian(g, in->x, quad->xi[q], J);
+    (void)t->form->incompatible(g, quad->xi[q], dP);
+    for (PetscInt k = 0; k < nm; k++)
+      for (PetscInt i = 0; i < dim; i++) {
+        grad[k][i] = 0;
+        for (PetscInt j = 0; j < gd; j++) grad[k][i] += J0i[j][i] * dP[k][j] * det0 / det;
+      }
+    for (PetscInt r = 0; r < 6; r++)
+      for (PetscInt c = 0; c < na; c++) G[q][r][c] = 0;
+    for (PetscInt k = 0; k < nm; k++)
+      for (PetscInt r = 0; r < 6; r++) {
+        const PetscInt i = vi[r], j = vj[r];
+        if (i >= dim || j >= dim) continue;
+        G[q][r][dim * k + i] += grad[k][j];
+        if (i != j) G[q][r][dim * k + j] += grad[k][i];
+      }
+    for (PetscInt r = 0; r < 6; r++)
+      for (PetscInt c = 0; c < na; c++) Gbar[r][c] += G[q][r][c] * mq.p->dV;
+    vol += mq.p->dV;
+  }
+  for (PetscInt q = 0; q < quad->n; q++)
+    for (PetscInt r = 0; r < 6; r++)
+      for (PetscInt c = 0; c < na; c++) G[q][r][c] -= Gbar[r][c] / vol;
+  /* K_aa and r0 (first pass), alpha */
+  for (PetscInt q = 0; q < quad->n; q++) {
+    PetscReal D[6][6], DG[6][TSL_MAX_ENHANCED], s0[6];
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
+    TslElementElasticity(t, in->sec, mq.p, &mq.mp, D, NULL);
+    for (PetscInt r = 0; r < 6; r++) {
+      s0[r] = 0;
+      for (PetscInt c = 0; c < na; c++) DG[r][c] = 0;
+      for (PetscInt s2 = 0; s2 < 6; s2++) {
+        s0[r] += D[r][s2] * (mq.eps[s2] - VoigtM[s2] * mq.eps_th);
+        for (PetscInt c = 0; c < na; c++) DG[r][c] += D[r][s2] * G[q][s2][c];
+      }
+    }
+    for (PetscInt c1 = 0; c1 < na; c1++) {
+      for (PetscInt r = 0; r < 6; r++) r0[c1] += G[q][r][c1] * s0[r] * mq.p->dV;
+      for (PetscInt c2 = 0; c2 < na; c2++)
+        for (PetscInt r = 0; r < 6; r++) Kaa[c1 * na + c2] += G[q][r][c1] * DG[r][c2] * mq.p->dV;
+    }
+  }
+  DenseInverse(na, na, Kaa, Kai);
+  for (PetscInt c1 = 0; c1 < na; c1++)
+    for (PetscInt c2 = 0; c2 < na; c2++) alpha[c1] -= Kai[c1 * na + c2] * r0[c2];
+  /* second pass: stress with the bubbles, R_u, results, K_uu, K_au and the temperature columns */
+  if (K) {
+    for (PetscInt c = 0; c < na; c++)
+      for (PetscInt b = 0; b < ncol; b++) Kau[c][b] = 0;
+    for (PetscInt c = 0; c < na; c++)
+      for (PetscInt b = 0; b < n; b++) sb[c][b] = 0;
+  }
+  for (PetscInt q = 0; q < quad->n; q++) {
+    PetscReal D[6][6], dD[6][6], eps[6], emech[6], sig[6], dsig[6];
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
+    TslElementElasticity(t, in->sec, mq.p, &mq.mp, D, K ? dD : NULL);
+    for (PetscInt r = 0; r < 6; r++) {
+      eps[r] = mq.eps[r];
+      for (PetscInt c = 0; c < na; c++) eps[r] += G[q][r][c] * alpha[c];
+      emech[r] = eps[r] - VoigtM[r] * mq.eps_th;
+    }
+    for (PetscInt r = 0; r < 6; r++) {
+      sig[r] = dsig[r] = 0;
+      for (PetscInt s2 = 0; s2 < 6; s2++) {
+        sig[r] += D[r][s2] * emech[s2];
+        if (K) dsig[r] += dD[r][s2] * emech[s2] - D[r][s2] * VoigtM[s2] * mq.deps_th;
+      }
+    }
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < nu; i++) {
+        PetscReal f = 0;
+        for (PetscInt r = 0; r < 6; r++) f += mq.B[r][nu * a + i] * sig[r];
+        R[ndof * a + i] += f * mq.p->dV;
+      }
+    if (res)
+      for (PetscInt r = 0; r < 6; r++) res->E[r] += eps[r] / quad->n, res->S[r] += sig[r] / quad->n;
+    if (se)
+      for (PetscInt r = 0; r < 6; r++) *se += 0.5 * sig[r] * emech[r] * mq.p->dV;
+    if (!K) continue;
+    for (PetscInt c1 = 0; c1 < ncol; c1++) {
+      const PetscInt r1 = ndof * (c1 / nu) + c1 % nu;
+      PetscReal      DB[6], Bds = 0;
+      for (PetscInt r = 0; r < 6; r++) {
+        DB[r] = 0;
+        for (PetscInt s2 = 0; s2 < 6; s2++) DB[r] += D[r][s2] * mq.B[s2][c1];
+        Bds += mq.B[r][c1] * dsig[r];
+      }
+      for (PetscInt c2 = 0; c2 < ncol; c2++) {
+        PetscReal kv = 0;
+        for (PetscInt r = 0; r < 6; r++) kv += mq.B[r][c2] * DB[r];
+        K[r1 * nd + ndof * (c2 / nu) + c2 % nu] += kv * mq.p->dV;
+      }
+      for (PetscInt c = 0; c < na; c++) {
+        PetscReal kv = 0;
+        for (PetscInt r = 0; r < 6; r++) kv += G[q][r][c] * DB[r];
+        Kau[c][c1] += kv * mq.p->dV;
+      }
+      for (PetscInt b = 0; b < n; b++) K[r1 * nd + ndof * b + th] += Bds * mq.p->N[b] * mq.p->dV;
+    }
+    for (PetscInt c = 0; c < na; c++) {
+      PetscReal Gds = 0;
+      for (PetscInt r = 0; r < 6; r++) Gds += G[q][r][c] * dsig[r];
+      for (PetscInt b = 0; b < n; b++) sb[c][b] += Gds * mq.p->N[b] * mq.p->dV;
+    }
+  }
+  if (K) { /* condensation: K_uu -= K_ua K_aa^-1 K_au, K_u_theta -= K_ua K_aa^-1 s */
+    PetscReal KiKau[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES * 3], Kis[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES];
+    for (PetscInt c = 0; c < na; c++) {
+      for (PetscInt b = 0; b < ncol; b++) {
+        KiKau[c][b] = 0;
+        for (PetscInt e = 0; e < na; e++) KiKau[c][b] += Kai[c * na + e] * Kau[e][b];
+      }
+      for (PetscInt b = 0; b < n; b++) {
+        Kis[c][b] = 0;
+        for (PetscInt e = 0; e < na; e++) Kis[c][b] += Kai[c * na + e] * sb[e][b];
+      }
+    }
+    for (PetscInt c1 = 0; c1 < ncol; c1++) {
+      const PetscInt r1 = ndof * (c1 / nu) + c1 % nu;
+      for (PetscInt c2 = 0; c2 < ncol; c2++) {
+        PetscReal kv = 0;
+        for (PetscInt c = 0; c < na; c++) kv += Kau[c][c1] * KiKau[c][c2];
+        K[r1 * nd + ndof * (c2 / nu) + c2 % nu] -= kv;
+      }
+      for (PetscInt b = 0; b < n; b++) {
+        PetscReal kv = 0;
+        for (PetscInt c = 0; c < na; c++) kv += Kau[c][c1] * Kis[c][b];
+        K[r1 * nd + ndof * b + th] -= kv;
+      }
+    }
+  }
+  return PETSC_TRUE;
+}
+
 /* Mechanical terms over the formulation's points. Displacement formulation:
  *   sigma = D (eps - eps_th m),  R_u = int B^T sigma dV,
  *   K_uu = int B^T D B dV,  K_u_theta_b = int B^T (dD (eps - eps_th m) - D m deps_th) N_b dV.
@@ -292,6 +495,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 
   if (nu == 0) return PETSC_TRUE; /* a heat-transfer type: no displacement, no mechanical term */
+  if (t->form->incompatible) return MechanicsIncompatible(in, full, R, K, res, energy);
   if (K && !se && !hybrid && LeanStrain(in)) return MechanicsSolid3DTangent(in, full, R, K);
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
   if (K) PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(Kuu, ncol * ncol));

@@ -72,6 +72,7 @@ static void Redefine(TslLoadValue *h, PetscReal start, PetscReal value, PetscInt
   h->active   = PETSC_TRUE;
   h->velocity = PETSC_FALSE;
   h->held     = PETSC_FALSE; /* a *STATIC step's own *BOUNDARY on a temperature: prescribed, not held */
+  h->file     = PETSC_FALSE; /* and no longer read from a *TEMPERATURE, FILE= */
 }
 
 /* Starts a velocity from the current one (0 for a dof that was not moving by a velocity), the displacement
@@ -84,6 +85,7 @@ static void RedefineVelocity(TslLoadValue *h, PetscReal u, PetscReal t0, PetscRe
   h->active   = PETSC_TRUE;
   h->velocity = PETSC_TRUE;
   h->held     = PETSC_FALSE;
+  h->file     = PETSC_FALSE;
   h->u0       = u;
   h->t0       = t0;
 }
@@ -236,11 +238,11 @@ static PetscErrorCode AddFaceLoads(TslProblem p, const TslLoad *ld)
     if (kind == TSL_FACE_FILM || kind == TSL_FACE_RADIATION) {
       /* the film coefficient h, or the radiation coefficient sigma eps (the kernels' value) */
       const PetscReal c = kind == TSL_FACE_RADIATION ? m->stefan_boltzmann * ld->value : ld->value;
-      r->value          = (TslLoadValue){PETSC_TRUE, c, c, TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE};
-      r->sink     = (TslLoadValue){PETSC_TRUE, ld->sink, ld->sink, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE};
+      r->value          = (TslLoadValue){PETSC_TRUE, c, c, TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE, PETSC_FALSE};
+      r->sink     = (TslLoadValue){PETSC_TRUE, ld->sink, ld->sink, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE, PETSC_FALSE};
       r->film_amp = ld->film_amplitude;
     } else {
-      r->value    = (TslLoadValue){PETSC_TRUE, 0, ld->value, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT, PETSC_FALSE, 0, 0, PETSC_FALSE};
+      r->value    = (TslLoadValue){PETSC_TRUE, 0, ld->value, ld->amplitude >= 0 ? ld->amplitude : TSL_AMP_DEFAULT, PETSC_FALSE, 0, 0, PETSC_FALSE, PETSC_FALSE};
       r->film_amp = -1;
     }
     PetscCall(PetscArraycpy(r->axis, ld->axis, 6));
@@ -286,7 +288,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
 
   PetscFunctionBeginUser;
   /* values reached at the end of the previous step */
-  for (PetscInt d = 0; d < nd; d++) Freeze(p, &p->bc[d]), Freeze(p, &p->nload[d]);
+  for (PetscInt d = 0; d < nd; d++) Freeze(p, &p->bc[d]), Freeze(p, &p->nload[d]), p->bc[d].file = PETSC_FALSE;
   for (PetscInt i = 0; i < p->nface; i++) {
     TslFaceRecord *r = &p->face[i];
     if (r->film_amp >= 0 && !m->amplitudes[r->film_amp].total_time) {
@@ -330,7 +332,23 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
     if (c < 0) continue;
     if (p->bc[d].held) p->bc[d].active = p->bc[d].held = PETSC_FALSE;
     if (step->statik && !p->bc[d].active && p->dep[d] < 0)
-      p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_TRUE};
+      p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_TRUE, PETSC_FALSE};
+  }
+  /* *TEMPERATURE, FILE=: every temperature from the file (tfile.c), part of the step's hold as *TEMPERATURE is; one
+   * frame is the step's target (ramped or stepped as the step's amplitude says), several are followed in time
+   * (TslProblemSetTime); the step's own *BOUNDARY or *TEMPERATURE lines on a node, below, replace it there */
+  PetscCall(TslProblemTemperatureFileBegin(p, s, x));
+  if (step->tfile.given) {
+    const PetscReal *T;
+    const PetscBool  one = p->tfile.nwin == 1 ? PETSC_TRUE : PETSC_FALSE;
+    PetscCall(TslProblemTemperatureFileAt(p, one ? PETSC_MAX_REAL : 0, &T)); /* one frame: that frame; several: the start */
+    for (PetscInt l = 0; l < p->nn; l++) {
+      const PetscInt c = TslProblemNodeDofSlot(p, l, 11), d = l * p->ndof + c;
+      if (c < 0 || p->dep[d] >= 0) continue;
+      if (one) Redefine(&p->bc[d], PetscRealPart(x[d]), T[l], step->tfile.amplitude >= 0 ? step->tfile.amplitude : TSL_AMP_DEFAULT);
+      else p->bc[d] = (TslLoadValue){PETSC_TRUE, T[l], T[l], TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE, PETSC_TRUE};
+      p->bc[d].held = PETSC_TRUE;
+    }
   }
   for (PetscInt i = 0; i < step->nload; i++) {
     const TslLoad *ld  = &step->loads[i];
@@ -347,7 +365,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
           PetscInt c = TslProblemNodeDofSlot(p, nodes[j], dof), d = nodes[j] * p->ndof + c;
           if (c < 0) continue; /* a dof the model's elements do not have (e.g. 3 in 2D): ignored as in the dialect */
           if (ld->kind == TSL_LOAD_BOUNDARY && ld->fixed)
-            p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE};
+            p->bc[d] = (TslLoadValue){PETSC_TRUE, PetscRealPart(x[d]), PetscRealPart(x[d]), TSL_AMP_HOLD, PETSC_FALSE, 0, 0, PETSC_FALSE, PETSC_FALSE};
           else if (ld->kind == TSL_LOAD_BOUNDARY && ld->velocity)
             RedefineVelocity(&p->bc[d], PetscRealPart(x[d]), p->ttot, ld->value, amp);
           else if (ld->kind == TSL_LOAD_BOUNDARY) {
@@ -403,6 +421,14 @@ PetscErrorCode TslProblemSetTime(TslProblem p, PetscReal step_time, PetscReal dt
   p->t    = step_time;
   p->dt   = dt;
   p->ttot = total_time;
+  if (p->tfile.nwin > 1) { /* *TEMPERATURE, FILE= followed in time */
+    const PetscReal *T;
+    PetscCall(TslProblemTemperatureFileAt(p, step_time, &T));
+    for (PetscInt l = 0; l < p->nn; l++) {
+      const PetscInt c = TslProblemNodeDofSlot(p, l, 11), d = l * p->ndof + c;
+      if (c >= 0 && p->bc[d].file) p->bc[d].v0 = p->bc[d].v1 = T[l];
+    }
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

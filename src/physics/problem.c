@@ -380,6 +380,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(ISDestroy(&p->is_theta));
   PetscCall(PetscFree(p->elem_lnode));
   PetscCall(PetscFree(p->amp_active));
+  PetscCall(TslProblemTemperatureFileEnd(p));
   PetscCall(PetscFree(p->esec));
   PetscCall(PetscFree2(p->extra, p->pinned));
   PetscCall(PetscFree(p->theta_init));

@@ -3,6 +3,7 @@
 #include <thermoslide/problem.h>
 #include <thermoslide/contact.h>
 #include <thermoslide/sys.h>
+#include <thermoslide/output.h>
 #include <string.h>
 
 /* One contact pair on this rank: the law and the part of the main surface the rank holds (the faces its
@@ -74,6 +75,7 @@ typedef struct {
   PetscBool velocity;
   PetscReal u0, t0;
   PetscBool held; /* a *STATIC step's hold of a temperature at its start value (ends with the step) */
+  PetscBool file; /* follows the step's *TEMPERATURE, FILE= frames in time (tfile.c; a later definition in the step ends it) */
 } TslLoadValue;
 
 /* A distributed (face or body) load on one local element. */
@@ -110,6 +112,16 @@ struct _p_TslProblem {
   TslElementSection *esec;         /* [nelem] material and thickness of each element */
   PetscReal         *theta_init;   /* [nn] */
   PetscReal          row_scale[3]; /* constraint-row scale for translations, temperature, twist (assemble.c, RowGroup) */
+
+  /* *TEMPERATURE, FILE= of the current step (tfile.c): the file, its window of frames (positions in the file's frame
+   * list, in time order), the file's total time at step time 0, the temperatures at the step's start Ts [nn], the two
+   * frames whose values are in Ta, Tb [nn] (each local node's row node_nat), and T [nn] the values last asked for */
+  struct {
+    TslResults       r;
+    const TslResultsFrame *frames;
+    PetscInt         nwin, *win, a, b;
+    PetscReal        t0, *Ts, *Ta, *Tb, *T;
+  } tfile;
 
   /* step state */
   PetscInt      step;
@@ -343,6 +355,12 @@ PetscReal      TslProblemEvalLoadValue(TslProblem p, const TslLoadValue *h);
  * among local node l's (TslProblemNodeDofSlot: reference nodes have their own), -1 when it has no such dof. */
 PetscInt       TslProblemDofSlot(TslProblem p, PetscInt dof);
 PetscInt       TslProblemNodeDofSlot(TslProblem p, PetscInt l, PetscInt dof);
+/* *TEMPERATURE, FILE= (tfile.c): opens step s's window (closing the one before; nothing when the step has none; x the
+ * local solution at the step's start); the
+ * values at step time t for every local node (collective: a failed read stops all ranks); closes it */
+PetscErrorCode TslProblemTemperatureFileBegin(TslProblem p, PetscInt s, const PetscScalar x[]);
+PetscErrorCode TslProblemTemperatureFileAt(TslProblem p, PetscReal t, const PetscReal **T);
+PetscErrorCode TslProblemTemperatureFileEnd(TslProblem p);
 PetscErrorCode TslProblemLocalNode(TslProblem p, PetscInt gnum, PetscInt *lnode);
 PetscErrorCode TslProblemPreallocate(TslProblem p);
 PetscErrorCode TslProblemPreallocateIfChanged(TslProblem p); /* TslProblemPreallocate unless every row kind is as it was */

@@ -1107,6 +1107,7 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
   }
   for (size_t k = 0; k < sizeof(Procedures) / sizeof(Procedures[0]); k++) PetscCall(Procedures[k].setup(&d));
   PetscCall(TslOptionsCheckUnused(d.comm, PETSC_TRUE)); /* every -tsl_ option has been read by now */
+  PetscCall(TslProblemTemperatureFilesCheck(prob)); /* *TEMPERATURE, FILE=: the files against the model, before any result is written */
   PetscCall(TslFramesSetUp(&d, dir, jobname));
   /* every failure inside a step is decided by all ranks together (sys.h), so all ranks stop here alike */
   for (PetscInt s = 0; s < m->nstep && !ierr; s++) {
