@@ -33,6 +33,9 @@ gap_radiation  the two DC3D8 blocks across the clearance 0.01 with *GAP RADIATIO
           kelvin), T = 300 and 600 held outside: q = C (T_b^4 - T_a^4), C = sigma / (1/0.8 + 1/0.8 - 1), with
           T_a = 300 + q / 50 and T_b = 600 - q / 50 (each block's conduction), solved here by bisection. Checks: the
           interface heat and the heat in against q (1e-8 relative: the Newton tolerance of the nonlinear solve).
+deltmx    the bar of 10 DC3D8 with DELTMX=0.1 and automatic increments (initial and largest 0.05, a frame every
+          increment): no free temperature changes by more than 0.1 (1e-4 relative) between two increments, the first
+          increment was cut back (more than the 4 increments of 0.05), and the heat balance closes (1e-10).
 same      the temperatures of this job equal those of another job (OTHER_OUTDIR OTHER_JOB): at every node and frame
           within 1e-8 of the unit drop (the two solves' tolerance).
 usage: check_heat.py OUTDIR JOB CASE [OTHER_OUTDIR OTHER_JOB]
@@ -123,6 +126,16 @@ elif case == "gap_radiation":
     y = r.xyz[:, 1]
     check("gap_radiation: interface heat / q", -h["interface_heat"][-1] / q, 1.0, 1e-8)
     check("gap_radiation: heat in at the hot face / q", float(np.sum(r.field("RFL")[:, 0][y > 2])) / q, 1.0, 1e-8)
+elif case == "deltmx":
+    free = r.xyz[:, 0] > 1e-9
+    worst, prev = 0.0, np.zeros(len(r.xyz))
+    for i in range(len(r.frames)):
+        nt = r.field("NT", i)[:, 0]
+        worst = max(worst, float(np.max(np.abs(nt - prev)[free])))
+        prev = nt
+    check("deltmx: largest change of a free temperature in an increment (DELTMX 0.1)", worst <= 0.1 * 1.0001, True, 0)
+    check("deltmx: increments taken (more than the 4 of the largest increment)", len(h["dt"]) > 4, True, 0)
+    check("deltmx: largest heat balance residual", float(np.max(np.abs(h["balance_residual"]))), 0.0, 1e-10)
 elif case == "same":
     o = Result(sys.argv[4], sys.argv[5])
     check("same: frames", len(r.frames), len(o.frames), 0)

@@ -196,6 +196,7 @@ def main():
     bar("C3D8T", "*HEAT TRANSFER", "bar_c3d8t_heat")
     bar("C3D8T", "*COUPLED TEMPERATURE-DISPLACEMENT", "bar_c3d8t_coupled")
     bar("DC3D8", "*HEAT TRANSFER, END=SS", "endss_dc3d8", n=10, film=True, tdep=True, data="0.01, 50., 1e-6, 1., 1e-4", freq=1000)
+    bar("DC3D8", "*HEAT TRANSFER, DELTMX=0.1", "deltmx_dc3d8", n=10, data="0.05, 0.2, 1e-6, 0.05", freq=1)
     cylinder("cylinder_cax8")
     blocks("gap_dc2d4")
     blocks("gap_s2s_dc3d8", dim=3, s2s=True)
