@@ -54,6 +54,19 @@ def bar(etype, procedure, name, n=20, tdep=False, film=False, heat_load=False, d
         f.write("\n".join(lines) + "\n")
 
 
+def sequential(name):
+    """The DC3D8 bar's mesh as C3D8 in a *STATIC step whose temperatures are the heat-transfer job's (*TEMPERATURE,
+    FILE=bar_dc3d8: Abaqus's sequentially coupled thermal-stress analysis), at the heat job's frame times (DIRECT
+    increments of 0.05 over 0.2), clamped at x = 0 (check_heat.py same)."""
+    with open(os.path.join(HERE, "decks", "bar_dc3d8.inp")) as f:
+        text = f.read()
+    model = text[: text.index("*STEP")].replace("TYPE=DC3D8", "TYPE=C3D8").replace("*CONDUCTIVITY", "*ELASTIC\n1000., 0.3\n*EXPANSION\n1e-3\n*CONDUCTIVITY")
+    model = model.replace("1D transient conduction along a bar of 20 DC3D8", "the DC3D8 bar's temperatures in a static step of C3D8")
+    steps = ["*STEP", "*STATIC, DIRECT", "0.05, 0.2", "*BOUNDARY", "HOT, 1, 3", "*TEMPERATURE, FILE=bar_dc3d8", "*NODE OUTPUT", "U, NT", "*END STEP"]
+    with open(os.path.join(HERE, "decks", name + ".inp"), "w") as f:
+        f.write(model + "\n".join(steps) + "\n")
+
+
 def cylinder(name, n=8, r1=1.0, r2=2.0):
     """A thick cylinder r1 <= r <= r2 of n CAX8 (CalculiX's name, read as DCAX8) along r, one along z: T = 100 at r1, a
     film h = 5 to a sink 20 at r2, steady; the closed form is check_heat.py's (cylinder)."""
@@ -196,6 +209,7 @@ def main():
     bar("C3D8T", "*HEAT TRANSFER", "bar_c3d8t_heat")
     bar("C3D8T", "*COUPLED TEMPERATURE-DISPLACEMENT", "bar_c3d8t_coupled")
     bar("DC3D8", "*HEAT TRANSFER, END=SS", "endss_dc3d8", n=10, film=True, tdep=True, data="0.01, 50., 1e-6, 1., 1e-4", freq=1000)
+    sequential("static_from_heat_c3d8")
     bar("DC3D8", "*HEAT TRANSFER, DELTMX=0.1", "deltmx_dc3d8", n=10, data="0.05, 0.2, 1e-6, 0.05", freq=1)
     cylinder("cylinder_cax8")
     blocks("gap_dc2d4")
