@@ -117,6 +117,14 @@ PetscInt              TslElementTypeFind(const char *name);
 /* Is the row's name only the coupled reading of a CalculiX mechanical name (CPE6T for CPE6: no such type in the
  * dialect), so that a deck may not name it directly? */
 PetscBool TslElementTypeMechanicalOnly(const TslElementType *t);
+/* Is the type a heat-transfer one (DC2D4, DC3D8, ...): the temperature its only unknown? */
+static inline PetscBool TslElementTypeHeatOnly(const TslElementType *t)
+{
+  return t->ndof == 1 ? PETSC_TRUE : PETSC_FALSE;
+}
+/* The catalogue index of the heat-transfer type with t's interpolation and measure (t itself for a DC type), -1
+ * if there is none (catalogue.c). */
+PetscInt TslElementTypeHeatCounterpart(const TslElementType *t);
 /* Position of the temperature among a node's unknowns (the last one). */
 static inline PetscInt TslElementTypeThetaSlot(const TslElementType *t)
 {

@@ -391,7 +391,7 @@ typedef struct {
 typedef struct {
   char              name[TSL_NAME_LEN];
   TslLoc            loc;
-  PetscBool         coupled;                   /* a procedure seen (*COUPLED or *DYNAMIC TEMPERATURE-DISPLACEMENT) */
+  PetscBool         coupled;                   /* a procedure seen (*COUPLED, *STATIC, *HEAT TRANSFER or *DYNAMIC TEMPERATURE-DISPLACEMENT) */
   PetscBool         explicit_dynamics;         /* *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT (src/solve/explicit.c) */
   PetscReal         dt_user;                   /* explicit, DIRECT USER CONTROL: the fixed increment (0: the stable increment) */
   PetscReal         dt_scale;                  /* explicit, SCALE FACTOR= on the stable increment (default 1) */
@@ -404,6 +404,9 @@ typedef struct {
   PetscReal         out_time_interval;         /* *OUTPUT, TIME INTERVAL= (0: not given): frames every dt of step time */
   PetscBool         steady;                    /* STEADY STATE (and *STATIC) */
   PetscBool         statik;                    /* *STATIC: mechanical equilibrium with every temperature held at its value (no heat transfer) */
+  PetscBool         heat;                      /* *HEAT TRANSFER: the temperature alone (a model of such steps only: docs/design.md) */
+  TslLoc            heat_loc;                  /* the *HEAT TRANSFER line */
+  PetscReal         end_ss_rate;               /* *HEAT TRANSFER, END=SS: the step ends once no temperature changes faster (0: END=PERIOD) */
   PetscBool         direct;                    /* DIRECT: fixed increments */
   PetscBool         nlgeom;                    /* NLGEOM accepted (small-strain kinematics used; see docs) */
   PetscBool         no_extrapolation;          /* EXTRAPOLATION=NO: each increment starts from the last converged state */

@@ -99,6 +99,9 @@ PetscInt TslFieldFind(const char *name);
 /* deflt: written without an *OUTPUT request (0 no, 1 yes, 2 when the model has contact pairs) */
 const char    *TslFieldName(PetscInt i, TslFieldKind *kind, PetscInt *deflt);
 PetscErrorCode TslProblemField(TslProblem prob, PetscInt i, PetscInt *ncomp, PetscReal **vals);
+/* Does the model have field i? The displacement's fields (U, RF, S, E, CPRESS, CSLIP, CSTATUS, ELSE, ELASE) do not
+ * exist in a heat-transfer model (no displacement unknowns): they are neither written by default nor on request. */
+PetscBool TslProblemFieldAvailable(TslProblem prob, PetscInt i);
 /* Contact (collective). Search: pairs secondary nodes at the current solution, rebuilding the matrix
  * pattern when pairing changed (then *repattern: hand the new matrix to the solver). Update: after a
  * converged solve, re-pairs nodes that left their segment and updates augmented-Lagrange multipliers;

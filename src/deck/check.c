@@ -301,16 +301,18 @@ static PetscErrorCode CheckSurfaces(TslModel *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* What the steps need of a material: the conductivity where some step transfers heat (any but *STATIC, which
- * holds the temperatures), the density and specific heat where some step is transient (capacity, mass). A
+/* What the steps need of a material: the elasticity unless every step is *HEAT TRANSFER, the conductivity where some
+ * step transfers heat (any but *STATIC, which holds the temperatures), the density and specific heat where some step
+ * is transient (capacity, mass). A
  * property a model does not need may be left out: it evaluates to 0 (CalculiX's mechanical decks give none). */
 static PetscErrorCode CheckMaterial(TslModel *m, const TslMaterial *mat, const TslSection *sec, PetscBool heat, PetscBool transient)
 {
-  char where[PETSC_MAX_PATH_LEN];
+  char      where[PETSC_MAX_PATH_LEN];
+  PetscBool mech = (PetscBool)!(m->nstep && m->steps[0].heat); /* a heat-transfer model has no stress (DeckHeatTransferModel) */
 
   PetscFunctionBeginUser;
   (void)TslLocString(m, sec->loc, where, sizeof(where));
-  CHECK(mat->prop[TSL_PROP_ELASTIC].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *ELASTIC", mat->name, where);
+  CHECK(!mech || mat->prop[TSL_PROP_ELASTIC].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *ELASTIC", mat->name, where);
   CHECK(!heat || mat->prop[TSL_PROP_CONDUCTIVITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *CONDUCTIVITY", mat->name,
         where);
   CHECK(!transient || mat->prop[TSL_PROP_DENSITY].n, mat->loc, "material %s (used by the *SOLID SECTION at %s) has no *DENSITY", mat->name, where);
@@ -567,7 +569,8 @@ static PetscErrorCode CheckSteps(TslModel *m)
   }
   for (PetscInt i = 0; i < m->nstep; i++) {
     const TslStep *s = &m->steps[i];
-    CHECK(s->coupled, s->loc, "step %s has no procedure (*COUPLED TEMPERATURE-DISPLACEMENT, *STATIC or *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT)",
+    CHECK(s->coupled, s->loc,
+          "step %s has no procedure (*COUPLED TEMPERATURE-DISPLACEMENT, *STATIC, *HEAT TRANSFER or *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT)",
           s->name);
     PetscCall(CheckExplicitStep(m, s));
     for (PetscInt k = 0; k < s->nload; k++) {
@@ -577,6 +580,8 @@ static PetscErrorCode CheckSteps(TslModel *m)
             "%s in a *STATIC step: a static step holds the temperatures (no heat transfer); thermal loads need *COUPLED TEMPERATURE-DISPLACEMENT "
             "(step %s)",
             kw[l->kind] ? kw[l->kind] : "", s->name);
+      CHECK(!s->heat || l->kind != TSL_LOAD_DLOAD || (!l->target.set[0] && l->target.id < 0), l->loc,
+            "*DLOAD in the *HEAT TRANSFER step %s: a heat-transfer model has no displacement for a pressure or body force to act on", s->name);
       CHECK(s->statik || !l->temperature, l->loc,
             "*TEMPERATURE in step %s: the temperature is an unknown of a coupled step; prescribe it with *BOUNDARY on dof 11 (*TEMPERATURE is for "
             "*STATIC steps)",

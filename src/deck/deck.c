@@ -94,8 +94,11 @@ typedef struct {
   PetscBool pore;      /* a pore pressure element type was read (its dof 8 is accepted, and not active) */
   PetscBool skip_line; /* set by a load's line function: the line is read and left out (a *BOUNDARY on dof 8) */
   PetscBool          node_normal_warned; /* the warning that *NODE normal directions are ignored was given */
-  unsigned long long noted_types;        /* the types whose dialect name (C3D8 for C3D8T, ...) was noted, by bit */
+  TslLoc            *type_note;          /* per catalogue row: the first *ELEMENT that reached it by CalculiX's mechanical name
+                                            (C3D8 for C3D8T; line 0: none), noted once the procedures are known (DeckTypeNotes) */
+  PetscBool         *type_mech;          /* per catalogue row: type_note is an *ELEMENT by the mechanical name */
   PetscBool          shell_noted;        /* the note that conventional shells are expanded was given */
+  PetscBool          dof0_noted;         /* the note that dof 0 is read as 11 in heat transfer was given (HeatDofZero) */
 } Deck;
 
 /* A part (*PART ... *END PART), read straight into the model with its ids shifted past those defined before
@@ -971,12 +974,8 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
     char coupled[32];
     PetscCall(PetscSNPrintf(coupled, sizeof(coupled), "%sT", tname));
     type = TslElementTypeFind(coupled);
-    if (type >= 0 && !(type < 64 && (d->noted_types >> type & 1))) /* once per type (the first 64 rows: always beyond) */
-      PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                            LOC_FMT "note: element type %s read as %s (the steps here are coupled temperature-displacement ones; CalculiX "
-                                    "gives its mechanical elements a temperature in such a step)\n",
-                            KLOC(d), tname, TslElementTypeGet(type)->name));
-    if (type >= 0 && type < 64) d->noted_types |= 1ULL << type;
+    if (type >= 0 && !d->type_note) PetscCall(PetscCalloc2(TslElementTypeCount(), &d->type_note, TslElementTypeCount(), &d->type_mech));
+    if (type >= 0 && !d->type_note[type].line) d->type_note[type] = d->kwloc, d->type_mech[type] = PETSC_TRUE;
   }
   USER_CHECK(type >= 0, LOC_FMT "unknown element type %s (docs/elements.md lists the types)", KLOC(d), tname);
   et = TslElementTypeGet(type);
@@ -2138,6 +2137,20 @@ static PetscErrorCode KwEndStep(Deck *d, const DeckKeyword *kw)
 
 /* The implicit procedures' data line: initial increment, step period, minimum and maximum increment (what names
  * the keyword in the message). */
+/* The data line just read: initial increment, step period, minimum, maximum increment. */
+static PetscErrorCode StepIncrementFields(Deck *d, TslStep *s, const char *what)
+{
+  PetscFunctionBeginUser;
+  USER_CHECK(d->nfield <= 4, LOC_FMT "%s data line: initial increment, step period, minimum, maximum increment", DLOC(d), what);
+  PetscCall(FieldRealDefault(d, 0, "the initial increment", 1.0, &s->dt0));
+  PetscCall(FieldRealDefault(d, 1, "the step period", 1.0, &s->period));
+  USER_CHECK(s->dt0 > 0 && s->period > 0, LOC_FMT "the initial increment and the step period must be positive", DLOC(d));
+  PetscCall(FieldRealDefaultZero(d, 2, "the minimum increment", PetscMin(s->dt0, 1e-5 * s->period), &s->dtmin));
+  PetscCall(FieldRealDefaultZero(d, 3, "the maximum increment", s->period, &s->dtmax));
+  USER_CHECK(s->dtmin > 0 && s->dtmin <= s->dtmax, LOC_FMT "need 0 < minimum increment <= maximum increment", DLOC(d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode StepIncrements(Deck *d, TslStep *s, const char *what)
 {
   PetscBool got;
@@ -2146,20 +2159,13 @@ static PetscErrorCode StepIncrements(Deck *d, TslStep *s, const char *what)
   PetscCall(DataLine(d, 0, &got));
   s->dt0 = s->period = 1.0;
   if (got) {
-    USER_CHECK(d->nfield <= 4, LOC_FMT "%s data line: initial increment, step period, minimum, maximum increment", DLOC(d), what);
-    PetscCall(FieldRealDefault(d, 0, "the initial increment", 1.0, &s->dt0));
-    PetscCall(FieldRealDefault(d, 1, "the step period", 1.0, &s->period));
-    USER_CHECK(s->dt0 > 0 && s->period > 0, LOC_FMT "the initial increment and the step period must be positive", DLOC(d));
-    PetscCall(FieldRealDefaultZero(d, 2, "the minimum increment", PetscMin(s->dt0, 1e-5 * s->period), &s->dtmin));
-    PetscCall(FieldRealDefaultZero(d, 3, "the maximum increment", s->period, &s->dtmax));
-    USER_CHECK(s->dtmin > 0 && s->dtmin <= s->dtmax, LOC_FMT "need 0 < minimum increment <= maximum increment", DLOC(d));
+    PetscCall(StepIncrementFields(d, s, what));
   } else {
     s->dtmin = PetscMin(s->dt0, 1e-5 * s->period);
     s->dtmax = s->period;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-
 /* *CONTROLS, PARAMETERS=FIELD[, FIELD=GLOBAL | DISPLACEMENT | TEMPERATURE]: one data line
  *   R_n, C_n, q_0, q_u, R_P, eps, C_eps, R_l
  * (blank fields: the dialect's defaults 0.005, 0.01, 0.01, none, 0.02, 1e-5, 1e-3, 1e-8), for both fields (GLOBAL,
@@ -2327,6 +2333,52 @@ static PetscErrorCode KwStatic(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *HEAT TRANSFER[, STEADY STATE][, DELTMX=][, DIRECT][, END=PERIOD | SS]: heat transfer alone, the temperature the
+ * only unknown (a model of such steps only gets a temperature-only layout: DeckHeatTransferModel). Data line as
+ * *COUPLED's (initial increment, period, minimum, maximum increment) and, with END=SS (Abaqus; transient only),
+ * a fifth field: the temperature rate below which the step has reached its steady state and ends before its
+ * period. CalculiX's FREQUENCY and MODAL DYNAMIC are not supported. */
+static PetscErrorCode KwHeatTransfer(Deck *d, const DeckKeyword *kw)
+{
+  TslStep    *s = &d->m->steps[d->step];
+  PetscBool   set, got;
+  char        buf[32];
+  const char *end = ParamUpper(d, "END", buf, sizeof(buf));
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!s->coupled, LOC_FMT "step %s already has a procedure", KLOC(d), s->name);
+  USER_CHECK(!Param(d, "FREQUENCY") && !Param(d, "MODAL DYNAMIC"),
+             LOC_FMT "*HEAT TRANSFER, FREQUENCY and MODAL DYNAMIC (eigenmodes) are not supported: transient or steady state only", KLOC(d));
+  USER_CHECK(!end || !strcmp(end, "PERIOD") || !strcmp(end, "SS"), LOC_FMT "*HEAT TRANSFER, END=%s: END is PERIOD or SS", KLOC(d), end);
+  s->coupled  = PETSC_TRUE;
+  s->heat     = PETSC_TRUE;
+  s->heat_loc = d->kwloc;
+  s->steady  = Param(d, "STEADY STATE") ? PETSC_TRUE : PETSC_FALSE;
+  s->direct  = Param(d, "DIRECT") ? PETSC_TRUE : PETSC_FALSE;
+  USER_CHECK(!(end && !strcmp(end, "SS") && s->steady), LOC_FMT "*HEAT TRANSFER: END=SS ends a transient step; STEADY STATE has no rate to watch",
+             KLOC(d));
+  PetscCall(ParamReal(d, "DELTMX", &s->deltmx, &set));
+  USER_CHECK(!set || s->deltmx >= 0, LOC_FMT "DELTMX must not be negative", KLOC(d));
+  if (!s->amp_given) s->amp_default = s->steady ? TSL_AMP_RAMP : TSL_AMP_STEP;
+  if (!end || strcmp(end, "SS")) {
+    PetscCall(StepIncrements(d, s, "*HEAT TRANSFER"));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  /* END=SS: the four fields of StepIncrements and the rate; the line is read here, StepIncrements reads none */
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(got, LOC_FMT "*HEAT TRANSFER, END=SS needs a data line with the steady-state temperature rate in its fifth field", KLOC(d));
+  USER_CHECK(d->nfield == 5,
+             LOC_FMT "*HEAT TRANSFER, END=SS data line: initial increment, step period, minimum, maximum increment, steady-state temperature rate",
+             DLOC(d));
+  d->nfield = 4; /* the increments' fields alone, then the rate */
+  PetscCall(StepIncrementFields(d, s, "*HEAT TRANSFER"));
+  d->nfield = 5;
+  PetscCall(FieldReal(d, 4, "the steady-state temperature rate", &s->end_ss_rate));
+  USER_CHECK(s->end_ss_rate > 0, LOC_FMT "the steady-state temperature rate of END=SS must be positive (got %g)", DLOC(d), (double)s->end_ss_rate);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* *DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT (Abaqus/Explicit): data line "[increment], time period". The
  * increment is the stable one (element by element, times SCALE FACTOR) unless DIRECT USER CONTROL fixes it
  * to the first field. Only the explicit form exists here. */
@@ -2426,6 +2478,20 @@ static PetscErrorCode CheckDof(Deck *d, PetscInt dof)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* CalculiX's heat-transfer decks name the temperature dof 0 (its own internal number) in *BOUNDARY and *CFLUX: inside
+ * a *HEAT TRANSFER step it is read as 11, and told once. */
+static PetscErrorCode HeatDofZero(Deck *d, PetscInt *dof)
+{
+  PetscFunctionBeginUser;
+  if (*dof != 0 || d->step < 0 || !d->m->steps[d->step].heat) PetscFunctionReturn(PETSC_SUCCESS);
+  *dof = 11;
+  if (!d->dof0_noted)
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "note: degree of freedom 0 read as 11, the temperature (CalculiX's heat-transfer numbering)\n",
+                          DLOC(d)));
+  d->dof0_noted = PETSC_TRUE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode LineBoundary(Deck *d, TslLoad *l)
 {
   const char *f;
@@ -2453,8 +2519,10 @@ static PetscErrorCode LineBoundary(Deck *d, TslLoad *l)
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(FieldInt(d, 1, "the first dof", &l->dof_first));
+  PetscCall(HeatDofZero(d, &l->dof_first));
   l->dof_last = l->dof_first;
   if (d->nfield > 2 && d->field[2][0]) PetscCall(FieldInt(d, 2, "the last dof", &l->dof_last));
+  PetscCall(HeatDofZero(d, &l->dof_last));
   PetscCall(FieldRealDefault(d, 3, "the prescribed value", 0.0, &l->value));
   if (l->dof_first == 8 && l->dof_last == 8 && (d->pore || !d->m->nelem)) {
     /* the pore pressure of CPE4PT, ...: not active in the procedures thermoslide runs (docs/elements.md) */
@@ -2492,6 +2560,7 @@ static PetscErrorCode LineConcentrated(Deck *d, TslLoad *l)
   PetscFunctionBeginUser;
   USER_CHECK(d->nfield == 3, LOC_FMT "data line needs: node or node set, dof, magnitude", DLOC(d));
   PetscCall(FieldInt(d, 1, "the dof", &l->dof_first));
+  if (l->kind == TSL_LOAD_CFLUX) PetscCall(HeatDofZero(d, &l->dof_first));
   l->dof_last = l->dof_first;
   if (l->kind == TSL_LOAD_CFLUX)
     USER_CHECK(l->dof_first == 11, LOC_FMT "bad degree of freedom %" PetscInt_FMT " for *CFLUX (must be 11)", DLOC(d), l->dof_first);
@@ -3323,6 +3392,7 @@ static const DeckKeyword Keywords[] = {
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},
     {"COUPLED TEMPERATURE-DISPLACEMENT", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT", KwCoupled, 0, NULL},
     {"STATIC", AT_STEP, IN_NONE, "DIRECT|RIKS", KwStatic, 0, NULL},
+    {"HEAT TRANSFER", AT_STEP, IN_NONE, "STEADY STATE|DELTMX|DIRECT|END|FREQUENCY|MODAL DYNAMIC", KwHeatTransfer, 0, NULL},
     {"TEMPERATURE", AT_STEP, IN_NONE, "AMPLITUDE|OP|FILE|BSTEP|BINC|ESTEP|EINC|INTERPOLATE", KwTemperature, TSL_LOAD_BOUNDARY, LineTemperature},
     {"SOILS", AT_STEP, IN_NONE, NULL, KwSoils, 0, NULL},
     {"PERMEABILITY", AT_MODEL, IN_MATERIAL, NULL, KwIgnored, IGNORED_PORE_FLUID, NULL},
@@ -3550,9 +3620,78 @@ static PetscErrorCode DeckCheckDuplicateNodes(Deck *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A model whose steps are all *HEAT TRANSFER has the temperature alone: every element becomes the heat-transfer type
+ * of its interpolation and measure (TslElementTypeHeatCounterpart: C3D8T, CalculiX's C3D8 and Abaqus's DC3D8 alike),
+ * so that the layout has one unknown per node. *HEAT TRANSFER steps are not mixed with mechanical ones (the coupled
+ * types' displacements would have to be held through them; Abaqus refuses its DC types in stress steps); a DC type
+ * in a model with other steps is an error at its element. */
+static PetscErrorCode DeckHeatTransferModel(Deck *d)
+{
+  TslModel *m     = d->m;
+  PetscInt  nheat = 0, other = -1, heat = -1;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < m->nstep; i++) {
+    if (m->steps[i].heat) nheat++, heat = heat < 0 ? i : heat;
+    else if (m->steps[i].coupled && other < 0) other = i;
+  }
+  if (nheat && other >= 0) {
+    const TslStep *h = &m->steps[heat], *o = &m->steps[other];
+    USER_ERR(LOC_FMT "step %s: *HEAT TRANSFER steps cannot be mixed with the mechanical step %s at %s:%" PetscInt_FMT
+                     " (a heat-transfer model has the temperature alone; run the heat transfer as *COUPLED TEMPERATURE-DISPLACEMENT)",
+             TSL_LOC_ARGS(m, h->heat_loc), h->name, o->name, TSL_LOC_ARGS(m, o->loc));
+  }
+  for (PetscInt e = 0; e < m->nelem; e++) {
+    const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
+    const TslLoc          l = {m->elem_line[2 * e], m->elem_line[2 * e + 1]};
+    PetscInt              h;
+    if (!nheat) {
+      USER_CHECK(!TslElementTypeHeatOnly(t) || other < 0,
+                 LOC_FMT "element %" PetscInt_FMT " is of the heat-transfer type %s, which runs in *HEAT TRANSFER steps only: step %s at %s:%" PetscInt_FMT
+                         " is a mechanical one (mechanical steps take the coupled temperature-displacement types: CPE4T, C3D8T, ...)",
+                 TSL_LOC_ARGS(m, l), m->elem_id[e], t->name, other >= 0 ? m->steps[other].name : "", TSL_LOC_ARGS(m, m->steps[PetscMax(other, 0)].loc));
+      continue;
+    }
+    if (TslElementTypeHeatOnly(t)) continue;
+    h = TslElementTypeHeatCounterpart(t);
+    USER_CHECK(h >= 0,
+               LOC_FMT "element %" PetscInt_FMT " of type %s (%s) has no heat-transfer counterpart, and every step is *HEAT TRANSFER (docs/elements.md, "
+                       "\"Heat transfer\")",
+               TSL_LOC_ARGS(m, l), m->elem_id[e], t->name, TslElementTypeKinematicsName(t));
+    if (!d->type_note) PetscCall(PetscCalloc2(TslElementTypeCount(), &d->type_note, TslElementTypeCount(), &d->type_mech));
+    if (!d->type_note[m->elem_type[e]].line) d->type_note[m->elem_type[e]] = l;
+    m->elem_type[e] = h;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The types read under another name, noted once each: CalculiX's mechanical names read as the coupled types in
+ * coupled steps, and any type read as its heat-transfer counterpart in a heat-transfer model. */
+static PetscErrorCode DeckTypeNotes(Deck *d)
+{
+  PetscBool heat = d->m->nstep && d->m->steps[0].heat;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; d->type_note && i < TslElementTypeCount(); i++) {
+    const TslElementType *t = TslElementTypeGet(i);
+    const int             n = (int)strlen(t->name) - (d->type_mech[i] ? 1 : 0); /* the name the deck gave */
+    if (!d->type_note[i].line) continue;
+    if (heat)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "note: element type %.*s read as %s (every step is *HEAT TRANSFER: the temperature alone)\n",
+                            TSL_LOC_ARGS(d->m, d->type_note[i]), n, t->name, TslElementTypeGet(TslElementTypeHeatCounterpart(t))->name));
+    else
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            LOC_FMT "note: element type %.*s read as %s (the steps here are coupled temperature-displacement ones; CalculiX "
+                                    "gives its mechanical elements a temperature in such a step)\n",
+                            TSL_LOC_ARGS(d->m, d->type_note[i]), n, t->name, t->name));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode DeckFree(Deck *d)
 {
   PetscFunctionBeginUser;
+  PetscCall(PetscFree2(d->type_note, d->type_mech));
   for (PetscInt i = 0; i < d->ntext; i++) PetscCall(PetscFree(d->texts[i]));
   PetscCall(PetscFree(d->texts));
   PetscCall(PetscFree(d->buf));
@@ -3588,6 +3727,8 @@ PetscErrorCode TslDeckRead(const char *path, TslModel **model)
   if (!ierr) ierr = DeckModelLoads(&d);
   if (!ierr) ierr = DeckCheckDuplicateNodes(&d);
   if (!ierr) ierr = TslDeckExpandShells(d.m);
+  if (!ierr) ierr = DeckHeatTransferModel(&d);
+  if (!ierr) ierr = DeckTypeNotes(&d);
   if (!ierr) ierr = TslModelCheck(d.m);
   PetscCall(DeckFree(&d));
   if (ierr) PetscCall(TslModelDestroy(&d.m));

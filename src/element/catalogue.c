@@ -23,6 +23,11 @@
 /* Plane strain with a pore pressure (dof 8) that the coupled temperature-displacement procedure does not
  * activate: the unknowns are plane strain's, the element its solid counterpart (docs/elements.md). */
 #define PORE_PLANE   TSL_KIN_PLANE_STRAIN, 2, 3, {1, 2, 11}, 0, {0}, PETSC_TRUE
+/* Heat transfer (the DC types): the temperature alone, on the measure of the plane (thickness), axisymmetric
+ * (2 pi r) or solid kinematics; no displacement slot, so the kernels have no mechanical term to form. */
+#define HEAT_PLANE   TSL_KIN_PLANE_STRAIN, 2, 1, {11}, 0, {0}, PETSC_FALSE
+#define HEAT_AXI     TSL_KIN_AXISYMMETRIC, 2, 1, {11}, 0, {0}, PETSC_FALSE
+#define HEAT_SOLID   TSL_KIN_SOLID3D, 3, 1, {11}, 0, {0}, PETSC_FALSE
 
 static const TslElementType Catalogue[] = {
     {"CPE3T",   &TslGeomTri3,   &TslFormFull,           PLANE_STRAIN, "3-node plane strain"},
@@ -87,6 +92,20 @@ static const TslElementType Catalogue[] = {
     {"S8RT",    &TslGeomHex20,  &TslFormReducedQuadraticShell, SOLID, "8-node shell expanded: a 20-node brick through half its thickness, reduced integration, pressure on linear sub-faces"},
     {"SC6RT",   &TslGeomWedge6, &TslFormContinuumShell, CSHELL,       "6-node triangular in-plane continuum shell, reduced integration"},
     {"SC8RT",   &TslGeomHex8,   &TslFormContinuumShell, CSHELL,       "8-node hexahedral continuum shell, reduced integration, hourglass control"},
+    {"DC2D3",   &TslGeomTri3,   &TslFormFull,           HEAT_PLANE,   "3-node plane heat transfer"},
+    {"DC2D4",   &TslGeomQuad4,  &TslFormFull,           HEAT_PLANE,   "4-node plane heat transfer"},
+    {"DC2D6",   &TslGeomTri6,   &TslFormFull,           HEAT_PLANE,   "6-node plane heat transfer"},
+    {"DC2D8",   &TslGeomQuad8,  &TslFormFull,           HEAT_PLANE,   "8-node plane heat transfer"},
+    {"DCAX3",   &TslGeomTri3,   &TslFormFull,           HEAT_AXI,     "3-node axisymmetric heat transfer"},
+    {"DCAX4",   &TslGeomQuad4,  &TslFormFull,           HEAT_AXI,     "4-node axisymmetric heat transfer"},
+    {"DCAX6",   &TslGeomTri6,   &TslFormFull,           HEAT_AXI,     "6-node axisymmetric heat transfer"},
+    {"DCAX8",   &TslGeomQuad8,  &TslFormFull,           HEAT_AXI,     "8-node axisymmetric heat transfer"},
+    {"DC3D4",   &TslGeomTet4,   &TslFormFull,           HEAT_SOLID,   "4-node tetrahedral heat transfer"},
+    {"DC3D6",   &TslGeomWedge6, &TslFormFull,           HEAT_SOLID,   "6-node triangular prism heat transfer"},
+    {"DC3D8",   &TslGeomHex8,   &TslFormFull,           HEAT_SOLID,   "8-node brick heat transfer"},
+    {"DC3D10",  &TslGeomTet10,  &TslFormFull,           HEAT_SOLID,   "10-node tetrahedral heat transfer"},
+    {"DC3D15",  &TslGeomWedge15, &TslFormFull,          HEAT_SOLID,   "15-node triangular prism heat transfer"},
+    {"DC3D20",  &TslGeomHex20,  &TslFormFull,           HEAT_SOLID,   "20-node brick heat transfer"},
 };
 // clang-format on
 
@@ -102,6 +121,21 @@ PetscBool TslElementTypeMechanicalOnly(const TslElementType *t)
   for (size_t i = 0; i < sizeof(MechanicalOnly) / sizeof(MechanicalOnly[0]); i++)
     if (!strcmp(t->name, MechanicalOnly[i])) return PETSC_TRUE;
   return PETSC_FALSE;
+}
+
+/* The heat-transfer row of a type's interpolation and measure: a DC row is its own; a coupled or mechanical-name row
+ * (C3D8T, C3D8RT, CPS4T, ...) maps to the DC row on its geometry family with its measure (revolved or not), its
+ * reduced integration, hybrid pressure and hourglass control being mechanical alone. -1 where none exists (the
+ * extra nodes of generalized plane strain; the continuum shells, whose *SHELL SECTION a solid row does not take). */
+PetscInt TslElementTypeHeatCounterpart(const TslElementType *t)
+{
+  if (t->nextra || TslKinematicsRowGet(t->kin)->shell) return -1;
+  for (PetscInt i = 0; i < TslElementTypeCount(); i++) {
+    const TslElementType *c = &Catalogue[i];
+    if (TslElementTypeHeatOnly(c) && c->geom == t->geom && c->dim == t->dim && TslKinematicsRevolves(c->kin) == TslKinematicsRevolves(t->kin))
+      return i;
+  }
+  return -1;
 }
 
 PetscInt TslElementTypeCount(void)

@@ -374,10 +374,12 @@ static const FastRow Rows[] = {
     {&TslGeomWedge6, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Wedge6Shell, PETSC_FALSE}, /* xi eta, xi eta zeta vanish: zero vectors */
 };
 
+/* The record row of a coupled type (a heat-transfer type has none: its records would be the conduction alone,
+ * which the generic kernel forms at no mechanical cost). */
 static PetscInt RowOf(const TslElementType *t)
 {
   for (PetscInt r = 0; r < (PetscInt)(sizeof(Rows) / sizeof(Rows[0])); r++)
-    if (Rows[r].geom == t->geom && Rows[r].form == t->form && Rows[r].kin == t->kin && t->nextra == 0 &&
+    if (Rows[r].geom == t->geom && Rows[r].form == t->form && Rows[r].kin == t->kin && t->nextra == 0 && !TslElementTypeHeatOnly(t) &&
         t->form->quadrature(t->geom, NULL)->n == Rows[r].nq) /* the row's compile-time point count is the rule's */
       return r;
   return -1;

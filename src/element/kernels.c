@@ -636,6 +636,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   MechPoint             mq;
   PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 
+  if (nu == 0) return PETSC_TRUE; /* a heat-transfer type: no displacement, no mechanical term */
   if (in->pstate) return MechanicsPlastic(in, full, R, K, res, NULL);
   if (t->form->incompatible) return MechanicsIncompatible(in, full, R, K, res, energy);
   if (K && !se && !hybrid && LeanStrain(in)) return MechanicsSolid3DTangent(in, full, R, K);

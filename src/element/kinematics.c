@@ -125,6 +125,7 @@ PetscInt TslElementTypeRigidModes(const TslElementType *t, const PetscReal x[3],
 {
   for (PetscInt m = 0; m < 6; m++)
     for (PetscInt c = 0; c < 3; c++) modes[m][c] = 0;
+  if (TslElementTypeHeatOnly(t)) return 0; /* no displacement, no rigid motion */
   return KinematicsTable[t->kin].rigid_modes(x, modes);
 }
 

@@ -213,9 +213,23 @@ static PetscBool InsertDirect(TslProblem p, PetscInt n, const PetscInt ld[], con
 PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[],
                                 const PetscReal K[])
 {
-  PetscInt bidx[TSL_MAX_ELEM_NODES + 1];
+  PetscInt bidx[TSL_MAX_ELEM_NODES + 1], m = 0;
 
   PetscFunctionBeginUser;
+  for (PetscInt r = 0; r < n; r++) m += ld[r] >= 0;
+  if (m < n) { /* leave out the slots the model does not have (TslProblemSlotDof) */
+    PetscInt  keep[TSL_MAX_ELEM_DOF], ld2[TSL_MAX_ELEM_DOF];
+    PetscReal R2[TSL_MAX_ELEM_DOF], K2[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF];
+    PetscCheck(n <= TSL_MAX_ELEM_DOF, PETSC_COMM_SELF, PETSC_ERR_PLIB, "too many element rows");
+    for (PetscInt r = 0, k = 0; r < n; r++)
+      if (ld[r] >= 0) keep[k] = r, ld2[k++] = ld[r];
+    for (PetscInt i = 0; i < m; i++) {
+      if (R) R2[i] = R[keep[i]];
+      for (PetscInt j = 0; K && j < m; j++) K2[i * m + j] = K[keep[i] * n + keep[j]];
+    }
+    PetscCall(TslProblemInsert(p, mode, A, f, m, ld2, R ? R2 : NULL, K ? K2 : NULL));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   if (mode == ASM_JACOBIAN && K && InsertDirect(p, n, ld, K)) PetscFunctionReturn(PETSC_SUCCESS);
   if (((mode == ASM_JACOBIAN && K) || mode == ASM_PATTERN) && FreeNodeBlocks(p, n, ld, TSL_MAX_ELEM_NODES + 1, bidx)) {
     if (mode == ASM_PATTERN) PetscCall(MatAdd(p, mode, A, n, ld, n, ld, NULL)); /* every node pair once */

@@ -52,7 +52,7 @@ static PetscInt ElementNodes(TslProblem p, const TslContactNode *cn, PetscInt no
 static void NodeData(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal x[2], PetscReal u[])
 {
   for (PetscInt c = 0; c < 2; c++) x[c] = p->m->node_xyz[3 * l + c];
-  for (PetscInt c = 0; c < cs->nu; c++) u[c] = xa ? PetscRealPart(xa[l * p->ndof + cs->slot[c]]) : 0;
+  for (PetscInt c = 0; c < cs->nu; c++) u[c] = TslProblemSlotValue(p, xa, l, cs->slot[c]);
 }
 
 static void CurrentPosition(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal y[2])
@@ -142,7 +142,7 @@ PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const Petsc
     if (cs->dim == 3) PetscCall(TslProblemContact3Input(p, cn, xa, &in3, nodes, &n));
     else ElementInput(p, cn, xa, &in, nodes, &n, &nb);
     for (PetscInt a = 0; a < n; a++)
-      for (PetscInt c = 0; c < nu; c++) ld[nu * a + c] = nodes[a] * p->ndof + cs->slot[c];
+      for (PetscInt c = 0; c < nu; c++) ld[nu * a + c] = TslProblemSlotDof(p, nodes[a], cs->slot[c]);
     if (mode == ASM_PATTERN) {
       PetscCall(TslProblemInsert(p, mode, A, f, nu * n, ld, NULL, NULL));
       continue;
@@ -330,7 +330,7 @@ static PetscErrorCode CheckHeldRegion(TslProblem p, const PetscScalar *xa)
     const TslContactSurface *cs   = &p->csurf[k];
     for (PetscInt i = 0; i < pair->nmain_own; i++) {
       const PetscInt l = TslModelNodeIndex(m, pair->main_own[i]);
-      for (PetscInt d = 0; l >= 0 && d < dim; d++) D[3 * k + d] = PetscMax(D[3 * k + d], PetscAbsReal(PetscRealPart(xa[l * p->ndof + cs->slot[d]])));
+      for (PetscInt d = 0; l >= 0 && d < dim; d++) D[3 * k + d] = PetscMax(D[3 * k + d], PetscAbsReal(TslProblemSlotValue(p, xa, l, cs->slot[d])));
     }
   }
   PetscCall(MPIU_Allreduce(D, Dg, (PetscMPIInt)(3 * p->ncsurf), MPIU_REAL, MPIU_MAX, p->comm));
@@ -352,7 +352,7 @@ static PetscErrorCode CheckHeldRegion(TslProblem p, const PetscScalar *xa)
       const TslContactNode *cn = &p->cnode[i];
       if (cn->pair != k) continue;
       for (PetscInt d = 0; d < dim; d++) {
-        const PetscReal y = m->node_xyz[3 * cn->lnode + d] + PetscRealPart(xa[cn->lnode * p->ndof + cs->slot[d]]);
+        const PetscReal y = m->node_xyz[3 * cn->lnode + d] + TslProblemSlotValue(p, xa, cn->lnode, cs->slot[d]);
         const PetscReal e = PetscMax(lo[d] - (y - cs->search_radius), (y + cs->search_radius) - hi[d]);
         if (e > worst[0]) worst[0] = e, wpair = k, wnode = m->node_id[cn->lnode];
       }
@@ -904,11 +904,13 @@ PetscErrorCode TslProblemContactSetUp(TslProblem p)
       /* 3D kernels see (u_x, u_y, u_z, theta); smoothing by the nodal normals, first of the reference state */
       cs->slot[2] = TslProblemDofSlot(p, 3);
       cs->slot[3] = TslProblemDofSlot(p, 11);
-      PetscCheck(cs->slot[2] >= 0 && cs->slot[3] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB, "3D contact needs the displacements 1..3 and the temperature 11");
+      PetscCheck((cs->slot[2] >= 0 || p->nu == 0) && cs->slot[3] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+                 "3D contact needs the displacements 1..3 and the temperature 11");
       PetscCall(PetscCalloc1(3 * p->nn, &cs->nnormal));
       PetscCall(TslProblemContact3Normals(p, cs, NULL));
     }
-    PetscCheck(cs->slot[0] >= 0 && cs->slot[1] >= 0 && cs->slot[2] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
+    /* a heat-transfer model has no displacement: the kernels see it as zero, the deck's geometry (TslProblemSlotValue) */
+    PetscCheck(((cs->slot[0] >= 0 && cs->slot[1] >= 0) || p->nu == 0) && cs->slot[cs->dim == 3 ? 3 : 2] >= 0, PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "contact needs the displacements 1, 2 and the temperature 11 among the nodal unknowns");
     PetscCheck(cs->dim == 3 || (cs->nu == 4) == (cs->slot[3] >= 0), PETSC_COMM_SELF, PETSC_ERR_PLIB,
                "contact pair %" PetscInt_FMT ": the twist dof 5 is %s the nodal unknowns but the pair's kinematics is %s", k + 1,

@@ -17,7 +17,7 @@ static PetscInt FaceNodes(const TslContactSurface *cs, PetscInt f)
 static void NodeData(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal x[3], PetscReal u[4])
 {
   for (PetscInt c = 0; c < 3; c++) x[c] = p->m->node_xyz[3 * l + c];
-  for (PetscInt c = 0; c < 4; c++) u[c] = xa ? PetscRealPart(xa[l * p->ndof + cs->slot[c]]) : 0;
+  for (PetscInt c = 0; c < 4; c++) u[c] = TslProblemSlotValue(p, xa, l, cs->slot[c]);
 }
 
 /* Current coordinates x[3*a + d] of the nodes of main face f. */

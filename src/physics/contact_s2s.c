@@ -171,7 +171,7 @@ PetscErrorCode TslProblemContactS2SAssemble(TslProblem p, AsmMode mode, const Pe
         PetscCall(TslS2S3PointInput(p, fc, pt, xa, &cache, &in3, nodes, &n));
       else PetscCall(PointInput(p, fc, pt, xa, &in, nodes, &n, &nb));
       for (PetscInt a = 0; a < n; a++)
-        for (PetscInt c = 0; c < nu; c++) ld[nu * a + c] = nodes[a] * p->ndof + cs->slot[c];
+        for (PetscInt c = 0; c < nu; c++) ld[nu * a + c] = TslProblemSlotDof(p, nodes[a], cs->slot[c]);
       if (mode == ASM_PATTERN) { /* a face pair's node pairs once, when its block is flushed */
         PetscCall(BlockFor(p, mode, A, f, nu * n, ld, &block));
         continue;

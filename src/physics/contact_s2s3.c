@@ -28,7 +28,7 @@ static TslContactOverlapPoint Overlap[TSL_CONTACT_OVERLAP_MAX_POINTS];
 static void NodeData(TslProblem p, const TslContactSurface *cs, const PetscScalar *xa, PetscInt l, PetscReal X[3], PetscReal U[4])
 {
   for (PetscInt d = 0; d < 3; d++) X[d] = p->m->node_xyz[3 * l + d];
-  for (PetscInt c = 0; c < TSL_CONTACT3_NU; c++) U[c] = xa ? PetscRealPart(xa[l * p->ndof + cs->slot[c]]) : 0;
+  for (PetscInt c = 0; c < TSL_CONTACT3_NU; c++) U[c] = TslProblemSlotValue(p, xa, l, cs->slot[c]);
 }
 
 PetscErrorCode TslS2S3FaceData(TslProblem p, const S2SFace *fc, const PetscScalar *xa, PetscReal X[], PetscReal U[])

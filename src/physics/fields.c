@@ -97,21 +97,27 @@ typedef struct {
   const char  *name;
   TslFieldKind kind;
   PetscInt     deflt; /* written without an *OUTPUT request: 0 no, 1 yes, 2 when the model has contact, 3 when it has plasticity */
+  PetscBool    mech;  /* a field of the displacement: none in a heat-transfer model (TslProblemFieldAvailable) */
   PetscInt     ncomp, which;
   PetscErrorCode (*eval)(TslProblem, PetscInt which, PetscInt ncomp, PetscReal vals[]);
 } FieldRow;
 
 static const FieldRow Fields[] = {
-    {"U", TSL_FIELD_NODE, 1, 3, 0, NodeSolution},         {"NT", TSL_FIELD_NODE, 1, 1, 1, NodeSolution},
-    {"RF", TSL_FIELD_NODE, 1, 3, 0, NodeReaction},        {"RFL", TSL_FIELD_NODE, 1, 1, 1, NodeReaction},
-    {"CPRESS", TSL_FIELD_NODE, 2, 1, TSL_CONTACT_FIELD_PRESSURE, NodeContact},
-    {"CSLIP", TSL_FIELD_NODE, 2, 1, TSL_CONTACT_FIELD_SLIP, NodeContact},
-    {"CSTATUS", TSL_FIELD_NODE, 2, 1, TSL_CONTACT_FIELD_STATUS, NodeContact},
-    {"HFLA", TSL_FIELD_NODE, 2, 1, TSL_CONTACT_FIELD_HEAT_FLUX, NodeContact},
-    {"S", TSL_FIELD_ELEMENT, 1, 6, 0, ElementValues},     {"E", TSL_FIELD_ELEMENT, 1, 6, 1, ElementValues},
-    {"HFL", TSL_FIELD_ELEMENT, 1, 3, 2, ElementValues},   {"ELSE", TSL_FIELD_ELEMENT, 0, 1, 3, ElementValues},
-    {"ELASE", TSL_FIELD_ELEMENT, 0, 1, 4, ElementValues},
-    {"PE", TSL_FIELD_ELEMENT, 3, 6, 5, ElementValues},    {"PEEQ", TSL_FIELD_ELEMENT, 3, 1, 6, ElementValues},
+    {"U", TSL_FIELD_NODE, 1, PETSC_TRUE, 3, 0, NodeSolution},
+    {"NT", TSL_FIELD_NODE, 1, PETSC_FALSE, 1, 1, NodeSolution},
+    {"RF", TSL_FIELD_NODE, 1, PETSC_TRUE, 3, 0, NodeReaction},
+    {"RFL", TSL_FIELD_NODE, 1, PETSC_FALSE, 1, 1, NodeReaction},
+    {"CPRESS", TSL_FIELD_NODE, 2, PETSC_TRUE, 1, TSL_CONTACT_FIELD_PRESSURE, NodeContact},
+    {"CSLIP", TSL_FIELD_NODE, 2, PETSC_TRUE, 1, TSL_CONTACT_FIELD_SLIP, NodeContact},
+    {"CSTATUS", TSL_FIELD_NODE, 2, PETSC_TRUE, 1, TSL_CONTACT_FIELD_STATUS, NodeContact},
+    {"HFLA", TSL_FIELD_NODE, 2, PETSC_FALSE, 1, TSL_CONTACT_FIELD_HEAT_FLUX, NodeContact},
+    {"S", TSL_FIELD_ELEMENT, 1, PETSC_TRUE, 6, 0, ElementValues},
+    {"E", TSL_FIELD_ELEMENT, 1, PETSC_TRUE, 6, 1, ElementValues},
+    {"HFL", TSL_FIELD_ELEMENT, 1, PETSC_FALSE, 3, 2, ElementValues},
+    {"ELSE", TSL_FIELD_ELEMENT, 0, PETSC_TRUE, 1, 3, ElementValues},
+    {"ELASE", TSL_FIELD_ELEMENT, 0, PETSC_TRUE, 1, 4, ElementValues},
+    {"PE", TSL_FIELD_ELEMENT, 3, PETSC_TRUE, 6, 5, ElementValues},
+    {"PEEQ", TSL_FIELD_ELEMENT, 3, PETSC_TRUE, 1, 6, ElementValues},
 };
 
 PetscInt TslFieldCount(void)
@@ -131,6 +137,11 @@ const char *TslFieldName(PetscInt i, TslFieldKind *kind, PetscInt *deflt)
   if (kind) *kind = Fields[i].kind;
   if (deflt) *deflt = Fields[i].deflt;
   return Fields[i].name;
+}
+
+PetscBool TslProblemFieldAvailable(TslProblem p, PetscInt i)
+{
+  return (PetscBool)(i >= 0 && i < TslFieldCount() && (!Fields[i].mech || p->nu > 0));
 }
 
 PetscErrorCode TslProblemField(TslProblem p, PetscInt i, PetscInt *ncomp, PetscReal **vals)

@@ -40,7 +40,7 @@ static PetscErrorCode SetUpLayout(TslProblem p)
     for (PetscInt i = 0; i < t->ndof; i++) mine[1 + i] = t->node_dof[i], mine[1 + TSL_MAX_NODE_DOF + i] = t->extra_dof[i];
   }
   PetscCall(MPIU_Allreduce(mine, all, 1 + 2 * TSL_MAX_NODE_DOF, MPIU_INT, MPI_MAX, p->comm));
-  PetscCheck(all[0] > 1, p->comm, PETSC_ERR_USER_INPUT, "the model has no elements");
+  PetscCheck(all[0] > 0, p->comm, PETSC_ERR_USER_INPUT, "the model has no elements");
   p->ndof = all[0];
   p->nu   = p->ndof - 1;
   for (PetscInt i = 0; i < p->ndof; i++) p->node_dof[i] = all[1 + i], p->extra_dof[i] = all[1 + TSL_MAX_NODE_DOF + i];
@@ -157,7 +157,7 @@ static PetscErrorCode SetUpNearNullSpace(TslProblem p)
   }
   PetscCall(MPIU_Allreduce(&nm, &nmg, 1, MPIU_INT, MPI_MAX, p->comm)); /* a rank without elements has 0 */
   nm = nmg;
-  if (nm < p->nu) PetscFunctionReturn(PETSC_SUCCESS);
+  if (nm < p->nu || p->nu == 0) PetscFunctionReturn(PETSC_SUCCESS); /* none, or no displacement block (heat transfer) */
   for (PetscInt n = 0; n < p->nown; n++) {
     for (PetscInt d = 0; d < 3; d++) c[d] += m->node_xyz[3 * n + d];
     c[3] += 1;
@@ -243,7 +243,7 @@ static PetscErrorCode SetUpVectors(TslProblem p)
   for (PetscInt n = 0; n < p->nown; n++)
     for (PetscInt c = 0; c < p->nu; c++) idx[n * p->nu + c] = p->rstart + n * p->ndof + c;
   PetscCall(ISCreateGeneral(p->comm, p->nown * p->nu, idx, PETSC_OWN_POINTER, &p->is_u));
-  PetscCall(ISSetBlockSize(p->is_u, p->nu));
+  if (p->nu) PetscCall(ISSetBlockSize(p->is_u, p->nu)); /* a heat-transfer model's is_u is empty */
   PetscCall(ISCreateStride(p->comm, p->nown, p->rstart + p->ndof - 1, p->ndof, &p->is_theta));
   PetscCall(SetUpNearNullSpace(p));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -334,13 +334,13 @@ static PetscErrorCode SetUpPlasticState(TslProblem p)
 
   PetscFunctionBeginUser;
   for (PetscInt e = 0; e < p->m->nelem; e++)
-    if (TslMaterialIsPlastic(p->esec[e].mat)) n++;
+    if (TslMaterialIsPlastic(p->esec[e].mat) && TslElementTypeGet(p->m->elem_type[e])->ndof > 1) n++;
   if (!n) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscMalloc1(p->m->nelem, &p->pstate_off));
   n = 0;
   for (PetscInt e = 0; e < p->m->nelem; e++) {
     const TslElementType *t = TslElementTypeGet(p->m->elem_type[e]);
-    p->pstate_off[e]        = TslMaterialIsPlastic(p->esec[e].mat) ? n : -1;
+    p->pstate_off[e]        = TslMaterialIsPlastic(p->esec[e].mat) && t->ndof > 1 ? n : -1; /* a heat-transfer type has no mechanics */
     if (p->pstate_off[e] >= 0) n += TSL_PLASTIC_STATE * TslElementTypeMechanicalPoints(t, &p->esec[e]);
   }
   PetscCall(PetscCalloc1(n, &p->pstate)); /* two blocks, not one: TslProblemCommitState swaps them */

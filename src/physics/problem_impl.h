@@ -291,8 +291,22 @@ static inline void TslAsmHeatAdd(AsmHeat *heat, TslFaceLoadKind kind, PetscReal 
 /* Local form (owned + ghosts) of the current solution, ghosts updated; restore when done. */
 PetscErrorCode TslProblemGetLocalSolution(TslProblem p, Vec *xl, const PetscScalar **xa);
 PetscErrorCode TslProblemRestoreLocalSolution(TslProblem p, Vec *xl, const PetscScalar **xa);
+/* Inserts an element's rows: ld[n] local dofs, R[n], K[n*n] (row-major; either may be NULL as the mode allows). A
+ * negative ld is a slot the model does not have (a contact kernel's displacement in a heat-transfer model): its row
+ * and column are left out. */
 PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *f, PetscInt n, const PetscInt ld[], const PetscReal R[],
                                 const PetscReal K[]);
+/* The value of a node's unknown in slot `slot` of the local vector xa, 0 where the model has no such unknown
+ * (slot < 0: the displacements of a heat-transfer model, which contact takes at the deck's geometry); and its local
+ * dof, -1 there. */
+static inline PetscReal TslProblemSlotValue(TslProblem p, const PetscScalar *xa, PetscInt l, PetscInt slot)
+{
+  return xa && slot >= 0 ? PetscRealPart(xa[l * p->ndof + slot]) : 0;
+}
+static inline PetscInt TslProblemSlotDof(TslProblem p, PetscInt l, PetscInt slot)
+{
+  return slot >= 0 ? l * p->ndof + slot : -1;
+}
 PetscErrorCode TslProblemContactAssemble(TslProblem p, AsmMode mode, const PetscScalar *xa, PetscScalar *f, Mat A, AsmHeat *heat);
 PetscErrorCode TslProblemContactSetUp(TslProblem p);
 /* The contact area A of a secondary node: tributary length x thickness (or x 2 pi r), or the 3D tributary area

@@ -505,9 +505,10 @@ static PetscErrorCode SetUpSolver(Driver *d)
     PetscCall(PetscObjectTypeCompare((PetscObject)pc, PCFIELDSPLIT, &fs));
     if (fs) {
       KSP     *sub;
-      PetscInt n;
+      PetscInt n, nu_global;
+      PetscCall(ISGetSize(is_u, &nu_global));
       PetscCall(PCFieldSplitSetIS(pc, "T", is_theta));
-      PetscCall(PCFieldSplitSetIS(pc, "u", is_u));
+      if (nu_global) PetscCall(PCFieldSplitSetIS(pc, "u", is_u)); /* a heat-transfer model has the temperature alone */
       PetscCall(PCFieldSplitGetSubKSP(pc, &n, &sub));
       for (PetscInt i = 0; i < n; i++) PetscCall(KSPSetFromOptions(sub[i]));
       PetscCall(PetscFree(sub));
@@ -865,9 +866,11 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(TslProblemGetModel(d->prob, &m));
   step = &m->steps[s];
   PetscCall(PetscPrintf(d->comm, "step %" PetscInt_FMT " (%s): %s, period %g, initial increment %g\n", s + 1, step->name[0] ? step->name : "-",
-                        step->statik   ? "static (temperatures held)"
-                        : step->steady ? "steady state"
-                                       : "transient",
+                        step->statik                 ? "static (temperatures held)"
+                        : step->heat && step->steady ? "heat transfer, steady state"
+                        : step->heat                 ? "heat transfer, transient"
+                        : step->steady               ? "steady state"
+                                                     : "transient",
                         (double)step->period, (double)step->dt0));
   PetscCall(TslPhaseBegin(TSL_PHASE_SETUP));
   TslCallCollective(d->comm, TslProblemSetStep(d->prob, s));
@@ -899,7 +902,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     SNESConvergedReason reason;
     PetscInt            its, lits;
     PetscReal           dtheta = 0, h, t_end;
-    PetscBool           accept, last, frame;
+    PetscBool           accept, last, frame, steady;
     const char         *why;
 
     /* the increment ends at the next output time too (*OUTPUT, NUMBER INTERVAL= / TIME INTERVAL=), as Abaqus/Standard cuts it */
@@ -923,9 +926,9 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
                TslStopName(d->stop), (double)(t + h), inc + 1, SavedState(d, t, saved, sizeof(saved)));
     if (s + 1 == d->debug_diverge_step) reason = SNES_DIVERGED_FUNCTION_DOMAIN;
     accept = (PetscBool)(reason > 0);
-    if (accept && !step->steady && step->deltmx > 0) {
+    if (accept && !step->steady && (step->deltmx > 0 || step->end_ss_rate > 0)) {
       PetscCall(TslProblemMaxTemperatureChange(d->prob, &dtheta));
-      if (dtheta > step->deltmx * 1.0001 && !step->direct) accept = PETSC_FALSE;
+      if (step->deltmx > 0 && dtheta > step->deltmx * 1.0001 && !step->direct) accept = PETSC_FALSE;
     }
     if (!accept && reason == SNES_DIVERGED_LINEAR_SOLVE && !d->fell_back) {
       /* the preconditioner, not the increment, failed (quadratic tetrahedra pressed into contact defeat the
@@ -992,7 +995,10 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscCall(FallBackToDirect(d, X, s, inc - 1, why, &switched));
     }
     frame = frames.dt > 0 ? TslFrameTimesReached(&frames, t) : (PetscBool)(inc % d->frequency == 0); /* intervals replace FREQUENCY= */
-    if (last || frame) PetscCall(TslFramesWrite(d, s + 1, inc, *total_time));
+    /* END=SS: the steady state is reached when no free temperature changed faster than the deck's rate over the
+     * increment; the step ends there, its last frame written */
+    steady = (PetscBool)(!last && step->end_ss_rate > 0 && dtheta < step->end_ss_rate * h);
+    if (last || frame || steady) PetscCall(TslFramesWrite(d, s + 1, inc, *total_time));
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
     if (!step->direct) {
       /* the controller grows from the increment it asked for, not from one cut short at a corner. The deck's
@@ -1008,6 +1014,12 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     }
     its_prev = its;
     cutbacks = 0;
+    if (steady) {
+      PetscCall(PetscPrintf(d->comm,
+                            "  step %" PetscInt_FMT ": steady state at step time %g (largest temperature rate %g below END=SS's %g); the step ends\n",
+                            s + 1, (double)t, (double)(dtheta / h), (double)step->end_ss_rate));
+      break;
+    }
   }
   PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
   PetscCall(TslFramesPrintTables(d, step));

@@ -65,7 +65,7 @@ PetscErrorCode TslFramesSetUp(Driver *d, const char *dir, const char *jobname)
   for (PetscInt i = 0; i < TslFieldCount(); i++) {
     PetscInt deflt;
     (void)TslFieldName(i, NULL, &deflt);
-    d->field_on[i] = (PetscBool)(deflt == 1 || (deflt == 2 && m->npair > 0) || (deflt == 3 && plastic));
+    d->field_on[i] = (PetscBool)((deflt == 1 || (deflt == 2 && m->npair > 0) || (deflt == 3 && plastic)) && TslProblemFieldAvailable(d->prob, i));
   }
   d->frequency = 1;
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -87,8 +87,10 @@ PetscErrorCode TslFramesSetRequests(Driver *d, const TslStep *step)
     d->frequency = PetscMax(1, req->frequency);
     for (PetscInt v = 0; v < req->nvar; v++) {
       PetscInt i = TslFieldFind(req->var[v]);
-      if (i >= 0)
+      if (i >= 0 && TslProblemFieldAvailable(d->prob, i))
         d->field_on[i] = PETSC_TRUE;
+      else if (i >= 0)
+        PetscCall(PetscPrintf(d->comm, "note: output variable %s is not written: the model has no displacement (heat transfer only)\n", req->var[v]));
       else
         PetscCall(PetscPrintf(d->comm, "warning: output variable %s is not available; ignored\n", req->var[v]));
     }
@@ -202,6 +204,10 @@ PetscErrorCode TslFramesPrintTables(Driver *d, const TslStep *step)
       PetscReal   *vals;
       TslFieldKind kind = TSL_FIELD_NODE;
       if (f >= 0) (void)TslFieldName(f, &kind, NULL);
+      if (f >= 0 && !TslProblemFieldAvailable(d->prob, f)) {
+        PetscCall(PetscPrintf(d->comm, "  %s: not available (the model has no displacement: heat transfer only)\n", req->var[v]));
+        continue;
+      }
       if (f < 0 || (kind == TSL_FIELD_NODE) != req->node) {
         PetscCall(PetscPrintf(d->comm, "  %s: not available\n", req->var[v]));
         continue;

@@ -805,6 +805,42 @@ static PetscErrorCode CheckStackDirection(TestLog *log, Case *c)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* A heat-transfer row (DC...) against the coupled row of its family and measure: at the same nodal temperatures (the
+ * coupled row's displacements zero), with temperature-dependent properties and a transient capacity term, the DC
+ * row's residual and tangent are the coupled row's temperature rows and temperature-temperature block, for the
+ * conduction with the capacity and for a film and radiation on each face (1e-13 of the largest entry). */
+static PetscErrorCode CheckHeatCounterpart(TestLog *log, const TslElementType *dc, const TslElementType *cp)
+{
+  static Case     h, m;
+  static PetscReal Rh[TSL_MAX_ELEM_DOF], Kh[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF], Rm[TSL_MAX_ELEM_DOF], Km[TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF];
+  const PetscInt  n = dc->geom->nnode, nm = cp->ndof, th = nm - 1, ndm = n * nm;
+
+  PetscFunctionBeginUser;
+  for (PetscInt face = 0; face <= dc->geom->nface; face++)
+    for (PetscInt k = 0; k < (face ? 2 : 1); k++) {
+      const TslFaceLoadKind kind = k ? TSL_FACE_RADIATION : TSL_FACE_FILM;
+      PetscReal             dr = 0, rmax = 0, dk = 0, kmax = 0;
+      CaseSetUp(&h, dc, 0.08);
+      CaseSetUp(&m, cp, 0.08);
+      TemperatureDependent(&h);
+      TemperatureDependent(&m);
+      h.shift = m.shift = 10;
+      for (PetscInt a = 0; a < n; a++) h.u[a] = m.u[nm * a + th] = THETA0 + 10 * PetscSinReal(1.1 * a + 0.3);
+      PetscCall(PartResidual(&h, face, kind, Rh, Kh));
+      PetscCall(PartResidual(&m, face, kind, Rm, Km));
+      for (PetscInt a = 0; a < n; a++) {
+        dr = PetscMax(dr, PetscAbsReal(Rh[a] - Rm[nm * a + th])), rmax = PetscMax(rmax, PetscAbsReal(Rh[a]));
+        for (PetscInt b = 0; b < n; b++)
+          dk = PetscMax(dk, PetscAbsReal(Kh[a * n + b] - Km[(nm * a + th) * ndm + nm * b + th])), kmax = PetscMax(kmax, PetscAbsReal(Kh[a * n + b]));
+      }
+      char what[48] = "conduction and capacity";
+      if (face) PetscCall(PetscSNPrintf(what, sizeof(what), "%s on S%" PetscInt_FMT, k ? "radiation" : "film", face));
+      Check(log, dr / PetscMax(rmax, 1e-300), 0, 1e-13, "%s %s: residual = %s's temperature rows (relative)", dc->name, what, cp->name);
+      Check(log, dk / PetscMax(kmax, 1e-300), 0, 1e-13, "%s %s: tangent = %s's theta-theta block (relative)", dc->name, what, cp->name);
+    }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   TestLog log = {0, 0};
@@ -814,6 +850,23 @@ int main(int argc, char **argv)
   for (PetscInt t = 0; t < TslElementTypeCount(); t++) {
     const TslElementType *type = TslElementTypeGet(t);
     printf("---- %s: %s\n", type->name, type->description);
+    if (TslElementTypeHeatOnly(type)) {
+      /* the coupled row of the same family, measure and full integration (the dialect's or CalculiX's name) */
+      static const char *pair[][2] = {{"DC2D3", "CPE3T"}, {"DC2D4", "CPE4T"},  {"DC2D6", "CPE6T"},  {"DC2D8", "CPE8T"},  {"DCAX3", "CAX3T"},
+                                      {"DCAX4", "CAX4T"}, {"DCAX6", "CAX6T"},  {"DCAX8", "CAX8T"},  {"DC3D4", "C3D4T"},  {"DC3D6", "C3D6T"},
+                                      {"DC3D8", "C3D8T"}, {"DC3D10", "C3D10T"}, {"DC3D15", "C3D15T"}, {"DC3D20", "C3D20T"}};
+      PetscInt            cp     = -1;
+      for (size_t k = 0; k < sizeof(pair) / sizeof(pair[0]); k++)
+        if (!strcmp(pair[k][0], type->name)) cp = TslElementTypeFind(pair[k][1]);
+      Check(&log, cp >= 0 && TslElementTypeHeatCounterpart(TslElementTypeGet(cp)) == t, 1, 0, "%s is the heat-transfer counterpart of %s", type->name,
+            cp >= 0 ? TslElementTypeGet(cp)->name : "(none)");
+      if (cp >= 0) PetscCall(CheckHeatCounterpart(&log, type, TslElementTypeGet(cp)));
+      for (PetscInt f = 0; f <= type->geom->nface; f++) {
+        CaseSetUp(&c, type, 0.08);
+        PetscCall(CheckTangent(&log, &c, f, TSL_FACE_FILM));
+      }
+      continue;
+    }
     CaseSetUp(&c, type, 0);
     PetscCall(CheckRigidMotion(&log, &c));
     CaseSetUp(&c, type, 0.08);

@@ -130,7 +130,8 @@ PetscBool GridConvergenceRow(const TslElementType *t, PetscInt *n0, PetscReal mi
 {
   const PetscBool quadratic = (PetscBool)(t->geom->order > 1);
 
-  if (t->kin == TSL_KIN_AXISYMMETRIC_TWIST || t->nextra) return PETSC_FALSE;
+  /* the DC rows: their kernels are the coupled rows' temperature part (element_coupled_kernels compares them) */
+  if (t->kin == TSL_KIN_AXISYMMETRIC_TWIST || t->nextra || TslElementTypeHeatOnly(t)) return PETSC_FALSE;
   *n0    = t->dim == 3 && quadratic ? 1 : 2;
   min[0] = quadratic ? 2.7 : 1.8;
   min[1] = quadratic ? 1.8 : 0.85;
