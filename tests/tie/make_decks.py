@@ -1,0 +1,202 @@
+#!/usr/bin/python3
+"""Writes the tie decks of tests/tie/decks (run it from anywhere; the decks are committed).
+
+Two blocks side by side, [0, 1] and [1, 2] in x (2D: x, y; 3D: x, y, z in [0, 1]), meshed differently across
+their common face x = 1 (block A na elements across it, block B nb), the face of B tied to that of A, and every
+outer boundary node given the linear displacement U(x) and temperature T(x) of FIELD below (patch decks) or the
+explicit bar's loads (bar decks). Node ids: block A from 1, block B from 10001; elements from 1 and 1001.
+"""
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+OUT = os.path.join(HERE, "decks")
+
+# the linear fields of the patch tests (check_tie.py has the same numbers)
+UX = (1e-3, 0.5e-3, -0.2e-3)  # u_x = a . x
+UY = (0.3e-3, -0.7e-3, 0.4e-3)
+UZ = (-0.1e-3, 0.2e-3, 0.6e-3)
+TH = (20.0, 10.0, 5.0, -3.0)  # theta = t0 + g . x
+
+
+def ux(p):
+    return [sum(c * x for c, x in zip(U, p)) for U in (UX, UY, UZ)[: len(p)]]
+
+
+def theta(p):
+    return TH[0] + sum(g * x for g, x in zip(TH[1:], p))
+
+
+def block2d(x0, nx, ny, quad, n0, e0):
+    """Nodes and elements of [x0, x0 + 1] x [0, 1] with nx x ny elements (CPE4T or CPE8T numbering)."""
+    nodes, elems = {}, []
+    # a grid of 2 nx + 1 by 2 ny + 1 points; linear elements use the even ones
+    k = 2 if quad else 1
+    ids = {}
+    for j in range(k * ny + 1):
+        for i in range(k * nx + 1):
+            if quad and i % 2 and j % 2:
+                continue
+            nid = n0 + len(ids)
+            ids[i, j] = nid
+            nodes[nid] = (x0 + i / (k * nx), j / (k * ny))
+    for j in range(ny):
+        for i in range(nx):
+            a, b = k * i, k * j
+            c = [ids[a, b], ids[a + k, b], ids[a + k, b + k], ids[a, b + k]]
+            if quad:
+                c += [ids[a + 1, b], ids[a + 2, b + 1], ids[a + 1, b + 2], ids[a, b + 1]]
+            elems.append((e0 + len(elems), c, i, j))
+    return nodes, elems
+
+
+def block3d(x0, nx, ny, nz, n0, e0):
+    nodes, elems, ids = {}, [], {}
+    for k in range(nz + 1):
+        for j in range(ny + 1):
+            for i in range(nx + 1):
+                nid = n0 + len(ids)
+                ids[i, j, k] = nid
+                nodes[nid] = (x0 + i / nx, j / ny, k / nz)
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                c = [ids[i, j, k], ids[i + 1, j, k], ids[i + 1, j + 1, k], ids[i, j + 1, k],
+                     ids[i, j, k + 1], ids[i + 1, j, k + 1], ids[i + 1, j + 1, k + 1], ids[i, j + 1, k + 1]]
+                elems.append((e0 + len(elems), c, i, j, k))
+    return nodes, elems
+
+
+MATERIAL = """*MATERIAL, NAME=STEEL
+*ELASTIC
+200000., 0.3
+*CONDUCTIVITY
+50.
+*DENSITY
+7.8e-9
+*SPECIFIC HEAT
+5.e5
+"""
+
+
+def write(name, text):
+    with open(os.path.join(OUT, name), "w") as f:
+        f.write(text)
+
+
+def lines(items, per=8):
+    items = [str(i) for i in items]
+    return "".join(", ".join(items[i:i + per]) + "\n" for i in range(0, len(items), per))
+
+
+def mesh_text(etype, nodes, elemsA, elemsB):
+    s = "*NODE, NSET=NALL\n" + "".join("%d, %.17g, %s\n" % (n, p[0], ", ".join("%.17g" % c for c in p[1:])) for n, p in sorted(nodes.items()))
+    s += "*ELEMENT, TYPE=%s, ELSET=A\n" % etype + "".join("%d, %s\n" % (e[0], ", ".join(map(str, e[1]))) for e in elemsA)
+    s += "*ELEMENT, TYPE=%s, ELSET=B\n" % etype + "".join("%d, %s\n" % (e[0], ", ".join(map(str, e[1]))) for e in elemsB)
+    s += "*SOLID SECTION, ELSET=A, MATERIAL=STEEL\n*SOLID SECTION, ELSET=B, MATERIAL=STEEL\n" + MATERIAL
+    return s
+
+
+def patch2d(quad, na, nb, tie_text, name, title):
+    etype = "CPE8T" if quad else "CPE4T"
+    nA, eA = block2d(0.0, 2, na, quad, 1, 1)
+    nB, eB = block2d(1.0, 2, nb, quad, 10001, 1001)
+    nodes = {**nA, **nB}
+    # interface faces: A's elements at i = 1 face 2 (x = 1), B's at i = 0 face 4 (x = 1)
+    sA = [(e[0], "S2") for e in eA if e[2] == 1]
+    sB = [(e[0], "S4") for e in eB if e[2] == 0]
+    outer = [n for n, p in sorted(nodes.items()) if p[0] in (0.0, 2.0) or p[1] in (0.0, 1.0)]
+    s = "*HEADING\n%s\n" % title + mesh_text(etype, nodes, eA, eB)
+    s += "*SURFACE, NAME=SA, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sA)
+    s += "*SURFACE, NAME=SB, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sB)
+    s += tie_text
+    s += "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1., 1.\n*BOUNDARY\n"
+    for n in outer:
+        u = ux(nodes[n])
+        s += "%d, 1, 1, %.17g\n%d, 2, 2, %.17g\n%d, 11, 11, %.17g\n" % (n, u[0], n, u[1], n, theta(nodes[n]))
+    s += "*NODE FILE\nU, NT, RFL\n*EL FILE\nS\n*END STEP\n"
+    write(name, s)
+
+
+def patch3d(na, nb, name):
+    nA, eA = block3d(0.0, 1, na, na, 1, 1)
+    nB, eB = block3d(1.0, 1, nb, nb, 10001, 1001)
+    nodes = {**nA, **nB}
+    sA = [(e[0], "S4") for e in eA]  # hex8 face 4: nodes 2 3 7 6 (x = 1 of A)
+    sB = [(e[0], "S6") for e in eB]  # face 6: nodes 4 1 5 8 (x = 1 of B)
+    outer = [n for n, p in sorted(nodes.items()) if p[0] in (0.0, 2.0) or p[1] in (0.0, 1.0) or p[2] in (0.0, 1.0)]
+    s = "*HEADING\nTIE patch test, C3D8T, %d x %d elements tied to %d x %d across x = 1\n" % (nb, nb, na, na)
+    s += mesh_text("C3D8T", nodes, eA, eB)
+    s += "*SURFACE, NAME=SA, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sA)
+    s += "*SURFACE, NAME=SB, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sB)
+    s += "*TIE, NAME=T1\nSB, SA\n"
+    s += "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1., 1.\n*BOUNDARY\n"
+    for n in outer:
+        u = ux(nodes[n])
+        s += "".join("%d, %d, %d, %.17g\n" % (n, d + 1, d + 1, u[d]) for d in range(3)) + "%d, 11, 11, %.17g\n" % (n, theta(nodes[n]))
+    s += "*NODE FILE\nU, NT, RFL\n*EL FILE\nS\n*END STEP\n"
+    write(name, s)
+
+
+def bar(tied, name):
+    """A bar [0, 2] x [0, 0.25] of CPE4T, 8 elements along it, 1 across; tied: the same mesh cut at x = 1, its right
+    half's nodes at x = 1 (ids + 10000) tied to the left half's face. Explicit: every node starts at v_x = 100 and
+    x = 0 is held, the heat: theta = 100 prescribed at x = 0 under a ramp, theta = 0 at x = 2."""
+    nodes, elems = {}, []
+    for i in range(9):
+        for j in range(2):
+            nodes[1 + 2 * i + j] = (0.25 * i, 0.25 * j)
+    for j in range(2):
+        if tied:
+            nodes[10001 + 2 * 4 + j] = (1.0, 0.25 * j)
+    for i in range(8):
+        c = [1 + 2 * i, 3 + 2 * i, 4 + 2 * i, 2 + 2 * i]
+        if tied and i == 4:
+            c = [10009, 3 + 2 * i, 4 + 2 * i, 10010]
+        elems.append((1 + i, c))
+    s = "*HEADING\nExplicit bar, CPE4T, %s\n" % ("cut at x = 1 and tied" if tied else "in one piece")
+    s += "*NODE, NSET=NALL\n" + "".join("%d, %.17g, %.17g\n" % (n, p[0], p[1]) for n, p in sorted(nodes.items()))
+    s += "*ELEMENT, TYPE=CPE4T, ELSET=ALL\n" + "".join("%d, %s\n" % (e[0], ", ".join(map(str, e[1]))) for e in elems)
+    s += "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL\n" + MATERIAL
+    if tied:
+        s += "*SURFACE, NAME=LEFT, TYPE=ELEMENT\n4, S2\n*SURFACE, NAME=RIGHT, TYPE=ELEMENT\n5, S4\n*TIE\nRIGHT, LEFT\n"
+    s += "*NSET, NSET=END0\n1, 2\n*NSET, NSET=END2\n17, 18\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 0.\n"
+    s += "*INITIAL CONDITIONS, TYPE=VELOCITY\nNALL, 1, 100.\n"
+    s += "*AMPLITUDE, NAME=RAMP\n0., 0., 5.e-5, 1.\n"
+    s += "*STEP\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n, 5.e-5\n*BOUNDARY\nNALL, 2, 2, 0.\nEND0, 1, 1, 0.\n"
+    s += "*BOUNDARY, AMPLITUDE=RAMP\nEND0, 11, 11, 100.\n*BOUNDARY\nEND2, 11, 11, 0.\n"
+    s += "*OUTPUT, FIELD, NUMBER INTERVAL=4\n*NODE OUTPUT\nU, NT\n*END STEP\n"
+    write(name, s)
+
+
+def bad():
+    """Bad inputs: variants of patch_cpe4t.inp (check the messages in CMakeLists.txt)."""
+    base = open(os.path.join(OUT, "patch_cpe4t.inp")).read()
+    tie = "*TIE, NAME=T1\nSB, SA\n"
+    assert tie in base
+    # A's face at x = 0 as the main surface: B's nodes at x = 1 are a whole length away
+    far = "*SURFACE, NAME=SA0, TYPE=ELEMENT\n" + "".join("%d, S4\n" % e for e in (1, 3, 5)) + "*TIE, NAME=T1, POSITION TOLERANCE=0.01\nSB, SA0\n"
+    write("bad_tie_far.inp", base.replace(tie, far))
+    write("bad_tie_undefined.inp", base.replace(tie, "*TIE, NAME=T1\nSB, NOSUCH\n"))
+    write("bad_tie_two_lines.inp", base.replace(tie, "*TIE, NAME=T1\nSB, SA\nSA, SB\n"))
+    write("bad_tie_cyclic.inp", base.replace(tie, "*TIE, NAME=T1, CYCLIC SYMMETRY\nSB, SA\n"))
+    # node 10007 (B, on x = 1 at y = 0.25) is tied and also the dependent node of an *EQUATION
+    write("bad_tie_equation.inp", base.replace(tie, tie + "*EQUATION\n2\n10007, 1, 1., 10008, 1, -1.\n"))
+
+
+def main():
+    os.makedirs(OUT, exist_ok=True)
+    patch2d(False, 3, 4, "*TIE, NAME=T1\nSB, SA\n", "patch_cpe4t.inp", "TIE patch test, CPE4T, 4 elements tied to 3 across x = 1")
+    patch2d(True, 3, 4, "*TIE, NAME=T1, POSITION TOLERANCE=1.e-6\nSB, SA\n", "patch_cpe8t.inp",
+            "TIE patch test, CPE8T (line3 faces), 4 elements tied to 3 across x = 1")
+    patch2d(False, 4, 3, "*SURFACE INTERACTION, NAME=GLUE\n*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED\n1.e7\n"
+            "*CONTACT PAIR, INTERACTION=GLUE\nSA, SB\n", "patch_overclosure_tied_cpe4t.inp",
+            "PRESSURE-OVERCLOSURE=TIED patch test, CPE4T, 4 elements (main) and 3 (secondary)")
+    patch2d(False, 3, 5, "*SURFACE INTERACTION, NAME=GLUE\n*CONTACT PAIR, INTERACTION=GLUE, TIED\nSB, SA\n", "patch_pair_tied_cpe4t.inp",
+            "CONTACT PAIR, TIED patch test, CPE4T, 5 elements tied to 3")
+    patch3d(2, 3, "patch_c3d8t.inp")
+    bar(False, "bar_explicit_cpe4t.inp")
+    bar(True, "bar_tied_explicit_cpe4t.inp")
+    bad()
+
+
+main()
