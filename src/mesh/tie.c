@@ -15,7 +15,7 @@
  * sum N_k(xi_s) u_k, passes neither on a non-matching mesh (docs/design.md, "Ties"); its projection is kept
  * for what it is needed for: the position tolerance (and its error), ADJUST, node surfaces, the secondary
  * faces the mortar integrals do not cover (3D second-order faces), and a node whose faces meet no main face.
- * The overlap is found face by face through a bin grid over the main faces, never over all pairs. */
+ * The overlap is found face by face through contact's bin grid over the main faces, never over all pairs. */
 #include <thermoslide/mesh.h>
 #include <thermoslide/element.h>
 #include <thermoslide/contact.h>
@@ -26,8 +26,8 @@
 #define TIE_GAUSS 5 /* Gauss points per overlap interval in 2D: exact for Phi_a N_k of two line3 faces (degree 4) */
 
 typedef struct {
-  const TslGeometry *fg;                      /* face family (line2, line3, tri3, tri6, quad4, quad8) */
-  PetscInt           nn;                      /* nodes */
+  const TslGeometry *fg;                       /* face family (line2, line3, tri3, tri6, quad4, quad8) */
+  PetscInt           nn;                       /* nodes */
   PetscInt           node[TSL_MAX_FACE_NODES]; /* model positions, face order */
 } Face;
 
@@ -64,7 +64,10 @@ static int CompareTerm(const void *a, const void *b)
   return x->k < y->k ? -1 : (x->k > y->k);
 }
 
-static PetscBool Simplex(const TslGeometry *fg) { return (PetscBool)(fg->dim == 2 && fg->ncorner == 3); }
+static PetscBool Simplex(const TslGeometry *fg)
+{
+  return (PetscBool)(fg->dim == 2 && fg->ncorner == 3);
+}
 
 /* The face's point p, its parameter derivatives J[d][i] and shape values N at xi (coordinates X[3*a + d]). */
 static void FacePoint(const Face *f, const PetscReal X[], const PetscReal xi[], PetscReal p[3], PetscReal J[3][2], PetscReal N[])
@@ -152,111 +155,15 @@ static PetscErrorCode SurfaceFaces(const TslModel *g, const TslSurface *s, Face 
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* A bin grid over the main faces' boxes (each inflated by the tolerance): cell c holds faces
- * face[start[c] .. start[c+1]). */
-typedef struct {
-  PetscInt  n[3], *start, *face;
-  PetscReal lo[3], h[3];
-} Bins;
-
-static void FaceBox(const TslModel *g, const Face *f, PetscReal tol, PetscReal box[6])
+/* The box of face f's nodes, lower corner then upper (dim coordinates each), the layout of the contact bin grid. */
+static void FaceBox(const TslModel *g, const Face *f, PetscReal box[6])
 {
-  for (PetscInt d = 0; d < 3; d++) box[d] = PETSC_MAX_REAL, box[3 + d] = -PETSC_MAX_REAL;
+  for (PetscInt d = 0; d < g->dim; d++) box[d] = PETSC_MAX_REAL, box[g->dim + d] = -PETSC_MAX_REAL;
   for (PetscInt a = 0; a < f->nn; a++)
-    for (PetscInt d = 0; d < 3; d++) {
-      box[d]     = PetscMin(box[d], g->node_xyz[3 * f->node[a] + d] - tol);
-      box[3 + d] = PetscMax(box[3 + d], g->node_xyz[3 * f->node[a] + d] + tol);
+    for (PetscInt d = 0; d < g->dim; d++) {
+      box[d]          = PetscMin(box[d], g->node_xyz[3 * f->node[a] + d]);
+      box[g->dim + d] = PetscMax(box[g->dim + d], g->node_xyz[3 * f->node[a] + d]);
     }
-}
-
-static void CellRange(const Bins *b, const PetscReal box[6], PetscInt lo[3], PetscInt hi[3])
-{
-  for (PetscInt d = 0; d < 3; d++) {
-    lo[d] = (PetscInt)PetscFloorReal((box[d] - b->lo[d]) / b->h[d]);
-    hi[d] = (PetscInt)PetscFloorReal((box[3 + d] - b->lo[d]) / b->h[d]);
-    lo[d] = PetscMax(0, PetscMin(b->n[d] - 1, lo[d]));
-    hi[d] = PetscMax(0, PetscMin(b->n[d] - 1, hi[d]));
-  }
-}
-
-static PetscErrorCode BinsCreate(const TslModel *g, PetscInt nf, const Face faces[], PetscReal size, PetscReal tol, Bins *b)
-{
-  PetscReal all[6] = {PETSC_MAX_REAL, PETSC_MAX_REAL, PETSC_MAX_REAL, -PETSC_MAX_REAL, -PETSC_MAX_REAL, -PETSC_MAX_REAL}, box[6];
-  PetscInt *count, ncell = 1;
-
-  PetscFunctionBeginUser;
-  for (PetscInt i = 0; i < nf; i++) {
-    FaceBox(g, &faces[i], tol, box);
-    for (PetscInt d = 0; d < 3; d++) all[d] = PetscMin(all[d], box[d]), all[3 + d] = PetscMax(all[3 + d], box[3 + d]);
-  }
-  /* cells about a mean face across, at most about 4 per face in all */
-  for (PetscInt d = 0; d < 3; d++) {
-    const PetscReal L = all[3 + d] - all[d];
-    b->lo[d]          = all[d];
-    b->n[d]           = d < g->dim ? (PetscInt)PetscMax(1, PetscMin(PetscCeilReal(L / size), 4.0 * nf)) : 1;
-    b->h[d]           = L > 0 ? L / b->n[d] * (1 + 1e-12) : 1;
-    ncell *= b->n[d];
-  }
-  while (ncell > 4 * nf + 64) { /* a long thin surface across a wide box: coarsen */
-    ncell = 1;
-    for (PetscInt d = 0; d < 3; d++) {
-      if (b->n[d] > 1) b->n[d] = (b->n[d] + 1) / 2, b->h[d] *= 2;
-      ncell *= b->n[d];
-    }
-  }
-  PetscCall(PetscCalloc1(ncell + 1, &b->start));
-  PetscCall(PetscCalloc1(ncell, &count));
-  for (PetscInt pass = 0; pass < 2; pass++) {
-    for (PetscInt i = 0; i < nf; i++) {
-      PetscInt lo[3], hi[3];
-      FaceBox(g, &faces[i], tol, box);
-      CellRange(b, box, lo, hi);
-      for (PetscInt z = lo[2]; z <= hi[2]; z++)
-        for (PetscInt y = lo[1]; y <= hi[1]; y++)
-          for (PetscInt x = lo[0]; x <= hi[0]; x++) {
-            const PetscInt c = (z * b->n[1] + y) * b->n[0] + x;
-            if (pass == 0) b->start[c + 1]++;
-            else b->face[b->start[c] + count[c]++] = i;
-          }
-    }
-    if (pass == 0) {
-      for (PetscInt c = 0; c < ncell; c++) b->start[c + 1] += b->start[c];
-      PetscCall(PetscMalloc1(b->start[ncell], &b->face));
-    }
-  }
-  PetscCall(PetscFree(count));
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
-/* The main faces whose cells meet box (each once): cand[0..*nc), mark[] (per face, zero on entry and exit). */
-static PetscErrorCode BinsQuery(const Bins *b, const PetscReal box[6], char mark[], PetscInt **cand, PetscInt *cap, PetscInt *nc)
-{
-  PetscInt lo[3], hi[3];
-
-  PetscFunctionBeginUser;
-  *nc = 0;
-  CellRange(b, box, lo, hi);
-  for (PetscInt z = lo[2]; z <= hi[2]; z++)
-    for (PetscInt y = lo[1]; y <= hi[1]; y++)
-      for (PetscInt x = lo[0]; x <= hi[0]; x++) {
-        const PetscInt c = (z * b->n[1] + y) * b->n[0] + x;
-        for (PetscInt k = b->start[c]; k < b->start[c + 1]; k++) {
-          const PetscInt f = b->face[k];
-          if (mark[f]) continue;
-          if (*nc == *cap) {
-            PetscInt *n;
-            *cap = 2 * *cap + 16;
-            PetscCall(PetscMalloc1(*cap, &n));
-            if (*nc) PetscCall(PetscArraycpy(n, *cand, *nc));
-            PetscCall(PetscFree(*cand));
-            *cand = n;
-          }
-          mark[f]          = 1;
-          (*cand)[(*nc)++] = f;
-        }
-      }
-  for (PetscInt i = 0; i < *nc; i++) mark[(*cand)[i]] = 0;
-  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* The dual basis of a secondary face: A = D M^-1 (row-major, n x n), M_ab = int N_a N_b (times r when the
@@ -264,15 +171,16 @@ static PetscErrorCode BinsQuery(const Bins *b, const PetscReal box[6], char mark
  * second-order 3D faces: tri6 corners integrate to zero, quad8 corners below it), where no dual basis exists. */
 static PetscBool DualBasis(const Face *f, const PetscReal X[], PetscBool revolves, PetscReal A[], PetscReal D[])
 {
-  const TslQuadrature *q = &f->fg->as_face;
-  const PetscInt       n = f->nn;
+  const TslQuadrature *q                                          = &f->fg->as_face;
+  const PetscInt       n                                          = f->nn;
   PetscReal            M[TSL_MAX_FACE_NODES * TSL_MAX_FACE_NODES] = {0}, Minv[TSL_MAX_FACE_NODES * TSL_MAX_FACE_NODES];
 
   if (q->n == 0) return PETSC_FALSE;
   for (PetscInt g = 0; g < q->n; g++) {
     PetscReal p[3], J[3][2], N[TSL_MAX_FACE_NODES], dA;
     FacePoint(f, X, q->xi[g], p, J, N);
-    if (f->fg->dim == 1) dA = PetscSqrtReal(J[0][0] * J[0][0] + J[1][0] * J[1][0] + J[2][0] * J[2][0]);
+    if (f->fg->dim == 1)
+      dA = PetscSqrtReal(J[0][0] * J[0][0] + J[1][0] * J[1][0] + J[2][0] * J[2][0]);
     else {
       const PetscReal c[3] = {J[1][0] * J[2][1] - J[2][0] * J[1][1], J[2][0] * J[0][1] - J[0][0] * J[2][1], J[0][0] * J[1][1] - J[1][0] * J[0][1]};
       dA                   = PetscSqrtReal(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
@@ -296,7 +204,7 @@ static PetscBool DualBasis(const Face *f, const PetscReal X[], PetscBool revolve
       if (PetscAbsReal(M[r * n + c]) > big) big = PetscAbsReal(M[r * n + c]), piv = r;
     if (big <= 1e-14 * D[c]) return PETSC_FALSE;
     for (PetscInt k = 0; k < n; k++) {
-      PetscReal t = M[c * n + k];
+      PetscReal t  = M[c * n + k];
       M[c * n + k] = M[piv * n + k], M[piv * n + k] = t;
       t = Minv[c * n + k], Minv[c * n + k] = Minv[piv * n + k], Minv[piv * n + k] = t;
     }
@@ -380,13 +288,15 @@ static PetscReal MeanFaceSize(const TslModel *g, PetscInt nf, const Face faces[]
   PetscReal sum = 0;
   for (PetscInt i = 0; i < nf; i++) {
     const PetscReal *a = &g->node_xyz[3 * faces[i].node[0]], *b = &g->node_xyz[3 * faces[i].node[1]];
-    if (g->dim == 2) sum += PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
+    if (g->dim == 2)
+      sum += PetscSqrtReal(PetscSqr(b[0] - a[0]) + PetscSqr(b[1] - a[1]));
     else {
       /* quadrilateral: half the cross product of the diagonals; triangle: of two edges */
       const PetscBool  quad = (PetscBool)(faces[i].fg->ncorner == 4);
       const PetscReal *c = &g->node_xyz[3 * faces[i].node[2]], *d = quad ? &g->node_xyz[3 * faces[i].node[3]] : a, *e = quad ? b : a;
-      const PetscReal  u[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]}, v[3] = {quad ? d[0] - e[0] : b[0] - a[0], quad ? d[1] - e[1] : b[1] - a[1], quad ? d[2] - e[2] : b[2] - a[2]};
-      const PetscReal  n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      const PetscReal  u[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]},
+                      v[3]  = {quad ? d[0] - e[0] : b[0] - a[0], quad ? d[1] - e[1] : b[1] - a[1], quad ? d[2] - e[2] : b[2] - a[2]};
+       const PetscReal n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
       sum += PetscSqrtReal(0.5 * PetscSqrtReal(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]));
     }
   }
@@ -400,9 +310,9 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
   const TslSurface *sec = &g->surfaces[TslModelFindSurface(g, t->secondary)], *mainsurf = &g->surfaces[TslModelFindSurface(g, t->main)];
   const PetscBool   revolves = g->nelem ? TslKinematicsRevolves(TslElementTypeGet(g->elem_type[0])->kin) : PETSC_FALSE;
   Face             *mf, *sf = NULL;
-  Bins              bins;
+  TslContactBinGrid grid;
   PetscInt         *snode, ns = 0, *cand = NULL, cap = 0, nc, *row;
-  char             *mark, *onmain, loc[PETSC_MAX_PATH_LEN + 32];
+  char             *onmain, loc[PETSC_MAX_PATH_LEN + 32];
   PetscReal         size, tol, X[3 * TSL_MAX_FACE_NODES], Xm[3 * TSL_MAX_FACE_NODES];
   PetscReal        *Dsum, *Dfull;
   Terms             M = {NULL, 0, 0}, P = {NULL, 0, 0};
@@ -412,8 +322,13 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
   PetscCall(SurfaceFaces(g, mainsurf, &mf));
   size = MeanFaceSize(g, mainsurf->n, mf);
   tol  = t->tolerance > 0 ? t->tolerance : 0.025 * size;
-  PetscCall(BinsCreate(g, mainsurf->n, mf, size, tol, &bins));
-  PetscCall(PetscCalloc1(mainsurf->n, &mark));
+  {
+    PetscReal *boxes;
+    PetscCall(PetscMalloc1(2 * g->dim * mainsurf->n, &boxes));
+    for (PetscInt i = 0; i < mainsurf->n; i++) FaceBox(g, &mf[i], &boxes[2 * g->dim * i]);
+    PetscCall(TslContactBinGridCreateDim(g->dim, mainsurf->n, boxes, tol, &grid)); /* boxes inflated by the tolerance */
+    PetscCall(PetscFree(boxes));
+  }
   PetscCall(PetscCalloc1(g->nnode, &onmain));
   for (PetscInt i = 0; i < mainsurf->n; i++)
     for (PetscInt a = 0; a < mf[i].nn; a++) onmain[mf[i].node[a]] = 1;
@@ -432,7 +347,8 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
     PetscCall(PetscMalloc1(sec->n, &snode));
     for (PetscInt i = 0; i < sec->n; i++) {
       const PetscInt p = TslModelNodeIndex(g, sec->elem[i]);
-      PetscCheck(p >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: node %" PetscInt_FMT " of surface %s is not defined", loc, sec->elem[i], sec->name);
+      PetscCheck(p >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: node %" PetscInt_FMT " of surface %s is not defined", loc, sec->elem[i],
+                 sec->name);
       if (row[p] < 0) row[p] = ns, snode[ns++] = p;
     }
   }
@@ -440,11 +356,10 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
    * weights where the mortar integrals give none */
   for (PetscInt i = 0; i < ns; i++) {
     const PetscInt p = snode[i];
-    PetscReal     *x = &g->node_xyz[3 * p], box[6], best = PETSC_MAX_REAL, bxi[2] = {0, 0}, bN[TSL_MAX_FACE_NODES], bp[3];
+    PetscReal     *x = &g->node_xyz[3 * p], best = PETSC_MAX_REAL, bxi[2] = {0, 0}, bN[TSL_MAX_FACE_NODES], bp[3];
     PetscInt       bf = -1;
     if (tied[p] || onmain[p]) continue;
-    for (PetscInt d = 0; d < 3; d++) box[d] = x[d], box[3 + d] = x[d];
-    PetscCall(BinsQuery(&bins, box, mark, &cand, &cap, &nc));
+    PetscCall(TslContactBinGridQueryGrow(grid, x, 0, &cap, &cand, &nc));
     for (PetscInt c = 0; c < nc; c++) {
       PetscReal xi[2], N[TSL_MAX_FACE_NODES], dist;
       FaceCoordinates(g, &mf[cand[c]], Xm);
@@ -475,8 +390,12 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
     FaceCoordinates(g, &sf[i], X);
     if (!DualBasis(&sf[i], X, revolves, A, D)) continue;
     for (PetscInt a = 0; a < sf[i].nn; a++) Dfull[row[sf[i].node[a]]] += D[a];
-    FaceBox(g, &sf[i], tol, box);
-    PetscCall(BinsQuery(&bins, box, mark, &cand, &cap, &nc));
+    {
+      PetscReal c[3], radius = 0;
+      FaceBox(g, &sf[i], box); /* the faces whose inflated boxes come within its half diagonal of its centre */
+      for (PetscInt d = 0; d < g->dim; d++) c[d] = 0.5 * (box[d] + box[g->dim + d]), radius += PetscSqr(0.5 * (box[g->dim + d] - box[d]));
+      PetscCall(TslContactBinGridQueryGrow(grid, c, PetscSqrtReal(radius), &cap, &cand, &nc));
+    }
     for (PetscInt c = 0; c < nc; c++) {
       FaceCoordinates(g, &mf[cand[c]], Xm);
       PetscCall(Overlap(g, &sf[i], X, A, &mf[cand[c]], Xm, tol, revolves, &M));
@@ -487,9 +406,10 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
   qsort(P.t, P.n, sizeof(Term), CompareTerm);
   for (size_t k = 0; k < M.n; k++) Dsum[row[M.t[k].s]] += M.t[k].w;
   {
-    size_t im = 0, ip = 0;
+    size_t   im = 0, ip = 0;
+    PetscInt nmortar = 0, nproj = 0;
     while (ip < P.n) {
-      const PetscInt s = P.t[ip].s;
+      const PetscInt s   = P.t[ip].s;
       PetscReal      sum = Dsum[row[s]];
       size_t         m0, m1, p1 = ip;
       while (p1 < P.n && P.t[p1].s == s) p1++;
@@ -503,12 +423,20 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
           while (k + 1 < m1 && M.t[k + 1].k == M.t[k].k) c += M.t[++k].w / sum;
           if (PetscAbsReal(c) > 1e-13) PetscCall(TermAdd(R, s, M.t[k].k, c));
         }
-      } else
+        nmortar++;
+      } else {
         for (size_t k = ip; k < p1; k++) PetscCall(TermAdd(R, s, P.t[k].k, P.t[k].w));
+        nproj++;
+      }
       tied[s] = 1;
       ip      = p1;
       im      = m1;
     }
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          "%s: %s%s%s %s to %s: %" PetscInt_FMT " secondary nodes tied (%" PetscInt_FMT " by the mortar weights, %" PetscInt_FMT
+                          " by projection), position tolerance %g\n",
+                          loc, t->from_pair ? "tied contact pair" : "*TIE", t->name[0] ? " " : "", t->name, sec->name, mainsurf->name,
+                          nmortar + nproj, nmortar, nproj, (double)tol));
   }
   PetscCall(PetscFree(M.t));
   PetscCall(PetscFree(P.t));
@@ -517,10 +445,8 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
   PetscCall(PetscFree(row));
   PetscCall(PetscFree(snode));
   PetscCall(PetscFree(cand));
-  PetscCall(PetscFree(mark));
   PetscCall(PetscFree(onmain));
-  PetscCall(PetscFree(bins.start));
-  PetscCall(PetscFree(bins.face));
+  PetscCall(TslContactBinGridDestroy(&grid));
   PetscCall(PetscFree(mf));
   PetscCall(PetscFree(sf));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -569,7 +495,8 @@ PetscErrorCode TslMeshTies(TslModel *g)
       size_t k1 = k0;
       while (k1 < R.n && R.t[k1].s == R.t[k0].s) k1++;
       PetscCheck(!dep[R.t[k0].s], PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-                 "%s: node %" PetscInt_FMT " of secondary surface %s is the dependent node of an *EQUATION as well; the dialect allows one constraint per dependent node",
+                 "%s: node %" PetscInt_FMT
+                 " of secondary surface %s is the dependent node of an *EQUATION as well; the dialect allows one constraint per dependent node",
                  loc, g->node_id[R.t[k0].s], t->secondary);
       for (PetscInt i = 0; i < nd; i++) {
         TslEquation *e;
@@ -597,7 +524,8 @@ PetscErrorCode TslMeshTies(TslModel *g)
     for (PetscInt k = 1; k < g->equations[q].n; k++) {
       const PetscInt p = TslModelNodeIndex(g, g->equations[q].node[k]);
       PetscCheck(!tied[p] && !dep[p], PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
-                 "%s: main node %" PetscInt_FMT " is itself constrained (a secondary node of a tie, or the dependent node of an *EQUATION): chained constraints are not supported",
+                 "%s: main node %" PetscInt_FMT
+                 " is itself constrained (a secondary node of a tie, or the dependent node of an *EQUATION): chained constraints are not supported",
                  TslLocString(g, g->equations[q].loc, loc, sizeof(loc)), g->equations[q].node[k]);
     }
   PetscCall(PetscInfo(NULL, "ties: %" PetscInt_FMT " equations\n", g->nequation - first));

@@ -18,12 +18,18 @@ UZ = (-0.1e-3, 0.2e-3, 0.6e-3)
 TH = (20.0, 10.0, 5.0, -3.0)  # theta = t0 + g . x
 
 
-def ux(p):
-    return [sum(c * x for c, x in zip(U, p)) for U in (UX, UY, UZ)[: len(p)]]
+# axisymmetric: u_r = a r, u_z = d z (a uniform stress with sigma_rr = sigma_thth and no shear, which equilibrium
+# about the axis needs) and theta = t0 + g z (a gradient in r is not harmonic there)
+UXA, UYA, THA = (1e-3, 0.0), (0.0, -0.7e-3), (20.0, 0.0, 5.0)
 
 
-def theta(p):
-    return TH[0] + sum(g * x for g, x in zip(TH[1:], p))
+def ux(p, axi=False):
+    return [sum(c * x for c, x in zip(U, p)) for U in ((UXA, UYA) if axi else (UX, UY, UZ))[: len(p)]]
+
+
+def theta(p, axi=False):
+    T = THA if axi else TH
+    return T[0] + sum(g * x for g, x in zip(T[1:], p))
 
 
 def block2d(x0, nx, ny, quad, n0, e0):
@@ -96,8 +102,8 @@ def mesh_text(etype, nodes, elemsA, elemsB):
     return s
 
 
-def patch2d(quad, na, nb, tie_text, name, title):
-    etype = "CPE8T" if quad else "CPE4T"
+def patch2d(quad, na, nb, tie_text, name, title, axi=False):
+    etype = ("CAX8T" if quad else "CAX4T") if axi else ("CPE8T" if quad else "CPE4T")
     nA, eA = block2d(0.0, 2, na, quad, 1, 1)
     nB, eB = block2d(1.0, 2, nb, quad, 10001, 1001)
     nodes = {**nA, **nB}
@@ -111,8 +117,8 @@ def patch2d(quad, na, nb, tie_text, name, title):
     s += tie_text
     s += "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1., 1.\n*BOUNDARY\n"
     for n in outer:
-        u = ux(nodes[n])
-        s += "%d, 1, 1, %.17g\n%d, 2, 2, %.17g\n%d, 11, 11, %.17g\n" % (n, u[0], n, u[1], n, theta(nodes[n]))
+        u = ux(nodes[n], axi)
+        s += "%d, 1, 1, %.17g\n%d, 2, 2, %.17g\n%d, 11, 11, %.17g\n" % (n, u[0], n, u[1], n, theta(nodes[n], axi))
     s += "*NODE FILE\nU, NT, RFL\n*EL FILE\nS\n*END STEP\n"
     write(name, s)
 
@@ -168,6 +174,19 @@ def bar(tied, name):
     write(name, s)
 
 
+def fall(name):
+    """The two blocks of patch_cpe4t.inp (4 elements tied to 3) falling freely under gravity (GRAV 1e4 along
+    (1, -2)) from rest in an explicit step: u = g t^2 / 2 at every node, exact when the tie moves the secondary nodes'
+    mass with their (gravity) force, as the lumped T^T M T and T^T F do."""
+    base = open(os.path.join(OUT, "patch_cpe4t.inp")).read()
+    model = base[: base.index("*STEP")]
+    s = model.replace("TIE patch test, CPE4T", "TIE free fall, explicit, CPE4T") + "*ELSET, ELSET=ALL\nA, B\n"
+    s += "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 20.\n"
+    s += "*STEP\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n, 1.e-5\n*DLOAD\nALL, GRAV, 10000., 1., -2., 0.\n"
+    s += "*OUTPUT, FIELD, NUMBER INTERVAL=2\n*NODE OUTPUT\nU, NT\n*END STEP\n"
+    write(name, s)
+
+
 def bad():
     """Bad inputs: variants of patch_cpe4t.inp (check the messages in CMakeLists.txt)."""
     base = open(os.path.join(OUT, "patch_cpe4t.inp")).read()
@@ -193,9 +212,12 @@ def main():
             "PRESSURE-OVERCLOSURE=TIED patch test, CPE4T, 4 elements (main) and 3 (secondary)")
     patch2d(False, 3, 5, "*SURFACE INTERACTION, NAME=GLUE\n*CONTACT PAIR, INTERACTION=GLUE, TIED\nSB, SA\n", "patch_pair_tied_cpe4t.inp",
             "CONTACT PAIR, TIED patch test, CPE4T, 5 elements tied to 3")
+    patch2d(False, 3, 4, "*TIE, NAME=T1\nSB, SA\n", "patch_cax4t.inp", "TIE patch test, CAX4T, 4 elements tied to 3 across r = 1",
+            axi=True)
     patch3d(2, 3, "patch_c3d8t.inp")
     bar(False, "bar_explicit_cpe4t.inp")
     bar(True, "bar_tied_explicit_cpe4t.inp")
+    fall("fall_explicit_cpe4t.inp")
     bad()
 
 
