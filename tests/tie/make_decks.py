@@ -174,6 +174,22 @@ def bar(tied, name):
     write(name, s)
 
 
+def steps(name_static, name_transient):
+    """patch_cpe4t.inp in a *STATIC step (temperatures held at their initial values, the linear field) and in a
+    transient coupled step (two increments from the linear field, which stays: the capacity terms vanish)."""
+    base = open(os.path.join(OUT, "patch_cpe4t.inp")).read()
+    head = "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1., 1.\n"
+    assert head in base
+    nodes = [l.split(",") for l in base[base.index("*NODE"):base.index("*ELEMENT")].splitlines()[1:]]
+    init = "*INITIAL CONDITIONS, TYPE=TEMPERATURE\n" + "".join("%s, %.17g\n" % (n[0], theta((float(n[1]), float(n[2])))) for n in nodes)
+    static = base.replace(head, init + "*STEP\n*STATIC\n1., 1.\n").replace("patch test, CPE4T", "patch test in a *STATIC step, CPE4T")
+    # *STATIC holds the temperatures: no *BOUNDARY on dof 11 there
+    static = "".join(l + "\n" for l in static.splitlines() if not (l.count(",") == 3 and l.split(",")[1].strip() == "11"))
+    write(name_static, static)
+    transient = base.replace(head, init + "*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT\n0.5, 1.\n")
+    write(name_transient, transient.replace("patch test, CPE4T", "patch test in a transient coupled step, CPE4T"))
+
+
 def fall(name):
     """The two blocks of patch_cpe4t.inp (4 elements tied to 3) falling freely under gravity (GRAV 1e4 along
     (1, -2)) from rest in an explicit step: u = g t^2 / 2 at every node, exact when the tie moves the secondary nodes'
@@ -217,6 +233,7 @@ def main():
     patch3d(2, 3, "patch_c3d8t.inp")
     bar(False, "bar_explicit_cpe4t.inp")
     bar(True, "bar_tied_explicit_cpe4t.inp")
+    steps("patch_static_cpe4t.inp", "patch_transient_cpe4t.inp")
     fall("fall_explicit_cpe4t.inp")
     bad()
 
