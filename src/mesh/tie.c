@@ -303,19 +303,29 @@ static PetscReal MeanFaceSize(const TslModel *g, PetscInt nf, const Face faces[]
   return nf ? sum / nf : 0;
 }
 
-/* One tie: the weights of each of its secondary nodes not tied before (tied[] marks them; a node of the main
- * surface is not tied to it), appended as terms (s, k, c_sk) to R. */
-static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Terms *R)
+/* What the ties gather before the rows are made (node positions of the whole model, rank 0): the projection of
+ * each secondary node (P, from the first tie that has the node: tie[p] its index, -1 for a node no tie holds),
+ * the mortar integrals of every secondary face of every tie (M), and the nodes' full int N_s (Dfull), so that a node
+ * on the secondary surfaces of two ties takes the integrals of all its faces. */
+typedef struct {
+  Terms      M, P;
+  PetscReal *Dfull;
+  PetscInt  *tie;
+} Gather;
+
+/* Tie ti: the projections of its secondary nodes that no earlier tie holds (ADJUST moves them), and the mortar
+ * integrals of its secondary faces. A node of both its surfaces is not tied by it. */
+static PetscErrorCode TieGather(TslModel *g, PetscInt ti, Gather *G)
 {
+  const TslTie     *t   = &g->ties[ti];
   const TslSurface *sec = &g->surfaces[TslModelFindSurface(g, t->secondary)], *mainsurf = &g->surfaces[TslModelFindSurface(g, t->main)];
   const PetscBool   revolves = g->nelem ? TslKinematicsRevolves(TslElementTypeGet(g->elem_type[0])->kin) : PETSC_FALSE;
   Face             *mf, *sf = NULL;
   TslContactBinGrid grid;
-  PetscInt         *snode, ns = 0, *cand = NULL, cap = 0, nc, *row;
-  char             *onmain, loc[PETSC_MAX_PATH_LEN + 32];
+  PetscInt         *snode, ns = 0, *cand = NULL, cap = 0, nc;
+  char             *onmain, *seen, loc[PETSC_MAX_PATH_LEN + 32];
   PetscReal         size, tol, X[3 * TSL_MAX_FACE_NODES], Xm[3 * TSL_MAX_FACE_NODES];
-  PetscReal        *Dsum, *Dfull;
-  Terms             M = {NULL, 0, 0}, P = {NULL, 0, 0};
+  size_t            m0 = G->M.n;
 
   PetscFunctionBeginUser;
   (void)TslLocString(g, t->loc, loc, sizeof(loc));
@@ -330,11 +340,10 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
     PetscCall(PetscFree(boxes));
   }
   PetscCall(PetscCalloc1(g->nnode, &onmain));
+  PetscCall(PetscCalloc1(g->nnode, &seen));
   for (PetscInt i = 0; i < mainsurf->n; i++)
     for (PetscInt a = 0; a < mf[i].nn; a++) onmain[mf[i].node[a]] = 1;
   /* the secondary nodes, each once */
-  PetscCall(PetscMalloc1(g->nnode, &row));
-  for (PetscInt p = 0; p < g->nnode; p++) row[p] = -1;
   if (sec->kind == TSL_SURFACE_ELEMENT) {
     PetscInt cnt = 0;
     PetscCall(SurfaceFaces(g, sec, &sf));
@@ -342,14 +351,14 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
     PetscCall(PetscMalloc1(cnt, &snode));
     for (PetscInt i = 0; i < sec->n; i++)
       for (PetscInt a = 0; a < sf[i].nn; a++)
-        if (row[sf[i].node[a]] < 0) row[sf[i].node[a]] = ns, snode[ns++] = sf[i].node[a];
+        if (!seen[sf[i].node[a]]) seen[sf[i].node[a]] = 1, snode[ns++] = sf[i].node[a];
   } else {
     PetscCall(PetscMalloc1(sec->n, &snode));
     for (PetscInt i = 0; i < sec->n; i++) {
       const PetscInt p = TslModelNodeIndex(g, sec->elem[i]);
       PetscCheck(p >= 0, PETSC_COMM_SELF, PETSC_ERR_USER_INPUT, "%s: node %" PetscInt_FMT " of surface %s is not defined", loc, sec->elem[i],
                  sec->name);
-      if (row[p] < 0) row[p] = ns, snode[ns++] = p;
+      if (!seen[p]) seen[p] = 1, snode[ns++] = p;
     }
   }
   /* projection of each node on the nearest main face within the tolerance: the dialect's test, ADJUST, and the
@@ -358,7 +367,7 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
     const PetscInt p = snode[i];
     PetscReal     *x = &g->node_xyz[3 * p], best = PETSC_MAX_REAL, bxi[2] = {0, 0}, bN[TSL_MAX_FACE_NODES], bp[3];
     PetscInt       bf = -1;
-    if (tied[p] || onmain[p]) continue;
+    if (G->tie[p] >= 0 || onmain[p]) continue;
     PetscCall(TslContactBinGridQueryGrow(grid, x, 0, &cap, &cand, &nc));
     for (PetscInt c = 0; c < nc; c++) {
       PetscReal xi[2], N[TSL_MAX_FACE_NODES], dist;
@@ -376,20 +385,19 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
       FacePoint(&mf[bf], Xm, bxi, bp, J, bN);
     }
     for (PetscInt k = 0; k < mf[bf].nn; k++)
-      if (bN[k] != 0) PetscCall(TermAdd(&P, p, mf[bf].node[k], bN[k]));
+      if (bN[k] != 0) PetscCall(TermAdd(&G->P, p, mf[bf].node[k], bN[k]));
+    G->tie[p] = ti;
     if (t->adjust)
       for (PetscInt d = 0; d < g->dim; d++) x[d] = bp[d];
   }
   /* mortar integrals over the secondary faces (after ADJUST: on the adjusted faces) */
-  PetscCall(PetscCalloc1(ns, &Dsum));
-  PetscCall(PetscCalloc1(ns, &Dfull));
   for (PetscInt i = 0; sf && i < sec->n; i++) {
     PetscReal A[TSL_MAX_FACE_NODES * TSL_MAX_FACE_NODES], D[TSL_MAX_FACE_NODES], box[6];
     if (g->dim == 3 && TslContactFace3Find(sf[i].fg->name) < 0) continue;
     if (g->dim == 3 && sf[i].fg->order > 1) continue; /* no dual basis: tri6, quad8 (projection weights) */
     FaceCoordinates(g, &sf[i], X);
     if (!DualBasis(&sf[i], X, revolves, A, D)) continue;
-    for (PetscInt a = 0; a < sf[i].nn; a++) Dfull[row[sf[i].node[a]]] += D[a];
+    for (PetscInt a = 0; a < sf[i].nn; a++) G->Dfull[sf[i].node[a]] += D[a];
     {
       PetscReal c[3], radius = 0;
       FaceBox(g, &sf[i], box); /* the faces whose inflated boxes come within its half diagonal of its centre */
@@ -398,57 +406,58 @@ static PetscErrorCode TieWeights(TslModel *g, const TslTie *t, char tied[], Term
     }
     for (PetscInt c = 0; c < nc; c++) {
       FaceCoordinates(g, &mf[cand[c]], Xm);
-      PetscCall(Overlap(g, &sf[i], X, A, &mf[cand[c]], Xm, tol, revolves, &M));
+      PetscCall(Overlap(g, &sf[i], X, A, &mf[cand[c]], Xm, tol, revolves, &G->M));
     }
   }
-  /* the rows: mortar where the node's faces meet the main surface for more than a trace, else the projection */
-  qsort(M.t, M.n, sizeof(Term), CompareTerm);
-  qsort(P.t, P.n, sizeof(Term), CompareTerm);
-  for (size_t k = 0; k < M.n; k++) Dsum[row[M.t[k].s]] += M.t[k].w;
-  {
-    size_t   im = 0, ip = 0;
-    PetscInt nmortar = 0, nproj = 0;
-    while (ip < P.n) {
-      const PetscInt s   = P.t[ip].s;
-      PetscReal      sum = Dsum[row[s]];
-      size_t         m0, m1, p1 = ip;
-      while (p1 < P.n && P.t[p1].s == s) p1++;
-      while (im < M.n && M.t[im].s < s) im++;
-      m0 = m1 = im;
-      while (m1 < M.n && M.t[m1].s == s) m1++;
-      if (m1 > m0 && sum >= 0.5 * Dfull[row[s]]) {
-        for (size_t k = m0; k < m1; k++) {
-          PetscReal c = M.t[k].w / sum;
-          /* merge repeated main nodes (sorted) */
-          while (k + 1 < m1 && M.t[k + 1].k == M.t[k].k) c += M.t[++k].w / sum;
-          if (PetscAbsReal(c) > 1e-13) PetscCall(TermAdd(R, s, M.t[k].k, c));
-        }
-        nmortar++;
-      } else {
-        for (size_t k = ip; k < p1; k++) PetscCall(TermAdd(R, s, P.t[k].k, P.t[k].w));
-        nproj++;
-      }
-      tied[s] = 1;
-      ip      = p1;
-      im      = m1;
-    }
-    PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                          "%s: %s%s%s %s to %s: %" PetscInt_FMT " secondary nodes tied (%" PetscInt_FMT " by the mortar weights, %" PetscInt_FMT
-                          " by projection), position tolerance %g\n",
-                          loc, t->from_pair ? "tied contact pair" : "*TIE", t->name[0] ? " " : "", t->name, sec->name, mainsurf->name,
-                          nmortar + nproj, nmortar, nproj, (double)tol));
-  }
-  PetscCall(PetscFree(M.t));
-  PetscCall(PetscFree(P.t));
-  PetscCall(PetscFree(Dsum));
-  PetscCall(PetscFree(Dfull));
-  PetscCall(PetscFree(row));
+  /* a node of both surfaces is one node: no integrals of this tie for it */
+  for (size_t k = m0; k < G->M.n; k++)
+    if (onmain[G->M.t[k].s]) G->M.t[k].w = 0;
   PetscCall(PetscFree(snode));
   PetscCall(PetscFree(cand));
   PetscCall(PetscFree(onmain));
+  PetscCall(PetscFree(seen));
   PetscCall(TslContactBinGridDestroy(&grid));
   PetscCall(PetscFree(mf));
   PetscCall(PetscFree(sf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The rows u_s = sum_k c_sk u_k of every tied node, in R (sorted by node): the mortar weights where the node's
+ * faces meet the main surfaces over at least half their weight (sum_k int Phi_s N_k >= int N_s / 2), normalised
+ * to sum to one; otherwise the projection. count[2 * ti + 0/1]: nodes of tie ti by mortar / by projection. */
+static PetscErrorCode TieRows(const TslModel *g, Gather *G, Terms *R, PetscInt count[])
+{
+  PetscReal *Dsum;
+  size_t     im = 0, ip = 0;
+
+  PetscFunctionBeginUser;
+  qsort(G->M.t, G->M.n, sizeof(Term), CompareTerm);
+  qsort(G->P.t, G->P.n, sizeof(Term), CompareTerm);
+  PetscCall(PetscCalloc1(g->nnode, &Dsum));
+  for (size_t k = 0; k < G->M.n; k++) Dsum[G->M.t[k].s] += G->M.t[k].w;
+  while (ip < G->P.n) {
+    const PetscInt  s   = G->P.t[ip].s;
+    const PetscReal sum = Dsum[s];
+    size_t          m0, m1, p1 = ip;
+    while (p1 < G->P.n && G->P.t[p1].s == s) p1++;
+    while (im < G->M.n && G->M.t[im].s < s) im++;
+    m0 = m1 = im;
+    while (m1 < G->M.n && G->M.t[m1].s == s) m1++;
+    if (m1 > m0 && G->Dfull[s] > 0 && sum >= 0.5 * G->Dfull[s]) {
+      for (size_t k = m0; k < m1; k++) {
+        PetscReal c = G->M.t[k].w / sum;
+        while (k + 1 < m1 && G->M.t[k + 1].k == G->M.t[k].k) c += G->M.t[++k].w / sum; /* repeated main nodes (sorted) */
+        if (PetscAbsReal(c) > 1e-13) PetscCall(TermAdd(R, s, G->M.t[k].k, c));
+      }
+      count[2 * G->tie[s]]++;
+    } else {
+      for (size_t k = ip; k < p1; k++) PetscCall(TermAdd(R, s, G->P.t[k].k, G->P.t[k].w));
+      count[2 * G->tie[s] + 1]++;
+    }
+    ip = p1;
+    im = m1;
+  }
+  PetscCall(PetscFree(Dsum));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -486,18 +495,34 @@ PetscErrorCode TslMeshTies(TslModel *g)
     for (PetscInt i = 0; i < nd; i++)
       if (p >= 0 && dofs[i] == g->equations[q].dof[0]) dep[p] |= (char)(1 << i);
   }
-  for (PetscInt ti = 0; ti < g->ntie; ti++) {
-    const TslTie *t = &g->ties[ti];
-    Terms         R = {NULL, 0, 0};
-    PetscCall(TieWeights(g, t, tied, &R));
-    (void)TslLocString(g, t->loc, loc, sizeof(loc));
+  {
+    Gather    G = {{NULL, 0, 0}, {NULL, 0, 0}, NULL, NULL};
+    Terms     R = {NULL, 0, 0};
+    PetscInt *count;
+    PetscCall(PetscCalloc1(g->nnode, &G.Dfull));
+    PetscCall(PetscMalloc1(g->nnode, &G.tie));
+    PetscCall(PetscCalloc1(2 * g->ntie, &count));
+    for (PetscInt p = 0; p < g->nnode; p++) G.tie[p] = -1;
+    for (PetscInt ti = 0; ti < g->ntie; ti++) PetscCall(TieGather(g, ti, &G));
+    PetscCall(TieRows(g, &G, &R, count));
+    for (PetscInt ti = 0; ti < g->ntie; ti++) {
+      const TslTie *t = &g->ties[ti];
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            "%s: %s%s%s, %s to %s: %" PetscInt_FMT " secondary nodes tied (%" PetscInt_FMT " by the mortar weights, %" PetscInt_FMT
+                            " by projection)\n",
+                            TslLocString(g, t->loc, loc, sizeof(loc)), t->from_pair ? "tied contact pair" : "*TIE", t->name[0] ? " " : "", t->name,
+                            t->secondary, t->main, count[2 * ti] + count[2 * ti + 1], count[2 * ti], count[2 * ti + 1]));
+    }
     for (size_t k0 = 0; k0 < R.n;) {
-      size_t k1 = k0;
-      while (k1 < R.n && R.t[k1].s == R.t[k0].s) k1++;
-      PetscCheck(!dep[R.t[k0].s], PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+      const PetscInt s  = R.t[k0].s;
+      size_t         k1 = k0;
+      while (k1 < R.n && R.t[k1].s == s) k1++;
+      tied[s] = 1;
+      (void)TslLocString(g, g->ties[G.tie[s]].loc, loc, sizeof(loc));
+      PetscCheck(!dep[s], PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                  "%s: node %" PetscInt_FMT
                  " of secondary surface %s is the dependent node of an *EQUATION as well; the dialect allows one constraint per dependent node",
-                 loc, g->node_id[R.t[k0].s], t->secondary);
+                 loc, g->node_id[s], g->ties[G.tie[s]].secondary);
       for (PetscInt i = 0; i < nd; i++) {
         TslEquation *e;
         PetscCall(GrowEquations(g, &cap));
@@ -505,11 +530,11 @@ PetscErrorCode TslMeshTies(TslModel *g)
         PetscCall(PetscMemzero(e, sizeof(*e)));
         e->n   = (PetscInt)(k1 - k0) + 1;
         e->tie = PETSC_TRUE;
-        e->loc = t->loc;
+        e->loc = g->ties[G.tie[s]].loc;
         PetscCall(PetscMalloc1(e->n, &e->node));
         PetscCall(PetscMalloc1(e->n, &e->dof));
         PetscCall(PetscMalloc1(e->n, &e->coef));
-        e->node[0] = g->node_id[R.t[k0].s], e->dof[0] = dofs[i], e->coef[0] = 1;
+        e->node[0] = g->node_id[s], e->dof[0] = dofs[i], e->coef[0] = 1;
         for (size_t k = k0; k < k1; k++) {
           const PetscInt j = 1 + (PetscInt)(k - k0);
           e->node[j] = g->node_id[R.t[k].k], e->dof[j] = dofs[i], e->coef[j] = -R.t[k].w;
@@ -518,6 +543,11 @@ PetscErrorCode TslMeshTies(TslModel *g)
       k0 = k1;
     }
     PetscCall(PetscFree(R.t));
+    PetscCall(PetscFree(G.M.t));
+    PetscCall(PetscFree(G.P.t));
+    PetscCall(PetscFree(G.Dfull));
+    PetscCall(PetscFree(G.tie));
+    PetscCall(PetscFree(count));
   }
   /* chains: a main node tied as a secondary node of another tie (or the dependent node of an *EQUATION) */
   for (PetscInt q = first; q < g->nequation; q++)

@@ -190,6 +190,18 @@ def steps(name_static, name_transient):
     write(name_transient, transient.replace("patch test, CPE4T", "patch test in a transient coupled step, CPE4T"))
 
 
+def shared(name):
+    """patch_cpe4t.inp with B's tied face split into two surfaces, each tied to A by its own *TIE: the node at
+    y = 0.5 is on both and is tied by the first (docs/keywords.md *TIE); the patch test still holds."""
+    base = open(os.path.join(OUT, "patch_cpe4t.inp")).read()
+    i, j = base.index("*SURFACE, NAME=SB"), base.index("*TIE")
+    faces = base[i:j].splitlines()[1:]
+    split = "*SURFACE, NAME=SB1, TYPE=ELEMENT\n" + "".join(l + "\n" for l in faces[:2])
+    split += "*SURFACE, NAME=SB2, TYPE=ELEMENT\n" + "".join(l + "\n" for l in faces[2:])
+    s = base[:i] + split + "*TIE, NAME=LOWER\nSB1, SA\n*TIE, NAME=UPPER\nSB2, SA\n" + base[base.index("*STEP"):]
+    write(name, s.replace("patch test, CPE4T", "patch test, two ties sharing a secondary node, CPE4T"))
+
+
 def fall(name):
     """The two blocks of patch_cpe4t.inp (4 elements tied to 3) falling freely under gravity (GRAV 1e4 along
     (1, -2)) from rest in an explicit step: u = g t^2 / 2 at every node, exact when the tie moves the secondary nodes'
@@ -214,6 +226,8 @@ def bad():
     write("bad_tie_undefined.inp", base.replace(tie, "*TIE, NAME=T1\nSB, NOSUCH\n"))
     write("bad_tie_two_lines.inp", base.replace(tie, "*TIE, NAME=T1\nSB, SA\nSA, SB\n"))
     write("bad_tie_cyclic.inp", base.replace(tie, "*TIE, NAME=T1, CYCLIC SYMMETRY\nSB, SA\n"))
+    # each surface tied to the other: A's nodes are main nodes of the first tie and secondary of the second
+    write("bad_tie_chain.inp", base.replace(tie, tie + "*TIE, NAME=T2\nSA, SB\n"))
     # node 10007 (B, on x = 1 at y = 0.25) is tied and also the dependent node of an *EQUATION
     write("bad_tie_equation.inp", base.replace(tie, tie + "*EQUATION\n2\n10007, 1, 1., 10008, 1, -1.\n"))
 
@@ -234,6 +248,7 @@ def main():
     bar(False, "bar_explicit_cpe4t.inp")
     bar(True, "bar_tied_explicit_cpe4t.inp")
     steps("patch_static_cpe4t.inp", "patch_transient_cpe4t.inp")
+    shared("patch_shared_cpe4t.inp")
     fall("fall_explicit_cpe4t.inp")
     bad()
 
