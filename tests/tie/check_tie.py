@@ -5,7 +5,8 @@ patch   two blocks meshed differently across x = 1 and tied there (docs/design.m
         outer boundary node given the linear fields of make_decks.py, u = A x and theta = t0 + g . x: the exact
         solution is those fields everywhere, with the uniform stress sigma = C : sym(A) (plane strain, E = 2e5,
         nu = 0.3, no expansion; axisymmetric (CAX4T): u_r = a r, u_z = d z, theta = t0 + g z, which equilibrium
-        and conduction about the axis allow with a uniform stress). Checks: U at every node against A x within 1e-8 of max |u|, NT within 1e-8 of the
+        and conduction about the axis allow with a uniform stress; C3D4T: uniaxial stress along x, theta = t0 + g x, the
+        secondary nodes on the outer faces, which carry no traction then, left to the tie). Checks: U at every node against A x within 1e-8 of max |u|, NT within 1e-8 of the
         temperature's range, every integration point's S against C : sym(A) within 1e-8 of max |sigma|, and the
         heat balance of the increment within 1e-8 of the heat crossing the body.
 bar     the explicit bar cut at x = 1 and tied (OTHER names the untied bar's output directory): U and NT at every
@@ -30,6 +31,8 @@ UY = (0.3e-3, -0.7e-3, 0.4e-3)
 UZ = (-0.1e-3, 0.2e-3, 0.6e-3)
 TH = (20.0, 10.0, 5.0, -3.0)
 UXA, UYA, THA = (1e-3, 0.0), (0.0, -0.7e-3), (20.0, 0.0, 5.0)
+UNI = ((1e-3, 0.0, 0.0), (0.0, -0.3e-3, 0.0), (0.0, 0.0, -0.3e-3))
+THU = (20.0, 10.0, 0.0, 0.0)
 E, NU = 200000.0, 0.3
 
 r = Result(sys.argv[1], sys.argv[2])
@@ -40,8 +43,9 @@ def patch():
     x = r.xyz
     dim = 3 if np.ptp(x[:, 2]) > 0 else 2
     axi = "cax" in sys.argv[2]  # u_r = a r: the hoop strain u_r / r = a is uniform too
-    A = np.array([UXA, UYA] if axi else [UX[:dim], UY[:dim], UZ[:dim]][:dim])
-    T = THA if axi else TH
+    uni = "c3d4t" in sys.argv[2]  # uniaxial stress along x: the secondary nodes on the outer faces are left to the tie
+    A = np.array([UXA, UYA] if axi else UNI if uni else [UX[:dim], UY[:dim], UZ[:dim]][:dim])
+    T = THA if axi else THU if uni else TH
     u_exact = x[:, :dim] @ A.T
     t_exact = T[0] + x[:, :dim] @ np.array(T[1:1 + dim])
     u = r.field("U")[:, :dim]

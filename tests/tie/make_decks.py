@@ -23,12 +23,17 @@ TH = (20.0, 10.0, 5.0, -3.0)  # theta = t0 + g . x
 UXA, UYA, THA = (1e-3, 0.0), (0.0, -0.7e-3), (20.0, 0.0, 5.0)
 
 
-def ux(p, axi=False):
-    return [sum(c * x for c, x in zip(U, p)) for U in ((UXA, UYA) if axi else (UX, UY, UZ))[: len(p)]]
+# uniaxial stress along x (the tet deck): no traction on the faces y, z = 0, 1 and no flux through them
+UNI = ((1e-3, 0.0, 0.0), (0.0, -0.3e-3, 0.0), (0.0, 0.0, -0.3e-3))
+THU = (20.0, 10.0, 0.0, 0.0)
 
 
-def theta(p, axi=False):
-    T = THA if axi else TH
+def ux(p, axi=False, uni=False):
+    return [sum(c * x for c, x in zip(U, p)) for U in (UNI if uni else (UXA, UYA) if axi else (UX, UY, UZ))[: len(p)]]
+
+
+def theta(p, axi=False, uni=False):
+    T = THU if uni else THA if axi else TH
     return T[0] + sum(g * x for g, x in zip(T[1:], p))
 
 
@@ -143,6 +148,65 @@ def patch3d(na, nb, name):
     write(name, s)
 
 
+def tets3d(x0, n, n0, e0):
+    """[x0, x0 + 1] x [0, 1]^2 in n^3 cubes of 6 C3D4T tetrahedra each (Kuhn's split along a main diagonal)."""
+    nodes, ids, elems = {}, {}, []
+    for k in range(n + 1):
+        for j in range(n + 1):
+            for i in range(n + 1):
+                ids[i, j, k] = n0 + len(ids)
+                nodes[ids[i, j, k]] = (x0 + i / n, j / n, k / n)
+    paths = [(0, 1, 2), (0, 2, 1), (1, 0, 2), (1, 2, 0), (2, 0, 1), (2, 1, 0)]
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                for path in paths:
+                    c = [0, 0, 0]
+                    corners = [tuple(c)]
+                    for axis in path:
+                        c[axis] += 1
+                        corners.append(tuple(c))
+                    t = [ids[i + a, j + b, k + d] for a, b, d in corners]
+                    p = [nodes[q] for q in t]
+                    u = [[p[m][r] - p[0][r] for r in range(3)] for m in (1, 2, 3)]
+                    vol = (u[0][0] * (u[1][1] * u[2][2] - u[1][2] * u[2][1]) - u[0][1] * (u[1][0] * u[2][2] - u[1][2] * u[2][0])
+                           + u[0][2] * (u[1][0] * u[2][1] - u[1][1] * u[2][0]))
+                    if vol < 0:
+                        t[1], t[2] = t[2], t[1]
+                    elems.append((e0 + len(elems), t))
+    return nodes, elems
+
+
+def patch_tets(na, nb, name):
+    """Block A of na^2 C3D8T across x = 1 tied as the main surface to block B of C3D4T (nb^3 cubes split in six): the
+    secondary faces are triangles (tri3) cut by the hexahedra's quadrilaterals."""
+    nA, eA = block3d(0.0, 1, na, na, 1, 1)
+    nB, eB = tets3d(1.0, nb, 10001, 1001)
+    nodes = {**nA, **nB}
+    sA = [(e[0], "S4") for e in eA]
+    faces = {"S1": (0, 1, 2), "S2": (0, 3, 1), "S3": (1, 3, 2), "S4": (2, 3, 0)}
+    sB = [(e[0], f) for e in eB for f, q in faces.items() if all(abs(nodes[e[1][m]][0] - 1.0) < 1e-12 for m in q)]
+    # uniaxial stress along x: the secondary nodes on the outer boundary are left to the tie (their outer faces carry
+    # no traction and no flux). A *BOUNDARY there would win over the tie and take their share of the interface's
+    # traction to the support, which on triangles reaches the inner main nodes too (docs/keywords.md *TIE; with the
+    # tensor-product faces of the other decks that share is zero)
+    outer = [n for n, p in sorted(nodes.items()) if (p[0] in (0.0, 2.0) or p[1] in (0.0, 1.0) or p[2] in (0.0, 1.0)) and not (n > 10000 and p[0] == 1.0)]
+    s = "*HEADING\nTIE patch test, C3D4T (tri3 faces, secondary) tied to C3D8T (%d x %d) across x = 1\n" % (na, na)
+    s += "*NODE, NSET=NALL\n" + "".join("%d, %.17g, %.17g, %.17g\n" % (n, p[0], p[1], p[2]) for n, p in sorted(nodes.items()))
+    s += "*ELEMENT, TYPE=C3D8T, ELSET=A\n" + "".join("%d, %s\n" % (e[0], ", ".join(map(str, e[1]))) for e in eA)
+    s += "*ELEMENT, TYPE=C3D4T, ELSET=B\n" + "".join("%d, %s\n" % (e[0], ", ".join(map(str, e[1]))) for e in eB)
+    s += "*SOLID SECTION, ELSET=A, MATERIAL=STEEL\n*SOLID SECTION, ELSET=B, MATERIAL=STEEL\n" + MATERIAL
+    s += "*SURFACE, NAME=SA, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sA)
+    s += "*SURFACE, NAME=SB, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sB)
+    s += "*TIE, NAME=T1\nSB, SA\n"
+    s += "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1., 1.\n*BOUNDARY\n"
+    for n in outer:
+        u = ux(nodes[n], uni=True)
+        s += "".join("%d, %d, %d, %.17g\n" % (n, d + 1, d + 1, u[d]) for d in range(3)) + "%d, 11, 11, %.17g\n" % (n, theta(nodes[n], uni=True))
+    s += "*NODE FILE\nU, NT, RFL\n*EL FILE\nS\n*END STEP\n"
+    write(name, s)
+
+
 def bar(tied, name):
     """A bar [0, 2] x [0, 0.25] of CPE4T, 8 elements along it, 1 across; tied: the same mesh cut at x = 1, its right
     half's nodes at x = 1 (ids + 10000) tied to the left half's face. Explicit: every node starts at v_x = 100 and
@@ -245,6 +309,7 @@ def main():
     patch2d(False, 3, 4, "*TIE, NAME=T1\nSB, SA\n", "patch_cax4t.inp", "TIE patch test, CAX4T, 4 elements tied to 3 across r = 1",
             axi=True)
     patch3d(2, 3, "patch_c3d8t.inp")
+    patch_tets(2, 3, "patch_c3d4t.inp")
     bar(False, "bar_explicit_cpe4t.inp")
     bar(True, "bar_tied_explicit_cpe4t.inp")
     steps("patch_static_cpe4t.inp", "patch_transient_cpe4t.inp")
