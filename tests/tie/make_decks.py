@@ -268,13 +268,15 @@ def shared(name):
 
 def fall(name):
     """The two blocks of patch_cpe4t.inp (4 elements tied to 3) falling freely under gravity (GRAV 1e4 along
-    (1, -2)) from rest in an explicit step: u = g t^2 / 2 at every node, exact when the tie moves the secondary nodes'
-    mass with their (gravity) force, as the lumped T^T M T and T^T F do."""
+    (1, -2)) from rest in an explicit step, and heated by a uniform body flux: u = g t^2 / 2 and theta = 20 + q t / (rho c)
+    at every node, exact when the tie moves the secondary nodes' mass and capacity with their force and heat, as the
+    lumped T^T M T and T^T F do."""
     base = open(os.path.join(OUT, "patch_cpe4t.inp")).read()
     model = base[: base.index("*STEP")]
     s = model.replace("TIE patch test, CPE4T", "TIE free fall, explicit, CPE4T") + "*ELSET, ELSET=ALL\nA, B\n"
     s += "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 20.\n"
     s += "*STEP\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n, 1.e-5\n*DLOAD\nALL, GRAV, 10000., 1., -2., 0.\n"
+    s += "*DFLUX\nALL, BF, 390.\n"  # rho c = 3.9e-3: theta rises at 1e5 per unit time everywhere
     s += "*OUTPUT, FIELD, NUMBER INTERVAL=2\n*NODE OUTPUT\nU, NT\n*END STEP\n"
     write(name, s)
 
