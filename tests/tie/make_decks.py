@@ -148,6 +148,49 @@ def patch3d(na, nb, name):
     write(name, s)
 
 
+def block3d20(x0, n, n0, e0):
+    """[x0, x0 + 1] x [0, 1]^2 in n^3 C3D20T (the dialect's node order: corners, then the midsides of 1-2, 2-3, 3-4,
+    4-1, 5-6, 6-7, 7-8, 8-5, 1-5, 2-6, 3-7, 4-8)."""
+    nodes, ids, elems = {}, {}, []
+    for k in range(2 * n + 1):
+        for j in range(2 * n + 1):
+            for i in range(2 * n + 1):
+                if (i % 2) + (j % 2) + (k % 2) > 1:
+                    continue
+                ids[i, j, k] = n0 + len(ids)
+                nodes[ids[i, j, k]] = (x0 + i / (2 * n), j / (2 * n), k / (2 * n))
+    cor = [(0, 0, 0), (2, 0, 0), (2, 2, 0), (0, 2, 0), (0, 0, 2), (2, 0, 2), (2, 2, 2), (0, 2, 2)]
+    edges = [(0, 1), (1, 2), (2, 3), (3, 0), (4, 5), (5, 6), (6, 7), (7, 4), (0, 4), (1, 5), (2, 6), (3, 7)]
+    for k in range(n):
+        for j in range(n):
+            for i in range(n):
+                pts = cor + [tuple((cor[a][m] + cor[b][m]) // 2 for m in range(3)) for a, b in edges]
+                elems.append((e0 + len(elems), [ids[2 * i + p[0], 2 * j + p[1], 2 * k + p[2]] for p in pts]))
+    return nodes, elems
+
+
+def patch20(name):
+    """C3D20T blocks, 2 x 2 on both sides of x = 1 (matching: the quad8 faces have no dual basis, so the nodes take
+    the projection, which is exact on matching faces), every outer node given the linear fields."""
+    nA, eA = block3d20(0.0, 2, 1, 1)
+    nB, eB = block3d20(1.0, 2, 10001, 1001)
+    nodes = {**nA, **nB}
+    sA = [(e[0], "S4") for e in eA if nodes[e[1][1]][0] == 1.0]
+    sB = [(e[0], "S6") for e in eB if nodes[e[1][0]][0] == 1.0]
+    outer = [n for n, p in sorted(nodes.items()) if p[0] in (0.0, 2.0) or p[1] in (0.0, 1.0) or p[2] in (0.0, 1.0)]
+    s = "*HEADING\nTIE patch test, C3D20T, matching quad8 faces across x = 1 (projection weights)\n"
+    s += mesh_text("C3D20T", nodes, eA, eB)
+    s += "*SURFACE, NAME=SA, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sA)
+    s += "*SURFACE, NAME=SB, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sB)
+    s += "*TIE, NAME=T1\nSB, SA\n"
+    s += "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1., 1.\n*BOUNDARY\n"
+    for n in outer:
+        u = ux(nodes[n])
+        s += "".join("%d, %d, %d, %.17g\n" % (n, d + 1, d + 1, u[d]) for d in range(3)) + "%d, 11, 11, %.17g\n" % (n, theta(nodes[n]))
+    s += "*NODE FILE\nU, NT, RFL\n*EL FILE\nS\n*END STEP\n"
+    write(name, s)
+
+
 def tets3d(x0, n, n0, e0):
     """[x0, x0 + 1] x [0, 1]^2 in n^3 cubes of 6 C3D4T tetrahedra each (Kuhn's split along a main diagonal)."""
     nodes, ids, elems = {}, {}, []
@@ -312,6 +355,7 @@ def main():
             axi=True)
     patch3d(2, 3, "patch_c3d8t.inp")
     patch_tets(2, 3, "patch_c3d4t.inp")
+    patch20("patch_c3d20t.inp")
     bar(False, "bar_explicit_cpe4t.inp")
     bar(True, "bar_tied_explicit_cpe4t.inp")
     steps("patch_static_cpe4t.inp", "patch_transient_cpe4t.inp")
