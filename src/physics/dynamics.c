@@ -980,26 +980,28 @@ PetscErrorCode TslProblemConstrainedMask(TslProblem p, Vec mask)
  * (sum_k c_sk = 1), and T^T F is F_k + c_sk F_s; the secondary dof then follows its main dofs. */
 PetscErrorCode TslProblemTieMove(TslProblem p, Vec V)
 {
-  PetscScalar *v;
-  PetscInt     n = 0;
+  PetscScalar *v, *moved;
+  PetscInt    *from, n = 0;
 
   PetscFunctionBeginUser;
   if (!p->m->ntie) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscMalloc2(p->nown * p->ndof, &moved, p->nown * p->ndof, &from));
   PetscCall(VecGetArray(V, &v));
   for (PetscInt d = 0; d < p->nown * p->ndof; d++) {
-    const PetscInt q = p->dep[d];
-    if (q < 0 || p->bc[d].active || p->pinned[d] || v[d] == 0) continue;
-    const TslEquation *eq = &p->m->equations[q];
-    for (PetscInt t = 1; t < eq->n; t++) {
-      const PetscScalar w = -eq->coef[t] / eq->coef[0] * v[d];
-      PetscCall(VecSetValues(V, 1, &eq->gdof[t], &w, ADD_VALUES)); /* stashed: applied at the assembly below */
-    }
+    if (p->dep[d] < 0 || p->bc[d].active || p->pinned[d] || v[d] == 0) continue;
+    moved[n] = v[d], from[n++] = d;
     v[d] = 0;
-    n++;
   }
   PetscCall(VecRestoreArray(V, &v));
+  for (PetscInt i = 0; i < n; i++) { /* stashed where the main dof is another rank's: applied at the assembly below */
+    const TslEquation *eq = &p->m->equations[p->dep[from[i]]];
+    for (PetscInt t = 1; t < eq->n; t++) {
+      const PetscScalar w = -eq->coef[t] / eq->coef[0] * moved[i];
+      PetscCall(VecSetValues(V, 1, &eq->gdof[t], &w, ADD_VALUES));
+    }
+  }
+  PetscCall(PetscFree2(moved, from));
   PetscCall(VecAssemblyBegin(V));
   PetscCall(VecAssemblyEnd(V));
-  (void)n;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
