@@ -128,6 +128,18 @@ def patch2d(quad, na, nb, tie_text, name, title, axi=False):
     write(name, s)
 
 
+def tie3d(nodes, sA, sB, outer, uni=False):
+    """The 3D decks' surfaces, *TIE (SB to SA) and steady step with the linear fields at the outer nodes."""
+    s = "*SURFACE, NAME=SA, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sA)
+    s += "*SURFACE, NAME=SB, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sB)
+    s += "*TIE, NAME=T1\nSB, SA\n"
+    s += "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1., 1.\n*BOUNDARY\n"
+    for n in outer:
+        u = ux(nodes[n], uni=uni)
+        s += "".join("%d, %d, %d, %.17g\n" % (n, d + 1, d + 1, u[d]) for d in range(3)) + "%d, 11, 11, %.17g\n" % (n, theta(nodes[n], uni=uni))
+    return s + "*NODE FILE\nU, NT, RFL\n*EL FILE\nS\n*END STEP\n"
+
+
 def patch3d(na, nb, name):
     nA, eA = block3d(0.0, 1, na, na, 1, 1)
     nB, eB = block3d(1.0, 1, nb, nb, 10001, 1001)
@@ -137,15 +149,7 @@ def patch3d(na, nb, name):
     outer = [n for n, p in sorted(nodes.items()) if p[0] in (0.0, 2.0) or p[1] in (0.0, 1.0) or p[2] in (0.0, 1.0)]
     s = "*HEADING\nTIE patch test, C3D8T, %d x %d elements tied to %d x %d across x = 1\n" % (nb, nb, na, na)
     s += mesh_text("C3D8T", nodes, eA, eB)
-    s += "*SURFACE, NAME=SA, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sA)
-    s += "*SURFACE, NAME=SB, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sB)
-    s += "*TIE, NAME=T1\nSB, SA\n"
-    s += "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1., 1.\n*BOUNDARY\n"
-    for n in outer:
-        u = ux(nodes[n])
-        s += "".join("%d, %d, %d, %.17g\n" % (n, d + 1, d + 1, u[d]) for d in range(3)) + "%d, 11, 11, %.17g\n" % (n, theta(nodes[n]))
-    s += "*NODE FILE\nU, NT, RFL\n*EL FILE\nS\n*END STEP\n"
-    write(name, s)
+    write(name, s + tie3d(nodes, sA, sB, outer))
 
 
 def block3d20(x0, n, n0, e0):
@@ -180,15 +184,7 @@ def patch20(name):
     outer = [n for n, p in sorted(nodes.items()) if p[0] in (0.0, 2.0) or p[1] in (0.0, 1.0) or p[2] in (0.0, 1.0)]
     s = "*HEADING\nTIE patch test, C3D20T, matching quad8 faces across x = 1 (projection weights)\n"
     s += mesh_text("C3D20T", nodes, eA, eB)
-    s += "*SURFACE, NAME=SA, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sA)
-    s += "*SURFACE, NAME=SB, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sB)
-    s += "*TIE, NAME=T1\nSB, SA\n"
-    s += "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1., 1.\n*BOUNDARY\n"
-    for n in outer:
-        u = ux(nodes[n])
-        s += "".join("%d, %d, %d, %.17g\n" % (n, d + 1, d + 1, u[d]) for d in range(3)) + "%d, 11, 11, %.17g\n" % (n, theta(nodes[n]))
-    s += "*NODE FILE\nU, NT, RFL\n*EL FILE\nS\n*END STEP\n"
-    write(name, s)
+    write(name, s + tie3d(nodes, sA, sB, outer))
 
 
 def tets3d(x0, n, n0, e0):
@@ -239,15 +235,7 @@ def patch_tets(na, nb, name):
     s += "*ELEMENT, TYPE=C3D8T, ELSET=A\n" + "".join("%d, %s\n" % (e[0], ", ".join(map(str, e[1]))) for e in eA)
     s += "*ELEMENT, TYPE=C3D4T, ELSET=B\n" + "".join("%d, %s\n" % (e[0], ", ".join(map(str, e[1]))) for e in eB)
     s += "*SOLID SECTION, ELSET=A, MATERIAL=STEEL\n*SOLID SECTION, ELSET=B, MATERIAL=STEEL\n" + MATERIAL
-    s += "*SURFACE, NAME=SA, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sA)
-    s += "*SURFACE, NAME=SB, TYPE=ELEMENT\n" + "".join("%d, %s\n" % f for f in sB)
-    s += "*TIE, NAME=T1\nSB, SA\n"
-    s += "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n1., 1.\n*BOUNDARY\n"
-    for n in outer:
-        u = ux(nodes[n], uni=True)
-        s += "".join("%d, %d, %d, %.17g\n" % (n, d + 1, d + 1, u[d]) for d in range(3)) + "%d, 11, 11, %.17g\n" % (n, theta(nodes[n], uni=True))
-    s += "*NODE FILE\nU, NT, RFL\n*EL FILE\nS\n*END STEP\n"
-    write(name, s)
+    write(name, s + tie3d(nodes, sA, sB, outer, uni=True))
 
 
 def bar(tied, name):
