@@ -10,6 +10,12 @@
 #pragma once
 #include <thermoslide/model.h>
 
+/* Rank 0, the whole model: every tie (model.h TslTie) as equations (TslEquation with tie set), one per
+ * secondary node and dof, u_s - sum_k c_sk u_k = 0 with the dual-mortar weights of src/mesh/tie.c; ADJUST
+ * moves the secondary nodes onto the main surface first. Called by TslMeshDistribute before partitioning, so
+ * that the equations' closure brings every term to the ranks that need it. User errors name the tie's line. */
+PetscErrorCode TslMeshTies(TslModel *g);
+
 /* Collective. On rank 0, *global is the model read from the deck; it is destroyed (and nulled) here,
  * other ranks pass NULL. Every rank receives its local model in *local.
  * Options: -tsl_partition metis|axis_x|axis_y|axis_z  (axis_*: slabs by element centroid, to force

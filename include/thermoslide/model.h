@@ -141,8 +141,22 @@ typedef struct {
   PetscInt  *node, *dof;
   PetscReal *coef;
   PetscInt  *gdof; /* NULL until distributed */
+  PetscBool  tie;  /* generated from a *TIE (src/mesh/tie.c): allowed in explicit steps, where it moves mass and force */
   TslLoc     loc;
 } TslEquation;
+
+/* *TIE, or a *CONTACT PAIR that is TIED or whose interaction has PRESSURE-OVERCLOSURE=TIED: every node of the
+ * secondary surface follows the main surface, u_s = sum_k c_sk u_k for each displacement dof and the
+ * temperature (docs/keywords.md "*TIE", docs/design.md "Ties"). The mesh module turns each tie into
+ * equations on rank 0 before partitioning (TslMeshTies); after that a tie is only a record. */
+typedef struct {
+  char      name[TSL_NAME_LEN];
+  char      secondary[TSL_NAME_LEN], main[TSL_NAME_LEN];
+  PetscReal tolerance; /* POSITION TOLERANCE=; 0: the default, 2.5 % of the mean main face size */
+  PetscBool adjust;    /* ADJUST=YES (the default): secondary nodes moved onto the main surface */
+  PetscBool from_pair; /* a tied *CONTACT PAIR (for messages) */
+  TslLoc    loc;       /* the *TIE line, or a tied pair's data line */
+} TslTie;
 
 typedef enum {
   TSL_LOAD_BOUNDARY = 0, /* *BOUNDARY: prescribed dofs dof_first..dof_last = value */
@@ -212,6 +226,7 @@ typedef struct {
   PetscBool             given;
   TslContactEnforcement enforcement;
   PetscReal             penalty_stiffness;
+  PetscBool             tied; /* PRESSURE-OVERCLOSURE=TIED: its pairs become ties (TslTie); the slope is read and not used */
   TslLoc                loc;
 } TslSurfaceBehavior;
 
@@ -458,9 +473,10 @@ typedef struct {
   TslAmplitude          *amplitudes;
   TslEquation           *equations;
 
-  PetscInt        ninteraction, npair;
+  PetscInt        ninteraction, npair, ntie;
   TslInteraction *interactions;
   TslContactPair *pairs;
+  TslTie         *ties;
 
   PetscBool has_absolute_zero, has_stefan_boltzmann;
   PetscReal absolute_zero, stefan_boltzmann; /* *PHYSICAL CONSTANTS */

@@ -232,8 +232,13 @@ PetscErrorCode TslProblemLumpedMass(TslProblem prob, const PetscReal scale[], Ve
  * 2 / lambda_max, from the largest eigenvalues of M^-1 K_uu and C^-1 K_thth of the element (no global
  * eigenvalue exceeds the largest element one). dt_heat is PETSC_MAX_REAL for an element without conduction. */
 PetscErrorCode TslProblemStableIncrements(TslProblem prob, PetscReal dt_mech[], PetscReal dt_heat[]);
-/* 1 at the owned dofs held by a prescribed value or pinned (slots a kinematics does not use), 0 elsewhere. */
+/* 1 at the owned dofs held by a prescribed value, pinned (slots a kinematics does not use) or tied (a tie's
+ * secondary dof: TslProblemApplyPrescribed sets it from its main dofs), 0 elsewhere. */
 PetscErrorCode TslProblemConstrainedMask(TslProblem prob, Vec mask);
+/* Explicit steps with ties (docs/explicit.md, "Ties"): moves each owned tie-secondary entry of a lumped mass or
+ * force vector V (global, owned entries complete) to its main dofs with the tie's weights, V_k += c_sk V_s, and
+ * zeroes it; a secondary dof under a *BOUNDARY keeps its own. Collective; nothing to do without ties. */
+PetscErrorCode TslProblemTieMove(TslProblem prob, Vec V);
 
 /* Rank 0, on the whole model before distribution: every body has its rigid-body modes removed by
  * prescribed displacements in every step, and a prescribed temperature or film in steady-state steps.

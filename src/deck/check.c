@@ -664,6 +664,50 @@ static PetscErrorCode CheckContactPair(TslModel *m, TslContactPair *p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* Pairs whose interaction has PRESSURE-OVERCLOSURE=TIED become ties (TslTie, at the pair's data line), as a
+ * *CONTACT PAIR, TIED does when it is read: the interface is tied, its interaction's laws do not apply. */
+static PetscErrorCode TiedPairs(TslModel *m)
+{
+  PetscInt k = 0;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < m->npair; i++) {
+    const TslContactPair *p = &m->pairs[i];
+    if (!m->interactions[p->interaction_index].behavior.tied) {
+      m->pairs[k++] = m->pairs[i];
+      continue;
+    }
+    PetscCall(TslDeckGrow(&m->ties, sizeof(TslTie), m->ntie));
+    TslTie *t = &m->ties[m->ntie++];
+    PetscCall(PetscMemzero(t, sizeof(*t)));
+    PetscCall(PetscStrncpy(t->secondary, p->secondary, sizeof(t->secondary)));
+    PetscCall(PetscStrncpy(t->main, p->main, sizeof(t->main)));
+    t->adjust    = (PetscBool)(p->adjust_given && (p->adjust > 0 || p->adjust_set[0]));
+    t->from_pair = PETSC_TRUE;
+    t->loc       = p->loc;
+  }
+  m->npair = k;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A tie's surfaces: defined, distinct, the main one of element faces (the dialect's rule; the secondary may be
+ * a node surface). */
+static PetscErrorCode CheckTie(TslModel *m, const TslTie *t)
+{
+  PetscInt s, mn;
+
+  PetscFunctionBeginUser;
+  s  = TslModelFindSurface(m, t->secondary);
+  mn = TslModelFindSurface(m, t->main);
+  CHECK(s >= 0, t->loc, "%s: undefined surface %s", t->from_pair ? "tied contact pair" : "*TIE", t->secondary);
+  CHECK(mn >= 0, t->loc, "%s: undefined surface %s", t->from_pair ? "tied contact pair" : "*TIE", t->main);
+  CHECK(s != mn, t->loc, "%s: the secondary and the main surface are both %s", t->from_pair ? "tied contact pair" : "*TIE", t->main);
+  CHECK(m->surfaces[mn].kind == TSL_SURFACE_ELEMENT, t->loc,
+        "%s: main surface %s must be an element surface (TYPE=ELEMENT); node surfaces can only be secondary", t->from_pair ? "tied contact pair" : "*TIE",
+        t->main);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* The reference node of a generalized plane strain section (REF NODE=): a defined node that no element
  * uses; position in the model, or -1 when the section has none. */
 static PetscErrorCode SectionReferenceNode(TslModel *m, const TslSection *sec, const char *uses, PetscInt *pos)
@@ -772,6 +816,8 @@ PetscErrorCode TslModelCheck(TslModel *m)
   }
   for (PetscInt i = 0; i < m->ninteraction; i++) PetscCall(CheckInteraction(m, &m->interactions[i]));
   for (PetscInt i = 0; i < m->npair; i++) PetscCall(CheckContactPair(m, &m->pairs[i]));
+  PetscCall(TiedPairs(m));
+  for (PetscInt i = 0; i < m->ntie; i++) PetscCall(CheckTie(m, &m->ties[i]));
   PetscCall(CheckSteps(m));
   PetscCall(AttachReferenceNodes(m));
   PetscFunctionReturn(PETSC_SUCCESS);

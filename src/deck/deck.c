@@ -1823,8 +1823,22 @@ static PetscErrorCode KwSurfaceBehavior(Deck *d, const DeckKeyword *kw)
   PetscFunctionBeginUser;
   (void)kw;
   PetscCall(InteractionLaw(d, &b->given, &b->loc));
-  USER_CHECK(!po || !strcmp(po, "HARD") || !strcmp(po, "LINEAR"),
-             LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=%s is not supported yet (HARD or LINEAR)", KLOC(d), po);
+  USER_CHECK(!po || !strcmp(po, "HARD") || !strcmp(po, "LINEAR") || !strcmp(po, "TIED"),
+             LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=%s is not supported yet (HARD, LINEAR or TIED)", KLOC(d), po);
+  if (po && !strcmp(po, "TIED")) {
+    /* the dialect's tied penalty contact (slope K, with a stick slope on *FRICTION) is enforced exactly here: the
+     * interaction's pairs become ties (TslTie), so the slope line is read and not used */
+    USER_CHECK(!penalty && !auglag, LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED takes neither PENALTY nor AUGMENTED LAGRANGE", KLOC(d));
+    b->tied = PETSC_TRUE;
+    PetscCall(DataLine(d, 0, &got));
+    if (got) {
+      USER_CHECK(d->nfield == 1, LOC_FMT "*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=TIED data line: the slope of the pressure-overclosure relation", DLOC(d));
+      PetscCall(FieldReal(d, 0, "the slope of the pressure-overclosure relation", &b->penalty_stiffness));
+      USER_CHECK(b->penalty_stiffness > 0, LOC_FMT "the slope of the pressure-overclosure relation must be positive", DLOC(d));
+      PetscCall(NoMoreRows(d, "SURFACE BEHAVIOR", "a second data line"));
+    }
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   USER_CHECK(!(penalty && auglag), LOC_FMT "*SURFACE BEHAVIOR: PENALTY and AUGMENTED LAGRANGE exclude each other", KLOC(d));
   USER_CHECK(!Param(d, "DIRECT"), LOC_FMT "*SURFACE BEHAVIOR, DIRECT is not supported (use PENALTY or AUGMENTED LAGRANGE)", KLOC(d));
   USER_CHECK(!Param(d, "NO SEPARATION"), LOC_FMT "*SURFACE BEHAVIOR, NO SEPARATION is not supported yet", KLOC(d));
@@ -2011,6 +2025,59 @@ static PetscErrorCode KwGapHeatGeneration(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The data lines of a *TIE (one: the dialect ties one secondary surface to one main surface) or of a tied
+ * *CONTACT PAIR (one or more): secondary surface, main surface. */
+static PetscErrorCode TieLines(Deck *d, PetscBool pair, PetscReal tolerance, PetscBool adjust)
+{
+  TslModel  *m     = d->m;
+  PetscInt   first = m->ntie;
+  PetscBool  got;
+  const char *kwname = pair ? "*CONTACT PAIR, TIED" : "*TIE", *name = Param(d, "NAME");
+
+  PetscFunctionBeginUser;
+  for (;;) {
+    TslTie *t;
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    USER_CHECK(pair || m->ntie == first, LOC_FMT "*TIE takes one data line (secondary surface, main surface); give a second *TIE for another", DLOC(d));
+    USER_CHECK(d->nfield == 2 && d->field[0][0] && d->field[1][0], LOC_FMT "%s data line needs: secondary surface, main surface", DLOC(d), kwname);
+    PetscCall(TslDeckGrow(&m->ties, sizeof(TslTie), m->ntie));
+    t = &m->ties[m->ntie++];
+    PetscCall(PetscMemzero(t, sizeof(*t)));
+    t->loc       = pair ? d->loc : d->kwloc; /* a pair's errors name its data line (as contact's do), a *TIE's its keyword */
+    t->tolerance = tolerance;
+    t->adjust    = adjust;
+    t->from_pair = pair;
+    if (name) PetscCall(CopyName(d, d->kwloc, t->name, name));
+    PetscCall(CopyName(d, d->loc, t->secondary, d->field[0]));
+    PetscCall(CopyName(d, d->loc, t->main, d->field[1]));
+  }
+  USER_CHECK(m->ntie > first, LOC_FMT "%s needs a data line: secondary surface, main surface", KLOC(d), kwname);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *TIE: POSITION TOLERANCE (the dialect's default when absent or below 1e-10: 2.5 % of a typical element size),
+ * ADJUST=YES|NO (Abaqus's parameter, default YES), NAME; CalculiX's CYCLIC SYMMETRY, MULTISTAGE and the fluid ties
+ * are other constraints, refused. */
+static PetscErrorCode KwTie(Deck *d, const DeckKeyword *kw)
+{
+  PetscReal   tol = 0;
+  char        abuf[16];
+  const char *adjust = ParamUpper(d, "ADJUST", abuf, sizeof(abuf));
+  const char *other[] = {"CYCLIC SYMMETRY", "MULTISTAGE", "FLUID PERIODIC", "FLUID CYCLIC"};
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  for (size_t i = 0; i < sizeof(other) / sizeof(other[0]); i++)
+    USER_CHECK(!Param(d, other[i]), LOC_FMT "*TIE, %s is not supported (only the tie of adjacent surfaces)", KLOC(d), other[i]);
+  USER_CHECK(!adjust || !strcmp(adjust, "YES") || !strcmp(adjust, "NO"), LOC_FMT "*TIE: ADJUST=%s (YES or NO)", KLOC(d), adjust);
+  PetscCall(ParamReal(d, "POSITION TOLERANCE", &tol, NULL));
+  USER_CHECK(tol >= 0, LOC_FMT "*TIE: POSITION TOLERANCE must not be negative", KLOC(d));
+  if (tol < 1e-10) tol = 0; /* the dialect: the default below 1e-10 */
+  PetscCall(TieLines(d, PETSC_FALSE, tol, (PetscBool)(!adjust || !strcmp(adjust, "YES"))));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw)
 {
   TslModel      *m = d->m;
@@ -2030,7 +2097,12 @@ static PetscErrorCode KwContactPair(Deck *d, const DeckKeyword *kw)
   USER_CHECK(!type || !strcmp(type, "NODE TO SURFACE") || !strcmp(type, "SURFACE TO SURFACE"),
              LOC_FMT "*CONTACT PAIR, TYPE=%s is not supported (NODE TO SURFACE or SURFACE TO SURFACE)", KLOC(d), type);
   proto.type = (type && !strcmp(type, "SURFACE TO SURFACE")) ? TSL_CONTACT_SURFACE_TO_SURFACE : TSL_CONTACT_NODE_TO_SURFACE;
-  USER_CHECK(!Param(d, "TIED"), LOC_FMT "*CONTACT PAIR, TIED is not supported yet", KLOC(d));
+  if (Param(d, "TIED")) {
+    /* a tied pair is a tie of its surfaces (TslTie): its interaction's laws do not apply (the interface is
+     * perfectly conducting and carries any traction), its ADJUST is the tie's */
+    PetscCall(TieLines(d, PETSC_TRUE, 0, (PetscBool)(adjust && adjust[0] && (!(isdigit((unsigned char)adjust[0]) || adjust[0] == '.') || strtod(adjust, NULL) > 0))));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   proto.small_sliding = Param(d, "SMALL SLIDING") ? PETSC_TRUE : PETSC_FALSE;
   {
     /* explicit steps' enforcement (docs/explicit.md): PENALTY unless KINEMATIC is asked for */
@@ -3386,7 +3458,8 @@ static const DeckKeyword Keywords[] = {
     {"GAP CONDUCTANCE", AT_MODEL, IN_INTERACTION, "PRESSURE|DEPENDENCIES|USER", KwGapConductance, 0, NULL},
     {"GAP RADIATION", AT_MODEL, IN_INTERACTION, "", KwGapRadiation, 0, NULL},
     {"GAP HEAT GENERATION", AT_MODEL, IN_INTERACTION, "USER", KwGapHeatGeneration, 0, NULL},
-    {"CONTACT PAIR", AT_MODEL, IN_NONE, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED|MECHANICAL CONSTRAINT", KwContactPair, 0, NULL},
+    {"CONTACT PAIR", AT_MODEL, IN_NONE, "INTERACTION|TYPE|SMALL SLIDING|SMOOTH|ADJUST|TIED|MECHANICAL CONSTRAINT|NAME", KwContactPair, 0, NULL},
+    {"TIE", AT_MODEL, IN_NONE, "NAME|POSITION TOLERANCE|ADJUST|CYCLIC SYMMETRY|MULTISTAGE|FLUID PERIODIC|FLUID CYCLIC", KwTie, 0, NULL},
     {"PARAMETER", AT_MODEL, IN_NONE, "", KwParameter, 0, NULL},
     {"STEP", AT_MODEL | AT_BETWEEN, IN_NONE, "NAME|INC|NLGEOM|AMPLITUDE|EXTRAPOLATION", KwStep, 0, NULL},
     {"END STEP", AT_STEP, IN_NONE, "", KwEndStep, 0, NULL},

@@ -86,6 +86,7 @@ PetscErrorCode TslModelDestroy(TslModel **model)
     PetscCall(PetscFree(c->main_own));
   }
   PetscCall(PetscFree(m->pairs));
+  PetscCall(PetscFree(m->ties));
   for (PetscInt i = 0; i < m->nstep; i++) {
     PetscCall(PetscFree(m->steps[i].loads));
     PetscCall(PetscFree(m->steps[i].out));
@@ -383,6 +384,7 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
     PetscCall(PackArray(p, &m->amplitudes[i].t, m->amplitudes[i].n, sizeof(PetscReal)));
     PetscCall(PackArray(p, &m->amplitudes[i].a, m->amplitudes[i].n, sizeof(PetscReal)));
   }
+  PetscCall(PackArray(p, &m->ties, m->ntie, sizeof(TslTie)));
   PetscCall(PackArray(p, &m->equations, m->nequation, sizeof(TslEquation)));
   for (PetscInt i = 0; i < m->nequation; i++) {
     TslEquation *e = &m->equations[i];

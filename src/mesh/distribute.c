@@ -862,6 +862,7 @@ static PetscErrorCode DistributeRoot(MPI_Comm comm, TslModel *g, PetscMPIInt siz
 
   PetscFunctionBeginUser;
   PetscCall(TslModelIndex(g));
+  PetscCall(TslMeshTies(g)); /* first: ADJUST moves nodes the contact preparation measures */
   PetscCall(PrepareContactPairs(g));
   /* rank 0 alone partitions, so the options block is its own (-help lists it) */
   PetscOptionsBegin(PETSC_COMM_SELF, NULL, "thermoslide mesh partition", NULL);

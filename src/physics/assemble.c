@@ -238,8 +238,11 @@ PetscErrorCode TslProblemInsert(TslProblem p, AsmMode mode, Mat A, PetscScalar *
   }
   for (PetscInt r = 0; r < n; r++) {
     PetscInt row = ld[r], q = p->dep[row];
-    if (mode == ASM_RAW) {
-      f[row] += R[r];
+    if (mode == ASM_RAW) { /* reactions: the equations' T^T still applies (a main node's support carries what its
+                              secondary nodes pass on), a prescribed dof keeps its own row */
+      if (q < 0 || p->bc[row].active) f[row] += R[r];
+      else
+        for (PetscInt t = 1; t < p->m->equations[q].n; t++) f[p->eq_ldof[q][t]] -= p->m->equations[q].coef[t] / p->m->equations[q].coef[0] * R[r];
       continue;
     }
     if (p->bc[row].active || p->pinned[row]) continue;

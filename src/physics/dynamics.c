@@ -971,7 +971,37 @@ PetscErrorCode TslProblemConstrainedMask(TslProblem p, Vec mask)
 
   PetscFunctionBeginUser;
   PetscCall(VecGetArray(mask, &m));
-  for (PetscInt d = 0; d < p->nown * p->ndof; d++) m[d] = (p->pinned[d] || p->bc[d].active) ? 1.0 : 0.0;
+  for (PetscInt d = 0; d < p->nown * p->ndof; d++) m[d] = (p->pinned[d] || p->bc[d].active || p->dep[d] >= 0) ? 1.0 : 0.0;
   PetscCall(VecRestoreArray(mask, &m));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The lumped form of the tie u_s = sum c_sk u_k: with T the tie's map, T^T M T lumped by rows is M_k + c_sk M_s
+ * (sum_k c_sk = 1), and T^T F is F_k + c_sk F_s; the secondary dof then follows its main dofs. */
+PetscErrorCode TslProblemTieMove(TslProblem p, Vec V)
+{
+  PetscScalar *v, *moved;
+  PetscInt    *from, n = 0;
+
+  PetscFunctionBeginUser;
+  if (!p->m->ntie) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscMalloc2(p->nown * p->ndof, &moved, p->nown * p->ndof, &from));
+  PetscCall(VecGetArray(V, &v));
+  for (PetscInt d = 0; d < p->nown * p->ndof; d++) {
+    if (p->dep[d] < 0 || p->bc[d].active || p->pinned[d] || v[d] == 0) continue;
+    moved[n] = v[d], from[n++] = d;
+    v[d] = 0;
+  }
+  PetscCall(VecRestoreArray(V, &v));
+  for (PetscInt i = 0; i < n; i++) { /* stashed where the main dof is another rank's: applied at the assembly below */
+    const TslEquation *eq = &p->m->equations[p->dep[from[i]]];
+    for (PetscInt t = 1; t < eq->n; t++) {
+      const PetscScalar w = -eq->coef[t] / eq->coef[0] * moved[i];
+      PetscCall(VecSetValues(V, 1, &eq->gdof[t], &w, ADD_VALUES));
+    }
+  }
+  PetscCall(PetscFree2(moved, from));
+  PetscCall(VecAssemblyBegin(V));
+  PetscCall(VecAssemblyEnd(V));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

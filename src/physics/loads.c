@@ -384,7 +384,8 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
   PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
   for (PetscInt d = 0; d < nd; d++) {
     char loc[PETSC_MAX_PATH_LEN + 32];
-    PetscCheck(!(p->bc[d].active && p->dep[d] >= 0), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
+    /* a tie's secondary dof under a *BOUNDARY: the boundary condition wins (docs/keywords.md, *TIE) */
+    PetscCheck(!(p->bc[d].active && p->dep[d] >= 0 && !m->equations[p->dep[d]].tie), PETSC_COMM_SELF, PETSC_ERR_USER_INPUT,
                "%s: node %" PetscInt_FMT " has a *BOUNDARY on a dof that an *EQUATION eliminates", TslLocString(m, step->loc, loc, sizeof(loc)),
                m->node_id[d / p->ndof]);
   }
@@ -444,5 +445,19 @@ PetscErrorCode TslProblemApplyPrescribed(TslProblem p, Vec X)
   }
   PetscCall(VecRestoreArray(X, &x));
   PetscCall(TslGhostUpdate(X, INSERT_VALUES, SCATTER_FORWARD));
+  if (p->m->ntie) { /* tie-secondary dofs from their main dofs (ghosts current now), then their own ghosts */
+    Vec xl;
+    PetscCall(VecGhostGetLocalForm(X, &xl));
+    PetscCall(VecGetArray(xl, &x));
+    for (PetscInt d = 0; d < p->nown * p->ndof; d++) {
+      const PetscInt q = p->dep[d];
+      if (q < 0 || p->bc[d].active || p->pinned[d]) continue;
+      x[d] = 0;
+      for (PetscInt t = 1; t < p->m->equations[q].n; t++) x[d] -= p->m->equations[q].coef[t] / p->m->equations[q].coef[0] * x[p->eq_ldof[q][t]];
+    }
+    PetscCall(VecRestoreArray(xl, &x));
+    PetscCall(VecGhostRestoreLocalForm(X, &xl));
+    PetscCall(TslGhostUpdate(X, INSERT_VALUES, SCATTER_FORWARD));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -109,11 +109,14 @@ PetscErrorCode TslModelCheckSupports(TslModel *g)
   for (PetscInt q = 0; q < g->nequation; q++)
     for (PetscInt t = 1; t < g->equations[q].n; t++)
       Union(parent, TslModelNodeIndex(g, g->equations[q].node[0]), TslModelNodeIndex(g, g->equations[q].node[t]));
-  /* a contact pair supports the secondary body on the main one (assumed closed) */
-  for (PetscInt k = 0; k < g->npair; k++) {
-    PetscInt nd[2] = {-1, -1};
+  /* a contact pair supports the secondary body on the main one (assumed closed), a tie (not yet equations:
+   * TslMeshTies makes them at partitioning) likewise */
+  for (PetscInt k = 0; k < g->npair + g->ntie; k++) {
+    PetscInt    nd[2] = {-1, -1};
+    const char *sname = k < g->npair ? g->pairs[k].secondary : g->ties[k - g->npair].secondary;
+    const char *mname = k < g->npair ? g->pairs[k].main : g->ties[k - g->npair].main;
     for (PetscInt side = 0; side < 2; side++) {
-      PetscInt j = TslModelFindSurface(g, side ? g->pairs[k].main : g->pairs[k].secondary);
+      PetscInt j = TslModelFindSurface(g, side ? mname : sname);
       if (j < 0 || g->surfaces[j].n == 0) continue;
       if (g->surfaces[j].kind == TSL_SURFACE_NODE)
         nd[side] = TslModelNodeIndex(g, g->surfaces[j].elem[0]);

@@ -221,6 +221,7 @@ static PetscErrorCode Masses(Explicit *x, Energies *en, PetscBool report)
   PetscCall(VecDuplicate(x->M, &M0));
   PetscCall(VecCopy(x->M, M0)); /* the mass before (zero at the start) */
   PetscCall(TslProblemLumpedMass(x->p, x->scale, x->M));
+  PetscCall(TslProblemTieMove(x->p, x->M)); /* a tie's secondary mass and capacity to its main nodes */
   PetscCall(VecGetArrayRead(M0, &m0));
   PetscCall(VecGetArrayRead(x->M, &m));
   PetscCall(VecGetArrayRead(x->V, &v));
@@ -236,6 +237,7 @@ static PetscErrorCode Masses(Explicit *x, Energies *en, PetscBool report)
     const PetscScalar *mu;
     PetscCall(VecDuplicate(x->M, &Mu));
     PetscCall(TslProblemLumpedMass(x->p, NULL, Mu));
+    PetscCall(TslProblemTieMove(x->p, Mu));
     PetscCall(VecGetArrayRead(Mu, &mu));
     PetscCall(VecGetArrayRead(x->M, &m));
     for (PetscInt i = 0; i < x->nown; i++) loc[1] += mu[i * x->ndof], loc[2] += m[i * x->ndof] - mu[i * x->ndof];
@@ -286,6 +288,8 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
    * h_avg per element, is booked in two halves: q_n eps_n by Advance, q_n eps_{n+1} here, at the next
    * evaluation (ALLVD; ALLIE is the internal forces' work less it) */
   PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->V, x->eta, x->eta2, x->qv, dt, &x->rates));
+  PetscCall(TslProblemTieMove(x->p, x->Fi)); /* a tie's secondary forces and heat to its main nodes */
+  PetscCall(TslProblemTieMove(x->p, x->Fe));
   if (x->qv) {
     Energies       *en = (Energies *)x->d->energy;
     const PetscReal w  = 0.5 * x->vd_h * x->rates.viscous_prev;
@@ -296,6 +300,7 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
     PetscCall(TslProblemContactExplicitIncrement(x->p, (PetscBool)(inc % x->search_every == 0), &nrepair));
     x->nrepair += nrepair;
   }
+  if (x->Fc) PetscCall(TslProblemTieMove(x->p, x->Fc));
   PetscCall(TslPhaseEnd(TSL_PHASE_ASSEMBLY));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -127,7 +127,7 @@ tsl_deck_bad(shell_composite shell_composite.inp "error: shell_composite.inp:21:
 tsl_deck_bad(linear_no_slope linear_no_slope.inp "error: linear_no_slope.inp:25: *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR needs a data line")
 tsl_deck_bad(linear_zero_slope linear_zero_slope.inp "error: linear_zero_slope.inp:26: the slope of the pressure-overclosure relation must be positive")
 tsl_deck_bad(linear_penalty linear_penalty.inp "error: linear_penalty.inp:25: *SURFACE BEHAVIOR: PENALTY and AUGMENTED LAGRANGE apply to HARD contact")
-tsl_deck_bad(overclosure_exponential overclosure_exponential.inp "error: overclosure_exponential.inp:25: *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL is not supported yet (HARD or LINEAR)")
+tsl_deck_bad(overclosure_exponential overclosure_exponential.inp "error: overclosure_exponential.inp:25: *SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=EXPONENTIAL is not supported yet (HARD, LINEAR or TIED)")
 tsl_deck_bad(print_totals print_totals.inp "error: print_totals.inp:33: *NODE PRINT, TOTALS=MAYBE: expected YES, NO or ONLY")
 # parts and instances (Abaqus/CAE's form; variants of data/abaqus_cae_part.inp)
 tsl_deck_bad(instance_twice instance_twice.inp "error: instance_twice.inp:30: instance BAR-1 is defined twice")
