@@ -8,6 +8,8 @@ its left edge (u1) and bottom (u2), heated at 100 K on the left and cooled by a 
   static_fine.inp  the same on half the increments: the frames' times and, between them, interpolated temperatures
   static_one.inp   one *STATIC step ramping to one frame of the file (BSTEP=2, BINC=8: the end of the source run)
   coupled_file.inp static.inp's steps as transient coupled steps: every temperature prescribed from the file
+  heat.inp         the source's thermal problem alone (*HEAT TRANSFER), and static_from_heat.inp static.inp reading it:
+                   the sequential analysis, whose stresses must be the coupled run's (no mechanical heating here)
   bad_*.inp        bad input (CMakeLists.txt says what each must print)
 usage: make_decks.py [OUTDIR]"""
 import os
@@ -58,10 +60,18 @@ def coupled():
                 "*STEP, NAME=SOAK, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 25.0, 200.0\n*END STEP\n")
 
 
-def static(dt1, dt2, heading, proc="*STATIC, DIRECT"):
+def heat():
+    """The source's thermal problem alone: *HEAT TRANSFER steps on the same increments (the CPE4T read as DC2D4)."""
+    return deck("Sequential coupling, the heat-transfer source: the plate's temperatures alone (2 steps)",
+                "*STEP, NAME=HEAT, INC=100\n*HEAT TRANSFER, DIRECT\n 10.0, 100.0\n*BOUNDARY\n LEFT, 11, 11, 100.0\n"
+                "*FILM\n RIGHTE, F2, 0.0, 25.0\n*END STEP\n"
+                "*STEP, NAME=SOAK, INC=100\n*HEAT TRANSFER, DIRECT\n 25.0, 200.0\n*END STEP\n")
+
+
+def static(dt1, dt2, heading, proc="*STATIC, DIRECT", source="coupled"):
     return deck(heading, "*STEP, NAME=HEAT, INC=100\n%s\n %g, 100.0\n" % (proc, dt1) + HOLD +
-                "*TEMPERATURE, FILE=coupled, BSTEP=1\n*END STEP\n"
-                "*STEP, NAME=SOAK, INC=100\n%s\n %g, 200.0\n*TEMPERATURE, FILE=coupled.h5, BSTEP=2\n*END STEP\n" % (proc, dt2))
+                "*TEMPERATURE, FILE=%s, BSTEP=1\n*END STEP\n" % source +
+                "*STEP, NAME=SOAK, INC=100\n%s\n %g, 200.0\n*TEMPERATURE, FILE=%s.h5, BSTEP=2\n*END STEP\n" % (proc, dt2, source))
 
 
 def one(extra="", data="", n=N, step="*STATIC, DIRECT\n 0.25, 1.0\n"):
@@ -73,6 +83,9 @@ def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "decks")
     decks = {
         "coupled": coupled(),
+        "heat": heat(),
+        "static_from_heat": static(10.0, 25.0, "Sequential coupling as users run it: *STATIC steps reading the heat-transfer job's temperatures",
+                                   source="heat"),
         "static": static(10.0, 25.0, "Sequential coupling: *STATIC steps reading the source's temperatures at its own increments"),
         "static_fine": static(5.0, 12.5, "Sequential coupling: *STATIC steps on half the source's increments (interpolated between)"),
         "static_one": one(),
