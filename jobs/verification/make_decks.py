@@ -188,7 +188,7 @@ FAMILIES_2D = {"3": ("tri", 1), "4": ("quad", 1), "6": ("tri", 2), "8": ("quad",
 
 # Catalogue rows the dialect has no coupled name for (src/element/catalogue.c, MechanicalOnly): a deck names
 # them by CalculiX's mechanical name (CPE6), which a coupled step reads as the row (CPE6T).
-MECHANICAL_ONLY = ("CPE6T", "CPS6T", "CAX6T", "C3D15T")
+MECHANICAL_ONLY = ("CPE6T", "CPS6T", "CAX6T", "C3D15T", "CPE4IT", "CPS4IT", "CAX4IT", "C3D8IT")
 
 
 def deck_type(typ):
