@@ -981,8 +981,8 @@ static PetscErrorCode KwElement(Deck *d, const DeckKeyword *kw)
   et = TslElementTypeGet(type);
   if (!shell) nn = et->geom->nnode;
   if (et->pore) d->pore = PETSC_TRUE;
-  if (!m->dim) m->dim = et->dim;
-  USER_CHECK(m->dim == et->dim,
+  if (!m->dim && et->geom->dim > 1) m->dim = et->dim; /* a link (DC1D2, DC1D3) takes the model's dimension, 3 if it is alone */
+  USER_CHECK(m->dim == et->dim || et->geom->dim == 1 || !m->dim,
              LOC_FMT "element type %s is %" PetscInt_FMT "D but the model already has %" PetscInt_FMT "D elements (mixing is not supported)", KLOC(d),
              et->name, et->dim, m->dim);
   if (elset) {
@@ -3797,6 +3797,7 @@ PetscErrorCode TslDeckRead(const char *path, TslModel **model)
   PetscCall(TslModelCreate(&d.m));
   /* On a user error the partial model and the reader's buffers are freed before the error goes up. */
   ierr = DeckParse(&d, path);
+  if (!ierr && !d.m->dim && d.m->nelem) d.m->dim = 3; /* links alone: a 3D model */
   if (!ierr) ierr = DeckModelLoads(&d);
   if (!ierr) ierr = DeckCheckDuplicateNodes(&d);
   if (!ierr) ierr = TslDeckExpandShells(d.m);

@@ -28,6 +28,8 @@
 #define HEAT_PLANE   TSL_KIN_PLANE_STRAIN, 2, 1, {11}, 0, {0}, PETSC_FALSE
 #define HEAT_AXI     TSL_KIN_AXISYMMETRIC, 2, 1, {11}, 0, {0}, PETSC_FALSE
 #define HEAT_SOLID   TSL_KIN_SOLID3D, 3, 1, {11}, 0, {0}, PETSC_FALSE
+/* a heat-transfer link: a line in the model's space (2D or 3D), its cross-section area the *SOLID SECTION's value */
+#define HEAT_LINK    TSL_KIN_SOLID3D, 3, 1, {11}, 0, {0}, PETSC_FALSE
 
 static const TslElementType Catalogue[] = {
     {"CPE3T",   &TslGeomTri3,   &TslFormFull,           PLANE_STRAIN, "3-node plane strain"},
@@ -100,6 +102,8 @@ static const TslElementType Catalogue[] = {
     {"DCAX4",   &TslGeomQuad4,  &TslFormFull,           HEAT_AXI,     "4-node axisymmetric heat transfer"},
     {"DCAX6",   &TslGeomTri6,   &TslFormFull,           HEAT_AXI,     "6-node axisymmetric heat transfer"},
     {"DCAX8",   &TslGeomQuad8,  &TslFormFull,           HEAT_AXI,     "8-node axisymmetric heat transfer"},
+    {"DC1D2",   &TslGeomLine2,  &TslFormFull,           HEAT_LINK,    "2-node heat-transfer link (2D or 3D)"},
+    {"DC1D3",   &TslGeomLine3,  &TslFormFull,           HEAT_LINK,    "3-node heat-transfer link (2D or 3D)"},
     {"DC3D4",   &TslGeomTet4,   &TslFormFull,           HEAT_SOLID,   "4-node tetrahedral heat transfer"},
     {"DC3D6",   &TslGeomWedge6, &TslFormFull,           HEAT_SOLID,   "6-node triangular prism heat transfer"},
     {"DC3D8",   &TslGeomHex8,   &TslFormFull,           HEAT_SOLID,   "8-node brick heat transfer"},

@@ -360,7 +360,7 @@ const TslGeometry TslGeomLine2 = {
     .full       = QUAD_LINE_2,
     .reduced    = QUAD_LINE_1,
     .as_face    = QUAD_LINE_2,
-    .xdmf_type  = 2, /* Polyline: only a face family, never written as a cell (see the writer) */
+    .xdmf_type  = 2, /* Polyline (the links DC1D2; the writer adds the record's node count) */
 };
 
 const TslGeometry TslGeomLine3 = {

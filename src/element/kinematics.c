@@ -74,7 +74,9 @@ const char *TslElementTypeKinematicsName(const TslElementType *t)
  * model), so any two of them may share nodes. */
 PetscBool TslElementTypeSameKinematics(const TslElementType *a, const TslElementType *b)
 {
-  return a->kin == b->kin || (a->dim == 3 && b->dim == 3) ? PETSC_TRUE : PETSC_FALSE;
+  /* a heat-transfer link (DC1D2, DC1D3: a line) joins any heat-transfer body of a planar or 3D model */
+  const PetscBool link = a->ndof == 1 && b->ndof == 1 && (a->geom->dim == 1 || b->geom->dim == 1) ? PETSC_TRUE : PETSC_FALSE;
+  return a->kin == b->kin || (a->dim == 3 && b->dim == 3) || link ? PETSC_TRUE : PETSC_FALSE;
 }
 
 const char *TslElementTypeSectionKeyword(const TslElementType *t)
@@ -165,6 +167,22 @@ PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementSe
 
   g->shape(xi, p->N, dN);
   for (PetscInt d = 0; d < 3; d++) p->x[d] = 0, p->xi[d] = d < dim ? xi[d] : 0;
+  if (dim == 1) {
+    /* a link (DC1D2, DC1D3): a line in space; its gradient is along the tangent t = dx/dxi, dN/ds t / |t| with
+     * ds = |t| dxi, and its measure the section's cross-section area A (the *SOLID SECTION value) times ds */
+    PetscReal t[3] = {0, 0, 0}, L2;
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt d = 0; d < 3; d++) p->x[d] += p->N[a] * x[3 * a + d], t[d] += dN[a] * x[3 * a + d];
+    L2      = t[0] * t[0] + t[1] * t[1] + t[2] * t[2];
+    p->detJ = PetscSqrtReal(L2);
+    if (!(p->detJ > 0)) return PETSC_FALSE;
+    for (PetscInt i = 0; i < 3; i++)
+      for (PetscInt j = 0; j < 3; j++) p->Ji[i][j] = i == 0 ? t[j] / L2 : 0;
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < 3; i++) p->dNdx[a][i] = dN[a] * t[i] / L2;
+    p->dV = w * p->detJ * (sec && sec->thickness > 0 ? sec->thickness : 1.0);
+    return PETSC_TRUE;
+  }
   for (PetscInt a = 0; a < n; a++) {
     for (PetscInt d = 0; d < 3; d++) p->x[d] += p->N[a] * x[3 * a + d];
     for (PetscInt i = 0; i < dim; i++)

@@ -180,10 +180,11 @@ static PetscErrorCode WriteConnectivity(TslOutput out, PetscInt nelem, const Pet
   for (PetscInt e = 0; e < nelem; e++) range[0] = PetscMin(range[0], xdmf_type[e]), range[1] = PetscMin(range[1], -xdmf_type[e]);
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, range, 2, MPIU_INT, MPI_MIN, out->comm));
   if (out->nelem_global == 0 || range[0] != -range[1]) PetscFunctionReturn(PETSC_SUCCESS);
-  if (!TslXdmfTopologyName(range[0], &n) || n != maxlen - 1) PetscFunctionReturn(PETSC_SUCCESS);
+  const PetscInt h = range[0] == 2 ? 2 : 1; /* a Polyline record: type, count, nodes */
+  if (!TslXdmfTopologyName(range[0], &n) || n != maxlen - h) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCall(PetscMalloc1(rd->nblock * n, &conn));
   for (PetscInt k = 0; k < rd->nblock; k++)
-    for (PetscInt j = 0; j < n; j++) conn[k * n + j] = blkpad[k * maxlen + 1 + j];
+    for (PetscInt j = 0; j < n; j++) conn[k * n + j] = blkpad[k * maxlen + h + j];
   PetscCall(WriteRows(out, out->file, "/mesh/connectivity", H5T_STD_I64LE, H5T_NATIVE_INT64, (hsize_t)rd->nglobal, (hsize_t)n, (hsize_t)rd->bstart,
                       (hsize_t)rd->nblock, conn));
   PetscCall(PetscFree(conn));
@@ -191,7 +192,8 @@ static PetscErrorCode WriteConnectivity(TslOutput out, PetscInt nelem, const Pet
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* /mesh/topology: XDMF Mixed records [type, n0, n1, ...] in natural element order. Records differ in
+/* /mesh/topology: XDMF Mixed records [type, n0, n1, ...] in natural element order (a Polyline, type 2, the heat-transfer
+ * links DC1D2: [2, node count, n0, n1], as XDMF has it for that type). Records differ in
  * length, so they travel padded to the longest one; each block then packs its records and finds its
  * offset in the file by an exclusive scan of the block lengths. */
 static PetscErrorCode WriteTopology(TslOutput out, PetscInt nelem, const PetscInt xdmf_type[], const PetscInt ptr[], const PetscInt conn[])
@@ -202,7 +204,7 @@ static PetscErrorCode WriteTopology(TslOutput out, PetscInt nelem, const PetscIn
 
   PetscFunctionBeginUser;
   for (PetscInt e = 0; e < nelem; e++) {
-    maxlen = PetscMax(maxlen, 1 + ptr[e + 1] - ptr[e]);
+    maxlen = PetscMax(maxlen, 1 + (xdmf_type[e] == 2) + ptr[e + 1] - ptr[e]);
     for (PetscInt j = ptr[e]; j < ptr[e + 1]; j++)
       if (conn[j] < 0 || conn[j] >= out->nnode_global) badnode = conn[j];
     if (ptr[e + 1] <= ptr[e] || xdmf_type[e] <= 0) badnode = -2;
@@ -219,9 +221,11 @@ static PetscErrorCode WriteTopology(TslOutput out, PetscInt nelem, const PetscIn
   PetscCall(PetscMalloc2(nelem * maxlen, &pad, rd->nblock * maxlen, &blkpad));
   for (PetscInt e = 0; e < nelem; e++) {
     int64_t *r = pad + e * maxlen;
-    r[0]       = xdmf_type[e];
-    for (PetscInt j = ptr[e]; j < ptr[e + 1]; j++) r[1 + j - ptr[e]] = conn[j];
-    for (PetscInt j = 1 + ptr[e + 1] - ptr[e]; j < maxlen; j++) r[j] = -1;
+    const PetscInt h = xdmf_type[e] == 2 ? 2 : 1; /* a Polyline's record gives its node count */
+    r[0]             = xdmf_type[e];
+    if (h == 2) r[1] = ptr[e + 1] - ptr[e];
+    for (PetscInt j = ptr[e]; j < ptr[e + 1]; j++) r[h + j - ptr[e]] = conn[j];
+    for (PetscInt j = h + ptr[e + 1] - ptr[e]; j < maxlen; j++) r[j] = -1;
   }
   /* The padding of -1 marks where a record ends; node indices are never negative. */
   PetscCall(TslRedistMove(out->comm, rd, maxlen * sizeof(int64_t), pad, blkpad));

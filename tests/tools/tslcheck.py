@@ -44,6 +44,9 @@ class Result:
         dialect = {8: [0, 2, 1, 3, 5, 4], 40: [0, 2, 1, 3, 5, 4, 8, 7, 6, 11, 10, 9, 12, 14, 13]}
         while k < len(topo):
             t = int(topo[k])
+            if t == 2:  # Polyline (a link DC1D2): its node count follows
+                k += 1
+                sizes[2] = int(topo[k])
             n = sizes[t]
             cell = topo[k + 1:k + 1 + n]
             out.append(cell[dialect[t]] if t in dialect else cell)
