@@ -16,6 +16,8 @@ bar     the explicit bar cut at x = 1 and tied (OTHER names the untied bar's out
 fall    the blocks of the CPE4T patch (4 elements tied to 3) falling under gravity in an explicit step: u = g t^2 / 2 at
         every node within 1e-9 (the secondary mass moves with its force; masses alone or forces alone would not do), and
         heated by a uniform body flux: theta = 20 + q t / (rho c) within 1e-9 of the rise (the capacity with the heat).
+heat    patch_heat_cpe4t (a *HEAT TRANSFER step, the temperature alone): NT against the linear field within 1e-8 of its
+        range and the heat balance, as patch
 energy  the explicit bar's energy balance: |ETOTAL| at most 1e-8 of the largest work (an explicit balance is exact to
         round-off).
 usage: check_tie.py OUTDIR JOB CASE [OTHER_OUTDIR OTHER_JOB]
@@ -40,7 +42,7 @@ r = Result(sys.argv[1], sys.argv[2])
 case = sys.argv[3]
 
 
-def patch():
+def patch(thermal_only=False):
     x = r.xyz
     dim = 3 if np.ptp(x[:, 2]) > 0 else 2
     axi = "cax" in sys.argv[2]  # u_r = a r: the hoop strain u_r / r = a is uniform too
@@ -49,11 +51,15 @@ def patch():
     T = THA if axi else THU if uni else TH
     u_exact = x[:, :dim] @ A.T
     t_exact = T[0] + x[:, :dim] @ np.array(T[1:1 + dim])
-    u = r.field("U")[:, :dim]
     nt = r.field("NT").reshape(-1)
+    check("patch NT max error / range", np.abs(nt - t_exact).max() / np.ptp(t_exact), 0, 1e-8)
+    if thermal_only:
+        through = np.abs(r.field("RFL")).sum() / 2
+        check("patch heat balance residual / heat through", abs(r.history["balance_residual"][-1]) / max(through, 1e-300), 0, 1e-8)
+        return
+    u = r.field("U")[:, :dim]
     scale_u = np.abs(u_exact).max()
     check("patch U max error / max |u|", np.abs(u - u_exact).max() / scale_u, 0, 1e-8)
-    check("patch NT max error / range", np.abs(nt - t_exact).max() / np.ptp(t_exact), 0, 1e-8)
     eps = 0.5 * (A + A.T)
     lam, mu = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
     e3 = np.zeros((3, 3))
@@ -116,5 +122,5 @@ def bar():
         check("bar %s tied - untied, max over frames and nodes / max |%s|" % (name, name), worst / scale, 0, 1e-9)
 
 
-{"patch": patch, "bar": bar, "energy": energy, "fall": fall}[case]()
+{"patch": patch, "heat": lambda: patch(True), "bar": bar, "energy": energy, "fall": fall}[case]()
 finish()

@@ -285,6 +285,17 @@ def steps(name_static, name_transient):
     write(name_transient, transient.replace("patch test, CPE4T", "patch test in a transient coupled step, CPE4T"))
 
 
+def heat(name):
+    """patch_cpe4t.inp's thermal problem in a *HEAT TRANSFER step (its CPE4T read as DC2D4; the displacement lines
+    of its *BOUNDARY left out): the tie in a temperature-only model."""
+    base = open(os.path.join(OUT, "patch_cpe4t.inp")).read()
+    head = "*STEP\n*COUPLED TEMPERATURE-DISPLACEMENT, STEADY STATE\n"
+    assert head in base
+    model, step = base.split(head)
+    step = "".join(l + "\n" for l in step.splitlines() if not (l.count(",") == 3 and l.split(",")[1].strip() in ("1", "2")))
+    write(name, (model + "*STEP\n*HEAT TRANSFER, STEADY STATE\n" + step).replace("patch test, CPE4T", "patch test in a *HEAT TRANSFER step, CPE4T"))
+
+
 def shared(name):
     """patch_cpe4t.inp with B's tied face split into two surfaces, each tied to A by its own *TIE: the node at
     y = 0.5 is on both and is tied by the first (docs/keywords.md *TIE); the patch test still holds."""
@@ -348,6 +359,7 @@ def main():
     bar(True, "bar_tied_explicit_cpe4t.inp")
     steps("patch_static_cpe4t.inp", "patch_transient_cpe4t.inp")
     shared("patch_shared_cpe4t.inp")
+    heat("patch_heat_cpe4t.inp")
     fall("fall_explicit_cpe4t.inp")
     bad()
 
