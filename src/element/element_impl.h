@@ -117,6 +117,8 @@ struct TslFormulation {
 
 /* Incompatible modes: at most one per reference direction, in each of 3 displacement components. */
 #define TSL_MAX_ENHANCED 9
+/* and their families' full rules have at most 2 x 2 x 2 points */
+#define TSL_INCOMPATIBLE_QP 8
 
 /* Hybrid pressure spaces are at most linear: 1 + dim terms. */
 #define TSL_MAX_PRESSURE 4

@@ -273,23 +273,6 @@ static PetscBool MechanicsSolid3DTangent(const TslElementInput *in, const TslEle
   return PETSC_TRUE;
 }
 
-/* The reference map's Jacobian J[i][j] = dx_i / dxi_j of the family's nodes x[] at xi (dim x dim) and its determinant. */
-static PetscReal ReferenceJacobian(const TslGeometry *g, const PetscReal x[], const PetscReal xi[], PetscReal J[3][3])
-{
-  const PetscInt gd = g->dim;
-  PetscReal      N[TSL_MAX_ELEM_NODES], dN[TSL_MAX_ELEM_NODES * 3];
-
-  g->shape(xi, N, dN);
-  for (PetscInt i = 0; i < 3; i++)
-    for (PetscInt j = 0; j < 3; j++) J[i][j] = 0;
-  for (PetscInt a = 0; a < g->nnode; a++)
-    for (PetscInt i = 0; i < gd; i++)
-      for (PetscInt j = 0; j < gd; j++) J[i][j] += x[3 * a + i] * dN[gd * a + j];
-  return gd == 2 ? J[0][0] * J[1][1] - J[0][1] * J[1][0]
-                 : J[0][0] * (J[1][1] * J[2][2] - J[1][2] * J[2][1]) - J[0][1] * (J[1][0] * J[2][2] - J[1][2] * J[2][0]) +
-                       J[0][2] * (J[1][0] * J[2][1] - J[1][1] * J[2][0]);
-}
-
 /* Incompatible modes (TslFormulation.incompatible; docs/elements.md "Incompatible modes"): the displacement
  * u = N u_hat + sum_k P_k alpha_k (P_k = 1 - xi_k^2, a vector alpha_k per bubble, every displacement component) adds the
  * strain G alpha. G is the bubbles' symmetric gradient with the centre's Jacobian, grad P_k = J0^-T dP_k/dxi (det J0 /
@@ -309,39 +292,33 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
   const TslGeometry    *g    = t->geom;
   const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
   const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof, ncol = n * nu, dim = t->dim, gd = g->dim;
-  PetscReal             xi0[3], J0[3][3], J0i[3][3], det0, dP[3][3], vol = 0;
+  PetscReal             xi0[3], det0, dP[3][3], vol = 0;
   PetscReal             G[TSL_MAX_QP][6][TSL_MAX_ENHANCED], Gbar[6][TSL_MAX_ENHANCED] = {{0}}, Kaa[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED] = {0},
                         Kai[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED], r0[TSL_MAX_ENHANCED] = {0}, alpha[TSL_MAX_ENHANCED] = {0};
   PetscReal             Kau[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES * 3], sb[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES];
   PetscReal            *se = res ? &res->strain_energy : energy;
   PetscInt              nm, na;
-  MechPoint             mq;
+  TslElementPoint       pc;
+  MechPoint             mqs[TSL_INCOMPATIBLE_QP]; /* each point evaluated once, for the three passes */
   static const PetscInt vi[6] = {0, 1, 2, 0, 0, 1}, vj[6] = {0, 1, 2, 1, 2, 2};
 
-  /* the centre's Jacobian J0[i][j] = dx_i / dxi_j and its inverse */
+  /* the centre's inverse Jacobian J0^-1 (pc.Ji[e][d] = dxi_e / dx_d) and det J0 */
+  if (quad->n > TSL_INCOMPATIBLE_QP) return PETSC_FALSE;
   TslElementCentre(g, xi0);
-  nm   = t->form->incompatible(g, xi0, dP);
-  na   = nm * dim;
-  det0 = ReferenceJacobian(g, in->x, xi0, J0);
-  if (!(det0 > 0)) return PETSC_FALSE;
-  if (gd == 2) {
-    J0i[0][0] = J0[1][1] / det0, J0i[0][1] = -J0[0][1] / det0, J0i[1][0] = -J0[1][0] / det0, J0i[1][1] = J0[0][0] / det0;
-  } else
-    for (PetscInt i = 0; i < 3; i++)
-      for (PetscInt j = 0; j < 3; j++) {
-        const PetscInt i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
-        J0i[i][j] = (J0[i1][j1] * J0[i2][j2] - J0[i1][j2] * J0[i2][j1]) / det0;
-      }
+  nm = t->form->incompatible(g, xi0, dP);
+  na = nm * dim;
+  if (!TslElementPointEvaluate(t, in->sec, in->x, xi0, g->ref_volume, &pc)) return PETSC_FALSE;
+  det0 = pc.detJ;
   /* G at each point, and its mean */
   for (PetscInt q = 0; q < quad->n; q++) {
-    PetscReal J[3][3], det, grad[3][3];
-    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
-    det = ReferenceJacobian(g, in->x, quad->xi[q], J);
+    MechPoint *mq = &mqs[q];
+    PetscReal  grad[3][3];
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full ? &full[q] : NULL, PETSC_FALSE, mq)) return PETSC_FALSE;
     (void)t->form->incompatible(g, quad->xi[q], dP);
     for (PetscInt k = 0; k < nm; k++)
       for (PetscInt i = 0; i < dim; i++) {
         grad[k][i] = 0;
-        for (PetscInt j = 0; j < gd; j++) grad[k][i] += J0i[j][i] * dP[k][j] * det0 / det;
+        for (PetscInt j = 0; j < gd; j++) grad[k][i] += pc.Ji[j][i] * dP[k][j] * det0 / mq->p->detJ;
       }
     for (PetscInt r = 0; r < 6; r++)
       for (PetscInt c = 0; c < na; c++) G[q][r][c] = 0;
@@ -353,8 +330,8 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
         if (i != j) G[q][r][dim * k + j] += grad[k][i];
       }
     for (PetscInt r = 0; r < 6; r++)
-      for (PetscInt c = 0; c < na; c++) Gbar[r][c] += G[q][r][c] * mq.p->dV;
-    vol += mq.p->dV;
+      for (PetscInt c = 0; c < na; c++) Gbar[r][c] += G[q][r][c] * mq->p->dV;
+    vol += mq->p->dV;
   }
   for (PetscInt q = 0; q < quad->n; q++)
     for (PetscInt r = 0; r < 6; r++)
@@ -362,20 +339,20 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
   /* K_aa and r0 (first pass), alpha */
   for (PetscInt q = 0; q < quad->n; q++) {
     PetscReal D[6][6], DG[6][TSL_MAX_ENHANCED], s0[6];
-    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
-    TslElementElasticity(t, in->sec, mq.p, &mq.mp, D, NULL);
+    const MechPoint *mq = &mqs[q];
+    TslElementElasticity(t, in->sec, mq->p, &mq->mp, D, NULL);
     for (PetscInt r = 0; r < 6; r++) {
       s0[r] = 0;
       for (PetscInt c = 0; c < na; c++) DG[r][c] = 0;
       for (PetscInt s2 = 0; s2 < 6; s2++) {
-        s0[r] += D[r][s2] * (mq.eps[s2] - VoigtM[s2] * mq.eps_th);
+        s0[r] += D[r][s2] * (mq->eps[s2] - VoigtM[s2] * mq->eps_th);
         for (PetscInt c = 0; c < na; c++) DG[r][c] += D[r][s2] * G[q][s2][c];
       }
     }
     for (PetscInt c1 = 0; c1 < na; c1++) {
-      for (PetscInt r = 0; r < 6; r++) r0[c1] += G[q][r][c1] * s0[r] * mq.p->dV;
+      for (PetscInt r = 0; r < 6; r++) r0[c1] += G[q][r][c1] * s0[r] * mq->p->dV;
       for (PetscInt c2 = 0; c2 < na; c2++)
-        for (PetscInt r = 0; r < 6; r++) Kaa[c1 * na + c2] += G[q][r][c1] * DG[r][c2] * mq.p->dV;
+        for (PetscInt r = 0; r < 6; r++) Kaa[c1 * na + c2] += G[q][r][c1] * DG[r][c2] * mq->p->dV;
     }
   }
   DenseInverse(na, na, Kaa, Kai);
@@ -390,55 +367,55 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
   }
   for (PetscInt q = 0; q < quad->n; q++) {
     PetscReal D[6][6], dD[6][6], eps[6], emech[6], sig[6], dsig[6];
-    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
-    TslElementElasticity(t, in->sec, mq.p, &mq.mp, D, K ? dD : NULL);
+    const MechPoint *mq = &mqs[q];
+    TslElementElasticity(t, in->sec, mq->p, &mq->mp, D, K ? dD : NULL);
     for (PetscInt r = 0; r < 6; r++) {
-      eps[r] = mq.eps[r];
+      eps[r] = mq->eps[r];
       for (PetscInt c = 0; c < na; c++) eps[r] += G[q][r][c] * alpha[c];
-      emech[r] = eps[r] - VoigtM[r] * mq.eps_th;
+      emech[r] = eps[r] - VoigtM[r] * mq->eps_th;
     }
     for (PetscInt r = 0; r < 6; r++) {
       sig[r] = dsig[r] = 0;
       for (PetscInt s2 = 0; s2 < 6; s2++) {
         sig[r] += D[r][s2] * emech[s2];
-        if (K) dsig[r] += dD[r][s2] * emech[s2] - D[r][s2] * VoigtM[s2] * mq.deps_th;
+        if (K) dsig[r] += dD[r][s2] * emech[s2] - D[r][s2] * VoigtM[s2] * mq->deps_th;
       }
     }
     for (PetscInt a = 0; a < n; a++)
       for (PetscInt i = 0; i < nu; i++) {
         PetscReal f = 0;
-        for (PetscInt r = 0; r < 6; r++) f += mq.B[r][nu * a + i] * sig[r];
-        R[ndof * a + i] += f * mq.p->dV;
+        for (PetscInt r = 0; r < 6; r++) f += mq->B[r][nu * a + i] * sig[r];
+        R[ndof * a + i] += f * mq->p->dV;
       }
     if (res)
       for (PetscInt r = 0; r < 6; r++) res->E[r] += eps[r] / quad->n, res->S[r] += sig[r] / quad->n;
     if (se)
-      for (PetscInt r = 0; r < 6; r++) *se += 0.5 * sig[r] * emech[r] * mq.p->dV;
+      for (PetscInt r = 0; r < 6; r++) *se += 0.5 * sig[r] * emech[r] * mq->p->dV;
     if (!K) continue;
     for (PetscInt c1 = 0; c1 < ncol; c1++) {
       const PetscInt r1 = ndof * (c1 / nu) + c1 % nu;
       PetscReal      DB[6], Bds = 0;
       for (PetscInt r = 0; r < 6; r++) {
         DB[r] = 0;
-        for (PetscInt s2 = 0; s2 < 6; s2++) DB[r] += D[r][s2] * mq.B[s2][c1];
-        Bds += mq.B[r][c1] * dsig[r];
+        for (PetscInt s2 = 0; s2 < 6; s2++) DB[r] += D[r][s2] * mq->B[s2][c1];
+        Bds += mq->B[r][c1] * dsig[r];
       }
       for (PetscInt c2 = 0; c2 < ncol; c2++) {
         PetscReal kv = 0;
-        for (PetscInt r = 0; r < 6; r++) kv += mq.B[r][c2] * DB[r];
-        K[r1 * nd + ndof * (c2 / nu) + c2 % nu] += kv * mq.p->dV;
+        for (PetscInt r = 0; r < 6; r++) kv += mq->B[r][c2] * DB[r];
+        K[r1 * nd + ndof * (c2 / nu) + c2 % nu] += kv * mq->p->dV;
       }
       for (PetscInt c = 0; c < na; c++) {
         PetscReal kv = 0;
         for (PetscInt r = 0; r < 6; r++) kv += G[q][r][c] * DB[r];
-        Kau[c][c1] += kv * mq.p->dV;
+        Kau[c][c1] += kv * mq->p->dV;
       }
-      for (PetscInt b = 0; b < n; b++) K[r1 * nd + ndof * b + th] += Bds * mq.p->N[b] * mq.p->dV;
+      for (PetscInt b = 0; b < n; b++) K[r1 * nd + ndof * b + th] += Bds * mq->p->N[b] * mq->p->dV;
     }
     for (PetscInt c = 0; c < na; c++) {
       PetscReal Gds = 0;
       for (PetscInt r = 0; r < 6; r++) Gds += G[q][r][c] * dsig[r];
-      for (PetscInt b = 0; b < n; b++) sb[c][b] += Gds * mq.p->N[b] * mq.p->dV;
+      for (PetscInt b = 0; b < n; b++) sb[c][b] += Gds * mq->p->N[b] * mq->p->dV;
     }
   }
   if (K) { /* condensation: K_uu -= K_ua K_aa^-1 K_au, K_u_theta -= K_ua K_aa^-1 s */
