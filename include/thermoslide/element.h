@@ -186,15 +186,14 @@ typedef struct {
   const TslElementType    *type;
   const TslElementSection *sec;
   const PetscReal         *x, *u, *theta_init;
-  /* Mises plasticity (*PLASTIC): the committed state at each mechanical point, TSL_PLASTIC_STATE reals a point
-   * (plastic strain, Voigt with engineering shear; equivalent plastic strain); pstate_new (NULL: not wanted) gets the
+  /* Mises plasticity (*PLASTIC): the committed state at each mechanical point, TslMaterialPlasticState reals a point
+   * (plastic strain, Voigt with engineering shear; equivalent plastic strain; the back stress); pstate_new (NULL: not wanted) gets the
    * state the current u reaches from it; inelastic_rate scales the plastic work of the increment into a heat rate
    * (1 / dt; 0: no plastic heating, as in steady and static steps). pstate NULL: an elastic element. */
   const PetscReal *pstate;
   PetscReal       *pstate_new;
   PetscReal        inelastic_rate;
 } TslElementInput;
-#define TSL_PLASTIC_STATE 7
 /* Mechanical points of the type (the plastic state's points). */
 PetscInt TslElementTypeMechanicalPoints(const TslElementType *t, const TslElementSection *sec);
 

@@ -44,6 +44,12 @@ static inline PetscBool TslMaterialIsPlastic(const TslMaterial *mat)
 {
   return mat->plastic.n > 0 ? PETSC_TRUE : PETSC_FALSE;
 }
+/* Reals of the plastic state at a point: the plastic strain (Voigt, engineering shear) and the equivalent plastic
+ * strain, and with kinematic hardening the back stress (Voigt, tensor components). */
+static inline PetscInt TslMaterialPlasticState(const TslMaterial *mat)
+{
+  return mat->plastic.kinematic ? 13 : 7;
+}
 
 /* True when any property varies with temperature (the kernels then add the property-derivative terms). */
 PetscBool TslMaterialIsTemperatureDependent(const TslMaterial *mat);

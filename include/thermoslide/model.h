@@ -66,10 +66,14 @@ typedef struct {
 /* *PLASTIC, HARDENING=ISOTROPIC: the Mises yield stress against the equivalent plastic strain (and temperature),
  * rows (yield stress, plastic strain, temperature) as the deck gives them: per temperature the plastic strains
  * ascend from 0, the temperatures ascend between groups (material.c, TslMaterialYield: linear in both, the end
- * values held beyond). n = 0: elastic. */
+ * values held beyond). n = 0: elastic. HARDENING=KINEMATIC (kinematic): linear kinematic hardening, the yield
+ * surface of constant size row[0][0] (n = 1) translated by a back stress of modulus C = the slope between the deck's
+ * two points (0 with one point: perfectly plastic). */
 typedef struct {
   PetscInt  n;
   PetscReal row[TSL_MAX_TABLE_ROWS][3];
+  PetscBool kinematic;
+  PetscReal C;
   TslLoc    loc;
 } TslPlasticTable;
 

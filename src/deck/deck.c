@@ -1281,8 +1281,10 @@ static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
 
 /* *PLASTIC (Mises plasticity, HARDENING=ISOTROPIC, the dialect's default): "yield stress, plastic strain[,
  * temperature]" (TslPlasticTable). For each temperature the curve starts at plastic strain 0 and its strains
- * ascend; the temperatures ascend from one curve to the next; every line gives a temperature or none does. The
- * other hardening laws, rate dependence and *CYCLIC HARDENING are refused (docs/keywords.md). */
+ * ascend; the temperatures ascend from one curve to the next; every line gives a temperature or none does.
+ * HARDENING=KINEMATIC: linear kinematic hardening, two lines at most (the dialect's: the slope between them is the
+ * back stress's modulus), no temperature yet. COMBINED, rate dependence and *CYCLIC HARDENING are refused
+ * (docs/keywords.md). */
 static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
 {
   TslMaterial     *mat = &d->m->materials[d->material];
@@ -1293,8 +1295,9 @@ static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
 
   PetscFunctionBeginUser;
   (void)kw;
-  USER_CHECK(!hard || !strcmp(hard, "ISOTROPIC"),
-             LOC_FMT "*PLASTIC, HARDENING=%s is not supported yet (ISOTROPIC: Mises yield with isotropic hardening)", KLOC(d), hard);
+  USER_CHECK(!hard || !strcmp(hard, "ISOTROPIC") || !strcmp(hard, "KINEMATIC"),
+             LOC_FMT "*PLASTIC, HARDENING=%s is not supported yet (ISOTROPIC and KINEMATIC: Mises yield with isotropic or linear kinematic hardening)",
+             KLOC(d), hard);
   USER_CHECK(!Param(d, "RATE"), LOC_FMT "*PLASTIC, RATE= (rate-dependent yield curves) is not supported yet", KLOC(d));
   USER_CHECK(!t->n, LOC_FMT "material %s: a second *PLASTIC (the first at line %" PetscInt_FMT ")", KLOC(d), mat->name, t->loc.line);
   t->loc = d->kwloc;
@@ -1327,6 +1330,17 @@ static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
     t->n++;
   }
   USER_CHECK(t->n > 0, LOC_FMT "*PLASTIC needs a data line", KLOC(d));
+  if (hard && !strcmp(hard, "KINEMATIC")) { /* the yield stress at 0 and, from a second point, the back stress's modulus */
+    USER_CHECK(t->n <= 2, LOC_FMT "*PLASTIC, HARDENING=KINEMATIC takes two data lines (linear kinematic hardening; got %" PetscInt_FMT ")", KLOC(d), t->n);
+    USER_CHECK(t->n < 2 || t->row[1][2] == t->row[0][2], LOC_FMT "*PLASTIC, HARDENING=KINEMATIC with temperature-dependent data is not supported yet",
+               KLOC(d));
+    USER_CHECK(t->n < 2 || t->row[1][0] >= t->row[0][0],
+               LOC_FMT "material %s: *PLASTIC, HARDENING=KINEMATIC: the second yield stress must not be below the first (%g after %g)", KLOC(d), mat->name,
+               (double)t->row[1][0], (double)t->row[0][0]);
+    t->kinematic = PETSC_TRUE;
+    t->C         = t->n == 2 ? (t->row[1][0] - t->row[0][0]) / t->row[1][1] : 0;
+    t->n         = 1; /* the surface's size is constant */
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -469,12 +469,16 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
   const TslMaterial    *mat  = in->sec->mat;
   const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
   const PetscReal       heat = mat->heat_fraction * in->inelastic_rate, s23 = PetscSqrtReal(2.0 / 3.0), s32 = PetscSqrtReal(1.5);
+  const PetscBool       kin = mat->plastic.kinematic;
+  const PetscReal       Ck  = kin ? mat->plastic.C : 0; /* the back stress's modulus */
+  const PetscInt        ns  = TslMaterialPlasticState(mat);
   MechPoint             mq;
 
   if (energy) energy[0] = energy[2] = energy[3] = 0;
   for (PetscInt q = 0; q < quad->n; q++) {
-    const PetscReal *st = in->pstate + TSL_PLASTIC_STATE * q;
+    const PetscReal *st = in->pstate + ns * q, *al = kin ? st + 7 : NULL; /* al: the committed back stress */
     PetscReal        lam, mu, Kb, dlam, dmu, dKb, e[6], d[6], nh[6] = {0}, tr, nrm, ebar, qtr, theta, sy, H, dsy, dl = 0, sig[6], deps[6], w = 0;
+    PetscReal        dr[6], an = 0; /* the trial strain's deviator relative to the back stress; n : back stress */
     PetscReal        dw_th_fixed = 0; /* d w / d theta at fixed p0, p1 */
     PetscBool        plastic = PETSC_FALSE;
 
@@ -490,7 +494,8 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
     for (PetscInt r = 0; r < 6; r++) e[r] = mq.eps[r] - VoigtM[r] * mq.eps_th - st[r];
     tr = e[0] + e[1] + e[2];
     for (PetscInt r = 0; r < 6; r++) d[r] = r < 3 ? e[r] - tr / 3 : 0.5 * e[r];
-    nrm  = PetscSqrtReal(d[0] * d[0] + d[1] * d[1] + d[2] * d[2] + 2 * (d[3] * d[3] + d[4] * d[4] + d[5] * d[5]));
+    for (PetscInt r = 0; r < 6; r++) dr[r] = kin ? d[r] - al[r] / (2 * mu) : d[r];
+    nrm  = PetscSqrtReal(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2] + 2 * (dr[3] * dr[3] + dr[4] * dr[4] + dr[5] * dr[5]));
     ebar = s23 * nrm;
     qtr  = 3 * mu * ebar;
     sy   = TslMaterialYield(mat, st[6], theta, &H, &dsy);
@@ -498,22 +503,26 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
       PetscReal lo = 0, hi = ebar;
       plastic = PETSC_TRUE;
       for (PetscInt it = 0; it < 100; it++) {
-        const PetscReal gv = 3 * mu * (ebar - dl) - sy;
+        const PetscReal gv = 3 * mu * (ebar - dl) - sy - Ck * dl;
         PetscReal       next;
         if (PetscAbsReal(gv) <= 1e-15 * sy) break;
         if (gv > 0) lo = dl;
         else hi = dl;
-        next = 3 * mu + H > 0 ? dl + gv / (3 * mu + H) : 0.5 * (lo + hi);
+        next = 3 * mu + H + Ck > 0 ? dl + gv / (3 * mu + H + Ck) : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         dl = next;
         sy = TslMaterialYield(mat, st[6] + dl, theta, &H, &dsy);
       }
-      for (PetscInt r = 0; r < 6; r++) nh[r] = d[r] / nrm;
+      for (PetscInt r = 0; r < 6; r++) nh[r] = dr[r] / nrm;
       w = TslMaterialYieldIntegral(mat, st[6], st[6] + dl, theta, &dw_th_fixed);
+      if (kin) { /* and the back stress's share, the trapezoid of (al + al_new) / 2 : d eps_p (exact on the radial path) */
+        an = al[0] * nh[0] + al[1] * nh[1] + al[2] * nh[2] + 2 * (al[3] * nh[3] + al[4] * nh[4] + al[5] * nh[5]);
+        w += s32 * dl * an + 0.5 * Ck * dl * dl;
+      }
     } else if (nrm > 0)
-      for (PetscInt r = 0; r < 6; r++) nh[r] = d[r] / nrm;
+      for (PetscInt r = 0; r < 6; r++) nh[r] = dr[r] / nrm;
     for (PetscInt r = 0; r < 6; r++) {
-      sig[r]  = (r < 3 ? Kb * tr : 0) + (plastic ? s23 * sy * nh[r] : 2 * mu * d[r]);
+      sig[r]  = (r < 3 ? Kb * tr : 0) + (plastic ? (kin ? al[r] : 0) + s23 * (sy + Ck * dl) * nh[r] : 2 * mu * d[r]);
       deps[r] = plastic ? dl * s32 * nh[r] * (r < 3 ? 1 : 2) : 0;
     }
     for (PetscInt a = 0; a < nv; a++)
@@ -524,9 +533,11 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
       }
     for (PetscInt a = 0; a < n; a++) R[ndof * a + th] -= mq.p->N[a] * heat * w * mq.p->dV; /* the plastic heat, a source */
     if (in->pstate_new) {
-      PetscReal *sn = in->pstate_new + TSL_PLASTIC_STATE * q;
+      PetscReal *sn = in->pstate_new + ns * q;
       for (PetscInt r = 0; r < 6; r++) sn[r] = st[r] + deps[r];
       sn[6] = st[6] + dl;
+      if (kin)
+        for (PetscInt r = 0; r < 6; r++) sn[7 + r] = al[r] + s23 * Ck * dl * nh[r];
     }
     if (res) {
       for (PetscInt r = 0; r < 6; r++) res->E[r] += mq.eps[r] / quad->n, res->S[r] += sig[r] / quad->n, res->PE[r] += (st[r] + deps[r]) / quad->n;
@@ -541,17 +552,30 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
     if (!K) continue;
     {
       PetscReal C[6][6], dsig[6], dw_de[6] = {0}, dw_dth = 0;
-      const PetscReal beta = plastic ? sy / qtr : 1, hn = plastic ? 2 * mu * H / (3 * mu + H) - 2 * mu * beta : 0;
+      const PetscReal Hk = H + Ck, syk = sy + Ck * dl; /* the hardening and the surface's reach with the back stress's share */
+      const PetscReal beta = plastic ? syk / qtr : 1, hn = plastic ? 2 * mu * Hk / (3 * mu + Hk) - 2 * mu * beta : 0;
       for (PetscInt r = 0; r < 6; r++)
         for (PetscInt c = 0; c < 6; c++) {
           const PetscReal pdev = r < 3 && c < 3 ? (r == c) - 1.0 / 3 : (r == c ? 0.5 : 0);
           C[r][c] = (r < 3 && c < 3 ? Kb : 0) + 2 * mu * beta * pdev + hn * nh[r] * nh[c];
         }
-      if (plastic) {
+      if (plastic && !kin) {
         const PetscReal ddl = (3 * dmu * (ebar - dl) - dsy) / (3 * mu + H), dsyn = H * ddl + dsy;
         for (PetscInt r = 0; r < 6; r++) dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + s23 * dsyn * nh[r];
         for (PetscInt c = 0; c < 6; c++) dw_de[c] = sy * 3 * mu / (3 * mu + H) * s23 * nh[c]; /* d w / d p1 = sigma_y(p1) */
         dw_dth = dw_th_fixed + sy * ddl;
+      } else if (plastic) {
+        /* the back stress fixed, the relative deviator 2 mu d - al turns with theta through mu: d q_tr / d theta =
+         * sqrt(6) dmu n : d, the direction's change dn = dmu (d - n (n : d)) / (mu |dr|); the work's
+         * w_dl = sigma_y + sqrt(3/2) n : al + C dl and its direction term sqrt(3/2) dl al : dn */
+        const PetscReal nd   = d[0] * nh[0] + d[1] * nh[1] + d[2] * nh[2] + 2 * (d[3] * nh[3] + d[4] * nh[4] + d[5] * nh[5]);
+        const PetscReal ad   = al[0] * d[0] + al[1] * d[1] + al[2] * d[2] + 2 * (al[3] * d[3] + al[4] * d[4] + al[5] * d[5]);
+        const PetscReal ddl  = (PetscSqrtReal(6.0) * dmu * nd - 3 * dmu * dl - dsy) / (3 * mu + Hk), dsyn = Hk * ddl + dsy;
+        const PetscReal wdl  = sy + s32 * an + Ck * dl;
+        for (PetscInt r = 0; r < 6; r++)
+          dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + s23 * dsyn * nh[r] + s23 * syk * dmu * (d[r] - nh[r] * nd) / (mu * nrm);
+        for (PetscInt c = 0; c < 6; c++) dw_de[c] = wdl * 3 * mu / (3 * mu + Hk) * s23 * nh[c] + s32 * dl * (al[c] - nh[c] * an) / nrm;
+        dw_dth = dw_th_fixed + wdl * ddl + s32 * dl * dmu * (ad - an * nd) / (mu * nrm);
       } else
         for (PetscInt r = 0; r < 6; r++) dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + 2 * dmu * d[r];
       for (PetscInt c1 = 0; c1 < ncol; c1++) {

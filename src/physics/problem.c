@@ -327,7 +327,7 @@ static PetscErrorCode SetUpLocal(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The plastic elements' state (TSL_PLASTIC_STATE reals at each mechanical point), zero: no plastic strain yet. */
+/* The plastic elements' state (TslMaterialPlasticState reals at each mechanical point), zero: no plastic strain yet. */
 static PetscErrorCode SetUpPlasticState(TslProblem p)
 {
   PetscInt n = 0;
@@ -341,7 +341,7 @@ static PetscErrorCode SetUpPlasticState(TslProblem p)
   for (PetscInt e = 0; e < p->m->nelem; e++) {
     const TslElementType *t = TslElementTypeGet(p->m->elem_type[e]);
     p->pstate_off[e]        = TslMaterialIsPlastic(p->esec[e].mat) && t->ndof > 1 ? n : -1; /* a heat-transfer type has no mechanics */
-    if (p->pstate_off[e] >= 0) n += TSL_PLASTIC_STATE * TslElementTypeMechanicalPoints(t, &p->esec[e]);
+    if (p->pstate_off[e] >= 0) n += TslMaterialPlasticState(p->esec[e].mat) * TslElementTypeMechanicalPoints(t, &p->esec[e]);
   }
   PetscCall(PetscCalloc1(n, &p->pstate)); /* two blocks, not one: TslProblemCommitState swaps them */
   PetscCall(PetscCalloc1(n, &p->pstate_new));

@@ -124,7 +124,7 @@ struct _p_TslProblem {
     PetscReal        t0, *Ts, *Ta, *Tb, *T;
   } tfile;
 
-  /* Mises plasticity (kernels.c, MechanicsPlastic): the committed state of the plastic elements' points (TSL_PLASTIC_STATE
+  /* Mises plasticity (kernels.c, MechanicsPlastic): the committed state of the plastic elements' points (TslMaterialPlasticState
    * reals a point; pstate_off[e] the element's first, -1 for an elastic element; NULL arrays: no plastic element here),
    * pstate_new the state the heat balance's pass reaches at the converged solution (pstate_write), made the committed
    * one by TslProblemCommitState */

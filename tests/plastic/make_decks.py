@@ -8,6 +8,9 @@ isotropic hardening, E = 200000, nu = 0.3, sigma_y = 200 + 1000 p (two points; c
   adiabatic_<type>.inp  one transient coupled step pulling to strain 0.02 in 1 s with no heat leaving, and
                         *INELASTIC HEAT FRACTION 0.9, rho c = 2: Delta theta = 0.9 ALLPD / (rho c V); the _soft variant
                         has a yield stress falling with temperature (200 + 1000 p at 0, 100 + 500 p at 50)
+  uniaxial_kinematic_<type>.inp, adiabatic_kinematic_c3d8t.inp, jacobian_kinematic_c3d8t.inp  the same with linear
+                        kinematic hardening (HARDENING=KINEMATIC, C = 1000: the reverse yield at the back stress - 200); the
+                        Jacobian deck then shears the brick, a flow across the back stress of the pull
   jacobian_plastic_c3d8t.inp  a distorted brick pulled past yield, heated, a temperature-dependent modulus and yield
                         table: -snes_test_jacobian with the plastic flow, its heat and their temperature columns
   bad_*.inp             bad input (CMakeLists.txt gives each message)
@@ -19,6 +22,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 E, NU, RHO, C = 200000.0, 0.3, 1.0, 2.0
 R0 = 10.0  # the ring's inner radius
 PLASTIC = "*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n"
+PLASTIC_KIN = "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0\n 700.0, 0.5\n"  # linear kinematic, C = 1000
 PLASTIC_SOFT = "*PLASTIC\n 200.0, 0.0, 0.0\n 700.0, 0.5, 0.0\n 100.0, 0.0, 50.0\n 350.0, 0.5, 50.0\n"
 # the strain path of the uniaxial decks: (step, period, increment, target strain)
 PATH = [("LOAD", 1.0, 0.1, 0.01), ("UNLOAD", 1.0, 0.25, 0.004), ("REVERSE", 1.0, 0.1, -0.01)]
@@ -60,24 +64,26 @@ def holds(typ):
     return ("*BOUNDARY\n X0, 2, 2\n" if typ == "CAX4T" else "*BOUNDARY\n X0, 1, 1\n Y0, 2, 2\n Z0, 3, 3\n"), (2 if typ == "CAX4T" else 1)
 
 
-def uniaxial(typ):
+def uniaxial(typ, kin=False):
     hold, dof = holds(typ)
-    text = "*HEADING\n Uniaxial stress of one %s: loading, unloading, reverse loading (Mises, isotropic hardening)\n" % typ + model(typ, PLASTIC)
+    text = ("*HEADING\n Uniaxial stress of one %s: loading, unloading, reverse loading (Mises, %s hardening)\n" % (typ, "kinematic" if kin else "isotropic") +
+            model(typ, PLASTIC_KIN if kin else PLASTIC))
     for k, (name, period, inc, strain) in enumerate(PATH):
         text += ("*STEP, NAME=%s, INC=100\n*STATIC, DIRECT\n %g, %g\n" % (name, inc, period) + (hold if k == 0 else "") +
                  "*BOUNDARY\n X1, %d, %d, %.12g\n*END STEP\n" % (dof, dof, strain))
     return text
 
 
-def adiabatic(typ, soft):
+def adiabatic(typ, soft, kin=False):
     hold, dof = holds(typ)
-    return ("*HEADING\n Adiabatic heating of one %s pulled past yield%s\n" % (typ, " (a yield stress falling with temperature)" if soft else "") +
-            model(typ, PLASTIC_SOFT if soft else PLASTIC, heat=True) +
+    return ("*HEADING\n Adiabatic heating of one %s pulled past yield%s\n" % (typ, " (a yield stress falling with temperature)" if soft else
+                                                                             " (kinematic hardening)" if kin else "") +
+            model(typ, PLASTIC_SOFT if soft else PLASTIC_KIN if kin else PLASTIC, heat=True) +
             "*STEP, NAME=PULL, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.05, 1.0\n" + hold +
             "*BOUNDARY\n X1, %d, %d, 0.02\n*END STEP\n" % (dof, dof))
 
 
-def jacobian():
+def jacobian(kin=False):
     """One distorted C3D8T pulled well past yield in two increments (every point flows in both: a point near the yield
     surface would put the finite differences across its kink), heated at a corner, with a modulus and a yield stress
     falling with temperature, expansion and the plastic heat. In millimetres (a brick of about 1000): PETSc's
@@ -89,11 +95,12 @@ def jacobian():
     return ("*HEADING\n A distorted C3D8T pulled past yield and heated: the plastic tangent against finite differences\n"
             "*NODE, NSET=NALL\n" + "".join(" %d, %g, %g, %g\n" % ((i + 1,) + c) for i, c in enumerate(corner)) +
             "*ELEMENT, TYPE=C3D8T, ELSET=ALL\n 1, 1, 2, 3, 4, 5, 6, 7, 8\n*NSET, NSET=FIX\n 1, 4, 5, 8\n*NSET, NSET=PULL\n 2, 3, 6, 7\n"
-            "*MATERIAL, NAME=STEEL\n*ELASTIC\n 200000., 0.3, 0.\n 150000., 0.3, 100.\n" + PLASTIC_SOFT +
+            "*MATERIAL, NAME=STEEL\n*ELASTIC\n 200000., 0.3, 0.\n 150000., 0.3, 100.\n" + (PLASTIC_KIN if kin else PLASTIC_SOFT) +
             "*INELASTIC HEAT FRACTION\n*EXPANSION\n 1.2E-5\n*CONDUCTIVITY\n 50.0\n*DENSITY\n 1.0\n*SPECIFIC HEAT\n 2.0\n"
             "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\n NALL, 20.0\n"
             "*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.5, 1.0\n*BOUNDARY\n FIX, 1, 1\n 1, 2, 3\n 4, 3, 3\n"
-            " PULL, 1, 1, 40.0\n*CFLUX\n 7, 11, 5.0E6\n*END STEP\n")
+            " PULL, 1, 1, 40.0\n*CFLUX\n 7, 11, 5.0E6\n*END STEP\n" +
+            ("*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.5, 1.0\n*BOUNDARY\n PULL, 2, 2, 40.0\n*END STEP\n" if kin else ""))
 
 
 def bad(name):
@@ -104,8 +111,12 @@ def bad(name):
         return base.replace(" 200.0, 0.0\n", " 0.0, 0.0\n")
     if name == "descending":
         return base.replace(" 700.0, 0.5\n", " 700.0, 0.5\n 800.0, 0.4\n")
-    if name == "kinematic":
-        return base.replace("*PLASTIC\n", "*PLASTIC, HARDENING=KINEMATIC\n")
+    if name == "combined":
+        return base.replace("*PLASTIC\n", "*PLASTIC, HARDENING=COMBINED\n")
+    if name == "kinematic_lines":
+        return base.replace("*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n", "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0\n 700.0, 0.5\n 800.0, 1.0\n")
+    if name == "kinematic_theta":
+        return base.replace("*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n", "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0, 0.0\n 100.0, 0.0, 50.0\n")
     if name == "rate":
         return base.replace("*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n", "*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n*RATE DEPENDENT, TYPE=POWER LAW\n 1.0, 5.0\n")
     if name == "plane_stress":
@@ -117,12 +128,14 @@ def bad(name):
     raise KeyError(name)
 
 
-BAD = ["first_strain", "yield_zero", "descending", "kinematic", "rate", "plane_stress", "explicit", "heat_fraction"]
+BAD = ["first_strain", "yield_zero", "descending", "combined", "kinematic_lines", "kinematic_theta", "rate", "plane_stress", "explicit", "heat_fraction"]
 
 
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "decks")
-    decks = {"jacobian_plastic_c3d8t": jacobian()}
+    decks = {"jacobian_plastic_c3d8t": jacobian(), "jacobian_kinematic_c3d8t": jacobian(True), "adiabatic_kinematic_c3d8t": adiabatic("C3D8T", False, True)}
+    for typ in ("C3D8T", "CAX4T"):
+        decks["uniaxial_kinematic_%s" % typ.lower()] = uniaxial(typ, True)
     for typ in ("C3D8T", "C3D8RT", "C3D20T", "CAX4T"):
         decks["uniaxial_%s" % typ.lower()] = uniaxial(typ)
     for typ in ("C3D8T", "CAX4T"):
