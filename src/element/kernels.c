@@ -447,7 +447,7 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
   return PETSC_TRUE;
 }
 
-/* Mises plasticity with isotropic hardening (*PLASTIC; docs/keywords.md, docs/elements.md "Plasticity"), the
+/* Mises plasticity with isotropic or linear kinematic hardening (*PLASTIC; docs/keywords.md, docs/elements.md "Plasticity"), the
  * displacement formulations of every kinematics with the whole 3D strain (3D, plane strain, axisymmetric with and
  * without twist, generalized plane strain). At each point, from the committed plastic strain eps_p and equivalent
  * plastic strain p (in->pstate), the radial return (backward Euler) of the trial e = eps - eps_th m - eps_p:
@@ -458,7 +458,10 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
  * = d sigma_y / dp), its temperature column from d dl / d theta = (3 dmu (ebar - dl) - d sigma_y / d theta) / (3 mu + H),
  * and the plastic heat: a source eta w inelastic_rate with w = int_p^(p + dl) sigma_y dp the plastic work of the
  * increment (per volume; exact for the table's piecewise linear curves, so the heat of a flow does not depend on the
- * increments), linearised in u and theta through dl. Nothing is stored here: the state the current u reaches goes to
+ * increments), linearised in u and theta through dl. Linear kinematic hardening (HARDENING=KINEMATIC) adds the
+ * committed back stress al (zero otherwise): dev e is taken relative to al / (2 mu), sigma_y becomes sigma_y + C dl
+ * (H: H + C), sigma gains al, al gains sqrt(2/3) C dl n, and w the trapezoid of the back stress's work, sqrt(3/2) dl
+ * al : n + C dl^2 / 2 (docs/elements.md). Nothing is stored here: the state the current u reaches goes to
  * in->pstate_new when asked (the commit of an accepted increment). */
 static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
                                   PetscReal energy[4])
@@ -472,11 +475,12 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
   const PetscBool       kin = mat->plastic.kinematic;
   const PetscReal       Ck  = kin ? mat->plastic.C : 0; /* the back stress's modulus */
   const PetscInt        ns  = TslMaterialPlasticState(mat);
+  static const PetscReal no_back[6] = {0, 0, 0, 0, 0, 0}; /* isotropic hardening: the back stress is zero (exactly: same bits) */
   MechPoint             mq;
 
   if (energy) energy[0] = energy[2] = energy[3] = 0;
   for (PetscInt q = 0; q < quad->n; q++) {
-    const PetscReal *st = in->pstate + ns * q, *al = kin ? st + 7 : NULL; /* al: the committed back stress */
+    const PetscReal *st = in->pstate + ns * q, *al = kin ? st + 7 : no_back; /* al: the committed back stress */
     PetscReal        lam, mu, Kb, dlam, dmu, dKb, e[6], d[6], nh[6] = {0}, tr, nrm, ebar, qtr, theta, sy, H, dsy, dl = 0, sig[6], deps[6], w = 0;
     PetscReal        dr[6], an = 0; /* the trial strain's deviator relative to the back stress; n : back stress */
     PetscReal        dw_th_fixed = 0; /* d w / d theta at fixed p0, p1 */
@@ -494,7 +498,7 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
     for (PetscInt r = 0; r < 6; r++) e[r] = mq.eps[r] - VoigtM[r] * mq.eps_th - st[r];
     tr = e[0] + e[1] + e[2];
     for (PetscInt r = 0; r < 6; r++) d[r] = r < 3 ? e[r] - tr / 3 : 0.5 * e[r];
-    for (PetscInt r = 0; r < 6; r++) dr[r] = kin ? d[r] - al[r] / (2 * mu) : d[r];
+    for (PetscInt r = 0; r < 6; r++) dr[r] = d[r] - al[r] / (2 * mu);
     nrm  = PetscSqrtReal(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2] + 2 * (dr[3] * dr[3] + dr[4] * dr[4] + dr[5] * dr[5]));
     ebar = s23 * nrm;
     qtr  = 3 * mu * ebar;
@@ -515,14 +519,13 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
       }
       for (PetscInt r = 0; r < 6; r++) nh[r] = dr[r] / nrm;
       w = TslMaterialYieldIntegral(mat, st[6], st[6] + dl, theta, &dw_th_fixed);
-      if (kin) { /* and the back stress's share, the trapezoid of (al + al_new) / 2 : d eps_p (exact on the radial path) */
-        an = al[0] * nh[0] + al[1] * nh[1] + al[2] * nh[2] + 2 * (al[3] * nh[3] + al[4] * nh[4] + al[5] * nh[5]);
-        w += s32 * dl * an + 0.5 * Ck * dl * dl;
-      }
+      /* and the back stress's share, the trapezoid of (al + al_new) / 2 : d eps_p (exact on the radial path) */
+      an = al[0] * nh[0] + al[1] * nh[1] + al[2] * nh[2] + 2 * (al[3] * nh[3] + al[4] * nh[4] + al[5] * nh[5]);
+      w += s32 * dl * an + 0.5 * Ck * dl * dl;
     } else if (nrm > 0)
       for (PetscInt r = 0; r < 6; r++) nh[r] = dr[r] / nrm;
     for (PetscInt r = 0; r < 6; r++) {
-      sig[r]  = (r < 3 ? Kb * tr : 0) + (plastic ? (kin ? al[r] : 0) + s23 * (sy + Ck * dl) * nh[r] : 2 * mu * d[r]);
+      sig[r]  = (r < 3 ? Kb * tr : 0) + (plastic ? al[r] + s23 * (sy + Ck * dl) * nh[r] : 2 * mu * d[r]);
       deps[r] = plastic ? dl * s32 * nh[r] * (r < 3 ? 1 : 2) : 0;
     }
     for (PetscInt a = 0; a < nv; a++)
@@ -559,15 +562,11 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
           const PetscReal pdev = r < 3 && c < 3 ? (r == c) - 1.0 / 3 : (r == c ? 0.5 : 0);
           C[r][c] = (r < 3 && c < 3 ? Kb : 0) + 2 * mu * beta * pdev + hn * nh[r] * nh[c];
         }
-      if (plastic && !kin) {
-        const PetscReal ddl = (3 * dmu * (ebar - dl) - dsy) / (3 * mu + H), dsyn = H * ddl + dsy;
-        for (PetscInt r = 0; r < 6; r++) dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + s23 * dsyn * nh[r];
-        for (PetscInt c = 0; c < 6; c++) dw_de[c] = sy * 3 * mu / (3 * mu + H) * s23 * nh[c]; /* d w / d p1 = sigma_y(p1) */
-        dw_dth = dw_th_fixed + sy * ddl;
-      } else if (plastic) {
-        /* the back stress fixed, the relative deviator 2 mu d - al turns with theta through mu: d q_tr / d theta =
-         * sqrt(6) dmu n : d, the direction's change dn = dmu (d - n (n : d)) / (mu |dr|); the work's
-         * w_dl = sigma_y + sqrt(3/2) n : al + C dl and its direction term sqrt(3/2) dl al : dn */
+      if (plastic) {
+        /* the back stress fixed (zero without kinematic hardening: then d = dr, n : d = |dr| and the direction does
+         * not turn), the relative deviator 2 mu d - al turns with theta through mu: d q_tr / d theta = sqrt(6) dmu n : d,
+         * the direction's change dn = dmu (d - n (n : d)) / (mu |dr|); the work's w_dl = sigma_y(p1) + sqrt(3/2) n : al
+         * + C dl and its direction term sqrt(3/2) dl al : dn */
         const PetscReal nd   = d[0] * nh[0] + d[1] * nh[1] + d[2] * nh[2] + 2 * (d[3] * nh[3] + d[4] * nh[4] + d[5] * nh[5]);
         const PetscReal ad   = al[0] * d[0] + al[1] * d[1] + al[2] * d[2] + 2 * (al[3] * d[3] + al[4] * d[4] + al[5] * d[5]);
         const PetscReal ddl  = (PetscSqrtReal(6.0) * dmu * nd - 3 * dmu * dl - dsy) / (3 * mu + Hk), dsyn = Hk * ddl + dsy;

@@ -103,28 +103,28 @@ def jacobian(kin=False):
             ("*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.5, 1.0\n*BOUNDARY\n PULL, 2, 2, 40.0\n*END STEP\n" if kin else ""))
 
 
+# bad decks made from the uniaxial one by one substitution: name -> (text, replacement)
+TABLE = "*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n"
+BAD_EDITS = {
+    "first_strain": ("*PLASTIC\n 200.0, 0.0\n", "*PLASTIC\n 200.0, 0.001\n"),
+    "yield_zero": (" 200.0, 0.0\n", " 0.0, 0.0\n"),
+    "descending": (" 700.0, 0.5\n", " 700.0, 0.5\n 800.0, 0.4\n"),
+    "combined": ("*PLASTIC\n", "*PLASTIC, HARDENING=COMBINED\n"),
+    "kinematic_lines": (TABLE, "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0\n 700.0, 0.5\n 800.0, 1.0\n"),
+    "kinematic_theta": (TABLE, "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0, 0.0\n 100.0, 0.0, 50.0\n"),
+    "rate": (TABLE, TABLE + "*RATE DEPENDENT, TYPE=POWER LAW\n 1.0, 5.0\n"),
+    "heat_fraction": ("*CONDUCTIVITY", "*INELASTIC HEAT FRACTION\n 1.5\n*CONDUCTIVITY"),
+}
+
+
 def bad(name):
     base = uniaxial("C3D8T")
-    if name == "first_strain":
-        return base.replace("*PLASTIC\n 200.0, 0.0\n", "*PLASTIC\n 200.0, 0.001\n")
-    if name == "yield_zero":
-        return base.replace(" 200.0, 0.0\n", " 0.0, 0.0\n")
-    if name == "descending":
-        return base.replace(" 700.0, 0.5\n", " 700.0, 0.5\n 800.0, 0.4\n")
-    if name == "combined":
-        return base.replace("*PLASTIC\n", "*PLASTIC, HARDENING=COMBINED\n")
-    if name == "kinematic_lines":
-        return base.replace("*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n", "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0\n 700.0, 0.5\n 800.0, 1.0\n")
-    if name == "kinematic_theta":
-        return base.replace("*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n", "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0, 0.0\n 100.0, 0.0, 50.0\n")
-    if name == "rate":
-        return base.replace("*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n", "*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n*RATE DEPENDENT, TYPE=POWER LAW\n 1.0, 5.0\n")
+    if name in BAD_EDITS:
+        return base.replace(*BAD_EDITS[name])
     if name == "plane_stress":
         return uniaxial("CAX4T").replace("TYPE=CAX4T", "TYPE=CPS4T")
     if name == "explicit":
         return base.split("*STEP")[0] + "*STEP\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , 1e-4\n*BOUNDARY\n X0, 1, 1\n*END STEP\n"
-    if name == "heat_fraction":
-        return base.replace("*CONDUCTIVITY", "*INELASTIC HEAT FRACTION\n 1.5\n*CONDUCTIVITY")
     raise KeyError(name)
 
 
