@@ -42,13 +42,13 @@ PetscReal TslMaterialYield(const TslMaterial *mat, PetscReal peeq, PetscReal the
 PetscReal TslMaterialYieldIntegral(const TslMaterial *mat, PetscReal p0, PetscReal p1, PetscReal theta, PetscReal *dtheta);
 static inline PetscBool TslMaterialIsPlastic(const TslMaterial *mat)
 {
-  return mat->plastic.n > 0 ? PETSC_TRUE : PETSC_FALSE;
+  return mat->plastic.n > 0 || mat->plastic.nvoce > 0 ? PETSC_TRUE : PETSC_FALSE;
 }
 /* Reals of the plastic state at a point: the plastic strain (Voigt, engineering shear) and the equivalent plastic
- * strain, and with kinematic hardening the back stress (Voigt, tensor components). */
+ * strain, then each back stress (Voigt, tensor components; none with isotropic hardening). */
 static inline PetscInt TslMaterialPlasticState(const TslMaterial *mat)
 {
-  return mat->plastic.kinematic ? 13 : 7;
+  return 7 + 6 * mat->plastic.nback;
 }
 
 /* True when any property varies with temperature (the kernels then add the property-derivative terms). */

@@ -63,18 +63,25 @@ typedef struct {
   TslLoc    loc;                          /* the keyword line */
 } TslPropertyTable;
 
-/* *PLASTIC, HARDENING=ISOTROPIC: the Mises yield stress against the equivalent plastic strain (and temperature),
- * rows (yield stress, plastic strain, temperature) as the deck gives them: per temperature the plastic strains
- * ascend from 0, the temperatures ascend between groups (material.c, TslMaterialYield: linear in both, the end
- * values held beyond). n = 0: elastic. HARDENING=KINEMATIC (kinematic): linear kinematic hardening, the yield
- * surface of constant size row[0][0] (n = 1) translated by a back stress of modulus C = the slope between the deck's
- * two points (0 with one point: perfectly plastic). */
+/* *PLASTIC: Mises yield. The size of the yield surface: rows (yield stress, plastic strain, temperature) as the deck
+ * gives them (HARDENING=ISOTROPIC, or *CYCLIC HARDENING's table under COMBINED): per temperature the plastic strains
+ * ascend from 0, the temperatures ascend between groups (material.c, TslMaterialYield: linear in both, the end values
+ * held beyond); or, with nvoce > 0 (*CYCLIC HARDENING, PARAMETERS), the exponential law sigma_0 + Q (1 - exp(-b p))
+ * with rows (sigma_0, Q, b, temperature), linear between the temperatures. n = 0: elastic. Back stresses (nback of
+ * them; HARDENING=KINEMATIC: one of modulus C = the slope between the deck's two points and gamma = 0, Ziegler-Prager;
+ * HARDENING=COMBINED, DATA TYPE=PARAMETERS: NUMBER BACKSTRESSES of the nonlinear kinematic law (Armstrong-Frederick)
+ * d alpha_k = C_k / sigma_y (sigma - alpha) d p - gamma_k alpha_k d p, temperature-independent). */
+#define TSL_MAX_BACKSTRESS 10
 typedef struct {
   PetscInt  n;
   PetscReal row[TSL_MAX_TABLE_ROWS][3];
-  PetscBool kinematic;
-  PetscReal C;
+  PetscInt  nvoce;
+  PetscReal voce[TSL_MAX_TABLE_ROWS][4];
+  PetscInt  nback;
+  PetscReal C[TSL_MAX_BACKSTRESS], gamma[TSL_MAX_BACKSTRESS];
+  PetscBool combined;  /* HARDENING=COMBINED (a *CYCLIC HARDENING may follow) */
   TslLoc    loc;
+  TslLoc    cyclic_loc; /* *CYCLIC HARDENING's keyword line (line 0: none) */
 } TslPlasticTable;
 
 typedef struct {

@@ -1279,36 +1279,23 @@ static PetscErrorCode KwProperty(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* *PLASTIC (Mises plasticity, HARDENING=ISOTROPIC, the dialect's default): "yield stress, plastic strain[,
- * temperature]" (TslPlasticTable). For each temperature the curve starts at plastic strain 0 and its strains
- * ascend; the temperatures ascend from one curve to the next; every line gives a temperature or none does.
- * HARDENING=KINEMATIC: linear kinematic hardening, two lines at most (the dialect's: the slope between them is the
- * back stress's modulus), no temperature yet. COMBINED, rate dependence and *CYCLIC HARDENING are refused
- * (docs/keywords.md). */
-static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
+/* A yield-surface size table "yield stress, plastic strain[, temperature]" (*PLASTIC, HARDENING=ISOTROPIC, and
+ * *CYCLIC HARDENING's table; TslPlasticTable). For each temperature the curve starts at plastic strain 0 and its
+ * strains ascend; the temperatures ascend from one curve to the next; every line gives a temperature or none does. */
+static PetscErrorCode PlasticCurve(Deck *d, TslMaterial *mat, TslPlasticTable *t)
 {
-  TslMaterial     *mat = &d->m->materials[d->material];
-  TslPlasticTable *t   = &mat->plastic;
-  char             hb[32];
-  const char      *hard = ParamUpper(d, "HARDENING", hb, sizeof(hb));
-  PetscBool        got, first_theta = PETSC_FALSE;
+  PetscBool got, first_theta = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  (void)kw;
-  USER_CHECK(!hard || !strcmp(hard, "ISOTROPIC") || !strcmp(hard, "KINEMATIC"),
-             LOC_FMT "*PLASTIC, HARDENING=%s is not supported yet (ISOTROPIC and KINEMATIC: Mises yield with isotropic or linear kinematic hardening)",
-             KLOC(d), hard);
-  USER_CHECK(!Param(d, "RATE"), LOC_FMT "*PLASTIC, RATE= (rate-dependent yield curves) is not supported yet", KLOC(d));
-  USER_CHECK(!t->n, LOC_FMT "material %s: a second *PLASTIC (the first at line %" PetscInt_FMT ")", KLOC(d), mat->name, t->loc.line);
-  t->loc = d->kwloc;
+  t->n = 0;
   for (;;) {
     PetscReal     *r;
     PetscBool      theta;
     const PetscInt n = t->n;
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;
-    USER_CHECK(n < TSL_MAX_TABLE_ROWS, LOC_FMT "*PLASTIC: at most %d data lines", DLOC(d), TSL_MAX_TABLE_ROWS);
-    USER_CHECK(d->nfield >= 1 && d->nfield <= 3, LOC_FMT "*PLASTIC data line needs: yield stress, plastic strain[, temperature]", DLOC(d));
+    USER_CHECK(n < TSL_MAX_TABLE_ROWS, LOC_FMT "*%s: at most %d data lines", DLOC(d), d->kw, TSL_MAX_TABLE_ROWS);
+    USER_CHECK(d->nfield >= 1 && d->nfield <= 3, LOC_FMT "*%s data line needs: yield stress, plastic strain[, temperature]", DLOC(d), d->kw);
     r = t->row[n];
     PetscCall(FieldReal(d, 0, "the yield stress", &r[0]));
     PetscCall(FieldRealDefault(d, 1, "the plastic strain", 0.0, &r[1]));
@@ -1316,20 +1303,105 @@ static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
     r[2]  = 0;
     if (theta) PetscCall(FieldReal(d, 2, "the temperature", &r[2]));
     if (!n) first_theta = theta;
-    USER_CHECK(theta == first_theta, LOC_FMT "*PLASTIC: a temperature-dependent table needs the temperature on every data line", DLOC(d));
-    USER_CHECK(r[0] > 0, LOC_FMT "material %s: *PLASTIC: the yield stress must be positive (got %g)", DLOC(d), mat->name, (double)r[0]);
-    USER_CHECK(r[1] >= 0, LOC_FMT "material %s: *PLASTIC: the plastic strain must not be negative (got %g)", DLOC(d), mat->name, (double)r[1]);
+    USER_CHECK(theta == first_theta, LOC_FMT "*%s: a temperature-dependent table needs the temperature on every data line", DLOC(d), d->kw);
+    USER_CHECK(r[0] > 0, LOC_FMT "material %s: *%s: the yield stress must be positive (got %g)", DLOC(d), mat->name, d->kw, (double)r[0]);
+    USER_CHECK(r[1] >= 0, LOC_FMT "material %s: *%s: the plastic strain must not be negative (got %g)", DLOC(d), mat->name, d->kw, (double)r[1]);
     if (!n || r[2] != t->row[n - 1][2]) { /* the first point of a temperature's curve */
-      USER_CHECK(!n || r[2] > t->row[n - 1][2], LOC_FMT "*PLASTIC: temperatures must ascend from one curve to the next (%g after %g)", DLOC(d),
+      USER_CHECK(!n || r[2] > t->row[n - 1][2], LOC_FMT "*%s: temperatures must ascend from one curve to the next (%g after %g)", DLOC(d), d->kw,
                  (double)r[2], (double)t->row[n - 1][2]);
-      USER_CHECK(r[1] == 0, LOC_FMT "*PLASTIC: the first yield point%s must be at plastic strain 0 (got %g)", DLOC(d), theta ? " of each temperature" : "",
-                 (double)r[1]);
+      USER_CHECK(r[1] == 0, LOC_FMT "*%s: the first yield point%s must be at plastic strain 0 (got %g)", DLOC(d), d->kw,
+                 theta ? " of each temperature" : "", (double)r[1]);
     } else
-      USER_CHECK(r[1] > t->row[n - 1][1], LOC_FMT "*PLASTIC: the plastic strains must ascend (%g after %g)", DLOC(d), (double)r[1],
+      USER_CHECK(r[1] > t->row[n - 1][1], LOC_FMT "*%s: the plastic strains must ascend (%g after %g)", DLOC(d), d->kw, (double)r[1],
                  (double)t->row[n - 1][1]);
     t->n++;
   }
-  USER_CHECK(t->n > 0, LOC_FMT "*PLASTIC needs a data line", KLOC(d));
+  USER_CHECK(t->n > 0, LOC_FMT "*%s needs a data line", KLOC(d), d->kw);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* One record of want reals (blank: 0) from data lines of at most 8 fields each, as the dialect continues a long
+ * record on the next line; *nrec: the fields given (want - 1 when the trailing temperature is left off). got = FALSE
+ * at the keyword's end. */
+static PetscErrorCode DataRecord(Deck *d, PetscInt want, PetscReal v[], PetscInt *nrec, TslLoc *loc, PetscBool *got)
+{
+  PetscInt have = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(DataLine(d, 0, got));
+  if (!*got) PetscFunctionReturn(PETSC_SUCCESS);
+  *loc = d->loc;
+  for (;;) {
+    PetscBool more;
+    USER_CHECK(have + d->nfield <= want, LOC_FMT "*%s: a data record here has at most %" PetscInt_FMT " values (got %" PetscInt_FMT ")", DLOC(d), d->kw,
+               want, have + d->nfield);
+    for (PetscInt i = 0; i < d->nfield; i++) PetscCall(FieldRealDefault(d, i, "a value", 0.0, &v[have + i]));
+    have += d->nfield;
+    if (have >= want - 1 || d->nfield < 8) break; /* complete (the temperature may be left off), or a short line ends it */
+    PetscCall(DataLine(d, 0, &more));
+    USER_CHECK(more, LOC_FMT "*%s: the data record ends after %" PetscInt_FMT " of its %" PetscInt_FMT " values", KLOC(d), d->kw, have, want - 1);
+  }
+  for (PetscInt i = have; i < want; i++) v[i] = 0;
+  *nrec = have;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *PLASTIC (Mises plasticity; TslPlasticTable). HARDENING=ISOTROPIC (the dialect's default): the curve of
+ * PlasticCurve. HARDENING=KINEMATIC: linear kinematic hardening, two lines at most (the dialect's: the slope between
+ * them is the back stress's modulus), no temperature yet. HARDENING=COMBINED, DATA TYPE=PARAMETERS: "sigma_0, C_1,
+ * gamma_1, ..., C_n, gamma_n[, temperature]" with n = NUMBER BACKSTRESSES (default 1), one record (temperature
+ * dependence: not yet); the surface's size sigma_0 unless a *CYCLIC HARDENING follows. The other data types, rate
+ * dependence and the other hardening laws are refused (docs/keywords.md). */
+static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
+{
+  TslMaterial     *mat = &d->m->materials[d->material];
+  TslPlasticTable *t   = &mat->plastic;
+  char             hb[32], db[32];
+  const char      *hard = ParamUpper(d, "HARDENING", hb, sizeof(hb)), *dtype = ParamUpper(d, "DATA TYPE", db, sizeof(db));
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!hard || !strcmp(hard, "ISOTROPIC") || !strcmp(hard, "KINEMATIC") || !strcmp(hard, "COMBINED"),
+             LOC_FMT "*PLASTIC, HARDENING=%s is not supported yet (ISOTROPIC, KINEMATIC and COMBINED: Mises yield with isotropic, linear kinematic or "
+                     "nonlinear kinematic hardening)",
+             KLOC(d), hard);
+  USER_CHECK(!Param(d, "RATE"), LOC_FMT "*PLASTIC, RATE= (rate-dependent yield curves) is not supported yet", KLOC(d));
+  USER_CHECK(!t->n && !t->nvoce, LOC_FMT "material %s: a second *PLASTIC (the first at line %" PetscInt_FMT ")", KLOC(d), mat->name, t->loc.line);
+  USER_CHECK(!dtype || (hard && !strcmp(hard, "COMBINED")), LOC_FMT "*PLASTIC: DATA TYPE= belongs to HARDENING=COMBINED", KLOC(d));
+  USER_CHECK(!Param(d, "NUMBER BACKSTRESSES") || (hard && !strcmp(hard, "COMBINED")), LOC_FMT "*PLASTIC: NUMBER BACKSTRESSES= belongs to HARDENING=COMBINED",
+             KLOC(d));
+  t->loc = d->kwloc;
+  if (hard && !strcmp(hard, "COMBINED")) {
+    PetscInt  nb = 1, nrec = 0;
+    PetscReal v[2 * TSL_MAX_BACKSTRESS + 2];
+    TslLoc    at;
+    PetscBool got;
+    USER_CHECK(dtype && !strcmp(dtype, "PARAMETERS"),
+               LOC_FMT "*PLASTIC, HARDENING=COMBINED, DATA TYPE=%s is not supported yet: give the nonlinear kinematic law's parameters (DATA TYPE=PARAMETERS: "
+                       "yield stress, C_1, gamma_1, ...; CalculiX reads such a table as a multilinear kinematic curve, Abaqus fits the parameters to it)",
+               KLOC(d), dtype ? dtype : "HALF CYCLE (the default)");
+    PetscCall(ParamInt(d, "NUMBER BACKSTRESSES", &nb));
+    USER_CHECK(nb >= 1 && nb <= TSL_MAX_BACKSTRESS, LOC_FMT "*PLASTIC: NUMBER BACKSTRESSES must lie in 1..%d (got %" PetscInt_FMT ")", KLOC(d),
+               TSL_MAX_BACKSTRESS, nb);
+    PetscCall(DataRecord(d, 2 * nb + 2, v, &nrec, &at, &got));
+    USER_CHECK(got, LOC_FMT "*PLASTIC needs a data line", KLOC(d));
+    d->loc = at;
+    USER_CHECK(nrec >= 2 * nb + 1, LOC_FMT "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS with %" PetscInt_FMT " back stress%s needs: yield stress, then C and gamma of each "
+               "(%" PetscInt_FMT " values)[, temperature] (got %" PetscInt_FMT ")", DLOC(d), nb, nb > 1 ? "es" : "", 2 * nb + 1, nrec);
+    USER_CHECK(v[0] > 0, LOC_FMT "material %s: *PLASTIC: the yield stress must be positive (got %g)", DLOC(d), mat->name, (double)v[0]);
+    for (PetscInt k = 0; k < nb; k++) {
+      USER_CHECK(v[1 + 2 * k] >= 0 && v[2 + 2 * k] >= 0, LOC_FMT "material %s: *PLASTIC: back stress %" PetscInt_FMT ": C and gamma must not be negative (got %g, %g)",
+                 DLOC(d), mat->name, k + 1, (double)v[1 + 2 * k], (double)v[2 + 2 * k]);
+      t->C[k] = v[1 + 2 * k], t->gamma[k] = v[2 + 2 * k];
+    }
+    PetscCall(DataRecord(d, 2 * nb + 2, v, &nrec, &at, &got));
+    d->loc = at;
+    USER_CHECK(!got, LOC_FMT "*PLASTIC, HARDENING=COMBINED with temperature-dependent parameters (a second data record) is not supported yet", DLOC(d));
+    t->nback = nb, t->combined = PETSC_TRUE;
+    t->n = 1, t->row[0][0] = v[0], t->row[0][1] = t->row[0][2] = 0; /* the surface's size: sigma_0 until a *CYCLIC HARDENING */
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(PlasticCurve(d, mat, t));
   if (hard && !strcmp(hard, "KINEMATIC")) { /* the yield stress at 0 and, from a second point, the back stress's modulus */
     USER_CHECK(t->n <= 2, LOC_FMT "*PLASTIC, HARDENING=KINEMATIC takes two data lines (linear kinematic hardening; got %" PetscInt_FMT ")", KLOC(d), t->n);
     USER_CHECK(t->n < 2 || t->row[1][2] == t->row[0][2], LOC_FMT "*PLASTIC, HARDENING=KINEMATIC with temperature-dependent data is not supported yet",
@@ -1337,10 +1409,51 @@ static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
     USER_CHECK(t->n < 2 || t->row[1][0] >= t->row[0][0],
                LOC_FMT "material %s: *PLASTIC, HARDENING=KINEMATIC: the second yield stress must not be below the first (%g after %g)", KLOC(d), mat->name,
                (double)t->row[1][0], (double)t->row[0][0]);
-    t->kinematic = PETSC_TRUE;
-    t->C         = t->n == 2 ? (t->row[1][0] - t->row[0][0]) / t->row[1][1] : 0;
-    t->n         = 1; /* the surface's size is constant */
+    t->nback    = 1; /* Ziegler-Prager: the nonlinear law with gamma = 0 */
+    t->C[0]     = t->n == 2 ? (t->row[1][0] - t->row[0][0]) / t->row[1][1] : 0;
+    t->gamma[0] = 0;
+    t->n        = 1; /* the surface's size is constant */
   }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *CYCLIC HARDENING (after *PLASTIC, HARDENING=COMBINED): the yield surface's size against the equivalent plastic
+ * strain, as a table (PlasticCurve) or, with PARAMETERS, "sigma_0, Q_inf, b[, temperature]" lines (ascending
+ * temperatures) of sigma_0 + Q_inf (1 - exp(-b p)). */
+static PetscErrorCode KwCyclicHardening(Deck *d, const DeckKeyword *kw)
+{
+  TslMaterial     *mat = &d->m->materials[d->material];
+  TslPlasticTable *t   = &mat->plastic;
+  PetscBool        got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(t->combined, LOC_FMT "material %s: *CYCLIC HARDENING belongs after *PLASTIC, HARDENING=COMBINED%s", KLOC(d), mat->name,
+             t->n ? " (this material's *PLASTIC has another hardening)" : "");
+  USER_CHECK(!t->cyclic_loc.line, LOC_FMT "material %s: a second *CYCLIC HARDENING (the first at line %" PetscInt_FMT ")", KLOC(d), mat->name, t->cyclic_loc.line);
+  t->cyclic_loc = d->kwloc;
+  if (!Param(d, "PARAMETERS")) PetscFunctionReturn(PlasticCurve(d, mat, t));
+  t->n = 0, t->nvoce = 0;
+  for (;;) {
+    PetscReal *r;
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    USER_CHECK(t->nvoce < TSL_MAX_TABLE_ROWS, LOC_FMT "*CYCLIC HARDENING: at most %d data lines", DLOC(d), TSL_MAX_TABLE_ROWS);
+    USER_CHECK(d->nfield >= 1 && d->nfield <= 4, LOC_FMT "*CYCLIC HARDENING, PARAMETERS data line needs: yield stress, Q_inf, b[, temperature]", DLOC(d));
+    r = t->voce[t->nvoce];
+    PetscCall(FieldReal(d, 0, "the yield stress", &r[0]));
+    PetscCall(FieldRealDefault(d, 1, "Q_inf", 0.0, &r[1]));
+    PetscCall(FieldRealDefault(d, 2, "b", 0.0, &r[2]));
+    PetscCall(FieldRealDefault(d, 3, "the temperature", 0.0, &r[3]));
+    USER_CHECK(r[0] > 0, LOC_FMT "material %s: *CYCLIC HARDENING: the yield stress must be positive (got %g)", DLOC(d), mat->name, (double)r[0]);
+    USER_CHECK(r[2] >= 0, LOC_FMT "material %s: *CYCLIC HARDENING: b must not be negative (got %g)", DLOC(d), mat->name, (double)r[2]);
+    USER_CHECK(r[0] + r[1] > 0, LOC_FMT "material %s: *CYCLIC HARDENING: the saturated size yield stress + Q_inf must be positive (got %g)", DLOC(d), mat->name,
+               (double)(r[0] + r[1]));
+    USER_CHECK(!t->nvoce || r[3] > t->voce[t->nvoce - 1][3], LOC_FMT "*CYCLIC HARDENING: the temperatures must ascend (%g after %g)", DLOC(d), (double)r[3],
+               (double)t->voce[t->nvoce - 1][3]);
+    t->nvoce++;
+  }
+  USER_CHECK(t->nvoce > 0, LOC_FMT "*CYCLIC HARDENING needs a data line", KLOC(d));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1371,7 +1484,7 @@ static PetscErrorCode KwPlasticUnsupported(Deck *d, const DeckKeyword *kw)
 {
   PetscFunctionBeginUser;
   (void)kw;
-  USER_ERR(LOC_FMT "*%s is not supported yet (plasticity: *PLASTIC, HARDENING=ISOTROPIC, rate-independent)", KLOC(d), d->kw);
+  USER_ERR(LOC_FMT "*%s is not supported yet (plasticity: *PLASTIC, rate-independent)", KLOC(d), d->kw);
 }
 
 /* A new section from ELSET= and MATERIAL= (both keywords). */
@@ -3452,10 +3565,10 @@ static const DeckKeyword Keywords[] = {
     {"DENSITY", AT_MODEL, IN_MATERIAL, "", KwProperty, TSL_PROP_DENSITY, NULL},
     {"SPECIFIC HEAT", AT_MODEL, IN_MATERIAL, "", KwProperty, TSL_PROP_SPECIFIC_HEAT, NULL},
     {"EXPANSION", AT_MODEL, IN_MATERIAL, "TYPE|ZERO", KwProperty, TSL_PROP_EXPANSION, NULL},
-    {"PLASTIC", AT_MODEL, IN_MATERIAL, "HARDENING|RATE", KwPlastic, 0, NULL},
+    {"PLASTIC", AT_MODEL, IN_MATERIAL, "HARDENING|RATE|DATA TYPE|NUMBER BACKSTRESSES", KwPlastic, 0, NULL},
     {"INELASTIC HEAT FRACTION", AT_MODEL, IN_MATERIAL, "", KwInelasticHeatFraction, 0, NULL},
     {"RATE DEPENDENT", AT_MODEL, IN_MATERIAL, "TYPE", KwPlasticUnsupported, 0, NULL},
-    {"CYCLIC HARDENING", AT_MODEL, IN_MATERIAL, "PARAMETERS", KwPlasticUnsupported, 0, NULL},
+    {"CYCLIC HARDENING", AT_MODEL, IN_MATERIAL, "PARAMETERS", KwCyclicHardening, 0, NULL},
     {"SOLID SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL|REF NODE", KwSolidSection, 0, NULL},
     {"SHELL SECTION", AT_MODEL, IN_NONE,
      "ELSET|MATERIAL|THICKNESS MODULUS|STACK DIRECTION|SECTION INTEGRATION|POISSON|OFFSET|NODAL THICKNESS|COMPOSITE|DENSITY", KwShellSection, 0,

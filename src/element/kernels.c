@@ -447,85 +447,116 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
   return PETSC_TRUE;
 }
 
-/* Mises plasticity with isotropic or linear kinematic hardening (*PLASTIC; docs/keywords.md, docs/elements.md "Plasticity"), the
- * displacement formulations of every kinematics with the whole 3D strain (3D, plane strain, axisymmetric with and
- * without twist, generalized plane strain). At each point, from the committed plastic strain eps_p and equivalent
- * plastic strain p (in->pstate), the radial return (backward Euler) of the trial e = eps - eps_th m - eps_p:
- *   q_tr = 3 mu ebar, ebar = sqrt(2/3) |dev e|, yield when q_tr > sigma_y(p, theta); then
- *   3 mu (ebar - dl) = sigma_y(p + dl, theta)        (Newton, safeguarded by bisection on [0, ebar])
- *   sigma = K tr(e) m + sqrt(2/3) sigma_y n,  n = dev e / |dev e|,  d eps_p = dl sqrt(3/2) n (engineering shear x 2).
- * The consistent tangent C = K m m^T + 2 mu beta (P_dev - n n^T) + 2 mu H / (3 mu + H) n n^T (beta = sigma_y / q_tr, H
- * = d sigma_y / dp), its temperature column from d dl / d theta = (3 dmu (ebar - dl) - d sigma_y / d theta) / (3 mu + H),
- * and the plastic heat: a source eta w inelastic_rate with w = int_p^(p + dl) sigma_y dp the plastic work of the
- * increment (per volume; exact for the table's piecewise linear curves, so the heat of a flow does not depend on the
- * increments), linearised in u and theta through dl. Linear kinematic hardening (HARDENING=KINEMATIC) adds the
- * committed back stress al (zero otherwise): dev e is taken relative to al / (2 mu), sigma_y becomes sigma_y + C dl
- * (H: H + C), sigma gains al, al gains sqrt(2/3) C dl n, and w the trapezoid of the back stress's work, sqrt(3/2) dl
- * al : n + C dl^2 / 2 (docs/elements.md). Nothing is stored here: the state the current u reaches goes to
+/* Mises plasticity with isotropic, linear kinematic or nonlinear kinematic hardening (*PLASTIC; docs/keywords.md,
+ * docs/elements.md "Plasticity"), the displacement formulations of every kinematics with the whole 3D strain (3D, plane
+ * strain, axisymmetric with and without twist, generalized plane strain). At each point, from the committed plastic
+ * strain eps_p, equivalent plastic strain p and back stresses a_k (in->pstate), the return (backward Euler) of the
+ * trial e = eps - eps_th m - eps_p, d = dev e (tensor components): with theta_k = 1 / (1 + gamma_k dl) each back
+ * stress a_k = theta_k (a_k,n + sqrt(2/3) C_k dl n), and the relative stress xi = sigma_dev - sum a_k lies along
+ *   xit(dl) = 2 mu d - sum theta_k a_k,n,   n = xit / |xit|,
+ * so yield at q_tr = sqrt(3/2) |xit(0)| > sigma_y(p, theta) and then the scalar equation
+ *   g(dl) = sqrt(3/2) |xit(dl)| - (3 mu + sum theta_k C_k) dl - sigma_y(p + dl, theta) = 0
+ * (Newton, safeguarded by bisection on [0, q_tr / (3 mu)]: g(0) > 0 and g(q_tr / (3 mu)) < 0 since |a_k| stays below
+ * sqrt(2/3) C_k / gamma_k), with -g' = D = 3 mu + sum C_k theta_k^2 + H - sqrt(3/2) n : v, v = sum gamma_k theta_k^2
+ * a_k,n; sigma = K tr(e) m + 2 mu d - sqrt(6) mu dl n, d eps_p = sqrt(3/2) dl n (engineering shear x 2). Isotropic
+ * hardening: no back stress; HARDENING=KINEMATIC: one with gamma = 0 (theta = 1, xit fixed: the radial return). The
+ * consistent tangent, with beta = 1 - sqrt(6) mu dl / |xit| and v_perp = v - n (n : v),
+ *   C = K m m^T + 2 mu beta P_dev + 2 mu (1 - beta - 3 mu / D) n n^T - 2 mu (1 - beta) sqrt(3/2) / D v_perp n^T
+ * (not symmetric when gamma > 0), its temperature column from d dl / d theta = (sqrt(3/2) n : 2 dmu d - 3 dmu dl -
+ * d sigma_y / d theta) / D, and the plastic heat: a source eta w inelastic_rate with w the plastic work of the
+ * increment per volume, int sigma_y dp (exact for the tables and the exponential law) plus the back stresses' share,
+ * the trapezoid sqrt(3/2) dl n : (a_n + a) / 2 (exact for linear kinematic hardening), linearised in u and theta
+ * through dl and n (docs/elements.md). Nothing is stored here: the state the current u reaches goes to
  * in->pstate_new when asked (the commit of an accepted increment). */
 static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
                                   PetscReal energy[4])
 {
-  const TslElementType *t    = in->type;
-  const TslGeometry    *g    = t->geom;
-  const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
-  const TslMaterial    *mat  = in->sec->mat;
-  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
-  const PetscReal       heat = mat->heat_fraction * in->inelastic_rate, s23 = PetscSqrtReal(2.0 / 3.0), s32 = PetscSqrtReal(1.5);
-  const PetscBool       kin = mat->plastic.kinematic;
-  const PetscReal       Ck  = kin ? mat->plastic.C : 0; /* the back stress's modulus */
-  const PetscInt        ns  = TslMaterialPlasticState(mat);
-  static const PetscReal no_back[6] = {0, 0, 0, 0, 0, 0}; /* isotropic hardening: the back stress is zero (exactly: same bits) */
-  MechPoint             mq;
+  const TslElementType  *t    = in->type;
+  const TslGeometry     *g    = t->geom;
+  const TslQuadrature   *quad = t->form->quadrature(g, in->sec);
+  const TslMaterial     *mat  = in->sec->mat;
+  const TslPlasticTable *pl   = &mat->plastic;
+  const PetscInt         ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
+  const PetscReal        heat = mat->heat_fraction * in->inelastic_rate, s23 = PetscSqrtReal(2.0 / 3.0), s32 = PetscSqrtReal(1.5);
+  const PetscInt         nb = pl->nback, ns = TslMaterialPlasticState(mat);
+  MechPoint              mq;
 
   if (energy) energy[0] = energy[2] = energy[3] = 0;
   for (PetscInt q = 0; q < quad->n; q++) {
-    const PetscReal *st = in->pstate + ns * q, *al = kin ? st + 7 : no_back; /* al: the committed back stress */
-    PetscReal        lam, mu, Kb, dlam, dmu, dKb, e[6], d[6], nh[6] = {0}, tr, nrm, ebar, qtr, theta, sy, H, dsy, dl = 0, sig[6], deps[6], w = 0;
-    PetscReal        dr[6], an = 0; /* the trial strain's deviator relative to the back stress; n : back stress */
+    const PetscReal *st = in->pstate + ns * q, *ab = st + 7; /* the committed back stresses, 6 each */
+    PetscReal        lam, mu, Kb, dlam, dmu, dKb, e[6], d[6], nh[6] = {0}, xi[6], v[6] = {0}, A[6] = {0}, tr, nx, qtr, theta, sy, H, dsy, dl = 0;
+    PetscReal        sig[6], deps[6], w = 0, thk[TSL_MAX_BACKSTRESS], Dd = 0, sumtc = 0;
     PetscReal        dw_th_fixed = 0; /* d w / d theta at fixed p0, p1 */
     PetscBool        plastic = PETSC_FALSE;
 
     if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
     theta = NodalTheta(in, mq.p->N, in->u);
     {
-      const PetscReal E = mq.mp.E, v = mq.mp.nu, a = (1 + v) * (1 - 2 * v);
+      const PetscReal E = mq.mp.E, vv = mq.mp.nu, a = (1 + vv) * (1 - 2 * vv);
       TslElementLame(&mq.mp, &lam, &mu);
-      dlam = mq.mp.dE * v / a + mq.mp.dnu * E * (1 + 2 * v * v) / (a * a);
-      dmu  = mq.mp.dE / (2 * (1 + v)) - mq.mp.dnu * E / (2 * (1 + v) * (1 + v));
+      dlam = mq.mp.dE * vv / a + mq.mp.dnu * E * (1 + 2 * vv * vv) / (a * a);
+      dmu  = mq.mp.dE / (2 * (1 + vv)) - mq.mp.dnu * E / (2 * (1 + vv) * (1 + vv));
       Kb = lam + 2 * mu / 3, dKb = dlam + 2 * dmu / 3;
     }
     for (PetscInt r = 0; r < 6; r++) e[r] = mq.eps[r] - VoigtM[r] * mq.eps_th - st[r];
     tr = e[0] + e[1] + e[2];
     for (PetscInt r = 0; r < 6; r++) d[r] = r < 3 ? e[r] - tr / 3 : 0.5 * e[r];
-    for (PetscInt r = 0; r < 6; r++) dr[r] = d[r] - al[r] / (2 * mu);
-    nrm  = PetscSqrtReal(dr[0] * dr[0] + dr[1] * dr[1] + dr[2] * dr[2] + 2 * (dr[3] * dr[3] + dr[4] * dr[4] + dr[5] * dr[5]));
-    ebar = s23 * nrm;
-    qtr  = 3 * mu * ebar;
-    sy   = TslMaterialYield(mat, st[6], theta, &H, &dsy);
-    if (qtr > sy * (1 + 1e-12)) { /* plastic: 3 mu (ebar - dl) = sigma_y(p + dl) on [0, ebar] */
-      PetscReal lo = 0, hi = ebar;
+    for (PetscInt k = 0; k < nb; k++) thk[k] = 1;
+    /* xit(dl) and |xit|: the relative trial stress with the back stresses' recovery at dl */
+#define XIT(DL)                                                                                                  \
+  do {                                                                                                           \
+    for (PetscInt r = 0; r < 6; r++) xi[r] = 2 * mu * d[r];                                                      \
+    for (PetscInt k = 0; k < nb; k++) {                                                                          \
+      thk[k] = 1 / (1 + pl->gamma[k] * (DL));                                                                    \
+      for (PetscInt r = 0; r < 6; r++) xi[r] -= thk[k] * ab[6 * k + r];                                          \
+    }                                                                                                            \
+    nx = PetscSqrtReal(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2] + 2 * (xi[3] * xi[3] + xi[4] * xi[4] + xi[5] * xi[5])); \
+  } while (0)
+    XIT(0);
+    qtr = s32 * nx;
+    sy  = TslMaterialYield(mat, st[6], theta, &H, &dsy);
+    if (qtr > sy * (1 + 1e-12)) { /* plastic: g(dl) = 0 on [0, q_tr / (3 mu)] */
+      PetscReal lo = 0, hi = qtr / (3 * mu);
       plastic = PETSC_TRUE;
       for (PetscInt it = 0; it < 100; it++) {
-        const PetscReal gv = 3 * mu * (ebar - dl) - sy - Ck * dl;
-        PetscReal       next;
+        PetscReal gv, next, xv = 0;
+        sumtc = 0, Dd = 3 * mu + H;
+        for (PetscInt k = 0; k < nb; k++) {
+          const PetscReal an = (xi[0] * ab[6 * k] + xi[1] * ab[6 * k + 1] + xi[2] * ab[6 * k + 2] +
+                                2 * (xi[3] * ab[6 * k + 3] + xi[4] * ab[6 * k + 4] + xi[5] * ab[6 * k + 5])) / nx;
+          sumtc += thk[k] * pl->C[k];
+          Dd += pl->C[k] * thk[k] * thk[k];
+          xv += pl->gamma[k] * thk[k] * thk[k] * an;
+        }
+        Dd -= s32 * xv;
+        gv = s32 * nx - (3 * mu + sumtc) * dl - sy;
         if (PetscAbsReal(gv) <= 1e-15 * sy) break;
         if (gv > 0) lo = dl;
         else hi = dl;
-        next = 3 * mu + H + Ck > 0 ? dl + gv / (3 * mu + H + Ck) : 0.5 * (lo + hi);
+        next = Dd > 0 ? dl + gv / Dd : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         dl = next;
         sy = TslMaterialYield(mat, st[6] + dl, theta, &H, &dsy);
+        XIT(dl);
       }
-      for (PetscInt r = 0; r < 6; r++) nh[r] = dr[r] / nrm;
+      /* at the converged dl: n, D, v and the work */
+      sumtc = 0, Dd = 3 * mu + H;
+      for (PetscInt r = 0; r < 6; r++) nh[r] = xi[r] / nx;
       w = TslMaterialYieldIntegral(mat, st[6], st[6] + dl, theta, &dw_th_fixed);
-      /* and the back stress's share, the trapezoid of (al + al_new) / 2 : d eps_p (exact on the radial path) */
-      an = al[0] * nh[0] + al[1] * nh[1] + al[2] * nh[2] + 2 * (al[3] * nh[3] + al[4] * nh[4] + al[5] * nh[5]);
-      w += s32 * dl * an + 0.5 * Ck * dl * dl;
-    } else if (nrm > 0)
-      for (PetscInt r = 0; r < 6; r++) nh[r] = dr[r] / nrm;
+      for (PetscInt k = 0; k < nb; k++) {
+        const PetscReal *ak = ab + 6 * k, gt2 = pl->gamma[k] * thk[k] * thk[k];
+        const PetscReal  an = ak[0] * nh[0] + ak[1] * nh[1] + ak[2] * nh[2] + 2 * (ak[3] * nh[3] + ak[4] * nh[4] + ak[5] * nh[5]);
+        sumtc += thk[k] * pl->C[k];
+        Dd += pl->C[k] * thk[k] * thk[k] - s32 * gt2 * an;
+        for (PetscInt r = 0; r < 6; r++) v[r] += gt2 * ak[r], A[r] += (1 + thk[k]) * ak[r];
+        /* the back stress's share, the trapezoid of (a_n + a) / 2 : d eps_p (exact on the radial path of gamma = 0) */
+        w += 0.5 * s32 * dl * (1 + thk[k]) * an + 0.5 * dl * dl * thk[k] * pl->C[k];
+      }
+    } else if (nx > 0)
+      for (PetscInt r = 0; r < 6; r++) nh[r] = xi[r] / nx;
+#undef XIT
     for (PetscInt r = 0; r < 6; r++) {
-      sig[r]  = (r < 3 ? Kb * tr : 0) + (plastic ? al[r] + s23 * (sy + Ck * dl) * nh[r] : 2 * mu * d[r]);
+      sig[r]  = (r < 3 ? Kb * tr : 0) + 2 * mu * d[r] - (plastic ? PetscSqrtReal(6.0) * mu * dl * nh[r] : 0);
       deps[r] = plastic ? dl * s32 * nh[r] * (r < 3 ? 1 : 2) : 0;
     }
     for (PetscInt a = 0; a < nv; a++)
@@ -539,8 +570,8 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
       PetscReal *sn = in->pstate_new + ns * q;
       for (PetscInt r = 0; r < 6; r++) sn[r] = st[r] + deps[r];
       sn[6] = st[6] + dl;
-      if (kin)
-        for (PetscInt r = 0; r < 6; r++) sn[7 + r] = al[r] + s23 * Ck * dl * nh[r];
+      for (PetscInt k = 0; k < nb; k++)
+        for (PetscInt r = 0; r < 6; r++) sn[7 + 6 * k + r] = thk[k] * (ab[6 * k + r] + s23 * pl->C[k] * dl * nh[r]);
     }
     if (res) {
       for (PetscInt r = 0; r < 6; r++) res->E[r] += mq.eps[r] / quad->n, res->S[r] += sig[r] / quad->n, res->PE[r] += (st[r] + deps[r]) / quad->n;
@@ -554,27 +585,47 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
     }
     if (!K) continue;
     {
-      PetscReal C[6][6], dsig[6], dw_de[6] = {0}, dw_dth = 0;
-      const PetscReal Hk = H + Ck, syk = sy + Ck * dl; /* the hardening and the surface's reach with the back stress's share */
-      const PetscReal beta = plastic ? syk / qtr : 1, hn = plastic ? 2 * mu * Hk / (3 * mu + Hk) - 2 * mu * beta : 0;
+      PetscReal       C[6][6], dsig[6], dw_de[6] = {0}, dw_dth = 0, vp[6] = {0}, Ap[6] = {0};
+      const PetscReal beta = plastic ? 1 - PetscSqrtReal(6.0) * mu * dl / nx : 1, hn = plastic ? 2 * mu * (1 - beta - 3 * mu / Dd) : 0;
+      const PetscReal hv = plastic ? -2 * mu * (1 - beta) * s32 / Dd : 0;
+      PetscReal       nv_ = 0, nA = 0, ndn = 0;
+      if (plastic) {
+        for (PetscInt r = 0; r < 6; r++) {
+          const PetscReal wr = r < 3 ? 1 : 2;
+          nv_ += wr * nh[r] * v[r], nA += wr * nh[r] * A[r], ndn += wr * nh[r] * d[r];
+        }
+        for (PetscInt r = 0; r < 6; r++) vp[r] = v[r] - nh[r] * nv_, Ap[r] = A[r] - nh[r] * nA;
+      }
       for (PetscInt r = 0; r < 6; r++)
         for (PetscInt c = 0; c < 6; c++) {
           const PetscReal pdev = r < 3 && c < 3 ? (r == c) - 1.0 / 3 : (r == c ? 0.5 : 0);
-          C[r][c] = (r < 3 && c < 3 ? Kb : 0) + 2 * mu * beta * pdev + hn * nh[r] * nh[c];
+          C[r][c] = (r < 3 && c < 3 ? Kb : 0) + 2 * mu * beta * pdev + hn * nh[r] * nh[c] + hv * vp[r] * nh[c];
         }
       if (plastic) {
-        /* the back stress fixed (zero without kinematic hardening: then d = dr, n : d = |dr| and the direction does
-         * not turn), the relative deviator 2 mu d - al turns with theta through mu: d q_tr / d theta = sqrt(6) dmu n : d,
-         * the direction's change dn = dmu (d - n (n : d)) / (mu |dr|); the work's w_dl = sigma_y(p1) + sqrt(3/2) n : al
-         * + C dl and its direction term sqrt(3/2) dl al : dn */
-        const PetscReal nd   = d[0] * nh[0] + d[1] * nh[1] + d[2] * nh[2] + 2 * (d[3] * nh[3] + d[4] * nh[4] + d[5] * nh[5]);
-        const PetscReal ad   = al[0] * d[0] + al[1] * d[1] + al[2] * d[2] + 2 * (al[3] * d[3] + al[4] * d[4] + al[5] * d[5]);
-        const PetscReal ddl  = (PetscSqrtReal(6.0) * dmu * nd - 3 * dmu * dl - dsy) / (3 * mu + Hk), dsyn = Hk * ddl + dsy;
-        const PetscReal wdl  = sy + s32 * an + Ck * dl;
-        for (PetscInt r = 0; r < 6; r++)
-          dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + s23 * dsyn * nh[r] + s23 * syk * dmu * (d[r] - nh[r] * nd) / (mu * nrm);
-        for (PetscInt c = 0; c < 6; c++) dw_de[c] = wdl * 3 * mu / (3 * mu + Hk) * s23 * nh[c] + s32 * dl * (al[c] - nh[c] * an) / nrm;
-        dw_dth = dw_th_fixed + wdl * ddl + s32 * dl * dmu * (ad - an * nd) / (mu * nrm);
+        /* with the back stresses fixed, xit turns with theta through mu: d xit / d theta = 2 dmu d; then
+         * d dl / d theta = (sqrt(3/2) n : 2 dmu d - 3 dmu dl - dsy) / D, dn = (I - n n) (2 dmu d + v ddl) / |xit|,
+         * d sigma_dev = 2 dmu d - sqrt(6) (dmu dl + mu ddl) n - sqrt(6) mu dl dn. The work: w_dl = sigma_y(p1) + the
+         * back stresses' sqrt(3/2) / 2 sum (1 + theta_k) n : a_k,n - sqrt(3/2) dl / 2 sum gamma_k theta_k^2 n : a_k,n +
+         * dl sum theta_k C_k - dl^2 / 2 sum gamma_k theta_k^2 C_k, and its direction term sqrt(3/2) dl / 2 A_perp : dn
+         * (A = sum (1 + theta_k) a_k,n) */
+        const PetscReal s6 = PetscSqrtReal(6.0), ddl = (s32 * 2 * dmu * ndn - 3 * dmu * dl - dsy) / Dd;
+        PetscReal       wdl = sy, Apv = 0, Apd = 0;
+        for (PetscInt k = 0; k < nb; k++) {
+          const PetscReal *ak = ab + 6 * k, gt2 = pl->gamma[k] * thk[k] * thk[k];
+          const PetscReal  an = ak[0] * nh[0] + ak[1] * nh[1] + ak[2] * nh[2] + 2 * (ak[3] * nh[3] + ak[4] * nh[4] + ak[5] * nh[5]);
+          wdl += 0.5 * s32 * (1 + thk[k]) * an - 0.5 * s32 * dl * gt2 * an + dl * thk[k] * pl->C[k] - 0.5 * dl * dl * gt2 * pl->C[k];
+        }
+        for (PetscInt r = 0; r < 6; r++) {
+          const PetscReal wr = r < 3 ? 1 : 2;
+          Apv += wr * Ap[r] * v[r], Apd += wr * Ap[r] * d[r];
+        }
+        wdl += 0.5 * s32 * dl * Apv / nx;
+        for (PetscInt r = 0; r < 6; r++) {
+          const PetscReal dn = (2 * dmu * (d[r] - nh[r] * ndn) + vp[r] * ddl) / nx;
+          dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + 2 * dmu * d[r] - s6 * (dmu * dl + mu * ddl) * nh[r] - s6 * mu * dl * dn;
+        }
+        for (PetscInt c = 0; c < 6; c++) dw_de[c] = wdl * s6 * mu / Dd * nh[c] + 0.5 * s32 * dl * 2 * mu * Ap[c] / nx;
+        dw_dth = dw_th_fixed + wdl * ddl + 0.5 * s32 * dl * 2 * dmu * Apd / nx;
       } else
         for (PetscInt r = 0; r < 6; r++) dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + 2 * dmu * d[r];
       for (PetscInt c1 = 0; c1 < ncol; c1++) {

@@ -82,7 +82,36 @@ PetscBool TslMaterialIsTemperatureDependent(const TslMaterial *mat)
     if (mat->prop[k].n > 1) return PETSC_TRUE;
   for (PetscInt i = 1; i < mat->plastic.n; i++)
     if (mat->plastic.row[i][2] != mat->plastic.row[0][2]) return PETSC_TRUE;
-  return PETSC_FALSE;
+  return mat->plastic.nvoce > 1 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+/* The exponential law's parameters at theta (*CYCLIC HARDENING, PARAMETERS: rows sigma_0, Q, b, temperature; linear
+ * between the rows' temperatures, the end rows held beyond) and their derivatives in theta. */
+static void VoceAt(const TslPlasticTable *t, PetscReal theta, PetscReal v[3], PetscReal dv[3])
+{
+  PetscInt k = 0;
+
+  for (PetscInt i = 0; i < 3; i++) v[i] = t->voce[0][i], dv[i] = 0;
+  if (t->nvoce < 2 || theta <= t->voce[0][3]) return;
+  while (k + 2 < t->nvoce && theta > t->voce[k + 1][3]) k++;
+  if (theta >= t->voce[t->nvoce - 1][3]) {
+    for (PetscInt i = 0; i < 3; i++) v[i] = t->voce[t->nvoce - 1][i];
+    return;
+  }
+  {
+    const PetscReal dt = t->voce[k + 1][3] - t->voce[k][3], w = (theta - t->voce[k][3]) / dt;
+    for (PetscInt i = 0; i < 3; i++) v[i] = (1 - w) * t->voce[k][i] + w * t->voce[k + 1][i], dv[i] = (t->voce[k + 1][i] - t->voce[k][i]) / dt;
+  }
+}
+
+/* (1 - exp(-x)) / x and (1 - exp(-x) (1 + x)) / x^2 = int_0^1 s exp(-x s) ds, without their cancellation near 0 */
+static PetscReal Phi1(PetscReal x)
+{
+  return x < 1e-8 ? 1 - 0.5 * x : -expm1(-x) / x;
+}
+static PetscReal Phi2(PetscReal x)
+{
+  return x < 1e-3 ? 0.5 - x / 3 + x * x / 8 - x * x * x / 30 : (-expm1(-x) - x * PetscExpReal(-x)) / (x * x);
 }
 
 /* One temperature's curve (rows s..e-1): sigma_y at peeq and its slope. */
@@ -108,6 +137,14 @@ PetscReal TslMaterialYield(const TslMaterial *mat, PetscReal peeq, PetscReal the
   PetscReal              h0, h1, s0, s1, w;
 
   if (dtheta) *dtheta = 0;
+  if (t->nvoce) { /* sigma_0 + Q (1 - exp(-b p)) */
+    PetscReal v[3], dv[3], e;
+    VoceAt(t, theta, v, dv);
+    e = PetscExpReal(-v[2] * peeq);
+    if (H) *H = v[1] * v[2] * e;
+    if (dtheta) *dtheta = dv[0] + dv[1] * (1 - e) + v[1] * peeq * e * dv[2];
+    return v[0] + v[1] * (1 - e);
+  }
   /* groups of equal temperature: [g0, g1) the last one at or below theta (or the first), [g1, g2) the next */
   for (;;) {
     g1 = g0 + 1;
@@ -151,6 +188,16 @@ PetscReal TslMaterialYieldIntegral(const TslMaterial *mat, PetscReal p0, PetscRe
   PetscReal              i0, i1, w;
 
   if (dtheta) *dtheta = 0;
+  if (t->nvoce) { /* int (1 - exp(-b p)) dp = D (1 - e0 Phi1(b D)), its b-derivative int p exp(-b p) dp = e0 (p0 D Phi1 + D^2 Phi2) */
+    PetscReal       v[3], dv[3];
+    const PetscReal D = p1 - p0;
+    VoceAt(t, theta, v, dv);
+    {
+      const PetscReal e0 = PetscExpReal(-v[2] * p0), f1 = Phi1(v[2] * D), F = D * (1 - e0 * f1);
+      if (dtheta) *dtheta = dv[0] * D + dv[1] * F + v[1] * e0 * (p0 * D * f1 + D * D * Phi2(v[2] * D)) * dv[2];
+      return v[0] * D + v[1] * F;
+    }
+  }
   for (;;) { /* the groups of TslMaterialYield */
     g1 = g0 + 1;
     while (g1 < t->n && t->row[g1][2] == t->row[g0][2]) g1++;

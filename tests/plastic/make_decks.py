@@ -23,9 +23,18 @@ E, NU, RHO, C = 200000.0, 0.3, 1.0, 2.0
 R0 = 10.0  # the ring's inner radius
 PLASTIC = "*PLASTIC\n 200.0, 0.0\n 700.0, 0.5\n"
 PLASTIC_KIN = "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0\n 700.0, 0.5\n"  # linear kinematic, C = 1000
+# nonlinear kinematic (two back stresses: C = 40000, gamma = 400, saturating at 100, and a linear one of C = 1000)
+# with the exponential isotropic law 200 + 50 (1 - exp(-20 p)); COMBINED1: Abaqus's defaults, one back stress, a
+# surface of constant size
+PLASTIC_COMB = ("*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS, NUMBER BACKSTRESSES=2\n 200.0, 40000.0, 400.0, 1000.0, 0.0\n"
+                "*CYCLIC HARDENING, PARAMETERS\n 200.0, 50.0, 20.0\n")
+PLASTIC_COMB1 = "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS\n 200.0, 40000.0, 400.0\n"
+PLASTIC_COMB_SOFT = ("*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS, NUMBER BACKSTRESSES=2\n 200.0, 40000.0, 400.0, 1000.0, 0.0\n"
+                     "*CYCLIC HARDENING, PARAMETERS\n 200.0, 50.0, 20.0, 0.0\n 120.0, 30.0, 10.0, 100.0\n")
 PLASTIC_SOFT = "*PLASTIC\n 200.0, 0.0, 0.0\n 700.0, 0.5, 0.0\n 100.0, 0.0, 50.0\n 350.0, 0.5, 50.0\n"
 # the strain path of the uniaxial decks: (step, period, increment, target strain)
 PATH = [("LOAD", 1.0, 0.1, 0.01), ("UNLOAD", 1.0, 0.25, 0.004), ("REVERSE", 1.0, 0.1, -0.01)]
+CYCLE = PATH + [("RELOAD", 1.0, 0.1, 0.01)]  # the nonlinear kinematic decks close the cycle
 
 
 def cube(typ):
@@ -64,26 +73,29 @@ def holds(typ):
     return ("*BOUNDARY\n X0, 2, 2\n" if typ == "CAX4T" else "*BOUNDARY\n X0, 1, 1\n Y0, 2, 2\n Z0, 3, 3\n"), (2 if typ == "CAX4T" else 1)
 
 
-def uniaxial(typ, kin=False):
+def uniaxial(typ, kin=False, law=None, path=PATH):
     hold, dof = holds(typ)
-    text = ("*HEADING\n Uniaxial stress of one %s: loading, unloading, reverse loading (Mises, %s hardening)\n" % (typ, "kinematic" if kin else "isotropic") +
-            model(typ, PLASTIC_KIN if kin else PLASTIC))
-    for k, (name, period, inc, strain) in enumerate(PATH):
+    text = ("*HEADING\n Uniaxial stress of one %s: loading, unloading, reverse loading (Mises, %s hardening)\n" %
+            (typ, "combined" if law else "kinematic" if kin else "isotropic") + model(typ, law or (PLASTIC_KIN if kin else PLASTIC)))
+    for k, (name, period, inc, strain) in enumerate(path):
         text += ("*STEP, NAME=%s, INC=100\n*STATIC, DIRECT\n %g, %g\n" % (name, inc, period) + (hold if k == 0 else "") +
                  "*BOUNDARY\n X1, %d, %d, %.12g\n*END STEP\n" % (dof, dof, strain))
     return text
 
 
-def adiabatic(typ, soft, kin=False):
+def adiabatic(typ, soft, kin=False, law=None, inc=0.05):
+    """law: pulled on a ramp (the coupled step's default is a jump), so that the law's path is followed in small
+    increments"""
     hold, dof = holds(typ)
+
     return ("*HEADING\n Adiabatic heating of one %s pulled past yield%s\n" % (typ, " (a yield stress falling with temperature)" if soft else
-                                                                             " (kinematic hardening)" if kin else "") +
-            model(typ, PLASTIC_SOFT if soft else PLASTIC_KIN if kin else PLASTIC, heat=True) +
-            "*STEP, NAME=PULL, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.05, 1.0\n" + hold +
-            "*BOUNDARY\n X1, %d, %d, 0.02\n*END STEP\n" % (dof, dof))
+                                                                             " (kinematic hardening)" if kin else " (combined hardening)" if law else "") +
+            model(typ, law or (PLASTIC_SOFT if soft else PLASTIC_KIN if kin else PLASTIC), heat=True) +
+            ("*AMPLITUDE, NAME=RAMP\n 0.0, 0.0, 1.0, 1.0\n" if law else "") + "*STEP, NAME=PULL, INC=%d\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n %g, 1.0\n" % (max(100, round(2 / inc)), inc) + hold +
+            "*BOUNDARY%s\n X1, %d, %d, 0.02\n*END STEP\n" % (", AMPLITUDE=RAMP" if law else "", dof, dof))
 
 
-def jacobian(kin=False):
+def jacobian(kin=False, law=None):
     """One distorted C3D8T pulled well past yield in two increments (every point flows in both: a point near the yield
     surface would put the finite differences across its kink), heated at a corner, with a modulus and a yield stress
     falling with temperature, expansion and the plastic heat. In millimetres (a brick of about 1000): PETSc's
@@ -95,12 +107,12 @@ def jacobian(kin=False):
     return ("*HEADING\n A distorted C3D8T pulled past yield and heated: the plastic tangent against finite differences\n"
             "*NODE, NSET=NALL\n" + "".join(" %d, %g, %g, %g\n" % ((i + 1,) + c) for i, c in enumerate(corner)) +
             "*ELEMENT, TYPE=C3D8T, ELSET=ALL\n 1, 1, 2, 3, 4, 5, 6, 7, 8\n*NSET, NSET=FIX\n 1, 4, 5, 8\n*NSET, NSET=PULL\n 2, 3, 6, 7\n"
-            "*MATERIAL, NAME=STEEL\n*ELASTIC\n 200000., 0.3, 0.\n 150000., 0.3, 100.\n" + (PLASTIC_KIN if kin else PLASTIC_SOFT) +
+            "*MATERIAL, NAME=STEEL\n*ELASTIC\n 200000., 0.3, 0.\n 150000., 0.3, 100.\n" + (law or (PLASTIC_KIN if kin else PLASTIC_SOFT)) +
             "*INELASTIC HEAT FRACTION\n*EXPANSION\n 1.2E-5\n*CONDUCTIVITY\n 50.0\n*DENSITY\n 1.0\n*SPECIFIC HEAT\n 2.0\n"
             "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\n NALL, 20.0\n"
             "*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.5, 1.0\n*BOUNDARY\n FIX, 1, 1\n 1, 2, 3\n 4, 3, 3\n"
             " PULL, 1, 1, 40.0\n*CFLUX\n 7, 11, 5.0E6\n*END STEP\n" +
-            ("*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.5, 1.0\n*BOUNDARY\n PULL, 2, 2, 40.0\n*END STEP\n" if kin else ""))
+            ("*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.5, 1.0\n*BOUNDARY\n PULL, 2, 2, 40.0\n*END STEP\n" if kin or law else ""))
 
 
 # bad decks made from the uniaxial one by one substitution: name -> (text, replacement)
@@ -110,6 +122,11 @@ BAD_EDITS = {
     "yield_zero": (" 200.0, 0.0\n", " 0.0, 0.0\n"),
     "descending": (" 700.0, 0.5\n", " 700.0, 0.5\n 800.0, 0.4\n"),
     "combined": ("*PLASTIC\n", "*PLASTIC, HARDENING=COMBINED\n"),
+    "combined_count": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS, NUMBER BACKSTRESSES=2\n 200.0, 40000.0, 400.0\n"),
+    "combined_theta": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS\n 200.0, 40000.0, 400.0, 0.0\n 150.0, 30000.0, 400.0, 100.0\n"),
+    "combined_gamma": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS\n 200.0, 40000.0, -400.0\n"),
+    "cyclic_isotropic": (TABLE, TABLE + "*CYCLIC HARDENING, PARAMETERS\n 200.0, 50.0, 20.0\n"),
+    "cyclic_b": (TABLE, PLASTIC_COMB1 + "*CYCLIC HARDENING, PARAMETERS\n 200.0, 50.0, -20.0\n"),
     "kinematic_lines": (TABLE, "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0\n 700.0, 0.5\n 800.0, 1.0\n"),
     "kinematic_theta": (TABLE, "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0, 0.0\n 100.0, 0.0, 50.0\n"),
     "rate": (TABLE, TABLE + "*RATE DEPENDENT, TYPE=POWER LAW\n 1.0, 5.0\n"),
@@ -128,7 +145,7 @@ def bad(name):
     raise KeyError(name)
 
 
-BAD = ["first_strain", "yield_zero", "descending", "combined", "kinematic_lines", "kinematic_theta", "rate", "plane_stress", "explicit", "heat_fraction"]
+BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "plane_stress", "explicit", "heat_fraction"]
 
 
 def main():
@@ -136,6 +153,10 @@ def main():
     decks = {"jacobian_plastic_c3d8t": jacobian(), "jacobian_kinematic_c3d8t": jacobian(True), "adiabatic_kinematic_c3d8t": adiabatic("C3D8T", False, True)}
     for typ in ("C3D8T", "CAX4T"):
         decks["uniaxial_kinematic_%s" % typ.lower()] = uniaxial(typ, True)
+        decks["uniaxial_combined_%s" % typ.lower()] = uniaxial(typ, law=PLASTIC_COMB, path=CYCLE)
+    decks["uniaxial_combined1_c3d8t"] = uniaxial("C3D8T", law=PLASTIC_COMB1, path=CYCLE)
+    decks["adiabatic_combined_c3d8t"] = adiabatic("C3D8T", False, law=PLASTIC_COMB, inc=0.002)
+    decks["jacobian_combined_c3d8t"] = jacobian(law=PLASTIC_COMB_SOFT)
     for typ in ("C3D8T", "C3D8RT", "C3D20T", "CAX4T"):
         decks["uniaxial_%s" % typ.lower()] = uniaxial(typ)
     for typ in ("C3D8T", "CAX4T"):
