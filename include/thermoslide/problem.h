@@ -173,6 +173,8 @@ typedef struct {
   PetscReal friction_heat;  /* part of it converted to heat */
   PetscReal viscous;        /* rate dissipated by the bulk viscosity, sum of q eps_vol_dot (0 without viscosity) */
   PetscReal viscous_prev;   /* the previous evaluation's q times this one's eps_vol_dot (its work's second half) */
+  PetscReal plastic_work;   /* plastic work of the move since the previous evaluation (*PLASTIC), committed by this one */
+  PetscReal plastic_heat;   /* its heat (*INELASTIC HEAT FRACTION), a rate over that move's increment h */
 } TslExplicitRates;
 
 /* Unconstrained nodal vectors at the current solution and time, ghost contributions summed (collective):

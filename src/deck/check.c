@@ -538,9 +538,6 @@ static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
     CHECK(s->explicit_dynamics, s->bv_loc, "*BULK VISCOSITY belongs to an explicit step (*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT); step %s is not one", s->name);
   if (!s->explicit_dynamics) PetscFunctionReturn(PETSC_SUCCESS);
   CHECK(!s->tfile.given, s->tfile.loc, "*TEMPERATURE, FILE= belongs to a *STATIC or *COUPLED TEMPERATURE-DISPLACEMENT step; step %s is explicit", s->name);
-  for (PetscInt k = 0; k < m->nmaterial; k++)
-    CHECK(!TslMaterialIsPlastic(&m->materials[k]), m->materials[k].plastic.loc, "*PLASTIC in an explicit step is not supported yet (step %s at %s)",
-          s->name, where);
   if (m->nequation) CHECK(PETSC_FALSE, m->equations[0].loc, "*EQUATION is not supported in explicit steps (step %s at %s)", s->name, where);
   /* the kinematic predictor-corrector works on secondary nodes: surface-to-surface pairs take the penalty */
   for (PetscInt k = 0; k < m->npair; k++) {

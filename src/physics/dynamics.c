@@ -57,7 +57,12 @@ static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, Pets
   PetscBool inverted = PETSC_FALSE;
 
   PetscFunctionBeginUser;
-  PetscCall(TslElementInternal(&d->in, R, NULL, &inverted));
+  if (d->in.pstate) { /* a plastic element: its work and heat over the move, and the state it reaches (pstate_new) */
+    PetscReal en[4];
+    PetscCall(TslElementInternalEnergy(&d->in, R, NULL, &inverted, en));
+    c->heat->plastic_work += en[2], c->heat->plastic_heat += en[3];
+  } else
+    PetscCall(TslElementInternal(&d->in, R, NULL, &inverted));
   if (inverted) {
     c->bad = e;
     *stop  = PETSC_TRUE;
@@ -498,7 +503,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   /* with records on every element and a central-difference move since the last evaluation, the rate of the
    * bulk viscosity comes from the records' centre strains: v is neither exchanged nor gathered */
   const PetscBool    from_u = (PetscBool)(q && h > 0 && p->fast_built && p->fast_all);
-  PetscReal          loc[8], g[8];
+  PetscReal          loc[10], g[10];
   TslFailure         fail;
   PetscErrorCode     ierr;
 
@@ -518,7 +523,14 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(BeginLocal(Fi, &il, &c.fi));
   PetscCall(BeginLocal(Fe, &el, &c.fe));
   PetscCall(BeginLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
+  /* the plastic state: each evaluation returns from the committed one and commits what it reaches (an explicit
+   * state is evaluated once; a second evaluation of the same state flows no further), its heat a rate over the
+   * move's increment h, deposited over the next one as the friction heat is (0 for a step's first evaluation) */
+  p->pstate_write   = p->pstate ? PETSC_TRUE : PETSC_FALSE;
+  p->inelastic_rate = h > 0 ? 1 / h : 0;
   PetscCall(ForcePass(p, xa, &c));
+  p->pstate_write = PETSC_FALSE;
+  if (p->pstate) PetscCall(TslProblemCommitState(p));
   /* a contact projection that fails has no cutback to fall back on here: an error on all ranks (as is a
    * failure injected on one rank for the tests, -tsl_debug_fail_kind internal) */
   PetscCall(TslCaptureBegin());
@@ -547,10 +559,10 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(TslProblemCheckBadElement(p, c.bad));
   if (Fc && !p->ncsurf) PetscCall(VecZeroEntries(Fc));
   loc[0] = heat.flux_in, loc[1] = -heat.film, loc[2] = heat.interface, loc[3] = heat.dissipation, loc[4] = heat.friction_heat, loc[5] = c.power;
-  loc[6] = c.prev, loc[7] = -heat.radiation;
-  PetscCall(MPIU_Allreduce(loc, g, 8, MPIU_REAL, MPIU_SUM, p->comm));
+  loc[6] = c.prev, loc[7] = -heat.radiation, loc[8] = heat.plastic_work, loc[9] = heat.plastic_heat;
+  PetscCall(MPIU_Allreduce(loc, g, 10, MPIU_REAL, MPIU_SUM, p->comm));
   rates->heat_in = g[0], rates->film_out = g[1], rates->interface_heat = g[2], rates->dissipation = g[3], rates->friction_heat = g[4];
-  rates->viscous = g[5], rates->viscous_prev = g[6], rates->radiation_out = g[7];
+  rates->viscous = g[5], rates->viscous_prev = g[6], rates->radiation_out = g[7], rates->plastic_work = g[8], rates->plastic_heat = g[9];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -442,7 +442,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
 PetscErrorCode TslProblemSetCapacityRate(TslProblem p, PetscReal shift)
 {
   PetscFunctionBeginUser;
-  p->shift = shift;
+  p->shift = p->inelastic_rate = shift;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -288,6 +288,7 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
    * h_avg per element, is booked in two halves: q_n eps_n by Advance, q_n eps_{n+1} here, at the next
    * evaluation (ALLVD; ALLIE is the internal forces' work less it) */
   PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->V, x->eta, x->eta2, x->qv, dt, &x->rates));
+  x->d->plastic_dissipated += x->rates.plastic_work; /* ALLPD: the move's plastic work, committed by this evaluation */
   PetscCall(TslProblemTieMove(x->p, x->Fi)); /* a tie's secondary forces and heat to its main nodes */
   PetscCall(TslProblemTieMove(x->p, x->Fe));
   if (x->qv) {
@@ -480,7 +481,8 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
    * against the heat stored over it; round-off. The history row is written after the next force evaluation,
    * whose rates (state n+1) its heat columns show: their balance with this stored heat would be off by the
    * rates' change over one increment (up to 0.6 of a heat input of 200 where the flux is ramped down) */
-  x->balance = x->rates.heat_in + g[5] + x->rates.friction_heat + x->krates.friction_heat - x->rates.film_out - x->rates.radiation_out - g[6];
+  x->balance = x->rates.heat_in + g[5] + x->rates.friction_heat + x->krates.friction_heat + x->rates.plastic_heat - x->rates.film_out -
+               x->rates.radiation_out - g[6];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -547,6 +549,8 @@ static PetscErrorCode HistoryRow(Explicit *x, Energies *en, PetscInt s, PetscInt
   row[HIST_DISSIPATION_TOTAL]   = en->fd;
   row[HIST_FRICTION_HEAT_TOTAL] = d->absorbed;
   row[HIST_BALANCE]             = x->balance;
+  row[HIST_PLASTIC_HEAT]        = x->rates.plastic_heat;
+  row[HIST_PLASTIC_DISSIPATION] = x->d->plastic_dissipated;
   PetscCall(TslProblemEnergies(x->p, &row[HIST_STRAIN_ENERGY], &row[HIST_HOURGLASS_ENERGY]));
   row[HIST_ENERGY + 0] = en->ke;
   row[HIST_ENERGY + 1] = en->ie;
