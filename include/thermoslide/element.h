@@ -193,6 +193,7 @@ typedef struct {
   const PetscReal *pstate;
   PetscReal       *pstate_new;
   PetscReal        inelastic_rate;
+  PetscReal        dt; /* the increment's time, for a rate-dependent yield stress (*RATE DEPENDENT: the rate dl / dt) */
 } TslElementInput;
 /* Mechanical points of the type (the plastic state's points). */
 PetscInt TslElementTypeMechanicalPoints(const TslElementType *t, const TslElementSection *sec);

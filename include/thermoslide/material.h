@@ -37,6 +37,10 @@ PetscReal TslMaterialThermalStrain(const TslMaterial *mat, PetscReal theta, Pets
  * d sigma_y / d peeq and d sigma_y / d theta (either may be NULL): linear between the table's points, the last
  * point's stress held beyond it (perfect plasticity), the end temperatures' curves held outside their range. */
 PetscReal TslMaterialYield(const TslMaterial *mat, PetscReal peeq, PetscReal theta, PetscReal *H, PetscReal *dtheta);
+/* The rate dependence of the yield stress (*RATE DEPENDENT): the factor R on the static yield stress at the plastic
+ * strain rate r >= 0 and dR/dr (1 and 0 without rate dependence; dR/dr is infinite at r = 0 for the power law of
+ * n > 1: returned as a large finite number). */
+PetscReal TslMaterialRateFactor(const TslMaterial *mat, PetscReal r, PetscReal *dR);
 /* The plastic work of a flow from p0 to p1 >= p0 at theta, int_p0^p1 sigma_y(p, theta) dp (exact for the table's
  * piecewise linear curves), and its derivative in theta. */
 PetscReal TslMaterialYieldIntegral(const TslMaterial *mat, PetscReal p0, PetscReal p1, PetscReal theta, PetscReal *dtheta);

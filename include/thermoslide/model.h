@@ -80,6 +80,10 @@ typedef struct {
   PetscInt  nback;
   PetscReal C[TSL_MAX_BACKSTRESS], gamma[TSL_MAX_BACKSTRESS];
   PetscBool combined;  /* HARDENING=COMBINED (a *CYCLIC HARDENING may follow) */
+  PetscInt  rate_law;  /* *RATE DEPENDENT: 0 none, 1 TYPE=POWER LAW (rate = D (sigma / sigma_static - 1)^n), 2 JOHNSON COOK
+                          (sigma = sigma_static (1 + C ln(rate / rate_0)) above rate_0) */
+  PetscReal rate[2];   /* D, n or C, rate_0 */
+  TslLoc    rate_loc;
   TslLoc    loc;
   TslLoc    cyclic_loc; /* *CYCLIC HARDENING's keyword line (line 0: none) */
 } TslPlasticTable;

@@ -1479,12 +1479,43 @@ static PetscErrorCode KwInelasticHeatFraction(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Material keywords of plasticity thermoslide does not have yet: refused at their line, never ignored. */
-static PetscErrorCode KwPlasticUnsupported(Deck *d, const DeckKeyword *kw)
+/* *RATE DEPENDENT (after *PLASTIC): the yield stress's rate factor, TYPE=POWER LAW (the default; "D, n") or JOHNSON
+ * COOK ("C, rate_0"), one data line (temperature dependence and TYPE=YIELD RATIO: not yet). */
+static PetscErrorCode KwRateDependent(Deck *d, const DeckKeyword *kw)
 {
+  TslMaterial     *mat = &d->m->materials[d->material];
+  TslPlasticTable *t   = &mat->plastic;
+  char             tb[32];
+  const char      *type = ParamUpper(d, "TYPE", tb, sizeof(tb));
+  PetscBool        got;
+  PetscReal        a, b;
+
   PetscFunctionBeginUser;
   (void)kw;
-  USER_ERR(LOC_FMT "*%s is not supported yet (plasticity: *PLASTIC, rate-independent)", KLOC(d), d->kw);
+  USER_CHECK(TslMaterialIsPlastic(mat), LOC_FMT "material %s: *RATE DEPENDENT belongs after the material's *PLASTIC", KLOC(d), mat->name);
+  USER_CHECK(!t->rate_law, LOC_FMT "material %s: a second *RATE DEPENDENT (the first at line %" PetscInt_FMT ")", KLOC(d), mat->name, t->rate_loc.line);
+  USER_CHECK(!type || !strcmp(type, "POWER LAW") || !strcmp(type, "JOHNSON COOK"),
+             LOC_FMT "*RATE DEPENDENT, TYPE=%s is not supported yet (POWER LAW and JOHNSON COOK are)", KLOC(d), type);
+  t->rate_loc = d->kwloc;
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(got, LOC_FMT "*RATE DEPENDENT needs a data line", KLOC(d));
+  USER_CHECK(d->nfield >= 2 && d->nfield <= 3, LOC_FMT "*RATE DEPENDENT data line needs: %s[, temperature]", DLOC(d),
+             type && !strcmp(type, "JOHNSON COOK") ? "C, the reference strain rate" : "D, n");
+  PetscCall(FieldReal(d, 0, type && !strcmp(type, "JOHNSON COOK") ? "C" : "D", &a));
+  PetscCall(FieldReal(d, 1, type && !strcmp(type, "JOHNSON COOK") ? "the reference strain rate" : "n", &b));
+  if (type && !strcmp(type, "JOHNSON COOK")) {
+    USER_CHECK(a >= 0 && b > 0, LOC_FMT "material %s: *RATE DEPENDENT, TYPE=JOHNSON COOK needs C >= 0 and a positive reference strain rate (got %g, %g)", DLOC(d),
+               mat->name, (double)a, (double)b);
+    t->rate_law = 2;
+  } else {
+    USER_CHECK(a > 0 && b > 0, LOC_FMT "material %s: *RATE DEPENDENT, TYPE=POWER LAW needs D > 0 and n > 0 (got %g, %g)", DLOC(d), mat->name, (double)a,
+               (double)b);
+    t->rate_law = 1;
+  }
+  t->rate[0] = a, t->rate[1] = b;
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(!got, LOC_FMT "*RATE DEPENDENT with temperature-dependent data (a second data line) is not supported yet", DLOC(d));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* A new section from ELSET= and MATERIAL= (both keywords). */
@@ -3567,7 +3598,7 @@ static const DeckKeyword Keywords[] = {
     {"EXPANSION", AT_MODEL, IN_MATERIAL, "TYPE|ZERO", KwProperty, TSL_PROP_EXPANSION, NULL},
     {"PLASTIC", AT_MODEL, IN_MATERIAL, "HARDENING|RATE|DATA TYPE|NUMBER BACKSTRESSES", KwPlastic, 0, NULL},
     {"INELASTIC HEAT FRACTION", AT_MODEL, IN_MATERIAL, "", KwInelasticHeatFraction, 0, NULL},
-    {"RATE DEPENDENT", AT_MODEL, IN_MATERIAL, "TYPE", KwPlasticUnsupported, 0, NULL},
+    {"RATE DEPENDENT", AT_MODEL, IN_MATERIAL, "TYPE", KwRateDependent, 0, NULL},
     {"CYCLIC HARDENING", AT_MODEL, IN_MATERIAL, "PARAMETERS", KwCyclicHardening, 0, NULL},
     {"SOLID SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL|REF NODE", KwSolidSection, 0, NULL},
     {"SHELL SECTION", AT_MODEL, IN_NONE,

@@ -466,8 +466,27 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
  * d sigma_y / d theta) / D, and the plastic heat: a source eta w inelastic_rate with w the plastic work of the
  * increment per volume, int sigma_y dp (exact for the tables and the exponential law) plus the back stresses' share,
  * the trapezoid sqrt(3/2) dl n : (a_n + a) / 2 (exact for linear kinematic hardening), linearised in u and theta
- * through dl and n (docs/elements.md). Nothing is stored here: the state the current u reaches goes to
- * in->pstate_new when asked (the commit of an accepted increment). */
+ * through dl and n (docs/elements.md). *RATE DEPENDENT scales sigma_y by R(dl / dt) (PlasticYield: H and the work
+ * take its derivative). Nothing is stored here: the state the current u reaches goes to in->pstate_new when asked
+ * (the commit of an accepted increment). Outputs (res; TslElementOutput) come after the commit, at the committed
+ * state's displacement: they take its stress as it is, with no return (one would be a further increment of time at
+ * that strain, which a rate-dependent point spends relaxing). */
+/* The yield stress at p0 + dl, with *RATE DEPENDENT's factor R at the rate dl / dt (dt = 0: none), H and dsy its
+ * derivatives in dl and theta, dR = dR / d dl */
+static PetscReal PlasticYield(const TslElementInput *in, PetscReal p0, PetscReal dl, PetscReal theta, PetscReal *H, PetscReal *dsy, PetscReal *R, PetscReal *dR)
+{
+  const TslMaterial *mat = in->sec->mat;
+  const PetscReal    s   = TslMaterialYield(mat, p0 + dl, theta, H, dsy);
+
+  *R = 1, *dR = 0;
+  if (!mat->plastic.rate_law || !(in->dt > 0)) return s;
+  *R = TslMaterialRateFactor(mat, dl / in->dt, dR);
+  *dR /= in->dt;
+  *H   = *H * *R + s * *dR;
+  *dsy *= *R;
+  return s * *R;
+}
+
 static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
                                   PetscReal energy[4])
 {
@@ -486,7 +505,7 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
     const PetscReal *st = in->pstate + ns * q, *ab = st + 7; /* the committed back stresses, 6 each */
     PetscReal        lam, mu, Kb, dlam, dmu, dKb, e[6], d[6], nh[6] = {0}, xi[6], v[6] = {0}, A[6] = {0}, tr, nx, qtr, theta, sy, H, dsy, dl = 0;
     PetscReal        sig[6], deps[6], w = 0, thk[TSL_MAX_BACKSTRESS], Dd = 0, sumtc = 0;
-    PetscReal        dw_th_fixed = 0; /* d w / d theta at fixed p0, p1 */
+    PetscReal        dw_th_fixed = 0, Rf = 1, dRf = 0, ws = 0; /* d w / d theta at fixed p0, p1; the rate factor, its d / d dl; int sigma_static dp */
     PetscBool        plastic = PETSC_FALSE;
 
     if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
@@ -514,8 +533,8 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
   } while (0)
     XIT(0);
     qtr = s32 * nx;
-    sy  = TslMaterialYield(mat, st[6], theta, &H, &dsy);
-    if (qtr > sy * (1 + 1e-12)) { /* plastic: g(dl) = 0 on [0, q_tr / (3 mu)] */
+    sy  = PlasticYield(in, st[6], 0, theta, &H, &dsy, &Rf, &dRf);
+    if (!res && qtr > sy * (1 + 1e-12)) { /* plastic: g(dl) = 0 on [0, q_tr / (3 mu)]; outputs (res) show the committed state */
       PetscReal lo = 0, hi = qtr / (3 * mu);
       plastic = PETSC_TRUE;
       for (PetscInt it = 0; it < 100; it++) {
@@ -536,13 +555,14 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
         next = Dd > 0 ? dl + gv / Dd : 0.5 * (lo + hi);
         if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
         dl = next;
-        sy = TslMaterialYield(mat, st[6] + dl, theta, &H, &dsy);
+        sy = PlasticYield(in, st[6], dl, theta, &H, &dsy, &Rf, &dRf);
         XIT(dl);
       }
       /* at the converged dl: n, D, v and the work */
       sumtc = 0, Dd = 3 * mu + H;
       for (PetscInt r = 0; r < 6; r++) nh[r] = xi[r] / nx;
-      w = TslMaterialYieldIntegral(mat, st[6], st[6] + dl, theta, &dw_th_fixed);
+      ws = TslMaterialYieldIntegral(mat, st[6], st[6] + dl, theta, &dw_th_fixed);
+      w = Rf * ws, dw_th_fixed *= Rf; /* at the increment's rate */
       for (PetscInt k = 0; k < nb; k++) {
         const PetscReal *ak = ab + 6 * k, gt2 = pl->gamma[k] * thk[k] * thk[k];
         const PetscReal  an = ak[0] * nh[0] + ak[1] * nh[1] + ak[2] * nh[2] + 2 * (ak[3] * nh[3] + ak[4] * nh[4] + ak[5] * nh[5]);
@@ -609,7 +629,7 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
          * dl sum theta_k C_k - dl^2 / 2 sum gamma_k theta_k^2 C_k, and its direction term sqrt(3/2) dl / 2 A_perp : dn
          * (A = sum (1 + theta_k) a_k,n) */
         const PetscReal s6 = PetscSqrtReal(6.0), ddl = (s32 * 2 * dmu * ndn - 3 * dmu * dl - dsy) / Dd;
-        PetscReal       wdl = sy, Apv = 0, Apd = 0;
+        PetscReal       wdl = sy + dRf * ws, Apv = 0, Apd = 0;
         for (PetscInt k = 0; k < nb; k++) {
           const PetscReal *ak = ab + 6 * k, gt2 = pl->gamma[k] * thk[k] * thk[k];
           const PetscReal  an = ak[0] * nh[0] + ak[1] * nh[1] + ak[2] * nh[2] + 2 * (ak[3] * nh[3] + ak[4] * nh[4] + ak[5] * nh[5]);

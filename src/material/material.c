@@ -104,6 +104,27 @@ static void VoceAt(const TslPlasticTable *t, PetscReal theta, PetscReal v[3], Pe
   }
 }
 
+PetscReal TslMaterialRateFactor(const TslMaterial *mat, PetscReal r, PetscReal *dR)
+{
+  const TslPlasticTable *t = &mat->plastic;
+
+  *dR = 0;
+  if (t->rate_law == 1) { /* 1 + (r / D)^(1 / n) */
+    const PetscReal x = r / t->rate[0], e = 1 / t->rate[1];
+    if (!(x > 0)) {
+      *dR = e == 1 ? 1 / t->rate[0] : (e < 1 ? 0 : PETSC_MAX_REAL / 1e10);
+      return 1;
+    }
+    *dR = e * PetscPowReal(x, e - 1) / t->rate[0];
+    return 1 + PetscPowReal(x, e);
+  }
+  if (t->rate_law == 2 && r > t->rate[1]) { /* 1 + C ln(r / rate_0) above rate_0 */
+    *dR = t->rate[0] / r;
+    return 1 + t->rate[0] * PetscLogReal(r / t->rate[1]);
+  }
+  return 1;
+}
+
 /* (1 - exp(-x)) / x and (1 - exp(-x) (1 + x)) / x^2 = int_0^1 s exp(-x s) ds, without their cancellation near 0 */
 static PetscReal Phi1(PetscReal x)
 {

@@ -36,6 +36,7 @@ void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const Pet
   d->in.pstate         = p->pstate_off && p->pstate_off[e] >= 0 ? p->pstate + p->pstate_off[e] : NULL;
   d->in.pstate_new     = d->in.pstate && p->pstate_write ? p->pstate_new + p->pstate_off[e] : NULL;
   d->in.inelastic_rate = p->inelastic_rate;
+  d->in.dt             = p->dt;
   d->in_old            = d->in;
   d->in_old.u          = d->uo;
   /* the old state is the committed one: no further flow, no heat, nothing written */

@@ -28,6 +28,11 @@ explicit_beam  the explicit CPE4T cantilever (make_decks.py explicit_beam): the 
            through the beam, all in it at the end: rho c sum_a V_a theta_a = 0.9 ALLPD (the lumped capacity's own
            measure, V_a a quarter of each quad's area at its corners; 1e-8); the balance residual and ETOTAL at round-off
            in every row; the root has yielded and the tip not
+uniaxial_rate_power|jc, explicit_rate_power  *RATE DEPENDENT (make_decks.py RATE_POWER, RATE_JC): at every frame (every
+           increment) against the 1D backward Euler with the rate factor at dp / dt, 1e-8; the flow stress above the
+           static curve; explicit (a frame every increment): the 1D answer to 1e-2 (the cube's inertia), the Mises stress
+           on sigma_static(p) R(dp / dt) in every increment that flowed (1e-8), the heat (the last increment's work not
+           yet in the temperature) and ETOTAL
 usage: check.py OUTDIR JOB uniaxial[_kinematic|_combined[1]]|adiabatic[_kinematic|_combined]|adiabatic_soft AXIS"""
 import sys
 
@@ -72,6 +77,30 @@ def combined_1d(law, strains):
     return out
 
 
+RATES = {"power": lambda r: 1 + np.sqrt(max(r, 0.0) / 0.1), "jc": lambda r: 1 + 0.05 * np.log(r / 1e-3) if r > 1e-3 else 1.0}
+
+
+def rate_1d(law, strains, times):
+    """The 1D backward Euler of isotropic hardening sigma_static = 200 + 1000 p with the rate factor R(dp / dt):
+    |E (eps - eps_p,n)| - E dp = sigma_static(p + dp) R(dp / dt); stress, plastic strain, PEEQ after each."""
+    R = RATES[law]
+    ep, p, t0, out = 0.0, 0.0, 0.0, []
+    for eps, t in zip(strains, times):
+        dt, trial = t - t0, E * (eps - ep)
+        t0 = t
+        gfun = lambda dp: abs(trial) - E * dp - sy(p + dp) * R(dp / dt)
+        if gfun(0.0) > 1e-12 * S0:
+            lo, hi = 0.0, abs(trial) / E
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if gfun(mid) > 0 else (lo, mid)
+            dp = 0.5 * (lo + hi)
+            ep += np.sign(trial) * dp
+            p += dp
+        out.append((E * (eps - ep), ep, p))
+    return out
+
+
 def continuous(law, p):
     back, s0, _ = LAWS[law]
     return s0(p) + sum(c * p if g == 0 else c / g * (1 - np.exp(-g * p)) for c, g in back)
@@ -80,7 +109,41 @@ coord = r.xyz[:, axis]
 pulled = np.isclose(coord, coord.max())
 frames = range(len(r.frames))
 
-if case.startswith("uniaxial_combined") or case == "adiabatic_combined":
+if case.startswith("uniaxial_rate") or case.startswith("explicit_rate"):
+    law = case.split("_")[-1]
+    L = coord.max() - coord.min()
+    strains = [float(r.field("U", k)[pulled, axis].mean()) / L for k in frames]
+    times = [float(r.frame(k).attrs["time"]) for k in frames]
+    ref = rate_1d(law, strains, times)
+    worst = worst_other = 0.0
+    for k in frames:
+        S, PE, PQ = r.field("S", k)[0], r.field("PE", k)[0], r.field("PEEQ", k)[0, 0]
+        s1, e1, p1 = ref[k]
+        worst = max(worst, abs(S[axis] - s1) / S0, abs(PE[axis] - e1) * E / S0, abs(PQ - p1) * E / S0)
+        worst_other = max(worst_other, max(abs(S[c]) for c in range(6) if c != axis) / S0)
+    top = max(ref, key=lambda x: abs(x[0]))
+    print("%d frames, final stress %.6g, PEEQ %.6g; largest stress %.6g where the static curve gives %.6g" % (len(r.frames), ref[-1][0], ref[-1][2], top[0], sy(top[2])))
+    if case.startswith("uniaxial"):
+        check("stress, plastic strain and PEEQ against the 1D backward Euler with the rate factor, worst (of sigma_0)", worst, 0.0, 1e-8)
+        check("the other stress components, worst (of sigma_0)", worst_other, 0.0, 1e-8)
+    else:  # explicit: the cube's inertia (lateral stresses of 4e-3 of sigma_0 at this rate) keeps it off the 1D answer,
+        # but every increment (a frame each) returns to the rate's surface: Mises = sigma_static(p) R(dp / dt)
+        check("stress, plastic strain and PEEQ against the 1D model with the rate factor, worst (of sigma_0; the cube's inertia)", worst, 0.0, 1e-2)
+        mises = lambda s: float(np.sqrt(0.5 * ((s[0] - s[1]) ** 2 + (s[1] - s[2]) ** 2 + (s[2] - s[0]) ** 2 + 6 * (s[3] ** 2 + s[4] ** 2 + s[5] ** 2))))
+        on, flowed = 0.0, 0
+        for k in list(frames)[1:]:
+            q0, q1 = float(r.field("PEEQ", k - 1)[0, 0]), float(r.field("PEEQ", k)[0, 0])
+            if q1 > q0:
+                want = sy(q1) * RATES[law]((q1 - q0) / (times[k] - times[k - 1]))
+                on, flowed = max(on, abs(mises(r.field("S", k)[0]) - want) / want), flowed + 1
+        check("Mises stress on the rate's yield surface in every increment that flowed, worst (of it)", on, 0.0, 1e-8)
+        check_true("increments that flowed", flowed > 100, "%d" % flowed)
+        h = r.history
+        # the last evaluation's plastic work enters the temperature in the next increment: the row before's ALLPD
+        check("final temperature = 0.9 ALLPD (of the increment before) / (rho c)", float(r.field("NT", -1)[:, 0].mean()), 0.9 * float(h["ALLPD"][-2]) / (RHO * C),
+              1e-8, relative=True)
+        check("ETOTAL, worst row (of ALLWK)", float(np.abs(h["ETOTAL"]).max() / h["ALLWK"][-1]), 0.0, 1e-10)
+elif case.startswith("uniaxial_combined") or case == "adiabatic_combined":
     law = "combined1" if case.endswith("combined1") else "combined"
     L = coord.max() - coord.min()
     strains = [float(r.field("U", k)[pulled, axis].mean()) / L for k in frames]

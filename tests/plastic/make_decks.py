@@ -35,6 +35,9 @@ PLASTIC_COMB = ("*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS, NUMBER BACK
 PLASTIC_COMB1 = "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS\n 200.0, 40000.0, 400.0\n"
 PLASTIC_COMB_SOFT = ("*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS, NUMBER BACKSTRESSES=2\n 200.0, 40000.0, 400.0, 1000.0, 0.0\n"
                      "*CYCLIC HARDENING, PARAMETERS\n 200.0, 50.0, 20.0, 0.0\n 120.0, 30.0, 10.0, 100.0\n")
+# rate dependence: R = 1 + (rate / 0.1)^(1/2) (Cowper-Symonds) and R = 1 + 0.05 ln(rate / 1e-3) (Johnson-Cook)
+RATE_POWER = "*RATE DEPENDENT, TYPE=POWER LAW\n 0.1, 2.0\n"
+RATE_JC = "*RATE DEPENDENT, TYPE=JOHNSON COOK\n 0.05, 0.001\n"
 PLASTIC_SOFT = "*PLASTIC\n 200.0, 0.0, 0.0\n 700.0, 0.5, 0.0\n 100.0, 0.0, 50.0\n 350.0, 0.5, 50.0\n"
 # the strain path of the uniaxial decks: (step, period, increment, target strain)
 PATH = [("LOAD", 1.0, 0.1, 0.01), ("UNLOAD", 1.0, 0.25, 0.004), ("REVERSE", 1.0, 0.1, -0.01)]
@@ -99,14 +102,18 @@ def adiabatic(typ, soft, kin=False, law=None, inc=0.05):
             "*BOUNDARY%s\n X1, %d, %d, 0.02\n*END STEP\n" % (", AMPLITUDE=RAMP" if law else "", dof, dof))
 
 
-def explicit(typ, law=None):
+def explicit(typ, law=None, period=None):
     """An explicit step: the pull of adiabatic() to strain 0.02 on a smooth step over 2 s (quasi-static: the cube's
-    wave transit is 2e-3 s), then held for 0.5 s, so that all the plastic work's heat has entered the temperature"""
+    wave transit is 2e-3 s), then held for 0.5 s, so that all the plastic work's heat has entered the temperature;
+    period: the pull's time instead (then held a quarter of it), every increment a frame (the rate-dependent check
+    takes each increment's rate from consecutive frames)"""
     hold, dof = holds(typ)
-    return ("*HEADING\n Explicit: one %s pulled past yield on a smooth step and held%s\n" % (typ, " (combined hardening)" if law else "") +
-            model(typ, law or PLASTIC, heat=True) + "*AMPLITUDE, NAME=PULL, DEFINITION=SMOOTH STEP\n 0.0, 0.0, 2.0, 1.0\n"
-            "*STEP, NAME=PULL\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , 2.5\n" + hold +
-            "*BOUNDARY, AMPLITUDE=PULL\n X1, %d, %d, 0.02\n*OUTPUT, FIELD, NUMBER INTERVAL=50\n*END STEP\n" % (dof, dof))
+    T = period or 2.0
+    out = "*OUTPUT, FIELD, NUMBER INTERVAL=500\n" if period else "*OUTPUT, FIELD, NUMBER INTERVAL=50\n"
+    return ("*HEADING\n Explicit: one %s pulled past yield on a smooth step and held%s\n" % (typ, " (rate dependent)" if law and "RATE" in law else " (combined hardening)" if law else "") +
+            model(typ, law or PLASTIC, heat=True) + "*AMPLITUDE, NAME=PULL, DEFINITION=SMOOTH STEP\n 0.0, 0.0, %s, 1.0\n" % float(T) +
+            "*STEP, NAME=PULL\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , %s\n" % (1.25 * T) + hold +
+            "*BOUNDARY, AMPLITUDE=PULL\n X1, %d, %d, 0.02\n" % (dof, dof) + out + "*END STEP\n")
 
 
 def explicit_beam():
@@ -164,7 +171,10 @@ BAD_EDITS = {
     "cyclic_b": (TABLE, PLASTIC_COMB1 + "*CYCLIC HARDENING, PARAMETERS\n 200.0, 50.0, -20.0\n"),
     "kinematic_lines": (TABLE, "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0\n 700.0, 0.5\n 800.0, 1.0\n"),
     "kinematic_theta": (TABLE, "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0, 0.0\n 100.0, 0.0, 50.0\n"),
-    "rate": (TABLE, TABLE + "*RATE DEPENDENT, TYPE=POWER LAW\n 1.0, 5.0\n"),
+    "rate": (TABLE, TABLE + "*RATE DEPENDENT, TYPE=YIELD RATIO\n 1.0, 0.0\n 1.5, 10.0\n"),
+    "rate_first": (TABLE, "*RATE DEPENDENT\n 0.1, 2.0\n" + TABLE),
+    "rate_theta": (TABLE, TABLE + "*RATE DEPENDENT\n 0.1, 2.0, 0.0\n 0.2, 2.0, 100.0\n"),
+    "rate_d": (TABLE, TABLE + "*RATE DEPENDENT\n 0.0, 2.0\n"),
     "heat_fraction": ("*CONDUCTIVITY", "*INELASTIC HEAT FRACTION\n 1.5\n*CONDUCTIVITY"),
 }
 
@@ -178,7 +188,7 @@ def bad(name):
     raise KeyError(name)
 
 
-BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "plane_stress", "heat_fraction"]
+BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "plane_stress", "heat_fraction", "rate_first", "rate_theta", "rate_d"]
 
 
 def main():
@@ -194,6 +204,10 @@ def main():
         decks["explicit_%s" % typ.lower()] = explicit(typ)
     decks["explicit_combined_c3d8t"] = explicit("C3D8T", PLASTIC_COMB)
     decks["explicit_beam_cpe4t"] = explicit_beam()
+    decks["uniaxial_rate_power_c3d8t"] = uniaxial("C3D8T", law=PLASTIC + RATE_POWER)
+    decks["uniaxial_rate_jc_cax4t"] = uniaxial("CAX4T", law=PLASTIC + RATE_JC)
+    decks["explicit_rate_power_c3d8t"] = explicit("C3D8T", PLASTIC + RATE_POWER, period=0.2)
+    decks["jacobian_rate_c3d8t"] = jacobian(law=PLASTIC_SOFT + RATE_POWER)
     for typ in ("C3D8T", "C3D8RT", "C3D20T", "CAX4T"):
         decks["uniaxial_%s" % typ.lower()] = uniaxial(typ)
     for typ in ("C3D8T", "CAX4T"):
