@@ -404,7 +404,7 @@ PetscBool TslElementTypePlasticSupported(const TslElementType *t, const char **w
   const struct TslKinematicsRow *k = TslKinematicsRowGet(t->kin);
 
   *why = NULL;
-  if (k->free_normal || k->shell) *why = "a plane-stress return: plane stress types and continuum shells";
+  if (k->shell) *why = "a plane-stress return in the continuum shell's frame";
   else if (t->form->pressure) *why = "the hybrid types' deviatoric return";
   else if (t->form->incompatible) *why = "the incompatible modes' bubbles with a plastic state";
   else if (t->nextra) *why = "generalized plane strain";

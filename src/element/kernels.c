@@ -487,26 +487,202 @@ static PetscReal PlasticYield(const TslElementInput *in, PetscReal p0, PetscReal
   return s * *R;
 }
 
+/* What the return gives at one point: the stress, the flow, the work and, with tangent, their derivatives in the
+ * strain (C; dw_de, engineering components) and in theta at fixed strain (dsig, dw_dth). */
+typedef struct {
+  PetscReal sig[6], deps[6], dl, w, se;
+  PetscReal C[6][6], dsig[6], dw_de[6], dw_dth;
+  PetscReal back[6 * TSL_MAX_BACKSTRESS]; /* the back stresses reached */
+} PlasticPoint;
+
+/* The return at one point from the committed state st for the total strain eps (Voigt, engineering shear; eps_th
+ * per normal component and its theta-derivative deps_th), at theta with the moduli mu, Kb and their derivatives;
+ * frozen: no return (an output at the committed state), tangent: C, dsig, dw_de, dw_dth too. */
+static void PlasticReturn(const TslElementInput *in, const PetscReal *st, const PetscReal eps[6], PetscReal eps_th, PetscReal deps_th, PetscReal theta,
+                          PetscReal mu, PetscReal Kb, PetscReal dmu, PetscReal dKb, PetscBool frozen, PetscBool tangent, PlasticPoint *o)
+{
+  const TslMaterial     *mat = in->sec->mat;
+  const TslPlasticTable *pl  = &mat->plastic;
+  const PetscReal        s23 = PetscSqrtReal(2.0 / 3.0), s32 = PetscSqrtReal(1.5), s6 = PetscSqrtReal(6.0);
+  const PetscInt         nb = pl->nback;
+  const PetscReal       *ab = st + 7; /* the committed back stresses, 6 each */
+  PetscReal e[6], d[6], nh[6] = {0}, xi[6], v[6] = {0}, A[6] = {0}, tr, nx, qtr, sy, H, dsy, dl = 0, thk[TSL_MAX_BACKSTRESS], Dd = 0;
+  PetscReal dw_th_fixed = 0, Rf = 1, dRf = 0, ws = 0, w = 0; /* d w / d theta at fixed p0, p1; the rate factor, its d / d dl; int sigma_static dp */
+  PetscBool plastic = PETSC_FALSE;
+
+  for (PetscInt r = 0; r < 6; r++) e[r] = eps[r] - VoigtM[r] * eps_th - st[r];
+  tr = e[0] + e[1] + e[2];
+  for (PetscInt r = 0; r < 6; r++) d[r] = r < 3 ? e[r] - tr / 3 : 0.5 * e[r];
+  for (PetscInt k = 0; k < nb; k++) thk[k] = 1;
+  /* xit(dl) and |xit|: the relative trial stress with the back stresses' recovery at dl */
+#define XIT(DL)                                                                                                  \
+  do {                                                                                                           \
+    for (PetscInt r = 0; r < 6; r++) xi[r] = 2 * mu * d[r];                                                      \
+    for (PetscInt k = 0; k < nb; k++) {                                                                          \
+      thk[k] = 1 / (1 + pl->gamma[k] * (DL));                                                                    \
+      for (PetscInt r = 0; r < 6; r++) xi[r] -= thk[k] * ab[6 * k + r];                                          \
+    }                                                                                                            \
+    nx = PetscSqrtReal(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2] + 2 * (xi[3] * xi[3] + xi[4] * xi[4] + xi[5] * xi[5])); \
+  } while (0)
+  XIT(0);
+  qtr = s32 * nx;
+  sy  = PlasticYield(in, st[6], 0, theta, &H, &dsy, &Rf, &dRf);
+  if (!frozen && qtr > sy * (1 + 1e-12)) { /* plastic: g(dl) = 0 on [0, q_tr / (3 mu)] */
+    PetscReal lo = 0, hi = qtr / (3 * mu);
+    plastic = PETSC_TRUE;
+    for (PetscInt it = 0; it < 100; it++) {
+      PetscReal gv, next, xv = 0, sumtc = 0;
+      Dd = 3 * mu + H;
+      for (PetscInt k = 0; k < nb; k++) {
+        const PetscReal an = (xi[0] * ab[6 * k] + xi[1] * ab[6 * k + 1] + xi[2] * ab[6 * k + 2] +
+                              2 * (xi[3] * ab[6 * k + 3] + xi[4] * ab[6 * k + 4] + xi[5] * ab[6 * k + 5])) / nx;
+        sumtc += thk[k] * pl->C[k];
+        Dd += pl->C[k] * thk[k] * thk[k];
+        xv += pl->gamma[k] * thk[k] * thk[k] * an;
+      }
+      Dd -= s32 * xv;
+      gv = s32 * nx - (3 * mu + sumtc) * dl - sy;
+      if (PetscAbsReal(gv) <= 1e-15 * sy) break;
+      if (gv > 0) lo = dl;
+      else hi = dl;
+      next = Dd > 0 ? dl + gv / Dd : 0.5 * (lo + hi);
+      if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+      dl = next;
+      sy = PlasticYield(in, st[6], dl, theta, &H, &dsy, &Rf, &dRf);
+      XIT(dl);
+    }
+    /* at the converged dl: n, D, v and the work */
+    Dd = 3 * mu + H;
+    for (PetscInt r = 0; r < 6; r++) nh[r] = xi[r] / nx;
+    ws = TslMaterialYieldIntegral(mat, st[6], st[6] + dl, theta, &dw_th_fixed);
+    w = Rf * ws, dw_th_fixed *= Rf; /* at the increment's rate */
+    for (PetscInt k = 0; k < nb; k++) {
+      const PetscReal *ak = ab + 6 * k, gt2 = pl->gamma[k] * thk[k] * thk[k];
+      const PetscReal  an = ak[0] * nh[0] + ak[1] * nh[1] + ak[2] * nh[2] + 2 * (ak[3] * nh[3] + ak[4] * nh[4] + ak[5] * nh[5]);
+      Dd += pl->C[k] * thk[k] * thk[k] - s32 * gt2 * an;
+      for (PetscInt r = 0; r < 6; r++) v[r] += gt2 * ak[r], A[r] += (1 + thk[k]) * ak[r];
+      /* the back stress's share, the trapezoid of (a_n + a) / 2 : d eps_p (exact on the radial path of gamma = 0) */
+      w += 0.5 * s32 * dl * (1 + thk[k]) * an + 0.5 * dl * dl * thk[k] * pl->C[k];
+    }
+  } else if (nx > 0)
+    for (PetscInt r = 0; r < 6; r++) nh[r] = xi[r] / nx;
+#undef XIT
+  for (PetscInt r = 0; r < 6; r++) {
+    o->sig[r]  = (r < 3 ? Kb * tr : 0) + 2 * mu * d[r] - (plastic ? s6 * mu * dl * nh[r] : 0);
+    o->deps[r] = plastic ? dl * s32 * nh[r] * (r < 3 ? 1 : 2) : 0;
+  }
+  for (PetscInt k = 0; k < nb; k++)
+    for (PetscInt r = 0; r < 6; r++) o->back[6 * k + r] = thk[k] * (ab[6 * k + r] + s23 * pl->C[k] * dl * nh[r]);
+  o->dl = dl, o->w = w, o->se = 0;
+  for (PetscInt r = 0; r < 6; r++) o->se += 0.5 * o->sig[r] * (e[r] - o->deps[r]);
+  if (!tangent) return;
+  {
+    PetscReal       vp[6] = {0}, Ap[6] = {0};
+    const PetscReal beta = plastic ? 1 - s6 * mu * dl / nx : 1, hn = plastic ? 2 * mu * (1 - beta - 3 * mu / Dd) : 0;
+    const PetscReal hv = plastic ? -2 * mu * (1 - beta) * s32 / Dd : 0;
+    PetscReal       nv_ = 0, nA = 0, ndn = 0;
+    for (PetscInt r = 0; r < 6; r++) o->dw_de[r] = 0;
+    o->dw_dth = 0;
+    if (plastic) {
+      for (PetscInt r = 0; r < 6; r++) {
+        const PetscReal wr = r < 3 ? 1 : 2;
+        nv_ += wr * nh[r] * v[r], nA += wr * nh[r] * A[r], ndn += wr * nh[r] * d[r];
+      }
+      for (PetscInt r = 0; r < 6; r++) vp[r] = v[r] - nh[r] * nv_, Ap[r] = A[r] - nh[r] * nA;
+    }
+    for (PetscInt r = 0; r < 6; r++)
+      for (PetscInt c = 0; c < 6; c++) {
+        const PetscReal pdev = r < 3 && c < 3 ? (r == c) - 1.0 / 3 : (r == c ? 0.5 : 0);
+        o->C[r][c] = (r < 3 && c < 3 ? Kb : 0) + 2 * mu * beta * pdev + hn * nh[r] * nh[c] + hv * vp[r] * nh[c];
+      }
+    if (plastic) {
+      /* with the back stresses fixed, xit turns with theta through mu: d xit / d theta = 2 dmu d; then
+       * d dl / d theta = (sqrt(3/2) n : 2 dmu d - 3 dmu dl - dsy) / D, dn = (I - n n) (2 dmu d + v ddl) / |xit|,
+       * d sigma_dev = 2 dmu d - sqrt(6) (dmu dl + mu ddl) n - sqrt(6) mu dl dn. The work: w_dl = sigma_y(p1) + the
+       * back stresses' sqrt(3/2) / 2 sum (1 + theta_k) n : a_k,n - sqrt(3/2) dl / 2 sum gamma_k theta_k^2 n : a_k,n +
+       * dl sum theta_k C_k - dl^2 / 2 sum gamma_k theta_k^2 C_k, and its direction term sqrt(3/2) dl / 2 A_perp : dn
+       * (A = sum (1 + theta_k) a_k,n) */
+      const PetscReal ddl = (s32 * 2 * dmu * ndn - 3 * dmu * dl - dsy) / Dd;
+      PetscReal       wdl = sy + dRf * ws, Apv = 0, Apd = 0;
+      for (PetscInt k = 0; k < nb; k++) {
+        const PetscReal *ak = ab + 6 * k, gt2 = pl->gamma[k] * thk[k] * thk[k];
+        const PetscReal  an = ak[0] * nh[0] + ak[1] * nh[1] + ak[2] * nh[2] + 2 * (ak[3] * nh[3] + ak[4] * nh[4] + ak[5] * nh[5]);
+        wdl += 0.5 * s32 * (1 + thk[k]) * an - 0.5 * s32 * dl * gt2 * an + dl * thk[k] * pl->C[k] - 0.5 * dl * dl * gt2 * pl->C[k];
+      }
+      for (PetscInt r = 0; r < 6; r++) {
+        const PetscReal wr = r < 3 ? 1 : 2;
+        Apv += wr * Ap[r] * v[r], Apd += wr * Ap[r] * d[r];
+      }
+      wdl += 0.5 * s32 * dl * Apv / nx;
+      for (PetscInt r = 0; r < 6; r++) {
+        const PetscReal dn = (2 * dmu * (d[r] - nh[r] * ndn) + vp[r] * ddl) / nx;
+        o->dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * deps_th : 0) + 2 * dmu * d[r] - s6 * (dmu * dl + mu * ddl) * nh[r] - s6 * mu * dl * dn;
+      }
+      for (PetscInt c = 0; c < 6; c++) o->dw_de[c] = wdl * s6 * mu / Dd * nh[c] + 0.5 * s32 * dl * 2 * mu * Ap[c] / nx;
+      o->dw_dth = dw_th_fixed + wdl * ddl + 0.5 * s32 * dl * 2 * dmu * Apd / nx;
+    } else
+      for (PetscInt r = 0; r < 6; r++) o->dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * deps_th : 0) + 2 * dmu * d[r];
+  }
+}
+
+/* Plane stress (the plane-stress types): the return with eps_33 its own unknown, Newton on sigma_33(eps_33) = 0 with
+ * the consistent C_33 (from the elastic plane-stress eps_33; quadratic, a few steps), then everything condensed
+ * onto the in-plane strain: C_ps = C - C[:, 3] C[3, :] / C_33 (row and column 3 zero, as B's row 3 is), dsig and
+ * the work's derivatives likewise through d eps_33 = -(C[3, :] d eps + dsig_3 d theta) / C_33. eps[2] is set to
+ * the eps_33 found. FALSE: no convergence (the caller reports the point as failed). */
+static PetscBool PlasticReturnPlaneStress(const TslElementInput *in, const PetscReal *st, PetscReal eps[6], PetscReal eps_th, PetscReal deps_th,
+                                          PetscReal theta, PetscReal mu, PetscReal Kb, PetscReal dmu, PetscReal dKb, PetscBool frozen, PetscBool tangent,
+                                          PlasticPoint *o)
+{
+  const PetscReal lam = Kb - 2 * mu / 3, ratio = lam / (lam + 2 * mu);
+  PetscReal       scale;
+
+  /* the elastic plane-stress eps_33 from the committed plastic strain: sigma_33 = 0 for an elastic point */
+  eps[2] = st[2] + eps_th - ratio * (eps[0] - st[0] + eps[1] - st[1] - 2 * eps_th);
+  PlasticReturn(in, st, eps, eps_th, deps_th, theta, mu, Kb, dmu, dKb, frozen, PETSC_TRUE, o);
+  scale = PetscAbsReal(o->sig[0]) + PetscAbsReal(o->sig[1]) + PetscAbsReal(o->sig[3]) + mu * 1e-12;
+  for (PetscInt it = 0; PetscAbsReal(o->sig[2]) > 1e-14 * scale; it++) {
+    if (it == 50 || !(o->C[2][2] > 0)) return PETSC_FALSE;
+    eps[2] -= o->sig[2] / o->C[2][2];
+    PlasticReturn(in, st, eps, eps_th, deps_th, theta, mu, Kb, dmu, dKb, frozen, PETSC_TRUE, o);
+  }
+  o->sig[2] = 0;
+  if (!tangent) return PETSC_TRUE;
+  {
+    const PetscReal c33 = o->C[2][2], ds3 = o->dsig[2], dw3 = o->dw_de[2];
+    PetscReal       c3[6];
+    for (PetscInt c = 0; c < 6; c++) c3[c] = o->C[2][c];
+    for (PetscInt r = 0; r < 6; r++) {
+      const PetscReal cr3 = o->C[r][2];
+      for (PetscInt c = 0; c < 6; c++) o->C[r][c] -= cr3 * c3[c] / c33;
+      o->dsig[r] -= cr3 * ds3 / c33;
+    }
+    for (PetscInt c = 0; c < 6; c++) o->dw_de[c] -= dw3 * c3[c] / c33;
+    o->dw_dth -= dw3 * ds3 / c33;
+    for (PetscInt c = 0; c < 6; c++) o->C[2][c] = o->C[c][2] = 0;
+    o->dsig[2] = 0, o->dw_de[2] = 0;
+  }
+  return PETSC_TRUE;
+}
+
 static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
                                   PetscReal energy[4])
 {
-  const TslElementType  *t    = in->type;
-  const TslGeometry     *g    = t->geom;
-  const TslQuadrature   *quad = t->form->quadrature(g, in->sec);
-  const TslMaterial     *mat  = in->sec->mat;
-  const TslPlasticTable *pl   = &mat->plastic;
-  const PetscInt         ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
-  const PetscReal        heat = mat->heat_fraction * in->inelastic_rate, s23 = PetscSqrtReal(2.0 / 3.0), s32 = PetscSqrtReal(1.5);
-  const PetscInt         nb = pl->nback, ns = TslMaterialPlasticState(mat);
-  MechPoint              mq;
+  const TslElementType *t    = in->type;
+  const TslGeometry    *g    = t->geom;
+  const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
+  const TslMaterial    *mat  = in->sec->mat;
+  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
+  const PetscReal       heat = mat->heat_fraction * in->inelastic_rate;
+  const PetscInt        nb = mat->plastic.nback, ns = TslMaterialPlasticState(mat);
+  const PetscBool       ps = TslKinematicsRowGet(t->kin)->free_normal;
+  MechPoint             mq;
+  PlasticPoint          o;
 
   if (energy) energy[0] = energy[2] = energy[3] = 0;
   for (PetscInt q = 0; q < quad->n; q++) {
-    const PetscReal *st = in->pstate + ns * q, *ab = st + 7; /* the committed back stresses, 6 each */
-    PetscReal        lam, mu, Kb, dlam, dmu, dKb, e[6], d[6], nh[6] = {0}, xi[6], v[6] = {0}, A[6] = {0}, tr, nx, qtr, theta, sy, H, dsy, dl = 0;
-    PetscReal        sig[6], deps[6], w = 0, thk[TSL_MAX_BACKSTRESS], Dd = 0, sumtc = 0;
-    PetscReal        dw_th_fixed = 0, Rf = 1, dRf = 0, ws = 0; /* d w / d theta at fixed p0, p1; the rate factor, its d / d dl; int sigma_static dp */
-    PetscBool        plastic = PETSC_FALSE;
+    const PetscReal *st = in->pstate + ns * q;
+    PetscReal        lam, mu, Kb, dlam, dmu, dKb, theta, eps[6];
 
     if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
     theta = NodalTheta(in, mq.p->N, in->u);
@@ -517,163 +693,57 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
       dmu  = mq.mp.dE / (2 * (1 + vv)) - mq.mp.dnu * E / (2 * (1 + vv) * (1 + vv));
       Kb = lam + 2 * mu / 3, dKb = dlam + 2 * dmu / 3;
     }
-    for (PetscInt r = 0; r < 6; r++) e[r] = mq.eps[r] - VoigtM[r] * mq.eps_th - st[r];
-    tr = e[0] + e[1] + e[2];
-    for (PetscInt r = 0; r < 6; r++) d[r] = r < 3 ? e[r] - tr / 3 : 0.5 * e[r];
-    for (PetscInt k = 0; k < nb; k++) thk[k] = 1;
-    /* xit(dl) and |xit|: the relative trial stress with the back stresses' recovery at dl */
-#define XIT(DL)                                                                                                  \
-  do {                                                                                                           \
-    for (PetscInt r = 0; r < 6; r++) xi[r] = 2 * mu * d[r];                                                      \
-    for (PetscInt k = 0; k < nb; k++) {                                                                          \
-      thk[k] = 1 / (1 + pl->gamma[k] * (DL));                                                                    \
-      for (PetscInt r = 0; r < 6; r++) xi[r] -= thk[k] * ab[6 * k + r];                                          \
-    }                                                                                                            \
-    nx = PetscSqrtReal(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2] + 2 * (xi[3] * xi[3] + xi[4] * xi[4] + xi[5] * xi[5])); \
-  } while (0)
-    XIT(0);
-    qtr = s32 * nx;
-    sy  = PlasticYield(in, st[6], 0, theta, &H, &dsy, &Rf, &dRf);
-    if (!res && qtr > sy * (1 + 1e-12)) { /* plastic: g(dl) = 0 on [0, q_tr / (3 mu)]; outputs (res) show the committed state */
-      PetscReal lo = 0, hi = qtr / (3 * mu);
-      plastic = PETSC_TRUE;
-      for (PetscInt it = 0; it < 100; it++) {
-        PetscReal gv, next, xv = 0;
-        sumtc = 0, Dd = 3 * mu + H;
-        for (PetscInt k = 0; k < nb; k++) {
-          const PetscReal an = (xi[0] * ab[6 * k] + xi[1] * ab[6 * k + 1] + xi[2] * ab[6 * k + 2] +
-                                2 * (xi[3] * ab[6 * k + 3] + xi[4] * ab[6 * k + 4] + xi[5] * ab[6 * k + 5])) / nx;
-          sumtc += thk[k] * pl->C[k];
-          Dd += pl->C[k] * thk[k] * thk[k];
-          xv += pl->gamma[k] * thk[k] * thk[k] * an;
-        }
-        Dd -= s32 * xv;
-        gv = s32 * nx - (3 * mu + sumtc) * dl - sy;
-        if (PetscAbsReal(gv) <= 1e-15 * sy) break;
-        if (gv > 0) lo = dl;
-        else hi = dl;
-        next = Dd > 0 ? dl + gv / Dd : 0.5 * (lo + hi);
-        if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-        dl = next;
-        sy = PlasticYield(in, st[6], dl, theta, &H, &dsy, &Rf, &dRf);
-        XIT(dl);
-      }
-      /* at the converged dl: n, D, v and the work */
-      sumtc = 0, Dd = 3 * mu + H;
-      for (PetscInt r = 0; r < 6; r++) nh[r] = xi[r] / nx;
-      ws = TslMaterialYieldIntegral(mat, st[6], st[6] + dl, theta, &dw_th_fixed);
-      w = Rf * ws, dw_th_fixed *= Rf; /* at the increment's rate */
-      for (PetscInt k = 0; k < nb; k++) {
-        const PetscReal *ak = ab + 6 * k, gt2 = pl->gamma[k] * thk[k] * thk[k];
-        const PetscReal  an = ak[0] * nh[0] + ak[1] * nh[1] + ak[2] * nh[2] + 2 * (ak[3] * nh[3] + ak[4] * nh[4] + ak[5] * nh[5]);
-        sumtc += thk[k] * pl->C[k];
-        Dd += pl->C[k] * thk[k] * thk[k] - s32 * gt2 * an;
-        for (PetscInt r = 0; r < 6; r++) v[r] += gt2 * ak[r], A[r] += (1 + thk[k]) * ak[r];
-        /* the back stress's share, the trapezoid of (a_n + a) / 2 : d eps_p (exact on the radial path of gamma = 0) */
-        w += 0.5 * s32 * dl * (1 + thk[k]) * an + 0.5 * dl * dl * thk[k] * pl->C[k];
-      }
-    } else if (nx > 0)
-      for (PetscInt r = 0; r < 6; r++) nh[r] = xi[r] / nx;
-#undef XIT
-    for (PetscInt r = 0; r < 6; r++) {
-      sig[r]  = (r < 3 ? Kb * tr : 0) + 2 * mu * d[r] - (plastic ? PetscSqrtReal(6.0) * mu * dl * nh[r] : 0);
-      deps[r] = plastic ? dl * s32 * nh[r] * (r < 3 ? 1 : 2) : 0;
-    }
+    for (PetscInt r = 0; r < 6; r++) eps[r] = mq.eps[r];
+    if (ps) {
+      if (!PlasticReturnPlaneStress(in, st, eps, mq.eps_th, mq.deps_th, theta, mu, Kb, dmu, dKb, res ? PETSC_TRUE : PETSC_FALSE, K ? PETSC_TRUE : PETSC_FALSE, &o))
+        return PETSC_FALSE;
+    } else /* outputs (res) come at the committed state: no return there */
+      PlasticReturn(in, st, eps, mq.eps_th, mq.deps_th, theta, mu, Kb, dmu, dKb, res ? PETSC_TRUE : PETSC_FALSE, K ? PETSC_TRUE : PETSC_FALSE, &o);
     for (PetscInt a = 0; a < nv; a++)
       for (PetscInt i = 0; i < nu; i++) {
         PetscReal f = 0;
-        for (PetscInt r = 0; r < 6; r++) f += mq.B[r][nu * a + i] * sig[r];
+        for (PetscInt r = 0; r < 6; r++) f += mq.B[r][nu * a + i] * o.sig[r];
         R[ndof * a + i] += f * mq.p->dV;
       }
-    for (PetscInt a = 0; a < n; a++) R[ndof * a + th] -= mq.p->N[a] * heat * w * mq.p->dV; /* the plastic heat, a source */
+    for (PetscInt a = 0; a < n; a++) R[ndof * a + th] -= mq.p->N[a] * heat * o.w * mq.p->dV; /* the plastic heat, a source */
     if (in->pstate_new) {
       PetscReal *sn = in->pstate_new + ns * q;
-      for (PetscInt r = 0; r < 6; r++) sn[r] = st[r] + deps[r];
-      sn[6] = st[6] + dl;
-      for (PetscInt k = 0; k < nb; k++)
-        for (PetscInt r = 0; r < 6; r++) sn[7 + 6 * k + r] = thk[k] * (ab[6 * k + r] + s23 * pl->C[k] * dl * nh[r]);
+      for (PetscInt r = 0; r < 6; r++) sn[r] = st[r] + o.deps[r];
+      sn[6] = st[6] + o.dl;
+      for (PetscInt k = 0; k < 6 * nb; k++) sn[7 + k] = o.back[k];
     }
     if (res) {
-      for (PetscInt r = 0; r < 6; r++) res->E[r] += mq.eps[r] / quad->n, res->S[r] += sig[r] / quad->n, res->PE[r] += (st[r] + deps[r]) / quad->n;
-      res->PEEQ += (st[6] + dl) / quad->n;
+      for (PetscInt r = 0; r < 6; r++) res->E[r] += eps[r] / quad->n, res->S[r] += o.sig[r] / quad->n, res->PE[r] += (st[r] + o.deps[r]) / quad->n;
+      res->PEEQ += (st[6] + o.dl) / quad->n;
+      res->strain_energy += o.se * mq.p->dV;
     }
-    {
-      PetscReal se = 0;
-      for (PetscInt r = 0; r < 6; r++) se += 0.5 * sig[r] * (e[r] - deps[r]) * mq.p->dV;
-      if (res) res->strain_energy += se;
-      if (energy) energy[0] += se, energy[2] += w * mq.p->dV, energy[3] += heat * w * mq.p->dV;
-    }
+    if (energy) energy[0] += o.se * mq.p->dV, energy[2] += o.w * mq.p->dV, energy[3] += heat * o.w * mq.p->dV;
     if (!K) continue;
-    {
-      PetscReal       C[6][6], dsig[6], dw_de[6] = {0}, dw_dth = 0, vp[6] = {0}, Ap[6] = {0};
-      const PetscReal beta = plastic ? 1 - PetscSqrtReal(6.0) * mu * dl / nx : 1, hn = plastic ? 2 * mu * (1 - beta - 3 * mu / Dd) : 0;
-      const PetscReal hv = plastic ? -2 * mu * (1 - beta) * s32 / Dd : 0;
-      PetscReal       nv_ = 0, nA = 0, ndn = 0;
-      if (plastic) {
-        for (PetscInt r = 0; r < 6; r++) {
-          const PetscReal wr = r < 3 ? 1 : 2;
-          nv_ += wr * nh[r] * v[r], nA += wr * nh[r] * A[r], ndn += wr * nh[r] * d[r];
-        }
-        for (PetscInt r = 0; r < 6; r++) vp[r] = v[r] - nh[r] * nv_, Ap[r] = A[r] - nh[r] * nA;
+    for (PetscInt c1 = 0; c1 < ncol; c1++) {
+      const PetscInt r1 = ndof * (c1 / nu) + c1 % nu;
+      PetscReal      CB[6], Bds = 0;
+      for (PetscInt r = 0; r < 6; r++) {
+        CB[r] = 0;
+        for (PetscInt s2 = 0; s2 < 6; s2++) CB[r] += o.C[s2][r] * mq.B[s2][c1]; /* (B^T C)_c1, column r */
+        Bds += mq.B[r][c1] * o.dsig[r];
       }
-      for (PetscInt r = 0; r < 6; r++)
-        for (PetscInt c = 0; c < 6; c++) {
-          const PetscReal pdev = r < 3 && c < 3 ? (r == c) - 1.0 / 3 : (r == c ? 0.5 : 0);
-          C[r][c] = (r < 3 && c < 3 ? Kb : 0) + 2 * mu * beta * pdev + hn * nh[r] * nh[c] + hv * vp[r] * nh[c];
-        }
-      if (plastic) {
-        /* with the back stresses fixed, xit turns with theta through mu: d xit / d theta = 2 dmu d; then
-         * d dl / d theta = (sqrt(3/2) n : 2 dmu d - 3 dmu dl - dsy) / D, dn = (I - n n) (2 dmu d + v ddl) / |xit|,
-         * d sigma_dev = 2 dmu d - sqrt(6) (dmu dl + mu ddl) n - sqrt(6) mu dl dn. The work: w_dl = sigma_y(p1) + the
-         * back stresses' sqrt(3/2) / 2 sum (1 + theta_k) n : a_k,n - sqrt(3/2) dl / 2 sum gamma_k theta_k^2 n : a_k,n +
-         * dl sum theta_k C_k - dl^2 / 2 sum gamma_k theta_k^2 C_k, and its direction term sqrt(3/2) dl / 2 A_perp : dn
-         * (A = sum (1 + theta_k) a_k,n) */
-        const PetscReal s6 = PetscSqrtReal(6.0), ddl = (s32 * 2 * dmu * ndn - 3 * dmu * dl - dsy) / Dd;
-        PetscReal       wdl = sy + dRf * ws, Apv = 0, Apd = 0;
-        for (PetscInt k = 0; k < nb; k++) {
-          const PetscReal *ak = ab + 6 * k, gt2 = pl->gamma[k] * thk[k] * thk[k];
-          const PetscReal  an = ak[0] * nh[0] + ak[1] * nh[1] + ak[2] * nh[2] + 2 * (ak[3] * nh[3] + ak[4] * nh[4] + ak[5] * nh[5]);
-          wdl += 0.5 * s32 * (1 + thk[k]) * an - 0.5 * s32 * dl * gt2 * an + dl * thk[k] * pl->C[k] - 0.5 * dl * dl * gt2 * pl->C[k];
-        }
-        for (PetscInt r = 0; r < 6; r++) {
-          const PetscReal wr = r < 3 ? 1 : 2;
-          Apv += wr * Ap[r] * v[r], Apd += wr * Ap[r] * d[r];
-        }
-        wdl += 0.5 * s32 * dl * Apv / nx;
-        for (PetscInt r = 0; r < 6; r++) {
-          const PetscReal dn = (2 * dmu * (d[r] - nh[r] * ndn) + vp[r] * ddl) / nx;
-          dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + 2 * dmu * d[r] - s6 * (dmu * dl + mu * ddl) * nh[r] - s6 * mu * dl * dn;
-        }
-        for (PetscInt c = 0; c < 6; c++) dw_de[c] = wdl * s6 * mu / Dd * nh[c] + 0.5 * s32 * dl * 2 * mu * Ap[c] / nx;
-        dw_dth = dw_th_fixed + wdl * ddl + 0.5 * s32 * dl * 2 * dmu * Apd / nx;
-      } else
-        for (PetscInt r = 0; r < 6; r++) dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * mq.deps_th : 0) + 2 * dmu * d[r];
-      for (PetscInt c1 = 0; c1 < ncol; c1++) {
-        const PetscInt r1 = ndof * (c1 / nu) + c1 % nu;
-        PetscReal      CB[6], Bds = 0;
-        for (PetscInt r = 0; r < 6; r++) {
-          CB[r] = 0;
-          for (PetscInt s2 = 0; s2 < 6; s2++) CB[r] += C[s2][r] * mq.B[s2][c1]; /* (B^T C)_c1, column r */
-          Bds += mq.B[r][c1] * dsig[r];
-        }
+      for (PetscInt c2 = 0; c2 < ncol; c2++) {
+        PetscReal kv = 0;
+        for (PetscInt r = 0; r < 6; r++) kv += CB[r] * mq.B[r][c2];
+        K[r1 * nd + ndof * (c2 / nu) + c2 % nu] += kv * mq.p->dV;
+      }
+      for (PetscInt b = 0; b < n; b++) K[r1 * nd + ndof * b + th] += Bds * mq.p->N[b] * mq.p->dV;
+    }
+    if (heat > 0 && o.dl > 0)
+      for (PetscInt a = 0; a < n; a++) {
+        const PetscReal f = -mq.p->N[a] * heat * mq.p->dV;
         for (PetscInt c2 = 0; c2 < ncol; c2++) {
           PetscReal kv = 0;
-          for (PetscInt r = 0; r < 6; r++) kv += CB[r] * mq.B[r][c2];
-          K[r1 * nd + ndof * (c2 / nu) + c2 % nu] += kv * mq.p->dV;
+          for (PetscInt r = 0; r < 6; r++) kv += o.dw_de[r] * mq.B[r][c2];
+          K[(ndof * a + th) * nd + ndof * (c2 / nu) + c2 % nu] += f * kv;
         }
-        for (PetscInt b = 0; b < n; b++) K[r1 * nd + ndof * b + th] += Bds * mq.p->N[b] * mq.p->dV;
+        for (PetscInt b = 0; b < n; b++) K[(ndof * a + th) * nd + ndof * b + th] += f * o.dw_dth * mq.p->N[b];
       }
-      if (heat > 0 && plastic)
-        for (PetscInt a = 0; a < n; a++) {
-          const PetscReal f = -mq.p->N[a] * heat * mq.p->dV;
-          for (PetscInt c2 = 0; c2 < ncol; c2++) {
-            PetscReal kv = 0;
-            for (PetscInt r = 0; r < 6; r++) kv += dw_de[r] * mq.B[r][c2];
-            K[(ndof * a + th) * nd + ndof * (c2 / nu) + c2 % nu] += f * kv;
-          }
-          for (PetscInt b = 0; b < n; b++) K[(ndof * a + th) * nd + ndof * b + th] += f * dw_dth * mq.p->N[b];
-        }
-    }
   }
   return PETSC_TRUE;
 }
@@ -1216,7 +1286,7 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res
   PetscCall(PetscMemzero(res, sizeof(*res)));
   for (PetscInt i = 0; i < TslElementTypeNodes(t) * ndof; i++) R[i] = 0;
   PetscCheck(Mechanics(in, NULL, R, NULL, &hy, res, NULL), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
-  if (TslKinematicsRowGet(t->kin)->free_normal) {
+  if (TslKinematicsRowGet(t->kin)->free_normal && !in->pstate) { /* a plastic point's eps_33 is its return's (MechanicsPlastic) */
     const TslQuadrature *quad = t->form->quadrature(g, in->sec);
     res->E[2]                 = 0;
     for (PetscInt q = 0; q < quad->n; q++) {

@@ -33,6 +33,9 @@ uniaxial_rate_power|jc, explicit_rate_power  *RATE DEPENDENT (make_decks.py RATE
            static curve; explicit (a frame every increment): the 1D answer to 1e-2 (the cube's inertia), the Mises stress
            on sigma_static(p) R(dp / dt) in every increment that flowed (1e-8), the heat (the last increment's work not
            yet in the temperature) and ETOTAL
+biaxial    equibiaxial plane stress (make_decks.py biaxial): sigma_11 = sigma_22 = sigma with the flow along (1/2, 1/2,
+           -1) dp: eps = (1 - nu) sigma / E + eps_p,11 and sigma = sigma_y(p) while flowing (exact for the linear
+           hardening), the thickness strain E33 = -2 nu sigma / E - p (the plane-stress return's eps_33), 1e-8
 usage: check.py OUTDIR JOB uniaxial[_kinematic|_combined[1]]|adiabatic[_kinematic|_combined]|adiabatic_soft AXIS"""
 import sys
 
@@ -170,6 +173,23 @@ elif case.startswith("uniaxial_combined") or case == "adiabatic_combined":
         smax = max(abs(x[0]) for x in ref)
         check_true("loading, unloading, reverse yield and reload all seen", ref[-1][2] > 0.04 and min(strains) < 0 and strains[-1] > 0.009, "PEEQ %.4g" % ref[-1][2])
         print("largest stress %.6g" % smax)
+elif case == "biaxial":
+    NU = 0.3
+    ep, p, worst = 0.0, 0.0, 0.0
+    for k in frames:
+        eps = float(r.field("U", k)[pulled, 0].mean())
+        trial = E * (eps - ep) / (1 - NU)
+        if abs(trial) > sy(p):  # (|trial| - sigma_y(p)) = (E / (2 (1 - nu)) + H) dp
+            dp = (abs(trial) - sy(p)) / (E / (2 * (1 - NU)) + H)
+            ep += np.sign(trial) * dp / 2
+            p += dp
+        sg = E * (eps - ep) / (1 - NU)
+        e33 = -2 * NU * sg / E - 2 * ep
+        S, Ee, PQ = r.field("S", k)[0], r.field("E", k)[0], r.field("PEEQ", k)[0, 0]
+        worst = max(worst, abs(S[0] - sg) / S0, abs(S[1] - sg) / S0, abs(S[2]) / S0, abs(Ee[2] - e33) * E / S0, abs(PQ - p) * E / S0)
+    print("%d frames, final stress %.6g, PEEQ %.6g, thickness strain %.6g" % (len(r.frames), sg, p, e33))
+    check("S11, S22, E33 and PEEQ against the equibiaxial model, worst (of sigma_y0)", worst, 0.0, 1e-8)
+    check_true("loading, unloading and reverse yield seen", p > 0.02, "PEEQ %.4g" % p)
 elif case == "explicit_beam":
     h = r.history
     theta = r.field("NT", -1)[:, 0]

@@ -46,6 +46,9 @@ CYCLE = PATH + [("RELOAD", 1.0, 0.1, 0.01)]  # the nonlinear kinematic decks clo
 
 def cube(typ):
     """A unit cube of one element (C3D20T: its midside nodes too), or the CAX4T ring r in [R0, R0 + 1], z in [0, 1]."""
+    if typ.startswith("CPS"):  # the unit square in plane stress
+        nodes = [(1, 0.0, 0.0), (2, 1.0, 0.0), (3, 1.0, 1.0), (4, 0.0, 1.0)]
+        return nodes, [[1, 1, 2, 3, 4]], "*NSET, NSET=X0\n 1, 4\n*NSET, NSET=X1\n 2, 3\n*NSET, NSET=Y0\n 1, 2\n*NSET, NSET=Y1\n 3, 4\n"
     if typ == "CAX4T":
         nodes = [(1, R0, 0.0), (2, R0 + 1, 0.0), (3, R0 + 1, 1.0), (4, R0, 1.0)]
         return nodes, [[1, 1, 2, 3, 4]], "*NSET, NSET=X0\n 1, 2\n*NSET, NSET=X1\n 3, 4\n"  # X0: z = 0, X1: z = 1 (the pulled face)
@@ -66,7 +69,7 @@ def cube(typ):
 
 def model(typ, plastic, heat=False):
     nodes, elems, sets = cube(typ)
-    dim = 2 if typ == "CAX4T" else 3
+    dim = 2 if typ == "CAX4T" or typ.startswith("CPS") else 3
     fmt = lambda n: " %d, " % n[0] + ", ".join("%.12g" % v for v in n[1:1 + dim]) + "\n"
     return ("*NODE, NSET=NALL\n" + "".join(fmt(n) for n in nodes) + "*ELEMENT, TYPE=%s, ELSET=ALL\n" % typ +
             "".join(" " + ", ".join(str(v) for v in e) + "\n" for e in elems) + sets +
@@ -77,6 +80,8 @@ def model(typ, plastic, heat=False):
 
 def holds(typ):
     """The symmetry planes (the ring: z = 0 axially, radially free) and the pulled direction's dof."""
+    if typ.startswith("CPS"):
+        return "*BOUNDARY\n X0, 1, 1\n Y0, 2, 2\n", 1
     return ("*BOUNDARY\n X0, 2, 2\n" if typ == "CAX4T" else "*BOUNDARY\n X0, 1, 1\n Y0, 2, 2\n Z0, 3, 3\n"), (2 if typ == "CAX4T" else 1)
 
 
@@ -114,6 +119,31 @@ def explicit(typ, law=None, period=None):
             model(typ, law or PLASTIC, heat=True) + "*AMPLITUDE, NAME=PULL, DEFINITION=SMOOTH STEP\n 0.0, 0.0, %s, 1.0\n" % float(T) +
             "*STEP, NAME=PULL\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n , %s\n" % (1.25 * T) + hold +
             "*BOUNDARY, AMPLITUDE=PULL\n X1, %d, %d, 0.02\n" % (dof, dof) + out + "*END STEP\n")
+
+
+def biaxial(typ):
+    """Equibiaxial stress in plane stress: the square pulled along x and y alike (to 0.01, back to 0.004, on to
+    -0.01): the thickness takes the flow, eps_33 = -2 nu sigma / E - eps_p (check.py biaxial)"""
+    text = "*HEADING\n Equibiaxial plane stress of one %s: the thickness strain of the flow\n" % typ + model(typ, PLASTIC)
+    for k, (name, period, inc, strain) in enumerate(PATH):
+        text += ("*STEP, NAME=%s, INC=100\n*STATIC, DIRECT\n %g, %g\n" % (name, inc, period) + ("*BOUNDARY\n X0, 1, 1\n Y0, 2, 2\n" if k == 0 else "") +
+                 "*BOUNDARY\n X1, 1, 1, %.12g\n Y1, 2, 2, %.12g\n*END STEP\n" % (strain, strain))
+    return text
+
+
+def jacobian_2d(typ, law):
+    """jacobian() for a distorted plane-stress quad (millimetres), pulled then sheared: the plane-stress return's
+    condensed tangent, heat and temperature columns"""
+    corner = [(0, 0), (1000, 0), (1100, 1200), (-100, 1000)]
+    return ("*HEADING\n A distorted %s pulled and sheared past yield and heated: the plane-stress tangent against finite differences\n" % typ +
+            "*NODE, NSET=NALL\n" + "".join(" %d, %g, %g\n" % ((i + 1,) + c) for i, c in enumerate(corner)) +
+            "*ELEMENT, TYPE=%s, ELSET=ALL\n 1, 1, 2, 3, 4\n*NSET, NSET=FIX\n 1, 4\n*NSET, NSET=PULL\n 2, 3\n" % typ +
+            "*MATERIAL, NAME=STEEL\n*ELASTIC\n 200000., 0.3, 0.\n 150000., 0.3, 100.\n" + law +
+            "*INELASTIC HEAT FRACTION\n*EXPANSION\n 1.2E-5\n*CONDUCTIVITY\n 50.0\n*DENSITY\n 1.0\n*SPECIFIC HEAT\n 2.0\n"
+            "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL\n 10.0\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\n NALL, 20.0\n"
+            "*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.5, 1.0\n*BOUNDARY\n FIX, 1, 1\n 1, 2, 2\n"
+            " PULL, 1, 1, 40.0\n*CFLUX\n 3, 11, 5.0E6\n*END STEP\n"
+            "*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.5, 1.0\n*BOUNDARY\n PULL, 2, 2, 40.0\n*END STEP\n")
 
 
 def explicit_beam():
@@ -183,12 +213,12 @@ def bad(name):
     base = uniaxial("C3D8T")
     if name in BAD_EDITS:
         return base.replace(*BAD_EDITS[name])
-    if name == "plane_stress":
-        return uniaxial("CAX4T").replace("TYPE=CAX4T", "TYPE=CPS4T")
+    if name == "hybrid":
+        return uniaxial("CAX4T").replace("TYPE=CAX4T", "TYPE=CAX4RHT")
     raise KeyError(name)
 
 
-BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "plane_stress", "heat_fraction", "rate_first", "rate_theta", "rate_d"]
+BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "hybrid", "heat_fraction", "rate_first", "rate_theta", "rate_d"]
 
 
 def main():
@@ -204,6 +234,14 @@ def main():
         decks["explicit_%s" % typ.lower()] = explicit(typ)
     decks["explicit_combined_c3d8t"] = explicit("C3D8T", PLASTIC_COMB)
     decks["explicit_beam_cpe4t"] = explicit_beam()
+    # plane stress
+    decks["uniaxial_cps4t"] = uniaxial("CPS4T")
+    decks["uniaxial_combined_cps4rt"] = uniaxial("CPS4RT", law=PLASTIC_COMB, path=CYCLE)
+    decks["uniaxial_rate_power_cps4t"] = uniaxial("CPS4T", law=PLASTIC + RATE_POWER)
+    decks["biaxial_cps4t"] = biaxial("CPS4T")
+    decks["explicit_cps4t"] = explicit("CPS4T")
+    decks["jacobian_plastic_cps4t"] = jacobian_2d("CPS4T", PLASTIC_SOFT)
+    decks["jacobian_combined_cps4t"] = jacobian_2d("CPS4T", PLASTIC_COMB_SOFT)
     decks["uniaxial_rate_power_c3d8t"] = uniaxial("C3D8T", law=PLASTIC + RATE_POWER)
     decks["uniaxial_rate_jc_cax4t"] = uniaxial("CAX4T", law=PLASTIC + RATE_JC)
     decks["explicit_rate_power_c3d8t"] = explicit("C3D8T", PLASTIC + RATE_POWER, period=0.2)
