@@ -19,6 +19,7 @@ isotropic hardening, E = 200000, nu = 0.3, sigma_y = 200 + 1000 p (two points; c
                         table: -snes_test_jacobian with the plastic flow, its heat and their temperature columns
   bad_*.inp             bad input (CMakeLists.txt gives each message)
 usage: make_decks.py [OUTDIR]"""
+import math
 import os
 import sys
 
@@ -146,6 +147,63 @@ def jacobian_2d(typ, law):
             "*STEP, INC=10\n*COUPLED TEMPERATURE-DISPLACEMENT, DIRECT\n 0.5, 1.0\n*BOUNDARY\n PULL, 2, 2, 40.0\n*END STEP\n")
 
 
+# the thick-walled cylinder: a = 1, b = 2, elastic-perfectly plastic sigma_0 = 200 (k = sigma_0 / sqrt(3)), nearly
+# incompressible (nu = 0.49: the closed form's sigma_z = the mean in plane strain), the fronts c = 1.5, 1.7
+CYL_A, CYL_B, CYL_S0, CYL_NU, CYL_FRONTS = 1.0, 2.0, 200.0, 0.49, (1.5, 1.7)
+
+
+def cylinder_pressure(c):
+    """The internal pressure that pushes the plastic front to c (plane strain, Tresca yield in k)"""
+    k = CYL_S0 / 3 ** 0.5
+    return k * (1 - c * c / CYL_B ** 2 + 2 * math.log(c / CYL_A))
+
+
+def cylinder(typ, nr=24, nt=8):
+    """A thick-walled cylinder under internal pressure (check.py cylinder): CPE8RT a quarter annulus (nr x nt, symmetry
+    on both cuts), CAX8RT a radial strip of nr square elements held axially (plane strain); the pressure to the fronts
+    CYL_FRONTS in two steps, then removed (elastic unloading: the residual stresses)"""
+    a, b = CYL_A, CYL_B
+    ax = typ.startswith("CAX")
+    nt = 1 if ax else nt
+    h = (b - a) / nr
+    pts, ids = [], {}
+    for j in range(2 * nt + 1):
+        for i in range(2 * nr + 1):
+            if i % 2 and j % 2:
+                continue  # the quad8's centre
+            r = a + (b - a) * i / (2 * nr)
+            if ax:
+                xy = (r, h * j / 2)
+            else:
+                t = 0.5 * math.pi * j / (2 * nt)
+                xy = (r * math.cos(t), r * math.sin(t))
+            ids[(i, j)] = len(pts) + 1
+            pts.append(xy)
+    elems = []
+    for j in range(nt):
+        for i in range(nr):
+            I, J = 2 * i, 2 * j
+            elems.append([ids[(I, J)], ids[(I + 2, J)], ids[(I + 2, J + 2)], ids[(I, J + 2)], ids[(I + 1, J)], ids[(I + 2, J + 1)], ids[(I + 1, J + 2)],
+                          ids[(I, J + 1)]])
+    text = "*HEADING\n A thick-walled %s cylinder under internal pressure, elastic-perfectly plastic: fronts at %s, then unloaded\n" % (
+        typ, ", ".join("%g" % c for c in CYL_FRONTS))
+    text += "*NODE, NSET=NALL\n" + "".join(" %d, %.15g, %.15g\n" % (k + 1, x, y) for k, (x, y) in enumerate(pts))
+    text += "*ELEMENT, TYPE=%s, ELSET=ALL\n" % typ + "".join(" %d, " % (e + 1) + ", ".join(str(v) for v in c) + "\n" for e, c in enumerate(elems))
+    text += "*ELSET, ELSET=INNER\n" + "".join(" %d,\n" % (1 + nr * j) for j in range(nt)) + "*SURFACE, NAME=BORE\n INNER, S4\n"
+    if ax:
+        text += "*BOUNDARY\n NALL, 2, 2\n"
+    else:
+        text += "*NSET, NSET=CUT0\n" + "".join(" %d,\n" % ids[(i, 0)] for i in range(2 * nr + 1)) + \
+                "*NSET, NSET=CUT90\n" + "".join(" %d,\n" % ids[(i, 2 * nt)] for i in range(2 * nr + 1)) + "*BOUNDARY\n CUT0, 2, 2\n CUT90, 1, 1\n"
+    text += ("*MATERIAL, NAME=STEEL\n*ELASTIC\n %g, %g\n*PLASTIC\n %g, 0.0\n*CONDUCTIVITY\n 50.0\n*DENSITY\n 1.0\n*SPECIFIC HEAT\n 2.0\n"
+             "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL\n 1.0\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\n NALL, 0.0\n" % (E, CYL_NU, CYL_S0))
+    for k, c in enumerate(CYL_FRONTS + (None,)):
+        pr = cylinder_pressure(c) if c else 0.0
+        text += ("*STEP, NAME=%s, INC=100\n*STATIC\n 0.1, 1.0\n*DSLOAD\n BORE, P, %.12g\n*END STEP\n" %
+                 ("FRONT%d" % (k + 1) if c else "UNLOAD", pr))
+    return text
+
+
 def explicit_beam():
     """Explicit: a CPE4T cantilever of 12 x 3 elements (L 12, h 3) clamped at x = 0, its tip moved 0.15 sideways on a
     smooth step over 10 s (its first bending period is 0.66 s: quasi-static) and held 0.5 s; the root yields (first
@@ -242,6 +300,8 @@ def main():
     decks["explicit_cps4t"] = explicit("CPS4T")
     decks["jacobian_plastic_cps4t"] = jacobian_2d("CPS4T", PLASTIC_SOFT)
     decks["jacobian_combined_cps4t"] = jacobian_2d("CPS4T", PLASTIC_COMB_SOFT)
+    decks["cylinder_cpe8rt"] = cylinder("CPE8RT")
+    decks["cylinder_cax8rt"] = cylinder("CAX8RT")
     decks["uniaxial_rate_power_c3d8t"] = uniaxial("C3D8T", law=PLASTIC + RATE_POWER)
     decks["uniaxial_rate_jc_cax4t"] = uniaxial("CAX4T", law=PLASTIC + RATE_JC)
     decks["explicit_rate_power_c3d8t"] = explicit("C3D8T", PLASTIC + RATE_POWER, period=0.2)
