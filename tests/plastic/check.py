@@ -43,6 +43,11 @@ cylinder   the thick-walled cylinder (make_decks.py cylinder; a = 1, b = 2, sigm
            the element centres, 1e-2 of k (measured: CAX8RT 8.6e-4, CPE8RT 6.5e-3, the mean over points of components
            that turn with the angle across an element of 11.25 degrees); the front, the outermost element that yielded,
            within one element of c
+friction_plastic  the spec's CPE4T friction series with a small block that yields (make_decks.py friction_plastic): the
+           heat balance of every increment (balance_residual, frictional and plastic heat against the stored and
+           conducted heat) within 1e-6 of the largest heat rate; at the end, isothermal, rho c V theta = the frictional
+           heat absorbed + 0.9 ALLPD (1e-6 relative; the plastic share, 1e-4 of it, is seen to 1 %); the block yielded
+           under the press and again in the slide
 usage: check.py OUTDIR JOB uniaxial[_kinematic|_combined[1]]|adiabatic[_kinematic|_combined]|adiabatic_soft AXIS"""
 import sys
 
@@ -180,6 +185,22 @@ elif case.startswith("uniaxial_combined") or case == "adiabatic_combined":
         smax = max(abs(x[0]) for x in ref)
         check_true("loading, unloading, reverse yield and reload all seen", ref[-1][2] > 0.04 and min(strains) < 0 and strains[-1] > 0.009, "PEEQ %.4g" % ref[-1][2])
         print("largest stress %.6g" % smax)
+elif case == "friction_plastic":
+    h = r.history
+    rate = float(np.max(np.abs(h["friction_dissipation_rate"]) + np.abs(h["plastic_heat_rate"])))
+    check("heat balance residual, worst increment (of the largest heat rate)", float(np.abs(h["balance_residual"]).max()) / rate, 0.0, 1e-6)
+    V = 0.0
+    for conn in r.elements():
+        x = r.xyz[conn, 0], r.xyz[conn, 1]
+        V += 0.5 * abs(float(np.dot(x[0], np.roll(x[1], -1)) - np.dot(x[1], np.roll(x[0], -1))))
+    theta = r.field("NT", -1)[:, 0]
+    allpd, fric = float(h["ALLPD"][-1]), float(h["friction_heat_total"][-1])
+    check("isothermal at the end (spread of the mean)", float(np.ptp(theta) / theta.mean()), 0.0, 1e-6)
+    check("rho c V theta = frictional heat + 0.9 ALLPD", 1.0 * V * float(theta.mean()), fric + 0.9 * allpd, 1e-6, relative=True)
+    step = h["step"]
+    pd = [float(h["ALLPD"][step == k][-1]) for k in (1, 2)]
+    check_true("the block yielded under the press and again in the slide", pd[0] > 0 and pd[1] > 2 * pd[0], "ALLPD %.4g after the press, %.4g after the slide" % tuple(pd))
+    print("frictional heat %.8g, ALLPD %.6g, final temperature %.8g" % (fric, allpd, theta.mean()))
 elif case == "cylinder":
     a, b, k = 1.0, 2.0, 200.0 / np.sqrt(3.0)
     fronts = (1.5, 1.7)

@@ -204,6 +204,20 @@ def cylinder(typ, nr=24, nt=8):
     return text
 
 
+def friction_plastic():
+    """The spec's CPE4T friction deck (jobs/verification/sliding_friction_cpe4t.inp) with the small block of a metal
+    that yields under the press (sigma_y = 30 + 10000 p against the pressure of 100) and again in the slide, with
+    *INELASTIC HEAT FRACTION 0.9: frictional and plastic heat together (check.py friction_plastic)"""
+    with open(os.path.join(HERE, "..", "..", "jobs", "verification", "sliding_friction_cpe4t.inp")) as f:
+        text = f.read()
+    soft = ("*MATERIAL, NAME=SOFT\n*ELASTIC\n 30.0E6, 0.3\n*PLASTIC\n 30.0, 0.0\n 130.0, 0.01\n*INELASTIC HEAT FRACTION\n 0.9\n"
+            "*CONDUCTIVITY\n 10.0\n*DENSITY\n 1000.0\n*SPECIFIC HEAT\n 0.001\n")
+    text = text.replace("*SOLID SECTION, ELSET=SMALL, MATERIAL=STEEL", "*SOLID SECTION, ELSET=SMALL, MATERIAL=SOFT")
+    text = text.replace("*SOLID SECTION, ELSET=LARGE", soft + "*SOLID SECTION, ELSET=LARGE", 1)
+    return text.replace(" Finite sliding between coupled temperature-displacement CPE4T blocks: friction series",
+                        " The spec's CPE4T friction series with a small block that yields: frictional and plastic heat", 1)
+
+
 def explicit_beam():
     """Explicit: a CPE4T cantilever of 12 x 3 elements (L 12, h 3) clamped at x = 0, its tip moved 0.15 sideways on a
     smooth step over 10 s (its first bending period is 0.66 s: quasi-static) and held 0.5 s; the root yields (first
@@ -302,6 +316,7 @@ def main():
     decks["jacobian_combined_cps4t"] = jacobian_2d("CPS4T", PLASTIC_COMB_SOFT)
     decks["cylinder_cpe8rt"] = cylinder("CPE8RT")
     decks["cylinder_cax8rt"] = cylinder("CAX8RT")
+    decks["friction_plastic_cpe4t"] = friction_plastic()
     decks["uniaxial_rate_power_c3d8t"] = uniaxial("C3D8T", law=PLASTIC + RATE_POWER)
     decks["uniaxial_rate_jc_cax4t"] = uniaxial("CAX4T", law=PLASTIC + RATE_JC)
     decks["explicit_rate_power_c3d8t"] = explicit("C3D8T", PLASTIC + RATE_POWER, period=0.2)
