@@ -447,6 +447,95 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
   return PETSC_TRUE;
 }
 
+/* One mechanical point's share of a hybrid element's condensation data (Hybrid): P its pressure functions, kb and
+ * dkb the bulk modulus and its temperature derivative; P_avg the pressure functions' mean over the nq points. */
+static void HybridPoint(const TslElementInput *in, const MechPoint *mq, PetscReal kb, PetscReal dkb, PetscInt nq, Hybrid *hy, PetscReal P_avg[])
+{
+  const TslElementType *t = in->type;
+  const PetscInt        n = t->geom->nnode, ncol = TslElementTypeNodes(t) * (t->ndof - 1);
+  PetscReal             Bm[TSL_MAX_ELEM_NODES * 3], P[TSL_MAX_PRESSURE];
+
+  hy->np = t->form->pressure(t->geom, mq->p, P);
+  for (PetscInt c = 0; c < ncol; c++) {
+    Bm[c] = 0;
+    for (PetscInt r = 0; r < 3; r++) Bm[c] += mq->B[r][c];
+  }
+  for (PetscInt k = 0; k < hy->np; k++) {
+    for (PetscInt c = 0; c < ncol; c++) hy->G[c][k] += Bm[c] * P[k] * mq->p->dV;
+    hy->g0[k] += P[k] * 3 * mq->eps_th * mq->p->dV;
+    for (PetscInt l = 0; l < hy->np; l++) hy->H[k][l] += P[k] * P[l] / kb * mq->p->dV;
+    for (PetscInt b = 0; b < n; b++) {
+      hy->dg0[b][k] += P[k] * 3 * mq->deps_th * mq->p->N[b] * mq->p->dV;
+      for (PetscInt l = 0; l < hy->np; l++) hy->dH[b][k][l] -= P[k] * P[l] * dkb / (kb * kb) * mq->p->N[b] * mq->p->dV;
+    }
+    P_avg[k] += P[k] / nq;
+  }
+}
+
+/* A hybrid element's condensation after its points: the pressure coefficients H p = G^T u - g0, R_u += G p, the
+ * stress output (the deviators' mean sdev_avg plus the mean pressure), the volumetric energy 1/2 p^T H p into *se
+ * and K_uu += G H^-1 G^T with the temperature columns -G H^-1 (dg0 + dH p). */
+static void HybridCondense(const TslElementInput *in, Hybrid *hy, const PetscReal P_avg[], const PetscReal sdev_avg[], PetscReal R[], PetscReal K[],
+                           TslElementResult *res, PetscReal *se)
+{
+  const TslElementType *t    = in->type;
+  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = t->geom->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
+  PetscReal      Hi[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], rhs[TSL_MAX_PRESSURE];
+  const PetscInt np = hy->np;
+  SmallInverse(np, hy->H, Hi);
+  for (PetscInt k = 0; k < np; k++) {
+    rhs[k] = -hy->g0[k];
+    for (PetscInt a = 0; a < nv; a++)
+      for (PetscInt i = 0; i < nu; i++) rhs[k] += hy->G[nu * a + i][k] * in->u[ndof * a + i];
+  }
+  for (PetscInt k = 0; k < np; k++) {
+    hy->p[k] = 0;
+    for (PetscInt l = 0; l < np; l++) hy->p[k] += Hi[k][l] * rhs[l];
+  }
+  for (PetscInt a = 0; a < nv; a++)
+    for (PetscInt i = 0; i < nu; i++)
+      for (PetscInt k = 0; k < np; k++) R[ndof * a + i] += hy->G[nu * a + i][k] * hy->p[k];
+  if (res) {
+    PetscReal pm = 0;
+    for (PetscInt k = 0; k < np; k++) pm += hy->p[k] * P_avg[k];
+    for (PetscInt r = 0; r < 6; r++) res->S[r] = sdev_avg[r] + VoigtM[r] * pm; /* point averages, as for the other formulations */
+  }
+  if (se) {
+    PetscReal vol_energy = 0; /* volumetric energy: 1/2 p_hat^T H p_hat */
+    for (PetscInt k = 0; k < np; k++)
+      for (PetscInt l = 0; l < np; l++) vol_energy += 0.5 * hy->p[k] * hy->H[k][l] * hy->p[l];
+    *se += vol_energy;
+  }
+  if (K) {
+    PetscReal GHi[TSL_MAX_ELEM_NODES * 3][TSL_MAX_PRESSURE];
+    for (PetscInt c = 0; c < ncol; c++)
+      for (PetscInt k = 0; k < np; k++) {
+        GHi[c][k] = 0;
+        for (PetscInt l = 0; l < np; l++) GHi[c][k] += hy->G[c][l] * Hi[l][k];
+      }
+    for (PetscInt a = 0; a < nv; a++)
+      for (PetscInt i = 0; i < nu; i++) {
+        const PetscInt row = ndof * a + i, c = nu * a + i;
+        for (PetscInt b = 0; b < nv; b++) {
+          for (PetscInt j = 0; j < nu; j++) {
+            PetscReal kij = 0;
+            for (PetscInt k = 0; k < np; k++) kij += GHi[c][k] * hy->G[nu * b + j][k];
+            K[row * nd + ndof * b + j] += kij;
+          }
+          if (b < n) {
+            PetscReal kth = 0;
+            for (PetscInt k = 0; k < np; k++) {
+              PetscReal dHp = 0;
+              for (PetscInt l = 0; l < np; l++) dHp += hy->dH[b][k][l] * hy->p[l];
+              kth += GHi[c][k] * (-hy->dg0[b][k] - dHp);
+            }
+            K[row * nd + ndof * b + th] += kth;
+          }
+        }
+      }
+  }
+}
+
 /* Mises plasticity with isotropic, linear kinematic or nonlinear kinematic hardening (*PLASTIC; docs/keywords.md,
  * docs/elements.md "Plasticity"), the displacement formulations of every kinematics with the whole 3D strain (3D, plane
  * strain, axisymmetric with and without twist, generalized plane strain). At each point, from the committed plastic
@@ -675,11 +764,14 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
   const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
   const PetscReal       heat = mat->heat_fraction * in->inelastic_rate;
   const PetscInt        nb = mat->plastic.nback, ns = TslMaterialPlasticState(mat);
-  const PetscBool       ps = TslKinematicsRowGet(t->kin)->free_normal;
+  const PetscBool       ps = TslKinematicsRowGet(t->kin)->free_normal, hybrid = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
+  PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
   MechPoint             mq;
   PlasticPoint          o;
+  Hybrid                hy;
 
   if (energy) energy[0] = energy[2] = energy[3] = 0;
+  if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(&hy, sizeof(hy)));
   for (PetscInt q = 0; q < quad->n; q++) {
     const PetscReal *st = in->pstate + ns * q;
     PetscReal        lam, mu, Kb, dlam, dmu, dKb, theta, eps[6];
@@ -699,6 +791,15 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
         return PETSC_FALSE;
     } else /* outputs (res) come at the committed state: no return there */
       PlasticReturn(in, st, eps, mq.eps_th, mq.deps_th, theta, mu, Kb, dmu, dKb, res ? PETSC_TRUE : PETSC_FALSE, K ? PETSC_TRUE : PETSC_FALSE, &o);
+    if (hybrid) { /* the pressure is the element's own (HybridCondense): the return's deviatoric part alone here (the flow is isochoric) */
+      const PetscReal trE = eps[0] + eps[1] + eps[2] - 3 * mq.eps_th - (st[0] + st[1] + st[2]);
+      HybridPoint(in, &mq, Kb, dKb, quad->n, &hy, P_avg);
+      for (PetscInt r = 0; r < 3; r++) {
+        o.sig[r] -= Kb * trE, o.dsig[r] -= dKb * trE - 3 * Kb * mq.deps_th;
+        for (PetscInt c = 0; c < 3; c++) o.C[r][c] -= Kb;
+      }
+      o.se -= 0.5 * Kb * trE * trE;
+    }
     for (PetscInt a = 0; a < nv; a++)
       for (PetscInt i = 0; i < nu; i++) {
         PetscReal f = 0;
@@ -713,7 +814,8 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
       for (PetscInt k = 0; k < 6 * nb; k++) sn[7 + k] = o.back[k];
     }
     if (res) {
-      for (PetscInt r = 0; r < 6; r++) res->E[r] += eps[r] / quad->n, res->S[r] += o.sig[r] / quad->n, res->PE[r] += (st[r] + o.deps[r]) / quad->n;
+      for (PetscInt r = 0; r < 6; r++) res->E[r] += eps[r] / quad->n, res->PE[r] += (st[r] + o.deps[r]) / quad->n;
+      for (PetscInt r = 0; r < 6; r++) *(hybrid ? &sdev_avg[r] : &res->S[r]) += o.sig[r] / quad->n;
       res->PEEQ += (st[6] + o.dl) / quad->n;
       res->strain_energy += o.se * mq.p->dV;
     }
@@ -745,6 +847,7 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
         for (PetscInt b = 0; b < n; b++) K[(ndof * a + th) * nd + ndof * b + th] += f * o.dw_dth * mq.p->N[b];
       }
   }
+  if (hybrid) HybridCondense(in, &hy, P_avg, sdev_avg, R, K, res, res ? &res->strain_energy : energy ? &energy[0] : NULL);
   return PETSC_TRUE;
 }
 
@@ -784,7 +887,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
   if (K) PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(Kuu, ncol * ncol));
   for (PetscInt q = 0; q < quad->n; q++) {
-    PetscReal D[6][6], dD[6][6], emech[6], sig[6], dsig[6], P[TSL_MAX_PRESSURE];
+    PetscReal D[6][6], dD[6][6], emech[6], sig[6], dsig[6];
     PetscReal DB[6][TSL_MAX_ELEM_NODES * 3];
 
     if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, lean, &mq)) return PETSC_FALSE;
@@ -792,25 +895,10 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
       const PetscReal nuv = mq.mp.nu, E = mq.mp.E, mu = E / (2 * (1 + nuv)), kb = E / (3 * (1 - 2 * nuv));
       const PetscReal dmu = mq.mp.dE / (2 * (1 + nuv)) - mq.mp.dnu * E / (2 * (1 + nuv) * (1 + nuv));
       const PetscReal dkb = mq.mp.dE / (3 * (1 - 2 * nuv)) + mq.mp.dnu * 2 * E / (3 * (1 - 2 * nuv) * (1 - 2 * nuv));
-      PetscReal       Bm[TSL_MAX_ELEM_NODES * 3];
-      hy->np = t->form->pressure(g, mq.p, P);
+      HybridPoint(in, &mq, kb, dkb, quad->n, hy, P_avg);
       Deviatoric(mu, D);
       Deviatoric(dmu, dD);
       for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r]; /* the deviatoric part ignores the volumetric eps_th */
-      for (PetscInt c = 0; c < ncol; c++) {
-        Bm[c] = 0;
-        for (PetscInt r = 0; r < 3; r++) Bm[c] += mq.B[r][c];
-      }
-      for (PetscInt k = 0; k < hy->np; k++) {
-        for (PetscInt c = 0; c < ncol; c++) hy->G[c][k] += Bm[c] * P[k] * mq.p->dV;
-        hy->g0[k] += P[k] * 3 * mq.eps_th * mq.p->dV;
-        for (PetscInt l = 0; l < hy->np; l++) hy->H[k][l] += P[k] * P[l] / kb * mq.p->dV;
-        for (PetscInt b = 0; b < n; b++) {
-          hy->dg0[b][k] += P[k] * 3 * mq.deps_th * mq.p->N[b] * mq.p->dV;
-          for (PetscInt l = 0; l < hy->np; l++) hy->dH[b][k][l] -= P[k] * P[l] * dkb / (kb * kb) * mq.p->N[b] * mq.p->dV;
-        }
-        P_avg[k] += P[k] / quad->n;
-      }
     } else {
       TslElementElasticity(t, in->sec, mq.p, &mq.mp, D, K ? dD : NULL);
       for (PetscInt r = 0; r < 6; r++) emech[r] = mq.eps[r] - VoigtM[r] * mq.eps_th;
@@ -888,62 +976,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         K[r1 * nd + r2] += Kuu[c1 * ncol + c2];
         if (c2 != c1) K[r2 * nd + r1] += Kuu[c1 * ncol + c2];
       }
-  if (hybrid) {
-    PetscReal      Hi[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], rhs[TSL_MAX_PRESSURE];
-    const PetscInt np = hy->np;
-    SmallInverse(np, hy->H, Hi);
-    for (PetscInt k = 0; k < np; k++) {
-      rhs[k] = -hy->g0[k];
-      for (PetscInt a = 0; a < nv; a++)
-        for (PetscInt i = 0; i < nu; i++) rhs[k] += hy->G[nu * a + i][k] * in->u[ndof * a + i];
-    }
-    for (PetscInt k = 0; k < np; k++) {
-      hy->p[k] = 0;
-      for (PetscInt l = 0; l < np; l++) hy->p[k] += Hi[k][l] * rhs[l];
-    }
-    for (PetscInt a = 0; a < nv; a++)
-      for (PetscInt i = 0; i < nu; i++)
-        for (PetscInt k = 0; k < np; k++) R[ndof * a + i] += hy->G[nu * a + i][k] * hy->p[k];
-    if (res) {
-      PetscReal pm = 0;
-      for (PetscInt k = 0; k < np; k++) pm += hy->p[k] * P_avg[k];
-      for (PetscInt r = 0; r < 6; r++) res->S[r] = sdev_avg[r] + VoigtM[r] * pm; /* point averages, as for the other formulations */
-    }
-    if (se) {
-      PetscReal vol_energy = 0; /* volumetric energy: 1/2 p_hat^T H p_hat */
-      for (PetscInt k = 0; k < np; k++)
-        for (PetscInt l = 0; l < np; l++) vol_energy += 0.5 * hy->p[k] * hy->H[k][l] * hy->p[l];
-      *se += vol_energy;
-    }
-    if (K) {
-      PetscReal GHi[TSL_MAX_ELEM_NODES * 3][TSL_MAX_PRESSURE];
-      for (PetscInt c = 0; c < ncol; c++)
-        for (PetscInt k = 0; k < np; k++) {
-          GHi[c][k] = 0;
-          for (PetscInt l = 0; l < np; l++) GHi[c][k] += hy->G[c][l] * Hi[l][k];
-        }
-      for (PetscInt a = 0; a < nv; a++)
-        for (PetscInt i = 0; i < nu; i++) {
-          const PetscInt row = ndof * a + i, c = nu * a + i;
-          for (PetscInt b = 0; b < nv; b++) {
-            for (PetscInt j = 0; j < nu; j++) {
-              PetscReal kij = 0;
-              for (PetscInt k = 0; k < np; k++) kij += GHi[c][k] * hy->G[nu * b + j][k];
-              K[row * nd + ndof * b + j] += kij;
-            }
-            if (b < n) {
-              PetscReal kth = 0;
-              for (PetscInt k = 0; k < np; k++) {
-                PetscReal dHp = 0;
-                for (PetscInt l = 0; l < np; l++) dHp += hy->dH[b][k][l] * hy->p[l];
-                kth += GHi[c][k] * (-hy->dg0[b][k] - dHp);
-              }
-              K[row * nd + ndof * b + th] += kth;
-            }
-          }
-        }
-    }
-  }
+  if (hybrid) HybridCondense(in, hy, P_avg, sdev_avg, R, K, res, se);
   return PETSC_TRUE;
 }
 
