@@ -111,7 +111,7 @@ PetscBool TslKinematicsTwists(TslKinematics kin)
 PetscBool TslElementTypeHasDof(const TslElementType *t, PetscInt dof)
 {
   for (PetscInt i = 0; i < t->ndof; i++)
-    if (t->node_dof[i] == dof) return PETSC_TRUE;
+    if (t->node_dof[i] == dof || (t->nextra && dof > 0 && t->extra_dof[i] == dof)) return PETSC_TRUE; /* CPEG: the reference node's 3, 4, 5 */
   return PETSC_FALSE;
 }
 
@@ -119,7 +119,10 @@ const char *TslElementTypeDofList(const TslElementType *t, char *buf, size_t len
 {
   size_t k = 0;
   buf[0]   = 0;
-  for (PetscInt i = 0; i < t->ndof && k + 8 < len; i++) k += (size_t)snprintf(buf + k, len - k, "%s%d", i ? ", " : "", (int)t->node_dof[i]);
+  for (PetscInt i = 0; i < t->ndof && k + 8 < len; i++)
+    if (t->node_dof[i]) k += (size_t)snprintf(buf + k, len - k, "%s%d", k ? ", " : "", (int)t->node_dof[i]);
+  for (PetscInt i = 0, first = 1; t->nextra && i < t->ndof && k + (first ? 30 : 8) < len; i++)
+    if (t->extra_dof[i]) k += (size_t)snprintf(buf + k, len - k, "%s%d", first ? "; the reference node's " : ", ", (int)t->extra_dof[i]), first = 0;
   return buf;
 }
 

@@ -48,6 +48,7 @@ friction_plastic  the spec's CPE4T friction series with a small block that yield
            conducted heat) within 1e-6 of the largest heat rate; at the end, isothermal, rho c V theta = the frictional
            heat absorbed + 0.9 ALLPD (1e-6 relative; the plastic share, 1e-4 of it, is seen to 1 %); the block yielded
            under the press and again in the slide
+AXIS 0: x (3D, plane), 1: z (the ring), 2: z of generalized plane strain, pulled by its reference node (id 100)
 usage: check.py OUTDIR JOB uniaxial[_kinematic|_combined[1]]|adiabatic[_kinematic|_combined]|adiabatic_soft AXIS"""
 import sys
 
@@ -120,8 +121,12 @@ def continuous(law, p):
     back, s0, _ = LAWS[law]
     return s0(p) + sum(c * p if g == 0 else c / g * (1 - np.exp(-g * p)) for c, g in back)
 
-coord = r.xyz[:, axis]
+# axis 2: generalized plane strain pulled along z by its reference node (id 100), whose first slot is its dof 3
+coord = r.xyz[:, min(axis, 1)]
 pulled = np.isclose(coord, coord.max())
+if axis == 2:
+    pulled = r.node_ids == 100
+    coord = np.array([0.0, 1.0])
 frames = range(len(r.frames))
 
 if case.startswith("uniaxial_rate") or case.startswith("explicit_rate"):
@@ -309,7 +314,7 @@ elif case in ("uniaxial", "uniaxial_kinematic"):
     kin = case == "uniaxial_kinematic"
     eps_p, p, a, worst, worst_other, iso = 0.0, 0.0, 0.0, 0.0, 0.0, [0.0, 0.0]
     for k in frames:
-        eps = float(r.field("U", k)[pulled, axis].mean()) / (coord.max() - coord.min())
+        eps = float(r.field("U", k)[pulled, axis if axis < 2 else 0].mean()) / (coord.max() - coord.min())
         trial = E * (eps - eps_p)
         if kin:  # the surface |sigma - a| = S0 moved by a = H eps_p (H = 1000 the back stress's modulus C)
             if abs(trial - a) > S0:
