@@ -631,7 +631,7 @@ static void PlasticReturn(const TslElementInput *in, const PetscReal *st, const 
       }
       Dd -= s32 * xv;
       gv = s32 * nx - (3 * mu + sumtc) * dl - sy;
-      if (PetscAbsReal(gv) <= 1e-15 * sy) break;
+      if (PetscAbsReal(gv) <= 1e-14 * qtr) break; /* g's terms are of the size of q_tr: its round-off, not sigma_y's */
       if (gv > 0) lo = dl;
       else hi = dl;
       next = Dd > 0 ? dl + gv / Dd : 0.5 * (lo + hi);
@@ -769,7 +769,11 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
   MechPoint             mq;
   PlasticPoint          o;
   Hybrid                hy;
+  PetscBool             symmetric = PETSC_TRUE; /* C is, unless a back stress recovers (gamma > 0: the v_perp n^T term) */
+  PetscReal             CB[TSL_MAX_ELEM_NODES * 3][6]; /* B^T C dV, by column of B */
 
+  for (PetscInt kb = 0; kb < nb; kb++)
+    if (mat->plastic.gamma[kb] > 0) symmetric = PETSC_FALSE;
   if (energy) energy[0] = energy[2] = energy[3] = 0;
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(&hy, sizeof(hy)));
   for (PetscInt q = 0; q < quad->n; q++) {
@@ -821,27 +825,34 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
     }
     if (energy) energy[0] += o.se * mq.p->dV, energy[2] += o.w * mq.p->dV, energy[3] += heat * o.w * mq.p->dV;
     if (!K) continue;
+    /* K_uu += B^T C B dV over B's nonzeros (bz: at most 4 of a column's 6 rows), the upper triangle where C is
+     * symmetric (no recovering back stress), and the temperature column B^T dsig N_b dV */
+    for (PetscInt c1 = 0; c1 < ncol; c1++) {
+      PetscReal Bds = 0;
+      for (PetscInt r = 0; r < 6; r++) CB[c1][r] = 0;
+      for (PetscInt j = 0; j < mq.bz_n[c1]; j++) {
+        const PetscReal  v  = mq.bz_val[c1][j] * mq.p->dV;
+        const PetscReal *cr = o.C[mq.bz_row[c1][j]];
+        for (PetscInt r = 0; r < 6; r++) CB[c1][r] += v * cr[r];
+        Bds += v * o.dsig[mq.bz_row[c1][j]];
+      }
+      for (PetscInt b = 0; b < n; b++) K[(ndof * (c1 / nu) + c1 % nu) * nd + ndof * b + th] += Bds * mq.p->N[b];
+    }
     for (PetscInt c1 = 0; c1 < ncol; c1++) {
       const PetscInt r1 = ndof * (c1 / nu) + c1 % nu;
-      PetscReal      CB[6], Bds = 0;
-      for (PetscInt r = 0; r < 6; r++) {
-        CB[r] = 0;
-        for (PetscInt s2 = 0; s2 < 6; s2++) CB[r] += o.C[s2][r] * mq.B[s2][c1]; /* (B^T C)_c1, column r */
-        Bds += mq.B[r][c1] * o.dsig[r];
-      }
-      for (PetscInt c2 = 0; c2 < ncol; c2++) {
+      for (PetscInt c2 = symmetric ? c1 : 0; c2 < ncol; c2++) {
         PetscReal kv = 0;
-        for (PetscInt r = 0; r < 6; r++) kv += CB[r] * mq.B[r][c2];
-        K[r1 * nd + ndof * (c2 / nu) + c2 % nu] += kv * mq.p->dV;
+        for (PetscInt j = 0; j < mq.bz_n[c2]; j++) kv += CB[c1][mq.bz_row[c2][j]] * mq.bz_val[c2][j];
+        K[r1 * nd + ndof * (c2 / nu) + c2 % nu] += kv;
+        if (symmetric && c2 != c1) K[(ndof * (c2 / nu) + c2 % nu) * nd + r1] += kv;
       }
-      for (PetscInt b = 0; b < n; b++) K[r1 * nd + ndof * b + th] += Bds * mq.p->N[b] * mq.p->dV;
     }
     if (heat > 0 && o.dl > 0)
       for (PetscInt a = 0; a < n; a++) {
         const PetscReal f = -mq.p->N[a] * heat * mq.p->dV;
         for (PetscInt c2 = 0; c2 < ncol; c2++) {
           PetscReal kv = 0;
-          for (PetscInt r = 0; r < 6; r++) kv += o.dw_de[r] * mq.B[r][c2];
+          for (PetscInt j = 0; j < mq.bz_n[c2]; j++) kv += o.dw_de[mq.bz_row[c2][j]] * mq.bz_val[c2][j];
           K[(ndof * a + th) * nd + ndof * (c2 / nu) + c2 % nu] += f * kv;
         }
         for (PetscInt b = 0; b < n; b++) K[(ndof * a + th) * nd + ndof * b + th] += f * o.dw_dth * mq.p->N[b];

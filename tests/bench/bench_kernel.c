@@ -3,13 +3,18 @@
  * unit element with a nonzero state, plus the flop-free floor of touching the element arrays.
  * For the types with an explicit force record (src/element/fast.c): TslElementFastForceBatch per element
  * (batches of TSL_FAST_LANES), on one batch (in cache) and streamed over 64 MB of batches with the next
- * batch prefetched as the explicit loop does, so the difference is the memory traffic's share. Prints figures only (ctest -L bench). usage: bench_kernel [seconds per figure, default 0.2; a negative
- * value -N runs exactly N calls per figure, for instruction counts with perf stat] [TYPE] */
+ * batch prefetched as the explicit loop does, so the difference is the memory traffic's share. Then, for the types that
+ * take *PLASTIC, the same element flowing at every point (Mises, isotropic hardening, and combined hardening with two
+ * back stresses): residual and residual + tangent, and their ratios to the elastic kernel's and, for the explicit
+ * steps, to the elastic force record's (issue 47's goals: 1.5 implicit, 1.3 explicit). Prints figures only (ctest -L
+ * bench). usage: bench_kernel [seconds per figure, default 0.2; a negative value -N runs exactly N calls per figure,
+ * for instruction counts with perf stat] [TYPE] */
 #define _POSIX_C_SOURCE 200809L
 #include <thermoslide/element.h>
 #include <thermoslide/material.h>
 #include <time.h>
 #include <string.h>
+#include <stdio.h>
 
 static double CpuNow(void)
 {
@@ -77,7 +82,8 @@ static double TimeRecords(const TslElementFastShape *shape, const PetscReal *rec
 
 int main(int argc, char **argv)
 {
-  double budget = argc > 1 ? atof(argv[1]) : 0.2;
+  double        budget = argc > 1 ? atof(argv[1]) : 0.2;
+  static double plastic[1024][3]; /* each row's elastic residual, jacobian and record ns */
 
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %6s %5s %12s %12s %12s %12s %10s %10s\n", "type", "nodes", "dofs", "residual_ns", "jacobian_ns",
@@ -123,6 +129,51 @@ int main(int argc, char **argv)
     }
     PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %6" PetscInt_FMT " %5" PetscInt_FMT " %12.0f %12.0f %12.0f %12.0f %10.0f %10.0f\n", t->name, nn,
                           nn * t->ndof, r_ns, j_ns, r_ns / nn, j_ns / nn, f_ns, fs_ns));
+    plastic[k][0] = r_ns, plastic[k][1] = j_ns, plastic[k][2] = f_ns;
+  }
+  /* the plastic kernels: every point flowing from a zero state (yield 5 against elastic stresses of about 20) */
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "\nplastic (every point flowing): ns per element and the ratio to the elastic kernel (explicit: to its force record)\n"));
+  PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %-9s %12s %12s %9s %9s %9s\n", "type", "hardening", "residual_ns", "jacobian_ns", "res/el", "jac/el", "res/rec"));
+  for (PetscInt k = 0; k < TslElementTypeCount(); k++) {
+    const TslElementType *t = TslElementTypeGet(k);
+    const TslGeometry    *g = t->geom;
+    const char           *why;
+    const PetscInt        nn = TslElementTypeNodes(t);
+    if ((argc > 2 && strcmp(argv[2], t->name)) || t->ndof < 2 || !TslElementTypePlasticSupported(t, &why)) continue;
+    for (PetscInt law = 0; law < 2; law++) {
+      TslMaterial       mat;
+      TslElementSection sec;
+      PetscReal         x[TSL_MAX_ELEM_NODES * 3] = {0}, u[TSL_MAX_ELEM_DOF] = {0}, ti[TSL_MAX_ELEM_NODES] = {0}, *st;
+      TslElementInput   in;
+      double            r_ns, j_ns;
+      PetscCall(PetscMemzero(&mat, sizeof(mat)));
+      Constant(&mat.prop[TSL_PROP_ELASTIC], 200e3, 0.3);
+      Constant(&mat.prop[TSL_PROP_CONDUCTIVITY], 10, 0);
+      Constant(&mat.prop[TSL_PROP_DENSITY], 2, 0);
+      Constant(&mat.prop[TSL_PROP_SPECIFIC_HEAT], 3, 0);
+      Constant(&mat.prop[TSL_PROP_EXPANSION], 1e-5, 0);
+      mat.plastic.n = 2, mat.plastic.row[0][0] = 5, mat.plastic.row[1][0] = 105, mat.plastic.row[1][1] = 0.1;
+      if (law) mat.plastic.nback = 2, mat.plastic.C[0] = 4e4, mat.plastic.gamma[0] = 400, mat.plastic.C[1] = 1e3, mat.plastic.n = 1;
+      mat.heat_fraction = 0.9;
+      sec = (TslElementSection){&mat, 0.5, 0, 0, 0};
+      for (PetscInt a = 0; a < g->nnode; a++) {
+        for (PetscInt d = 0; d < t->dim; d++) x[3 * a + d] = 0.5 * g->node_xi[a][d] + 0.02 * PetscSinReal(3.1 * a + 1.3 * d) + (d == 0 ? 2 : 0);
+        for (PetscInt i = 0; i < t->ndof; i++) u[t->ndof * a + i] = 1e-4 * PetscCosReal(1.7 * a + i);
+        u[t->ndof * a + t->ndof - 1] = 20 + a;
+      }
+      for (PetscInt a = g->nnode; a < nn; a++) x[3 * a] = 0.3;
+      PetscCall(PetscCalloc1(TslMaterialPlasticState(&mat) * TslElementTypeMechanicalPoints(t, &sec), &st));
+      in = (TslElementInput){.type = t, .sec = &sec, .x = x, .u = u, .theta_init = ti, .pstate = st, .inelastic_rate = 1.0, .dt = 1.0};
+      PetscCall(Time(&in, PETSC_FALSE, budget, &r_ns));
+      PetscCall(Time(&in, PETSC_TRUE, budget, &j_ns));
+      PetscCall(PetscFree(st));
+      {
+        char rec[32] = "-";
+        if (plastic[k][2] > 0) snprintf(rec, sizeof(rec), "%.2f", r_ns / plastic[k][2]);
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %-9s %12.0f %12.0f %9.2f %9.2f %9s\n", t->name, law ? "combined" : "isotropic", r_ns, j_ns, r_ns / plastic[k][0],
+                              j_ns / plastic[k][1], rec));
+      }
+    }
   }
   PetscCall(PetscFinalize());
   return 0;
