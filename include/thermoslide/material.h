@@ -52,8 +52,11 @@ static inline PetscBool TslMaterialIsPlastic(const TslMaterial *mat)
  * strain, then each back stress (Voigt, tensor components; none with isotropic hardening). */
 static inline PetscInt TslMaterialPlasticState(const TslMaterial *mat)
 {
-  return 7 + 6 * mat->plastic.nback;
+  return 7 + 6 * mat->plastic.nback + (mat->plastic.nkt > 1 ? 2 : 0); /* + (committed, its temperature) with temperature-dependent back stresses */
 }
+/* The back stresses' moduli C_k and recoveries gamma_k at theta and their theta-derivatives (constant unless the
+ * kinematic data depend on temperature: linear between their temperatures, the ends held). */
+void TslMaterialBackStress(const TslMaterial *mat, PetscReal theta, PetscReal C[], PetscReal gamma[], PetscReal dC[], PetscReal dgamma[]);
 
 /* True when any property varies with temperature (the kernels then add the property-derivative terms). */
 PetscBool TslMaterialIsTemperatureDependent(const TslMaterial *mat);

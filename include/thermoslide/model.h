@@ -80,6 +80,10 @@ typedef struct {
   PetscInt  nback;
   PetscReal C[TSL_MAX_BACKSTRESS], gamma[TSL_MAX_BACKSTRESS];
   PetscBool combined;  /* HARDENING=COMBINED (a *CYCLIC HARDENING may follow) */
+  /* temperature-dependent back stresses (nkt > 1 rows, ascending kt_theta): C_k and gamma_k linear between them, the
+   * end rows held beyond (TslMaterialBackStress); the point's state then keeps the temperature of its last commit */
+  PetscInt  nkt;
+  PetscReal kt_theta[TSL_MAX_TABLE_ROWS], kt_C[TSL_MAX_TABLE_ROWS][TSL_MAX_BACKSTRESS], kt_gamma[TSL_MAX_TABLE_ROWS][TSL_MAX_BACKSTRESS];
   PetscInt  rate_law;  /* *RATE DEPENDENT: 0 none, 1 TYPE=POWER LAW (rate = D (sigma / sigma_static - 1)^n), 2 JOHNSON COOK
                           (sigma = sigma_static (1 + C ln(rate / rate_0)) above rate_0) */
   PetscReal rate[2];   /* D, n or C, rate_0 */

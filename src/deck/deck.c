@@ -1383,36 +1383,52 @@ static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
     PetscCall(ParamInt(d, "NUMBER BACKSTRESSES", &nb));
     USER_CHECK(nb >= 1 && nb <= TSL_MAX_BACKSTRESS, LOC_FMT "*PLASTIC: NUMBER BACKSTRESSES must lie in 1..%d (got %" PetscInt_FMT ")", KLOC(d),
                TSL_MAX_BACKSTRESS, nb);
-    PetscCall(DataRecord(d, 2 * nb + 2, v, &nrec, &at, &got));
-    USER_CHECK(got, LOC_FMT "*PLASTIC needs a data line", KLOC(d));
-    d->loc = at;
-    USER_CHECK(nrec >= 2 * nb + 1, LOC_FMT "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS with %" PetscInt_FMT " back stress%s needs: yield stress, then C and gamma of each "
-               "(%" PetscInt_FMT " values)[, temperature] (got %" PetscInt_FMT ")", DLOC(d), nb, nb > 1 ? "es" : "", 2 * nb + 1, nrec);
-    USER_CHECK(v[0] > 0, LOC_FMT "material %s: *PLASTIC: the yield stress must be positive (got %g)", DLOC(d), mat->name, (double)v[0]);
-    for (PetscInt k = 0; k < nb; k++) {
-      USER_CHECK(v[1 + 2 * k] >= 0 && v[2 + 2 * k] >= 0, LOC_FMT "material %s: *PLASTIC: back stress %" PetscInt_FMT ": C and gamma must not be negative (got %g, %g)",
-                 DLOC(d), mat->name, k + 1, (double)v[1 + 2 * k], (double)v[2 + 2 * k]);
-      t->C[k] = v[1 + 2 * k], t->gamma[k] = v[2 + 2 * k];
+    for (PetscInt r = 0;; r++) { /* one record per temperature, ascending */
+      PetscCall(DataRecord(d, 2 * nb + 2, v, &nrec, &at, &got));
+      if (!got) break;
+      d->loc = at;
+      USER_CHECK(r < TSL_MAX_TABLE_ROWS, LOC_FMT "*PLASTIC: at most %d data records", DLOC(d), TSL_MAX_TABLE_ROWS);
+      USER_CHECK(nrec >= 2 * nb + 1, LOC_FMT "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS with %" PetscInt_FMT " back stress%s needs: yield stress, then C and gamma of each "
+                 "(%" PetscInt_FMT " values)[, temperature] (got %" PetscInt_FMT ")", DLOC(d), nb, nb > 1 ? "es" : "", 2 * nb + 1, nrec);
+      USER_CHECK(v[0] > 0, LOC_FMT "material %s: *PLASTIC: the yield stress must be positive (got %g)", DLOC(d), mat->name, (double)v[0]);
+      USER_CHECK(!r || nrec == 2 * nb + 2, LOC_FMT "*PLASTIC, HARDENING=COMBINED: temperature-dependent parameters need the temperature on every record", DLOC(d));
+      USER_CHECK(!r || v[2 * nb + 1] > t->kt_theta[r - 1], LOC_FMT "*PLASTIC: the records' temperatures must ascend (%g after %g)", DLOC(d), (double)v[2 * nb + 1],
+                 (double)t->kt_theta[r - 1]);
+      for (PetscInt k = 0; k < nb; k++) {
+        USER_CHECK(v[1 + 2 * k] >= 0 && v[2 + 2 * k] >= 0, LOC_FMT "material %s: *PLASTIC: back stress %" PetscInt_FMT ": C and gamma must not be negative (got %g, %g)",
+                   DLOC(d), mat->name, k + 1, (double)v[1 + 2 * k], (double)v[2 + 2 * k]);
+        t->kt_C[r][k] = v[1 + 2 * k], t->kt_gamma[r][k] = v[2 + 2 * k];
+      }
+      t->kt_theta[r] = v[2 * nb + 1];
+      t->row[r][0] = v[0], t->row[r][1] = 0, t->row[r][2] = v[2 * nb + 1]; /* the surface's size at each temperature, until a *CYCLIC HARDENING */
+      t->n = r + 1;
+      if (!r && nrec < 2 * nb + 2) t->kt_theta[0] = t->row[0][2] = 0;
     }
-    PetscCall(DataRecord(d, 2 * nb + 2, v, &nrec, &at, &got));
-    d->loc = at;
-    USER_CHECK(!got, LOC_FMT "*PLASTIC, HARDENING=COMBINED with temperature-dependent parameters (a second data record) is not supported yet", DLOC(d));
-    t->nback = nb, t->combined = PETSC_TRUE;
-    t->n = 1, t->row[0][0] = v[0], t->row[0][1] = t->row[0][2] = 0; /* the surface's size: sigma_0 until a *CYCLIC HARDENING */
+    USER_CHECK(t->n > 0, LOC_FMT "*PLASTIC needs a data line", KLOC(d));
+    if (t->n == 1) t->kt_theta[0] = t->row[0][2] = 0; /* one record: no temperature dependence */
+    for (PetscInt k = 0; k < nb; k++) t->C[k] = t->kt_C[0][k], t->gamma[k] = t->kt_gamma[0][k];
+    t->nback = nb, t->combined = PETSC_TRUE, t->nkt = t->n > 1 ? t->n : 0;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PlasticCurve(d, mat, t));
-  if (hard && !strcmp(hard, "KINEMATIC")) { /* the yield stress at 0 and, from a second point, the back stress's modulus */
-    USER_CHECK(t->n <= 2, LOC_FMT "*PLASTIC, HARDENING=KINEMATIC takes two data lines (linear kinematic hardening; got %" PetscInt_FMT ")", KLOC(d), t->n);
-    USER_CHECK(t->n < 2 || t->row[1][2] == t->row[0][2], LOC_FMT "*PLASTIC, HARDENING=KINEMATIC with temperature-dependent data is not supported yet",
-               KLOC(d));
-    USER_CHECK(t->n < 2 || t->row[1][0] >= t->row[0][0],
-               LOC_FMT "material %s: *PLASTIC, HARDENING=KINEMATIC: the second yield stress must not be below the first (%g after %g)", KLOC(d), mat->name,
-               (double)t->row[1][0], (double)t->row[0][0]);
-    t->nback    = 1; /* Ziegler-Prager: the nonlinear law with gamma = 0 */
-    t->C[0]     = t->n == 2 ? (t->row[1][0] - t->row[0][0]) / t->row[1][1] : 0;
-    t->gamma[0] = 0;
-    t->n        = 1; /* the surface's size is constant */
+  if (hard && !strcmp(hard, "KINEMATIC")) { /* per temperature: the yield stress at 0 and, from a second point, the back stress's modulus */
+    PetscInt ng = 0;
+    for (PetscInt i = 0; i < t->n;) {
+      PetscInt e = i + 1;
+      while (e < t->n && t->row[e][2] == t->row[i][2]) e++;
+      USER_CHECK(e - i <= 2, LOC_FMT "*PLASTIC, HARDENING=KINEMATIC takes two data lines per temperature (linear kinematic hardening; got %" PetscInt_FMT " at %g)",
+                 KLOC(d), e - i, (double)t->row[i][2]);
+      USER_CHECK(e - i < 2 || t->row[i + 1][0] >= t->row[i][0],
+                 LOC_FMT "material %s: *PLASTIC, HARDENING=KINEMATIC: the second yield stress must not be below the first (%g after %g)", KLOC(d), mat->name,
+                 (double)t->row[i + 1][0], (double)t->row[i][0]);
+      t->kt_C[ng][0]     = e - i == 2 ? (t->row[i + 1][0] - t->row[i][0]) / t->row[i + 1][1] : 0;
+      t->kt_gamma[ng][0] = 0;
+      t->kt_theta[ng]    = t->row[i][2];
+      t->row[ng][0] = t->row[i][0], t->row[ng][1] = 0, t->row[ng][2] = t->row[i][2]; /* the surface's size at the temperature */
+      ng++, i = e;
+    }
+    t->n = ng, t->nback = 1, t->nkt = ng > 1 ? ng : 0; /* Ziegler-Prager: the nonlinear law with gamma = 0 */
+    t->C[0] = t->kt_C[0][0], t->gamma[0] = 0;
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

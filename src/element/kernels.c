@@ -594,8 +594,10 @@ static void PlasticReturn(const TslElementInput *in, const PetscReal *st, const 
   const TslPlasticTable *pl  = &mat->plastic;
   const PetscReal        s23 = PetscSqrtReal(2.0 / 3.0), s32 = PetscSqrtReal(1.5), s6 = PetscSqrtReal(6.0);
   const PetscInt         nb = pl->nback;
-  const PetscReal       *ab = st + 7; /* the committed back stresses, 6 each */
+  const PetscReal       *ab0 = st + 7; /* the committed back stresses, 6 each */
   PetscReal e[6], d[6], nh[6] = {0}, xi[6], v[6] = {0}, A[6] = {0}, tr, nx, qtr, sy, H, dsy, dl = 0, thk[TSL_MAX_BACKSTRESS], Dd = 0;
+  PetscReal Ck[TSL_MAX_BACKSTRESS], gk[TSL_MAX_BACKSTRESS], dCk[TSL_MAX_BACKSTRESS], dgk[TSL_MAX_BACKSTRESS], rk[TSL_MAX_BACKSTRESS], drk[TSL_MAX_BACKSTRESS];
+  PetscReal ab[6 * TSL_MAX_BACKSTRESS]; /* the committed back stresses carried to theta: r_k a_k,n (Abaqus's (1/C) dC/dtheta term, exactly) */
   PetscReal dw_th_fixed = 0, Rf = 1, dRf = 0, ws = 0, w = 0; /* d w / d theta at fixed p0, p1; the rate factor, its d / d dl; int sigma_static dp */
   PetscBool plastic = PETSC_FALSE;
 
@@ -603,12 +605,24 @@ static void PlasticReturn(const TslElementInput *in, const PetscReal *st, const 
   tr = e[0] + e[1] + e[2];
   for (PetscInt r = 0; r < 6; r++) d[r] = r < 3 ? e[r] - tr / 3 : 0.5 * e[r];
   for (PetscInt k = 0; k < nb; k++) thk[k] = 1;
+  /* the back stresses' C_k, gamma_k at theta; with temperature-dependent data a back stress committed at theta_n is
+   * scaled by r_k = C_k(theta) / C_k(theta_n) (da = (dC / C) a at no flow) */
+  TslMaterialBackStress(mat, theta, Ck, gk, dCk, dgk);
+  for (PetscInt k = 0; k < nb; k++) rk[k] = 1, drk[k] = 0;
+  if (pl->nkt > 1 && st[7 + 6 * nb] != 0) {
+    PetscReal Cn[TSL_MAX_BACKSTRESS], gn[TSL_MAX_BACKSTRESS], dCn[TSL_MAX_BACKSTRESS], dgn[TSL_MAX_BACKSTRESS];
+    TslMaterialBackStress(mat, st[8 + 6 * nb], Cn, gn, dCn, dgn);
+    for (PetscInt k = 0; k < nb; k++)
+      if (Cn[k] > 0) rk[k] = Ck[k] / Cn[k], drk[k] = dCk[k] / Cn[k];
+  }
+  for (PetscInt k = 0; k < nb; k++)
+    for (PetscInt r = 0; r < 6; r++) ab[6 * k + r] = rk[k] * ab0[6 * k + r];
   /* xit(dl) and |xit|: the relative trial stress with the back stresses' recovery at dl */
 #define XIT(DL)                                                                                                  \
   do {                                                                                                           \
     for (PetscInt r = 0; r < 6; r++) xi[r] = 2 * mu * d[r];                                                      \
     for (PetscInt k = 0; k < nb; k++) {                                                                          \
-      thk[k] = 1 / (1 + pl->gamma[k] * (DL));                                                                    \
+      thk[k] = 1 / (1 + gk[k] * (DL));                                                                    \
       for (PetscInt r = 0; r < 6; r++) xi[r] -= thk[k] * ab[6 * k + r];                                          \
     }                                                                                                            \
     nx = PetscSqrtReal(xi[0] * xi[0] + xi[1] * xi[1] + xi[2] * xi[2] + 2 * (xi[3] * xi[3] + xi[4] * xi[4] + xi[5] * xi[5])); \
@@ -625,9 +639,9 @@ static void PlasticReturn(const TslElementInput *in, const PetscReal *st, const 
       for (PetscInt k = 0; k < nb; k++) {
         const PetscReal an = (xi[0] * ab[6 * k] + xi[1] * ab[6 * k + 1] + xi[2] * ab[6 * k + 2] +
                               2 * (xi[3] * ab[6 * k + 3] + xi[4] * ab[6 * k + 4] + xi[5] * ab[6 * k + 5])) / nx;
-        sumtc += thk[k] * pl->C[k];
-        Dd += pl->C[k] * thk[k] * thk[k];
-        xv += pl->gamma[k] * thk[k] * thk[k] * an;
+        sumtc += thk[k] * Ck[k];
+        Dd += Ck[k] * thk[k] * thk[k];
+        xv += gk[k] * thk[k] * thk[k] * an;
       }
       Dd -= s32 * xv;
       gv = s32 * nx - (3 * mu + sumtc) * dl - sy;
@@ -646,12 +660,12 @@ static void PlasticReturn(const TslElementInput *in, const PetscReal *st, const 
     ws = TslMaterialYieldIntegral(mat, st[6], st[6] + dl, theta, &dw_th_fixed);
     w = Rf * ws, dw_th_fixed *= Rf; /* at the increment's rate */
     for (PetscInt k = 0; k < nb; k++) {
-      const PetscReal *ak = ab + 6 * k, gt2 = pl->gamma[k] * thk[k] * thk[k];
+      const PetscReal *ak = ab + 6 * k, gt2 = gk[k] * thk[k] * thk[k];
       const PetscReal  an = ak[0] * nh[0] + ak[1] * nh[1] + ak[2] * nh[2] + 2 * (ak[3] * nh[3] + ak[4] * nh[4] + ak[5] * nh[5]);
-      Dd += pl->C[k] * thk[k] * thk[k] - s32 * gt2 * an;
+      Dd += Ck[k] * thk[k] * thk[k] - s32 * gt2 * an;
       for (PetscInt r = 0; r < 6; r++) v[r] += gt2 * ak[r], A[r] += (1 + thk[k]) * ak[r];
       /* the back stress's share, the trapezoid of (a_n + a) / 2 : d eps_p (exact on the radial path of gamma = 0) */
-      w += 0.5 * s32 * dl * (1 + thk[k]) * an + 0.5 * dl * dl * thk[k] * pl->C[k];
+      w += 0.5 * s32 * dl * (1 + thk[k]) * an + 0.5 * dl * dl * thk[k] * Ck[k];
     }
   } else if (nx > 0)
     for (PetscInt r = 0; r < 6; r++) nh[r] = xi[r] / nx;
@@ -661,7 +675,7 @@ static void PlasticReturn(const TslElementInput *in, const PetscReal *st, const 
     o->deps[r] = plastic ? dl * s32 * nh[r] * (r < 3 ? 1 : 2) : 0;
   }
   for (PetscInt k = 0; k < nb; k++)
-    for (PetscInt r = 0; r < 6; r++) o->back[6 * k + r] = thk[k] * (ab[6 * k + r] + s23 * pl->C[k] * dl * nh[r]);
+    for (PetscInt r = 0; r < 6; r++) o->back[6 * k + r] = thk[k] * (ab[6 * k + r] + s23 * Ck[k] * dl * nh[r]);
   o->dl = dl, o->w = w, o->se = 0;
   for (PetscInt r = 0; r < 6; r++) o->se += 0.5 * o->sig[r] * (e[r] - o->deps[r]);
   if (!tangent) return;
@@ -669,13 +683,13 @@ static void PlasticReturn(const TslElementInput *in, const PetscReal *st, const 
     PetscReal       vp[6] = {0}, Ap[6] = {0};
     const PetscReal beta = plastic ? 1 - s6 * mu * dl / nx : 1, hn = plastic ? 2 * mu * (1 - beta - 3 * mu / Dd) : 0;
     const PetscReal hv = plastic ? -2 * mu * (1 - beta) * s32 / Dd : 0;
-    PetscReal       nv_ = 0, nA = 0, ndn = 0;
+    PetscReal       nv_ = 0, nA = 0;
     for (PetscInt r = 0; r < 6; r++) o->dw_de[r] = 0;
     o->dw_dth = 0;
     if (plastic) {
       for (PetscInt r = 0; r < 6; r++) {
         const PetscReal wr = r < 3 ? 1 : 2;
-        nv_ += wr * nh[r] * v[r], nA += wr * nh[r] * A[r], ndn += wr * nh[r] * d[r];
+        nv_ += wr * nh[r] * v[r], nA += wr * nh[r] * A[r];
       }
       for (PetscInt r = 0; r < 6; r++) vp[r] = v[r] - nh[r] * nv_, Ap[r] = A[r] - nh[r] * nA;
     }
@@ -691,24 +705,40 @@ static void PlasticReturn(const TslElementInput *in, const PetscReal *st, const 
        * back stresses' sqrt(3/2) / 2 sum (1 + theta_k) n : a_k,n - sqrt(3/2) dl / 2 sum gamma_k theta_k^2 n : a_k,n +
        * dl sum theta_k C_k - dl^2 / 2 sum gamma_k theta_k^2 C_k, and its direction term sqrt(3/2) dl / 2 A_perp : dn
        * (A = sum (1 + theta_k) a_k,n) */
-      const PetscReal ddl = (s32 * 2 * dmu * ndn - 3 * dmu * dl - dsy) / Dd;
+      /* X = d xit / d theta at fixed dl: 2 dmu d - sum (d theta_k a_k + theta_k dr_k a_k,n), d theta_k = -dl theta_k^2 dgamma_k;
+       * dg / dtheta = sqrt(3/2) n : X - 3 dmu dl - sum (d theta_k C_k + theta_k dC_k) dl - dsy */
+      PetscReal X[6], nX = 0, dgt = -3 * dmu * dl - dsy, wfix = 0;
+      for (PetscInt r = 0; r < 6; r++) X[r] = 2 * dmu * d[r];
+      for (PetscInt kk = 0; kk < nb; kk++) {
+        const PetscReal dth = -dl * thk[kk] * thk[kk] * dgk[kk];
+        const PetscReal an  = ab[6 * kk] * nh[0] + ab[6 * kk + 1] * nh[1] + ab[6 * kk + 2] * nh[2] + 2 * (ab[6 * kk + 3] * nh[3] + ab[6 * kk + 4] * nh[4] + ab[6 * kk + 5] * nh[5]);
+        const PetscReal an0 = ab0[6 * kk] * nh[0] + ab0[6 * kk + 1] * nh[1] + ab0[6 * kk + 2] * nh[2] +
+                              2 * (ab0[6 * kk + 3] * nh[3] + ab0[6 * kk + 4] * nh[4] + ab0[6 * kk + 5] * nh[5]); /* n : a_k,n */
+        for (PetscInt r = 0; r < 6; r++) X[r] -= dth * ab[6 * kk + r] + thk[kk] * drk[kk] * ab0[6 * kk + r];
+        dgt -= (dth * Ck[kk] + thk[kk] * dCk[kk]) * dl;
+        /* the work's partial derivative at fixed dl and n */
+        wfix += 0.5 * s32 * dl * (dth * an + (1 + thk[kk]) * drk[kk] * an0) + 0.5 * dl * dl * (dth * Ck[kk] + thk[kk] * dCk[kk]);
+      }
+      for (PetscInt r = 0; r < 6; r++) nX += (r < 3 ? 1 : 2) * nh[r] * X[r];
+      dgt += s32 * nX;
+      const PetscReal ddl = dgt / Dd;
       PetscReal       wdl = sy + dRf * ws, Apv = 0, Apd = 0;
       for (PetscInt k = 0; k < nb; k++) {
-        const PetscReal *ak = ab + 6 * k, gt2 = pl->gamma[k] * thk[k] * thk[k];
+        const PetscReal *ak = ab + 6 * k, gt2 = gk[k] * thk[k] * thk[k];
         const PetscReal  an = ak[0] * nh[0] + ak[1] * nh[1] + ak[2] * nh[2] + 2 * (ak[3] * nh[3] + ak[4] * nh[4] + ak[5] * nh[5]);
-        wdl += 0.5 * s32 * (1 + thk[k]) * an - 0.5 * s32 * dl * gt2 * an + dl * thk[k] * pl->C[k] - 0.5 * dl * dl * gt2 * pl->C[k];
+        wdl += 0.5 * s32 * (1 + thk[k]) * an - 0.5 * s32 * dl * gt2 * an + dl * thk[k] * Ck[k] - 0.5 * dl * dl * gt2 * Ck[k];
       }
       for (PetscInt r = 0; r < 6; r++) {
         const PetscReal wr = r < 3 ? 1 : 2;
-        Apv += wr * Ap[r] * v[r], Apd += wr * Ap[r] * d[r];
+        Apv += wr * Ap[r] * v[r], Apd += wr * Ap[r] * X[r];
       }
       wdl += 0.5 * s32 * dl * Apv / nx;
       for (PetscInt r = 0; r < 6; r++) {
-        const PetscReal dn = (2 * dmu * (d[r] - nh[r] * ndn) + vp[r] * ddl) / nx;
+        const PetscReal dn = (X[r] - nh[r] * nX + vp[r] * ddl) / nx;
         o->dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * deps_th : 0) + 2 * dmu * d[r] - s6 * (dmu * dl + mu * ddl) * nh[r] - s6 * mu * dl * dn;
       }
       for (PetscInt c = 0; c < 6; c++) o->dw_de[c] = wdl * s6 * mu / Dd * nh[c] + 0.5 * s32 * dl * 2 * mu * Ap[c] / nx;
-      o->dw_dth = dw_th_fixed + wdl * ddl + 0.5 * s32 * dl * 2 * dmu * Apd / nx;
+      o->dw_dth = dw_th_fixed + wfix + wdl * ddl + 0.5 * s32 * dl * Apd / nx;
     } else
       for (PetscInt r = 0; r < 6; r++) o->dsig[r] = (r < 3 ? dKb * tr - 3 * Kb * deps_th : 0) + 2 * dmu * d[r];
   }
@@ -816,6 +846,7 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
       for (PetscInt r = 0; r < 6; r++) sn[r] = st[r] + o.deps[r];
       sn[6] = st[6] + o.dl;
       for (PetscInt k = 0; k < 6 * nb; k++) sn[7 + k] = o.back[k];
+      if (mat->plastic.nkt > 1) sn[7 + 6 * nb] = 1, sn[8 + 6 * nb] = theta; /* the back stresses' temperature (their C_k's) */
     }
     if (res) {
       for (PetscInt r = 0; r < 6; r++) res->E[r] += eps[r] / quad->n, res->PE[r] += (st[r] + o.deps[r]) / quad->n;

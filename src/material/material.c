@@ -82,7 +82,7 @@ PetscBool TslMaterialIsTemperatureDependent(const TslMaterial *mat)
     if (mat->prop[k].n > 1) return PETSC_TRUE;
   for (PetscInt i = 1; i < mat->plastic.n; i++)
     if (mat->plastic.row[i][2] != mat->plastic.row[0][2]) return PETSC_TRUE;
-  return mat->plastic.nvoce > 1 ? PETSC_TRUE : PETSC_FALSE;
+  return mat->plastic.nvoce > 1 || mat->plastic.nkt > 1 ? PETSC_TRUE : PETSC_FALSE;
 }
 
 /* The exponential law's parameters at theta (*CYCLIC HARDENING, PARAMETERS: rows sigma_0, Q, b, temperature; linear
@@ -101,6 +101,30 @@ static void VoceAt(const TslPlasticTable *t, PetscReal theta, PetscReal v[3], Pe
   {
     const PetscReal dt = t->voce[k + 1][3] - t->voce[k][3], w = (theta - t->voce[k][3]) / dt;
     for (PetscInt i = 0; i < 3; i++) v[i] = (1 - w) * t->voce[k][i] + w * t->voce[k + 1][i], dv[i] = (t->voce[k + 1][i] - t->voce[k][i]) / dt;
+  }
+}
+
+void TslMaterialBackStress(const TslMaterial *mat, PetscReal theta, PetscReal C[], PetscReal gamma[], PetscReal dC[], PetscReal dgamma[])
+{
+  const TslPlasticTable *t = &mat->plastic;
+  PetscInt               k = 0;
+
+  for (PetscInt b = 0; b < t->nback; b++) C[b] = t->C[b], gamma[b] = t->gamma[b], dC[b] = dgamma[b] = 0;
+  if (t->nkt < 2) return;
+  if (theta <= t->kt_theta[0] || theta >= t->kt_theta[t->nkt - 1]) {
+    const PetscInt e = theta <= t->kt_theta[0] ? 0 : t->nkt - 1;
+    for (PetscInt b = 0; b < t->nback; b++) C[b] = t->kt_C[e][b], gamma[b] = t->kt_gamma[e][b];
+    return;
+  }
+  while (k + 2 < t->nkt && theta > t->kt_theta[k + 1]) k++;
+  {
+    const PetscReal dt = t->kt_theta[k + 1] - t->kt_theta[k], w = (theta - t->kt_theta[k]) / dt;
+    for (PetscInt b = 0; b < t->nback; b++) {
+      C[b]      = (1 - w) * t->kt_C[k][b] + w * t->kt_C[k + 1][b];
+      gamma[b]  = (1 - w) * t->kt_gamma[k][b] + w * t->kt_gamma[k + 1][b];
+      dC[b]     = (t->kt_C[k + 1][b] - t->kt_C[k][b]) / dt;
+      dgamma[b] = (t->kt_gamma[k + 1][b] - t->kt_gamma[k][b]) / dt;
+    }
   }
 }
 

@@ -28,6 +28,9 @@ explicit_beam  the explicit CPE4T cantilever (make_decks.py explicit_beam): the 
            through the beam, all in it at the end: rho c sum_a V_a theta_a = 0.9 ALLPD (the lumped capacity's own
            measure, V_a a quarter of each quad's area at its corners; 1e-8); the balance residual and ETOTAL at round-off
            in every row; the root has yielded and the tip not
+uniaxial_theta_kinematic|combined  temperature-dependent back stresses (make_decks.py uniaxial_theta): at every frame
+           against the 1D backward Euler whose back stresses are carried to the frame's temperature by C_k(theta) /
+           C_k(theta_n) (Abaqus's (1/C) dC/dtheta term, exact at no flow), 1e-8; the heating at fixed strain moved the stress
 uniaxial_rate_power|jc, explicit_rate_power  *RATE DEPENDENT (make_decks.py RATE_POWER, RATE_JC): at every frame (every
            increment) against the 1D backward Euler with the rate factor at dp / dt, 1e-8; the flow stress above the
            static curve; explicit (a frame every increment): the 1D answer to 1e-2 (the cube's inertia), the Mises stress
@@ -117,6 +120,41 @@ def rate_1d(law, strains, times):
     return out
 
 
+# temperature-dependent back stresses (make_decks.py PLASTIC_KIN_THETA, PLASTIC_COMB_THETA): sigma_0(theta) and each
+# back stress's (C, gamma)(theta), linear between 0 and 100
+THETA_LAWS = {"kinematic": (lambda T: 200 - T, [(lambda T: 1000 - 6 * T, lambda T: 0.0)]),
+              "combined": (lambda T: 200 - 0.8 * T, [(lambda T: 40000 - 200 * T, lambda T: 400 - 2 * T), (lambda T: 1000 - 5 * T, lambda T: 0.0)])}
+
+
+def theta_1d(law, strains, temps):
+    """The 1D backward Euler with temperature-dependent back stresses: a_k carried to theta by C_k(theta) / C_k(theta_n),
+    then |E (eps - eps_p,n) - sum a_k / (1 + gamma_k dp)| = (E + sum C_k / (1 + gamma_k dp)) dp + sigma_0(theta)"""
+    s0, back = THETA_LAWS[law]
+    ep, p, a, tn, out = 0.0, 0.0, np.zeros(len(back)), None, []
+    for eps, T in zip(strains, temps):
+        T = min(max(T, 0.0), 100.0)
+        C = [c(T) for c, g in back]
+        G = [g(T) for c, g in back]
+        if tn is not None:
+            a = np.array([a[k] * C[k] / back[k][0](tn) for k in range(len(back))])
+        trial = E * (eps - ep)
+        xit = lambda dp: trial - sum(a[k] / (1 + G[k] * dp) for k in range(len(back)))
+        gfun = lambda dp: abs(xit(dp)) - (E + sum(C[k] / (1 + G[k] * dp) for k in range(len(back)))) * dp - s0(T)
+        if gfun(0.0) > 1e-12 * S0:
+            lo, hi = 0.0, abs(xit(0.0)) / E
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                lo, hi = (mid, hi) if gfun(mid) > 0 else (lo, mid)
+            dp = 0.5 * (lo + hi)
+            sg = np.sign(xit(dp))
+            a = np.array([(a[k] + C[k] * sg * dp) / (1 + G[k] * dp) for k in range(len(back))])
+            ep += sg * dp
+            p += dp
+        tn = T
+        out.append((E * (eps - ep), ep, p))
+    return out
+
+
 def continuous(law, p):
     back, s0, _ = LAWS[law]
     return s0(p) + sum(c * p if g == 0 else c / g * (1 - np.exp(-g * p)) for c, g in back)
@@ -129,7 +167,25 @@ if axis == 2:
     coord = np.array([0.0, 1.0])
 frames = range(len(r.frames))
 
-if case.startswith("uniaxial_rate") or case.startswith("explicit_rate"):
+if case.startswith("uniaxial_theta"):
+    law = case.split("_")[-1]
+    L = coord.max() - coord.min()
+    strains = [float(r.field("U", k)[pulled, axis].mean()) / L for k in frames]
+    temps = [float(r.field("NT", k)[:, 0].mean()) for k in frames]
+    ref = theta_1d(law, strains, temps)
+    worst = worst_other = 0.0
+    for k in frames:
+        S, PE, PQ = r.field("S", k)[0], r.field("PE", k)[0], r.field("PEEQ", k)[0, 0]
+        s1, e1, p1 = ref[k]
+        worst = max(worst, abs(S[axis] - s1) / S0, abs(PE[axis] - e1) * E / S0, abs(PQ - p1) * E / S0)
+        worst_other = max(worst_other, max(abs(S[c]) for c in range(6) if c != axis) / S0)
+    print("%d frames, final stress %.6g, PEEQ %.6g, temperature %.4g" % (len(r.frames), ref[-1][0], ref[-1][2], temps[-1]))
+    check("stress, plastic strain and PEEQ against the 1D backward Euler with temperature-dependent back stresses, worst (of sigma_0)", worst, 0.0, 1e-8)
+    check("the other stress components, worst (of sigma_0)", worst_other, 0.0, 1e-8)
+    heat = [k for k in frames if r.frame(k).attrs["step"] == 2]
+    check_true("the heating at fixed strain moved the stress (the back stress carried, the surface shrunk)", abs(ref[heat[-1]][0] - ref[heat[0] - 1][0]) > 0.05 * S0,
+               "%.6g -> %.6g" % (ref[heat[0] - 1][0], ref[heat[-1]][0]))
+elif case.startswith("uniaxial_rate") or case.startswith("explicit_rate"):
     law = case.split("_")[-1]
     L = coord.max() - coord.min()
     strains = [float(r.field("U", k)[pulled, axis].mean()) / L for k in frames]

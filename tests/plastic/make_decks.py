@@ -39,6 +39,11 @@ PLASTIC_COMB_SOFT = ("*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS, NUMBER
 # rate dependence: R = 1 + (rate / 0.1)^(1/2) (Cowper-Symonds) and R = 1 + 0.05 ln(rate / 1e-3) (Johnson-Cook)
 RATE_POWER = "*RATE DEPENDENT, TYPE=POWER LAW\n 0.1, 2.0\n"
 RATE_JC = "*RATE DEPENDENT, TYPE=JOHNSON COOK\n 0.05, 0.001\n"
+# temperature-dependent back stresses: linear kinematic 200 + C eps_p with C = 1000 at 0 and 100 + 400 eps_p at
+# 100; combined with two back stresses softening from (40000, 400), (1000, 0) at 0 to (20000, 200), (500, 0) at 100
+PLASTIC_KIN_THETA = "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0, 0.0\n 700.0, 0.5, 0.0\n 100.0, 0.0, 100.0\n 300.0, 0.5, 100.0\n"
+PLASTIC_COMB_THETA = ("*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS, NUMBER BACKSTRESSES=2\n 200.0, 40000.0, 400.0, 1000.0, 0.0, 0.0\n"
+                      " 120.0, 20000.0, 200.0, 500.0, 0.0, 100.0\n")
 PLASTIC_SOFT = "*PLASTIC\n 200.0, 0.0, 0.0\n 700.0, 0.5, 0.0\n 100.0, 0.0, 50.0\n 350.0, 0.5, 50.0\n"
 # the strain path of the uniaxial decks: (step, period, increment, target strain)
 PATH = [("LOAD", 1.0, 0.1, 0.01), ("UNLOAD", 1.0, 0.25, 0.004), ("REVERSE", 1.0, 0.1, -0.01)]
@@ -220,6 +225,19 @@ def friction_plastic():
                         " The spec's CPE4T friction series with a small block that yields: frictional and plastic heat", 1)
 
 
+def uniaxial_theta(typ, law):
+    """Temperature-dependent back stresses: pulled to 0.01 at 0, heated to 100 at that strain (the back stress carried
+    to the hot modulus, the surface shrunk), reversed to -0.01 and pulled back to 0.006 hot (check.py
+    uniaxial_theta)"""
+    hold, dof = holds(typ)
+    text = "*HEADING\n Uniaxial stress of one %s with temperature-dependent back stresses: pulled cold, heated, reversed hot\n" % typ + model(typ, law)
+    path = [("PULL", 0.1, 0.01, 0.0), ("HEAT", 0.1, 0.01, 100.0), ("REVERSE", 0.1, -0.01, 100.0), ("RELOAD", 0.1, 0.006, 100.0)]
+    for k, (name, inc, strain, temp) in enumerate(path):
+        text += ("*STEP, NAME=%s, INC=100\n*STATIC, DIRECT\n %g, 1.0\n" % (name, inc) + (hold if k == 0 else "") +
+                 "*BOUNDARY\n X1, %d, %d, %.12g\n NALL, 11, 11, %g\n*END STEP\n" % (dof, dof, strain, temp))
+    return text
+
+
 def uniaxial_gps(typ):
     """Generalized plane strain: the unit square (thickness 1) free in its plane, pulled along z by its reference
     node's dof 3 (the length change) through PATH: uniaxial stress along z (check.py uniaxial, axis 2)"""
@@ -281,12 +299,12 @@ BAD_EDITS = {
     "descending": (" 700.0, 0.5\n", " 700.0, 0.5\n 800.0, 0.4\n"),
     "combined": ("*PLASTIC\n", "*PLASTIC, HARDENING=COMBINED\n"),
     "combined_count": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS, NUMBER BACKSTRESSES=2\n 200.0, 40000.0, 400.0\n"),
-    "combined_theta": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS\n 200.0, 40000.0, 400.0, 0.0\n 150.0, 30000.0, 400.0, 100.0\n"),
+    "combined_theta": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS\n 200.0, 40000.0, 400.0, 100.0\n 150.0, 30000.0, 400.0, 0.0\n"),
     "combined_gamma": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS\n 200.0, 40000.0, -400.0\n"),
     "cyclic_isotropic": (TABLE, TABLE + "*CYCLIC HARDENING, PARAMETERS\n 200.0, 50.0, 20.0\n"),
     "cyclic_b": (TABLE, PLASTIC_COMB1 + "*CYCLIC HARDENING, PARAMETERS\n 200.0, 50.0, -20.0\n"),
     "kinematic_lines": (TABLE, "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0\n 700.0, 0.5\n 800.0, 1.0\n"),
-    "kinematic_theta": (TABLE, "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0, 0.0\n 100.0, 0.0, 50.0\n"),
+    "kinematic_theta": (TABLE, "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0, 0.0\n 700.0, 0.5, 0.0\n 100.0, 0.0, 50.0\n 90.0, 0.5, 50.0\n"),
     "rate": (TABLE, TABLE + "*RATE DEPENDENT, TYPE=YIELD RATIO\n 1.0, 0.0\n 1.5, 10.0\n"),
     "rate_first": (TABLE, "*RATE DEPENDENT\n 0.1, 2.0\n" + TABLE),
     "rate_theta": (TABLE, TABLE + "*RATE DEPENDENT\n 0.1, 2.0, 0.0\n 0.2, 2.0, 100.0\n"),
@@ -338,6 +356,9 @@ def main():
     decks["cylinder_cax8rht"] = cylinder("CAX8RHT", nu=0.4999)
     decks["jacobian_combined_cpe4rht"] = jacobian_2d("CPE4RHT", PLASTIC_COMB_SOFT)
     decks["uniaxial_cpeg4t"] = uniaxial_gps("CPEG4T")
+    decks["uniaxial_kinematic_theta_c3d8t"] = uniaxial_theta("C3D8T", PLASTIC_KIN_THETA)
+    decks["uniaxial_combined_theta_cax4t"] = uniaxial_theta("CAX4T", PLASTIC_COMB_THETA)
+    decks["jacobian_combined_theta_c3d8t"] = jacobian(law=PLASTIC_COMB_THETA)
     decks["jacobian_plastic_cpeg4t"] = (jacobian_2d("CPEG4T", PLASTIC_SOFT).replace("*NODE, NSET=NALL\n", "*NODE, NSET=REF\n 100, 0.0, 0.0\n*NODE, NSET=NALL\n", 1)
                                         .replace("MATERIAL=STEEL\n 10.0", "MATERIAL=STEEL, REF NODE=100\n 10.0")
                                         .replace(" FIX, 1, 1\n", " FIX, 1, 1\n REF, 3, 5\n", 1))
