@@ -52,6 +52,9 @@ friction_plastic  the spec's CPE4T friction series with a small block that yield
            heat absorbed + 0.9 ALLPD (1e-6 relative; the plastic share, 1e-4 of it, is seen to 1 %); the block yielded
            under the press and again in the slide
 AXIS 0: x (3D, plane), 1: z (the ring), 2: z of generalized plane strain, pulled by its reference node (id 100)
+impact     the explicit impact with kinematic contact of a block that yields (make_decks.py impact_plastic): ETOTAL
+           and the heat balance at round-off in every row (1e-10 of ALLWK and of the largest plastic heat rate), the
+           plastic work in ALLIE (ALLPD > 0, below ALLIE)
 usage: check.py OUTDIR JOB uniaxial[_kinematic|_combined[1]]|adiabatic[_kinematic|_combined]|adiabatic_soft AXIS"""
 import sys
 
@@ -244,6 +247,11 @@ elif case.startswith("uniaxial_combined") or case == "adiabatic_combined":
         smax = max(abs(x[0]) for x in ref)
         check_true("loading, unloading, reverse yield and reload all seen", ref[-1][2] > 0.04 and min(strains) < 0 and strains[-1] > 0.009, "PEEQ %.4g" % ref[-1][2])
         print("largest stress %.6g" % smax)
+elif case == "impact":
+    h = r.history
+    check("ETOTAL, worst row (of ALLWK)", float(np.abs(h["ETOTAL"]).max() / h["ALLWK"][-1]), 0.0, 1e-10)
+    check("heat balance residual, worst row (of the largest plastic heat rate)", float(np.abs(h["balance_residual"]).max() / h["plastic_heat_rate"].max()), 0.0, 1e-10)
+    check_true("the block yielded, its plastic work within ALLIE", 0 < h["ALLPD"][-1] < h["ALLIE"][-1], "ALLPD %.6g, ALLIE %.6g" % (h["ALLPD"][-1], h["ALLIE"][-1]))
 elif case == "friction_plastic":
     h = r.history
     rate = float(np.max(np.abs(h["friction_dissipation_rate"]) + np.abs(h["plastic_heat_rate"])))

@@ -250,6 +250,15 @@ def uniaxial_gps(typ):
     return text
 
 
+def impact_plastic():
+    """The explicit 3D impact of tests/explicit (kinematic_blocks_c3d8t.inp: a C3D8T block struck onto a base with
+    kinematic contact and gap conductance) with a metal that yields (sigma_y = 20 + 800 p) and *INELASTIC HEAT
+    FRACTION: plastic flow, its heat and contact together, 1 and 2 ranks (check.py impact)"""
+    with open(os.path.join(HERE, "..", "explicit", "decks", "kinematic_blocks_c3d8t.inp")) as f:
+        text = f.read()
+    return text.replace("*ELASTIC\n 200000, 0.3\n", "*ELASTIC\n 200000, 0.3\n*PLASTIC\n 20.0, 0.0\n 100.0, 0.1\n*INELASTIC HEAT FRACTION\n", 1)
+
+
 def explicit_beam():
     """Explicit: a CPE4T cantilever of 12 x 3 elements (L 12, h 3) clamped at x = 0, its tip moved 0.15 sideways on a
     smooth step over 10 s (its first bending period is 0.66 s: quasi-static) and held 0.5 s; the root yields (first
@@ -349,6 +358,7 @@ def main():
     decks["cylinder_cpe8rt"] = cylinder("CPE8RT")
     decks["cylinder_cax8rt"] = cylinder("CAX8RT")
     decks["friction_plastic_cpe4t"] = friction_plastic()
+    decks["impact_plastic_c3d8t"] = impact_plastic()
     # hybrid types: the deviatoric return beside the element's own pressure
     decks["uniaxial_c3d8rht"] = uniaxial("C3D8RHT")
     decks["uniaxial_combined_cax4rht"] = uniaxial("CAX4RHT", law=PLASTIC_COMB, path=CYCLE)
