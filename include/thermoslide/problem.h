@@ -60,6 +60,10 @@ PetscErrorCode TslProblemSetTime(TslProblem prob, PetscReal step_time, PetscReal
 /* Mises plasticity: the state the last TslProblemHeatBalance found at its solution becomes the committed one (an
  * accepted increment; a cutback keeps the committed state, so nothing is rolled back). */
 PetscErrorCode TslProblemCommitState(TslProblem prob);
+/* After step s: for each material whose *PLASTIC data depend on temperature, whether the nodal temperatures of its
+ * elements left the temperatures the data cover (the end values hold there, as in the dialect): a warning naming the
+ * keyword's line, once per material in the run. Collective. */
+PetscErrorCode TslProblemPlasticTemperatureCheck(TslProblem prob, PetscInt s);
 /* *TEMPERATURE, FILE= (src/physics/tfile.c): every step's results file checked against the model (the same nodes, the
  * frames it names, NT in them); collective, an error at the keyword's line. Before the run writes anything. */
 PetscErrorCode TslProblemTemperatureFilesCheck(TslProblem prob);

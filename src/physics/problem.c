@@ -348,6 +348,69 @@ static PetscErrorCode SetUpPlasticState(TslProblem p)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The temperatures a material's plastic data cover, [lo, hi] (every table's range: the narrowest), FALSE if they do
+ * not depend on temperature. */
+static PetscBool PlasticCover(const TslPlasticTable *t, PetscReal *lo, PetscReal *hi)
+{
+  PetscBool dep = PETSC_FALSE;
+
+  *lo = PETSC_MIN_REAL, *hi = PETSC_MAX_REAL;
+  if (t->n > 1 && t->row[t->n - 1][2] != t->row[0][2]) *lo = PetscMax(*lo, t->row[0][2]), *hi = PetscMin(*hi, t->row[t->n - 1][2]), dep = PETSC_TRUE;
+  if (t->nvoce > 1) *lo = PetscMax(*lo, t->voce[0][3]), *hi = PetscMin(*hi, t->voce[t->nvoce - 1][3]), dep = PETSC_TRUE;
+  if (t->nkt > 1) *lo = PetscMax(*lo, t->kt_theta[0]), *hi = PetscMin(*hi, t->kt_theta[t->nkt - 1]), dep = PETSC_TRUE;
+  return dep;
+}
+
+PetscErrorCode TslProblemPlasticTemperatureCheck(TslProblem p, PetscInt s)
+{
+  TslModel          *m = p->m;
+  const PetscInt     nm = m->nmaterial;
+  PetscReal         *ext, *g;
+  Vec                xl;
+  const PetscScalar *xa;
+
+  PetscFunctionBeginUser;
+  { /* collective: whether any material is plastic, the same on every rank (a rank may hold no plastic element) */
+    PetscBool any = PETSC_FALSE;
+    for (PetscInt k = 0; k < nm; k++) any = (PetscBool)(any || TslMaterialIsPlastic(&m->materials[k]));
+    if (!any) PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (!p->plastic_warned) PetscCall(PetscCalloc1(nm, &p->plastic_warned));
+  PetscCall(PetscMalloc2(2 * nm, &ext, 2 * nm, &g));
+  for (PetscInt k = 0; k < nm; k++) ext[2 * k] = PETSC_MAX_REAL, ext[2 * k + 1] = PETSC_MAX_REAL; /* min theta, min -theta */
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  for (PetscInt e = 0; e < m->nelem; e++) {
+    const TslMaterial *mat = p->esec[e].mat;
+    const PetscInt     k   = (PetscInt)(mat - m->materials);
+    if (!p->pstate_off || p->pstate_off[e] < 0 || k < 0 || k >= nm) continue;
+    for (PetscInt j = m->elem_ptr[e]; j < m->elem_ptr[e + 1]; j++) {
+      const PetscInt  l = p->elem_lnode[j], c = TslProblemNodeDofSlot(p, l, 11);
+      const PetscReal T = c >= 0 ? PetscRealPart(xa[l * p->ndof + c]) : 0;
+      if (c < 0) continue;
+      ext[2 * k] = PetscMin(ext[2 * k], T), ext[2 * k + 1] = PetscMin(ext[2 * k + 1], -T);
+    }
+  }
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscCall(MPIU_Allreduce(ext, g, 2 * nm, MPIU_REAL, MPIU_MIN, p->comm));
+  for (PetscInt k = 0; k < nm; k++) {
+    PetscReal lo, hi, tmin = g[2 * k], tmax = -g[2 * k + 1];
+    char      where[256];
+    if (p->plastic_warned[k] || tmin > tmax || !PlasticCover(&m->materials[k].plastic, &lo, &hi)) continue;
+    if (tmin >= lo - 1e-9 * (hi - lo) && tmax <= hi + 1e-9 * (hi - lo)) continue;
+    p->plastic_warned[k] = PETSC_TRUE;
+    (void)TslLocString(m, m->materials[k].plastic.loc, where, sizeof(where));
+    {
+      char reach[64];
+      if (tmin == tmax) (void)PetscSNPrintf(reach, sizeof(reach), "%g", (double)tmin);
+      else (void)PetscSNPrintf(reach, sizeof(reach), "%g to %g", (double)tmin, (double)tmax);
+      PetscCall(PetscPrintf(p->comm, "warning: %s: material %s: its plastic data cover temperatures %g to %g, and step %" PetscInt_FMT " reached %s: the end values hold outside, as in the dialect\n",
+                            where, m->materials[k].name, (double)lo, (double)hi, s + 1, reach));
+    }
+  }
+  PetscCall(PetscFree2(ext, g));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemCommitState(TslProblem p)
 {
   PetscReal *s = p->pstate;
@@ -417,6 +480,7 @@ PetscErrorCode TslProblemDestroy(TslProblem *prob)
   PetscCall(PetscFree(p->pstate_off));
   PetscCall(PetscFree(p->pstate));
   PetscCall(PetscFree(p->pstate_new));
+  PetscCall(PetscFree(p->plastic_warned));
   PetscCall(PetscFree2(p->extra, p->pinned));
   PetscCall(PetscFree(p->theta_init));
   PetscCall(PetscFree2(p->bc, p->nload));

@@ -142,6 +142,7 @@ struct _p_TslProblem {
   PetscReal     inelastic_rate;  /* the plastic work's heat rate per work: shift in implicit steps, 1 / (the move's increment) in explicit ones */
   PetscReal     step_start_ttot; /* total time at the start of the step */
   PetscBool    *amp_active;      /* [namplitude] followed by some load of the step (any rank) */
+  PetscBool    *plastic_warned;  /* [nmaterial] TslProblemPlasticTemperatureCheck has warned of the material */
 
   TslLoadValue  *bc;    /* [nn*ndof] prescribed values (owned and ghost dofs) */
   TslLoadValue  *nload; /* [nn*ndof] nodal loads (CLOAD, CFLUX), owned dofs only */

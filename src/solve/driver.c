@@ -1127,6 +1127,7 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
     const Procedure *pr = StepProcedure(&m->steps[s]);
     PetscCall(TslProblemSetMatrixFree(prob, pr->matrix_free));
     ierr = pr->run_step(&d, s, &total);
+    if (!ierr) PetscCall(TslProblemPlasticTemperatureCheck(prob, s));
   }
   if (d.jac_reuses)
     PetscCall(PetscPrintf(d.comm, "thermoslide: %" PetscInt_FMT " of %" PetscInt_FMT " Jacobians equal to the one before them: the preconditioner built on that one was kept\n",

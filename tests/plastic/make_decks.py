@@ -369,6 +369,8 @@ def main():
     decks["uniaxial_kinematic_theta_c3d8t"] = uniaxial_theta("C3D8T", PLASTIC_KIN_THETA)
     decks["uniaxial_combined_theta_cax4t"] = uniaxial_theta("CAX4T", PLASTIC_COMB_THETA)
     decks["jacobian_combined_theta_c3d8t"] = jacobian(law=PLASTIC_COMB_THETA)
+    # heated past the table's 100: the run warns at the *PLASTIC line (the end values hold)
+    decks["warn_theta_c3d8t"] = uniaxial_theta("C3D8T", PLASTIC_KIN_THETA).replace(" NALL, 11, 11, 100\n", " NALL, 11, 11, 150\n")
     decks["jacobian_plastic_cpeg4t"] = (jacobian_2d("CPEG4T", PLASTIC_SOFT).replace("*NODE, NSET=NALL\n", "*NODE, NSET=REF\n 100, 0.0, 0.0\n*NODE, NSET=NALL\n", 1)
                                         .replace("MATERIAL=STEEL\n 10.0", "MATERIAL=STEEL, REF NODE=100\n 10.0")
                                         .replace(" FIX, 1, 1\n", " FIX, 1, 1\n REF, 3, 5\n", 1))
