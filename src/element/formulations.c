@@ -405,6 +405,5 @@ PetscBool TslElementTypePlasticSupported(const TslElementType *t, const char **w
 
   *why = NULL;
   if (k->shell) *why = "a plane-stress return in the continuum shell's frame";
-  else if (t->form->incompatible) *why = "the incompatible modes' bubbles with a plastic state";
   return *why ? PETSC_FALSE : PETSC_TRUE;
 }

@@ -285,21 +285,17 @@ static PetscBool MechanicsSolid3DTangent(const TslElementInput *in, const TslEle
  *   K_uu = int B^T D B dV - K_ua K_aa^-1 K_au,  K_u_theta_b = t_b - K_ua K_aa^-1 s_b,
  * with t_b, s_b = int (B, G)^T dsigma_b dV, dsigma_b = (dD (eps - eps_th m) - D m deps_th) N_b at fixed alpha. The
  * material is elastic, so alpha follows from (u, theta) in each evaluation: no state is kept. */
-static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
-                                       PetscReal *energy)
+/* The incompatible modes' strain matrix at each mechanical point (G[q], 6 x na, less its volume mean) and the points
+ * evaluated once (mqs); FALSE for an inverted element. */
+static PetscBool IncompatibleModes(const TslElementInput *in, const TslElementPoint full[], MechPoint mqs[], PetscReal G[][6][TSL_MAX_ENHANCED], PetscInt *na_out)
 {
   const TslElementType *t    = in->type;
   const TslGeometry    *g    = t->geom;
   const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
-  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof, ncol = n * nu, dim = t->dim, gd = g->dim;
-  PetscReal             xi0[3], det0, dP[3][3], vol = 0;
-  PetscReal             G[TSL_MAX_QP][6][TSL_MAX_ENHANCED], Gbar[6][TSL_MAX_ENHANCED] = {{0}}, Kaa[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED] = {0},
-                        Kai[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED], r0[TSL_MAX_ENHANCED] = {0}, alpha[TSL_MAX_ENHANCED] = {0};
-  PetscReal             Kau[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES * 3], sb[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES];
-  PetscReal            *se = res ? &res->strain_energy : energy;
+  const PetscInt        dim = t->dim, gd = g->dim;
+  PetscReal             xi0[3], det0, dP[3][3], vol = 0, Gbar[6][TSL_MAX_ENHANCED] = {{0}};
   PetscInt              nm, na;
   TslElementPoint       pc;
-  MechPoint             mqs[TSL_INCOMPATIBLE_QP]; /* each point evaluated once, for the three passes */
   static const PetscInt vi[6] = {0, 1, 2, 0, 0, 1}, vj[6] = {0, 1, 2, 1, 2, 2};
 
   /* the centre's inverse Jacobian J0^-1 (pc.Ji[e][d] = dxi_e / dx_d) and det J0 */
@@ -336,6 +332,59 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
   for (PetscInt q = 0; q < quad->n; q++)
     for (PetscInt r = 0; r < 6; r++)
       for (PetscInt c = 0; c < na; c++) G[q][r][c] -= Gbar[r][c] / vol;
+  *na_out = na;
+  return PETSC_TRUE;
+}
+
+/* The incompatible modes' condensation, d alpha = -K_aa^-1 (K_au du + s dtheta): K_uu -= K_ua K_aa^-1 K_au and
+ * K_u_theta -= K_ua K_aa^-1 s; KiKau = K_aa^-1 K_au and Kis = K_aa^-1 s returned for the heat rows */
+static void IncompatibleCondense(const TslElementInput *in, PetscInt na, const PetscReal Kai[], PetscReal Kau[][TSL_MAX_ELEM_NODES * 3],
+                                 PetscReal Kua[][TSL_MAX_ENHANCED], PetscReal sb[][TSL_MAX_ELEM_NODES], PetscReal K[], PetscReal KiKau[][TSL_MAX_ELEM_NODES * 3],
+                                 PetscReal Kis[][TSL_MAX_ELEM_NODES])
+{
+  const TslElementType *t    = in->type;
+  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = t->geom->nnode, nd = n * ndof, ncol = n * nu;
+
+  for (PetscInt c = 0; c < na; c++) {
+    for (PetscInt b = 0; b < ncol; b++) {
+      KiKau[c][b] = 0;
+      for (PetscInt e = 0; e < na; e++) KiKau[c][b] += Kai[c * na + e] * Kau[e][b];
+    }
+    for (PetscInt b = 0; b < n; b++) {
+      Kis[c][b] = 0;
+      for (PetscInt e = 0; e < na; e++) Kis[c][b] += Kai[c * na + e] * sb[e][b];
+    }
+  }
+  for (PetscInt c1 = 0; c1 < ncol; c1++) {
+    const PetscInt r1 = ndof * (c1 / nu) + c1 % nu;
+    for (PetscInt c2 = 0; c2 < ncol; c2++) {
+      PetscReal kv = 0;
+      for (PetscInt c = 0; c < na; c++) kv += Kua[c1][c] * KiKau[c][c2];
+      K[r1 * nd + ndof * (c2 / nu) + c2 % nu] -= kv;
+    }
+    for (PetscInt b = 0; b < n; b++) {
+      PetscReal kv = 0;
+      for (PetscInt c = 0; c < na; c++) kv += Kua[c1][c] * Kis[c][b];
+      K[r1 * nd + ndof * b + th] -= kv;
+    }
+  }
+}
+
+static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
+                                       PetscReal *energy)
+{
+  const TslElementType *t    = in->type;
+  const TslGeometry    *g    = t->geom;
+  const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
+  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof, ncol = n * nu;
+  PetscReal             G[TSL_MAX_QP][6][TSL_MAX_ENHANCED], Kaa[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED] = {0},
+                        Kai[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED], r0[TSL_MAX_ENHANCED] = {0}, alpha[TSL_MAX_ENHANCED] = {0};
+  PetscReal             Kau[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES * 3], sb[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES];
+  PetscReal            *se = res ? &res->strain_energy : energy;
+  PetscInt              na;
+  MechPoint             mqs[TSL_INCOMPATIBLE_QP]; /* each point evaluated once, for the three passes */
+
+  if (!IncompatibleModes(in, full, mqs, G, &na)) return PETSC_FALSE;
   /* K_aa and r0 (first pass), alpha */
   for (PetscInt q = 0; q < quad->n; q++) {
     PetscReal D[6][6], DG[6][TSL_MAX_ENHANCED], s0[6];
@@ -418,31 +467,11 @@ static PetscBool MechanicsIncompatible(const TslElementInput *in, const TslEleme
       for (PetscInt b = 0; b < n; b++) sb[c][b] += Gds * mq->p->N[b] * mq->p->dV;
     }
   }
-  if (K) { /* condensation: K_uu -= K_ua K_aa^-1 K_au, K_u_theta -= K_ua K_aa^-1 s */
-    PetscReal KiKau[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES * 3], Kis[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES];
-    for (PetscInt c = 0; c < na; c++) {
-      for (PetscInt b = 0; b < ncol; b++) {
-        KiKau[c][b] = 0;
-        for (PetscInt e = 0; e < na; e++) KiKau[c][b] += Kai[c * na + e] * Kau[e][b];
-      }
-      for (PetscInt b = 0; b < n; b++) {
-        Kis[c][b] = 0;
-        for (PetscInt e = 0; e < na; e++) Kis[c][b] += Kai[c * na + e] * sb[e][b];
-      }
-    }
-    for (PetscInt c1 = 0; c1 < ncol; c1++) {
-      const PetscInt r1 = ndof * (c1 / nu) + c1 % nu;
-      for (PetscInt c2 = 0; c2 < ncol; c2++) {
-        PetscReal kv = 0;
-        for (PetscInt c = 0; c < na; c++) kv += Kau[c][c1] * KiKau[c][c2];
-        K[r1 * nd + ndof * (c2 / nu) + c2 % nu] -= kv;
-      }
-      for (PetscInt b = 0; b < n; b++) {
-        PetscReal kv = 0;
-        for (PetscInt c = 0; c < na; c++) kv += Kau[c][c1] * Kis[c][b];
-        K[r1 * nd + ndof * b + th] -= kv;
-      }
-    }
+  if (K) { /* condensation: K_uu -= K_ua K_aa^-1 K_au, K_u_theta -= K_ua K_aa^-1 s (K_ua = K_au^T: D is symmetric) */
+    PetscReal KiKau[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES * 3], Kis[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES], Kua[TSL_MAX_ELEM_NODES * 3][TSL_MAX_ENHANCED];
+    for (PetscInt c = 0; c < na; c++)
+      for (PetscInt b = 0; b < ncol; b++) Kua[b][c] = Kau[c][b];
+    IncompatibleCondense(in, na, Kai, Kau, Kua, sb, K, KiKau, Kis);
   }
   return PETSC_TRUE;
 }
@@ -760,7 +789,10 @@ static PetscBool PlasticReturnPlaneStress(const TslElementInput *in, const Petsc
   eps[2] = st[2] + eps_th - ratio * (eps[0] - st[0] + eps[1] - st[1] - 2 * eps_th);
   PlasticReturn(in, st, eps, eps_th, deps_th, theta, mu, Kb, dmu, dKb, frozen, PETSC_TRUE, o);
   scale = PetscAbsReal(o->sig[0]) + PetscAbsReal(o->sig[1]) + PetscAbsReal(o->sig[3]) + mu * 1e-12;
-  for (PetscInt it = 0; PetscAbsReal(o->sig[2]) > 1e-14 * scale; it++) {
+  /* to round-off (a looser sigma_33 = 0 leaves noise in the residual that finite differences and the incompatible
+   * modes' own Newton see) */
+  for (PetscInt it = 0; PetscAbsReal(o->sig[2]) > 1e-15 * scale; it++) {
+    if (it >= 8 && PetscAbsReal(o->sig[2]) <= 1e-12 * scale) break; /* round-off: no further progress */
     if (it == 50 || !(o->C[2][2] > 0)) return PETSC_FALSE;
     eps[2] -= o->sig[2] / o->C[2][2];
     PlasticReturn(in, st, eps, eps_th, deps_th, theta, mu, Kb, dmu, dKb, frozen, PETSC_TRUE, o);
@@ -780,6 +812,173 @@ static PetscBool PlasticReturnPlaneStress(const TslElementInput *in, const Petsc
     o->dw_dth -= dw3 * ds3 / c33;
     for (PetscInt c = 0; c < 6; c++) o->C[2][c] = o->C[c][2] = 0;
     o->dsig[2] = 0, o->dw_de[2] = 0;
+  }
+  return PETSC_TRUE;
+}
+
+/* The shear and bulk moduli of a point and their temperature derivatives */
+static void PlasticModuli(const MechPoint *mq, PetscReal *mu, PetscReal *Kb, PetscReal *dmu, PetscReal *dKb)
+{
+  const PetscReal E = mq->mp.E, vv = mq->mp.nu, a = (1 + vv) * (1 - 2 * vv);
+  PetscReal       lam, dlam;
+  TslElementLame(&mq->mp, &lam, mu);
+  dlam = mq->mp.dE * vv / a + mq->mp.dnu * E * (1 + 2 * vv * vv) / (a * a);
+  *dmu = mq->mp.dE / (2 * (1 + vv)) - mq->mp.dnu * E / (2 * (1 + vv) * (1 + vv));
+  *Kb = lam + 2 * *mu / 3, *dKb = dlam + 2 * *dmu / 3;
+}
+
+/* Plasticity with incompatible modes (C3D8I, CPE4I, CPS4I, CAX4I): the bubbles' alpha solves the element's own
+ * equations int G^T sigma(B u + G alpha) dV = 0 at the committed plastic state, by Newton with K_aa = int G^T C G dV
+ * (the return's consistent C; from alpha = 0 each evaluation, so no alpha is kept: it follows from u, theta and the
+ * committed state); then R_u = int B^T sigma dV and, condensed, K_uu = int B^T C B - K_ua K_aa^-1 K_au (C need not be
+ * symmetric), K_u_theta = t - K_ua K_aa^-1 s (t, s the B and G moments of dsig N_b), and the heat rows' derivatives
+ * through alpha likewise. FALSE: an inverted element, or alpha not converged (a cutback). */
+static PetscBool MechanicsIncompatiblePlastic(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
+                                              PetscReal energy[4])
+{
+  const TslElementType *t    = in->type;
+  const TslGeometry    *g    = t->geom;
+  const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
+  const TslMaterial    *mat  = in->sec->mat;
+  const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof, ncol = n * nu, nq = quad->n;
+  const PetscInt        nb = mat->plastic.nback, ns = TslMaterialPlasticState(mat);
+  const PetscReal       heat = mat->heat_fraction * in->inelastic_rate;
+  const PetscBool       ps = TslKinematicsRowGet(t->kin)->free_normal, frozen = res ? PETSC_TRUE : PETSC_FALSE;
+  PetscReal             G[TSL_MAX_QP][6][TSL_MAX_ENHANCED], alpha[TSL_MAX_ENHANCED] = {0}, Kaa[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED], Kai[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED];
+  PetscReal             mu[TSL_INCOMPATIBLE_QP], Kb[TSL_INCOMPATIBLE_QP], dmu[TSL_INCOMPATIBLE_QP], dKb[TSL_INCOMPATIBLE_QP], theta[TSL_INCOMPATIBLE_QP];
+  PetscReal             eps[TSL_INCOMPATIBLE_QP][6];
+  PetscInt              na;
+  MechPoint             mqs[TSL_INCOMPATIBLE_QP];
+  PlasticPoint          o[TSL_INCOMPATIBLE_QP];
+
+  if (energy) energy[0] = energy[2] = energy[3] = 0;
+  if (!IncompatibleModes(in, full, mqs, G, &na)) return PETSC_FALSE;
+  for (PetscInt q = 0; q < nq; q++) {
+    theta[q] = NodalTheta(in, mqs[q].p->N, in->u);
+    PlasticModuli(&mqs[q], &mu[q], &Kb[q], &dmu[q], &dKb[q]);
+  }
+  /* Newton on the bubbles' equations */
+  for (PetscInt it = 0;; it++) {
+    PetscReal Ra[TSL_MAX_ENHANCED] = {0}, scale = 0, rmax = 0;
+    for (PetscInt c = 0; c < na * na; c++) Kaa[c] = 0;
+    for (PetscInt q = 0; q < nq; q++) {
+      const MechPoint *mq = &mqs[q];
+      const PetscReal *st = in->pstate + ns * q;
+      for (PetscInt r = 0; r < 6; r++) {
+        eps[q][r] = mq->eps[r];
+        for (PetscInt c = 0; c < na; c++) eps[q][r] += G[q][r][c] * alpha[c];
+      }
+      if (ps) {
+        if (!PlasticReturnPlaneStress(in, st, eps[q], mq->eps_th, mq->deps_th, theta[q], mu[q], Kb[q], dmu[q], dKb[q], frozen, PETSC_TRUE, &o[q])) return PETSC_FALSE;
+      } else PlasticReturn(in, st, eps[q], mq->eps_th, mq->deps_th, theta[q], mu[q], Kb[q], dmu[q], dKb[q], frozen, PETSC_TRUE, &o[q]);
+      for (PetscInt c1 = 0; c1 < na; c1++) {
+        PetscReal CG[6];
+        for (PetscInt r = 0; r < 6; r++) {
+          Ra[c1] += G[q][r][c1] * o[q].sig[r] * mq->p->dV;
+          scale += PetscAbsReal(G[q][r][c1] * o[q].sig[r]) * mq->p->dV;
+        }
+        for (PetscInt r = 0; r < 6; r++) {
+          CG[r] = 0;
+          for (PetscInt s2 = 0; s2 < 6; s2++) CG[r] += o[q].C[r][s2] * G[q][s2][c1];
+        }
+        for (PetscInt c2 = 0; c2 < na; c2++)
+          for (PetscInt r = 0; r < 6; r++) Kaa[c2 * na + c1] += G[q][r][c2] * CG[r] * mq->p->dV; /* row c2: d R_a,c2 / d alpha_c1 */
+      }
+    }
+    for (PetscInt c = 0; c < na; c++) rmax = PetscMax(rmax, PetscAbsReal(Ra[c]));
+    DenseInverse(na, na, Kaa, Kai);
+    if (rmax <= 1e-15 * scale || (it >= 8 && rmax <= 1e-12 * scale) || it == 50) { /* to round-off, as the plane-stress eps_33 */
+      if (rmax > 1e-8 * scale) return PETSC_FALSE; /* the bubbles did not settle: a cutback */
+      break;
+    }
+    for (PetscInt c1 = 0; c1 < na; c1++)
+      for (PetscInt c2 = 0; c2 < na; c2++) alpha[c1] -= Kai[c1 * na + c2] * Ra[c2];
+  }
+  /* at the bubbles' solution: forces, heat, state, outputs */
+  for (PetscInt q = 0; q < nq; q++) {
+    const MechPoint *mq = &mqs[q];
+    const PetscReal *st = in->pstate + ns * q;
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < nu; i++) {
+        PetscReal f = 0;
+        for (PetscInt r = 0; r < 6; r++) f += mq->B[r][nu * a + i] * o[q].sig[r];
+        R[ndof * a + i] += f * mq->p->dV;
+      }
+    for (PetscInt a = 0; a < n; a++) R[ndof * a + th] -= mq->p->N[a] * heat * o[q].w * mq->p->dV;
+    if (in->pstate_new) {
+      PetscReal *sn = in->pstate_new + ns * q;
+      for (PetscInt r = 0; r < 6; r++) sn[r] = st[r] + o[q].deps[r];
+      sn[6] = st[6] + o[q].dl;
+      for (PetscInt k = 0; k < 6 * nb; k++) sn[7 + k] = o[q].back[k];
+      if (mat->plastic.nkt > 1) sn[7 + 6 * nb] = 1, sn[8 + 6 * nb] = theta[q];
+    }
+    if (res) {
+      for (PetscInt r = 0; r < 6; r++) res->E[r] += eps[q][r] / nq, res->S[r] += o[q].sig[r] / nq, res->PE[r] += (st[r] + o[q].deps[r]) / nq;
+      res->PEEQ += (st[6] + o[q].dl) / nq;
+      res->strain_energy += o[q].se * mq->p->dV;
+    }
+    if (energy) energy[0] += o[q].se * mq->p->dV, energy[2] += o[q].w * mq->p->dV, energy[3] += heat * o[q].w * mq->p->dV;
+  }
+  if (!K) return PETSC_TRUE;
+  {
+    PetscReal Kua[TSL_MAX_ELEM_NODES * 3][TSL_MAX_ENHANCED] = {{0}}, Kau[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES * 3] = {{0}}, sb[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES] = {{0}};
+    PetscReal hG[TSL_MAX_ELEM_NODES][TSL_MAX_ENHANCED] = {{0}}; /* the heat rows' alpha derivatives, -N_a heat int dw/de G dV */
+    PetscReal KiKau[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES * 3], Kis[TSL_MAX_ENHANCED][TSL_MAX_ELEM_NODES];
+    for (PetscInt q = 0; q < nq; q++) {
+      const MechPoint *mq = &mqs[q];
+      const PetscReal  dV = mq->p->dV;
+      for (PetscInt c1 = 0; c1 < ncol; c1++) {
+        const PetscInt r1 = ndof * (c1 / nu) + c1 % nu;
+        PetscReal      BC[6], CB[6], Bds = 0;
+        for (PetscInt r = 0; r < 6; r++) {
+          BC[r] = CB[r] = 0;
+          for (PetscInt s2 = 0; s2 < 6; s2++) BC[r] += mq->B[s2][c1] * o[q].C[s2][r], CB[r] += o[q].C[r][s2] * mq->B[s2][c1];
+          Bds += mq->B[r][c1] * o[q].dsig[r];
+        }
+        for (PetscInt c2 = 0; c2 < ncol; c2++) {
+          PetscReal kv = 0;
+          for (PetscInt r = 0; r < 6; r++) kv += BC[r] * mq->B[r][c2];
+          K[r1 * nd + ndof * (c2 / nu) + c2 % nu] += kv * dV;
+        }
+        for (PetscInt c = 0; c < na; c++) {
+          PetscReal ua = 0, au = 0;
+          for (PetscInt r = 0; r < 6; r++) ua += BC[r] * G[q][r][c], au += G[q][r][c] * CB[r];
+          Kua[c1][c] += ua * dV, Kau[c][c1] += au * dV;
+        }
+        for (PetscInt b = 0; b < n; b++) K[r1 * nd + ndof * b + th] += Bds * mq->p->N[b] * dV;
+      }
+      for (PetscInt c = 0; c < na; c++) {
+        PetscReal Gds = 0, wG = 0;
+        for (PetscInt r = 0; r < 6; r++) Gds += G[q][r][c] * o[q].dsig[r], wG += o[q].dw_de[r] * G[q][r][c];
+        for (PetscInt b = 0; b < n; b++) sb[c][b] += Gds * mq->p->N[b] * dV;
+        if (heat > 0 && o[q].dl > 0)
+          for (PetscInt a = 0; a < n; a++) hG[a][c] -= mq->p->N[a] * heat * wG * dV;
+      }
+      if (heat > 0 && o[q].dl > 0)
+        for (PetscInt a = 0; a < n; a++) {
+          const PetscReal f = -mq->p->N[a] * heat * dV;
+          for (PetscInt c2 = 0; c2 < ncol; c2++) {
+            PetscReal kv = 0;
+            for (PetscInt r = 0; r < 6; r++) kv += o[q].dw_de[r] * mq->B[r][c2];
+            K[(ndof * a + th) * nd + ndof * (c2 / nu) + c2 % nu] += f * kv;
+          }
+          for (PetscInt b = 0; b < n; b++) K[(ndof * a + th) * nd + ndof * b + th] += f * o[q].dw_dth * mq->p->N[b];
+        }
+    }
+    /* condensation through d alpha = -K_aa^-1 (K_au du + s dtheta) */
+    IncompatibleCondense(in, na, Kai, Kau, Kua, sb, K, KiKau, Kis);
+    for (PetscInt a = 0; a < n; a++) {
+      for (PetscInt c2 = 0; c2 < ncol; c2++) {
+        PetscReal kv = 0;
+        for (PetscInt c = 0; c < na; c++) kv += hG[a][c] * KiKau[c][c2];
+        K[(ndof * a + th) * nd + ndof * (c2 / nu) + c2 % nu] -= kv;
+      }
+      for (PetscInt b = 0; b < n; b++) {
+        PetscReal kv = 0;
+        for (PetscInt c = 0; c < na; c++) kv += hG[a][c] * Kis[c][b];
+        K[(ndof * a + th) * nd + ndof * b + th] -= kv;
+      }
+    }
   }
   return PETSC_TRUE;
 }
@@ -804,21 +1003,16 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
 
   for (PetscInt kb = 0; kb < nb; kb++)
     if (mat->plastic.gamma[kb] > 0) symmetric = PETSC_FALSE;
+  if (t->form->incompatible) return MechanicsIncompatiblePlastic(in, full, R, K, res, energy);
   if (energy) energy[0] = energy[2] = energy[3] = 0;
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(&hy, sizeof(hy)));
   for (PetscInt q = 0; q < quad->n; q++) {
     const PetscReal *st = in->pstate + ns * q;
-    PetscReal        lam, mu, Kb, dlam, dmu, dKb, theta, eps[6];
+    PetscReal        mu, Kb, dmu, dKb, theta, eps[6];
 
     if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, PETSC_FALSE, &mq)) return PETSC_FALSE;
     theta = NodalTheta(in, mq.p->N, in->u);
-    {
-      const PetscReal E = mq.mp.E, vv = mq.mp.nu, a = (1 + vv) * (1 - 2 * vv);
-      TslElementLame(&mq.mp, &lam, &mu);
-      dlam = mq.mp.dE * vv / a + mq.mp.dnu * E * (1 + 2 * vv * vv) / (a * a);
-      dmu  = mq.mp.dE / (2 * (1 + vv)) - mq.mp.dnu * E / (2 * (1 + vv) * (1 + vv));
-      Kb = lam + 2 * mu / 3, dKb = dlam + 2 * dmu / 3;
-    }
+    PlasticModuli(&mq, &mu, &Kb, &dmu, &dKb);
     for (PetscInt r = 0; r < 6; r++) eps[r] = mq.eps[r];
     if (ps) {
       if (!PlasticReturnPlaneStress(in, st, eps, mq.eps_th, mq.deps_th, theta, mu, Kb, dmu, dKb, res ? PETSC_TRUE : PETSC_FALSE, K ? PETSC_TRUE : PETSC_FALSE, &o))

@@ -280,7 +280,7 @@ def explicit_beam():
             "*BOUNDARY, AMPLITUDE=BEND\n TIP, 2, 2, 0.15\n*OUTPUT, FIELD, NUMBER INTERVAL=20\n*END STEP\n")
 
 
-def jacobian(kin=False, law=None):
+def jacobian(kin=False, law=None, typ="C3D8T"):
     """One distorted C3D8T pulled well past yield in two increments (every point flows in both: a point near the yield
     surface would put the finite differences across its kink), heated at a corner, with a modulus and a yield stress
     falling with temperature, expansion and the plastic heat. In millimetres (a brick of about 1000): PETSc's
@@ -289,9 +289,9 @@ def jacobian(kin=False, law=None):
     (1e-5 against 1e-8 in millimetres)."""
     corner = [(1000 * a, 1000 * b, 1000 * c) for a, b, c in
               [(0, 0, 0), (1, 0, 0), (1.1, 1.2, 0.1), (0, 1, 0), (0, 0.1, 1), (1.2, 0, 1.1), (1, 1, 1), (-0.1, 1, 0.9)]]
-    return ("*HEADING\n A distorted C3D8T pulled past yield and heated: the plastic tangent against finite differences\n"
+    return ("*HEADING\n A distorted %s pulled past yield and heated: the plastic tangent against finite differences\n" % typ +
             "*NODE, NSET=NALL\n" + "".join(" %d, %g, %g, %g\n" % ((i + 1,) + c) for i, c in enumerate(corner)) +
-            "*ELEMENT, TYPE=C3D8T, ELSET=ALL\n 1, 1, 2, 3, 4, 5, 6, 7, 8\n*NSET, NSET=FIX\n 1, 4, 5, 8\n*NSET, NSET=PULL\n 2, 3, 6, 7\n"
+            ("*ELEMENT, TYPE=%s, ELSET=ALL\n 1, 1, 2, 3, 4, 5, 6, 7, 8\n*NSET, NSET=FIX\n 1, 4, 5, 8\n*NSET, NSET=PULL\n 2, 3, 6, 7\n" % typ) +
             "*MATERIAL, NAME=STEEL\n*ELASTIC\n 200000., 0.3, 0.\n 150000., 0.3, 100.\n" + (law or (PLASTIC_KIN if kin else PLASTIC_SOFT)) +
             "*INELASTIC HEAT FRACTION\n*EXPANSION\n 1.2E-5\n*CONDUCTIVITY\n 50.0\n*DENSITY\n 1.0\n*SPECIFIC HEAT\n 2.0\n"
             "*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL\n*INITIAL CONDITIONS, TYPE=TEMPERATURE\n NALL, 20.0\n"
@@ -326,12 +326,12 @@ def bad(name):
     base = uniaxial("C3D8T")
     if name in BAD_EDITS:
         return base.replace(*BAD_EDITS[name])
-    if name == "incompatible":
-        return uniaxial("CAX4T").replace("TYPE=CAX4T", "TYPE=CAX4I")
+    if name == "shell":
+        return base.replace("TYPE=C3D8T", "TYPE=SC8RT").replace("*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL\n 1.0\n", "*SHELL SECTION, ELSET=ALL, MATERIAL=STEEL\n 1.0\n")
     raise KeyError(name)
 
 
-BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "incompatible", "heat_fraction", "rate_first", "rate_theta", "rate_d"]
+BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "shell", "heat_fraction", "rate_first", "rate_theta", "rate_d"]
 
 
 def main():
@@ -359,6 +359,12 @@ def main():
     decks["cylinder_cax8rt"] = cylinder("CAX8RT")
     decks["friction_plastic_cpe4t"] = friction_plastic()
     decks["impact_plastic_c3d8t"] = impact_plastic()
+    # incompatible modes (CalculiX's mechanical names, read with a temperature)
+    decks["uniaxial_c3d8i"] = uniaxial("C3D8I")
+    decks["uniaxial_combined_cax4i"] = uniaxial("CAX4I", law=PLASTIC_COMB, path=CYCLE)
+    decks["uniaxial_cps4i"] = uniaxial("CPS4I")
+    decks["jacobian_combined_c3d8i"] = jacobian(law=PLASTIC_COMB_SOFT, typ="C3D8I")
+    decks["jacobian_plastic_cps4i"] = jacobian_2d("CPS4I", PLASTIC_SOFT)
     # hybrid types: the deviatoric return beside the element's own pressure
     decks["uniaxial_c3d8rht"] = uniaxial("C3D8RHT")
     decks["uniaxial_combined_cax4rht"] = uniaxial("CAX4RHT", law=PLASTIC_COMB, path=CYCLE)
