@@ -66,6 +66,9 @@ PetscReal TslElementWaveModulus(const TslElementType *type, const TslMaterialPoi
 /* A continuum shell at a point: the frame Q (rows e1, e2, n; n the unit gradient of the stack coordinate) and
  * the thickness modulus of its section (the default 2 G from the material point). */
 void TslElementShellFrame(const TslElementSection *sec, const TslElementPoint *p, PetscReal Q[3][3]);
+/* The Voigt strain transformation of the frame Q (rows: the local axes): eps_local = T eps_global (engineering
+ * shear), so sigma_global = T^T sigma_local and C_global = T^T C_local T */
+void TslElementStrainTransform(const PetscReal Q[3][3], PetscReal T[6][6]);
 /* The reference direction (0..2) along a continuum shell's thickness: its section's STACK DIRECTION less one,
  * 2 by default. */
 static inline PetscInt TslElementShellStack(const TslElementSection *sec)

@@ -816,6 +816,62 @@ static PetscBool PlasticReturnPlaneStress(const TslElementInput *in, const Petsc
   return PETSC_TRUE;
 }
 
+/* Continuum shells (SC6RT, SC8RT): the material's plane stress in the shell's frame, as the elastic shell has it
+ * (kinematics.c, ShellLocal): the in-plane strain (11, 22, 12) takes the plane-stress return (its own eps_33), the
+ * thickness stress is the thickness modulus's E_t (eps_33 - eps_th) and the transverse shears k G gamma (k = 5/6), both
+ * elastic and outside the yield condition, as in a conventional shell's plasticity; then rotated to the global axes.
+ * The thickness stress is the elastic shell's E_t (eps_33 - eps_th): as there, the element's thickness does not follow
+ * the in-plane strain (no Poisson or plastic thinning; the material's own eps_33 is the return's). The state's
+ * plastic strain is kept in the frame; Tinv (local -> global strain) turns it back for the output. */
+static PetscBool PlasticReturnShell(const TslElementInput *in, const MechPoint *mq, const PetscReal *st, const PetscReal eps[6], PetscReal theta,
+                                    PetscReal mu, PetscReal Kb, PetscReal dmu, PetscReal dKb, PetscBool frozen, PetscBool tangent, PlasticPoint *o,
+                                    PetscReal Tinv[6][6])
+{
+  PetscReal       Q[3][3], Qt[3][3], T[6][6], el[6], em[6], sl[6], Cl[6][6] = {{0}}, dsl[6], dwl[6];
+  const PetscReal Et = TslElementShellThicknessModulus(in->sec, &mq->mp), dEt = in->sec->thickness_modulus > 0 ? 0 : 2 * dmu, ks = 5.0 / 6.0;
+  PetscReal       se;
+
+  TslElementShellFrame(in->sec, mq->p, Q);
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = 0; j < 3; j++) Qt[i][j] = Q[j][i];
+  TslElementStrainTransform(Q, T);
+  TslElementStrainTransform(Qt, Tinv);
+  for (PetscInt r = 0; r < 6; r++) {
+    el[r] = 0;
+    for (PetscInt c = 0; c < 6; c++) el[r] += T[r][c] * eps[c];
+  }
+  for (PetscInt r = 0; r < 6; r++) em[r] = r == 4 || r == 5 ? 0 : el[r];
+  if (!PlasticReturnPlaneStress(in, st, em, mq->eps_th, mq->deps_th, theta, mu, Kb, dmu, dKb, frozen, tangent, o)) return PETSC_FALSE;
+  /* the frame's stress: the return's in-plane part, the elastic thickness and transverse shear */
+  for (PetscInt r = 0; r < 6; r++) sl[r] = o->sig[r];
+  sl[2] = Et * (el[2] - mq->eps_th), sl[4] = ks * mu * el[4], sl[5] = ks * mu * el[5];
+  /* the return's energy counts its in-plane part: the thickness and shear terms with their own strains */
+  se = o->se + 0.5 * sl[2] * (el[2] - mq->eps_th) + 0.5 * (sl[4] * el[4] + sl[5] * el[5]);
+  for (PetscInt r = 0; r < 6; r++) {
+    o->sig[r] = 0;
+    for (PetscInt c = 0; c < 6; c++) o->sig[r] += T[c][r] * sl[c];
+  }
+  o->se = se;
+  if (!tangent) return PETSC_TRUE;
+  for (PetscInt r = 0; r < 6; r++)
+    for (PetscInt c = 0; c < 6; c++)
+      if ((r == 0 || r == 1 || r == 3) && (c == 0 || c == 1 || c == 3)) Cl[r][c] = o->C[r][c];
+  Cl[2][2] = Et, Cl[4][4] = Cl[5][5] = ks * mu;
+  for (PetscInt r = 0; r < 6; r++) dsl[r] = r == 2 || r >= 4 ? 0 : o->dsig[r], dwl[r] = r == 2 || r >= 4 ? 0 : o->dw_de[r];
+  dsl[2] = dEt * (el[2] - mq->eps_th) - Et * mq->deps_th, dsl[4] = ks * dmu * el[4], dsl[5] = ks * dmu * el[5];
+  for (PetscInt r = 0; r < 6; r++) {
+    o->dsig[r] = o->dw_de[r] = 0;
+    for (PetscInt c = 0; c < 6; c++) o->dsig[r] += T[c][r] * dsl[c], o->dw_de[r] += T[c][r] * dwl[c];
+    for (PetscInt c = 0; c < 6; c++) {
+      PetscReal v = 0;
+      for (PetscInt a = 0; a < 6; a++)
+        for (PetscInt b = 0; b < 6; b++) v += T[a][r] * Cl[a][b] * T[b][c];
+      o->C[r][c] = v;
+    }
+  }
+  return PETSC_TRUE;
+}
+
 /* The shear and bulk moduli of a point and their temperature derivatives */
 static void PlasticModuli(const MechPoint *mq, PetscReal *mu, PetscReal *Kb, PetscReal *dmu, PetscReal *dKb)
 {
@@ -994,6 +1050,8 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
   const PetscReal       heat = mat->heat_fraction * in->inelastic_rate;
   const PetscInt        nb = mat->plastic.nback, ns = TslMaterialPlasticState(mat);
   const PetscBool       ps = TslKinematicsRowGet(t->kin)->free_normal, hybrid = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
+  const PetscBool       shell = TslKinematicsRowGet(t->kin)->shell;
+  PetscReal             Tinv[6][6];
   PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
   MechPoint             mq;
   PlasticPoint          o;
@@ -1014,7 +1072,9 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
     theta = NodalTheta(in, mq.p->N, in->u);
     PlasticModuli(&mq, &mu, &Kb, &dmu, &dKb);
     for (PetscInt r = 0; r < 6; r++) eps[r] = mq.eps[r];
-    if (ps) {
+    if (shell) {
+      if (!PlasticReturnShell(in, &mq, st, eps, theta, mu, Kb, dmu, dKb, res ? PETSC_TRUE : PETSC_FALSE, K ? PETSC_TRUE : PETSC_FALSE, &o, Tinv)) return PETSC_FALSE;
+    } else if (ps) {
       if (!PlasticReturnPlaneStress(in, st, eps, mq.eps_th, mq.deps_th, theta, mu, Kb, dmu, dKb, res ? PETSC_TRUE : PETSC_FALSE, K ? PETSC_TRUE : PETSC_FALSE, &o))
         return PETSC_FALSE;
     } else /* outputs (res) come at the committed state: no return there */
@@ -1043,7 +1103,14 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
       if (mat->plastic.nkt > 1) sn[7 + 6 * nb] = 1, sn[8 + 6 * nb] = theta; /* the back stresses' temperature (their C_k's) */
     }
     if (res) {
-      for (PetscInt r = 0; r < 6; r++) res->E[r] += eps[r] / quad->n, res->PE[r] += (st[r] + o.deps[r]) / quad->n;
+      for (PetscInt r = 0; r < 6; r++) {
+        PetscReal pe = st[r] + o.deps[r];
+        if (shell) { /* the frame's plastic strain to the global axes */
+          pe = 0;
+          for (PetscInt c = 0; c < 6; c++) pe += Tinv[r][c] * (st[c] + o.deps[c]);
+        }
+        res->E[r] += eps[r] / quad->n, res->PE[r] += pe / quad->n;
+      }
       for (PetscInt r = 0; r < 6; r++) *(hybrid ? &sdev_avg[r] : &res->S[r]) += o.sig[r] / quad->n;
       res->PEEQ += (st[6] + o.dl) / quad->n;
       res->strain_energy += o.se * mq.p->dV;

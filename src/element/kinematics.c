@@ -319,16 +319,21 @@ void TslElementShellFrame(const TslElementSection *sec, const TslElementPoint *p
 
 /* D = T^T D_l T with T the Voigt (engineering shear) map of global strains to the frame's, eps_l = T eps:
  * eps'_ij = Q_ik Q_jl eps_kl, a global shear component counted for both its orders, a local one doubled. */
-static void Rotate(const PetscReal Q[3][3], PetscReal D[6][6])
+void TslElementStrainTransform(const PetscReal Q[3][3], PetscReal T[6][6])
 {
   static const PetscInt vi[6] = {0, 1, 2, 0, 0, 1}, vj[6] = {0, 1, 2, 1, 2, 2};
-  PetscReal             T[6][6], TD[6][6];
-
   for (PetscInt r = 0; r < 6; r++)
     for (PetscInt s = 0; s < 6; s++) {
       const PetscInt i = vi[r], j = vj[r], k = vi[s], l = vj[s];
       T[r][s] = (k == l ? Q[i][k] * Q[j][k] : 0.5 * (Q[i][k] * Q[j][l] + Q[i][l] * Q[j][k])) * (r < 3 ? 1 : 2);
     }
+}
+
+static void Rotate(const PetscReal Q[3][3], PetscReal D[6][6])
+{
+  PetscReal T[6][6], TD[6][6];
+
+  TslElementStrainTransform(Q, T);
   for (PetscInt r = 0; r < 6; r++)
     for (PetscInt s = 0; s < 6; s++) {
       TD[r][s] = 0;

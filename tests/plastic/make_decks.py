@@ -331,7 +331,7 @@ def bad(name):
     raise KeyError(name)
 
 
-BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "shell", "heat_fraction", "rate_first", "rate_theta", "rate_d"]
+BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "heat_fraction", "rate_first", "rate_theta", "rate_d"]
 
 
 def main():
@@ -365,6 +365,12 @@ def main():
     decks["uniaxial_cps4i"] = uniaxial("CPS4I")
     decks["jacobian_combined_c3d8i"] = jacobian(law=PLASTIC_COMB_SOFT, typ="C3D8I")
     decks["jacobian_plastic_cps4i"] = jacobian_2d("CPS4I", PLASTIC_SOFT)
+    # continuum shells: the unit cube as one SC8RT (stacked along z), and the distorted brick
+    decks["uniaxial_sc8rt"] = bad("shell")
+    # (its shear step half the brick's: at 40 one of the five Simpson points ends the step at its yield surface, where the
+    # differences cross the kink, 1.2e-3 in that evaluation alone)
+    decks["jacobian_plastic_sc8rt"] = (jacobian(law=PLASTIC_SOFT, typ="SC8RT").replace("*SOLID SECTION, ELSET=ALL, MATERIAL=STEEL\n", "*SHELL SECTION, ELSET=ALL, MATERIAL=STEEL\n 1000.0\n")
+                                       .replace(" PULL, 2, 2, 40.0\n", " PULL, 2, 2, 20.0\n"))
     # hybrid types: the deviatoric return beside the element's own pressure
     decks["uniaxial_c3d8rht"] = uniaxial("C3D8RHT")
     decks["uniaxial_combined_cax4rht"] = uniaxial("CAX4RHT", law=PLASTIC_COMB, path=CYCLE)
