@@ -566,8 +566,10 @@ static void HybridCondense(const TslElementInput *in, Hybrid *hy, const PetscRea
 }
 
 /* Mises plasticity with isotropic, linear kinematic or nonlinear kinematic hardening (*PLASTIC; docs/keywords.md,
- * docs/elements.md "Plasticity"), the displacement formulations of every kinematics with the whole 3D strain (3D, plane
- * strain, axisymmetric with and without twist, generalized plane strain). At each point, from the committed plastic
+ * docs/elements.md "Plasticity"). The point's return below works in the whole 3D strain; plane stress solves its eps_33
+ * around it (PlasticReturnPlaneStress), the continuum shells work in their frame (PlasticReturnShell), the hybrid types
+ * keep its deviatoric part (MechanicsPlastic), the incompatible modes solve their bubbles around it
+ * (MechanicsIncompatiblePlastic). At each point, from the committed plastic
  * strain eps_p, equivalent plastic strain p and back stresses a_k (in->pstate), the return (backward Euler) of the
  * trial e = eps - eps_th m - eps_p, d = dev e (tensor components): with theta_k = 1 / (1 + gamma_k dl) each back
  * stress a_k = theta_k (a_k,n + sqrt(2/3) C_k dl n), and the relative stress xi = sigma_dev - sum a_k lies along
