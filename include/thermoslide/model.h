@@ -70,7 +70,8 @@ typedef struct {
  * with rows (sigma_0, Q, b, temperature), linear between the temperatures. n = 0: elastic. Back stresses (nback of
  * them; HARDENING=KINEMATIC: one of modulus C = the slope between the deck's two points and gamma = 0, Ziegler-Prager;
  * HARDENING=COMBINED, DATA TYPE=PARAMETERS: NUMBER BACKSTRESSES of the nonlinear kinematic law (Armstrong-Frederick)
- * d alpha_k = C_k / sigma_y (sigma - alpha) d p - gamma_k alpha_k d p, temperature-independent). */
+ * d alpha_k = C_k / sigma_y (sigma - alpha) d p - gamma_k alpha_k d p), their C_k, gamma_k in nkt rows, one per
+ * temperature. */
 #define TSL_MAX_BACKSTRESS 10
 typedef struct {
   PetscInt  n;
@@ -78,10 +79,9 @@ typedef struct {
   PetscInt  nvoce;
   PetscReal voce[TSL_MAX_TABLE_ROWS][4];
   PetscInt  nback;
-  PetscReal C[TSL_MAX_BACKSTRESS], gamma[TSL_MAX_BACKSTRESS];
   PetscBool combined;  /* HARDENING=COMBINED (a *CYCLIC HARDENING may follow) */
-  /* temperature-dependent back stresses (nkt > 1 rows, ascending kt_theta): C_k and gamma_k linear between them, the
-   * end rows held beyond (TslMaterialBackStress); the point's state then keeps the temperature of its last commit */
+  /* the back stresses' C_k, gamma_k: one row (nkt = 1), or nkt > 1 rows of ascending kt_theta, linear between them and
+   * the end rows held beyond (TslMaterialBackStress); the point's state then keeps the temperature of its last commit */
   PetscInt  nkt;
   PetscReal kt_theta[TSL_MAX_TABLE_ROWS], kt_C[TSL_MAX_TABLE_ROWS][TSL_MAX_BACKSTRESS], kt_gamma[TSL_MAX_TABLE_ROWS][TSL_MAX_BACKSTRESS];
   PetscInt  rate_law;  /* *RATE DEPENDENT: 0 none, 1 TYPE=POWER LAW (rate = D (sigma / sigma_static - 1)^n), 2 JOHNSON COOK

@@ -1347,10 +1347,10 @@ static PetscErrorCode DataRecord(Deck *d, PetscInt want, PetscReal v[], PetscInt
 }
 
 /* *PLASTIC (Mises plasticity; TslPlasticTable). HARDENING=ISOTROPIC (the dialect's default): the curve of
- * PlasticCurve. HARDENING=KINEMATIC: linear kinematic hardening, two lines at most (the dialect's: the slope between
- * them is the back stress's modulus), no temperature yet. HARDENING=COMBINED, DATA TYPE=PARAMETERS: "sigma_0, C_1,
- * gamma_1, ..., C_n, gamma_n[, temperature]" with n = NUMBER BACKSTRESSES (default 1), one record (temperature
- * dependence: not yet); the surface's size sigma_0 unless a *CYCLIC HARDENING follows. The other data types, rate
+ * PlasticCurve. HARDENING=KINEMATIC: linear kinematic hardening, two lines at most per temperature (the dialect's: the
+ * slope between them is the back stress's modulus). HARDENING=COMBINED, DATA TYPE=PARAMETERS: "sigma_0, C_1, gamma_1,
+ * ..., C_n, gamma_n[, temperature]" with n = NUMBER BACKSTRESSES (default 1), one record or one per temperature; the
+ * surface's size sigma_0 unless a *CYCLIC HARDENING follows. The other data types, rate
  * dependence and the other hardening laws are refused (docs/keywords.md). */
 static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
 {
@@ -1402,12 +1402,10 @@ static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
       t->kt_theta[r] = v[2 * nb + 1];
       t->row[r][0] = v[0], t->row[r][1] = 0, t->row[r][2] = v[2 * nb + 1]; /* the surface's size at each temperature, until a *CYCLIC HARDENING */
       t->n = r + 1;
-      if (!r && nrec < 2 * nb + 2) t->kt_theta[0] = t->row[0][2] = 0;
     }
     USER_CHECK(t->n > 0, LOC_FMT "*PLASTIC needs a data line", KLOC(d));
     if (t->n == 1) t->kt_theta[0] = t->row[0][2] = 0; /* one record: no temperature dependence */
-    for (PetscInt k = 0; k < nb; k++) t->C[k] = t->kt_C[0][k], t->gamma[k] = t->kt_gamma[0][k];
-    t->nback = nb, t->combined = PETSC_TRUE, t->nkt = t->n > 1 ? t->n : 0;
+    t->nback = nb, t->combined = PETSC_TRUE, t->nkt = t->n;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(PlasticCurve(d, mat, t));
@@ -1427,8 +1425,7 @@ static PetscErrorCode KwPlastic(Deck *d, const DeckKeyword *kw)
       t->row[ng][0] = t->row[i][0], t->row[ng][1] = 0, t->row[ng][2] = t->row[i][2]; /* the surface's size at the temperature */
       ng++, i = e;
     }
-    t->n = ng, t->nback = 1, t->nkt = ng > 1 ? ng : 0; /* Ziegler-Prager: the nonlinear law with gamma = 0 */
-    t->C[0] = t->kt_C[0][0], t->gamma[0] = 0;
+    t->n = ng, t->nback = 1, t->nkt = ng; /* Ziegler-Prager: the nonlinear law with gamma = 0 */
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -818,6 +818,17 @@ static PetscBool PlasticReturnPlaneStress(const TslElementInput *in, const Petsc
   return PETSC_TRUE;
 }
 
+/* The state a point's return reaches from st: plastic strain, PEEQ, back stresses and, with temperature-dependent
+ * back stresses, the temperature their C_k's were taken at */
+static void PlasticStateNew(const TslMaterial *mat, const PetscReal *st, const PlasticPoint *o, PetscReal theta, PetscReal *sn)
+{
+  const PetscInt nb = mat->plastic.nback;
+  for (PetscInt r = 0; r < 6; r++) sn[r] = st[r] + o->deps[r];
+  sn[6] = st[6] + o->dl;
+  for (PetscInt k = 0; k < 6 * nb; k++) sn[7 + k] = o->back[k];
+  if (mat->plastic.nkt > 1) sn[7 + 6 * nb] = 1, sn[8 + 6 * nb] = theta;
+}
+
 /* Continuum shells (SC6RT, SC8RT): the material's plane stress in the shell's frame, as the elastic shell has it
  * (kinematics.c, ShellLocal): the in-plane strain (11, 22, 12) takes the plane-stress return (its own eps_33), the
  * thickness stress is the thickness modulus's E_t (eps_33 - eps_th) and the transverse shears k G gamma (k = 5/6), both
@@ -899,7 +910,7 @@ static PetscBool MechanicsIncompatiblePlastic(const TslElementInput *in, const T
   const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
   const TslMaterial    *mat  = in->sec->mat;
   const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nd = n * ndof, ncol = n * nu, nq = quad->n;
-  const PetscInt        nb = mat->plastic.nback, ns = TslMaterialPlasticState(mat);
+  const PetscInt        ns = TslMaterialPlasticState(mat);
   const PetscReal       heat = mat->heat_fraction * in->inelastic_rate;
   const PetscBool       ps = TslKinematicsRowGet(t->kin)->free_normal, frozen = res ? PETSC_TRUE : PETSC_FALSE;
   PetscReal             G[TSL_MAX_QP][6][TSL_MAX_ENHANCED], alpha[TSL_MAX_ENHANCED] = {0}, Kaa[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED], Kai[TSL_MAX_ENHANCED * TSL_MAX_ENHANCED];
@@ -963,13 +974,7 @@ static PetscBool MechanicsIncompatiblePlastic(const TslElementInput *in, const T
         R[ndof * a + i] += f * mq->p->dV;
       }
     for (PetscInt a = 0; a < n; a++) R[ndof * a + th] -= mq->p->N[a] * heat * o[q].w * mq->p->dV;
-    if (in->pstate_new) {
-      PetscReal *sn = in->pstate_new + ns * q;
-      for (PetscInt r = 0; r < 6; r++) sn[r] = st[r] + o[q].deps[r];
-      sn[6] = st[6] + o[q].dl;
-      for (PetscInt k = 0; k < 6 * nb; k++) sn[7 + k] = o[q].back[k];
-      if (mat->plastic.nkt > 1) sn[7 + 6 * nb] = 1, sn[8 + 6 * nb] = theta[q];
-    }
+    if (in->pstate_new) PlasticStateNew(mat, st, &o[q], theta[q], in->pstate_new + ns * q);
     if (res) {
       for (PetscInt r = 0; r < 6; r++) res->E[r] += eps[q][r] / nq, res->S[r] += o[q].sig[r] / nq, res->PE[r] += (st[r] + o[q].deps[r]) / nq;
       res->PEEQ += (st[6] + o[q].dl) / nq;
@@ -1061,8 +1066,9 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
   PetscBool             symmetric = PETSC_TRUE; /* C is, unless a back stress recovers (gamma > 0: the v_perp n^T term) */
   PetscReal             CB[TSL_MAX_ELEM_NODES * 3][6]; /* B^T C dV, by column of B */
 
-  for (PetscInt kb = 0; kb < nb; kb++)
-    if (mat->plastic.gamma[kb] > 0) symmetric = PETSC_FALSE;
+  for (PetscInt r = 0; r < mat->plastic.nkt; r++)
+    for (PetscInt kb = 0; kb < nb; kb++)
+      if (mat->plastic.kt_gamma[r][kb] > 0) symmetric = PETSC_FALSE;
   if (t->form->incompatible) return MechanicsIncompatiblePlastic(in, full, R, K, res, energy);
   if (energy) energy[0] = energy[2] = energy[3] = 0;
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(&hy, sizeof(hy)));
@@ -1097,13 +1103,7 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
         R[ndof * a + i] += f * mq.p->dV;
       }
     for (PetscInt a = 0; a < n; a++) R[ndof * a + th] -= mq.p->N[a] * heat * o.w * mq.p->dV; /* the plastic heat, a source */
-    if (in->pstate_new) {
-      PetscReal *sn = in->pstate_new + ns * q;
-      for (PetscInt r = 0; r < 6; r++) sn[r] = st[r] + o.deps[r];
-      sn[6] = st[6] + o.dl;
-      for (PetscInt k = 0; k < 6 * nb; k++) sn[7 + k] = o.back[k];
-      if (mat->plastic.nkt > 1) sn[7 + 6 * nb] = 1, sn[8 + 6 * nb] = theta; /* the back stresses' temperature (their C_k's) */
-    }
+    if (in->pstate_new) PlasticStateNew(mat, st, &o, theta, in->pstate_new + ns * q);
     if (res) {
       for (PetscInt r = 0; r < 6; r++) {
         PetscReal pe = st[r] + o.deps[r];

@@ -109,7 +109,7 @@ void TslMaterialBackStress(const TslMaterial *mat, PetscReal theta, PetscReal C[
   const TslPlasticTable *t = &mat->plastic;
   PetscInt               k = 0;
 
-  for (PetscInt b = 0; b < t->nback; b++) C[b] = t->C[b], gamma[b] = t->gamma[b], dC[b] = dgamma[b] = 0;
+  for (PetscInt b = 0; b < t->nback; b++) C[b] = t->kt_C[0][b], gamma[b] = t->kt_gamma[0][b], dC[b] = dgamma[b] = 0;
   if (t->nkt < 2) return;
   if (theta <= t->kt_theta[0] || theta >= t->kt_theta[t->nkt - 1]) {
     const PetscInt e = theta <= t->kt_theta[0] ? 0 : t->nkt - 1;

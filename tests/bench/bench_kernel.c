@@ -29,6 +29,26 @@ static void Constant(TslPropertyTable *t, PetscReal v0, PetscReal v1)
   t->value[0][0] = v0, t->value[0][1] = v1;
 }
 
+/* The benchmark's element of type t: a mildly distorted unit element with a nonzero state, an elastic material with
+ * every property (sec takes it) */
+static void Element(const TslElementType *t, TslMaterial *mat, TslElementSection *sec, PetscReal x[], PetscReal u[])
+{
+  const TslGeometry *g = t->geom;
+  PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(mat, sizeof(*mat)));
+  Constant(&mat->prop[TSL_PROP_ELASTIC], 200e3, 0.3);
+  Constant(&mat->prop[TSL_PROP_CONDUCTIVITY], 10, 0);
+  Constant(&mat->prop[TSL_PROP_DENSITY], 2, 0);
+  Constant(&mat->prop[TSL_PROP_SPECIFIC_HEAT], 3, 0);
+  Constant(&mat->prop[TSL_PROP_EXPANSION], 1e-5, 0);
+  *sec = (TslElementSection){mat, 0.5, 0, 0, 0};
+  for (PetscInt a = 0; a < g->nnode; a++) {
+    for (PetscInt d = 0; d < t->dim; d++) x[3 * a + d] = 0.5 * g->node_xi[a][d] + 0.02 * PetscSinReal(3.1 * a + 1.3 * d) + (d == 0 ? 2 : 0);
+    for (PetscInt i = 0; i < t->ndof; i++) u[t->ndof * a + i] = 1e-4 * PetscCosReal(1.7 * a + i);
+    u[t->ndof * a + t->ndof - 1] = 20 + a;
+  }
+  for (PetscInt a = g->nnode; a < TslElementTypeNodes(t); a++) x[3 * a] = 0.3; /* reference node of generalized plane strain */
+}
+
 /* ns per call of TslElementInternal (K or not), repeated for about `budget` seconds */
 static PetscErrorCode Time(const TslElementInput *in, PetscBool tangent, double budget, double *ns)
 {
@@ -90,7 +110,6 @@ int main(int argc, char **argv)
                         "res_ns/node", "jac_ns/node", "record_ns", "streamed"));
   for (PetscInt k = 0; k < TslElementTypeCount(); k++) {
     const TslElementType *t = TslElementTypeGet(k);
-    const TslGeometry    *g = t->geom;
     TslMaterial           mat;
     TslElementSection     sec;
     PetscReal             x[TSL_MAX_ELEM_NODES * 3] = {0}, u[TSL_MAX_ELEM_DOF] = {0}, ti[TSL_MAX_ELEM_NODES] = {0};
@@ -100,19 +119,7 @@ int main(int argc, char **argv)
     const PetscInt        nn = TslElementTypeNodes(t);
 
     if (argc > 2 && strcmp(argv[2], t->name)) continue;
-    PetscCall(PetscMemzero(&mat, sizeof(mat)));
-    Constant(&mat.prop[TSL_PROP_ELASTIC], 200e3, 0.3);
-    Constant(&mat.prop[TSL_PROP_CONDUCTIVITY], 10, 0);
-    Constant(&mat.prop[TSL_PROP_DENSITY], 2, 0);
-    Constant(&mat.prop[TSL_PROP_SPECIFIC_HEAT], 3, 0);
-    Constant(&mat.prop[TSL_PROP_EXPANSION], 1e-5, 0);
-    sec = (TslElementSection){&mat, 0.5, 0, 0, 0};
-    for (PetscInt a = 0; a < g->nnode; a++) {
-      for (PetscInt d = 0; d < t->dim; d++) x[3 * a + d] = 0.5 * g->node_xi[a][d] + 0.02 * PetscSinReal(3.1 * a + 1.3 * d) + (d == 0 ? 2 : 0);
-      for (PetscInt i = 0; i < t->ndof; i++) u[t->ndof * a + i] = 1e-4 * PetscCosReal(1.7 * a + i);
-      u[t->ndof * a + t->ndof - 1] = 20 + a;
-    }
-    for (PetscInt a = g->nnode; a < nn; a++) x[3 * a] = 0.3; /* reference node of generalized plane strain */
+    Element(t, &mat, &sec, x, u);
     in = (TslElementInput){.type = t, .sec = &sec, .x = x, .u = u, .theta_init = ti};
     PetscCall(Time(&in, PETSC_FALSE, budget, &r_ns));
     PetscCall(Time(&in, PETSC_TRUE, budget, &j_ns));
@@ -136,9 +143,7 @@ int main(int argc, char **argv)
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "%-9s %-9s %12s %12s %9s %9s %9s\n", "type", "hardening", "residual_ns", "jacobian_ns", "res/el", "jac/el", "res/rec"));
   for (PetscInt k = 0; k < TslElementTypeCount(); k++) {
     const TslElementType *t = TslElementTypeGet(k);
-    const TslGeometry    *g = t->geom;
     const char           *why;
-    const PetscInt        nn = TslElementTypeNodes(t);
     if ((argc > 2 && strcmp(argv[2], t->name)) || t->ndof < 2 || !TslElementTypePlasticSupported(t, &why)) continue;
     for (PetscInt law = 0; law < 2; law++) {
       TslMaterial       mat;
@@ -146,22 +151,10 @@ int main(int argc, char **argv)
       PetscReal         x[TSL_MAX_ELEM_NODES * 3] = {0}, u[TSL_MAX_ELEM_DOF] = {0}, ti[TSL_MAX_ELEM_NODES] = {0}, *st;
       TslElementInput   in;
       double            r_ns, j_ns;
-      PetscCall(PetscMemzero(&mat, sizeof(mat)));
-      Constant(&mat.prop[TSL_PROP_ELASTIC], 200e3, 0.3);
-      Constant(&mat.prop[TSL_PROP_CONDUCTIVITY], 10, 0);
-      Constant(&mat.prop[TSL_PROP_DENSITY], 2, 0);
-      Constant(&mat.prop[TSL_PROP_SPECIFIC_HEAT], 3, 0);
-      Constant(&mat.prop[TSL_PROP_EXPANSION], 1e-5, 0);
+      Element(t, &mat, &sec, x, u);
       mat.plastic.n = 2, mat.plastic.row[0][0] = 5, mat.plastic.row[1][0] = 105, mat.plastic.row[1][1] = 0.1;
-      if (law) mat.plastic.nback = 2, mat.plastic.C[0] = 4e4, mat.plastic.gamma[0] = 400, mat.plastic.C[1] = 1e3, mat.plastic.n = 1;
+      if (law) mat.plastic.nback = 2, mat.plastic.nkt = 1, mat.plastic.kt_C[0][0] = 4e4, mat.plastic.kt_gamma[0][0] = 400, mat.plastic.kt_C[0][1] = 1e3, mat.plastic.n = 1;
       mat.heat_fraction = 0.9;
-      sec = (TslElementSection){&mat, 0.5, 0, 0, 0};
-      for (PetscInt a = 0; a < g->nnode; a++) {
-        for (PetscInt d = 0; d < t->dim; d++) x[3 * a + d] = 0.5 * g->node_xi[a][d] + 0.02 * PetscSinReal(3.1 * a + 1.3 * d) + (d == 0 ? 2 : 0);
-        for (PetscInt i = 0; i < t->ndof; i++) u[t->ndof * a + i] = 1e-4 * PetscCosReal(1.7 * a + i);
-        u[t->ndof * a + t->ndof - 1] = 20 + a;
-      }
-      for (PetscInt a = g->nnode; a < nn; a++) x[3 * a] = 0.3;
       PetscCall(PetscCalloc1(TslMaterialPlasticState(&mat) * TslElementTypeMechanicalPoints(t, &sec), &st));
       in = (TslElementInput){.type = t, .sec = &sec, .x = x, .u = u, .theta_init = ti, .pstate = st, .inelastic_rate = 1.0, .dt = 1.0};
       PetscCall(Time(&in, PETSC_FALSE, budget, &r_ns));
