@@ -310,6 +310,8 @@ BAD_EDITS = {
     "combined_count": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS, NUMBER BACKSTRESSES=2\n 200.0, 40000.0, 400.0\n"),
     "combined_theta": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS\n 200.0, 40000.0, 400.0, 100.0\n 150.0, 30000.0, 400.0, 0.0\n"),
     "combined_gamma": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS\n 200.0, 40000.0, -400.0\n"),
+    "backstresses": (TABLE, "*PLASTIC, HARDENING=COMBINED, DATA TYPE=PARAMETERS, NUMBER BACKSTRESSES=11\n 200.0, 40000.0, 400.0\n"),
+    "data_type_isotropic": ("*PLASTIC\n", "*PLASTIC, DATA TYPE=PARAMETERS\n"),
     "cyclic_isotropic": (TABLE, TABLE + "*CYCLIC HARDENING, PARAMETERS\n 200.0, 50.0, 20.0\n"),
     "cyclic_b": (TABLE, PLASTIC_COMB1 + "*CYCLIC HARDENING, PARAMETERS\n 200.0, 50.0, -20.0\n"),
     "kinematic_lines": (TABLE, "*PLASTIC, HARDENING=KINEMATIC\n 200.0, 0.0\n 700.0, 0.5\n 800.0, 1.0\n"),
@@ -331,7 +333,7 @@ def bad(name):
     raise KeyError(name)
 
 
-BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "heat_fraction", "rate_first", "rate_theta", "rate_d"]
+BAD = ["first_strain", "yield_zero", "descending", "combined", "combined_count", "combined_theta", "backstresses", "data_type_isotropic", "combined_gamma", "cyclic_isotropic", "cyclic_b", "kinematic_lines", "kinematic_theta", "rate", "heat_fraction", "rate_first", "rate_theta", "rate_d"]
 
 
 def main():
