@@ -135,6 +135,8 @@ static inline PetscInt TslElementTypeThetaSlot(const TslElementType *t)
  * quadratic corner weights would be zero or negative. Contact follows it: such a face on a main surface is
  * its sub-faces (src/mesh/distribute.c). */
 PetscBool TslElementTypeSubdividedFace(const TslElementType *t, PetscInt face);
+/* Do the type's kernels take finite strain (TslElementInput.nlgeom)? All but the incompatible-mode types. */
+PetscBool TslElementTypeFiniteStrain(const TslElementType *t);
 /* Does the type take Mises plasticity (*PLASTIC; kernels.c)? If not, *why names what it lacks. */
 PetscBool TslElementTypePlasticSupported(const TslElementType *t, const char **why);
 /* Short names of the type's formulation and kinematics (docs, messages). */
@@ -194,6 +196,10 @@ typedef struct {
   PetscReal       *pstate_new;
   PetscReal        inelastic_rate;
   PetscReal        dt; /* the increment's time, for a rate-dependent yield stress (*RATE DEPENDENT: the rate dl / dt) */
+  /* finite strain (*STEP, NLGEOM; docs/elements.md "Finite strain"): the mechanical terms on the reference configuration
+   * with the Green-Lagrange strain and the second Piola-Kirchhoff stress, the outputs S Cauchy and E logarithmic, pressure
+   * on the deformed face; plastic and incompatible-mode elements keep small strain (the reader warns) */
+  PetscBool nlgeom;
 } TslElementInput;
 /* Mechanical points of the type (the plastic state's points). */
 PetscInt TslElementTypeMechanicalPoints(const TslElementType *t, const TslElementSection *sec);

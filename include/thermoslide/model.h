@@ -442,7 +442,8 @@ typedef struct {
   TslLoc            heat_loc;                  /* the *HEAT TRANSFER line */
   PetscReal         end_ss_rate;               /* *HEAT TRANSFER, END=SS: the step ends once no temperature changes faster (0: END=PERIOD) */
   PetscBool         direct;                    /* DIRECT: fixed increments */
-  PetscBool         nlgeom;                    /* NLGEOM accepted (small-strain kinematics used; see docs) */
+  PetscBool         nlgeom;                    /* finite strain (NLGEOM; on in every step after one that has it, check.c) */
+  PetscBool         nlgeom_given;              /* NLGEOM= written on the *STEP line */
   PetscBool         no_extrapolation;          /* EXTRAPOLATION=NO: each increment starts from the last converged state */
   PetscReal         dt0, period, dtmin, dtmax; /* data line; defaults dt0=period=1, dtmin=1e-5*period, dtmax=period */
   PetscReal         deltmx;                    /* DELTMX (0 = none) */

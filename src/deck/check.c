@@ -557,6 +557,53 @@ static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *STEP, NLGEOM: once on, on in the steps that follow (the dialect; NLGEOM=NO after it is overruled, with a
+ * warning). What keeps small strain in such a step says so at its *STEP line: an explicit step, and the plastic and
+ * incompatible-mode elements (docs/elements.md "Finite strain"). */
+static PetscErrorCode CheckNlgeom(TslModel *m)
+{
+  char where[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < m->nstep; i++) {
+    TslStep  *s = &m->steps[i];
+    PetscInt  plastic = -1, incompatible = -1;
+    if (i > 0 && m->steps[i - 1].nlgeom && !s->nlgeom) {
+      (void)TslLocString(m, s->loc, where, sizeof(where));
+      if (s->nlgeom_given)
+        PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s: warning: *STEP, NLGEOM=NO: step %s keeps finite strain, as every step after one with NLGEOM does\n",
+                              where, s->name));
+      s->nlgeom = PETSC_TRUE;
+    }
+    if (!s->nlgeom) continue;
+    (void)TslLocString(m, s->loc, where, sizeof(where));
+    if (s->explicit_dynamics) {
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            "%s: warning: *STEP, NLGEOM: the explicit step %s runs with small-strain kinematics (finite strain is not available in "
+                            "explicit steps yet): rotations or strains of more than a few percent will be wrong\n",
+                            where, s->name));
+      continue;
+    }
+    for (PetscInt e = 0; e < m->nelem && (plastic < 0 || incompatible < 0); e++) {
+      const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
+      if (incompatible < 0 && !TslElementTypeFiniteStrain(t)) incompatible = e;
+    }
+    for (PetscInt k = 0; k < m->nsection && plastic < 0; k++)
+      if (TslMaterialIsPlastic(&m->materials[m->sections[k].material_index])) plastic = k;
+    if (plastic >= 0)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            "%s: warning: *STEP, NLGEOM: in step %s the elements of material %s (*PLASTIC) keep small-strain kinematics (finite-strain "
+                            "plasticity is not available yet): their rotations or strains of more than a few percent will be wrong\n",
+                            where, s->name, m->sections[plastic].material));
+    if (incompatible >= 0)
+      PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                            "%s: warning: *STEP, NLGEOM: in step %s the incompatible-mode elements (%s, element %" PetscInt_FMT ") keep small-strain "
+                            "kinematics: their rotations or strains of more than a few percent will be wrong\n",
+                            where, s->name, TslElementTypeGet(m->elem_type[incompatible])->name, m->elem_id[incompatible]));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckSteps(TslModel *m)
 {
   PetscFunctionBeginUser;
@@ -816,6 +863,7 @@ PetscErrorCode TslModelCheck(TslModel *m)
   PetscCall(TiedPairs(m));
   for (PetscInt i = 0; i < m->ntie; i++) PetscCall(CheckTie(m, &m->ties[i]));
   PetscCall(CheckSteps(m));
+  PetscCall(CheckNlgeom(m));
   PetscCall(AttachReferenceNodes(m));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -2336,13 +2336,8 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
   USER_CHECK(s->max_inc > 0, LOC_FMT "INC= must be positive", KLOC(d));
   nl = ParamUpper(d, "NLGEOM", buf, sizeof(buf));
   USER_CHECK(!nl || !nl[0] || !strcmp(nl, "YES") || !strcmp(nl, "NO"), LOC_FMT "NLGEOM=%s: expected YES or NO", KLOC(d), nl);
-  s->nlgeom = (nl && strcmp(nl, "NO")) ? PETSC_TRUE : PETSC_FALSE;
-  if (s->nlgeom) /* NLGEOM alone means YES in the dialect */
-    PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                          LOC_FMT
-                          "warning: *STEP, NLGEOM: step %s runs with small-strain kinematics (finite strain is not available): the "
-                          "results hold for small rotations and strains only; rotations or strains of more than a few percent will be wrong\n",
-                          KLOC(d), s->name));
+  s->nlgeom       = (nl && strcmp(nl, "NO")) ? PETSC_TRUE : PETSC_FALSE; /* NLGEOM alone means YES in the dialect */
+  s->nlgeom_given = nl ? PETSC_TRUE : PETSC_FALSE;                           /* a later step inherits it (check.c, CheckNlgeom) */
   /* EXTRAPOLATION=LINEAR (the dialect's default: each increment starts from the last one's change, scaled),
    * NO; PARABOLIC is taken as LINEAR, with a warning */
   nl = ParamUpper(d, "EXTRAPOLATION", buf, sizeof(buf));

@@ -45,6 +45,24 @@ PetscBool TslElementPointEvaluate(const TslElementType *type, const TslElementSe
 void TslElementStrainMatrix(const TslElementType *type, const TslElementSection *sec, const PetscReal x[], const TslElementPoint *p,
                             PetscReal B[6][TSL_MAX_ELEM_NODES * 3]);
 
+/* Finite strain (TslElementInput.nlgeom; docs/elements.md "Finite strain"): the displacement gradient H = F - I at a
+ * point (kept apart from I, so that small strains keep their digits in E = (H + H^T + H^T H) / 2) and
+ * each displacement column's dF/du_c, a few entries (row i, column K, value) of a 3 x 3 matrix. The components are
+ * the kinematics' own: (x, y, z) in the plane and in 3D, (r, z, theta) in axisymmetry, where F_33 = (r + u_r) / r
+ * and, with twist phi (rotation about the axis, as the twist dof), F_31 = (r + u_r) phi_,r, F_32 = (r + u_r) phi_,z
+ * (the spatial basis turned with the point, so a rigid twist gives F = I). Generalized plane strain: F_33 = 1 +
+ * eps_33 of the reference node's dofs; plane stress: F_33 = 1 here (the condensed elasticity never reads it).
+ * Every kinematics' F is linear in u except twist's F_31, F_32 (the products u_r phi: TslGradientColumn has the
+ * point's dF/du_c, and the kernel adds the second derivative's term). */
+#define TSL_GRADIENT_ENTRIES 6
+typedef struct {
+  PetscInt  n;
+  PetscInt  i[TSL_GRADIENT_ENTRIES], k[TSL_GRADIENT_ENTRIES];
+  PetscReal v[TSL_GRADIENT_ENTRIES];
+} TslGradientColumn;
+void TslElementDeformation(const TslElementType *type, const TslElementSection *sec, const PetscReal x[], const TslElementPoint *p, const PetscReal u[],
+                           PetscReal H[3][3], TslGradientColumn col[]);
+
 /* The centre of the reference element, the average of its corners (xi = 0 for quad4 and hex8, the centroid
  * for triangles, tetrahedra and wedges): the point of the hourglass control and of the bulk viscosity. */
 static inline void TslElementCentre(const TslGeometry *g, PetscReal xi[3])

@@ -399,6 +399,11 @@ const char *TslElementTypeFormulationName(const TslElementType *t)
   return t->form->name;
 }
 
+PetscBool TslElementTypeFiniteStrain(const TslElementType *t)
+{
+  return t->form->incompatible ? PETSC_FALSE : PETSC_TRUE;
+}
+
 PetscBool TslElementTypePlasticSupported(const TslElementType *t, const char **why)
 {
   (void)t; /* every kinematics and formulation takes *PLASTIC now (a future one without it names itself here) */

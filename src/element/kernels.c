@@ -90,12 +90,32 @@ static PetscBool LeanStrain(const TslElementInput *in)
   return t->kin == TSL_KIN_SOLID3D && t->ndof == 4 && TslElementTypeNodes(t) == t->geom->nnode ? PETSC_TRUE : PETSC_FALSE;
 }
 
+/* The nonzeros of B's columns (MechPoint.bz_*) and, with strain, eps = B u summed in that order. */
+static void StrainNonzeros(const TslElementInput *in, MechPoint *mq, PetscBool strain)
+{
+  const PetscInt ndof = in->type->ndof, nu = ndof - 1, n = TslElementTypeNodes(in->type);
+
+  if (strain)
+    for (PetscInt r = 0; r < 6; r++) mq->eps[r] = 0;
+  for (PetscInt a = 0; a < n; a++)
+    for (PetscInt i = 0; i < nu; i++) {
+      const PetscInt c = nu * a + i;
+      mq->bz_n[c]      = 0;
+      for (PetscInt r = 0; r < 6; r++) {
+        if (mq->B[r][c] == 0) continue;
+        mq->bz_row[c][mq->bz_n[c]]   = r;
+        mq->bz_val[c][mq->bz_n[c]++] = mq->B[r][c];
+        if (strain) mq->eps[r] += mq->B[r][c] * in->u[ndof * a + i];
+      }
+    }
+}
+
 /* pre: the point's geometry when already evaluated (NULL: evaluate it here); lean: no B (LeanStrain
  * types only; the caller then forms B^T sigma from dNdx itself, MechanicsForce) */
 static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi[], PetscReal w, const TslElementPoint *pre, PetscBool lean, MechPoint *mq)
 {
   const TslElementType *t    = in->type;
-  const PetscInt        ndof = t->ndof, nu = ndof - 1, n = TslElementTypeNodes(t);
+  const PetscInt        n = TslElementTypeNodes(t);
   PetscReal             theta;
 
   if (pre)
@@ -116,23 +136,183 @@ static PetscBool MechPointEvaluate(const TslElementInput *in, const PetscReal xi
     goto material;
   }
   TslElementStrainMatrix(t, in->sec, in->x, mq->p, mq->B);
-  for (PetscInt r = 0; r < 6; r++) mq->eps[r] = 0;
-  for (PetscInt a = 0; a < n; a++)
-    for (PetscInt i = 0; i < nu; i++) {
-      const PetscInt c = nu * a + i;
-      mq->bz_n[c]      = 0;
-      for (PetscInt r = 0; r < 6; r++) {
-        if (mq->B[r][c] == 0) continue;
-        mq->bz_row[c][mq->bz_n[c]]   = r;
-        mq->bz_val[c][mq->bz_n[c]++] = mq->B[r][c];
-        mq->eps[r] += mq->B[r][c] * in->u[ndof * a + i];
-      }
-    }
+  StrainNonzeros(in, mq, PETSC_TRUE);
 material:
   theta = NodalTheta(in, mq->p->N, in->u);
   TslMaterialEval(in->sec->mat, theta, &mq->mp);
   mq->eps_th = TslMaterialThermalStrain(in->sec->mat, theta, PointInitialTheta(in, mq->p), &mq->deps_th);
   return PETSC_TRUE;
+}
+
+/* Finite strain (TslElementInput.nlgeom, *STEP, NLGEOM; docs/elements.md "Finite strain"), total Lagrangian on the
+ * reference configuration with the material as St Venant-Kirchhoff (CalculiX's reading of a linear elastic material in
+ * a geometrically nonlinear step): S = D (E - E_th m), S the second Piola-Kirchhoff stress, E = (F^T F - I) / 2 the
+ * Green-Lagrange strain and E_th = eps_th + eps_th^2 / 2 the Green-Lagrange strain of the free thermal stretch
+ * 1 + eps_th (so a free body heated by alpha dT is stress-free with J = (1 + alpha dT)^3). The point's B becomes dE/du
+ * (the rows of sym(F^T dF/du_c)), its eps the E of F, and the element's forms keep their shape: R_u = int B^T S dV0,
+ * K_uu = int B^T D B dV0 plus the geometric stiffness int dF_c^T dF_d : S dV0 (GeometricStiffness). Every element
+ * formulation goes through these points (hybrid: the pressure on tr E; reduced: the hourglass control of u on the
+ * reference configuration, zero for a rigid motion; continuum shells: the shell's D in its reference frame). */
+typedef struct {
+  PetscReal         F[3][3], J;
+  TslGradientColumn col[TSL_MAX_ELEM_NODES * 3];
+} FinitePoint;
+
+static const PetscInt VoigtI[6] = {0, 1, 2, 0, 0, 1}, VoigtJ[6] = {0, 1, 2, 1, 2, 2};
+
+static PetscReal Det3(const PetscReal F[3][3])
+{
+  return F[0][0] * (F[1][1] * F[2][2] - F[1][2] * F[2][1]) - F[0][1] * (F[1][0] * F[2][2] - F[1][2] * F[2][0]) +
+         F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]);
+}
+
+/* The small-strain point mq (MechPointEvaluate, not lean) made the finite-strain one; PETSC_FALSE where det F <= 0
+ * (an element turned inside out: the increment is cut back, as for an inverted element). */
+static PetscBool MechPointFinite(const TslElementInput *in, MechPoint *mq, FinitePoint *fp)
+{
+  const TslElementType *t    = in->type;
+  const PetscInt        ncol = TslElementTypeNodes(t) * (t->ndof - 1);
+  PetscReal             e    = mq->eps_th;
+
+  PetscReal             H[3][3];
+
+  TslElementDeformation(t, in->sec, in->x, mq->p, in->u, H, fp->col);
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = 0; j < 3; j++) fp->F[i][j] = (i == j) + H[i][j];
+  fp->J = Det3(fp->F);
+  if (!(fp->J > 0)) return PETSC_FALSE;
+  for (PetscInt c = 0; c < ncol; c++) {
+    const TslGradientColumn *col = &fp->col[c];
+    for (PetscInt r = 0; r < 6; r++) mq->B[r][c] = 0;
+    for (PetscInt q = 0; q < col->n; q++) { /* (F^T dF)_KL += F_iK v for the entry (i, L, v) */
+      const PetscInt i = col->i[q], L = col->k[q];
+      const PetscReal v = col->v[q];
+      mq->B[L][c] += fp->F[i][L] * v;
+      for (PetscInt r = 3; r < 6; r++) {
+        if (VoigtJ[r] == L) mq->B[r][c] += fp->F[i][VoigtI[r]] * v;
+        if (VoigtI[r] == L) mq->B[r][c] += fp->F[i][VoigtJ[r]] * v;
+      }
+    }
+  }
+  StrainNonzeros(in, mq, PETSC_FALSE);
+  for (PetscInt r = 0; r < 6; r++) { /* E = (H + H^T + H^T H) / 2, engineering shear */
+    const PetscInt K = VoigtI[r], L = VoigtJ[r];
+    PetscReal      c = H[K][L] + H[L][K];
+    for (PetscInt i = 0; i < 3; i++) c += H[i][K] * H[i][L];
+    mq->eps[r] = r < 3 ? 0.5 * c : c;
+  }
+  mq->eps_th = e + 0.5 * e * e;
+  mq->deps_th *= 1 + e;
+  return PETSC_TRUE;
+}
+
+static void VoigtTensor(const PetscReal v[6], PetscReal S[3][3])
+{
+  for (PetscInt r = 0; r < 6; r++) S[VoigtI[r]][VoigtJ[r]] = S[VoigtJ[r]][VoigtI[r]] = v[r];
+}
+
+/* The geometric stiffness at a point, int dF_c^T dF_d : S dV0 (two columns' entries pair where they share the row i:
+ * v w S_KL), and twist's P : d2F / du_c du_d (P = F S; F_31, F_32 are products of u_r and phi) into the upper
+ * triangle of Kuu (ncol x ncol). */
+static void GeometricStiffness(const TslElementInput *in, const MechPoint *mq, const FinitePoint *fp, const PetscReal sig[6], PetscReal Kuu[])
+{
+  const TslElementType *t = in->type;
+  const PetscInt        nu = t->ndof - 1, ncol = TslElementTypeNodes(t) * nu, n = t->geom->nnode;
+  const PetscReal       dV = mq->p->dV;
+  PetscReal             S[3][3];
+
+  VoigtTensor(sig, S);
+  for (PetscInt c1 = 0; c1 < ncol; c1++) {
+    const TslGradientColumn *a = &fp->col[c1];
+    for (PetscInt c2 = c1; c2 < ncol; c2++) {
+      const TslGradientColumn *b = &fp->col[c2];
+      PetscReal                k = 0;
+      for (PetscInt q1 = 0; q1 < a->n; q1++)
+        for (PetscInt q2 = 0; q2 < b->n; q2++)
+          if (a->i[q1] == b->i[q2]) k += a->v[q1] * b->v[q2] * S[a->k[q1]][b->k[q2]];
+      Kuu[c1 * ncol + c2] += k * dV;
+    }
+  }
+  if (TslKinematicsRowGet(t->kin)->twist) {
+    PetscReal P[2] = {0, 0}; /* P_3j = F_3K S_Kj, j = r, z */
+    for (PetscInt j = 0; j < 2; j++)
+      for (PetscInt k = 0; k < 3; k++) P[j] += fp->F[2][k] * S[k][j];
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt b = 0; b < n; b++) {
+        const PetscInt c = nu * a, d = nu * b + 2; /* u_r of a, phi of b */
+        Kuu[PetscMin(c, d) * ncol + PetscMax(c, d)] += mq->p->N[a] * (P[0] * mq->p->dNdx[b][0] + P[1] * mq->p->dNdx[b][1]) * dV;
+      }
+  }
+}
+
+/* Eigenvalues w and eigenvectors (columns of Q) of a symmetric 3 x 3 matrix, by cyclic Jacobi rotations. */
+static void SymmetricEigen3(const PetscReal A0[3][3], PetscReal w[3], PetscReal Q[3][3])
+{
+  PetscReal A[3][3];
+
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = 0; j < 3; j++) A[i][j] = A0[i][j], Q[i][j] = i == j;
+  for (PetscInt sweep = 0; sweep < 50; sweep++) {
+    const PetscReal off = PetscAbsReal(A[0][1]) + PetscAbsReal(A[0][2]) + PetscAbsReal(A[1][2]);
+    const PetscReal dia = PetscAbsReal(A[0][0]) + PetscAbsReal(A[1][1]) + PetscAbsReal(A[2][2]);
+    if (off <= 1e-18 * dia || off == 0) break;
+    for (PetscInt p = 0; p < 2; p++)
+      for (PetscInt q = p + 1; q < 3; q++) {
+        PetscReal th, tn, cs, sn;
+        if (A[p][q] == 0) continue;
+        th = (A[q][q] - A[p][p]) / (2 * A[p][q]);
+        tn = (th >= 0 ? 1 : -1) / (PetscAbsReal(th) + PetscSqrtReal(th * th + 1));
+        cs = 1 / PetscSqrtReal(tn * tn + 1), sn = tn * cs;
+        for (PetscInt k = 0; k < 3; k++) { /* A = G^T A G, G the rotation in the (p, q) plane */
+          const PetscReal akp = A[k][p], akq = A[k][q];
+          A[k][p] = cs * akp - sn * akq, A[k][q] = sn * akp + cs * akq;
+        }
+        for (PetscInt k = 0; k < 3; k++) {
+          const PetscReal apk = A[p][k], aqk = A[q][k];
+          A[p][k] = cs * apk - sn * aqk, A[q][k] = sn * apk + cs * aqk;
+        }
+        for (PetscInt k = 0; k < 3; k++) {
+          const PetscReal qkp = Q[k][p], qkq = Q[k][q];
+          Q[k][p] = cs * qkp - sn * qkq, Q[k][q] = sn * qkp + cs * qkq;
+        }
+      }
+  }
+  for (PetscInt i = 0; i < 3; i++) w[i] = A[i][i];
+}
+
+/* A finite-strain point's share of the element output (nq points): the Cauchy stress sigma = F S F^T / J and the
+ * logarithmic strain LE = ln V = 1/2 ln(F F^T) (engineering shear, as E), Abaqus's S and LE. Plane stress: F_33 from
+ * the E_33 that makes S_33 = 0. */
+static void FiniteOutput(const TslElementInput *in, const MechPoint *mq, const FinitePoint *fp, const PetscReal sig[6], PetscInt nq, TslElementResult *res)
+{
+  PetscReal F[3][3], S[3][3], b[3][3], w[3], Q[3][3], J;
+
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = 0; j < 3; j++) F[i][j] = fp->F[i][j];
+  J = fp->J;
+  if (TslKinematicsRowGet(in->type->kin)->free_normal) {
+    const PetscReal ratio = mq->mp.nu / (1 - mq->mp.nu), e33 = mq->eps_th - ratio * (mq->eps[0] + mq->eps[1] - 2 * mq->eps_th);
+    F[2][2] = PetscSqrtReal(PetscMax(1 + 2 * e33, 0));
+    J *= F[2][2];
+  }
+  VoigtTensor(sig, S);
+  for (PetscInt r = 0; r < 6; r++) {
+    const PetscInt i = VoigtI[r], j = VoigtJ[r];
+    PetscReal      s = 0, bb = 0;
+    for (PetscInt k = 0; k < 3; k++) {
+      bb += F[i][k] * F[j][k];
+      for (PetscInt l = 0; l < 3; l++) s += F[i][k] * S[k][l] * F[j][l];
+    }
+    res->S[r] += s / J / nq;
+    b[i][j] = b[j][i] = bb;
+  }
+  SymmetricEigen3(b, w, Q);
+  for (PetscInt r = 0; r < 6; r++) {
+    const PetscInt i = VoigtI[r], j = VoigtJ[r];
+    PetscReal      le = 0;
+    for (PetscInt k = 0; k < 3; k++) le += Q[i][k] * 0.5 * PetscLogReal(w[k]) * Q[j][k];
+    res->E[r] += (r < 3 ? le : 2 * le) / nq;
+  }
 }
 
 /* Deviatoric elasticity 2 mu (I - m m^T / 3) in Voigt form (engineering shear) and the bulk modulus. */
@@ -150,6 +330,7 @@ typedef struct {
   PetscReal H[TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], g0[TSL_MAX_PRESSURE];
   PetscReal dH[TSL_MAX_ELEM_NODES][TSL_MAX_PRESSURE][TSL_MAX_PRESSURE], dg0[TSL_MAX_ELEM_NODES][TSL_MAX_PRESSURE];
   PetscReal p[TSL_MAX_PRESSURE]; /* condensed pressure coefficients (mean stress, tension positive) */
+  PetscReal trE[TSL_MAX_PRESSURE]; /* finite strain: int P tr E dV (small strain: G^T u is that integral) */
 } Hybrid;
 
 /* Inverse of a small dense matrix (n <= TSL_MAX_ENHANCED, row stride lda) by Gauss-Jordan elimination with partial
@@ -270,6 +451,86 @@ static PetscBool MechanicsSolid3DTangent(const TslElementInput *in, const TslEle
           if (b != a) K[(4 * b + j) * nd + 4 * a + i] += kij;
         }
     }
+  return PETSC_TRUE;
+}
+
+/* Finite strain in a 3D solid (LeanStrain types, displacement formulation; FinitePoint's model) by node pairs: with
+ * dF/du_ai = e_i (x) g_a (g_a = grad N_a), h_a = F g_a and b = F F^T, for isotropic D
+ *   R_ai = (F S g_a)_i dV,  K_ab,ij = [lambda h_a,i h_b,j + mu (b_ij g_a.g_b + h_b,i h_a,j) + delta_ij g_a^T S g_b] dV,
+ *   K_ai,theta_b = (F dS/dtheta g_a)_i N_b dV,
+ * the B^T D B and geometric terms of the general path without B (a tenth of its products). K may be NULL. */
+static PetscBool MechanicsSolid3DFinite(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[])
+{
+  const TslElementType *t    = in->type;
+  const TslGeometry    *g    = t->geom;
+  const TslQuadrature  *quad = t->form->quadrature(g, in->sec);
+  const PetscInt        n = g->nnode, nd = 4 * n;
+  MechPoint             mq;
+
+  for (PetscInt q = 0; q < quad->n; q++) {
+    PetscReal D[6][6], dD[6][6], Eg[6], emech[6], sig[6], dsig[6], F[3][3], H[3][3] = {{0}}, S[3][3], dS[3][3], P[3][3], dP[3][3], bb[3][3];
+    PetscReal lambda, mu, dV, e, eth, deth, h[TSL_MAX_ELEM_NODES][3];
+
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, PETSC_TRUE, &mq)) return PETSC_FALSE;
+    dV = mq.p->dV;
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < 3; i++)
+        for (PetscInt j = 0; j < 3; j++) H[i][j] += in->u[4 * a + i] * mq.p->dNdx[a][j];
+    for (PetscInt i = 0; i < 3; i++)
+      for (PetscInt j = 0; j < 3; j++) F[i][j] = (i == j) + H[i][j];
+    if (!(Det3(F) > 0)) return PETSC_FALSE;
+    for (PetscInt r = 0; r < 6; r++) {
+      const PetscInt K0 = VoigtI[r], L = VoigtJ[r];
+      PetscReal      c = H[K0][L] + H[L][K0];
+      for (PetscInt i = 0; i < 3; i++) c += H[i][K0] * H[i][L];
+      Eg[r] = r < 3 ? 0.5 * c : c;
+    }
+    e = mq.eps_th, eth = e + 0.5 * e * e, deth = (1 + e) * mq.deps_th;
+    TslElementElasticity(t, in->sec, mq.p, &mq.mp, D, K ? dD : NULL);
+    TslElementLame(&mq.mp, &lambda, &mu);
+    for (PetscInt r = 0; r < 6; r++) emech[r] = Eg[r] - VoigtM[r] * eth;
+    for (PetscInt r = 0; r < 6; r++) {
+      sig[r] = dsig[r] = 0;
+      for (PetscInt s = 0; s < 6; s++) {
+        sig[r] += D[r][s] * emech[s];
+        if (K) dsig[r] += dD[r][s] * emech[s] - D[r][s] * VoigtM[s] * deth;
+      }
+    }
+    VoigtTensor(sig, S);
+    VoigtTensor(dsig, dS);
+    for (PetscInt i = 0; i < 3; i++)
+      for (PetscInt j = 0; j < 3; j++) {
+        P[i][j] = dP[i][j] = bb[i][j] = 0;
+        for (PetscInt k = 0; k < 3; k++) P[i][j] += F[i][k] * S[k][j], dP[i][j] += F[i][k] * dS[k][j], bb[i][j] += F[i][k] * F[j][k];
+      }
+    for (PetscInt a = 0; a < n; a++) {
+      const PetscReal *ga = mq.p->dNdx[a];
+      for (PetscInt i = 0; i < 3; i++) {
+        R[4 * a + i] += (P[i][0] * ga[0] + P[i][1] * ga[1] + P[i][2] * ga[2]) * dV;
+        h[a][i] = F[i][0] * ga[0] + F[i][1] * ga[1] + F[i][2] * ga[2];
+      }
+    }
+    if (!K) continue;
+    for (PetscInt a = 0; a < n; a++) {
+      const PetscReal *ga = mq.p->dNdx[a];
+      for (PetscInt i = 0; i < 3; i++) {
+        const PetscReal v   = (dP[i][0] * ga[0] + dP[i][1] * ga[1] + dP[i][2] * ga[2]) * dV;
+        PetscReal      *row = &K[(4 * a + i) * nd + 3];
+        for (PetscInt b = 0; b < n; b++) row[4 * b] += v * mq.p->N[b];
+      }
+      for (PetscInt b = a; b < n; b++) {
+        const PetscReal *gb = mq.p->dNdx[b], gg = ga[0] * gb[0] + ga[1] * gb[1] + ga[2] * gb[2];
+        PetscReal        sgs = 0;
+        for (PetscInt k = 0; k < 3; k++) sgs += ga[k] * (S[k][0] * gb[0] + S[k][1] * gb[1] + S[k][2] * gb[2]);
+        for (PetscInt i = 0; i < 3; i++)
+          for (PetscInt j = 0; j < 3; j++) {
+            const PetscReal kij = (lambda * h[a][i] * h[b][j] + mu * (bb[i][j] * gg + h[b][i] * h[a][j]) + (i == j ? sgs : 0)) * dV;
+            K[(4 * a + i) * nd + 4 * b + j] += kij;
+            if (b != a) K[(4 * b + j) * nd + 4 * a + i] += kij;
+          }
+      }
+    }
+  }
   return PETSC_TRUE;
 }
 
@@ -492,6 +753,7 @@ static void HybridPoint(const TslElementInput *in, const MechPoint *mq, PetscRea
   for (PetscInt k = 0; k < hy->np; k++) {
     for (PetscInt c = 0; c < ncol; c++) hy->G[c][k] += Bm[c] * P[k] * mq->p->dV;
     hy->g0[k] += P[k] * 3 * mq->eps_th * mq->p->dV;
+    hy->trE[k] += P[k] * (mq->eps[0] + mq->eps[1] + mq->eps[2]) * mq->p->dV;
     for (PetscInt l = 0; l < hy->np; l++) hy->H[k][l] += P[k] * P[l] / kb * mq->p->dV;
     for (PetscInt b = 0; b < n; b++) {
       hy->dg0[b][k] += P[k] * 3 * mq->deps_th * mq->p->N[b] * mq->p->dV;
@@ -514,8 +776,10 @@ static void HybridCondense(const TslElementInput *in, Hybrid *hy, const PetscRea
   SmallInverse(np, hy->H, Hi);
   for (PetscInt k = 0; k < np; k++) {
     rhs[k] = -hy->g0[k];
-    for (PetscInt a = 0; a < nv; a++)
-      for (PetscInt i = 0; i < nu; i++) rhs[k] += hy->G[nu * a + i][k] * in->u[ndof * a + i];
+    if (in->nlgeom) rhs[k] += hy->trE[k];
+    else
+      for (PetscInt a = 0; a < nv; a++)
+        for (PetscInt i = 0; i < nu; i++) rhs[k] += hy->G[nu * a + i][k] * in->u[ndof * a + i];
   }
   for (PetscInt k = 0; k < np; k++) {
     hy->p[k] = 0;
@@ -1161,6 +1425,51 @@ PetscInt TslElementTypeMechanicalPoints(const TslElementType *t, const TslElemen
   return t->form->quadrature(t->geom, sec)->n;
 }
 
+/* The displacement block from the upper triangle Kuu (ncol x ncol), both triangles, into K. */
+static void FoldUpper(const TslElementInput *in, PetscInt ncol, const PetscReal Kuu[], PetscReal K[])
+{
+  const TslElementType *t    = in->type;
+  const PetscInt        ndof = t->ndof, nu = ndof - 1, nd = TslElementTypeNodes(t) * ndof;
+
+  for (PetscInt c1 = 0; c1 < ncol; c1++)
+    for (PetscInt c2 = c1; c2 < ncol; c2++) {
+      const PetscInt r1 = ndof * (c1 / nu) + c1 % nu, r2 = ndof * (c2 / nu) + c2 % nu;
+      K[r1 * nd + r2] += Kuu[c1 * ncol + c2];
+      if (c2 != c1) K[r2 * nd + r1] += Kuu[c1 * ncol + c2];
+    }
+}
+
+/* A finite-strain hybrid element after its condensation: each point's pressure p = P^T p_hat in the geometric
+ * stiffness (the deviator's share was added with the points) and in the output, the Cauchy stress of the point's
+ * whole S = S_dev + p m. Kuu: work space. */
+static PetscBool FiniteHybridPressure(const TslElementInput *in, const Hybrid *hy, PetscReal K[], TslElementResult *res, PetscReal Kuu[])
+{
+  const TslElementType *t    = in->type;
+  const TslQuadrature  *quad = t->form->quadrature(t->geom, in->sec);
+  const PetscInt        ncol = TslElementTypeNodes(t) * (t->ndof - 1);
+  MechPoint             mq;
+  FinitePoint           fp;
+
+  if (K) PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(Kuu, ncol * ncol));
+  if (res)
+    for (PetscInt r = 0; r < 6; r++) res->S[r] = res->E[r] = 0;
+  for (PetscInt q = 0; q < quad->n; q++) {
+    PetscReal P[TSL_MAX_PRESSURE], pq = 0, sig[6], D[6][6];
+    if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], NULL, PETSC_FALSE, &mq) || !MechPointFinite(in, &mq, &fp)) return PETSC_FALSE;
+    (void)t->form->pressure(t->geom, mq.p, P);
+    for (PetscInt k = 0; k < hy->np; k++) pq += P[k] * hy->p[k];
+    for (PetscInt r = 0; r < 6; r++) sig[r] = VoigtM[r] * pq;
+    if (K) GeometricStiffness(in, &mq, &fp, sig, Kuu);
+    if (!res) continue;
+    Deviatoric(mq.mp.E / (2 * (1 + mq.mp.nu)), D);
+    for (PetscInt r = 0; r < 6; r++)
+      for (PetscInt s = 0; s < 6; s++) sig[r] += D[r][s] * mq.eps[s];
+    FiniteOutput(in, &mq, &fp, sig, quad->n, res);
+  }
+  if (K) FoldUpper(in, ncol, Kuu, K);
+  return PETSC_TRUE;
+}
+
 /* Mechanical terms over the formulation's points. Displacement formulation:
  *   sigma = D (eps - eps_th m),  R_u = int B^T sigma dV,
  *   K_uu = int B^T D B dV,  K_u_theta_b = int B^T (dD (eps - eps_th m) - D m deps_th) N_b dV.
@@ -1180,22 +1489,26 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   const PetscInt        ndof = t->ndof, th = ndof - 1, nu = ndof - 1, n = g->nnode, nv = TslElementTypeNodes(t), nd = nv * ndof, ncol = nv * nu;
   const PetscBool       hybrid      = t->form->pressure ? PETSC_TRUE : PETSC_FALSE;
   PetscReal             sdev_avg[6] = {0, 0, 0, 0, 0, 0}, P_avg[TSL_MAX_PRESSURE] = {0};
-  const PetscBool       lean        = !K && !res && !hybrid && LeanStrain(in); /* forces only: no B, no tangent terms */
+  const PetscBool       finite      = in->nlgeom;                               /* finite strain (FinitePoint) */
+  const PetscBool       lean        = !K && !res && !hybrid && !finite && LeanStrain(in); /* forces only: no B, no tangent terms */
   PetscReal            *se          = res ? &res->strain_energy : energy;      /* int 1/2 sigma : eps_mech dV, when wanted */
   MechPoint             mq;
+  FinitePoint           fp;
   PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 
   if (nu == 0) return PETSC_TRUE; /* a heat-transfer type: no displacement, no mechanical term */
   if (in->pstate) return MechanicsPlastic(in, full, R, K, res, NULL);
   if (t->form->incompatible) return MechanicsIncompatible(in, full, R, K, res, energy);
-  if (K && !se && !hybrid && LeanStrain(in)) return MechanicsSolid3DTangent(in, full, R, K);
+  if (K && !se && !hybrid && !finite && LeanStrain(in)) return MechanicsSolid3DTangent(in, full, R, K);
+  if (finite && !se && !res && !hybrid && LeanStrain(in)) return MechanicsSolid3DFinite(in, full, R, K);
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(hy, sizeof(*hy)));
-  if (K) PetscCallAbort(PETSC_COMM_SELF, PetscArrayzero(Kuu, ncol * ncol));
+  if (K) memset(Kuu, 0, sizeof(PetscReal) * (size_t)(ncol * ncol)); /* (not PetscArrayzero: GCC then cannot see Kuu set for FoldUpper) */
   for (PetscInt q = 0; q < quad->n; q++) {
     PetscReal D[6][6], dD[6][6], emech[6], sig[6], dsig[6];
     PetscReal DB[6][TSL_MAX_ELEM_NODES * 3];
 
     if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, lean, &mq)) return PETSC_FALSE;
+    if (finite && !MechPointFinite(in, &mq, &fp)) return PETSC_FALSE;
     if (hybrid) {
       const PetscReal nuv = mq.mp.nu, E = mq.mp.E, mu = E / (2 * (1 + nuv)), kb = E / (3 * (1 - 2 * nuv));
       const PetscReal dmu = mq.mp.dE / (2 * (1 + nuv)) - mq.mp.dnu * E / (2 * (1 + nuv) * (1 + nuv));
@@ -1237,7 +1550,9 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         for (PetscInt k = 0; k < mq.bz_n[c]; k++) f += mq.bz_val[c][k] * sig[mq.bz_row[c][k]];
         R[ndof * a + i] += f * mq.p->dV;
       }
-    if (res) {
+    if (res && finite) {
+      if (!hybrid) FiniteOutput(in, &mq, &fp, sig, quad->n, res); /* hybrid: with each point's pressure, below */
+    } else if (res) {
       for (PetscInt r = 0; r < 6; r++) {
         res->E[r] += mq.eps[r] / quad->n;
         if (hybrid)
@@ -1253,6 +1568,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
         for (PetscInt r = 0; r < 6; r++) *se += 0.5 * sig[r] * mq.eps[r] * mq.p->dV;
     }
     if (!K) continue;
+    if (finite) GeometricStiffness(in, &mq, &fp, sig, Kuu);
     /* DB = D B dV (rows of D skip its zeros; contiguous in the columns), then the upper triangle of
      * B^T D B dV row by row over the nonzeros of B's column (symmetric: D is), into Kuu */
     for (PetscInt r = 0; r < 6; r++) {
@@ -1274,14 +1590,11 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
       for (PetscInt b = 0; b < n; b++) K[(ndof * (c1 / nu) + c1 % nu) * nd + ndof * b + th] += Bds * mq.p->N[b] * mq.p->dV;
     }
   }
-  if (K) /* the displacement block, both triangles */
-    for (PetscInt c1 = 0; c1 < ncol; c1++)
-      for (PetscInt c2 = c1; c2 < ncol; c2++) {
-        const PetscInt r1 = ndof * (c1 / nu) + c1 % nu, r2 = ndof * (c2 / nu) + c2 % nu;
-        K[r1 * nd + r2] += Kuu[c1 * ncol + c2];
-        if (c2 != c1) K[r2 * nd + r1] += Kuu[c1 * ncol + c2];
-      }
-  if (hybrid) HybridCondense(in, hy, P_avg, sdev_avg, R, K, res, se);
+  if (K) FoldUpper(in, ncol, Kuu, K);
+  if (hybrid) {
+    HybridCondense(in, hy, P_avg, sdev_avg, R, K, res, se);
+    if (finite && (K || res)) return FiniteHybridPressure(in, hy, K, res, K ? Kuu : NULL);
+  }
   return PETSC_TRUE;
 }
 
@@ -1465,6 +1778,44 @@ static void FacePointEvaluate(const TslElementInput *in, PetscInt face, const Ts
   fp->dA = PetscSqrtReal(fp->ndA[0] * fp->ndA[0] + fp->ndA[1] * fp->ndA[1] + fp->ndA[2] * fp->ndA[2]);
 }
 
+/* A follower pressure's load stiffness at face point q of the deformed face (in->x current): K_(a i)(b d) +=
+ * N_a p d(n dA)_i / du_(b d). 2D: n dA = s (T_y, -T_x), T = sum_b dN_b x_b, s = w t or w 2 pi r (r current);
+ * 3D: n dA = w T_1 x T_2. */
+static void FollowerStiffness(const TslElementInput *in, PetscInt face, const TslFaceRule *rule, PetscInt q, const FacePoint *fp, PetscReal p,
+                              PetscReal K[])
+{
+  const TslGeometry             *g    = in->type->geom;
+  const struct TslKinematicsRow *info = TslKinematicsRowGet(in->type->kin);
+  const PetscInt                 ndof = in->type->ndof, dim = in->type->dim, nd = TslElementTypeNodes(in->type) * ndof, fn = g->face_nnode[face];
+  const PetscInt                *node = g->face_node[face];
+  PetscReal                      T[2][3] = {{0}};
+
+  for (PetscInt f = 0; f < fn; f++)
+    for (PetscInt j = 0; j < dim - 1; j++)
+      for (PetscInt d = 0; d < 3; d++) T[j][d] += rule->dN[q][f][j] * in->x[3 * node[f] + d];
+  for (PetscInt b = 0; b < fn; b++)
+    for (PetscInt d = 0; d < dim; d++) {
+      PetscReal dn[3] = {0, 0, 0}; /* d(n dA) / du_(b d) */
+      if (dim == 2) {
+        const PetscReal s  = rule->w[q] * (info->thickness && in->sec->thickness > 0 ? in->sec->thickness : 1) * (info->revolve ? 2 * PETSC_PI * fp->x[0] : 1);
+        const PetscReal dN = rule->dN[q][b][0];
+        if (d == 1) dn[0] = s * dN;
+        if (d == 0) dn[1] = -s * dN;
+        if (info->revolve && d == 0)
+          for (PetscInt i = 0; i < 2; i++) dn[i] += fp->ndA[i] * fp->N[b] / fp->x[0];
+      } else {
+        const PetscReal a1 = rule->dN[q][b][0], a2 = rule->dN[q][b][1], w = rule->w[q];
+        PetscReal       e[3] = {0, 0, 0};
+        e[d]  = 1;
+        dn[0] = w * (a1 * (e[1] * T[1][2] - e[2] * T[1][1]) + a2 * (T[0][1] * e[2] - T[0][2] * e[1]));
+        dn[1] = w * (a1 * (e[2] * T[1][0] - e[0] * T[1][2]) + a2 * (T[0][2] * e[0] - T[0][0] * e[2]));
+        dn[2] = w * (a1 * (e[0] * T[1][1] - e[1] * T[1][0]) + a2 * (T[0][0] * e[1] - T[0][1] * e[0]));
+      }
+      for (PetscInt a = 0; a < fn; a++)
+        for (PetscInt i = 0; i < dim; i++) K[(ndof * node[a] + i) * nd + ndof * node[b] + d] += fp->N[a] * p * dn[i];
+    }
+}
+
 /* Body heat source, consistent: R_theta(a) -= int N_a q dV with the family's full rule (the conduction's
  * points), in every formulation; returns int q dV = sum_a of the loads, since sum_a N_a = 1. Not the
  * capacity's lumping weights: HRZ (quad8) and the linear sub-elements (tri6, tet10) are not the
@@ -1547,8 +1898,10 @@ PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kin
   const TslGeometry *g    = in->type->geom;
   const PetscInt     ndof = in->type->ndof, dim = in->type->dim, th = ndof - 1, nd = TslElementTypeNodes(in->type) * ndof;
   const PetscReal    value = v->value;
-  PetscReal          total = 0;
+  const PetscBool    follow = kind == TSL_FACE_PRESSURE && in->nlgeom && ndof > 1 ? PETSC_TRUE : PETSC_FALSE;
+  PetscReal          total = 0, xc[TSL_MAX_ELEM_NODES * 3];
   TslFaceRule        rule;
+  TslElementInput    cur;
 
   PetscFunctionBeginUser;
   if (kind == TSL_BODY_FLUX) {
@@ -1563,17 +1916,24 @@ PetscErrorCode TslElementFaceLoad(const TslElementInput *in, TslFaceLoadKind kin
     in->type->form->pressure_face_rule(g, face, &rule);
   else
     in->type->form->thermal_face_rule(g, face, &rule);
+  if (follow) { /* finite strain: the pressure acts on the deformed face (x + u; a twist's phi is no coordinate) */
+    cur = *in;
+    for (PetscInt a = 0; a < g->nnode; a++)
+      for (PetscInt d = 0; d < 3; d++) xc[3 * a + d] = in->x[3 * a + d] + (d < dim ? in->u[ndof * a + d] : 0);
+    cur.x = xc;
+  }
   for (PetscInt q = 0; q < rule.n; q++) {
     const PetscInt *node = g->face_node[face];
     const PetscInt  fn   = g->face_nnode[face];
     FacePoint       fp;
     PetscReal       theta = 0, drive = 0, dq = 0;
 
-    FacePointEvaluate(in, face, &rule, q, &fp);
+    FacePointEvaluate(follow ? &cur : in, face, &rule, q, &fp);
     switch (kind) {
     case TSL_FACE_PRESSURE:
       for (PetscInt f = 0; f < fn; f++)
         for (PetscInt i = 0; i < dim; i++) R[ndof * node[f] + i] += fp.N[f] * value * fp.ndA[i];
+      if (follow && K) FollowerStiffness(&cur, face, &rule, q, &fp, value, K);
       break;
     case TSL_FACE_FLUX:
       for (PetscInt f = 0; f < fn; f++) R[ndof * node[f] + th] -= fp.N[f] * value * fp.dA;
@@ -1624,7 +1984,8 @@ PetscErrorCode TslElementOutput(const TslElementInput *in, TslElementResult *res
   PetscCall(PetscMemzero(res, sizeof(*res)));
   for (PetscInt i = 0; i < TslElementTypeNodes(t) * ndof; i++) R[i] = 0;
   PetscCheck(Mechanics(in, NULL, R, NULL, &hy, res, NULL), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
-  if (TslKinematicsRowGet(t->kin)->free_normal && !in->pstate) { /* a plastic point's eps_33 is its return's (MechanicsPlastic) */
+  /* a plastic point's eps_33 is its return's (MechanicsPlastic); finite strain's the logarithm of its F_33 (FiniteOutput) */
+  if (TslKinematicsRowGet(t->kin)->free_normal && !in->pstate && !(in->nlgeom && !t->form->incompatible)) {
     const TslQuadrature *quad = t->form->quadrature(g, in->sec);
     res->E[2]                 = 0;
     for (PetscInt q = 0; q < quad->n; q++) {

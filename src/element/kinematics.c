@@ -246,6 +246,52 @@ void TslElementStrainMatrix(const TslElementType *type, const TslElementSection 
   }
 }
 
+static void ColumnAdd(TslGradientColumn *c, PetscInt i, PetscInt k, PetscReal v)
+{
+  c->i[c->n] = i, c->k[c->n] = k, c->v[c->n++] = v;
+}
+
+void TslElementDeformation(const TslElementType *type, const TslElementSection *sec, const PetscReal x[], const TslElementPoint *p, const PetscReal u[],
+                           PetscReal H[3][3], TslGradientColumn col[])
+{
+  const PetscInt                 dim = type->dim, ndof = type->ndof, nu = ndof - 1, n = type->geom->nnode, nv = TslElementTypeNodes(type);
+  const struct TslKinematicsRow *info = TslKinematicsRowGet(type->kin);
+  const PetscInt                 ng   = info->twist ? 2 : nu; /* displacement components with a gradient in the plane or space */
+  PetscReal                      ur = 0, dphi[2] = {0, 0};
+
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = 0; j < 3; j++) H[i][j] = 0;
+  for (PetscInt a = 0; a < n; a++) {
+    for (PetscInt i = 0; i < ng && i < dim; i++)
+      for (PetscInt j = 0; j < dim; j++) H[i][j] += u[ndof * a + i] * p->dNdx[a][j];
+    if (info->hoop) ur += p->N[a] * u[ndof * a];
+    if (info->twist)
+      for (PetscInt j = 0; j < 2; j++) dphi[j] += u[ndof * a + 2] * p->dNdx[a][j];
+  }
+  if (info->hoop) H[2][2] = ur / p->x[0];
+  if (info->twist) H[2][0] = (p->x[0] + ur) * dphi[0], H[2][1] = (p->x[0] + ur) * dphi[1];
+  for (PetscInt c = 0; c < nv * nu; c++) col[c].n = 0;
+  for (PetscInt a = 0; a < n; a++) {
+    for (PetscInt i = 0; i < ng && i < dim; i++)
+      for (PetscInt j = 0; j < dim; j++) ColumnAdd(&col[nu * a + i], i, j, p->dNdx[a][j]);
+    if (info->hoop) ColumnAdd(&col[nu * a], 2, 2, p->N[a] / p->x[0]);
+    if (info->twist) {
+      for (PetscInt j = 0; j < 2; j++) {
+        ColumnAdd(&col[nu * a], 2, j, p->N[a] * dphi[j]);
+        ColumnAdd(&col[nu * a + 2], 2, j, (p->x[0] + ur) * p->dNdx[a][j]);
+      }
+    }
+  }
+  if (info->reference) { /* eps_33 of the reference node's dofs (TslElementStrainMatrix) */
+    const PetscReal  t = sec->thickness > 0 ? sec->thickness : 1.0, *x0 = &x[3 * n];
+    const PetscReal  g[3] = {1 / t, (p->x[1] - x0[1]) / t, -(p->x[0] - x0[0]) / t};
+    for (PetscInt k = 0; k < 3; k++) {
+      H[2][2] += g[k] * u[ndof * n + k];
+      ColumnAdd(&col[nu * n + k], 2, 2, g[k]);
+    }
+  }
+}
+
 /* Isotropic D in (lambda, mu): lambda m m^T + mu diag(2, 2, 2, 1, 1, 1). Linear in (lambda, mu), so the
  * same function gives dD from (dlambda, dmu) before the plane-stress condensation. */
 static void Isotropic(PetscReal lambda, PetscReal mu, PetscReal D[6][6])

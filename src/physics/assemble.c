@@ -37,6 +37,7 @@ void TslProblemGather(TslProblem p, PetscInt e, const PetscScalar *xa, const Pet
   d->in.pstate_new     = d->in.pstate && p->pstate_write ? p->pstate_new + p->pstate_off[e] : NULL;
   d->in.inelastic_rate = p->inelastic_rate;
   d->in.dt             = p->dt;
+  d->in.nlgeom         = p->nlgeom;
   d->in_old            = d->in;
   d->in_old.u          = d->uo;
   /* the old state is the committed one: no further flow, no heat, nothing written */
@@ -425,7 +426,7 @@ static PetscErrorCode AssembleLoop(TslProblem p, AsmMode mode, const PetscScalar
                                    PetscReal *R, PetscReal *K, PetscInt *bad_elem)
 {
   AsmCtx          ctx     = {mode, A, f, heat, R, K, bad_elem};
-  const PetscBool records = (mode == ASM_RESIDUAL || mode == ASM_RAW) && p->fast_implicit && p->fast_built;
+  const PetscBool records = (mode == ASM_RESIDUAL || mode == ASM_RAW) && p->fast_implicit && p->fast_built && !p->nlgeom; /* records: small strain */
 
   PetscFunctionBeginUser;
   if (mode == ASM_RESIDUAL) p->flux_abs[0] = p->flux_abs[1] = p->flux_n[0] = p->flux_n[1] = 0;
@@ -480,6 +481,23 @@ static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScala
   PetscCall(TslCaptureEnd());
   PetscCall(PetscFree2(R, K));
   PetscCall(TslAgree(p->comm, e, fail, p->fail_msg));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* An element turned inside out by a Newton iterate of a finite-strain step (det F <= 0; the reference geometry was
+ * checked before the job): a convergence-type failure on all ranks, so the increment is cut back (collective). */
+static PetscErrorCode TurnedInsideOut(TslProblem p, PetscInt *bad, TslFailure *fail)
+{
+  PetscInt id = *bad >= 0 ? p->m->elem_id[*bad] : -1, g;
+
+  PetscFunctionBeginUser;
+  if (!p->nlgeom) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(MPIU_Allreduce(&id, &g, 1, MPIU_INT, MPI_MAX, p->comm));
+  if (g < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  *bad = -1;
+  if (*fail) PetscFunctionReturn(PETSC_SUCCESS);
+  *fail = TSL_FAIL_CONVERGENCE;
+  PetscCall(PetscSNPrintf(p->fail_msg, sizeof(p->fail_msg), "element %" PetscInt_FMT " turned inside out (det F <= 0) at a Newton iterate", g));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -654,6 +672,7 @@ static PetscErrorCode Residual(TslProblem p, AsmMode mode, Vec X, Vec F, AsmHeat
   PetscCall(AssembleLocal(p, mode, xa, xoa, fa, NULL, heat, &bad, fail));
   PetscCall(VecRestoreArray(fl, &fa));
   PetscCall(VecGhostRestoreLocalForm(p->Fl, &fl));
+  PetscCall(TurnedInsideOut(p, &bad, fail));
   PetscCall(TslProblemCheckBadElement(p, bad));
   PetscCall(TslGhostUpdate(p->Fl, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(p->Fl, F));
@@ -713,6 +732,7 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   PetscCall(TslPhaseEnd(TSL_PHASE_ASSEMBLY));
+  PetscCall(TurnedInsideOut(p, &bad, &fail));
   PetscCall(TslProblemCheckBadElement(p, bad));
   if (fail) PetscCall(SNESSetJacobianDomainError(snes));
   if (J != P) {

@@ -139,6 +139,7 @@ struct _p_TslProblem {
   PetscReal     period, t, dt, ttot;
   PetscBool     matrix_free;     /* explicit steps: no Jacobian, so no pattern is built (TslProblemSetMatrixFree) */
   PetscReal     shift;           /* capacity rate factor chosen by the solver: 1/dt (backward Euler) or 0 (steady) */
+  PetscBool     nlgeom;          /* finite strain in the current step (*STEP, NLGEOM; implicit steps: TslProblemSetStep) */
   PetscReal     inelastic_rate;  /* the plastic work's heat rate per work: shift in implicit steps, 1 / (the move's increment) in explicit ones */
   PetscReal     step_start_ttot; /* total time at the start of the step */
   PetscBool    *amp_active;      /* [namplitude] followed by some load of the step (any rank) */

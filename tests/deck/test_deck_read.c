@@ -174,7 +174,7 @@ static PetscErrorCode TestSteps(const TslModel *m)
   EXPECT(!s->out[3].node && s->out[3].print && s->out[3].frequency == 3);
 
   s = &m->steps[1];
-  EXPECT(!strcmp(s->name, "Step-2") && s->steady && s->amp_given && s->amp_default == TSL_AMP_RAMP && s->max_inc == 100 && !s->nlgeom);
+  EXPECT(!strcmp(s->name, "Step-2") && s->steady && s->amp_given && s->amp_default == TSL_AMP_RAMP && s->max_inc == 100 && s->nlgeom && !s->nlgeom_given); /* NLGEOM inherited */
   EXPECT(NEAR(s->dt0, 1) && NEAR(s->period, 1) && NEAR(s->dtmin, 1e-5) && NEAR(s->dtmax, 1));
   EXPECT(s->nout == 2 && s->out[0].node && s->out[0].frequency == 1 && !s->out[1].node);
   s = &m->steps[2];
