@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""Checks of the finite-strain decks (make_decks.py; St Venant-Kirchhoff, docs/elements.md "Finite strain"):
+
+turn       at the end of each of the 8 steps (turned by 45 k degrees, heated by alpha dT = 0.2): every node at x = 1.2 Q X
+           (1e-8 of the largest displacement: the Newton tolerance), no stress (1e-8 of E alpha dT), the logarithmic
+           strain ln 1.2 in every normal direction and no shear (1e-9), the temperature 220; the ring: u = 0.2 X and the
+           twist phi = 45 k degrees at every node
+homog      simple shear to gamma = 1: the Cauchy stress F S F^T and LE from the eigenvalues (3 +- sqrt 5) / 2 of F F^T
+           (1e-10); the body at F0 and at Q F0: S' = Q S Q^T and LE' = Q LE Q^T (1e-10)
+uniaxial   the bar at twice its length: sigma_11 = lambda S_11 / lt^2 with S_11 = E (lambda^2 - 1) / 2 and the lateral
+           stretch lt = sqrt(1 - nu (lambda^2 - 1)) in every element, the other components 0 (1e-8 of sigma_11), LE = (ln 2,
+           ln lt, ln lt), the free lateral faces at lt - 1, the pulled end's reaction lambda S_11 A0 (1e-8)
+pressure   the block pressed by the follower pressure p: Cauchy stress -p along the load in every element, the stresses
+           across it 0 (plane strain: sigma_33 not) (1e-8 of p)
+usage: check.py OUTDIR JOB turn|homog|uniaxial|pressure [AXIS: the load's direction, 0 x, 1 y (the ring's z)]"""
+import math
+import sys
+
+import numpy as np
+
+sys.path.insert(0, sys.path[0] + "/../tools")
+from tslcheck import Result, check, check_true, finish
+
+outdir, job, case = sys.argv[1:4]
+axis = int(sys.argv[4]) if len(sys.argv) > 4 else 0
+r = Result(outdir, job)
+E, NU, ALPHA, DT, THETA0 = 2.0e5, 0.3, 1.0e-3, 200.0, 20.0
+AX = np.array([1.0, 2.0, 3.0]) / math.sqrt(14.0)
+VI, VJ = [0, 1, 2, 0, 0, 1], [0, 1, 2, 1, 2, 2]
+
+
+def rotation(angle, n):
+    k = np.array([[0, -n[2], n[1]], [n[2], 0, -n[0]], [-n[1], n[0], 0]])
+    return math.cos(angle) * np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * np.outer(n, n)
+
+
+def tensor(v, shear_half=False):
+    t = np.zeros((3, 3))
+    for k in range(6):
+        t[VI[k], VJ[k]] = t[VJ[k], VI[k]] = v[k] * (0.5 if shear_half and k >= 3 else 1.0)
+    return t
+
+
+def voigt(t, engineering=False):
+    return np.array([t[VI[k], VJ[k]] * (2.0 if engineering and k >= 3 else 1.0) for k in range(6)])
+
+
+X = r.xyz
+if case == "turn":
+    ring = "cgax" in job
+    dim = 3 if "c3d" in job else 2
+    s = 1 + ALPHA * DT
+    for k in range(1, 9):
+        i = r.frame_of_step(k)
+        U, S, LE, NT = r.field("U", i), r.field("S", i), r.field("E", i), r.field("NT", i)
+        if ring:
+            expect = np.column_stack([(s - 1) * X[:, 0], (s - 1) * X[:, 1], np.full(len(X), math.radians(45 * k))])
+        else:
+            Q = rotation(math.radians(45 * k), AX if dim == 3 else np.array([0.0, 0.0, 1.0]))
+            expect = s * X @ Q.T - X
+            if dim == 2:
+                expect[:, 2] = 0
+        scale = np.abs(expect).max()
+        check("step %d (turned by %d degrees): max|U - (1.2 Q - I) X| / max|U|" % (k, 45 * k), np.abs(U - expect).max() / scale, 0.0, 1e-8)
+        check("step %d: max|S| / (E alpha dT)" % k, np.abs(S).max() / (E * ALPHA * DT), 0.0, 1e-8)
+        le = np.zeros(6)
+        le[:3] = math.log(s)
+        check("step %d: max|LE - ln 1.2 (normal), 0 (shear)|" % k, np.abs(LE - le).max(), 0.0, 1e-9)
+        check("step %d: temperature" % k, np.abs(NT - (THETA0 + DT)).max(), 0.0, 1e-9)
+elif case == "homog":
+    lam, mu = E * NU / ((1 + NU) * (1 - 2 * NU)), E / (2 * (1 + NU))
+    F = np.array([[1.0, 1, 0], [0, 1, 0], [0, 0, 1]])
+    Eg = 0.5 * (F.T @ F - np.eye(3))
+    sig = F @ (lam * np.trace(Eg) * np.eye(3) + 2 * mu * Eg) @ F.T
+    w, v = np.linalg.eigh(F @ F.T)
+    le = v @ np.diag(0.5 * np.log(w)) @ v.T
+    i = r.frame_of_step(1)
+    S, LE = r.field("S", i)[0], r.field("E", i)[0]
+    check("simple shear to 1: max|S - F S(E) F^T| / E", np.abs(S - voigt(sig)).max() / E, 0.0, 1e-10)
+    check("simple shear to 1: max|LE - ln V| (engineering shear)", np.abs(LE - voigt(le, True)).max(), 0.0, 1e-10)
+    check("simple shear to 1: S12 = mu gamma (1 + ...) > 0", float(S[3] > 0), 1.0, 0)
+    Q = rotation(math.pi / 2, AX)
+    S2, LE2 = r.field("S", r.frame_of_step(2))[0], r.field("E", r.frame_of_step(2))[0]
+    S3, LE3 = r.field("S", r.frame_of_step(3))[0], r.field("E", r.frame_of_step(3))[0]
+    check("turned by 90 degrees: max|S' - Q S Q^T| / max|S|", np.abs(S3 - voigt(Q @ tensor(S2) @ Q.T)).max() / np.abs(S2).max(), 0.0, 1e-10)
+    check("turned by 90 degrees: max|LE' - Q LE Q^T|", np.abs(LE3 - voigt(Q @ tensor(LE2, True) @ Q.T, True)).max(), 0.0, 1e-10)
+elif case == "uniaxial":
+    l = 2.0
+    lt = math.sqrt(1 - NU * (l * l - 1))
+    S11 = E * (l * l - 1) / 2
+    S, LE, U, RF = r.field("S"), r.field("E"), r.field("U"), r.field("RF")
+    check("Cauchy S11 = lambda S11 / lt^2 (worst element, relative)", np.abs(S[:, 0] / (l * S11 / lt ** 2) - 1).max(), 0.0, 1e-8)
+    check("S22, S33, shear / S11", np.abs(S[:, 1:]).max() / (l * S11 / lt ** 2), 0.0, 1e-8)
+    check("LE11 = ln 2", np.abs(LE[:, 0] - math.log(2)).max(), 0.0, 1e-9)
+    nz = 3 if "c3d" in job else 2
+    check("LE22 = LE33 = ln lt", np.abs(LE[:, 1:nz] - math.log(lt)).max(), 0.0, 1e-9)
+    side = np.abs(X[:, 1] - 1.0) < 1e-12
+    check("free side y = 1 at lt - 1", np.abs(U[side, 1] - (lt - 1)).max(), 0.0, 1e-9)
+    end = np.abs(X[:, 0] - 2.0) < 1e-12
+    check("pulled end's reaction = lambda S11 A0 (relative)", RF[end, 0].sum() / (l * S11) - 1, 0.0, 1e-8)
+elif case == "pressure":
+    p = 2.0e4
+    S = r.field("S")
+    plane_strain = "cpe" in job
+    check("Cauchy stress along the load = -p (worst element, relative)", np.abs(S[:, axis] / -p - 1).max(), 0.0, 1e-8)
+    others = [k for k in range(6) if k != axis and not (plane_strain and k == 2)]
+    check("the other stress components / p", np.abs(S[:, others]).max() / p, 0.0, 1e-8)
+    U = r.field("U")
+    check_true("the block shortened along the load", U[:, axis].min() < -0.05 * X[:, axis].max() * p / E)
+else:
+    sys.exit("unknown case " + case)
+finish()
