@@ -198,7 +198,8 @@ typedef struct {
   PetscReal        dt; /* the increment's time, for a rate-dependent yield stress (*RATE DEPENDENT: the rate dl / dt) */
   /* finite strain (*STEP, NLGEOM; docs/elements.md "Finite strain"): the mechanical terms on the reference configuration
    * with the Green-Lagrange strain and the second Piola-Kirchhoff stress, the outputs S Cauchy and E logarithmic, pressure
-   * on the deformed face; plastic and incompatible-mode elements keep small strain (the reader warns) */
+   * on the deformed face, the bulk viscosity on the current volume; plastic and incompatible-mode elements keep small
+   * strain (the reader warns) */
   PetscBool nlgeom;
 } TslElementInput;
 /* Mechanical points of the type (the plastic state's points). */

@@ -577,13 +577,6 @@ static PetscErrorCode CheckNlgeom(TslModel *m)
     }
     if (!s->nlgeom) continue;
     (void)TslLocString(m, s->loc, where, sizeof(where));
-    if (s->explicit_dynamics) {
-      PetscCall(PetscPrintf(PETSC_COMM_SELF,
-                            "%s: warning: *STEP, NLGEOM: the explicit step %s runs with small-strain kinematics (finite strain is not available in "
-                            "explicit steps yet): rotations or strains of more than a few percent will be wrong\n",
-                            where, s->name));
-      continue;
-    }
     for (PetscInt e = 0; e < m->nelem && (plastic < 0 || incompatible < 0); e++) {
       const TslElementType *t = TslElementTypeGet(m->elem_type[e]);
       if (incompatible < 0 && !TslElementTypeFiniteStrain(t)) incompatible = e;

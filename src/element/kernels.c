@@ -2031,9 +2031,35 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
   *power = 0;
   TslElementCentre(g, xi);
   PetscCheck(TslElementPointEvaluate(t, in->sec, in->x, xi, g->ref_volume, &pt), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "Inverted %s element", t->name);
-  TslElementStrainMatrix(t, in->sec, in->x, &pt, B);
   TslMaterialEval(in->sec->mat, NodalTheta(in, pt.N, in->u), &mp);
   M = TslElementWaveModulus(t, &mp);
+  if (in->nlgeom) { /* finite strain: the rate J'/J of the current volume, dJ/du_c = J tr(F^-1 dF_c), and p J on it */
+    PetscReal         H[3][3], F[3][3], Fi[3][3], J, g[TSL_MAX_ELEM_NODES * 3];
+    TslGradientColumn col[TSL_MAX_ELEM_NODES * 3];
+    TslElementDeformation(t, in->sec, in->x, &pt, in->u, H, col);
+    for (PetscInt i = 0; i < 3; i++)
+      for (PetscInt j = 0; j < 3; j++) F[i][j] = (i == j) + H[i][j];
+    J = Det3(F);
+    PetscCheck(J > 0, PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG, "%s element turned inside out (det F <= 0)", t->name);
+    for (PetscInt i = 0; i < 3; i++)
+      for (PetscInt j = 0; j < 3; j++) /* the cofactors over J */
+        Fi[j][i] = (F[(i + 1) % 3][(j + 1) % 3] * F[(i + 2) % 3][(j + 2) % 3] - F[(i + 1) % 3][(j + 2) % 3] * F[(i + 2) % 3][(j + 1) % 3]) / J;
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < nu; i++) {
+        const PetscInt c = nu * a + i;
+        g[c]             = 0;
+        for (PetscInt k = 0; k < col[c].n; k++) g[c] += J * col[c].v[k] * Fi[col[c].k[k]][col[c].i[k]];
+        rate += g[c] * v[ndof * a + i] / J;
+      }
+    p = eta1 * M * rate;
+    if (rate < 0) p -= eta2 * M * rate * rate;
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt i = 0; i < nu; i++) R[ndof * a + i] += p * g[nu * a + i] * pt.dV;
+    *power = p * rate * J * pt.dV;
+    if (qr) qr[0] = p * J * pt.dV, qr[1] = rate;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  TslElementStrainMatrix(t, in->sec, in->x, &pt, B);
   for (PetscInt a = 0; a < n; a++)
     for (PetscInt i = 0; i < nu; i++)
       for (PetscInt r = 0; r < 3; r++) rate += B[r][nu * a + i] * v[ndof * a + i];

@@ -915,8 +915,17 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
   PetscBool       inverted = PETSC_FALSE;
   ElemOnGrid      g;
   const PetscReal raise = 1 + 1e-8; /* above the grid's effect on the eigenvalue (StableKey) */
+  TslElemData     cur;
 
   PetscFunctionBeginUser;
+  if (p->nlgeom) { /* finite strain: the element as it stands now (the current size and shape set its increments) */
+    const PetscInt dim = d->in.type->dim;
+    cur = *d;
+    for (PetscInt a = 0; a < d->in.type->geom->nnode; a++)
+      for (PetscInt c = 0; c < dim; c++) cur.x[3 * a + c] += d->u[a * p->ndof + c];
+    cur.in.x = cur.x, cur.in.u = cur.u, cur.in.theta_init = cur.ti;
+    d = &cur;
+  }
   PetscCall(ElemGrid(p, e, d, &g));
   if (g.entry && g.entry->has_dt) {
     c->dt_mech[e] = g.entry->dt_mech;

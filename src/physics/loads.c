@@ -287,8 +287,8 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
   PetscInt           nd = p->nn * p->ndof;
 
   PetscFunctionBeginUser;
-  /* finite strain: the implicit procedures (an explicit step keeps small strain: the reader warns) */
-  p->nlgeom = step->nlgeom && !step->explicit_dynamics ? PETSC_TRUE : PETSC_FALSE;
+  /* finite strain (an explicit step's force records are small-strain: it takes the generic kernels, explicit.c) */
+  p->nlgeom = step->nlgeom;
   /* values reached at the end of the previous step */
   for (PetscInt d = 0; d < nd; d++) Freeze(p, &p->bc[d]), Freeze(p, &p->nload[d]), p->bc[d].file = PETSC_FALSE;
   for (PetscInt i = 0; i < p->nface; i++) {

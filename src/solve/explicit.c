@@ -17,6 +17,11 @@
 #include "solve_impl.h"
 #include <thermoslide/contact.h>
 
+/* Finite strain: the stable increment is recomputed from the deformed elements every this many increments (a
+ * deforming element's size changes by a fraction of its strain rate times the interval: 0.1 % for a strain rate of
+ * 1e-4 per increment) */
+#define TSL_NLGEOM_STABLE_EVERY 10
+
 #define MASS_WARN_FACTOR 100.0 /* a mass scaled by more than this is worth a warning */
 
 typedef struct {
@@ -668,8 +673,12 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   {
     PetscInt  nfast;
     PetscReal mb;
-    PetscCall(TslProblemExplicitRecords(x.p, d->explicit_records, &nfast, &mb));
-    if (d->explicit_records)
+    /* the records hold the reference geometry's small-strain forces: an NLGEOM step takes the generic kernels */
+    PetscCall(TslProblemExplicitRecords(x.p, d->explicit_records && !x.step->nlgeom, &nfast, &mb));
+    if (x.step->nlgeom)
+      PetscCall(PetscPrintf(d->comm, "  finite strain (NLGEOM): every element takes the generic kernels, the stable increment follows the deformed elements (every %d increments)\n",
+                            (int)TSL_NLGEOM_STABLE_EVERY));
+    else if (d->explicit_records)
       PetscCall(PetscPrintf(d->comm, "  force records: %" PetscInt_FMT " of %" PetscInt_FMT " elements (%.1f MB on the largest rank); the others take the generic kernels\n",
                             nfast, x.m->nelem_global, (double)mb));
   }
@@ -721,6 +730,11 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
         if (x.step->dt_user <= 0) x.dt = x.dt_stable;
         break;
       }
+    if (x.step->nlgeom && inc % TSL_NLGEOM_STABLE_EVERY == 0) { /* the elements' current size and shape (the masses stay) */
+      PetscCall(TslProblemStableIncrements(x.p, x.dt_mech, x.dt_heat));
+      PetscCall(StableIncrement(&x, PETSC_FALSE));
+      if (x.step->dt_user <= 0) x.dt = x.dt_stable;
+    }
     PetscCall(TslPhaseEnd(TSL_PHASE_SETUP));
     PetscCall(Forces(&x, h, inc));
     if (x.m->npair && inc % x.search_every == 0) { /* the pairing, and the conductance following pressure and temperature */

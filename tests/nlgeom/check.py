@@ -12,7 +12,9 @@ uniaxial   the bar at twice its length: sigma_11 = lambda S_11 / lt^2 with S_11 
            ln lt, ln lt), the free lateral faces at lt - 1, the pulled end's reaction lambda S_11 A0 (1e-8)
 pressure   the block pressed by the follower pressure p: Cauchy stress -p along the load in every element, the stresses
            across it 0 (plane strain: sigma_33 not) (1e-8 of p)
-usage: check.py OUTDIR JOB turn|homog|uniaxial|pressure [AXIS: the load's direction, 0 x, 1 y (the ring's z)]"""
+spin       the explicit block spinning through a quarter turn: at Q X (1e-3 of the displacement), its kinetic energy kept
+           (1e-3), ETOTAL at round-off, stresses of the centrifugal size (below 1e-4 of E)
+usage: check.py OUTDIR JOB turn|homog|uniaxial|pressure|spin [AXIS: the load's direction, 0 x, 1 y (the ring's z)]"""
 import math
 import sys
 
@@ -107,6 +109,21 @@ elif case == "pressure":
     check("the other stress components / p", np.abs(S[:, others]).max() / p, 0.0, 1e-8)
     U = r.field("U")
     check_true("the block shortened along the load", U[:, axis].min() < -0.05 * X[:, axis].max() * p / E)
+elif case == "spin":
+    # a quarter turn at omega (make_decks.py OMEGA): x = Q X, the kinetic energy kept (the centrifugal stretch takes
+    # 3e-5 of it, the bulk viscosity of its breathing 3e-4), ETOTAL at round-off, stresses of the order of the
+    # centrifugal rho omega^2 L^2 (small strain moves the block along a straight line instead: 0.79 of the displacement)
+    t = math.pi / 2
+    Q = rotation(t, np.array([0.0, 0.0, 1.0]))
+    expect = X @ Q.T - X
+    if "cpe" in job:
+        expect[:, 2] = 0
+    U, S = r.field("U"), r.field("S")
+    check("after a quarter turn: max|U - (Q - I) X| / max|U|", np.abs(U - expect).max() / np.abs(expect).max(), 0.0, 1e-3)
+    ke, et = r.history["ALLKE"], r.history["ETOTAL"]
+    check("kinetic energy kept: |ALLKE_end / ALLKE_0 - 1|", abs(ke[-1] / ke[0] - 1), 0.0, 1e-3)
+    check("ETOTAL / ALLKE_0 (every row)", np.abs(et).max() / ke[0], 0.0, 1e-10)
+    check("max|S| / E (the centrifugal stress, 25 x 0.25 / 2e5 = 3e-5)", np.abs(S).max() / E, 0.0, 1e-4)
 else:
     sys.exit("unknown case " + case)
 finish()

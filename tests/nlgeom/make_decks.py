@@ -10,6 +10,8 @@ homog_c3d8t  one C3D8T cube with every node prescribed: simple shear to gamma = 
 uniaxial_{c3d8t,c3d8rht,cps4t}  a 2 x 1 x 1 bar on symmetry supports pulled to twice its length (x = 2 -> 4) in 20 increments
 pressure_{c3d8t,cpe4t,cax4t}  a unit block (ring) on symmetry supports pressed by a follower pressure p = 2e4 (E = 2e5): the
           Cauchy stress -p along the load on the deformed face
+spin_{c3d8t,cpe4t}  a free block spinning about z (initial velocities omega x X), explicit with NLGEOM, through a quarter
+          turn
 jacobian_{c3d8t,cgax4rht}  distorted elements at a finite deformation (pressure, flux, film, twist) for -snes_test_jacobian
 
 usage: make_decks.py [OUTDIR]  (default: decks/ beside this script)"""
@@ -184,8 +186,26 @@ def jacobian(etype):
     write("jacobian_" + etype.lower(), text)
 
 
+OMEGA = 5.0  # rad/s: 1e-2 of c / L (c = 519 for E = 2e5, rho = 1, L = 1): the centrifugal strain rho omega^2 L^2 / E = 1.2e-4
+
+
+def spin(etype):
+    dim = 2 if etype.startswith("CP") else 3
+    nodes, elems = grid(2, 2, 0 if dim == 2 else 2, 1.0, 1.0, 1.0, (-0.5, -0.5, -0.5 if dim == 3 else 0.0))
+    text = "*HEADING\n NLGEOM: a free %s block spinning about z at %g rad/s, explicit, through a quarter turn (make_decks.py spin)\n" % (etype, OMEGA)
+    text += mesh(nodes, elems, etype, dim) + material() + section(etype)
+    text += "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, %g\n*INITIAL CONDITIONS, TYPE=VELOCITY\n" % THETA0
+    for n, X in nodes.items():
+        text += "%d, 1, %.15g\n%d, 2, %.15g\n" % (n, -OMEGA * X[1], n, OMEGA * X[0])
+    text += "*STEP, NLGEOM\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n, %.15g\n" % (math.pi / 2 / OMEGA)
+    text += "*OUTPUT, FIELD, NUMBER INTERVAL=4\n*NODE OUTPUT\nU, NT\n*ELEMENT OUTPUT\nS, E\n*END STEP\n"
+    write("spin_" + etype.lower(), text)
+
+
 for t in ("C3D8T", "CPS4T", "CGAX4T"):
     turn(t)
+for t in ("C3D8T", "CPE4T"):
+    spin(t)
 homog()
 for t in ("C3D8T", "C3D8RHT", "CPS4T"):
     uniaxial(t)
