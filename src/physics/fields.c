@@ -113,6 +113,7 @@ static const FieldRow Fields[] = {
     {"HFLA", TSL_FIELD_NODE, 2, PETSC_FALSE, 1, TSL_CONTACT_FIELD_HEAT_FLUX, NodeContact},
     {"S", TSL_FIELD_ELEMENT, 1, PETSC_TRUE, 6, 0, ElementValues},
     {"E", TSL_FIELD_ELEMENT, 1, PETSC_TRUE, 6, 1, ElementValues},
+    {"LE", TSL_FIELD_ELEMENT, 0, PETSC_TRUE, 6, 1, ElementValues}, /* on request: E's values (the logarithmic strain under NLGEOM) */
     {"HFL", TSL_FIELD_ELEMENT, 1, PETSC_FALSE, 3, 2, ElementValues},
     {"ELSE", TSL_FIELD_ELEMENT, 0, PETSC_TRUE, 1, 3, ElementValues},
     {"ELASE", TSL_FIELD_ELEMENT, 0, PETSC_TRUE, 1, 4, ElementValues},

@@ -86,6 +86,7 @@ elif case == "homog":
     S3, LE3 = r.field("S", r.frame_of_step(3))[0], r.field("E", r.frame_of_step(3))[0]
     check("turned by 90 degrees: max|S' - Q S Q^T| / max|S|", np.abs(S3 - voigt(Q @ tensor(S2) @ Q.T)).max() / np.abs(S2).max(), 0.0, 1e-10)
     check("turned by 90 degrees: max|LE' - Q LE Q^T|", np.abs(LE3 - voigt(Q @ tensor(LE2, True) @ Q.T, True)).max(), 0.0, 1e-10)
+    check("LE on request: the E dataset's values", np.abs(r.field("LE", r.frame_of_step(3)) - r.field("E", r.frame_of_step(3))).max(), 0.0, 0.0)
 elif case == "uniaxial":
     l = 2.0
     lt = math.sqrt(1 - NU * (l * l - 1))

@@ -116,7 +116,7 @@ def homog():
     Q = rotation(math.pi / 2, AXIS)
     QF0 = [[sum(Q[i][k] * F0[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
     for name, F in (("SHEAR", [[1, 1, 0], [0, 1, 0], [0, 0, 1]]), ("F0", F0), ("QF0", QF0)):
-        text += "*STEP, NAME=%s, NLGEOM\n*STATIC\n0.5, 1.\n*BOUNDARY\n" % name
+        text += "*STEP, NAME=%s, NLGEOM\n*STATIC\n0.5, 1.\n*ELEMENT OUTPUT\nS, E, LE\n*BOUNDARY\n" % name
         for n, X in nodes.items():
             for i in range(3):
                 text += "%d, %d, %d, %.15g\n" % (n, i + 1, i + 1, sum(F[i][j] * X[j] for j in range(3)) - X[i])
