@@ -16,8 +16,9 @@
 # dof 0, a surface flux, a film, a steady restart), oneel8ra (one C3D8 radiating): 1e-6 (measured 4e-16 to 7.5e-8:
 # the same finite elements, CalculiX's C3D20R being fully integrated in heat transfer as DC3D20 is).
 # With LIST=plastic, CalculiX's *PLASTIC test decks against CalculiX itself (package calculix-ccx) at small strain: the
-# decks ask NLGEOM, which CalculiX's plasticity takes as finite strain and thermoslide does not have yet (issue 48; it
-# runs them at small strain and says so), so both codes run each deck with NLGEOM taken off and the displacements of
+# decks ask NLGEOM, which CalculiX's plasticity takes as finite strain; thermoslide has finite strain for elastic
+# elements but keeps plastic ones at small strain (issues 47, 48; it says so at the *STEP line), so both codes run each
+# deck with NLGEOM taken off and the displacements of
 # the last print are compared at 1e-6 of the largest (CalculiX prints 7 digits; measured 6.8e-9 to 3.3e-7):
 #   beampiso  a C3D20R cantilever pulled past yield and back (isotropic hardening, two steps)
 #   beampt    the same beam heated by *TEMPERATURE against its *EXPANSION while yielding (isotropic)
