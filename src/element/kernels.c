@@ -166,14 +166,33 @@ static PetscReal Det3(const PetscReal F[3][3])
          F[0][2] * (F[1][0] * F[2][1] - F[1][1] * F[2][0]);
 }
 
+/* The Green-Lagrange strain (Voigt, engineering shear) of the displacement gradient H: E = (H + H^T + H^T H) / 2, from H
+ * rather than F^T F - I, so that small strains keep their digits. */
+static void GreenStrain(const PetscReal H[3][3], PetscReal Eg[6])
+{
+  for (PetscInt r = 0; r < 6; r++) {
+    const PetscInt K = VoigtI[r], L = VoigtJ[r];
+    PetscReal      c = H[K][L] + H[L][K];
+    for (PetscInt i = 0; i < 3; i++) c += H[i][K] * H[i][L];
+    Eg[r] = r < 3 ? 0.5 * c : c;
+  }
+}
+
+/* The Green-Lagrange strain of the free thermal stretch 1 + eps_th, E_th = eps_th + eps_th^2 / 2, in place with its
+ * temperature derivative. */
+static void ThermalGreenStrain(PetscReal *eps_th, PetscReal *deps_th)
+{
+  const PetscReal e = *eps_th;
+  *eps_th           = e + 0.5 * e * e;
+  *deps_th *= 1 + e;
+}
+
 /* The small-strain point mq (MechPointEvaluate, not lean) made the finite-strain one; PETSC_FALSE where det F <= 0
  * (an element turned inside out: the increment is cut back, as for an inverted element). */
 static PetscBool MechPointFinite(const TslElementInput *in, MechPoint *mq, FinitePoint *fp)
 {
   const TslElementType *t    = in->type;
   const PetscInt        ncol = TslElementTypeNodes(t) * (t->ndof - 1);
-  PetscReal             e    = mq->eps_th;
-
   PetscReal             H[3][3];
 
   TslElementDeformation(t, in->sec, in->x, mq->p, in->u, H, fp->col);
@@ -195,14 +214,8 @@ static PetscBool MechPointFinite(const TslElementInput *in, MechPoint *mq, Finit
     }
   }
   StrainNonzeros(in, mq, PETSC_FALSE);
-  for (PetscInt r = 0; r < 6; r++) { /* E = (H + H^T + H^T H) / 2, engineering shear */
-    const PetscInt K = VoigtI[r], L = VoigtJ[r];
-    PetscReal      c = H[K][L] + H[L][K];
-    for (PetscInt i = 0; i < 3; i++) c += H[i][K] * H[i][L];
-    mq->eps[r] = r < 3 ? 0.5 * c : c;
-  }
-  mq->eps_th = e + 0.5 * e * e;
-  mq->deps_th *= 1 + e;
+  GreenStrain(H, mq->eps);
+  ThermalGreenStrain(&mq->eps_th, &mq->deps_th);
   return PETSC_TRUE;
 }
 
@@ -469,7 +482,7 @@ static PetscBool MechanicsSolid3DFinite(const TslElementInput *in, const TslElem
 
   for (PetscInt q = 0; q < quad->n; q++) {
     PetscReal D[6][6], dD[6][6], Eg[6], emech[6], sig[6], dsig[6], F[3][3], H[3][3] = {{0}}, S[3][3], dS[3][3], P[3][3], dP[3][3], bb[3][3];
-    PetscReal lambda, mu, dV, e, eth, deth, h[TSL_MAX_ELEM_NODES][3];
+    PetscReal lambda, mu, dV, h[TSL_MAX_ELEM_NODES][3];
 
     if (!MechPointEvaluate(in, quad->xi[q], quad->w[q], full && quad == &g->full ? &full[q] : NULL, PETSC_TRUE, &mq)) return PETSC_FALSE;
     dV = mq.p->dV;
@@ -479,21 +492,16 @@ static PetscBool MechanicsSolid3DFinite(const TslElementInput *in, const TslElem
     for (PetscInt i = 0; i < 3; i++)
       for (PetscInt j = 0; j < 3; j++) F[i][j] = (i == j) + H[i][j];
     if (!(Det3(F) > 0)) return PETSC_FALSE;
-    for (PetscInt r = 0; r < 6; r++) {
-      const PetscInt K0 = VoigtI[r], L = VoigtJ[r];
-      PetscReal      c = H[K0][L] + H[L][K0];
-      for (PetscInt i = 0; i < 3; i++) c += H[i][K0] * H[i][L];
-      Eg[r] = r < 3 ? 0.5 * c : c;
-    }
-    e = mq.eps_th, eth = e + 0.5 * e * e, deth = (1 + e) * mq.deps_th;
+    GreenStrain(H, Eg);
+    ThermalGreenStrain(&mq.eps_th, &mq.deps_th);
     TslElementElasticity(t, in->sec, mq.p, &mq.mp, D, K ? dD : NULL);
     TslElementLame(&mq.mp, &lambda, &mu);
-    for (PetscInt r = 0; r < 6; r++) emech[r] = Eg[r] - VoigtM[r] * eth;
+    for (PetscInt r = 0; r < 6; r++) emech[r] = Eg[r] - VoigtM[r] * mq.eps_th;
     for (PetscInt r = 0; r < 6; r++) {
       sig[r] = dsig[r] = 0;
       for (PetscInt s = 0; s < 6; s++) {
         sig[r] += D[r][s] * emech[s];
-        if (K) dsig[r] += dD[r][s] * emech[s] - D[r][s] * VoigtM[s] * deth;
+        if (K) dsig[r] += dD[r][s] * emech[s] - D[r][s] * VoigtM[s] * mq.deps_th;
       }
     }
     VoigtTensor(sig, S);

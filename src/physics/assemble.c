@@ -484,18 +484,17 @@ static PetscErrorCode AssembleLocal(TslProblem p, AsmMode mode, const PetscScala
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* An element turned inside out by a Newton iterate of a finite-strain step (det F <= 0; the reference geometry was
- * checked before the job): a convergence-type failure on all ranks, so the increment is cut back (collective). */
-static PetscErrorCode TurnedInsideOut(TslProblem p, PetscInt *bad, TslFailure *fail)
+/* An inverted element after an assembly (collective): at small strain a user error (TslProblemCheckBadElement); in a
+ * finite-strain step one turned inside out by a Newton iterate (det F <= 0; the reference geometry was checked before
+ * the job), a convergence-type failure on all ranks, so the increment is cut back. */
+static PetscErrorCode AssembledBadElement(TslProblem p, PetscInt bad, TslFailure *fail)
 {
-  PetscInt id = *bad >= 0 ? p->m->elem_id[*bad] : -1, g;
+  PetscInt id = bad >= 0 ? p->m->elem_id[bad] : -1, g;
 
   PetscFunctionBeginUser;
-  if (!p->nlgeom) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!p->nlgeom) PetscFunctionReturn(TslProblemCheckBadElement(p, bad));
   PetscCall(MPIU_Allreduce(&id, &g, 1, MPIU_INT, MPI_MAX, p->comm));
-  if (g < 0) PetscFunctionReturn(PETSC_SUCCESS);
-  *bad = -1;
-  if (*fail) PetscFunctionReturn(PETSC_SUCCESS);
+  if (g < 0 || *fail) PetscFunctionReturn(PETSC_SUCCESS);
   *fail = TSL_FAIL_CONVERGENCE;
   PetscCall(PetscSNPrintf(p->fail_msg, sizeof(p->fail_msg), "element %" PetscInt_FMT " turned inside out (det F <= 0) at a Newton iterate", g));
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -672,8 +671,7 @@ static PetscErrorCode Residual(TslProblem p, AsmMode mode, Vec X, Vec F, AsmHeat
   PetscCall(AssembleLocal(p, mode, xa, xoa, fa, NULL, heat, &bad, fail));
   PetscCall(VecRestoreArray(fl, &fa));
   PetscCall(VecGhostRestoreLocalForm(p->Fl, &fl));
-  PetscCall(TurnedInsideOut(p, &bad, fail));
-  PetscCall(TslProblemCheckBadElement(p, bad));
+  PetscCall(AssembledBadElement(p, bad, fail));
   PetscCall(TslGhostUpdate(p->Fl, ADD_VALUES, SCATTER_REVERSE));
   PetscCall(VecCopy(p->Fl, F));
   if (mode == ASM_RESIDUAL) {
@@ -732,8 +730,7 @@ PetscErrorCode TslProblemFormJacobian(SNES snes, Vec X, Mat J, Mat P, void *ctx)
   PetscCall(MatAssemblyBegin(P, MAT_FINAL_ASSEMBLY));
   PetscCall(MatAssemblyEnd(P, MAT_FINAL_ASSEMBLY));
   PetscCall(TslPhaseEnd(TSL_PHASE_ASSEMBLY));
-  PetscCall(TurnedInsideOut(p, &bad, &fail));
-  PetscCall(TslProblemCheckBadElement(p, bad));
+  PetscCall(AssembledBadElement(p, bad, &fail));
   if (fail) PetscCall(SNESSetJacobianDomainError(snes));
   if (J != P) {
     PetscCall(MatAssemblyBegin(J, MAT_FINAL_ASSEMBLY));

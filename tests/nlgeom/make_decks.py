@@ -8,6 +8,8 @@ turn_{c3d8t,cps4t,cgax4t}  a free block (or ring) heated uniformly by alpha dT =
 homog_c3d8t  one C3D8T cube with every node prescribed: simple shear to gamma = 1, then a general F0, then Q F0 (Q 90
           degrees about (1, 2, 3))
 uniaxial_{c3d8t,c3d8rht,cps4t}  a 2 x 1 x 1 bar on symmetry supports pulled to twice its length (x = 2 -> 4) in 20 increments
+compress_cps4t  the CPS4T bar compressed to 0.7 of its length asked in one increment: the first iterate turns the end
+          element (0.5 long, its end moved by 0.6) inside out, and the increment is cut back
 pressure_{c3d8t,cpe4t,cax4t}  a unit block (ring) on symmetry supports pressed by a follower pressure p = 2e4 (E = 2e5): the
           Cauchy stress -p along the load on the deformed face
 spin_{c3d8t,cpe4t}  a free block spinning about z (initial velocities omega x X), explicit with NLGEOM, through a quarter
@@ -137,16 +139,16 @@ def supports(nodes, dim, axi=False):
     return sets, names
 
 
-def uniaxial(etype):
+def uniaxial(etype, stretch=2.0, first=0.05, name="uniaxial"):
     dim = 2 if etype.startswith("CP") else 3
     nodes, elems = grid(4, 2, 0 if dim == 2 else 2, 2.0, 1.0, 1.0)
     sets, sym = supports(nodes, dim)
     end = [n for n, x in nodes.items() if abs(x[0] - 2.0) < 1e-12]
-    text = "*HEADING\n NLGEOM: a %s bar pulled to twice its length (make_decks.py uniaxial)\n" % etype
+    text = "*HEADING\n NLGEOM: a %s bar taken to %g times its length (make_decks.py uniaxial)\n" % (etype, stretch)
     text += mesh(nodes, elems, etype, dim) + sets + nset("END", end) + material() + section(etype)
-    text += "*STEP, NLGEOM, INC=100\n*STATIC\n0.05, 1.\n*BOUNDARY\n"
-    text += "".join("%s, %d, %d\n" % (nm, d, d) for nm, d in sym) + "END, 1, 1, 2.\n*END STEP\n"
-    write("uniaxial_" + etype.lower(), text)
+    text += "*STEP, NLGEOM, INC=100\n*STATIC\n%g, 1.\n*BOUNDARY\n" % first
+    text += "".join("%s, %d, %d\n" % (nm, d, d) for nm, d in sym) + "END, 1, 1, %.15g\n*END STEP\n" % (2.0 * (stretch - 1))
+    write(name + "_" + etype.lower(), text)
 
 
 def pressure(etype):
@@ -209,6 +211,7 @@ for t in ("C3D8T", "CPE4T"):
 homog()
 for t in ("C3D8T", "C3D8RHT", "CPS4T"):
     uniaxial(t)
+uniaxial("CPS4T", 0.7, 1.0, "compress")  # in one increment: the end element turned inside out, then cut back
 for t in ("C3D8T", "CPE4T", "CAX4T"):
     pressure(t)
 for t in ("C3D8T", "CGAX4RHT"):
