@@ -457,6 +457,12 @@ typedef struct {
   TslIncrementControls controls; /* *CONTROLS, PARAMETERS=TIME INCREMENTATION or RESET (given = FALSE: none in this step) */
   TslFieldControls     field_controls[2]; /* *CONTROLS, PARAMETERS=FIELD for the displacement and the temperature field */
   TslTemperatureFile   tfile;             /* *TEMPERATURE, FILE= (given = FALSE: none in this step) */
+  /* *RESTART, WRITE in force in this step (the last one given, in this step or before, or in the model data):
+   * a restart point every restart_frequency increments and at the step's end (0: none; docs/running.md
+   * "Restart"); restart_overlay: OVERLAY, only the latest point kept */
+  PetscInt  restart_frequency;
+  PetscBool restart_overlay;
+  TslLoc    restart_loc; /* the *RESTART line in force (its place in messages) */
 } TslStep;
 
 typedef struct {

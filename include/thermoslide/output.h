@@ -21,6 +21,7 @@
  *   attributes of /frames/NNNNNN: time, step, increment
  */
 #pragma once
+#include <stdint.h>
 #include <thermoslide/compat.h>
 
 typedef struct _p_TslOutput *TslOutput;
@@ -50,6 +51,12 @@ PetscErrorCode TslOutputElementField(TslOutput out, const char *name, PetscInt n
 PetscErrorCode TslOutputEndFrame(TslOutput out);
 /* Seconds between syncs (default 1; 0: after every frame). */
 PetscErrorCode TslOutputSetSyncInterval(TslOutput out, PetscReal seconds);
+/* Restart (src/solve/restart.c): this run's identity, its frames so far, and the first nframe frames of the earlier
+ * run run_id copied from its file src into this output (a continuation's output extends the original's). Collective;
+ * after TslOutputSetMesh, before any frame of this run. */
+uint64_t       TslOutputRunId(TslOutput out);
+PetscErrorCode TslOutputFrameCount(TslOutput out, PetscInt *n);
+PetscErrorCode TslOutputCopyFrames(TslOutput out, const char *src, uint64_t run_id, PetscInt nframe);
 
 /* Moves the temporary files over <job>.h5 / <job>.xmf, or <job>.<tag>.h5 / .xmf when tag is given (the
  * results of a run that stopped, kept beside earlier ones). Collective. */
@@ -62,6 +69,10 @@ PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobn
 PetscErrorCode TslHistoryAppend(TslHistory hist, const PetscReal vals[]);
 PetscErrorCode TslHistoryFinalize(TslHistory hist, const char *tag); /* as TslOutputFinalize */
 PetscErrorCode TslHistoryDestroy(TslHistory *hist);
+/* Restart: the first nrow data rows of an earlier history file src copied into this one (rank 0 reads it;
+ * collective), and the rows so far. */
+PetscErrorCode TslHistoryCopyRows(TslHistory hist, const char *src, PetscInt nrow);
+PetscInt       TslHistoryRowCount(TslHistory hist);
 
 /* Printed tables (*NODE PRINT, *EL PRINT) in rank order with bounded memory: rank 0 prints its own lines
  * as they come, then asks each rank in turn, which sends its lines in chunks of at most 64 kB. No rank

@@ -16,6 +16,7 @@
 #include <thermoslide/model.h>
 #include <thermoslide/element.h>
 #include <petscsnes.h>
+#include <stdint.h>
 
 typedef struct _p_TslProblem *TslProblem;
 
@@ -57,9 +58,22 @@ PetscErrorCode TslProblemGetFieldIS(TslProblem prob, IS *is_u, IS *is_theta);
 PetscErrorCode TslProblemSetStep(TslProblem prob, PetscInt s);
 /* Time of the increment being solved: step time t (end of increment), increment dt, total time. */
 PetscErrorCode TslProblemSetTime(TslProblem prob, PetscReal step_time, PetscReal dt, PetscReal total_time);
+/* The step time last set (at a step's start: the time the step before ended at). */
+PetscReal      TslProblemGetStepTime(TslProblem prob);
 /* Mises plasticity: the state the last TslProblemHeatBalance found at its solution becomes the committed one (an
  * accepted increment; a cutback keeps the committed state, so nothing is rolled back). */
 PetscErrorCode TslProblemCommitState(TslProblem prob);
+/* Restart (src/physics/state.c, for src/solve/restart.c): the problem's committed state beyond the solution and the
+ * step's tables (its contact nodes' pairing, history and slip, the nodal normals of 3D main surfaces, the plastic
+ * points' state) as one block of bytes in this rank's own layout, so valid for a continuation on the same ranks and
+ * partition only. *unsupported: why this model's state cannot be saved yet (NULL: it can). Unpack makes the block the
+ * committed and the current state (as after an accepted increment) and marks the matrix pattern stale. */
+PetscErrorCode TslProblemStateSize(TslProblem prob, size_t *bytes, const char **unsupported);
+PetscErrorCode TslProblemStatePack(TslProblem prob, void *buf);
+PetscErrorCode TslProblemStateUnpack(TslProblem prob, const void *buf);
+/* A digest of this rank's layout (nodes and their global ids, dofs, elements, contact nodes), for checking that a
+ * continuation has the model and partition its restart point was written with. */
+PetscErrorCode TslProblemLayoutDigest(TslProblem prob, uint64_t *digest);
 /* After step s: for each material whose *PLASTIC data depend on temperature, whether the nodal temperatures of its
  * elements left the temperatures the data cover (the end values hold there, as in the dialect): a warning naming the
  * keyword's line, once per material in the run. Collective. */

@@ -72,6 +72,9 @@ typedef struct {
   PetscInt  interaction;         /* surface interaction the interface-law keywords apply to, or -1 */
   PetscInt  out_frequency;       /* *OUTPUT, FREQUENCY= in the open step */
   PetscInt  out_frequency_model; /* *OUTPUT, FREQUENCY= in the model data: each step's default */
+  PetscInt  restart_frequency;   /* *RESTART, WRITE in force (model data or an earlier step): the next step's */
+  PetscBool restart_overlay;
+  TslLoc    restart_loc;
   PetscInt  out_number_model;    /* *OUTPUT, NUMBER INTERVAL= in the model data: each step's default (0: none) */
   PetscReal out_time_model;      /* *OUTPUT, TIME INTERVAL= in the model data: each step's default (0: none) */
   PetscInt *node_line;           /* [2*nnode] (file, line) of each node, for duplicate messages */
@@ -2356,6 +2359,9 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
   s->dtmin                      = 1e-5;
   s->out_number_interval        = d->out_number_model;
   s->out_time_interval          = d->out_time_model;
+  s->restart_frequency          = d->restart_frequency;
+  s->restart_overlay            = d->restart_overlay;
+  s->restart_loc                = d->restart_loc;
   d->step                       = m->nstep++;
   d->out_frequency              = d->out_frequency_model;
   /* Abaqus allows one data line here, the step's title (free text, commas included): read and not kept (the
@@ -3286,6 +3292,34 @@ static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *RESTART, WRITE [, FREQUENCY=n] [, OVERLAY]: restart points every n increments of this step and the ones after
+ * (until the next *RESTART), and at each step's end (src/solve/restart.c; docs/running.md "Restart"). Model data:
+ * from the first step on. READ: the dialect's continuation by a new deck, not here: the job continues with
+ * -tsl_restart (the same deck) instead. */
+static PetscErrorCode KwRestart(Deck *d, const DeckKeyword *kw)
+{
+  PetscInt freq = 1;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!Param(d, "READ"), LOC_FMT "*RESTART, READ (a continuation deck) is not supported: run the original deck again with -tsl_restart, which continues from its latest restart point (docs/running.md, \"Restart\")", KLOC(d));
+  USER_CHECK(Param(d, "WRITE"), LOC_FMT "*RESTART needs WRITE (or READ)", KLOC(d));
+  PetscCall(ParamInt(d, "FREQUENCY", &freq));
+  USER_CHECK(freq >= 0, LOC_FMT "*RESTART, FREQUENCY must not be negative (got %" PetscInt_FMT ")", KLOC(d), freq);
+  if (Param(d, "NUMBER INTERVAL") || Param(d, "TIME MARKS"))
+    PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *RESTART, NUMBER INTERVAL= / TIME MARKS= are read as FREQUENCY=1 (a point every increment)\n", KLOC(d)));
+  d->restart_frequency = freq;
+  d->restart_overlay   = (PetscBool)(Param(d, "OVERLAY") != NULL);
+  d->restart_loc       = d->kwloc;
+  if (d->step >= 0) {
+    TslStep *s           = &d->m->steps[d->step];
+    s->restart_frequency = d->restart_frequency;
+    s->restart_overlay   = d->restart_overlay;
+    s->restart_loc       = d->restart_loc;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* *PART, NAME=p: the ids after it are shifted past every id defined so far (see "Parts and instances"). */
 static PetscErrorCode KwPart(Deck *d, const DeckKeyword *kw)
 {
@@ -3662,7 +3696,7 @@ static const DeckKeyword Keywords[] = {
     {"PREPRINT", AT_MODEL, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"FILE FORMAT", AT_BOTH, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"MONITOR", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
-    {"RESTART", AT_BOTH, IN_NONE, NULL, KwIgnored, 0, NULL},
+    {"RESTART", AT_BOTH, IN_NONE, NULL, KwRestart, 0, NULL},
     {"CONTACT PRINT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"CONTACT FILE", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"ENERGY PRINT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},

@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <string.h>
 #include <unistd.h>
+#include <stdlib.h>
 
 PetscErrorCode TslHistoryCreate(MPI_Comm comm, const char *dir, const char *jobname, PetscInt ncol, const char *const names[], TslHistory *hist)
 {
@@ -59,6 +60,7 @@ PetscErrorCode TslHistoryAppend(TslHistory hist, const PetscReal vals[])
     if (fflush(hist->fp) || ferror(hist->fp)) err = errno ? errno : EIO;
   }
   PetscCall(TslOutputCheckRoot(hist->comm, err, "write history file", hist->part));
+  hist->nrow++;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -96,4 +98,41 @@ PetscErrorCode TslHistoryDestroy(TslHistory *hist)
   PetscCall(PetscFree(h));
   *hist = NULL;
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective: rank 0 copies the data rows 1..nrow of src (after its header) into this history. */
+PetscErrorCode TslHistoryCopyRows(TslHistory hist, const char *src, PetscInt nrow)
+{
+  int      err = 0;
+  PetscInt got = 0;
+
+  PetscFunctionBeginUser;
+  if (hist->rank == 0) {
+    FILE *in = fopen(src, "r");
+    if (!in) err = errno;
+    else {
+      char     buf[4096];
+      PetscInt k = -1; /* the header's line first */
+      while (k < nrow && fgets(buf, sizeof(buf), in)) {
+        const PetscBool eol = strchr(buf, '\n') ? PETSC_TRUE : PETSC_FALSE;
+        if (k >= 0) fputs(buf, hist->fp);
+        if (eol) {
+          if (k >= 0) got++;
+          k++;
+        }
+      }
+      fclose(in);
+      if (fflush(hist->fp) || ferror(hist->fp)) err = errno ? errno : EIO;
+    }
+  }
+  PetscCall(TslOutputCheckRoot(hist->comm, err, "copy the history rows of", src));
+  PetscCallMPI(MPI_Bcast(&got, 1, MPIU_INT, 0, hist->comm));
+  hist->nrow += got;
+  PetscCheck(got == nrow, hist->comm, PETSC_ERR_FILE_UNEXPECTED, "%s has %" PetscInt_FMT " history rows, the restart point %" PetscInt_FMT, src, got, nrow);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscInt TslHistoryRowCount(TslHistory hist)
+{
+  return hist->nrow;
 }

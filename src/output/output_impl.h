@@ -64,6 +64,7 @@ struct _p_TslOutput {
   PetscInt            nframe, maxframe;
   TslOutputFrameInfo *frames;
   double              sync_interval, last_sync; /* wall seconds between syncs of the .h5 and .xmf.part; last one */
+  uint64_t            run_id; /* this run's identity (the root attribute run_id; restart points name it) */
 };
 
 /* The XDMF topology type of a cell type id (XDMF's numbering, as in /mesh/topology): its name and node count, for
@@ -89,6 +90,7 @@ struct _p_TslHistory {
   char        part[PETSC_MAX_PATH_LEN], final[PETSC_MAX_PATH_LEN];
   char        dir[PETSC_MAX_PATH_LEN], job[TSL_NAME_LEN];
   PetscBool   finalized;
+  PetscInt    nrow; /* data rows written (copied ones included) */
 };
 
 /* The final name dir/job[.tag]suffix: tag (may be NULL) marks the results of a run that stopped. */

@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
+#include <time.h>
+#include <math.h>
 
 PetscErrorCode TslOutputPath(MPI_Comm comm, const char *dir, const char *name, const char *suffix, char buf[], size_t len)
 {
@@ -62,6 +64,8 @@ PetscErrorCode TslOutputCheckRoot(MPI_Comm comm, int err, const char *action, co
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode WriteAttribute(TslOutput out, hid_t loc, const char *name, hid_t filetype, hid_t memtype, const void *val);
+
 PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobname, TslOutput *out)
 {
   TslOutput   o;
@@ -116,6 +120,15 @@ PetscErrorCode TslOutputCreate(MPI_Comm comm, const char *dir, const char *jobna
 
   TslH5Check(comm, o->dxpl = H5Pcreate(H5P_DATASET_XFER), o->h5_part);
   TslH5Check(comm, H5Pset_dxpl_mpio(o->dxpl, H5FD_MPIO_COLLECTIVE), o->h5_part);
+  {
+    /* this run's identity, so that a continuation (-tsl_restart) copies the frames of the run its restart point
+     * belongs to and no other file of the same name */
+    uint64_t id = 0;
+    if (o->rank == 0) id = ((uint64_t)time(NULL) << 20) ^ ((uint64_t)getpid() << 1) ^ (uint64_t)(1e6 * fmod(MPI_Wtime(), 1.0));
+    PetscCallMPI(MPI_Bcast(&id, 1, MPI_UINT64_T, 0, comm));
+    o->run_id = id;
+    PetscCall(WriteAttribute(o, o->file, "run_id", H5T_STD_U64LE, H5T_NATIVE_UINT64, &id));
+  }
   TslH5Check(comm, grp = H5Gcreate2(o->file, "/mesh", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), o->h5_part);
   TslH5Check(comm, H5Gclose(grp), o->h5_part);
   TslH5Check(comm, grp = H5Gcreate2(o->file, "/frames", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), o->h5_part);
@@ -328,7 +341,7 @@ PetscErrorCode TslOutputBeginFrame(TslOutput out, PetscInt step, PetscInt increm
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static PetscErrorCode WriteField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[], PetscBool on_cells)
+static PetscErrorCode WriteField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[], const PetscReal block[], PetscBool on_cells)
 {
   const TslRedist    *rd = on_cells ? &out->elems : &out->nodes;
   TslOutputFrameInfo *f;
@@ -351,11 +364,21 @@ static PetscErrorCode WriteField(TslOutput out, const char *name, PetscInt ncomp
     f->maxfield = newmax;
   }
 
-  PetscCall(PetscMalloc1(ncomp * rd->nblock, &blk));
-  PetscCall(TslRedistMove(out->comm, rd, ncomp * sizeof(PetscReal), vals, blk));
+  if (!block) {
+    PetscCall(PetscMalloc1(ncomp * rd->nblock, &blk));
+    PetscCall(TslRedistMove(out->comm, rd, ncomp * sizeof(PetscReal), vals, blk));
+  } else blk = (PetscReal *)block; /* already this rank's natural block (TslOutputCopyFrames) */
   PetscCall(WriteRows(out, out->frame_group, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, (hsize_t)rd->nglobal, (hsize_t)ncomp, (hsize_t)rd->bstart,
                       (hsize_t)rd->nblock, blk));
-  PetscCall(PetscFree(blk));
+  if (!block) PetscCall(PetscFree(blk));
+  {
+    /* where the values live, for a continuation that copies the frame (TslOutputCopyFrames) */
+    hid_t   dset;
+    int64_t cells = on_cells;
+    TslH5Check(out->comm, dset = H5Dopen2(out->frame_group, name, H5P_DEFAULT), out->h5_part);
+    PetscCall(WriteAttribute(out, dset, "cells", H5T_STD_I64LE, H5T_NATIVE_INT64, &cells));
+    TslH5Check(out->comm, H5Dclose(dset), out->h5_part);
+  }
   PetscCall(PetscStrncpy(f->fields[f->nfield].name, name, sizeof(f->fields[f->nfield].name)));
   f->fields[f->nfield].ncomp    = ncomp;
   f->fields[f->nfield].on_cells = on_cells;
@@ -366,14 +389,14 @@ static PetscErrorCode WriteField(TslOutput out, const char *name, PetscInt ncomp
 PetscErrorCode TslOutputNodeField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[])
 {
   PetscFunctionBeginUser;
-  PetscCall(WriteField(out, name, ncomp, vals, PETSC_FALSE));
+  PetscCall(WriteField(out, name, ncomp, vals, NULL, PETSC_FALSE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 PetscErrorCode TslOutputElementField(TslOutput out, const char *name, PetscInt ncomp, const PetscReal vals[])
 {
   PetscFunctionBeginUser;
-  PetscCall(WriteField(out, name, ncomp, vals, PETSC_TRUE));
+  PetscCall(WriteField(out, name, ncomp, vals, NULL, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -409,6 +432,99 @@ PetscErrorCode TslOutputEndFrame(TslOutput out)
   /* The .xmf about to name this frame must not point at data still in HDF5's cache. */
   TslH5Check(out->comm, H5Fflush(out->file, H5F_SCOPE_GLOBAL), out->h5_part);
   PetscCall(RewriteXmf(out));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+uint64_t TslOutputRunId(TslOutput out)
+{
+  return out->run_id;
+}
+
+PetscErrorCode TslOutputFrameCount(TslOutput out, PetscInt *n)
+{
+  PetscFunctionBeginUser;
+  *n = out->nframe;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Reads attribute name of loc into val (rank-agreed failure naming path). */
+static PetscErrorCode ReadAttribute(MPI_Comm comm, hid_t loc, const char *name, hid_t memtype, void *val, const char *path)
+{
+  hid_t attr;
+
+  PetscFunctionBeginUser;
+  TslH5Check(comm, attr = H5Aopen(loc, name, H5P_DEFAULT), path);
+  TslH5Check(comm, H5Aread(attr, memtype, val), path);
+  TslH5Check(comm, H5Aclose(attr), path);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputCopyFrames(TslOutput out, const char *src, uint64_t run_id, PetscInt nframe)
+{
+  hid_t    fapl, file;
+  uint64_t id = 0;
+
+  PetscFunctionBeginUser;
+  TslH5Check(out->comm, fapl = H5Pcreate(H5P_FILE_ACCESS), src);
+  TslH5Check(out->comm, H5Pset_fapl_mpio(fapl, out->comm, MPI_INFO_NULL), src);
+  TslH5Check(out->comm, H5Pset_all_coll_metadata_ops(fapl, 1), src);
+  TslH5Check(out->comm, H5Pset_fclose_degree(fapl, H5F_CLOSE_STRONG), src);
+  TslH5Check(out->comm, file = H5Fopen(src, H5F_ACC_RDONLY, fapl), src);
+  TslH5Check(out->comm, H5Pclose(fapl), src);
+  PetscCall(ReadAttribute(out->comm, file, "run_id", H5T_NATIVE_UINT64, &id, src));
+  PetscCheck(id == run_id, out->comm, PETSC_ERR_FILE_UNEXPECTED, "%s is the output of another run than the restart point's (run %llx, not %llx)", src,
+             (unsigned long long)id, (unsigned long long)run_id);
+  for (PetscInt i = 1; i <= nframe; i++) {
+    char    gname[32];
+    hid_t   grp;
+    hsize_t nlink;
+    int64_t step, inc;
+    double  t;
+    H5G_info_t info;
+
+    snprintf(gname, sizeof(gname), "/frames/%06d", (int)i);
+    TslH5Check(out->comm, grp = H5Gopen2(file, gname, H5P_DEFAULT), src);
+    PetscCall(ReadAttribute(out->comm, grp, "time", H5T_NATIVE_DOUBLE, &t, src));
+    PetscCall(ReadAttribute(out->comm, grp, "step", H5T_NATIVE_INT64, &step, src));
+    PetscCall(ReadAttribute(out->comm, grp, "increment", H5T_NATIVE_INT64, &inc, src));
+    PetscCall(TslOutputBeginFrame(out, (PetscInt)step, (PetscInt)inc, (PetscReal)t));
+    TslH5Check(out->comm, H5Gget_info(grp, &info), src);
+    nlink = info.nlinks;
+    for (hsize_t k = 0; k < nlink; k++) {
+      char             name[TSL_NAME_LEN];
+      hid_t            dset, fspace, mspace;
+      hsize_t          dims[2] = {0, 1}, off[2] = {0, 0}, cnt[2];
+      int64_t          cells   = 0;
+      const TslRedist *rd;
+      PetscReal       *blk;
+      double           dummy;
+      ssize_t          len;
+
+      TslH5Check(out->comm, len = H5Lget_name_by_idx(grp, ".", H5_INDEX_NAME, H5_ITER_INC, k, name, sizeof(name), H5P_DEFAULT), src);
+      PetscCheck(len < (ssize_t)sizeof(name), out->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: a field name of frame %" PetscInt_FMT " is too long", src, i);
+      TslH5Check(out->comm, dset = H5Dopen2(grp, name, H5P_DEFAULT), src);
+      PetscCall(ReadAttribute(out->comm, dset, "cells", H5T_NATIVE_INT64, &cells, src));
+      TslH5Check(out->comm, fspace = H5Dget_space(dset), src);
+      TslH5Check(out->comm, H5Sget_simple_extent_dims(fspace, dims, NULL), src);
+      rd = cells ? &out->elems : &out->nodes;
+      PetscCheck((PetscInt)dims[0] == rd->nglobal, out->comm, PETSC_ERR_FILE_UNEXPECTED, "%s: field %s of frame %" PetscInt_FMT " has %llu rows, the model %" PetscInt_FMT, src, name,
+                 i, (unsigned long long)dims[0], rd->nglobal);
+      off[0] = (hsize_t)rd->bstart, cnt[0] = (hsize_t)rd->nblock, cnt[1] = dims[1];
+      PetscCall(PetscMalloc1(PetscMax(1, (PetscInt)(dims[1] * rd->nblock)), &blk));
+      TslH5Check(out->comm, mspace = H5Screate_simple(2, (hsize_t[]){cnt[0] ? cnt[0] : 1, dims[1]}, NULL), src);
+      if (cnt[0]) TslH5Check(out->comm, H5Sselect_hyperslab(fspace, H5S_SELECT_SET, off, NULL, cnt, NULL), src);
+      else TslH5Check(out->comm, H5Sselect_none(fspace) < 0 || H5Sselect_none(mspace) < 0 ? -1 : 0, src);
+      TslH5Check(out->comm, H5Dread(dset, H5T_NATIVE_DOUBLE, mspace, fspace, out->dxpl, cnt[0] ? (void *)blk : (void *)&dummy), src);
+      TslH5Check(out->comm, H5Sclose(mspace), src);
+      TslH5Check(out->comm, H5Sclose(fspace), src);
+      TslH5Check(out->comm, H5Dclose(dset), src);
+      PetscCall(WriteField(out, name, (PetscInt)dims[1], NULL, blk, (PetscBool)(cells != 0)));
+      PetscCall(PetscFree(blk));
+    }
+    TslH5Check(out->comm, H5Gclose(grp), src);
+    PetscCall(TslOutputEndFrame(out));
+  }
+  TslH5Check(out->comm, H5Fclose(file), src);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

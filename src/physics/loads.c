@@ -435,6 +435,11 @@ PetscErrorCode TslProblemSetTime(TslProblem p, PetscReal step_time, PetscReal dt
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscReal TslProblemGetStepTime(TslProblem p)
+{
+  return p->t;
+}
+
 PetscErrorCode TslProblemApplyPrescribed(TslProblem p, Vec X)
 {
   PetscScalar *x;

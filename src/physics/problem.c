@@ -343,6 +343,7 @@ static PetscErrorCode SetUpPlasticState(TslProblem p)
     p->pstate_off[e]        = TslMaterialIsPlastic(p->esec[e].mat) && t->ndof > 1 ? n : -1; /* a heat-transfer type has no mechanics */
     if (p->pstate_off[e] >= 0) n += TslMaterialPlasticState(p->esec[e].mat) * TslElementTypeMechanicalPoints(t, &p->esec[e]);
   }
+  p->npstate = n;
   PetscCall(PetscCalloc1(n, &p->pstate)); /* two blocks, not one: TslProblemCommitState swaps them */
   PetscCall(PetscCalloc1(n, &p->pstate_new));
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -129,7 +129,7 @@ struct _p_TslProblem {
    * pstate_new the state the heat balance's pass reaches at the converged solution (pstate_write), made the committed
    * one by TslProblemCommitState */
   PetscReal *pstate, *pstate_new;
-  PetscInt  *pstate_off;
+  PetscInt  *pstate_off, npstate; /* npstate: the reals of each block */
   PetscBool  pstate_write;
 
   /* step state */

@@ -327,6 +327,10 @@ static PetscErrorCode SetUpSolver(Driver *d)
                            "each increment's Newton solve starts from the last increment's change extrapolated linearly (the dialect's "
                            "EXTRAPOLATION=LINEAR)",
                            &d->extrapolate));
+  PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_restart",
+                           "continue the job from the latest valid restart point in its output directory (*RESTART, WRITE, or a stop "
+                           "signal, wrote it); its results extend the earlier run's (docs/running.md, \"Restart\")",
+                           &d->rs_resume));
   PetscCall(TslOptionsBool(PetscOptionsObject, "-tsl_implicit_records",
                            "implicit residuals from the element force records (geometry and conduction computed once; docs/running.md)",
                            &d->implicit_records));
@@ -898,6 +902,19 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   dt  = PetscMin(step->dt0, step->period);
   eps = 1e-12 * step->period;
   TslFrameTimesSetUp(&frames, step, 0);
+  if (d->rs_resume && s == d->rs_loop.step) {
+    /* a continuation (-tsl_restart): the loop goes on from the point's state */
+    TslRestartLoop L;
+    PetscCall(TslRestartLoad(d, &L));
+    t = L.t, dt = L.dt, inc = L.inc, its_prev = L.its_prev, cutbacks = L.cutbacks, *total_time = L.total;
+    d->h_prev   = L.h_prev;
+    frames.next = L.frames_next;
+    if (d->done_step == s + 1) PetscCall(TslProblemSetTime(d->prob, d->done_step_time, d->done_dt, d->done_time));
+    if (d->rs_fell_back && !d->fell_back) {
+      PetscBool switched;
+      PetscCall(FallBackToDirect(d, X, s, inc, "the run before the restart point had switched to the direct solver", &switched));
+    }
+  }
   while (t < step->period - eps) {
     SNESConvergedReason reason;
     PetscInt            its, lits;
@@ -922,6 +939,14 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     if (d->extrapolate && !step->no_extrapolation && d->h_prev > 0) PetscCall(VecAXPBY(X, -h / d->h_prev, 1.0 + h / d->h_prev, d->Xprev));
     PetscCall(TslProblemApplyPrescribed(d->prob, X));
     PetscCall(SolveIncrement(d, X, &reason, &its, &lits));
+    if (d->stop) {
+      /* told to stop: a restart point of the last converged state, the loop's state before this attempt */
+      const TslRestartLoop L = {s, inc, its_prev, cutbacks, t, dt, *total_time, d->h_prev, frames.next};
+      PetscCall(VecCopy(Xold, X));
+      PetscCall(TslProblemContactRollback(d->prob));
+      d->trial = PETSC_FALSE;
+      PetscCall(TslRestartWrite(d, &L, TslStopName(d->stop)));
+    }
     PetscCheck(!d->stop, d->comm, PETSC_ERR_SIG, "step %" PetscInt_FMT ": %s received at step time %g, in increment %" PetscInt_FMT "; %s", s + 1,
                TslStopName(d->stop), (double)(t + h), inc + 1, SavedState(d, t, saved, sizeof(saved)));
     if (s + 1 == d->debug_diverge_step) reason = SNES_DIVERGED_FUNCTION_DOMAIN;
@@ -1014,6 +1039,14 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     }
     its_prev = its;
     cutbacks = 0;
+    if (step->restart_frequency > 0 && (inc % step->restart_frequency == 0 || last || steady)) {
+      /* *RESTART, WRITE: a point every FREQUENCY increments and at the step's end (END=SS: the loop's time set to
+       * the period, so that the continuation ends the step there too) */
+      const TslRestartLoop L = {s, inc, its_prev, 0, steady ? step->period : t, dt, *total_time, d->h_prev, frames.next};
+      char                 why[64];
+      PetscCall(PetscSNPrintf(why, sizeof(why), last || steady ? "end of step" : "FREQUENCY=%" PetscInt_FMT, step->restart_frequency));
+      PetscCall(TslRestartWrite(d, &L, why));
+    }
     if (steady) {
       PetscCall(PetscPrintf(d->comm,
                             "  step %" PetscInt_FMT ": steady state at step time %g (largest temperature rate %g below END=SS's %g); the step ends\n",
@@ -1121,12 +1154,20 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
   for (size_t k = 0; k < sizeof(Procedures) / sizeof(Procedures[0]); k++) PetscCall(Procedures[k].setup(&d));
   PetscCall(TslOptionsCheckUnused(d.comm, PETSC_TRUE)); /* every -tsl_ option has been read by now */
   PetscCall(TslProblemTemperatureFilesCheck(prob)); /* *TEMPERATURE, FILE=: the files against the model, before any result is written */
+  PetscCall(TslRestartSetUp(&d, dir, jobname)); /* -tsl_restart: the point to continue from */
   PetscCall(TslFramesSetUp(&d, dir, jobname));
+  ierr = TslRestartCopyOutput(&d); /* ... and the frames and history rows of the run that wrote it */
   /* every failure inside a step is decided by all ranks together (sys.h), so all ranks stop here alike */
   for (PetscInt s = 0; s < m->nstep && !ierr; s++) {
     const Procedure *pr = StepProcedure(&m->steps[s]);
     PetscCall(TslProblemSetMatrixFree(prob, pr->matrix_free));
-    ierr = pr->run_step(&d, s, &total);
+    ierr = TslRestartStepStart(&d, s, &total);
+    if (!ierr && d.rs_resume && s < d.rs_loop.step) {
+      /* a continuation replays the steps before the point's only as far as their loads and boundary conditions */
+      ierr = TslProblemSetStep(prob, s);
+      continue;
+    }
+    if (!ierr) ierr = pr->run_step(&d, s, &total);
     if (!ierr) PetscCall(TslProblemPlasticTemperatureCheck(prob, s));
   }
   if (d.jac_reuses)
@@ -1141,6 +1182,7 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
     PetscCall(Finish(&d, ierr, dir, jobname));
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
   }
+  PetscCall(TslRestartFinish(&d, (PetscBool)!ierr));
   PetscCall(TslOutputDestroy(&d.out));
   PetscCall(TslHistoryDestroy(&d.hist));
   PetscCall(SNESDestroy(&d.snes));

@@ -44,6 +44,12 @@ enum {
   HIST_ENERGY /* the first energy column of explicit steps: ALLKE, ALLIE, ALLWK, ALLFD, ALLCW, ALLMW, ALLVD, ETOTAL */
 };
 
+/* The increment loop's state at a restart point (RunStep's variables at the top of its loop; restart.c). */
+typedef struct {
+  PetscInt  step, inc, its_prev, cutbacks; /* step 0-based; increments done in it */
+  PetscReal t, dt, total, h_prev, frames_next;
+} TslRestartLoop;
+
 typedef struct {
   TslProblem prob;
   MPI_Comm   comm;
@@ -124,7 +130,35 @@ typedef struct {
   PetscBool        extrapolate; /* -tsl_extrapolate */
   Vec              Xprev;       /* the converged state before Xold */
   PetscReal        h_prev;      /* the last accepted increment of the step (0: none yet) */
+  /* restart points (restart.c): where they go, each implicit step's solution at its start and its total time and
+   * the step time the step before ended at (what TslProblemSetStep reads), the points written and their cost;
+   * a continuation (-tsl_restart): the point, its loop state, and the earlier run's output files */
+  char           rs_dir[PETSC_MAX_PATH_LEN], rs_job[256];
+  Vec           *rs_xstart;
+  PetscReal     *rs_tstart;
+  PetscInt       rs_count;
+  double         rs_seconds, rs_bytes;
+  char           rs_last[PETSC_MAX_PATH_LEN]; /* the last point written (OVERLAY removes it when the next is in place) */
+  PetscBool      rs_warned;
+  PetscBool      rs_resume;
+  char           rs_point[PETSC_MAX_PATH_LEN], rs_src_h5[PETSC_MAX_PATH_LEN], rs_src_csv[PETSC_MAX_PATH_LEN];
+  TslRestartLoop rs_loop;
+  PetscReal      rs_sums[24];  /* the driver's sums at the point (restart.c, RestoreSums) */
+  PetscInt       rs_nframe, rs_nrow, rs_fell_back;
+  uint64_t       rs_run_id;
 } Driver;
+
+/* Restart (restart.c; docs/running.md "Restart"). SetUp: the -tsl_restart option, and the point to continue from
+ * (before TslFramesSetUp, which copies its run's frames and history rows: TslRestartCopyOutput). StepStart: at the
+ * start of implicit step s, X is kept (a run that writes points) or set from the point (a continuation, s up to
+ * the point's step). Write: a point of the loop state (the problem's committed state, X, Xprev); why names it in
+ * the log. Load: the point's X, Xprev and problem state, the driver's sums; *loop the loop's variables. */
+PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname);
+PetscErrorCode TslRestartCopyOutput(Driver *d);
+PetscErrorCode TslRestartStepStart(Driver *d, PetscInt s, PetscReal *total_time);
+PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char *why);
+PetscErrorCode TslRestartLoad(Driver *d, TslRestartLoop *loop);
+PetscErrorCode TslRestartFinish(Driver *d, PetscBool completed);
 
 
 /* The output times of a step given by *OUTPUT, NUMBER INTERVAL=n (every period/n) or TIME INTERVAL=dt (every dt,

@@ -1,0 +1,601 @@
+/* Restart points and the continuation from one (docs/running.md, "Restart").
+ *
+ * A point is one HDF5 file, <job>.restart.<step>.<increment>.h5 in the output directory, written through PETSc's
+ * HDF5 viewer (parallel, collective) under a scratch name and renamed over when complete, so that a crash while
+ * writing leaves the points before it valid. It holds
+ *   header   the increment loop's variables (TslRestartLoop), the driver's sums, the output's frame and history
+ *            row counts and its run identity, and each step's total time at its start;
+ *   layout   one digest per rank of the rank's nodes, elements and contact nodes (the continuation must have the
+ *            same model and partition);
+ *   X, Xprev the solution at the point and the one before it (the extrapolation of the next increment's start);
+ *   start_k  the solution at the start of each step k up to the point's (TslProblemSetStep reads the values reached
+ *            there: ramps from them, FIXED holds them), replayed by the continuation step by step;
+ *   state    the problem's committed state as bytes per rank (contact nodes, 3D surface normals, plastic points).
+ * The vectors are in PETSc's parallel layout and the state in each rank's own, so a point continues on the rank
+ * count and partition it was written with (checked: another count is an error that says so). */
+#include "solve_impl.h"
+#include <petscviewerhdf5.h>
+#include <dirent.h>
+#include <errno.h>
+#include <hdf5.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#define RS_VERSION 1
+enum {
+  H_VERSION = 0,
+  H_NRANKS,
+  H_NSTEP,
+  H_STEP,
+  H_INC,
+  H_ITS_PREV,
+  H_CUTBACKS,
+  H_T,
+  H_DT,
+  H_TOTAL,
+  H_H_PREV,
+  H_FRAMES_NEXT,
+  H_FELL_BACK,
+  H_NFRAME,
+  H_NROW,
+  H_RUN_ID,
+  H_HAS_XPREV,
+  H_SUMS,
+  H_TSTART = H_SUMS + 24 /* then 2 per step: total time at its start, step time the step before ended at */
+};
+
+static PetscInt HeaderLength(PetscInt nstep)
+{
+  return H_TSTART + 2 * nstep;
+}
+
+/* The driver's sums that carry across increments and steps, in and out of a header. */
+static void SaveSums(const Driver *d, PetscReal v[24])
+{
+  PetscInt k = 0;
+  v[k++]     = d->dissipated;
+  v[k++]     = d->absorbed;
+  v[k++]     = d->plastic_dissipated;
+  for (PetscInt i = 0; i < 7; i++) v[k++] = d->energy[i];
+  for (PetscInt i = 0; i < 2; i++) v[k++] = d->q_sum[i], v[k++] = d->q_before[i];
+  v[k++] = (PetscReal)d->q_n;
+  v[k++] = d->scale_u;
+  v[k++] = d->scale_theta;
+  v[k++] = d->done_time;
+  v[k++] = d->done_step_time;
+  v[k++] = d->done_dt;
+  v[k++] = (PetscReal)d->done_step;
+  v[k++] = (PetscReal)d->done_inc;
+  v[k++] = (PetscReal)d->frame_step;
+  v[k++] = (PetscReal)d->frame_inc;
+}
+
+static void RestoreSums(Driver *d, const PetscReal v[24])
+{
+  PetscInt k            = 0;
+  d->dissipated         = v[k++];
+  d->absorbed           = v[k++];
+  d->plastic_dissipated = v[k++];
+  for (PetscInt i = 0; i < 7; i++) d->energy[i] = v[k++];
+  for (PetscInt i = 0; i < 2; i++) d->q_sum[i] = v[k++], d->q_before[i] = v[k++];
+  d->q_n            = (PetscInt)v[k++];
+  d->scale_u        = v[k++];
+  d->scale_theta    = v[k++];
+  d->done_time      = v[k++];
+  d->done_step_time = v[k++];
+  d->done_dt        = v[k++];
+  d->done_step      = (PetscInt)v[k++];
+  d->done_inc       = (PetscInt)v[k++];
+  d->frame_step     = (PetscInt)v[k++];
+  d->frame_inc      = (PetscInt)v[k++];
+}
+
+static PetscReal Bits(uint64_t u)
+{
+  PetscReal r;
+  memcpy(&r, &u, sizeof(r));
+  return r;
+}
+
+static uint64_t Unbits(PetscReal r)
+{
+  uint64_t u;
+  memcpy(&u, &r, sizeof(u));
+  return u;
+}
+
+static PetscErrorCode PointPath(Driver *d, PetscInt step, PetscInt inc, const char *suffix, char buf[], size_t len)
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(buf, len, "%s%s%s.restart.%" PetscInt_FMT ".%" PetscInt_FMT ".h5%s", d->rs_dir, d->rs_dir[0] ? "/" : "", d->rs_job, step, inc,
+                          suffix));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A vector of n local reals (a header on rank 0 only, one digest a rank, the state's bytes) */
+static PetscErrorCode LocalVec(MPI_Comm comm, PetscInt n, const char *name, Vec *v)
+{
+  PetscFunctionBeginUser;
+  PetscCall(VecCreateMPI(comm, n, PETSC_DETERMINE, v));
+  PetscCall(PetscObjectSetName((PetscObject)*v, name));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode ViewNamed(Vec v, const char *name, PetscViewer vw)
+{
+  const char *old;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscObjectGetName((PetscObject)v, &old));
+  {
+    char keep[256];
+    PetscCall(PetscStrncpy(keep, old ? old : "", sizeof(keep)));
+    PetscCall(PetscObjectSetName((PetscObject)v, name));
+    PetscCall(VecView(v, vw));
+    PetscCall(PetscObjectSetName((PetscObject)v, keep));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* VecLoad replaces a vector's array, which a ghosted vector's local form shares: the values go through a plain
+ * vector of the same layout */
+static PetscErrorCode LoadNamed(Vec v, const char *name, PetscViewer vw)
+{
+  Vec      tmp;
+  PetscInt n;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(v, &n));
+  PetscCall(LocalVec(PetscObjectComm((PetscObject)v), n, name, &tmp));
+  PetscCall(VecLoad(tmp, vw));
+  PetscCall(VecCopy(tmp, v));
+  PetscCall(VecDestroy(&tmp));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char *why)
+{
+  const TslModel *m;
+  const char     *unsupported;
+  size_t          bytes;
+  PetscMPIInt     size, rank;
+  PetscInt        nh, ns;
+  PetscBool       bad;
+  char            tmp[PETSC_MAX_PATH_LEN + 8], path[PETSC_MAX_PATH_LEN];
+  PetscViewer     vw;
+  Vec             hv, dv, sv, X;
+  double          t0 = MPI_Wtime();
+  uint64_t        digest;
+  int             err = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCall(TslProblemStateSize(d->prob, &bytes, &unsupported));
+  bad = unsupported ? PETSC_TRUE : PETSC_FALSE;
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPIU_BOOL, MPI_LOR, d->comm));
+  if (bad) {
+    if (!d->rs_warned)
+      PetscCall(PetscPrintf(d->comm, "thermoslide: warning: no restart points are written for this model: %s\n",
+                            unsupported ? unsupported : "surface-to-surface contact pairs (their points' state is not saved yet)"));
+    d->rs_warned = PETSC_TRUE;
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCallMPI(MPI_Comm_size(d->comm, &size));
+  PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+  PetscCall(PointPath(d, loop->step + 1, loop->inc, "", path, sizeof(path)));
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+  ns = loop->step + 1;
+  nh = HeaderLength(m->nstep);
+
+  PetscCall(LocalVec(d->comm, rank ? 0 : nh, "header", &hv));
+  if (!rank) {
+    PetscScalar *h;
+    PetscCall(VecGetArray(hv, &h));
+    for (PetscInt i = 0; i < nh; i++) h[i] = 0;
+    h[H_VERSION]     = RS_VERSION;
+    h[H_NRANKS]      = size;
+    h[H_NSTEP]       = (PetscReal)m->nstep;
+    h[H_STEP]        = (PetscReal)loop->step;
+    h[H_INC]         = (PetscReal)loop->inc;
+    h[H_ITS_PREV]    = (PetscReal)PetscMin(loop->its_prev, 1000000000);
+    h[H_CUTBACKS]    = (PetscReal)loop->cutbacks;
+    h[H_T]           = loop->t;
+    h[H_DT]          = loop->dt;
+    h[H_TOTAL]       = loop->total;
+    h[H_H_PREV]      = loop->h_prev;
+    h[H_FRAMES_NEXT] = loop->frames_next;
+    h[H_FELL_BACK]   = d->fell_back ? 1 : 0;
+    {
+      PetscInt nf;
+      PetscCall(TslOutputFrameCount(d->out, &nf));
+      h[H_NFRAME] = (PetscReal)nf;
+    }
+    h[H_NROW]      = (PetscReal)TslHistoryRowCount(d->hist);
+    h[H_RUN_ID]    = Bits(TslOutputRunId(d->out));
+    h[H_HAS_XPREV] = loop->h_prev > 0 && d->Xprev ? 1 : 0;
+    SaveSums(d, &h[H_SUMS]);
+    for (PetscInt k = 0; k < 2 * ns; k++) h[H_TSTART + k] = d->rs_tstart[k];
+    PetscCall(VecRestoreArray(hv, &h));
+  } else {
+    /* the output's counts are needed on rank 0 only; every rank takes part in nothing here */
+  }
+  PetscCall(TslProblemLayoutDigest(d->prob, &digest));
+  PetscCall(LocalVec(d->comm, 1, "layout", &dv));
+  PetscCall(VecSetValue(dv, rank, Bits(digest), INSERT_VALUES));
+  PetscCall(VecAssemblyBegin(dv));
+  PetscCall(VecAssemblyEnd(dv));
+  PetscCall(LocalVec(d->comm, (PetscInt)((bytes + sizeof(PetscScalar) - 1) / sizeof(PetscScalar)), "state", &sv));
+  {
+    PetscScalar *a;
+    PetscInt     n;
+    PetscCall(VecGetLocalSize(sv, &n));
+    PetscCall(VecGetArray(sv, &a));
+    if (n) a[n - 1] = 0;
+    PetscCall(TslProblemStatePack(d->prob, a));
+    PetscCall(VecRestoreArray(sv, &a));
+  }
+
+  PetscCall(PetscViewerHDF5Open(d->comm, tmp, FILE_MODE_WRITE, &vw));
+  PetscCall(VecView(hv, vw));
+  PetscCall(VecView(dv, vw));
+  PetscCall(VecView(sv, vw));
+  PetscCall(TslProblemGetSolution(d->prob, &X));
+  PetscCall(ViewNamed(X, "X", vw));
+  if (loop->h_prev > 0 && d->Xprev) PetscCall(ViewNamed(d->Xprev, "Xprev", vw));
+  for (PetscInt k = 0; k < ns; k++) {
+    char name[32];
+    PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, k));
+    PetscCall(ViewNamed(d->rs_xstart[k], name, vw));
+  }
+  {
+    PetscInt one = 1;
+    PetscCall(PetscViewerHDF5WriteAttribute(vw, "/header", "complete", PETSC_INT, &one));
+  }
+  PetscCall(PetscViewerDestroy(&vw));
+  PetscCall(VecDestroy(&hv));
+  PetscCall(VecDestroy(&dv));
+  PetscCall(VecDestroy(&sv));
+  if (!rank && rename(tmp, path)) err = errno;
+  PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, d->comm));
+  PetscCheck(!err, d->comm, PETSC_ERR_FILE_WRITE, "Cannot rename the restart point %s to %s: %s", tmp, path, strerror(err));
+  /* OVERLAY: only the latest point is kept, the one before it removed once this one is in place */
+  if (m->steps[loop->step].restart_overlay && d->rs_last[0] && strcmp(d->rs_last, path) && !rank) (void)unlink(d->rs_last);
+  PetscCall(PetscStrncpy(d->rs_last, path, sizeof(d->rs_last)));
+  {
+    double      dt = MPI_Wtime() - t0, b = (double)bytes;
+    PetscInt    N;
+    PetscCall(VecGetSize(X, &N));
+    b += 8.0 * N * (1 + ns + (loop->h_prev > 0 && d->Xprev));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &dt, 1, MPI_DOUBLE, MPI_MAX, d->comm));
+    d->rs_count++;
+    d->rs_seconds += dt;
+    d->rs_bytes = b;
+    PetscCall(PetscPrintf(d->comm, "  restart point %s (%s): step %" PetscInt_FMT " increment %" PetscInt_FMT ", step time %g, %.2f s\n", path, why,
+                          loop->step + 1, loop->inc, (double)loop->t, dt));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Rank 0: whether path is a complete point for this job on size ranks; the reason it is not in why. */
+static PetscBool PointValid(const char *path, PetscInt nh, PetscMPIInt size, char why[], size_t len)
+{
+  H5E_auto2_t efunc;
+  void       *edata;
+  hid_t       f, ds = -1, sp = -1, at = -1;
+  hsize_t     dims[2] = {0, 0};
+  int64_t     complete = 0;
+  double      h[H_STEP];
+  PetscBool   ok = PETSC_FALSE;
+
+  (void)H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
+  (void)H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f < 0) {
+    snprintf(why, len, "not a readable HDF5 file (truncated or corrupted?)");
+    goto done;
+  }
+  ds = H5Dopen2(f, "/header", H5P_DEFAULT);
+  if (ds < 0 || (at = H5Aopen(ds, "complete", H5P_DEFAULT)) < 0 || H5Aread(at, H5T_NATIVE_INT64, &complete) < 0 || complete != 1) {
+    snprintf(why, len, "incomplete (no header marked complete)");
+    goto done;
+  }
+  sp = H5Dget_space(ds);
+  if (sp < 0 || H5Sget_simple_extent_ndims(sp) < 1 || H5Sget_simple_extent_dims(sp, dims, NULL) < 0 || (PetscInt)dims[0] != nh) {
+    snprintf(why, len, "written for a deck of another number of steps");
+    goto done;
+  }
+  {
+    hid_t   ms  = H5Screate_simple(1, (hsize_t[]){H_STEP}, NULL);
+    hsize_t off = 0, cnt = H_STEP;
+    H5Sselect_hyperslab(sp, H5S_SELECT_SET, &off, NULL, &cnt, NULL);
+    if (H5Dread(ds, H5T_NATIVE_DOUBLE, ms, sp, H5P_DEFAULT, h) < 0) {
+      H5Sclose(ms);
+      snprintf(why, len, "its header cannot be read");
+      goto done;
+    }
+    H5Sclose(ms);
+  }
+  if (h[H_VERSION] != RS_VERSION) {
+    snprintf(why, len, "written by another version of thermoslide (format %g, this one reads %d)", h[H_VERSION], RS_VERSION);
+    goto done;
+  }
+  if ((PetscMPIInt)h[H_NRANKS] != size) {
+    snprintf(why, len, "written on %d ranks: continue it on %d (another rank count is not supported yet)", (int)h[H_NRANKS], (int)h[H_NRANKS]);
+    goto done;
+  }
+  ok = PETSC_TRUE;
+done:
+  if (at >= 0) H5Aclose(at);
+  if (sp >= 0) H5Sclose(sp);
+  if (ds >= 0) H5Dclose(ds);
+  if (f >= 0) H5Fclose(f);
+  (void)H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  return ok;
+}
+
+/* Rank 0: the earlier run's output (results and history) with this run id: the file of a run killed (.part,
+ * renamed here so that this run's output does not overwrite it), of a run stopped (.h5, or .failed.h5 beside
+ * earlier results), or the one an earlier continuation moved aside. */
+static PetscBool RunId(const char *path, uint64_t *id)
+{
+  H5E_auto2_t efunc;
+  void       *edata;
+  hid_t       f, at;
+  PetscBool   ok = PETSC_FALSE;
+
+  (void)H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
+  (void)H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+  f = H5Fopen(path, H5F_ACC_RDONLY, H5P_DEFAULT);
+  if (f >= 0) {
+    at = H5Aopen(f, "run_id", H5P_DEFAULT);
+    if (at >= 0) {
+      ok = H5Aread(at, H5T_NATIVE_UINT64, id) >= 0;
+      H5Aclose(at);
+    }
+    H5Fclose(f);
+  }
+  (void)H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  return ok;
+}
+
+static int FindOutput(Driver *d, uint64_t run_id, char h5[], char csv[], size_t len)
+{
+  const char *tags[][2] = {
+    {".interrupted.h5", ".interrupted.csv"},
+    {".h5.part",        ".csv.part"       },
+    {".failed.h5",      ".failed.csv"     },
+    {".h5",             ".csv"            }
+  };
+  const char *sep = d->rs_dir[0] ? "/" : "";
+  for (size_t k = 0; k < sizeof(tags) / sizeof(tags[0]); k++) {
+    uint64_t id;
+    if (snprintf(h5, len, "%s%s%s%s", d->rs_dir, sep, d->rs_job, tags[k][0]) >= (int)len) return ENAMETOOLONG;
+    if (snprintf(csv, len, "%s%s%s%s", d->rs_dir, sep, d->rs_job, tags[k][1]) >= (int)len) return ENAMETOOLONG;
+    if (!RunId(h5, &id) || id != run_id) continue;
+    if (k == 1) { /* a killed run's files: moved aside, as this run's .part names are about to be created */
+      char to_h5[PETSC_MAX_PATH_LEN], to_csv[PETSC_MAX_PATH_LEN];
+      if (snprintf(to_h5, sizeof(to_h5), "%s%s%s%s", d->rs_dir, sep, d->rs_job, tags[0][0]) >= (int)sizeof(to_h5)) return ENAMETOOLONG;
+      if (snprintf(to_csv, sizeof(to_csv), "%s%s%s%s", d->rs_dir, sep, d->rs_job, tags[0][1]) >= (int)sizeof(to_csv)) return ENAMETOOLONG;
+      if (rename(h5, to_h5) || rename(csv, to_csv)) return errno ? errno : EIO;
+      if (snprintf(h5, len, "%s", to_h5) >= (int)len || snprintf(csv, len, "%s", to_csv) >= (int)len) return ENAMETOOLONG;
+    }
+    return 0;
+  }
+  return -1;
+}
+
+PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
+{
+  const TslModel *m;
+  PetscMPIInt     rank, size;
+  PetscInt        nh;
+  char            msg[PETSC_MAX_PATH_LEN + 256] = "";
+  int             found                         = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCall(PetscStrncpy(d->rs_dir, dir ? dir : "", sizeof(d->rs_dir)));
+  PetscCall(PetscStrncpy(d->rs_job, jobname, sizeof(d->rs_job)));
+  PetscCall(PetscCalloc2(m->nstep, &d->rs_xstart, 2 * m->nstep, &d->rs_tstart));
+  /* d->rs_resume: -tsl_restart, read with the implicit procedure's options (driver.c) */
+  if (!d->rs_resume) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+  PetscCallMPI(MPI_Comm_size(d->comm, &size));
+  nh = HeaderLength(m->nstep);
+  if (!rank) {
+    /* the points of this job, latest first: the first valid one is taken, the others before it named */
+    DIR           *dp = opendir(d->rs_dir[0] ? d->rs_dir : ".");
+    struct dirent *e;
+    PetscInt       np = 0, cap = 0, (*pts)[2] = NULL;
+    char           pfx[300];
+    snprintf(pfx, sizeof(pfx), "%s.restart.", jobname);
+    while (dp && (e = readdir(dp))) {
+      long long s, i;
+      int       n = 0;
+      if (strncmp(e->d_name, pfx, strlen(pfx))) continue;
+      if (sscanf(e->d_name + strlen(pfx), "%lld.%lld.h5%n", &s, &i, &n) != 2 || e->d_name[strlen(pfx) + n] != 0) continue;
+      if (np == cap) {
+        cap = PetscMax(16, 2 * cap);
+        pts = realloc(pts, sizeof(*pts) * cap);
+      }
+      pts[np][0] = (PetscInt)s, pts[np][1] = (PetscInt)i, np++;
+    }
+    if (dp) closedir(dp);
+    while (np > 0 && !found) {
+      PetscInt best = 0;
+      char     why[200];
+      for (PetscInt k = 1; k < np; k++)
+        if (pts[k][0] > pts[best][0] || (pts[k][0] == pts[best][0] && pts[k][1] > pts[best][1])) best = k;
+      PetscCall(PointPath(d, pts[best][0], pts[best][1], "", d->rs_point, sizeof(d->rs_point)));
+      if (PointValid(d->rs_point, nh, size, why, sizeof(why))) found = 1;
+      else {
+        printf("thermoslide: warning: restart point %s is not used: %s\n", d->rs_point, why);
+        if (strstr(why, "ranks")) {
+          snprintf(msg, sizeof(msg), "restart point %s was %s", d->rs_point, why);
+          found = -1;
+          break;
+        }
+      }
+      pts[best][0] = pts[np - 1][0], pts[best][1] = pts[np - 1][1], np--;
+    }
+    free(pts);
+    if (!found) snprintf(msg, sizeof(msg), "-tsl_restart: no valid restart point of job %s in %s", jobname, d->rs_dir[0] ? d->rs_dir : ".");
+  }
+  PetscCallMPI(MPI_Bcast(&found, 1, MPI_INT, 0, d->comm));
+  PetscCallMPI(MPI_Bcast(msg, sizeof(msg), MPI_CHAR, 0, d->comm));
+  PetscCheck(found == 1, d->comm, PETSC_ERR_FILE_OPEN, "%s", msg);
+  PetscCallMPI(MPI_Bcast(d->rs_point, sizeof(d->rs_point), MPI_CHAR, 0, d->comm));
+  {
+    PetscViewer  vw;
+    Vec          hv;
+    PetscScalar *h;
+    PetscReal    hb[H_SUMS + 24];
+    PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
+    PetscCall(LocalVec(d->comm, rank ? 0 : nh, "header", &hv));
+    PetscCall(VecLoad(hv, vw));
+    PetscCall(PetscViewerDestroy(&vw));
+    PetscCall(VecGetArray(hv, &h));
+    if (!rank) {
+      for (PetscInt i = 0; i < H_SUMS + 24; i++) hb[i] = PetscRealPart(h[i]);
+      for (PetscInt k = 0; k < 2 * m->nstep; k++) d->rs_tstart[k] = PetscRealPart(h[H_TSTART + k]);
+    }
+    PetscCall(VecRestoreArray(hv, &h));
+    PetscCall(VecDestroy(&hv));
+    PetscCallMPI(MPI_Bcast(hb, H_SUMS + 24, MPIU_REAL, 0, d->comm));
+    PetscCallMPI(MPI_Bcast(d->rs_tstart, 2 * m->nstep, MPIU_REAL, 0, d->comm));
+    d->rs_loop.step        = (PetscInt)hb[H_STEP];
+    d->rs_loop.inc         = (PetscInt)hb[H_INC];
+    d->rs_loop.its_prev    = (PetscInt)hb[H_ITS_PREV];
+    d->rs_loop.cutbacks    = (PetscInt)hb[H_CUTBACKS];
+    d->rs_loop.t           = hb[H_T];
+    d->rs_loop.dt          = hb[H_DT];
+    d->rs_loop.total       = hb[H_TOTAL];
+    d->rs_loop.h_prev      = hb[H_HAS_XPREV] > 0 ? hb[H_H_PREV] : 0;
+    d->rs_loop.frames_next = hb[H_FRAMES_NEXT];
+    d->rs_fell_back        = (PetscInt)hb[H_FELL_BACK];
+    d->rs_nframe           = (PetscInt)hb[H_NFRAME];
+    d->rs_nrow             = (PetscInt)hb[H_NROW];
+    d->rs_run_id           = Unbits(hb[H_RUN_ID]);
+    PetscCall(PetscArraycpy(d->rs_sums, &hb[H_SUMS], 24));
+    PetscCheck(d->rs_loop.step >= 0 && d->rs_loop.step < m->nstep && !m->steps[d->rs_loop.step].explicit_dynamics, d->comm, PETSC_ERR_FILE_UNEXPECTED,
+               "restart point %s names step %" PetscInt_FMT ", not an implicit step of this deck", d->rs_point, d->rs_loop.step + 1);
+  }
+  /* the earlier run's output, which this run's extends */
+  {
+    int err = 0;
+    if (!rank) err = FindOutput(d, d->rs_run_id, d->rs_src_h5, d->rs_src_csv, sizeof(d->rs_src_h5));
+    PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, d->comm));
+    PetscCheck(err >= 0, d->comm, PETSC_ERR_FILE_OPEN,
+               "restart point %s: the output of the run that wrote it (%s.h5, .h5.part, .failed.h5 or .interrupted.h5 in %s, run %llx) is not there or not readable",
+               d->rs_point, jobname, d->rs_dir[0] ? d->rs_dir : ".", (unsigned long long)d->rs_run_id);
+    PetscCheck(!err, d->comm, PETSC_ERR_FILE_WRITE, "restart: cannot move the interrupted run's output aside: %s", strerror(err));
+    PetscCallMPI(MPI_Bcast(d->rs_src_h5, sizeof(d->rs_src_h5), MPI_CHAR, 0, d->comm));
+    PetscCallMPI(MPI_Bcast(d->rs_src_csv, sizeof(d->rs_src_csv), MPI_CHAR, 0, d->comm));
+  }
+  PetscCall(PetscPrintf(d->comm, "thermoslide: continuing from restart point %s: step %" PetscInt_FMT " increment %" PetscInt_FMT ", step time %g (%" PetscInt_FMT " frames and %" PetscInt_FMT " history rows of %s kept)\n",
+                        d->rs_point, d->rs_loop.step + 1, d->rs_loop.inc, (double)d->rs_loop.t, d->rs_nframe, d->rs_nrow, d->rs_src_h5));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslRestartCopyOutput(Driver *d)
+{
+  PetscFunctionBeginUser;
+  if (!d->rs_resume) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(TslOutputCopyFrames(d->out, d->rs_src_h5, d->rs_run_id, d->rs_nframe));
+  PetscCall(TslHistoryCopyRows(d->hist, d->rs_src_csv, d->rs_nrow));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslRestartStepStart(Driver *d, PetscInt s, PetscReal *total_time)
+{
+  Vec X;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetSolution(d->prob, &X));
+  if (!d->rs_xstart[s]) PetscCall(VecDuplicate(X, &d->rs_xstart[s]));
+  if (d->rs_resume && s <= d->rs_loop.step) {
+    /* the continuation: the step starts from the state the original run started it from */
+    PetscViewer vw;
+    char        name[32];
+    PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, s));
+    PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
+    PetscCall(LoadNamed(d->rs_xstart[s], name, vw));
+    PetscCall(PetscViewerDestroy(&vw));
+    PetscCall(VecCopy(d->rs_xstart[s], X));
+    *total_time = d->rs_tstart[2 * s];
+    PetscCall(TslProblemSetTime(d->prob, d->rs_tstart[2 * s + 1], 0, *total_time));
+  } else {
+    PetscCall(VecCopy(X, d->rs_xstart[s]));
+    d->rs_tstart[2 * s]     = *total_time;
+    d->rs_tstart[2 * s + 1] = TslProblemGetStepTime(d->prob);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslRestartLoad(Driver *d, TslRestartLoop *loop)
+{
+  PetscViewer  vw;
+  Vec          X, dv, sv;
+  PetscMPIInt  rank;
+  size_t       bytes;
+  const char  *unsupported;
+  PetscBool    bad;
+  uint64_t     digest;
+  PetscScalar *a;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+  PetscCall(TslProblemGetSolution(d->prob, &X));
+  PetscCall(TslProblemStateSize(d->prob, &bytes, &unsupported));
+  PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
+  PetscCall(LocalVec(d->comm, 1, "layout", &dv));
+  PetscCall(VecLoad(dv, vw));
+  PetscCall(TslProblemLayoutDigest(d->prob, &digest));
+  PetscCall(VecGetArray(dv, &a));
+  bad = (PetscBool)(Unbits(PetscRealPart(a[0])) != digest);
+  PetscCall(VecRestoreArray(dv, &a));
+  PetscCall(VecDestroy(&dv));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPIU_BOOL, MPI_LOR, d->comm));
+  if (bad) PetscCall(PetscViewerDestroy(&vw));
+  PetscCheck(!bad, d->comm, PETSC_ERR_FILE_UNEXPECTED,
+             "restart point %s was written for another model or partition (the nodes, elements or contact nodes of a rank differ): continue it with the deck and options it was written with",
+             d->rs_point);
+  PetscCall(LocalVec(d->comm, (PetscInt)((bytes + sizeof(PetscScalar) - 1) / sizeof(PetscScalar)), "state", &sv));
+  PetscCall(VecLoad(sv, vw));
+  PetscCall(VecGetArray(sv, &a));
+  PetscCall(TslProblemStateUnpack(d->prob, a));
+  PetscCall(VecRestoreArray(sv, &a));
+  PetscCall(VecDestroy(&sv));
+  PetscCall(LoadNamed(X, "X", vw));
+  if (d->rs_loop.h_prev > 0) {
+    if (!d->Xprev) PetscCall(VecDuplicate(X, &d->Xprev));
+    PetscCall(LoadNamed(d->Xprev, "Xprev", vw));
+  }
+  PetscCall(PetscViewerDestroy(&vw));
+  PetscCall(TslGhostUpdate(X, INSERT_VALUES, SCATTER_FORWARD));
+  RestoreSums(d, d->rs_sums);
+  *loop       = d->rs_loop;
+  d->rs_resume = PETSC_FALSE; /* from here on the run is an ordinary one */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslRestartFinish(Driver *d, PetscBool completed)
+{
+  const TslModel *m;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  if (d->rs_count)
+    PetscCall(PetscPrintf(d->comm, "thermoslide: %" PetscInt_FMT " restart points written, %.2f s in all (%.1f MB each)\n", d->rs_count, d->rs_seconds,
+                          d->rs_bytes / 1048576.0));
+  if (completed && d->rs_src_h5[0] && strstr(d->rs_src_h5, ".interrupted.h5")) {
+    /* the interrupted run's frames are in this run's output now */
+    PetscMPIInt rank;
+    PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+    if (!rank) (void)unlink(d->rs_src_h5), (void)unlink(d->rs_src_csv);
+  }
+  for (PetscInt s = 0; s < m->nstep; s++) PetscCall(VecDestroy(&d->rs_xstart[s]));
+  PetscCall(PetscFree2(d->rs_xstart, d->rs_tstart));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
