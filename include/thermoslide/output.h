@@ -55,6 +55,9 @@ PetscErrorCode TslOutputSetSyncInterval(TslOutput out, PetscReal seconds);
  * run run_id copied from its file src into this output (a continuation's output extends the original's). Collective;
  * after TslOutputSetMesh, before any frame of this run. */
 uint64_t       TslOutputRunId(TslOutput out);
+/* Collective: the frames so far on disk now (HDF5 flushed, the .xmf.part rewritten), whatever the sync interval; a
+ * restart point that counts them is written after this. */
+PetscErrorCode TslOutputSync(TslOutput out);
 PetscErrorCode TslOutputFrameCount(TslOutput out, PetscInt *n);
 PetscErrorCode TslOutputCopyFrames(TslOutput out, const char *src, uint64_t run_id, PetscInt nframe);
 

@@ -71,9 +71,12 @@ PetscErrorCode TslProblemCommitState(TslProblem prob);
 PetscErrorCode TslProblemStateSize(TslProblem prob, size_t *bytes, const char **unsupported);
 PetscErrorCode TslProblemStatePack(TslProblem prob, void *buf);
 PetscErrorCode TslProblemStateUnpack(TslProblem prob, const void *buf);
-/* A digest of this rank's layout (nodes and their global ids, dofs, elements, contact nodes), for checking that a
+/* A digest of this rank's layout (nodes with their ids and coordinates, dofs, elements, contact nodes), for checking that a
  * continuation has the model and partition its restart point was written with. */
 PetscErrorCode TslProblemLayoutDigest(TslProblem prob, uint64_t *digest);
+/* A digest of the model's materials, sections, interactions and contact pairs (the same on every rank), for checking
+ * that a continuation has the physics its restart point was written with. */
+PetscErrorCode TslProblemModelDigest(TslProblem prob, uint64_t *digest);
 /* After step s: for each material whose *PLASTIC data depend on temperature, whether the nodal temperatures of its
  * elements left the temperatures the data cover (the end values hold there, as in the dialect): a warning naming the
  * keyword's line, once per material in the run. Collective. */

@@ -427,8 +427,16 @@ PetscErrorCode TslOutputEndFrame(TslOutput out)
     int    sync = now - out->last_sync >= out->sync_interval;
     PetscCallMPI(MPI_Bcast(&sync, 1, MPI_INT, 0, out->comm));
     if (!sync) PetscFunctionReturn(PETSC_SUCCESS);
-    out->last_sync = now;
   }
+  PetscCall(TslOutputSync(out));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslOutputSync(TslOutput out)
+{
+  PetscFunctionBeginUser;
+  if (out->in_frame || out->file < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  out->last_sync = MPI_Wtime();
   /* The .xmf about to name this frame must not point at data still in HDF5's cache. */
   TslH5Check(out->comm, H5Fflush(out->file, H5F_SCOPE_GLOBAL), out->h5_part);
   PetscCall(RewriteXmf(out));

@@ -70,10 +70,99 @@ PetscErrorCode TslProblemLayoutDigest(TslProblem p, uint64_t *digest)
   sizes[0] = p->nn, sizes[1] = p->nown, sizes[2] = p->ndof, sizes[3] = m->nelem, sizes[4] = p->ncnode, sizes[5] = p->npstate;
   Mix(&h, sizes, sizeof(sizes));
   Mix(&h, m->node_id, p->nn * sizeof(PetscInt));
+  Mix(&h, m->node_xyz, 3 * p->nn * sizeof(PetscReal));
   Mix(&h, m->elem_id, m->nelem * sizeof(PetscInt));
   Mix(&h, m->elem_type, m->nelem * sizeof(m->elem_type[0]));
   Mix(&h, p->elem_lnode, m->elem_ptr[m->nelem] * sizeof(PetscInt));
   for (PetscInt i = 0; i < p->ncnode; i++) Mix(&h, &p->cnode[i].lnode, sizeof(PetscInt));
+  *digest = h;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static void MixInt(uint64_t *h, PetscInt v)
+{
+  Mix(h, &v, sizeof(v));
+}
+
+static void MixReals(uint64_t *h, const PetscReal *v, PetscInt n)
+{
+  if (n > 0 && v) Mix(h, v, (size_t)n * sizeof(PetscReal));
+}
+
+/* The model's data a continuation must share with the run that wrote its point, beyond the mesh: materials (every
+ * table), sections, contact interactions (normal behaviour, friction, conductance, radiation, heat generation) and
+ * the pairs. Names, lines and the steps are left out: a comment or a renamed material does not change the physics,
+ * and the steps after the point's may differ. The same on every rank. */
+PetscErrorCode TslProblemModelDigest(TslProblem p, uint64_t *digest)
+{
+  const TslModel *m = p->m;
+  uint64_t        h = 14695981039346656037ull;
+
+  PetscFunctionBeginUser;
+  MixInt(&h, m->nmaterial);
+  for (PetscInt k = 0; k < m->nmaterial; k++) {
+    const TslMaterial *mt = &m->materials[k];
+    for (PetscInt q = 0; q < TSL_NPROP; q++) {
+      const TslPropertyTable *t = &mt->prop[q];
+      MixInt(&h, t->n);
+      for (PetscInt r = 0; r < t->n; r++) MixReals(&h, t->value[r], 2), MixReals(&h, &t->theta[r], 1);
+    }
+    MixReals(&h, &mt->alpha_zero, 1);
+    MixInt(&h, mt->plastic.n);
+    for (PetscInt r = 0; r < mt->plastic.n; r++) MixReals(&h, mt->plastic.row[r], 3);
+    MixInt(&h, mt->plastic.nvoce);
+    for (PetscInt r = 0; r < mt->plastic.nvoce; r++) MixReals(&h, mt->plastic.voce[r], 4);
+    MixInt(&h, mt->plastic.nback);
+    MixInt(&h, mt->plastic.rate_law);
+    MixReals(&h, mt->plastic.rate, 2);
+    MixReals(&h, &mt->heat_fraction, 1);
+  }
+  MixInt(&h, m->nsection);
+  for (PetscInt k = 0; k < m->nsection; k++) {
+    const TslSection *sc = &m->sections[k];
+    MixInt(&h, sc->material_index);
+    MixReals(&h, &sc->thickness, 1);
+    MixInt(&h, sc->shell);
+    MixInt(&h, sc->shell_points);
+    MixReals(&h, &sc->thickness_modulus, 1);
+    MixReals(&h, &sc->shell_thickness, 1);
+    MixReals(&h, &sc->shell_offset, 1);
+  }
+  MixInt(&h, m->ninteraction);
+  for (PetscInt k = 0; k < m->ninteraction; k++) {
+    const TslInteraction *it = &m->interactions[k];
+    MixReals(&h, &it->thickness, 1);
+    MixInt(&h, it->behavior.enforcement);
+    MixReals(&h, &it->behavior.penalty_stiffness, 1);
+    MixInt(&h, it->friction.given);
+    MixReals(&h, &it->friction.mu, 1);
+    MixInt(&h, it->friction.lagrange);
+    MixInt(&h, it->friction.rough);
+    MixReals(&h, &it->friction.slip_tolerance, 1);
+    MixReals(&h, &it->friction.elastic_slip, 1);
+    MixReals(&h, &it->friction.stick_slope, 1);
+    MixInt(&h, it->conductance.n);
+    MixInt(&h, it->conductance.by_pressure);
+    MixReals(&h, it->conductance.value, it->conductance.n);
+    MixReals(&h, it->conductance.abscissa, it->conductance.n);
+    MixInt(&h, it->radiation.n);
+    MixReals(&h, &it->radiation.emissivity_main, 1);
+    MixReals(&h, &it->radiation.emissivity_secondary, 1);
+    MixReals(&h, it->radiation.view_factor, it->radiation.n);
+    MixReals(&h, it->radiation.clearance, it->radiation.n);
+    MixReals(&h, &it->heat_generation.fraction, 1);
+    MixReals(&h, &it->heat_generation.weight_secondary, 1);
+  }
+  MixInt(&h, m->npair);
+  for (PetscInt k = 0; k < m->npair; k++) {
+    const TslContactPair *cp = &m->pairs[k];
+    MixInt(&h, cp->interaction_index);
+    MixInt(&h, cp->type);
+    MixInt(&h, cp->small_sliding);
+    MixInt(&h, cp->kinematic);
+    MixReals(&h, &cp->smooth, 1);
+    MixReals(&h, &cp->adjust, 1);
+  }
   *digest = h;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

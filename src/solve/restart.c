@@ -10,7 +10,9 @@
  *   X, Xprev the solution at the point and the one before it (the extrapolation of the next increment's start);
  *   start_k  the solution at the start of each step k up to the point's (TslProblemSetStep reads the values reached
  *            there: ramps from them, FIXED holds them), replayed by the continuation step by step;
- *   state    the problem's committed state as bytes per rank (contact nodes, 3D surface normals, plastic points).
+ *   state    the problem's committed state as bytes per rank (contact nodes, 3D surface normals, plastic points);
+ *   checksum one order-independent checksum per dataset above (the sum of its values' bits modulo 2^64), verified
+ *            before a point is used, so that a corrupted point is passed over for the one before it.
  * The vectors are in PETSc's parallel layout and the state in each rank's own, so a point continues on the rank
  * count and partition it was written with (checked: another count is an error that says so). */
 #include "solve_impl.h"
@@ -22,7 +24,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#define RS_VERSION 1
+#define RS_VERSION 2
 enum {
   H_VERSION = 0,
   H_NRANKS,
@@ -41,6 +43,7 @@ enum {
   H_NROW,
   H_RUN_ID,
   H_HAS_XPREV,
+  H_MODEL, /* TslProblemModelDigest: materials, sections, interactions */
   H_SUMS,
   H_TSTART = H_SUMS + 24 /* then 2 per step: total time at its start, step time the step before ended at */
 };
@@ -154,6 +157,31 @@ static PetscErrorCode LoadNamed(Vec v, const char *name, PetscViewer vw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The sum of the bits of v's values modulo 2^64, with its length: independent of the order and the ranks */
+static PetscErrorCode Checksum(Vec v, uint64_t *ck)
+{
+  const PetscScalar *a;
+  PetscInt           n, N;
+  uint64_t           c = 0;
+
+  PetscFunctionBeginUser;
+  PetscCall(VecGetLocalSize(v, &n));
+  PetscCall(VecGetSize(v, &N));
+  PetscCall(VecGetArrayRead(v, &a));
+  for (PetscInt i = 0; i < n; i++) {
+    uint64_t u;
+    memcpy(&u, &a[i], sizeof(u));
+    c += u;
+  }
+  PetscCall(VecRestoreArrayRead(v, &a));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &c, 1, MPI_UINT64_T, MPI_SUM, PetscObjectComm((PetscObject)v)));
+  *ck = c + (uint64_t)N * 0x9e3779b97f4a7c15ull;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The checksums' places: layout, state, X, Xprev, then start_k */
+enum { CK_LAYOUT = 0, CK_STATE, CK_X, CK_XPREV, CK_START };
+
 PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char *why)
 {
   const TslModel *m;
@@ -164,9 +192,9 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscBool       bad;
   char            tmp[PETSC_MAX_PATH_LEN + 8], path[PETSC_MAX_PATH_LEN];
   PetscViewer     vw;
-  Vec             hv, dv, sv, X;
+  Vec             hv, dv, sv, cv, X;
   double          t0 = MPI_Wtime();
-  uint64_t        digest;
+  uint64_t        digest, model, *ck;
   int             err = 0;
 
   PetscFunctionBeginUser;
@@ -184,9 +212,11 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCallMPI(MPI_Comm_size(d->comm, &size));
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
   PetscCall(PointPath(d, loop->step + 1, loop->inc, "", path, sizeof(path)));
+  PetscCall(TslOutputSync(d->out)); /* the frames the point counts are on disk, should the job be killed after it */
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   ns = loop->step + 1;
   nh = HeaderLength(m->nstep);
+  PetscCall(TslProblemModelDigest(d->prob, &model));
 
   PetscCall(LocalVec(d->comm, rank ? 0 : nh, "header", &hv));
   if (!rank) {
@@ -214,6 +244,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     h[H_NROW]      = (PetscReal)TslHistoryRowCount(d->hist);
     h[H_RUN_ID]    = Bits(TslOutputRunId(d->out));
     h[H_HAS_XPREV] = loop->h_prev > 0 && d->Xprev ? 1 : 0;
+    h[H_MODEL]     = Bits(model);
     SaveSums(d, &h[H_SUMS]);
     for (PetscInt k = 0; k < 2 * ns; k++) h[H_TSTART + k] = d->rs_tstart[k];
     PetscCall(VecRestoreArray(hv, &h));
@@ -235,12 +266,28 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     PetscCall(TslProblemStatePack(d->prob, a));
     PetscCall(VecRestoreArray(sv, &a));
   }
+  PetscCall(TslProblemGetSolution(d->prob, &X));
+  PetscCall(PetscMalloc1(CK_START + ns, &ck));
+  PetscCall(Checksum(dv, &ck[CK_LAYOUT]));
+  PetscCall(Checksum(sv, &ck[CK_STATE]));
+  PetscCall(Checksum(X, &ck[CK_X]));
+  ck[CK_XPREV] = 0;
+  if (loop->h_prev > 0 && d->Xprev) PetscCall(Checksum(d->Xprev, &ck[CK_XPREV]));
+  for (PetscInt k = 0; k < ns; k++) PetscCall(Checksum(d->rs_xstart[k], &ck[CK_START + k]));
+  PetscCall(LocalVec(d->comm, rank ? 0 : CK_START + ns, "checksum", &cv));
+  if (!rank) {
+    PetscScalar *c;
+    PetscCall(VecGetArray(cv, &c));
+    for (PetscInt k = 0; k < CK_START + ns; k++) c[k] = Bits(ck[k]);
+    PetscCall(VecRestoreArray(cv, &c));
+  }
+  PetscCall(PetscFree(ck));
 
   PetscCall(PetscViewerHDF5Open(d->comm, tmp, FILE_MODE_WRITE, &vw));
   PetscCall(VecView(hv, vw));
   PetscCall(VecView(dv, vw));
   PetscCall(VecView(sv, vw));
-  PetscCall(TslProblemGetSolution(d->prob, &X));
+  PetscCall(VecView(cv, vw));
   PetscCall(ViewNamed(X, "X", vw));
   if (loop->h_prev > 0 && d->Xprev) PetscCall(ViewNamed(d->Xprev, "Xprev", vw));
   for (PetscInt k = 0; k < ns; k++) {
@@ -256,6 +303,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCall(VecDestroy(&hv));
   PetscCall(VecDestroy(&dv));
   PetscCall(VecDestroy(&sv));
+  PetscCall(VecDestroy(&cv));
   if (!rank && rename(tmp, path)) err = errno;
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, d->comm));
   PetscCheck(!err, d->comm, PETSC_ERR_FILE_WRITE, "Cannot rename the restart point %s to %s: %s", tmp, path, strerror(err));
@@ -277,16 +325,45 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Rank 0: whether path is a complete point for this job on size ranks; the reason it is not in why. */
-static PetscBool PointValid(const char *path, PetscInt nh, PetscMPIInt size, char why[], size_t len)
+/* What a continuation expects of a point: the header's length, the rank count, the model digest, the global lengths of
+ * X and of the state */
+typedef struct {
+  PetscInt    nh, nx, nstate;
+  PetscMPIInt size;
+  uint64_t    model;
+} Expect;
+
+/* Rank 0, HDF5 quiet: whether dataset name of f is there with n entries */
+static PetscBool HasDataset(hid_t f, const char *name, PetscInt n)
+{
+  hid_t     ds = H5Dopen2(f, name, H5P_DEFAULT), sp = -1;
+  hsize_t   dims[4] = {0, 0, 0, 0};
+  int       nd      = 0;
+  PetscBool ok      = PETSC_FALSE;
+
+  /* a vector of block size bs is written as [N / bs, bs] */
+  if (ds >= 0 && (sp = H5Dget_space(ds)) >= 0 && (nd = H5Sget_simple_extent_ndims(sp)) >= 1 && nd <= 4 && H5Sget_simple_extent_dims(sp, dims, NULL) >= 0) {
+    hsize_t total = 1;
+    for (int i = 0; i < nd; i++) total *= dims[i];
+    ok = (PetscBool)((PetscInt)total == n);
+  }
+  if (sp >= 0) H5Sclose(sp);
+  if (ds >= 0) H5Dclose(ds);
+  return ok;
+}
+
+/* Rank 0: whether path is a complete point for this job (1), one to pass over for an earlier one (0: incomplete,
+ * truncated, unreadable) or one that cannot be continued with this deck and rank count at all (-1: another rank count,
+ * model or mesh); the reason in why, the point's step and whether it holds Xprev in h_step, h_xprev. */
+static int PointValid(const char *path, const Expect *e, char why[], size_t len, PetscInt *h_step, PetscInt *h_xprev)
 {
   H5E_auto2_t efunc;
   void       *edata;
   hid_t       f, ds = -1, sp = -1, at = -1;
   hsize_t     dims[2] = {0, 0};
   int64_t     complete = 0;
-  double      h[H_STEP];
-  PetscBool   ok = PETSC_FALSE;
+  double      h[H_SUMS];
+  int         ok = 0;
 
   (void)H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
   (void)H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
@@ -301,13 +378,14 @@ static PetscBool PointValid(const char *path, PetscInt nh, PetscMPIInt size, cha
     goto done;
   }
   sp = H5Dget_space(ds);
-  if (sp < 0 || H5Sget_simple_extent_ndims(sp) < 1 || H5Sget_simple_extent_dims(sp, dims, NULL) < 0 || (PetscInt)dims[0] != nh) {
+  if (sp < 0 || H5Sget_simple_extent_ndims(sp) < 1 || H5Sget_simple_extent_dims(sp, dims, NULL) < 0 || (PetscInt)dims[0] != e->nh) {
     snprintf(why, len, "written for a deck of another number of steps");
+    ok = -1;
     goto done;
   }
   {
-    hid_t   ms  = H5Screate_simple(1, (hsize_t[]){H_STEP}, NULL);
-    hsize_t off = 0, cnt = H_STEP;
+    hid_t   ms  = H5Screate_simple(1, (hsize_t[]){H_SUMS}, NULL);
+    hsize_t off = 0, cnt = H_SUMS;
     H5Sselect_hyperslab(sp, H5S_SELECT_SET, &off, NULL, &cnt, NULL);
     if (H5Dread(ds, H5T_NATIVE_DOUBLE, ms, sp, H5P_DEFAULT, h) < 0) {
       H5Sclose(ms);
@@ -318,13 +396,39 @@ static PetscBool PointValid(const char *path, PetscInt nh, PetscMPIInt size, cha
   }
   if (h[H_VERSION] != RS_VERSION) {
     snprintf(why, len, "written by another version of thermoslide (format %g, this one reads %d)", h[H_VERSION], RS_VERSION);
+    ok = -1;
     goto done;
   }
-  if ((PetscMPIInt)h[H_NRANKS] != size) {
+  if ((PetscMPIInt)h[H_NRANKS] != e->size) {
     snprintf(why, len, "written on %d ranks: continue it on %d (another rank count is not supported yet)", (int)h[H_NRANKS], (int)h[H_NRANKS]);
+    ok = -1;
     goto done;
   }
-  ok = PETSC_TRUE;
+  if (Unbits(h[H_MODEL]) != e->model) {
+    snprintf(why, len, "written for a model with other materials, sections or contact interactions than this deck's");
+    ok = -1;
+    goto done;
+  }
+  if (!HasDataset(f, "X", e->nx) || !HasDataset(f, "state", e->nstate) || !HasDataset(f, "layout", e->size)) {
+    snprintf(why, len, "written for another mesh (its solution or contact state has another size than this deck's)");
+    ok = -1;
+    goto done;
+  }
+  *h_step  = (PetscInt)h[H_STEP];
+  *h_xprev = h[H_HAS_XPREV] > 0;
+  if (*h_step < 0 || (PetscInt)(2 * *h_step + H_TSTART) >= e->nh || !HasDataset(f, "checksum", CK_START + *h_step + 1) || (*h_xprev && !HasDataset(f, "Xprev", e->nx))) {
+    snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
+    goto done;
+  }
+  for (PetscInt k = 0; k <= *h_step; k++) {
+    char name[32];
+    snprintf(name, sizeof(name), "start_%d", (int)k);
+    if (!HasDataset(f, name, e->nx)) {
+      snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
+      goto done;
+    }
+  }
+  ok = 1;
 done:
   if (at >= 0) H5Aclose(at);
   if (sp >= 0) H5Sclose(sp);
@@ -332,6 +436,73 @@ done:
   if (f >= 0) H5Fclose(f);
   (void)H5Eset_auto2(H5E_DEFAULT, efunc, edata);
   return ok;
+}
+
+/* Collective: every dataset of the point read and checked against its checksum, and this rank's layout against the
+ * one written. *status: 1 sound, 0 corrupted (why), -1 another model or partition (why). */
+static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nstate_local, int *status, char why[], size_t len)
+{
+  PetscViewer vw;
+  Vec         cv, v, X;
+  PetscMPIInt rank;
+  PetscInt    nck = CK_START + step + 1, nx;
+  uint64_t   *want, got, digest;
+  PetscBool   bad = PETSC_FALSE;
+  const char *which = NULL;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+  PetscCall(TslProblemGetSolution(d->prob, &X));
+  PetscCall(VecGetLocalSize(X, &nx));
+  PetscCall(PetscMalloc1(nck, &want));
+  PetscCall(PetscViewerHDF5Open(d->comm, path, FILE_MODE_READ, &vw));
+  PetscCall(LocalVec(d->comm, rank ? 0 : nck, "checksum", &cv));
+  PetscCall(VecLoad(cv, vw));
+  if (!rank) {
+    const PetscScalar *c;
+    PetscCall(VecGetArrayRead(cv, &c));
+    for (PetscInt k = 0; k < nck; k++) want[k] = Unbits(PetscRealPart(c[k]));
+    PetscCall(VecRestoreArrayRead(cv, &c));
+  }
+  PetscCall(VecDestroy(&cv));
+  PetscCallMPI(MPI_Bcast(want, (PetscMPIInt)nck, MPI_UINT64_T, 0, d->comm));
+  *status = 1;
+  /* the layout: this rank's digest against the one its rank wrote */
+  PetscCall(LocalVec(d->comm, 1, "layout", &v));
+  PetscCall(VecLoad(v, vw));
+  PetscCall(Checksum(v, &got));
+  if (got != want[CK_LAYOUT]) *status = 0, which = "layout";
+  else {
+    const PetscScalar *a;
+    PetscCall(TslProblemLayoutDigest(d->prob, &digest));
+    PetscCall(VecGetArrayRead(v, &a));
+    bad = (PetscBool)(Unbits(PetscRealPart(a[0])) != digest);
+    PetscCall(VecRestoreArrayRead(v, &a));
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPIU_BOOL, MPI_LOR, d->comm));
+    if (bad) {
+      *status = -1;
+      snprintf(why, len, "written for another model or partition (the nodes, elements or contact nodes of a rank differ): continue it with the deck and options it was written with");
+    }
+  }
+  PetscCall(VecDestroy(&v));
+  for (PetscInt k = CK_STATE; k < nck && *status == 1; k++) {
+    char        name[32];
+    PetscInt    n = k == CK_STATE ? nstate_local : nx;
+    if (k == CK_XPREV && !xprev) continue;
+    if (k == CK_STATE) PetscCall(PetscStrncpy(name, "state", sizeof(name)));
+    else if (k == CK_X) PetscCall(PetscStrncpy(name, "X", sizeof(name)));
+    else if (k == CK_XPREV) PetscCall(PetscStrncpy(name, "Xprev", sizeof(name)));
+    else PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, k - CK_START));
+    PetscCall(LocalVec(d->comm, n, name, &v));
+    PetscCall(VecLoad(v, vw));
+    PetscCall(Checksum(v, &got));
+    PetscCall(VecDestroy(&v));
+    if (got != want[k]) *status = 0, which = k == CK_STATE ? "state" : k == CK_X ? "X" : k == CK_XPREV ? "Xprev" : "start";
+  }
+  PetscCall(PetscViewerDestroy(&vw));
+  PetscCall(PetscFree(want));
+  if (*status == 0) snprintf(why, len, "corrupted (its %s data do not match their checksum)", which);
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* Rank 0: the earlier run's output (results and history) with this run id: the file of a run killed (.part,
@@ -390,8 +561,10 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   const TslModel *m;
   PetscMPIInt     rank, size;
   PetscInt        nh;
-  char            msg[PETSC_MAX_PATH_LEN + 256] = "";
+  char            msg[PETSC_MAX_PATH_LEN + 400] = "";
   int             found                         = 0;
+  Expect          ex;
+  PetscInt        np = 0, nstate_local, (*pts)[2] = NULL;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
@@ -403,11 +576,24 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
   PetscCallMPI(MPI_Comm_size(d->comm, &size));
   nh = HeaderLength(m->nstep);
+  {
+    Vec    X;
+    size_t bytes;
+    const char *unsupported;
+    PetscCall(TslProblemGetSolution(d->prob, &X));
+    PetscCall(VecGetSize(X, &ex.nx));
+    PetscCall(TslProblemStateSize(d->prob, &bytes, &unsupported));
+    nstate_local = (PetscInt)((bytes + sizeof(PetscScalar) - 1) / sizeof(PetscScalar));
+    PetscCallMPI(MPI_Allreduce(&nstate_local, &ex.nstate, 1, MPIU_INT, MPI_SUM, d->comm));
+    ex.nh   = nh;
+    ex.size = size;
+    PetscCall(TslProblemModelDigest(d->prob, &ex.model));
+  }
   if (!rank) {
-    /* the points of this job, latest first: the first valid one is taken, the others before it named */
+    /* the points of this job, latest first */
     DIR           *dp = opendir(d->rs_dir[0] ? d->rs_dir : ".");
     struct dirent *e;
-    PetscInt       np = 0, cap = 0, (*pts)[2] = NULL;
+    PetscInt       cap = 0;
     char           pfx[300];
     snprintf(pfx, sizeof(pfx), "%s.restart.", jobname);
     while (dp && (e = readdir(dp))) {
@@ -422,30 +608,36 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
       pts[np][0] = (PetscInt)s, pts[np][1] = (PetscInt)i, np++;
     }
     if (dp) closedir(dp);
-    while (np > 0 && !found) {
-      PetscInt best = 0;
-      char     why[200];
-      for (PetscInt k = 1; k < np; k++)
-        if (pts[k][0] > pts[best][0] || (pts[k][0] == pts[best][0] && pts[k][1] > pts[best][1])) best = k;
-      PetscCall(PointPath(d, pts[best][0], pts[best][1], "", d->rs_point, sizeof(d->rs_point)));
-      if (PointValid(d->rs_point, nh, size, why, sizeof(why))) found = 1;
-      else {
-        printf("thermoslide: warning: restart point %s is not used: %s\n", d->rs_point, why);
-        if (strstr(why, "ranks")) {
-          snprintf(msg, sizeof(msg), "restart point %s was %s", d->rs_point, why);
-          found = -1;
-          break;
+    for (PetscInt a = 0; a < np; a++) /* latest first */
+      for (PetscInt b = a + 1; b < np; b++)
+        if (pts[b][0] > pts[a][0] || (pts[b][0] == pts[a][0] && pts[b][1] > pts[a][1])) {
+          PetscInt t0 = pts[a][0], t1 = pts[a][1];
+          pts[a][0] = pts[b][0], pts[a][1] = pts[b][1], pts[b][0] = t0, pts[b][1] = t1;
         }
-      }
-      pts[best][0] = pts[np - 1][0], pts[best][1] = pts[np - 1][1], np--;
-    }
-    free(pts);
-    if (!found) snprintf(msg, sizeof(msg), "-tsl_restart: no valid restart point of job %s in %s", jobname, d->rs_dir[0] ? d->rs_dir : ".");
   }
-  PetscCallMPI(MPI_Bcast(&found, 1, MPI_INT, 0, d->comm));
-  PetscCallMPI(MPI_Bcast(msg, sizeof(msg), MPI_CHAR, 0, d->comm));
+  PetscCallMPI(MPI_Bcast(&np, 1, MPIU_INT, 0, d->comm));
+  if (rank) pts = malloc(sizeof(*pts) * (np ? np : 1));
+  if (np) PetscCallMPI(MPI_Bcast(pts, (PetscMPIInt)(2 * np), MPIU_INT, 0, d->comm));
+  /* the first sound one is taken, the later ones passed over named */
+  for (PetscInt k = 0; k < np && !found; k++) {
+    char     why[300] = "";
+    PetscInt hs[2]    = {0, 0};
+    int      st       = 0;
+    PetscCall(PointPath(d, pts[k][0], pts[k][1], "", d->rs_point, sizeof(d->rs_point)));
+    if (!rank) st = PointValid(d->rs_point, &ex, why, sizeof(why), &hs[0], &hs[1]);
+    PetscCallMPI(MPI_Bcast(&st, 1, MPI_INT, 0, d->comm));
+    PetscCallMPI(MPI_Bcast(hs, 2, MPIU_INT, 0, d->comm));
+    PetscCallMPI(MPI_Bcast(why, sizeof(why), MPI_CHAR, 0, d->comm));
+    if (st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], nstate_local, &st, why, sizeof(why)));
+    if (st == 1) found = 1;
+    else if (st < 0) {
+      snprintf(msg, sizeof(msg), "restart point %s was %s", d->rs_point, why);
+      found = -1;
+    } else PetscCall(PetscPrintf(d->comm, "thermoslide: warning: restart point %s is not used: %s\n", d->rs_point, why));
+  }
+  free(pts);
+  if (!found) snprintf(msg, sizeof(msg), "-tsl_restart: no valid restart point of job %s in %s", jobname, d->rs_dir[0] ? d->rs_dir : ".");
   PetscCheck(found == 1, d->comm, PETSC_ERR_FILE_OPEN, "%s", msg);
-  PetscCallMPI(MPI_Bcast(d->rs_point, sizeof(d->rs_point), MPI_CHAR, 0, d->comm));
   {
     PetscViewer  vw;
     Vec          hv;
@@ -536,31 +728,16 @@ PetscErrorCode TslRestartStepStart(Driver *d, PetscInt s, PetscReal *total_time)
 PetscErrorCode TslRestartLoad(Driver *d, TslRestartLoop *loop)
 {
   PetscViewer  vw;
-  Vec          X, dv, sv;
-  PetscMPIInt  rank;
+  Vec          X, sv;
   size_t       bytes;
   const char  *unsupported;
-  PetscBool    bad;
-  uint64_t     digest;
   PetscScalar *a;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
   PetscCall(TslProblemGetSolution(d->prob, &X));
   PetscCall(TslProblemStateSize(d->prob, &bytes, &unsupported));
   PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
-  PetscCall(LocalVec(d->comm, 1, "layout", &dv));
-  PetscCall(VecLoad(dv, vw));
-  PetscCall(TslProblemLayoutDigest(d->prob, &digest));
-  PetscCall(VecGetArray(dv, &a));
-  bad = (PetscBool)(Unbits(PetscRealPart(a[0])) != digest);
-  PetscCall(VecRestoreArray(dv, &a));
-  PetscCall(VecDestroy(&dv));
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPIU_BOOL, MPI_LOR, d->comm));
-  if (bad) PetscCall(PetscViewerDestroy(&vw));
-  PetscCheck(!bad, d->comm, PETSC_ERR_FILE_UNEXPECTED,
-             "restart point %s was written for another model or partition (the nodes, elements or contact nodes of a rank differ): continue it with the deck and options it was written with",
-             d->rs_point);
+  /* the layout and the checksums were verified when the point was chosen (TslRestartSetUp) */
   PetscCall(LocalVec(d->comm, (PetscInt)((bytes + sizeof(PetscScalar) - 1) / sizeof(PetscScalar)), "state", &sv));
   PetscCall(VecLoad(sv, vw));
   PetscCall(VecGetArray(sv, &a));

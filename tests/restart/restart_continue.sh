@@ -21,6 +21,33 @@ grep "continuing from restart point" "$out/cont.log" || { echo "FAIL: the contin
 "$py" "$compare" "$out/whole/job.h5" "$out/cont/job.h5" "$tol" || { echo "FAIL: the continuation's results differ from the whole run's"; exit 1; }
 if [ "$tol" = 0 ]; then cmp "$out/whole/job.csv" "$out/cont/job.csv" || { echo "FAIL: the histories differ"; exit 1; }; fi
 [ "$(wc -l < "$out/whole/job.csv")" = "$(wc -l < "$out/cont/job.csv")" ] || { echo "FAIL: history rows lost or duplicated"; exit 1; }
+# the latest point corrupted (one value of its solution changed in place) or truncated: it is passed over with a
+# warning naming it, and the continuation from the one before it gives the same results
+latest=$(ls "$out"/whole/job.restart.*.h5 | sed 's/.*job\.restart\.\([0-9]*\)\.\([0-9]*\)\.h5/\1 \2/' | sort -n -k1,1 -k2,2 | tail -n 1 | tr ' ' .)
+for how in corrupted truncated; do
+  rm -rf "$out/$how" && cp -r "$out/whole" "$out/$how"
+  p="$out/$how/job.restart.$latest.h5"
+  if [ $how = corrupted ]; then
+    "$py" -c "import h5py, sys; f = h5py.File(sys.argv[1], 'r+'); x = f['X']; v = x[...]; v.flat[len(v.flat) // 2] += 1e-3; x[...] = v" "$p" || exit 1
+  else
+    truncate -s $(($(stat -c %s "$p") / 2)) "$p"
+  fi
+  $mpiexec -n "$np" "$exe" "$out/job.inp" -o "$out/$how" -tsl_restart > "$out/$how.log" 2>&1 || { cat "$out/$how.log"; echo "FAIL: the continuation past a $how point"; exit 1; }
+  grep -q "warning: restart point .*job.restart.$latest.h5 is not used: " "$out/$how.log" || { cat "$out/$how.log"; echo "FAIL: the $how point was not named"; exit 1; }
+  grep "is not used" "$out/$how.log"
+  grep -q "continuing from restart point" "$out/$how.log" || { echo "FAIL: no continuation from an earlier point"; exit 1; }
+  "$py" "$compare" "$out/whole/job.h5" "$out/$how/job.h5" "$tol" || { echo "FAIL: the continuation past a $how point differs from the whole run"; exit 1; }
+done
+# another model: the friction coefficient or a node's position changed: an error naming the point, the results kept
+for change in '/^\*FRICTION/{n;s/0\.1/0.2/}' '0,/^ 1, 0, 0$/s// 1, 0.001, 0/'; do
+  rm -rf "$out/model" && cp -r "$out/whole" "$out/model"
+  mkdir -p "$out/changed" && sed "$change" "$out/job.inp" > "$out/changed/job.inp"
+  cmp -s "$out/job.inp" "$out/changed/job.inp" && { echo "FAIL: the deck change '$change' changed nothing"; exit 1; }
+  if $mpiexec -n "$np" "$exe" "$out/changed/job.inp" -o "$out/model" -tsl_restart > "$out/model.log" 2>&1; then echo "FAIL: a point continued with another model ($change)"; exit 1; fi
+  grep -q "restart point .* was written for" "$out/model.log" || { cat "$out/model.log"; echo "FAIL: no clear error for another model ($change)"; exit 1; }
+  grep -o "restart point .* was written for.*" "$out/model.log" | head -1
+  cmp -s "$out/whole/job.h5" "$out/model/job.h5" || { echo "FAIL: the refused continuation changed the results"; exit 1; }
+done
 # no point at all: an error, nothing overwritten
 mkdir -p "$out/none"
 if $mpiexec -n "$np" "$exe" "$out/job.inp" -o "$out/none" -tsl_restart > "$out/none.log" 2>&1; then echo "FAIL: -tsl_restart without a point completed"; exit 1; fi
