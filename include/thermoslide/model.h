@@ -458,9 +458,11 @@ typedef struct {
   TslFieldControls     field_controls[2]; /* *CONTROLS, PARAMETERS=FIELD for the displacement and the temperature field */
   TslTemperatureFile   tfile;             /* *TEMPERATURE, FILE= (given = FALSE: none in this step) */
   /* *RESTART, WRITE in force in this step (the last one given, in this step or before, or in the model data):
-   * a restart point every restart_frequency increments and at the step's end (0: none; docs/running.md
+   * a restart point every restart_frequency increments, at restart_interval times evenly spaced over the step
+   * (NUMBER INTERVAL), and at the step's end (both 0: none; restart_frequency -1: neither given, the dialect's
+   * default: every increment in implicit steps, NUMBER INTERVAL=1 in explicit ones; TslRestartDue, docs/running.md
    * "Restart"); restart_overlay: OVERLAY, only the latest point kept */
-  PetscInt  restart_frequency;
+  PetscInt  restart_frequency, restart_interval;
   PetscBool restart_overlay;
   TslLoc    restart_loc; /* the *RESTART line in force (its place in messages) */
 } TslStep;

@@ -72,7 +72,7 @@ typedef struct {
   PetscInt  interaction;         /* surface interaction the interface-law keywords apply to, or -1 */
   PetscInt  out_frequency;       /* *OUTPUT, FREQUENCY= in the open step */
   PetscInt  out_frequency_model; /* *OUTPUT, FREQUENCY= in the model data: each step's default */
-  PetscInt  restart_frequency;   /* *RESTART, WRITE in force (model data or an earlier step): the next step's */
+  PetscInt  restart_frequency, restart_interval; /* *RESTART, WRITE in force (model data or an earlier step): the next step's */
   PetscBool restart_overlay;
   TslLoc    restart_loc;
   PetscInt  out_number_model;    /* *OUTPUT, NUMBER INTERVAL= in the model data: each step's default (0: none) */
@@ -2360,6 +2360,7 @@ static PetscErrorCode KwStep(Deck *d, const DeckKeyword *kw)
   s->out_number_interval        = d->out_number_model;
   s->out_time_interval          = d->out_time_model;
   s->restart_frequency          = d->restart_frequency;
+  s->restart_interval           = d->restart_interval;
   s->restart_overlay            = d->restart_overlay;
   s->restart_loc                = d->restart_loc;
   d->step                       = m->nstep++;
@@ -3292,28 +3293,35 @@ static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* *RESTART, WRITE [, FREQUENCY=n] [, OVERLAY]: restart points every n increments of this step and the ones after
- * (until the next *RESTART), and at each step's end (src/solve/restart.c; docs/running.md "Restart"). Model data:
- * from the first step on. READ: the dialect's continuation by a new deck, not here: the job continues with
- * -tsl_restart (the same deck) instead. */
+/* *RESTART, WRITE [, FREQUENCY=n] [, NUMBER INTERVAL=n] [, TIME MARKS=YES|NO] [, OVERLAY]: restart points every n
+ * increments of this step and the ones after (until the next *RESTART), at n times evenly spaced over each step, and
+ * at each step's end (src/solve/restart.c, TslRestartDue; docs/running.md "Restart"). Neither FREQUENCY nor NUMBER
+ * INTERVAL: the dialect's defaults, every increment in implicit steps (Abaqus/Standard's FREQUENCY=1), the step's end
+ * in explicit ones (Abaqus/Explicit's NUMBER INTERVAL=1). Model data: from the first step on. READ: the dialect's
+ * continuation by a new deck, not here: the job continues with -tsl_restart (the same deck) instead. */
 static PetscErrorCode KwRestart(Deck *d, const DeckKeyword *kw)
 {
-  PetscInt freq = 1;
+  PetscInt freq = -1, nint = 0;
 
   PetscFunctionBeginUser;
   (void)kw;
   USER_CHECK(!Param(d, "READ"), LOC_FMT "*RESTART, READ (a continuation deck) is not supported: run the original deck again with -tsl_restart, which continues from its latest restart point (docs/running.md, \"Restart\")", KLOC(d));
   USER_CHECK(Param(d, "WRITE"), LOC_FMT "*RESTART needs WRITE (or READ)", KLOC(d));
   PetscCall(ParamInt(d, "FREQUENCY", &freq));
-  USER_CHECK(freq >= 0, LOC_FMT "*RESTART, FREQUENCY must not be negative (got %" PetscInt_FMT ")", KLOC(d), freq);
-  if (Param(d, "NUMBER INTERVAL") || Param(d, "TIME MARKS"))
-    PetscCall(PetscPrintf(PETSC_COMM_SELF, LOC_FMT "warning: *RESTART, NUMBER INTERVAL= / TIME MARKS= are read as FREQUENCY=1 (a point every increment)\n", KLOC(d)));
+  USER_CHECK(!Param(d, "FREQUENCY") || freq >= 0, LOC_FMT "*RESTART, FREQUENCY must not be negative (got %" PetscInt_FMT ")", KLOC(d), freq);
+  PetscCall(ParamInt(d, "NUMBER INTERVAL", &nint));
+  USER_CHECK(nint >= 0, LOC_FMT "*RESTART, NUMBER INTERVAL must not be negative (got %" PetscInt_FMT ")", KLOC(d), nint);
+  if (Param(d, "NUMBER INTERVAL") && !Param(d, "FREQUENCY")) freq = 0; /* the intervals alone */
+  /* TIME MARKS: whether the points fall exactly on the interval times; here a point is written at the first increment
+   * that reaches each (the increments are not cut for it), as with TIME MARKS=NO */
   d->restart_frequency = freq;
+  d->restart_interval  = nint;
   d->restart_overlay   = (PetscBool)(Param(d, "OVERLAY") != NULL);
   d->restart_loc       = d->kwloc;
   if (d->step >= 0) {
     TslStep *s           = &d->m->steps[d->step];
     s->restart_frequency = d->restart_frequency;
+    s->restart_interval  = d->restart_interval;
     s->restart_overlay   = d->restart_overlay;
     s->restart_loc       = d->restart_loc;
   }

@@ -393,6 +393,14 @@ PetscErrorCode TslProblemImplicitRecords(TslProblem p, PetscBool use, PetscInt *
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslProblemExplicitCarried(TslProblem p, PetscReal **ev, PetscInt *n)
+{
+  PetscFunctionBeginUser;
+  *ev = p->fast_built ? p->fast_ev : NULL;
+  *n  = p->fast_built ? W * p->fast_nbatch : 0;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* Records are built in element order into batches of one type each (an open batch per type), so a batch's
  * elements are near one another in the mesh and successive batches walk it as the element order does. */
 PetscErrorCode TslProblemExplicitRecords(TslProblem p, PetscBool use, PetscInt *nfast, PetscReal *mbytes)

@@ -49,8 +49,9 @@ PetscErrorCode TslProblemStateUnpack(TslProblem p, const void *buf)
     if (p->csurf[k].nnormal) Take(&at, p->csurf[k].nnormal, 3 * p->nn * sizeof(PetscReal));
   Take(&at, p->pstate, p->npstate * sizeof(PetscReal));
   if (p->npstate) PetscCall(PetscArraycpy(p->pstate_new, p->pstate, p->npstate));
-  PetscCall(TslProblemContactRollback(p)); /* the current state from the committed one */
-  p->pattern_stale = PETSC_TRUE;           /* the pairing is the point's, not the set-up's */
+  /* the current state as written, not rolled back to the committed one: an explicit increment searches the pairing
+   * after its commit (TslProblemContactExplicitIncrement), and the next increment starts from the searched one */
+  p->pattern_stale = PETSC_TRUE; /* the pairing is the point's, not the set-up's */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

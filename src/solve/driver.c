@@ -921,6 +921,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscReal           dtheta = 0, h, t_end;
     PetscBool           accept, last, frame, steady;
     const char         *why;
+    char                why_rs[64];
 
     /* the increment ends at the next output time too (*OUTPUT, NUMBER INTERVAL= / TIME INTERVAL=), as Abaqus/Standard cuts it */
     PetscCall(TslProblemNextAmplitudeCorner(d->prob, t, TslFrameTimesBound(&frames), &t_end));
@@ -945,7 +946,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
       PetscCall(VecCopy(Xold, X));
       PetscCall(TslProblemContactRollback(d->prob));
       d->trial = PETSC_FALSE;
-      PetscCall(TslRestartWrite(d, &L, TslStopName(d->stop)));
+      PetscCall(TslRestartWrite(d, &L, TslStopName(d->stop), NULL));
     }
     PetscCheck(!d->stop, d->comm, PETSC_ERR_SIG, "step %" PetscInt_FMT ": %s received at step time %g, in increment %" PetscInt_FMT "; %s", s + 1,
                TslStopName(d->stop), (double)(t + h), inc + 1, SavedState(d, t, saved, sizeof(saved)));
@@ -1039,13 +1040,10 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     }
     its_prev = its;
     cutbacks = 0;
-    if (step->restart_frequency > 0 && (inc % step->restart_frequency == 0 || last || steady)) {
-      /* *RESTART, WRITE: a point every FREQUENCY increments and at the step's end (END=SS: the loop's time set to
-       * the period, so that the continuation ends the step there too) */
+    if (TslRestartDue(step, inc, t - h, t, (PetscBool)(last || steady), why_rs, sizeof(why_rs))) {
+      /* *RESTART, WRITE (END=SS: the loop's time set to the period, so that the continuation ends the step there too) */
       const TslRestartLoop L = {s, inc, its_prev, 0, steady ? step->period : t, dt, *total_time, d->h_prev, frames.next};
-      char                 why[64];
-      PetscCall(PetscSNPrintf(why, sizeof(why), last || steady ? "end of step" : "FREQUENCY=%" PetscInt_FMT, step->restart_frequency));
-      PetscCall(TslRestartWrite(d, &L, why));
+      PetscCall(TslRestartWrite(d, &L, why_rs, NULL));
     }
     if (steady) {
       PetscCall(PetscPrintf(d->comm,

@@ -64,6 +64,94 @@ typedef struct {
 typedef struct {
   PetscReal ke, ie, wk, fd, cw, mw, vd;
 } Energies;
+
+/* A restart point's share of the explicit state (TslRestartExtra; docs/running.md "Restart"), what the next
+ * increment reads beyond the solution and the contact state: the vectors V, M, Fi, Fe (Fc with contact: the forces
+ * of the state, evaluated at the end of its increment) and as reals the loop's scalars (XR_*), the last evaluation's
+ * heat rates, the element increments, scale factors and viscosity coefficients (the mass scaling's, as last set),
+ * the bulk viscosity's q per element and the records' carried strains. One walk serves both ways (Carry). */
+enum { XR_H_PREV, XR_T_HIST, XR_DT, XR_DT_STABLE, XR_LIM_MECH, XR_LIM_HEAT, XR_LIM_CMECH, XR_LIM_CHEAT, XR_VD_H, XR_DT_FORCES,
+       XR_KIN_TOTAL, XR_NREPAIR, XR_REACTION, XR_STORED, XR_BALANCE, XR_N };
+#define NRATES ((PetscInt)(sizeof(TslExplicitRates) / sizeof(PetscReal)))
+
+static void CarryReals(PetscReal **at, PetscReal *var, PetscInt n, PetscBool out)
+{
+  if (out) memcpy(*at, var, sizeof(PetscReal) * (size_t)n);
+  else memcpy(var, *at, sizeof(PetscReal) * (size_t)n);
+  *at += n;
+}
+
+/* out: the state into e->real (allocated here, e->vec set); else the reals back into the state. h_prev and t_hist
+ * are the loop's. */
+static PetscErrorCode Carry(Explicit *x, TslRestartExtra *e, PetscReal *h_prev, PetscReal *t_hist, PetscBool out)
+{
+  PetscReal *ev, *at, sc[XR_N];
+  PetscInt   nev, ne = x->m->nelem;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemExplicitCarried(x->p, &ev, &nev));
+  if (!e->real) {
+    e->nvec   = 0;
+    e->vec[e->nvec++] = x->V, e->vec[e->nvec++] = x->M, e->vec[e->nvec++] = x->Fi, e->vec[e->nvec++] = x->Fe;
+    if (x->Fc) e->vec[e->nvec++] = x->Fc;
+    e->nreal = XR_N + 2 * NRATES + 5 * ne + (x->qv ? ne : 0) + nev;
+    PetscCall(PetscMalloc1(e->nreal, &e->real));
+  }
+  if (out) {
+    sc[XR_H_PREV] = *h_prev, sc[XR_T_HIST] = *t_hist, sc[XR_DT] = x->dt, sc[XR_DT_STABLE] = x->dt_stable;
+    sc[XR_LIM_MECH] = x->lim_mech, sc[XR_LIM_HEAT] = x->lim_heat, sc[XR_LIM_CMECH] = x->lim_cmech, sc[XR_LIM_CHEAT] = x->lim_cheat;
+    sc[XR_VD_H] = x->vd_h, sc[XR_DT_FORCES] = x->dt_forces, sc[XR_KIN_TOTAL] = (PetscReal)x->kin_total, sc[XR_NREPAIR] = (PetscReal)x->nrepair;
+    sc[XR_REACTION] = x->rates_reaction_heat, sc[XR_STORED] = x->stored_rate, sc[XR_BALANCE] = x->balance;
+  }
+  at = e->real;
+  CarryReals(&at, sc, XR_N, out);
+  CarryReals(&at, (PetscReal *)&x->rates, NRATES, out);
+  CarryReals(&at, (PetscReal *)&x->krates, NRATES, out);
+  CarryReals(&at, x->dt_mech, ne, out);
+  CarryReals(&at, x->dt_heat, ne, out);
+  CarryReals(&at, x->scale, ne, out);
+  CarryReals(&at, x->eta, ne, out);
+  CarryReals(&at, x->eta2, ne, out);
+  if (x->qv) CarryReals(&at, x->qv, ne, out);
+  if (nev) CarryReals(&at, ev, nev, out);
+  if (!out) {
+    *h_prev = sc[XR_H_PREV], *t_hist = sc[XR_T_HIST], x->dt = sc[XR_DT], x->dt_stable = sc[XR_DT_STABLE];
+    x->lim_mech = sc[XR_LIM_MECH], x->lim_heat = sc[XR_LIM_HEAT], x->lim_cmech = sc[XR_LIM_CMECH], x->lim_cheat = sc[XR_LIM_CHEAT];
+    x->vd_h = sc[XR_VD_H], x->dt_forces = sc[XR_DT_FORCES], x->kin_total = (PetscInt)sc[XR_KIN_TOTAL], x->nrepair = (PetscInt)sc[XR_NREPAIR];
+    x->rates_reaction_heat = sc[XR_REACTION], x->stored_rate = sc[XR_STORED], x->balance = sc[XR_BALANCE];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A restart point at the end of increment inc (its forces evaluated, its frame and history row written). */
+static PetscErrorCode WritePoint(Explicit *x, const TslRestartLoop *L, PetscReal h_prev, PetscReal t_hist, const char *why)
+{
+  TslRestartExtra e = {0};
+
+  PetscFunctionBeginUser;
+  PetscCall(Carry(x, &e, &h_prev, &t_hist, PETSC_TRUE));
+  PetscCall(TslRestartWrite(x->d, L, why, &e));
+  PetscCall(PetscFree(e.real));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The continuation (-tsl_restart) in the point's step: after the step's set-up (from the state the step started
+ * with, so that what the set-up computes once is the original run's), the point's state replaces the set-up's. */
+static PetscErrorCode Resume(Explicit *x, TslRestartLoop *L, PetscReal *h_prev, PetscReal *t_hist)
+{
+  TslRestartExtra e = {0};
+
+  PetscFunctionBeginUser;
+  PetscCall(Carry(x, &e, h_prev, t_hist, PETSC_TRUE)); /* the layout */
+  PetscCall(TslRestartLoadExtra(x->d, &e));
+  PetscCall(TslRestartLoad(x->d, L));
+  PetscCall(Carry(x, &e, h_prev, t_hist, PETSC_FALSE));
+  PetscCall(PetscFree(e.real));
+  PetscCall(TslGhostUpdate(x->M, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslGhostUpdate(x->V, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(TslProblemSetTime(x->p, L->t, *h_prev, L->total));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 PetscErrorCode TslExplicitSetFromOptions(Driver *d)
 {
   PetscFunctionBeginUser;
@@ -698,11 +786,16 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   dt_hist = x.history_rows > 0 ? x.step->period / x.history_rows : PETSC_MAX_REAL;
   t_hist  = dt_hist;
   eps     = 1e-12 * x.step->period;
+  if (d->rs_resume && s == d->rs_loop.step) {
+    TslRestartLoop L;
+    PetscCall(Resume(&x, &L, &h_prev, &t_hist));
+    t = L.t, inc = L.inc, *total_time = L.total, frames.next = L.frames_next;
+  }
   wall0   = MPI_Wtime();
-  PetscCall(PetscPrintf(d->comm, "  about %.0f increments; frames every %g\n", (double)PetscCeilReal(x.step->period / x.dt), (double)frames.dt));
+  PetscCall(PetscPrintf(d->comm, "  about %.0f increments; frames every %g\n", (double)PetscCeilReal((x.step->period - t) / x.dt), (double)frames.dt));
   while (t < x.step->period - eps) {
     PetscReal h, t_new, to_frame = TslFrameTimesBound(&frames) - t;
-    PetscBool frame, last;
+    PetscBool frame, last, row;
     /* increments end on the frame times: the time to the next frame is cut into equal increments of at
      * most dt, so that a constant dt gives constant increments. Changing the increment from one to the next
      * (a remainder before each frame) excites the highest mode parametrically: the released bar of
@@ -744,13 +837,27 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
       if (x.step->dt_user <= 0) x.dt = x.dt_stable;
     }
     frame = TslFrameTimesReached(&frames, t);
-    frame = (PetscBool)(frame || last || x.stop); /* asked to stop: this increment's state is the one saved */
+    frame = (PetscBool)(frame || last);
     PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
-    if (frame || t >= t_hist - eps) {
+    row = (PetscBool)(frame || t >= t_hist - eps);
+    if (row) {
       PetscCall(HistoryRow(&x, en, s, inc, t, h, *total_time));
       while (t_hist <= t + eps) t_hist += dt_hist;
     }
     if (frame) PetscCall(TslFramesWrite(d, s + 1, inc, *total_time));
+    {
+      /* a restart point counts the frames and rows the run writes anyway, not the one a stop adds (below): the
+       * continuation's output is the uninterrupted run's */
+      char why[64];
+      if (x.stop || TslRestartDue(x.step, inc, t - h, t, last, why, sizeof(why))) {
+        const TslRestartLoop L = {s, inc, 0, 0, t, x.dt, *total_time, 0, frames.next};
+        PetscCall(WritePoint(&x, &L, h_prev, t_hist, x.stop ? TslStopName(x.stop) : why));
+      }
+    }
+    if (x.stop && !frame) { /* asked to stop: this increment's state is the one saved */
+      if (!row) PetscCall(HistoryRow(&x, en, s, inc, t, h, *total_time));
+      PetscCall(TslFramesWrite(d, s + 1, inc, *total_time));
+    }
     PetscCall(TslPhaseEnd(TSL_PHASE_OUTPUT));
     PetscCheck(!x.stop || last, d->comm, PETSC_ERR_SIG, /* at the step's end: its results are whole; a next step stops at once */
                "explicit step %s: %s received at step time %g, in increment %" PetscInt_FMT "; this state is saved", x.step->name,

@@ -11,6 +11,8 @@
  *   start_k  the solution at the start of each step k up to the point's (TslProblemSetStep reads the values reached
  *            there: ramps from them, FIXED holds them), replayed by the continuation step by step;
  *   state    the problem's committed state as bytes per rank (contact nodes, 3D surface normals, plastic points);
+ *   extra_j  in an explicit step's point, the procedure's own state (TslRestartExtra, explicit.c): its vectors
+ *            (velocity, masses, forces) and extra_real, its reals per rank (the loop's, the element increments);
  *   checksum one order-independent checksum per dataset above (the sum of its values' bits modulo 2^64), verified
  *            before a point is used, so that a corrupted point is passed over for the one before it.
  * The vectors are in PETSc's parallel layout and the state in each rank's own, so a point continues on the rank
@@ -24,7 +26,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#define RS_VERSION 2
+#define RS_VERSION 3
 enum {
   H_VERSION = 0,
   H_NRANKS,
@@ -43,7 +45,8 @@ enum {
   H_NROW,
   H_RUN_ID,
   H_HAS_XPREV,
-  H_MODEL, /* TslProblemModelDigest: materials, sections, interactions */
+  H_MODEL,  /* TslProblemModelDigest: materials, sections, interactions */
+  H_NEXTRA, /* the procedure's own datasets (TslRestartExtra): its vectors and its reals, 0 when none */
   H_SUMS,
   H_TSTART = H_SUMS + 24 /* then 2 per step: total time at its start, step time the step before ended at */
 };
@@ -179,10 +182,44 @@ static PetscErrorCode Checksum(Vec v, uint64_t *ck)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The checksums' places: layout, state, X, Xprev, then start_k */
+/* The checksums' places: layout, state, X, Xprev, then start_k, then the extra datasets */
 enum { CK_LAYOUT = 0, CK_STATE, CK_X, CK_XPREV, CK_START };
 
-PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char *why)
+static void ExtraName(PetscInt j, PetscInt nextra, char name[], size_t len)
+{
+  if (j == nextra - 1) snprintf(name, len, "extra_real");
+  else snprintf(name, len, "extra_%d", (int)j);
+}
+
+PetscBool TslRestartDue(const TslStep *step, PetscInt inc, PetscReal t_old, PetscReal t_new, PetscBool last, char why[], size_t len)
+{
+  PetscInt freq = step->restart_frequency, nint = step->restart_interval;
+
+  if (freq < 0) { /* neither FREQUENCY nor NUMBER INTERVAL: the dialect's defaults */
+    freq = step->explicit_dynamics ? 0 : 1;
+    if (step->explicit_dynamics) nint = 1;
+  }
+  if (freq <= 0 && nint <= 0) return PETSC_FALSE;
+  if (last) {
+    snprintf(why, len, "end of step");
+    return PETSC_TRUE;
+  }
+  if (freq > 0 && inc % freq == 0) {
+    snprintf(why, len, "FREQUENCY=%d", (int)freq);
+    return PETSC_TRUE;
+  }
+  if (nint > 0 && step->period > 0) {
+    /* the first increment that reaches each of the n times k period / n */
+    const PetscReal a = PetscFloorReal(t_old * nint / step->period + 1e-9), b = PetscFloorReal(t_new * nint / step->period + 1e-9);
+    if (b > a) {
+      snprintf(why, len, "NUMBER INTERVAL=%d", (int)nint);
+      return PETSC_TRUE;
+    }
+  }
+  return PETSC_FALSE;
+}
+
+PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char *why, const TslRestartExtra *extra)
 {
   const TslModel *m;
   const char     *unsupported;
@@ -196,6 +233,8 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   double          t0 = MPI_Wtime();
   uint64_t        digest, model, *ck;
   int             err = 0;
+  const PetscInt  nextra = extra ? extra->nvec + 1 : 0;
+  Vec             ev     = NULL;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
@@ -245,6 +284,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     h[H_RUN_ID]    = Bits(TslOutputRunId(d->out));
     h[H_HAS_XPREV] = loop->h_prev > 0 && d->Xprev ? 1 : 0;
     h[H_MODEL]     = Bits(model);
+    h[H_NEXTRA]    = (PetscReal)nextra;
     SaveSums(d, &h[H_SUMS]);
     for (PetscInt k = 0; k < 2 * ns; k++) h[H_TSTART + k] = d->rs_tstart[k];
     PetscCall(VecRestoreArray(hv, &h));
@@ -267,18 +307,27 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     PetscCall(VecRestoreArray(sv, &a));
   }
   PetscCall(TslProblemGetSolution(d->prob, &X));
-  PetscCall(PetscMalloc1(CK_START + ns, &ck));
+  PetscCall(PetscMalloc1(CK_START + ns + nextra, &ck));
   PetscCall(Checksum(dv, &ck[CK_LAYOUT]));
   PetscCall(Checksum(sv, &ck[CK_STATE]));
   PetscCall(Checksum(X, &ck[CK_X]));
   ck[CK_XPREV] = 0;
   if (loop->h_prev > 0 && d->Xprev) PetscCall(Checksum(d->Xprev, &ck[CK_XPREV]));
   for (PetscInt k = 0; k < ns; k++) PetscCall(Checksum(d->rs_xstart[k], &ck[CK_START + k]));
-  PetscCall(LocalVec(d->comm, rank ? 0 : CK_START + ns, "checksum", &cv));
+  if (extra) {
+    PetscScalar *a;
+    for (PetscInt j = 0; j < extra->nvec; j++) PetscCall(Checksum(extra->vec[j], &ck[CK_START + ns + j]));
+    PetscCall(LocalVec(d->comm, extra->nreal, "extra_real", &ev));
+    PetscCall(VecGetArray(ev, &a));
+    for (PetscInt i = 0; i < extra->nreal; i++) a[i] = extra->real[i];
+    PetscCall(VecRestoreArray(ev, &a));
+    PetscCall(Checksum(ev, &ck[CK_START + ns + extra->nvec]));
+  }
+  PetscCall(LocalVec(d->comm, rank ? 0 : CK_START + ns + nextra, "checksum", &cv));
   if (!rank) {
     PetscScalar *c;
     PetscCall(VecGetArray(cv, &c));
-    for (PetscInt k = 0; k < CK_START + ns; k++) c[k] = Bits(ck[k]);
+    for (PetscInt k = 0; k < CK_START + ns + nextra; k++) c[k] = Bits(ck[k]);
     PetscCall(VecRestoreArray(cv, &c));
   }
   PetscCall(PetscFree(ck));
@@ -295,6 +344,11 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, k));
     PetscCall(ViewNamed(d->rs_xstart[k], name, vw));
   }
+  for (PetscInt j = 0; j < nextra; j++) {
+    char name[32];
+    ExtraName(j, nextra, name, sizeof(name));
+    PetscCall(j < nextra - 1 ? ViewNamed(extra->vec[j], name, vw) : VecView(ev, vw));
+  }
   {
     PetscInt one = 1;
     PetscCall(PetscViewerHDF5WriteAttribute(vw, "/header", "complete", PETSC_INT, &one));
@@ -304,6 +358,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCall(VecDestroy(&dv));
   PetscCall(VecDestroy(&sv));
   PetscCall(VecDestroy(&cv));
+  PetscCall(VecDestroy(&ev));
   if (!rank && rename(tmp, path)) err = errno;
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, d->comm));
   PetscCheck(!err, d->comm, PETSC_ERR_FILE_WRITE, "Cannot rename the restart point %s to %s: %s", tmp, path, strerror(err));
@@ -314,7 +369,12 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     double      dt = MPI_Wtime() - t0, b = (double)bytes;
     PetscInt    N;
     PetscCall(VecGetSize(X, &N));
-    b += 8.0 * N * (1 + ns + (loop->h_prev > 0 && d->Xprev));
+    b += 8.0 * N * (1 + ns + (loop->h_prev > 0 && d->Xprev) + (extra ? extra->nvec : 0));
+    if (extra) {
+      PetscInt nr = extra->nreal;
+      PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nr, 1, MPIU_INT, MPI_SUM, d->comm));
+      b += 8.0 * nr;
+    }
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &dt, 1, MPI_DOUBLE, MPI_MAX, d->comm));
     d->rs_count++;
     d->rs_seconds += dt;
@@ -354,8 +414,9 @@ static PetscBool HasDataset(hid_t f, const char *name, PetscInt n)
 
 /* Rank 0: whether path is a complete point for this job (1), one to pass over for an earlier one (0: incomplete,
  * truncated, unreadable) or one that cannot be continued with this deck and rank count at all (-1: another rank count,
- * model or mesh); the reason in why, the point's step and whether it holds Xprev in h_step, h_xprev. */
-static int PointValid(const char *path, const Expect *e, char why[], size_t len, PetscInt *h_step, PetscInt *h_xprev)
+ * model or mesh); the reason in why, the point's step, whether it holds Xprev and its extra datasets in h_step,
+ * h_xprev, h_nextra. */
+static int PointValid(const char *path, const Expect *e, char why[], size_t len, PetscInt *h_step, PetscInt *h_xprev, PetscInt *h_nextra)
 {
   H5E_auto2_t efunc;
   void       *edata;
@@ -414,9 +475,11 @@ static int PointValid(const char *path, const Expect *e, char why[], size_t len,
     ok = -1;
     goto done;
   }
-  *h_step  = (PetscInt)h[H_STEP];
-  *h_xprev = h[H_HAS_XPREV] > 0;
-  if (*h_step < 0 || (PetscInt)(2 * *h_step + H_TSTART) >= e->nh || !HasDataset(f, "checksum", CK_START + *h_step + 1) || (*h_xprev && !HasDataset(f, "Xprev", e->nx))) {
+  *h_step   = (PetscInt)h[H_STEP];
+  *h_xprev  = h[H_HAS_XPREV] > 0;
+  *h_nextra = (PetscInt)h[H_NEXTRA];
+  if (*h_step < 0 || (PetscInt)(2 * *h_step + H_TSTART) >= e->nh || *h_nextra < 0 || *h_nextra > TSL_RESTART_MAXVEC + 1 ||
+      !HasDataset(f, "checksum", CK_START + *h_step + 1 + *h_nextra) || (*h_xprev && !HasDataset(f, "Xprev", e->nx))) {
     snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
     goto done;
   }
@@ -427,6 +490,17 @@ static int PointValid(const char *path, const Expect *e, char why[], size_t len,
       snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
       goto done;
     }
+  }
+  for (PetscInt j = 0; j < *h_nextra; j++) {
+    char  name[32];
+    hid_t x;
+    ExtraName(j, *h_nextra, name, sizeof(name));
+    x = j < *h_nextra - 1 ? (HasDataset(f, name, e->nx) ? 1 : -1) : H5Dopen2(f, name, H5P_DEFAULT);
+    if (x < 0) {
+      snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
+      goto done;
+    }
+    if (j == *h_nextra - 1) H5Dclose(x);
   }
   ok = 1;
 done:
@@ -440,12 +514,12 @@ done:
 
 /* Collective: every dataset of the point read and checked against its checksum, and this rank's layout against the
  * one written. *status: 1 sound, 0 corrupted (why), -1 another model or partition (why). */
-static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nstate_local, int *status, char why[], size_t len)
+static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nextra, PetscInt nstate_local, int *status, char why[], size_t len)
 {
   PetscViewer vw;
   Vec         cv, v, X;
   PetscMPIInt rank;
-  PetscInt    nck = CK_START + step + 1, nx;
+  PetscInt    nck = CK_START + step + 1 + nextra, nx;
   uint64_t   *want, got, digest;
   PetscBool   bad = PETSC_FALSE;
   const char *which = NULL;
@@ -488,16 +562,22 @@ static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, Pet
   for (PetscInt k = CK_STATE; k < nck && *status == 1; k++) {
     char        name[32];
     PetscInt    n = k == CK_STATE ? nstate_local : nx;
+    const PetscInt j = k - (CK_START + step + 1); /* an extra dataset's index */
     if (k == CK_XPREV && !xprev) continue;
     if (k == CK_STATE) PetscCall(PetscStrncpy(name, "state", sizeof(name)));
     else if (k == CK_X) PetscCall(PetscStrncpy(name, "X", sizeof(name)));
     else if (k == CK_XPREV) PetscCall(PetscStrncpy(name, "Xprev", sizeof(name)));
-    else PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, k - CK_START));
-    PetscCall(LocalVec(d->comm, n, name, &v));
+    else if (j < 0) PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, k - CK_START));
+    else ExtraName(j, nextra, name, sizeof(name));
+    if (j == nextra - 1) { /* the procedure's reals: their sizes are its own, the checksum independent of the ranks' shares */
+      PetscCall(VecCreate(d->comm, &v));
+      PetscCall(VecSetType(v, VECMPI));
+      PetscCall(PetscObjectSetName((PetscObject)v, name));
+    } else PetscCall(LocalVec(d->comm, n, name, &v));
     PetscCall(VecLoad(v, vw));
     PetscCall(Checksum(v, &got));
     PetscCall(VecDestroy(&v));
-    if (got != want[k]) *status = 0, which = k == CK_STATE ? "state" : k == CK_X ? "X" : k == CK_XPREV ? "Xprev" : "start";
+    if (got != want[k]) *status = 0, which = k == CK_STATE ? "state" : k == CK_X ? "X" : k == CK_XPREV ? "Xprev" : j < 0 ? "start" : "explicit";
   }
   PetscCall(PetscViewerDestroy(&vw));
   PetscCall(PetscFree(want));
@@ -621,15 +701,15 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   /* the first sound one is taken, the later ones passed over named */
   for (PetscInt k = 0; k < np && !found; k++) {
     char     why[300] = "";
-    PetscInt hs[2]    = {0, 0};
+    PetscInt hs[3]    = {0, 0, 0};
     int      st       = 0;
     PetscCall(PointPath(d, pts[k][0], pts[k][1], "", d->rs_point, sizeof(d->rs_point)));
-    if (!rank) st = PointValid(d->rs_point, &ex, why, sizeof(why), &hs[0], &hs[1]);
+    if (!rank) st = PointValid(d->rs_point, &ex, why, sizeof(why), &hs[0], &hs[1], &hs[2]);
     PetscCallMPI(MPI_Bcast(&st, 1, MPI_INT, 0, d->comm));
-    PetscCallMPI(MPI_Bcast(hs, 2, MPIU_INT, 0, d->comm));
+    PetscCallMPI(MPI_Bcast(hs, 3, MPIU_INT, 0, d->comm));
     PetscCallMPI(MPI_Bcast(why, sizeof(why), MPI_CHAR, 0, d->comm));
-    if (st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], nstate_local, &st, why, sizeof(why)));
-    if (st == 1) found = 1;
+    if (st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], nstate_local, &st, why, sizeof(why)));
+    if (st == 1) found = 1, d->rs_nextra = hs[2];
     else if (st < 0) {
       snprintf(msg, sizeof(msg), "restart point %s was %s", d->rs_point, why);
       found = -1;
@@ -670,8 +750,9 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
     d->rs_nrow             = (PetscInt)hb[H_NROW];
     d->rs_run_id           = Unbits(hb[H_RUN_ID]);
     PetscCall(PetscArraycpy(d->rs_sums, &hb[H_SUMS], 24));
-    PetscCheck(d->rs_loop.step >= 0 && d->rs_loop.step < m->nstep && !m->steps[d->rs_loop.step].explicit_dynamics, d->comm, PETSC_ERR_FILE_UNEXPECTED,
-               "restart point %s names step %" PetscInt_FMT ", not an implicit step of this deck", d->rs_point, d->rs_loop.step + 1);
+    PetscCheck(d->rs_loop.step >= 0 && d->rs_loop.step < m->nstep && (m->steps[d->rs_loop.step].explicit_dynamics ? d->rs_nextra > 0 : d->rs_nextra == 0),
+               d->comm, PETSC_ERR_FILE_UNEXPECTED, "restart point %s names step %" PetscInt_FMT ", which is of another procedure in this deck", d->rs_point,
+               d->rs_loop.step + 1);
   }
   /* the earlier run's output, which this run's extends */
   {
@@ -754,6 +835,52 @@ PetscErrorCode TslRestartLoad(Driver *d, TslRestartLoop *loop)
   RestoreSums(d, d->rs_sums);
   *loop       = d->rs_loop;
   d->rs_resume = PETSC_FALSE; /* from here on the run is an ordinary one */
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslRestartLoadExtra(Driver *d, TslRestartExtra *extra)
+{
+  PetscViewer  vw;
+  Vec          ev;
+  PetscInt     nr = extra->nreal, nr_file = -1;
+  PetscMPIInt  rank;
+  PetscScalar *a;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+  PetscCheck(d->rs_nextra == extra->nvec + 1, d->comm, PETSC_ERR_FILE_UNEXPECTED,
+             "restart point %s holds %" PetscInt_FMT " vectors of the explicit step's state, this run's step has %" PetscInt_FMT " (another contact set-up?)", d->rs_point,
+             d->rs_nextra - 1, extra->nvec);
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nr, 1, MPIU_INT, MPI_SUM, d->comm));
+  if (!rank) {
+    H5E_auto2_t efunc;
+    void       *edata;
+    hid_t       f;
+    (void)H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
+    (void)H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
+    f = H5Fopen(d->rs_point, H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (f >= 0) {
+      if (HasDataset(f, "extra_real", nr)) nr_file = nr;
+      H5Fclose(f);
+    }
+    (void)H5Eset_auto2(H5E_DEFAULT, efunc, edata);
+  }
+  PetscCallMPI(MPI_Bcast(&nr_file, 1, MPIU_INT, 0, d->comm));
+  PetscCheck(nr_file == nr, d->comm, PETSC_ERR_FILE_UNEXPECTED,
+             "restart point %s: its explicit step's state has another size than this run's (another mass scaling, bulk viscosity or element set-up?)", d->rs_point);
+  PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
+  for (PetscInt j = 0; j < extra->nvec; j++) {
+    char name[32];
+    ExtraName(j, extra->nvec + 1, name, sizeof(name));
+    PetscCall(LoadNamed(extra->vec[j], name, vw));
+  }
+  PetscCall(LocalVec(d->comm, extra->nreal, "extra_real", &ev));
+  PetscCall(VecLoad(ev, vw));
+  PetscCall(PetscViewerDestroy(&vw));
+  PetscCall(VecGetArray(ev, &a));
+  for (PetscInt i = 0; i < extra->nreal; i++) extra->real[i] = PetscRealPart(a[i]);
+  PetscCall(VecRestoreArray(ev, &a));
+  PetscCall(VecDestroy(&ev));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -144,7 +144,7 @@ typedef struct {
   char           rs_point[PETSC_MAX_PATH_LEN], rs_src_h5[PETSC_MAX_PATH_LEN], rs_src_csv[PETSC_MAX_PATH_LEN];
   TslRestartLoop rs_loop;
   PetscReal      rs_sums[24];  /* the driver's sums at the point (restart.c, RestoreSums) */
-  PetscInt       rs_nframe, rs_nrow, rs_fell_back;
+  PetscInt       rs_nframe, rs_nrow, rs_fell_back, rs_nextra;
   uint64_t       rs_run_id;
 } Driver;
 
@@ -156,8 +156,23 @@ typedef struct {
 PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname);
 PetscErrorCode TslRestartCopyOutput(Driver *d);
 PetscErrorCode TslRestartStepStart(Driver *d, PetscInt s, PetscReal *total_time);
-PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char *why);
+/* A procedure's own state in a point beyond the loop's (explicit steps: velocities, masses, forces, the element
+ * increments; explicit.c): vectors of X's layout, and reals of each rank's own (NULL, 0 when none) */
+#define TSL_RESTART_MAXVEC 8
+typedef struct {
+  PetscInt   nvec;
+  Vec        vec[TSL_RESTART_MAXVEC];
+  PetscInt   nreal;
+  PetscReal *real;
+} TslRestartExtra;
+/* Whether a point is due after increment inc (from step time t_old to t_new; last: the step's last) under the step's
+ * *RESTART, WRITE, with the reason for the log in why. */
+PetscBool      TslRestartDue(const TslStep *step, PetscInt inc, PetscReal t_old, PetscReal t_new, PetscBool last, char why[], size_t len);
+PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char *why, const TslRestartExtra *extra);
 PetscErrorCode TslRestartLoad(Driver *d, TslRestartLoop *loop);
+/* The extra state of the point being continued from into extra's vectors and reals (their sizes this run's: an error
+ * naming the point if its differ). */
+PetscErrorCode TslRestartLoadExtra(Driver *d, TslRestartExtra *extra);
 PetscErrorCode TslRestartFinish(Driver *d, PetscBool completed);
 
 

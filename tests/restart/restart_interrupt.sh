@@ -1,5 +1,5 @@
 #!/bin/bash
-# A job with *RESTART, WRITE, FREQUENCY=2 interrupted in its sliding step (step 2) and continued with -tsl_restart,
+# A job with *RESTART, WRITE (FREQUENCY=2, or the RESTART given) interrupted in its sliding step (step 2) and continued with -tsl_restart,
 # in both ways a batch job ends early:
 #   stop  SIGUSR1 to mpirun (a wall-time warning): the job writes a point at its last converged increment and exits
 #         with 138; the continuation starts there;
@@ -7,12 +7,15 @@
 #         starts from the latest periodic point and extends the killed run's frames and history (its .part files).
 # Each continuation's results (every frame) and history must equal the uninterrupted run's: bitwise on one rank,
 # within TOL of each field's largest value on more (MUMPS's parallel factorisation is not bitwise repeatable).
-# usage: restart_interrupt.sh THERMOSLIDE MPIEXEC NP DECK OUTDIR PYTHON COMPARE TOL
+# RESTART: the *RESTART line put before the first step (default: FREQUENCY=2); WAIT: the log line the interruption
+# waits for (default: step 2's second increment).
+# usage: restart_interrupt.sh THERMOSLIDE MPIEXEC NP DECK OUTDIR PYTHON COMPARE TOL [RESTART [WAIT]]
 set -u
 exe=$1 mpiexec=$2 np=$3 deck=$4 out=$5 py=$6 compare=$7 tol=$8
+restart=${9:-*RESTART, WRITE, FREQUENCY=2} wait_for=${10:-step 2 increment 2:}
 rm -rf "$out" && mkdir -p "$out/whole" || exit 1
 job=$(basename "$deck" .inp)
-sed '0,/^\*[Ss][Tt][Ee][Pp]/s//*RESTART, WRITE, FREQUENCY=2\n&/' "$deck" > "$out/$job.inp"
+awk -v line="$restart" '!done && toupper($0) ~ /^\*STEP/ {print line; done = 1} {print}' "$deck" > "$out/$job.inp"
 $mpiexec -n "$np" "$exe" "$out/$job.inp" -o "$out/whole" > "$out/whole.log" 2>&1 || { cat "$out/whole.log"; echo "FAIL: the whole run"; exit 1; }
 
 # interrupt HOW DIR: starts the job, waits for its second increment of step 2, interrupts it; sets rc
@@ -21,7 +24,7 @@ interrupt() {
   mkdir -p "$dir"
   $mpiexec -n "$np" "$exe" "$out/$job.inp" -o "$dir" > "$dir.log" 2>&1 &
   pid=$!
-  for _ in $(seq 1 6000); do grep -q "step 2 increment 2:" "$dir.log" 2> /dev/null && break; kill -0 $pid 2> /dev/null || break; sleep 0.01; done
+  for _ in $(seq 1 6000); do grep -q "$wait_for" "$dir.log" 2> /dev/null && break; kill -0 $pid 2> /dev/null || break; sleep 0.01; done
   if [ "$how" = stop ]; then
     kill -USR1 $pid 2> /dev/null
   else

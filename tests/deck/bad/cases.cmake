@@ -28,6 +28,7 @@ tsl_deck_bad(undefined_set undefined_set.inp "error: undefined_set.inp:23: undef
 tsl_deck_bad(undefined_surface undefined_surface.inp "error: undefined_surface.inp:24: undefined surface HOT")
 tsl_deck_bad(unexpected_data unexpected_data.inp "error: unexpected_data.inp:24: data line not expected here (after *END STEP)")
 tsl_deck_bad(unknown_element_type unknown_element_type.inp "error: unknown_element_type.inp:6: unknown element type CPE99T")
+tsl_deck_bad(restart_interval_negative restart_interval_negative.inp "error: restart_interval_negative.inp:18: *RESTART, NUMBER INTERVAL must not be negative (got -2)")
 tsl_deck_bad(mechanical_only_type mechanical_only_type.inp "error: mechanical_only_type.inp:6: unknown element type CPE6T: the dialect has no such coupled type (CalculiX's mechanical CPE6 is read with a temperature")
 tsl_deck_bad(unknown_keyword unknown_keyword.inp "error: unknown_keyword.inp:18: unsupported keyword *FROBNICATE")
 tsl_deck_bad(wrong_node_count wrong_node_count.inp "error: wrong_node_count.inp:8: element has 3 nodes but type CPE4T needs 4")
