@@ -65,12 +65,13 @@ PetscReal      TslProblemGetStepTime(TslProblem prob);
 PetscErrorCode TslProblemCommitState(TslProblem prob);
 /* Restart (src/physics/state.c, for src/solve/restart.c): the problem's committed state beyond the solution and the
  * step's tables (its contact nodes' pairing, history and slip, the nodal normals of 3D main surfaces, the plastic
- * points' state) as one block of bytes in this rank's own layout, so valid for a continuation on the same ranks and
- * partition only. *unsupported: why this model's state cannot be saved yet (NULL: it can). Unpack makes the block the
- * committed and the current state (as after an accepted increment) and marks the matrix pattern stale. */
-PetscErrorCode TslProblemStateSize(TslProblem prob, size_t *bytes, const char **unsupported);
+ * points' state, the surface-to-surface points, whose number varies with the cut) as one block of bytes in this rank's
+ * own layout, so valid for a continuation on the same ranks and partition only. Unpack reads nbytes of it back, the
+ * current state and the committed one as they were packed (an explicit increment's pairing search follows its commit),
+ * and marks the matrix pattern stale. */
+PetscErrorCode TslProblemStateSize(TslProblem prob, size_t *bytes);
 PetscErrorCode TslProblemStatePack(TslProblem prob, void *buf);
-PetscErrorCode TslProblemStateUnpack(TslProblem prob, const void *buf);
+PetscErrorCode TslProblemStateUnpack(TslProblem prob, const void *buf, size_t nbytes);
 /* A digest of this rank's layout (nodes with their ids and coordinates, dofs, elements, contact nodes), for checking that a
  * continuation has the model and partition its restart point was written with. */
 PetscErrorCode TslProblemLayoutDigest(TslProblem prob, uint64_t *digest);

@@ -1,6 +1,6 @@
-/* The problem's committed state for restart points (src/solve/restart.c): contact nodes, 3D main-surface normals
- * and plastic points, packed as bytes in this rank's layout, and a digest of that layout. */
-#include "problem_impl.h"
+/* The problem's state for restart points (src/solve/restart.c): contact nodes, 3D main-surface normals, plastic
+ * points and surface-to-surface points, packed as bytes in this rank's layout, and a digest of that layout. */
+#include "contact_s2s_impl.h"
 
 static void Put(char **at, const void *src, size_t n)
 {
@@ -8,22 +8,85 @@ static void Put(char **at, const void *src, size_t n)
   *at += n;
 }
 
-static void Take(const char **at, void *dst, size_t n)
+static PetscErrorCode Take(const char **at, const char *end, void *dst, size_t n)
 {
+  PetscFunctionBeginUser;
+  PetscCheck(*at + n <= end, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "the restart point's state of this rank is shorter than this model's");
   if (n) memcpy(dst, *at, n);
   *at += n;
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslProblemStateSize(TslProblem p, size_t *bytes, const char **unsupported)
+/* Surface-to-surface pairs: the points, current and committed (their number varies with the cut), each face's share
+ * of them and the accumulated slip */
+static size_t S2SSize(TslProblem p)
+{
+  TslContactS2S s = p->s2s;
+  if (!s) return 0;
+  return 2 * sizeof(PetscInt) + 4 * (size_t)s->nface * sizeof(PetscInt) + (size_t)(s->npt + s->npt_c) * sizeof(S2SPoint) + 2 * (size_t)p->nn * sizeof(PetscReal);
+}
+
+static void S2SPack(TslProblem p, char **at)
+{
+  TslContactS2S s = p->s2s;
+  if (!s) return;
+  Put(at, &s->npt, sizeof(PetscInt));
+  Put(at, &s->npt_c, sizeof(PetscInt));
+  for (PetscInt i = 0; i < s->nface; i++) {
+    const PetscInt f[4] = {s->face[i].first, s->face[i].npt, s->face[i].first_c, s->face[i].npt_c};
+    Put(at, f, sizeof(f));
+  }
+  Put(at, s->pt, (size_t)s->npt * sizeof(S2SPoint));
+  Put(at, s->pt_c, (size_t)s->npt_c * sizeof(S2SPoint));
+  Put(at, s->cslip, (size_t)p->nn * sizeof(PetscReal));
+  Put(at, s->cslip_c, (size_t)p->nn * sizeof(PetscReal));
+}
+
+static PetscErrorCode Grow(S2SPoint **pt, PetscInt *cap, PetscInt n)
+{
+  PetscFunctionBeginUser;
+  if (*cap < n) {
+    PetscCall(PetscFree(*pt));
+    PetscCall(PetscMalloc1(n, pt));
+    *cap = n;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+static PetscErrorCode S2SUnpack(TslProblem p, const char **at, const char *end)
+{
+  TslContactS2S s = p->s2s;
+  PetscInt      n[2];
+
+  PetscFunctionBeginUser;
+  if (!s) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(Take(at, end, n, sizeof(n)));
+  PetscCheck(n[0] >= 0 && n[1] >= 0, PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED, "the restart point's surface-to-surface state has negative counts");
+  for (PetscInt i = 0; i < s->nface; i++) {
+    PetscInt f[4];
+    PetscCall(Take(at, end, f, sizeof(f)));
+    PetscCheck(f[0] >= 0 && f[1] >= 0 && f[0] + f[1] <= n[0] && f[2] >= 0 && f[3] >= 0 && f[2] + f[3] <= n[1], PETSC_COMM_SELF, PETSC_ERR_FILE_UNEXPECTED,
+               "the restart point's surface-to-surface state has a face's points outside its list");
+    s->face[i].first = f[0], s->face[i].npt = f[1], s->face[i].first_c = f[2], s->face[i].npt_c = f[3];
+  }
+  PetscCall(Grow(&s->pt, &s->cap, n[0]));
+  PetscCall(Grow(&s->pt_c, &s->cap_c, n[1]));
+  s->npt = n[0], s->npt_c = n[1];
+  PetscCall(Take(at, end, s->pt, (size_t)n[0] * sizeof(S2SPoint)));
+  PetscCall(Take(at, end, s->pt_c, (size_t)n[1] * sizeof(S2SPoint)));
+  PetscCall(Take(at, end, s->cslip, (size_t)p->nn * sizeof(PetscReal)));
+  PetscCall(Take(at, end, s->cslip_c, (size_t)p->nn * sizeof(PetscReal)));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemStateSize(TslProblem p, size_t *bytes)
 {
   size_t n = p->ncnode * sizeof(TslContactNode) + p->npstate * sizeof(PetscReal);
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < p->ncsurf; k++)
     if (p->csurf[k].nnormal) n += 3 * p->nn * sizeof(PetscReal);
-  *bytes       = n;
-  *unsupported = NULL;
-  if (p->s2s) *unsupported = "surface-to-surface contact pairs (their points' state is not saved yet)";
+  *bytes = n + S2SSize(p);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -36,18 +99,20 @@ PetscErrorCode TslProblemStatePack(TslProblem p, void *buf)
   for (PetscInt k = 0; k < p->ncsurf; k++)
     if (p->csurf[k].nnormal) Put(&at, p->csurf[k].nnormal, 3 * p->nn * sizeof(PetscReal));
   Put(&at, p->pstate, p->npstate * sizeof(PetscReal));
+  S2SPack(p, &at);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslProblemStateUnpack(TslProblem p, const void *buf)
+PetscErrorCode TslProblemStateUnpack(TslProblem p, const void *buf, size_t nbytes)
 {
-  const char *at = (const char *)buf;
+  const char *at = (const char *)buf, *end = at + nbytes;
 
   PetscFunctionBeginUser;
-  Take(&at, p->cnode, p->ncnode * sizeof(TslContactNode));
+  PetscCall(Take(&at, end, p->cnode, p->ncnode * sizeof(TslContactNode)));
   for (PetscInt k = 0; k < p->ncsurf; k++)
-    if (p->csurf[k].nnormal) Take(&at, p->csurf[k].nnormal, 3 * p->nn * sizeof(PetscReal));
-  Take(&at, p->pstate, p->npstate * sizeof(PetscReal));
+    if (p->csurf[k].nnormal) PetscCall(Take(&at, end, p->csurf[k].nnormal, 3 * p->nn * sizeof(PetscReal)));
+  PetscCall(Take(&at, end, p->pstate, p->npstate * sizeof(PetscReal)));
+  PetscCall(S2SUnpack(p, &at, end));
   if (p->npstate) PetscCall(PetscArraycpy(p->pstate_new, p->pstate, p->npstate));
   /* the current state as written, not rolled back to the committed one: an explicit increment searches the pairing
    * after its commit (TslProblemContactExplicitIncrement), and the next increment starts from the searched one */

@@ -5,8 +5,8 @@
  * writing leaves the points before it valid. It holds
  *   header   the increment loop's variables (TslRestartLoop), the driver's sums, the output's frame and history
  *            row counts and its run identity, and each step's total time at its start;
- *   layout   one digest per rank of the rank's nodes, elements and contact nodes (the continuation must have the
- *            same model and partition);
+ *   layout   per rank: a digest of its nodes, elements and contact nodes (the continuation must have the same model
+ *            and partition), and the length of its state (surface-to-surface points vary in number);
  *   X, Xprev the solution at the point and the one before it (the extrapolation of the next increment's start);
  *   start_k  the solution at the start of each step k up to the point's (TslProblemSetStep reads the values reached
  *            there: ramps from them, FIXED holds them), replayed by the continuation step by step;
@@ -222,11 +222,9 @@ PetscBool TslRestartDue(const TslStep *step, PetscInt inc, PetscReal t_old, Pets
 PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char *why, const TslRestartExtra *extra)
 {
   const TslModel *m;
-  const char     *unsupported;
   size_t          bytes;
   PetscMPIInt     size, rank;
   PetscInt        nh, ns;
-  PetscBool       bad;
   char            tmp[PETSC_MAX_PATH_LEN + 8], path[PETSC_MAX_PATH_LEN];
   PetscViewer     vw;
   Vec             hv, dv, sv, cv, X;
@@ -238,16 +236,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
-  PetscCall(TslProblemStateSize(d->prob, &bytes, &unsupported));
-  bad = unsupported ? PETSC_TRUE : PETSC_FALSE;
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPIU_BOOL, MPI_LOR, d->comm));
-  if (bad) {
-    if (!d->rs_warned)
-      PetscCall(PetscPrintf(d->comm, "thermoslide: warning: no restart points are written for this model: %s\n",
-                            unsupported ? unsupported : "surface-to-surface contact pairs (their points' state is not saved yet)"));
-    d->rs_warned = PETSC_TRUE;
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
+  PetscCall(TslProblemStateSize(d->prob, &bytes));
   PetscCallMPI(MPI_Comm_size(d->comm, &size));
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
   PetscCall(PointPath(d, loop->step + 1, loop->inc, "", path, sizeof(path)));
@@ -292,8 +281,9 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     /* the output's counts are needed on rank 0 only; every rank takes part in nothing here */
   }
   PetscCall(TslProblemLayoutDigest(d->prob, &digest));
-  PetscCall(LocalVec(d->comm, 1, "layout", &dv));
-  PetscCall(VecSetValue(dv, rank, Bits(digest), INSERT_VALUES));
+  PetscCall(LocalVec(d->comm, 2, "layout", &dv));
+  PetscCall(VecSetValue(dv, 2 * rank, Bits(digest), INSERT_VALUES));
+  PetscCall(VecSetValue(dv, 2 * rank + 1, (PetscReal)((bytes + sizeof(PetscScalar) - 1) / sizeof(PetscScalar)), INSERT_VALUES));
   PetscCall(VecAssemblyBegin(dv));
   PetscCall(VecAssemblyEnd(dv));
   PetscCall(LocalVec(d->comm, (PetscInt)((bytes + sizeof(PetscScalar) - 1) / sizeof(PetscScalar)), "state", &sv));
@@ -388,7 +378,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
 /* What a continuation expects of a point: the header's length, the rank count, the model digest, the global lengths of
  * X and of the state */
 typedef struct {
-  PetscInt    nh, nx, nstate;
+  PetscInt    nh, nx;
   PetscMPIInt size;
   uint64_t    model;
 } Expect;
@@ -470,7 +460,7 @@ static int PointValid(const char *path, const Expect *e, char why[], size_t len,
     ok = -1;
     goto done;
   }
-  if (!HasDataset(f, "X", e->nx) || !HasDataset(f, "state", e->nstate) || !HasDataset(f, "layout", e->size)) {
+  if (!HasDataset(f, "X", e->nx) || !HasDataset(f, "layout", 2 * e->size)) {
     snprintf(why, len, "written for another mesh (its solution or contact state has another size than this deck's)");
     ok = -1;
     goto done;
@@ -514,7 +504,7 @@ done:
 
 /* Collective: every dataset of the point read and checked against its checksum, and this rank's layout against the
  * one written. *status: 1 sound, 0 corrupted (why), -1 another model or partition (why). */
-static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nextra, PetscInt nstate_local, int *status, char why[], size_t len)
+static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nextra, PetscInt *nstate_local, int *status, char why[], size_t len)
 {
   PetscViewer vw;
   Vec         cv, v, X;
@@ -541,8 +531,8 @@ static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, Pet
   PetscCall(VecDestroy(&cv));
   PetscCallMPI(MPI_Bcast(want, (PetscMPIInt)nck, MPI_UINT64_T, 0, d->comm));
   *status = 1;
-  /* the layout: this rank's digest against the one its rank wrote */
-  PetscCall(LocalVec(d->comm, 1, "layout", &v));
+  /* the layout: this rank's digest against the one its rank wrote, and the length of its state */
+  PetscCall(LocalVec(d->comm, 2, "layout", &v));
   PetscCall(VecLoad(v, vw));
   PetscCall(Checksum(v, &got));
   if (got != want[CK_LAYOUT]) *status = 0, which = "layout";
@@ -550,7 +540,9 @@ static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, Pet
     const PetscScalar *a;
     PetscCall(TslProblemLayoutDigest(d->prob, &digest));
     PetscCall(VecGetArrayRead(v, &a));
-    bad = (PetscBool)(Unbits(PetscRealPart(a[0])) != digest);
+    bad           = (PetscBool)(Unbits(PetscRealPart(a[0])) != digest);
+    *nstate_local = (PetscInt)PetscRealPart(a[1]);
+    bad           = (PetscBool)(bad || *nstate_local < 0);
     PetscCall(VecRestoreArrayRead(v, &a));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPIU_BOOL, MPI_LOR, d->comm));
     if (bad) {
@@ -561,7 +553,7 @@ static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, Pet
   PetscCall(VecDestroy(&v));
   for (PetscInt k = CK_STATE; k < nck && *status == 1; k++) {
     char        name[32];
-    PetscInt    n = k == CK_STATE ? nstate_local : nx;
+    PetscInt    n = k == CK_STATE ? *nstate_local : nx;
     const PetscInt j = k - (CK_START + step + 1); /* an extra dataset's index */
     if (k == CK_XPREV && !xprev) continue;
     if (k == CK_STATE) PetscCall(PetscStrncpy(name, "state", sizeof(name)));
@@ -644,7 +636,7 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   char            msg[PETSC_MAX_PATH_LEN + 400] = "";
   int             found                         = 0;
   Expect          ex;
-  PetscInt        np = 0, nstate_local, (*pts)[2] = NULL;
+  PetscInt        np = 0, nstate_local = 0, (*pts)[2] = NULL;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
@@ -657,14 +649,9 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   PetscCallMPI(MPI_Comm_size(d->comm, &size));
   nh = HeaderLength(m->nstep);
   {
-    Vec    X;
-    size_t bytes;
-    const char *unsupported;
+    Vec X;
     PetscCall(TslProblemGetSolution(d->prob, &X));
     PetscCall(VecGetSize(X, &ex.nx));
-    PetscCall(TslProblemStateSize(d->prob, &bytes, &unsupported));
-    nstate_local = (PetscInt)((bytes + sizeof(PetscScalar) - 1) / sizeof(PetscScalar));
-    PetscCallMPI(MPI_Allreduce(&nstate_local, &ex.nstate, 1, MPIU_INT, MPI_SUM, d->comm));
     ex.nh   = nh;
     ex.size = size;
     PetscCall(TslProblemModelDigest(d->prob, &ex.model));
@@ -708,8 +695,8 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
     PetscCallMPI(MPI_Bcast(&st, 1, MPI_INT, 0, d->comm));
     PetscCallMPI(MPI_Bcast(hs, 3, MPIU_INT, 0, d->comm));
     PetscCallMPI(MPI_Bcast(why, sizeof(why), MPI_CHAR, 0, d->comm));
-    if (st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], nstate_local, &st, why, sizeof(why)));
-    if (st == 1) found = 1, d->rs_nextra = hs[2];
+    if (st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], &nstate_local, &st, why, sizeof(why)));
+    if (st == 1) found = 1, d->rs_nextra = hs[2], d->rs_nstate = nstate_local;
     else if (st < 0) {
       snprintf(msg, sizeof(msg), "restart point %s was %s", d->rs_point, why);
       found = -1;
@@ -810,19 +797,17 @@ PetscErrorCode TslRestartLoad(Driver *d, TslRestartLoop *loop)
 {
   PetscViewer  vw;
   Vec          X, sv;
-  size_t       bytes;
-  const char  *unsupported;
   PetscScalar *a;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetSolution(d->prob, &X));
-  PetscCall(TslProblemStateSize(d->prob, &bytes, &unsupported));
   PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
-  /* the layout and the checksums were verified when the point was chosen (TslRestartSetUp) */
-  PetscCall(LocalVec(d->comm, (PetscInt)((bytes + sizeof(PetscScalar) - 1) / sizeof(PetscScalar)), "state", &sv));
+  /* the layout and the checksums were verified when the point was chosen (TslRestartSetUp), this rank's state length
+   * read there */
+  PetscCall(LocalVec(d->comm, d->rs_nstate, "state", &sv));
   PetscCall(VecLoad(sv, vw));
   PetscCall(VecGetArray(sv, &a));
-  PetscCall(TslProblemStateUnpack(d->prob, a));
+  PetscCall(TslProblemStateUnpack(d->prob, a, sizeof(PetscScalar) * (size_t)d->rs_nstate));
   PetscCall(VecRestoreArray(sv, &a));
   PetscCall(VecDestroy(&sv));
   PetscCall(LoadNamed(X, "X", vw));

@@ -139,12 +139,11 @@ typedef struct {
   PetscInt       rs_count;
   double         rs_seconds, rs_bytes;
   char           rs_last[PETSC_MAX_PATH_LEN]; /* the last point written (OVERLAY removes it when the next is in place) */
-  PetscBool      rs_warned;
   PetscBool      rs_resume;
   char           rs_point[PETSC_MAX_PATH_LEN], rs_src_h5[PETSC_MAX_PATH_LEN], rs_src_csv[PETSC_MAX_PATH_LEN];
   TslRestartLoop rs_loop;
   PetscReal      rs_sums[24];  /* the driver's sums at the point (restart.c, RestoreSums) */
-  PetscInt       rs_nframe, rs_nrow, rs_fell_back, rs_nextra;
+  PetscInt       rs_nframe, rs_nrow, rs_fell_back, rs_nextra, rs_nstate; /* the point's counts; this rank's state length (reals) */
   uint64_t       rs_run_id;
 } Driver;
 
