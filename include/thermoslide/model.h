@@ -512,6 +512,14 @@ typedef struct {
   PetscInt nstep;
   TslStep *steps;
 
+  /* *RESTART, READ (a restart deck run with -oldjob DIR/JOB: docs/running.md "Restart"): the old job's model and
+   * steps 1..restart_read_step come from its deck copy, then this deck's steps; the job continues from the old job's
+   * point of that step's increment restart_read_inc (0: no *RESTART, READ), ending the step there with END STEP */
+  PetscInt  restart_read_step, restart_read_inc;
+  PetscBool restart_read_end_step;
+  char      restart_read_job[PETSC_MAX_PATH_LEN]; /* DIR/JOB as -oldjob gave it */
+  TslLoc    restart_read_loc;
+
   /* Filled by the mesh module on distribution (NULL / 0 in the model read by rank 0):
    * local nodes are ordered owned first, then ghosts. */
   PetscInt  nnode_global, nelem_global;
@@ -566,6 +574,10 @@ PetscErrorCode TslModelSubset(const TslModel *model, PetscInt ne, const PetscInt
 /* The deck reader (rank 0 only). Reads path and its *INCLUDEs, fills a model and checks it
  * (TslModelCheck). User errors are PETSC_ERR_USER_INPUT with "file:line: message". */
 PetscErrorCode TslDeckRead(const char *path, TslModel **model);
+/* The same, with the deck as it was read (*INCLUDEs in place, comments and blank lines left out, a *RESTART, READ
+ * replaced by the old job's deck up to its step) in *flat, to free with PetscFree: the deck copy a job with restart
+ * points keeps beside them (<job>.restart.inp), from which a restart deck takes the model. */
+PetscErrorCode TslDeckReadFlat(const char *path, TslModel **model, char **flat);
 
 /* Consistency checks that need the whole model: undefined sets/surfaces/materials/amplitudes,
  * elements without a section, missing material properties, wrong node counts, duplicate ids,

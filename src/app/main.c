@@ -102,6 +102,35 @@ static int MakeDirectories(const char *path)
   return 0;
 }
 
+/* Rank 0: a deck with *RESTART, WRITE keeps a copy of itself as read beside its points, DIR/JOB.restart.inp, from
+ * which a restart deck (*RESTART, READ with -oldjob DIR/JOB) takes the model and the steps it continues (written
+ * under a scratch name and renamed: a crash leaves the earlier copy whole). */
+static PetscErrorCode KeepDeckCopy(const TslModel *m, const char *flat, const char *dir, const char *job)
+{
+  PetscBool writes = PETSC_FALSE;
+  char      path[PETSC_MAX_PATH_LEN + 300], tmp[PETSC_MAX_PATH_LEN + 310];
+  FILE     *fp;
+  size_t    n;
+  int       ok;
+
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < m->nstep; k++) writes = (PetscBool)(writes || m->steps[k].restart_frequency || m->steps[k].restart_interval > 0);
+  if (!writes || !flat) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%s/%s.restart.inp", dir, job));
+  PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
+  fp = fopen(tmp, "w");
+  n  = strlen(flat);
+  ok = fp && fwrite(flat, 1, n, fp) == n;
+  if (fp && fclose(fp)) ok = 0;
+  if (ok && rename(tmp, path)) ok = 0;
+  if (!ok) {
+    fprintf(stderr, "thermoslide: error: cannot write the deck copy %s: %s\n", path, strerror(errno));
+    (void)remove(tmp);
+    PetscFunctionReturn(PETSC_ERR_FILE_WRITE);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* One attempt at the job: read, distribute, set up, run. *margin_rerun > 0 when it stopped because a contact
  * node left its rank's held region of the main surface and the job is to restart with that margin. */
 static PetscErrorCode Attempt(const char *deck, const char *dir, const char *job, PetscReal *margin_rerun)
@@ -117,7 +146,8 @@ static PetscErrorCode Attempt(const char *deck, const char *dir, const char *job
   PetscCallMPI(MPI_Comm_rank(comm, &rank));
   PetscCall(TslPhaseBegin(TSL_PHASE_READ));
   if (rank == 0) {
-    ierr = TslDeckRead(deck, &global);
+    char *flat = NULL;
+    ierr       = TslDeckReadFlat(deck, &global, &flat);
     if (!ierr) ierr = TslModelCheckSupports(global);
     if (!ierr) {
       int e = MakeDirectories(dir);
@@ -129,6 +159,8 @@ static PetscErrorCode Attempt(const char *deck, const char *dir, const char *job
         ierr = PETSC_ERR_FILE_OPEN;
       }
     }
+    if (!ierr) ierr = KeepDeckCopy(global, flat, dir, job);
+    PetscCall(PetscFree(flat));
     if (ierr) PetscCall(TslModelDestroy(&global));
   }
   TslCallCollective(comm, ierr);
@@ -218,7 +250,7 @@ static PetscBool IsDeck(int argc, char **argv, int i)
   (void)argc;
   if (argv[i][0] == '-') return PETSC_FALSE;
   /* options whose value is a path */
-  if (!strcmp(prev, "-o") || !strcmp(prev, "-tsl_output_dir") || !strcmp(prev, "-options_file")) return PETSC_FALSE;
+  if (!strcmp(prev, "-o") || !strcmp(prev, "-tsl_output_dir") || !strcmp(prev, "-options_file") || !strcmp(prev, "-oldjob")) return PETSC_FALSE;
   if (n > 4 && !strcasecmp(argv[i] + n - 4, ".inp")) return PETSC_TRUE;
   return (PetscBool)(prev[0] != '-' || !strcmp(prev, "-help"));
 }

@@ -14,6 +14,8 @@
 #include "deck_impl.h"
 #include <thermoslide/element.h>
 #include <ctype.h>
+#include <dirent.h>
+#include <unistd.h>
 #include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,6 +38,15 @@ typedef struct {
   PetscInt  depth;
   char    **texts; /* every file's text, freed at the end */
   PetscInt  ntext;
+
+  /* the deck as read (TslDeckReadFlat): every line RawNext takes from a file but *INCLUDE lines; flat_kw where the last
+   * keyword line starts in it */
+  PetscBool record;
+  char     *flat;
+  size_t    flatlen, flatcap, flat_kw;
+  /* *RESTART, READ: the old job's deck copy is read as an include at frame depth restart_depth - 1, up to the end of
+   * its step restart_stop (1-based; 0: none pending) */
+  PetscInt restart_stop, restart_depth;
 
   /* raw line pushback */
   PetscBool back;
@@ -517,7 +528,7 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
   *got = PETSC_FALSE;
   while (d->depth > 0) {
     DeckFrame *f = &d->frame[d->depth - 1];
-    char      *line, *nl;
+    char      *line, *nl, *orig;
     if (f->pos >= f->len) {
       d->depth--;
       continue;
@@ -532,6 +543,7 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
     f->line++;
     line = Trim(line);
     if (!line[0] || (line[0] == '*' && line[1] == '*')) continue;
+    orig            = line;
     d->rawloc.file  = f->file;
     d->rawloc.line  = f->line;
     d->raw_verbatim = d->verbatim;
@@ -558,6 +570,15 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
         memcpy(d->pval, pval, sizeof(pval));
         continue;
       }
+    }
+    if (d->record) { /* the line as in its file, before any <name> substitution */
+      const size_t n = strlen(orig);
+      if (orig[0] == '*') d->flat_kw = d->flatlen;
+      PetscCall(BufReserve(&d->flat, &d->flatcap, d->flatlen + n + 2));
+      memcpy(d->flat + d->flatlen, orig, n);
+      d->flatlen += n;
+      d->flat[d->flatlen++] = '\n';
+      d->flat[d->flatlen]   = 0;
     }
     d->raw = line;
     d->loc = d->rawloc;
@@ -2377,6 +2398,11 @@ static PetscErrorCode KwEndStep(Deck *d, const DeckKeyword *kw)
   PetscFunctionBeginUser;
   (void)kw;
   d->step = -1;
+  if (d->restart_stop && d->m->nstep == d->restart_stop && d->depth >= d->restart_depth) {
+    /* *RESTART, READ: the old job's deck ends here for this job; the restart deck's own steps follow */
+    for (PetscInt k = d->restart_depth - 1; k < d->depth; k++) d->frame[k].pos = d->frame[k].len;
+    d->restart_stop = 0;
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -3293,19 +3319,88 @@ static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *RESTART, READ, STEP=s [, INC=i] [, END STEP] (a restart deck, run with -oldjob DIR/JOB): first in the deck (after a
+ * *HEADING), it reads the old job's deck copy DIR/JOB.restart.inp in its place, up to the end of its step s; the job
+ * continues from the old job's point of step s, increment i (default: the latest written in that step), then runs
+ * this deck's steps (src/solve/restart.c; docs/running.md "Restart"). */
+static PetscErrorCode RestartRead(Deck *d)
+{
+  TslModel   *m   = d->m;
+  PetscInt    s   = 0, inc = 0;
+  char        job[PETSC_MAX_PATH_LEN] = "", path[PETSC_MAX_PATH_LEN + 64], pfx[PETSC_MAX_PATH_LEN + 64], dir[PETSC_MAX_PATH_LEN];
+  const char *slash, *base;
+  PetscBool   set;
+  DIR        *dp;
+
+  PetscFunctionBeginUser;
+  USER_CHECK(!m->nnode && !m->nelem && !m->nmaterial && d->step < 0 && !m->nstep && !m->restart_read_step, LOC_FMT
+             "*RESTART, READ comes first in a restart deck (after *HEADING), before any model data or step: the model is the old job's",
+             KLOC(d));
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-oldjob", job, sizeof(job), &set));
+  USER_CHECK(set && job[0], LOC_FMT "*RESTART, READ continues an old job: name it with -oldjob DIR/JOB (its output directory and job name)", KLOC(d));
+  USER_CHECK(Param(d, "STEP"), LOC_FMT "*RESTART, READ needs STEP= (the old job's step to continue from)", KLOC(d));
+  PetscCall(ParamInt(d, "STEP", &s));
+  PetscCall(ParamInt(d, "INC", &inc));
+  USER_CHECK(s >= 1 && inc >= 0, LOC_FMT "*RESTART, READ: STEP must be 1 or more and INC not negative (got STEP=%" PetscInt_FMT ", INC=%" PetscInt_FMT ")", KLOC(d), s, inc);
+  slash = strrchr(job, '/');
+  base  = slash ? slash + 1 : job;
+  USER_CHECK(base[0], LOC_FMT "-oldjob %s names a directory, not a job: give DIR/JOB", KLOC(d), job);
+  if (slash) {
+    PetscCall(PetscStrncpy(dir, job, (size_t)(slash - job) + 1));
+    if (!dir[0]) PetscCall(PetscStrncpy(dir, "/", sizeof(dir)));
+  } else PetscCall(PetscStrncpy(dir, ".", sizeof(dir)));
+  /* the point: the one named, or the latest of the step */
+  PetscCall(PetscSNPrintf(pfx, sizeof(pfx), "%s.restart.%" PetscInt_FMT ".", base, s));
+  {
+    char     have[256] = "";
+    size_t   nh        = 0;
+    PetscInt found = -1, latest = -1, incs[32], ninc = 0;
+    dp             = opendir(dir);
+    USER_CHECK(dp, LOC_FMT "*RESTART, READ: cannot open the old job's directory %s: %s", KLOC(d), dir, strerror(errno));
+    for (struct dirent *e; (e = readdir(dp));) {
+      long long i;
+      int       n = 0;
+      if (strncmp(e->d_name, pfx, strlen(pfx)) || sscanf(e->d_name + strlen(pfx), "%lld.h5%n", &i, &n) != 1 || e->d_name[strlen(pfx) + n]) continue;
+      if ((PetscInt)i == inc) found = inc;
+      latest = PetscMax(latest, (PetscInt)i);
+      if (ninc < 32) incs[ninc++] = (PetscInt)i;
+    }
+    closedir(dp);
+    PetscCall(PetscSortInt(ninc, incs)); /* the first 32 the directory lists, in order */
+    for (PetscInt k = 0; k < ninc; k++) nh += (size_t)snprintf(have + nh, sizeof(have) - nh, "%s%" PetscInt_FMT, k ? ", " : "", incs[k]);
+    if (!inc) found = inc = latest;
+    USER_CHECK(found >= 0 && inc >= 0, LOC_FMT "*RESTART, READ, STEP=%" PetscInt_FMT "%s%s: the old job %s wrote no restart point there (%s%s)", KLOC(d), s,
+               Param(d, "INC") ? ", INC=" : "", Param(d, "INC") ? Param(d, "INC") : "", job, nh ? "its points of that step: increments " : "none in that step", have);
+  }
+  PetscCall(PetscSNPrintf(path, sizeof(path), "%s.restart.inp", job));
+  USER_CHECK(!access(path, R_OK), LOC_FMT "*RESTART, READ: the old job's deck copy %s is not there (a job keeps one beside its points when its deck has *RESTART, WRITE)", KLOC(d), path);
+  m->restart_read_step     = s;
+  m->restart_read_inc      = inc;
+  m->restart_read_end_step = (PetscBool)(Param(d, "END STEP") != NULL);
+  m->restart_read_loc      = d->kwloc;
+  PetscCall(PetscStrncpy(m->restart_read_job, job, sizeof(m->restart_read_job)));
+  if (d->record) d->flatlen = d->flat_kw, d->flat[d->flatlen] = 0; /* this job's copy holds the old deck in its place */
+  PetscCall(DeckOpen(d, path, PETSC_TRUE));
+  d->restart_stop  = s;
+  d->restart_depth = d->depth;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* *RESTART, WRITE [, FREQUENCY=n] [, NUMBER INTERVAL=n] [, TIME MARKS=YES|NO] [, OVERLAY]: restart points every n
  * increments of this step and the ones after (until the next *RESTART), at n times evenly spaced over each step, and
  * at each step's end (src/solve/restart.c, TslRestartDue; docs/running.md "Restart"). Neither FREQUENCY nor NUMBER
  * INTERVAL: the dialect's defaults, every increment in implicit steps (Abaqus/Standard's FREQUENCY=1), the step's end
- * in explicit ones (Abaqus/Explicit's NUMBER INTERVAL=1). Model data: from the first step on. READ: the dialect's
- * continuation by a new deck, not here: the job continues with -tsl_restart (the same deck) instead. */
+ * in explicit ones (Abaqus/Explicit's NUMBER INTERVAL=1). Model data: from the first step on. READ: RestartRead. */
 static PetscErrorCode KwRestart(Deck *d, const DeckKeyword *kw)
 {
   PetscInt freq = -1, nint = 0;
 
   PetscFunctionBeginUser;
   (void)kw;
-  USER_CHECK(!Param(d, "READ"), LOC_FMT "*RESTART, READ (a continuation deck) is not supported: run the original deck again with -tsl_restart, which continues from its latest restart point (docs/running.md, \"Restart\")", KLOC(d));
+  if (Param(d, "READ")) {
+    PetscCall(RestartRead(d));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   USER_CHECK(Param(d, "WRITE"), LOC_FMT "*RESTART needs WRITE (or READ)", KLOC(d));
   PetscCall(ParamInt(d, "FREQUENCY", &freq));
   USER_CHECK(!Param(d, "FREQUENCY") || freq >= 0, LOC_FMT "*RESTART, FREQUENCY must not be negative (got %" PetscInt_FMT ")", KLOC(d), freq);
@@ -3849,6 +3944,9 @@ static PetscErrorCode DeckParse(Deck *d, const char *path)
     TslLoc l = d->m->steps[d->step].loc;
     USER_ERR(LOC_FMT "missing *END STEP: the deck ends inside this step", TSL_LOC_ARGS(d->m, l));
   }
+  if (d->restart_stop)
+    USER_ERR(LOC_FMT "*RESTART, READ, STEP=%" PetscInt_FMT ": the old job's deck has %" PetscInt_FMT " steps", TSL_LOC_ARGS(d->m, d->m->restart_read_loc),
+             d->restart_stop, d->m->nstep);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -3990,12 +4088,21 @@ static PetscErrorCode DeckFree(Deck *d)
 
 PetscErrorCode TslDeckRead(const char *path, TslModel **model)
 {
+  PetscFunctionBeginUser;
+  PetscCall(TslDeckReadFlat(path, model, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslDeckReadFlat(const char *path, TslModel **model, char **flat)
+{
   Deck           d;
   PetscErrorCode ierr;
 
   PetscFunctionBeginUser;
   *model = NULL;
+  if (flat) *flat = NULL;
   PetscCall(PetscMemzero(&d, sizeof(d)));
+  d.record              = (PetscBool)(flat != NULL);
   d.step                = -1;
   d.material            = -1;
   d.interaction         = -1;
@@ -4014,7 +4121,9 @@ PetscErrorCode TslDeckRead(const char *path, TslModel **model)
   if (!ierr) ierr = TslModelCheck(d.m);
   PetscCall(DeckFree(&d));
   if (ierr) PetscCall(TslModelDestroy(&d.m));
+  if (ierr) PetscCall(PetscFree(d.flat));
   PetscCall(ierr);
   *model = d.m;
+  if (flat) *flat = d.flat;
   PetscFunctionReturn(PETSC_SUCCESS);
 }

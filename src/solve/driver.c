@@ -909,11 +909,14 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     t = L.t, dt = L.dt, inc = L.inc, its_prev = L.its_prev, cutbacks = L.cutbacks, *total_time = L.total;
     d->h_prev   = L.h_prev;
     frames.next = L.frames_next;
-    if (d->done_step == s + 1) PetscCall(TslProblemSetTime(d->prob, d->done_step_time, d->done_dt, d->done_time));
+    /* the problem's time as the point's increment left it (its start plus its length, not the loop's time snapped to
+     * the period: the next step holds its ramped values as they were reached) */
+    if (d->done_step == s + 1) PetscCall(TslProblemSetTime(d->prob, d->rs_ptime, d->done_dt, d->done_time));
     if (d->rs_fell_back && !d->fell_back) {
       PetscBool switched;
       PetscCall(FallBackToDirect(d, X, s, inc, "the run before the restart point had switched to the direct solver", &switched));
     }
+    PetscCall(TslRestartEndStep(d, s, &t, step->period));
   }
   while (t < step->period - eps) {
     SNESConvergedReason reason;

@@ -790,6 +790,7 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
     TslRestartLoop L;
     PetscCall(Resume(&x, &L, &h_prev, &t_hist));
     t = L.t, inc = L.inc, *total_time = L.total, frames.next = L.frames_next;
+    PetscCall(TslRestartEndStep(d, s, &t, x.step->period));
   }
   wall0   = MPI_Wtime();
   PetscCall(PetscPrintf(d->comm, "  about %.0f increments; frames every %g\n", (double)PetscCeilReal((x.step->period - t) / x.dt), (double)frames.dt));

@@ -26,7 +26,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#define RS_VERSION 3
+#define RS_VERSION 4
 enum {
   H_VERSION = 0,
   H_NRANKS,
@@ -47,6 +47,7 @@ enum {
   H_HAS_XPREV,
   H_MODEL,  /* TslProblemModelDigest: materials, sections, interactions */
   H_NEXTRA, /* the procedure's own datasets (TslRestartExtra): its vectors and its reals, 0 when none */
+  H_PTIME,  /* the problem's step time as set (the last increment's start plus its length: the period to a rounding) */
   H_SUMS,
   H_TSTART = H_SUMS + 24 /* then 2 per step: total time at its start, step time the step before ended at */
 };
@@ -274,6 +275,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     h[H_HAS_XPREV] = loop->h_prev > 0 && d->Xprev ? 1 : 0;
     h[H_MODEL]     = Bits(model);
     h[H_NEXTRA]    = (PetscReal)nextra;
+    h[H_PTIME]     = TslProblemGetStepTime(d->prob);
     SaveSums(d, &h[H_SUMS]);
     for (PetscInt k = 0; k < 2 * ns; k++) h[H_TSTART + k] = d->rs_tstart[k];
     PetscCall(VecRestoreArray(hv, &h));
@@ -381,6 +383,7 @@ typedef struct {
   PetscInt    nh, nx;
   PetscMPIInt size;
   uint64_t    model;
+  PetscInt    any_steps; /* > 0: a point of another deck with at least this many steps (-oldjob), its header of any length */
 } Expect;
 
 /* Rank 0, HDF5 quiet: whether dataset name of f is there with n entries */
@@ -405,8 +408,8 @@ static PetscBool HasDataset(hid_t f, const char *name, PetscInt n)
 /* Rank 0: whether path is a complete point for this job (1), one to pass over for an earlier one (0: incomplete,
  * truncated, unreadable) or one that cannot be continued with this deck and rank count at all (-1: another rank count,
  * model or mesh); the reason in why, the point's step, whether it holds Xprev and its extra datasets in h_step,
- * h_xprev, h_nextra. */
-static int PointValid(const char *path, const Expect *e, char why[], size_t len, PetscInt *h_step, PetscInt *h_xprev, PetscInt *h_nextra)
+ * h_xprev, h_nextra, its header's length in h_len. */
+static int PointValid(const char *path, const Expect *e, char why[], size_t len, PetscInt *h_step, PetscInt *h_xprev, PetscInt *h_nextra, PetscInt *h_len)
 {
   H5E_auto2_t efunc;
   void       *edata;
@@ -429,7 +432,8 @@ static int PointValid(const char *path, const Expect *e, char why[], size_t len,
     goto done;
   }
   sp = H5Dget_space(ds);
-  if (sp < 0 || H5Sget_simple_extent_ndims(sp) < 1 || H5Sget_simple_extent_dims(sp, dims, NULL) < 0 || (PetscInt)dims[0] != e->nh) {
+  if (sp < 0 || H5Sget_simple_extent_ndims(sp) < 1 || H5Sget_simple_extent_dims(sp, dims, NULL) < 0 ||
+      (e->any_steps ? (PetscInt)dims[0] < HeaderLength(e->any_steps) : (PetscInt)dims[0] != e->nh)) {
     snprintf(why, len, "written for a deck of another number of steps");
     ok = -1;
     goto done;
@@ -465,10 +469,11 @@ static int PointValid(const char *path, const Expect *e, char why[], size_t len,
     ok = -1;
     goto done;
   }
+  *h_len    = (PetscInt)dims[0];
   *h_step   = (PetscInt)h[H_STEP];
   *h_xprev  = h[H_HAS_XPREV] > 0;
   *h_nextra = (PetscInt)h[H_NEXTRA];
-  if (*h_step < 0 || (PetscInt)(2 * *h_step + H_TSTART) >= e->nh || *h_nextra < 0 || *h_nextra > TSL_RESTART_MAXVEC + 1 ||
+  if (*h_step < 0 || (PetscInt)(2 * *h_step + H_TSTART) >= *h_len || *h_nextra < 0 || *h_nextra > TSL_RESTART_MAXVEC + 1 ||
       !HasDataset(f, "checksum", CK_START + *h_step + 1 + *h_nextra) || (*h_xprev && !HasDataset(f, "Xprev", e->nx))) {
     snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
     goto done;
@@ -579,7 +584,8 @@ static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, Pet
 
 /* Rank 0: the earlier run's output (results and history) with this run id: the file of a run killed (.part,
  * renamed here so that this run's output does not overwrite it), of a run stopped (.h5, or .failed.h5 beside
- * earlier results), or the one an earlier continuation moved aside. */
+ * earlier results), or the one an earlier continuation moved aside. readonly (another job's output, -oldjob): a
+ * killed run's files are read where they are. */
 static PetscBool RunId(const char *path, uint64_t *id)
 {
   H5E_auto2_t efunc;
@@ -602,7 +608,7 @@ static PetscBool RunId(const char *path, uint64_t *id)
   return ok;
 }
 
-static int FindOutput(Driver *d, uint64_t run_id, char h5[], char csv[], size_t len)
+static int FindOutput(const char *dir, const char *job, PetscBool readonly, uint64_t run_id, char h5[], char csv[], size_t len)
 {
   const char *tags[][2] = {
     {".interrupted.h5", ".interrupted.csv"},
@@ -610,16 +616,16 @@ static int FindOutput(Driver *d, uint64_t run_id, char h5[], char csv[], size_t 
     {".failed.h5",      ".failed.csv"     },
     {".h5",             ".csv"            }
   };
-  const char *sep = d->rs_dir[0] ? "/" : "";
+  const char *sep = dir[0] ? "/" : "";
   for (size_t k = 0; k < sizeof(tags) / sizeof(tags[0]); k++) {
     uint64_t id;
-    if (snprintf(h5, len, "%s%s%s%s", d->rs_dir, sep, d->rs_job, tags[k][0]) >= (int)len) return ENAMETOOLONG;
-    if (snprintf(csv, len, "%s%s%s%s", d->rs_dir, sep, d->rs_job, tags[k][1]) >= (int)len) return ENAMETOOLONG;
+    if (snprintf(h5, len, "%s%s%s%s", dir, sep, job, tags[k][0]) >= (int)len) return ENAMETOOLONG;
+    if (snprintf(csv, len, "%s%s%s%s", dir, sep, job, tags[k][1]) >= (int)len) return ENAMETOOLONG;
     if (!RunId(h5, &id) || id != run_id) continue;
-    if (k == 1) { /* a killed run's files: moved aside, as this run's .part names are about to be created */
+    if (k == 1 && !readonly) { /* a killed run's files: moved aside, as this run's .part names are about to be created */
       char to_h5[PETSC_MAX_PATH_LEN], to_csv[PETSC_MAX_PATH_LEN];
-      if (snprintf(to_h5, sizeof(to_h5), "%s%s%s%s", d->rs_dir, sep, d->rs_job, tags[0][0]) >= (int)sizeof(to_h5)) return ENAMETOOLONG;
-      if (snprintf(to_csv, sizeof(to_csv), "%s%s%s%s", d->rs_dir, sep, d->rs_job, tags[0][1]) >= (int)sizeof(to_csv)) return ENAMETOOLONG;
+      if (snprintf(to_h5, sizeof(to_h5), "%s%s%s%s", dir, sep, job, tags[0][0]) >= (int)sizeof(to_h5)) return ENAMETOOLONG;
+      if (snprintf(to_csv, sizeof(to_csv), "%s%s%s%s", dir, sep, job, tags[0][1]) >= (int)sizeof(to_csv)) return ENAMETOOLONG;
       if (rename(h5, to_h5) || rename(csv, to_csv)) return errno ? errno : EIO;
       if (snprintf(h5, len, "%s", to_h5) >= (int)len || snprintf(csv, len, "%s", to_csv) >= (int)len) return ENAMETOOLONG;
     }
@@ -636,14 +642,27 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   char            msg[PETSC_MAX_PATH_LEN + 400] = "";
   int             found                         = 0;
   Expect          ex;
-  PetscInt        np = 0, nstate_local = 0, (*pts)[2] = NULL;
+  PetscInt        np = 0, nstate_local = 0, (*pts)[2] = NULL, nh_file = 0;
+  char            odir[PETSC_MAX_PATH_LEN] = "", ojob[256] = "", where[PETSC_MAX_PATH_LEN + 64] = "";
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
   PetscCall(PetscStrncpy(d->rs_dir, dir ? dir : "", sizeof(d->rs_dir)));
   PetscCall(PetscStrncpy(d->rs_job, jobname, sizeof(d->rs_job)));
   PetscCall(PetscCalloc2(m->nstep, &d->rs_xstart, 2 * m->nstep, &d->rs_tstart));
-  /* d->rs_resume: -tsl_restart, read with the implicit procedure's options (driver.c) */
+  /* d->rs_resume: -tsl_restart, read with the implicit procedure's options (driver.c), which continues this job's own
+   * points; else a restart deck (*RESTART, READ with -oldjob) continues the old job's point it names */
+  if (!d->rs_resume && m->restart_read_step) {
+    const char *slash = strrchr(m->restart_read_job, '/');
+    char        loc[PETSC_MAX_PATH_LEN];
+    d->rs_resume   = PETSC_TRUE;
+    d->rs_oldjob   = PETSC_TRUE;
+    d->rs_end_step = m->restart_read_end_step;
+    if (slash) PetscCall(PetscStrncpy(odir, m->restart_read_job, PetscMin(sizeof(odir), (size_t)(slash - m->restart_read_job) + 1)));
+    if (slash && !odir[0]) PetscCall(PetscStrncpy(odir, "/", sizeof(odir)));
+    PetscCall(PetscStrncpy(ojob, slash ? slash + 1 : m->restart_read_job, sizeof(ojob)));
+    PetscCall(PetscSNPrintf(where, sizeof(where), "%s: *RESTART, READ: ", TslLocString(m, m->restart_read_loc, loc, sizeof(loc))));
+  }
   if (!d->rs_resume) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
   PetscCallMPI(MPI_Comm_size(d->comm, &size));
@@ -652,11 +671,16 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
     Vec X;
     PetscCall(TslProblemGetSolution(d->prob, &X));
     PetscCall(VecGetSize(X, &ex.nx));
-    ex.nh   = nh;
-    ex.size = size;
+    ex.nh        = nh;
+    ex.size      = size;
+    ex.any_steps = d->rs_oldjob ? m->restart_read_step : 0;
     PetscCall(TslProblemModelDigest(d->prob, &ex.model));
   }
-  if (!rank) {
+  if (d->rs_oldjob) { /* the one point the deck names (its existence checked when the deck was read) */
+    np  = 1;
+    pts = malloc(sizeof(*pts));
+    pts[0][0] = m->restart_read_step, pts[0][1] = m->restart_read_inc;
+  } else if (!rank) {
     /* the points of this job, latest first */
     DIR           *dp = opendir(d->rs_dir[0] ? d->rs_dir : ".");
     struct dirent *e;
@@ -682,23 +706,27 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
           pts[a][0] = pts[b][0], pts[a][1] = pts[b][1], pts[b][0] = t0, pts[b][1] = t1;
         }
   }
-  PetscCallMPI(MPI_Bcast(&np, 1, MPIU_INT, 0, d->comm));
-  if (rank) pts = malloc(sizeof(*pts) * (np ? np : 1));
-  if (np) PetscCallMPI(MPI_Bcast(pts, (PetscMPIInt)(2 * np), MPIU_INT, 0, d->comm));
+  if (!d->rs_oldjob) {
+    PetscCallMPI(MPI_Bcast(&np, 1, MPIU_INT, 0, d->comm));
+    if (rank) pts = malloc(sizeof(*pts) * (np ? np : 1));
+    if (np) PetscCallMPI(MPI_Bcast(pts, (PetscMPIInt)(2 * np), MPIU_INT, 0, d->comm));
+  }
   /* the first sound one is taken, the later ones passed over named */
   for (PetscInt k = 0; k < np && !found; k++) {
     char     why[300] = "";
-    PetscInt hs[3]    = {0, 0, 0};
+    PetscInt hs[4]    = {0, 0, 0, 0};
     int      st       = 0;
-    PetscCall(PointPath(d, pts[k][0], pts[k][1], "", d->rs_point, sizeof(d->rs_point)));
-    if (!rank) st = PointValid(d->rs_point, &ex, why, sizeof(why), &hs[0], &hs[1], &hs[2]);
+    if (d->rs_oldjob)
+      PetscCall(PetscSNPrintf(d->rs_point, sizeof(d->rs_point), "%s.restart.%" PetscInt_FMT ".%" PetscInt_FMT ".h5", m->restart_read_job, pts[k][0], pts[k][1]));
+    else PetscCall(PointPath(d, pts[k][0], pts[k][1], "", d->rs_point, sizeof(d->rs_point)));
+    if (!rank) st = PointValid(d->rs_point, &ex, why, sizeof(why), &hs[0], &hs[1], &hs[2], &hs[3]);
     PetscCallMPI(MPI_Bcast(&st, 1, MPI_INT, 0, d->comm));
-    PetscCallMPI(MPI_Bcast(hs, 3, MPIU_INT, 0, d->comm));
+    PetscCallMPI(MPI_Bcast(hs, 4, MPIU_INT, 0, d->comm));
     PetscCallMPI(MPI_Bcast(why, sizeof(why), MPI_CHAR, 0, d->comm));
     if (st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], &nstate_local, &st, why, sizeof(why)));
-    if (st == 1) found = 1, d->rs_nextra = hs[2], d->rs_nstate = nstate_local;
-    else if (st < 0) {
-      snprintf(msg, sizeof(msg), "restart point %s was %s", d->rs_point, why);
+    if (st == 1) found = 1, d->rs_nextra = hs[2], d->rs_nstate = nstate_local, nh_file = hs[3];
+    else if (st < 0 || d->rs_oldjob) { /* the point a restart deck names cannot be passed over for another */
+      snprintf(msg, sizeof(msg), "%srestart point %s %s %s", where, d->rs_point, st < 0 ? "was" : "is not usable:", why);
       found = -1;
     } else PetscCall(PetscPrintf(d->comm, "thermoslide: warning: restart point %s is not used: %s\n", d->rs_point, why));
   }
@@ -711,13 +739,13 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
     PetscScalar *h;
     PetscReal    hb[H_SUMS + 24];
     PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
-    PetscCall(LocalVec(d->comm, rank ? 0 : nh, "header", &hv));
+    PetscCall(LocalVec(d->comm, rank ? 0 : nh_file, "header", &hv));
     PetscCall(VecLoad(hv, vw));
     PetscCall(PetscViewerDestroy(&vw));
     PetscCall(VecGetArray(hv, &h));
     if (!rank) {
       for (PetscInt i = 0; i < H_SUMS + 24; i++) hb[i] = PetscRealPart(h[i]);
-      for (PetscInt k = 0; k < 2 * m->nstep; k++) d->rs_tstart[k] = PetscRealPart(h[H_TSTART + k]);
+      for (PetscInt k = 0; k < PetscMin(2 * m->nstep, nh_file - H_TSTART); k++) d->rs_tstart[k] = PetscRealPart(h[H_TSTART + k]);
     }
     PetscCall(VecRestoreArray(hv, &h));
     PetscCall(VecDestroy(&hv));
@@ -732,23 +760,30 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
     d->rs_loop.total       = hb[H_TOTAL];
     d->rs_loop.h_prev      = hb[H_HAS_XPREV] > 0 ? hb[H_H_PREV] : 0;
     d->rs_loop.frames_next = hb[H_FRAMES_NEXT];
+    d->rs_ptime            = hb[H_PTIME];
     d->rs_fell_back        = (PetscInt)hb[H_FELL_BACK];
     d->rs_nframe           = (PetscInt)hb[H_NFRAME];
     d->rs_nrow             = (PetscInt)hb[H_NROW];
     d->rs_run_id           = Unbits(hb[H_RUN_ID]);
     PetscCall(PetscArraycpy(d->rs_sums, &hb[H_SUMS], 24));
     PetscCheck(d->rs_loop.step >= 0 && d->rs_loop.step < m->nstep && (m->steps[d->rs_loop.step].explicit_dynamics ? d->rs_nextra > 0 : d->rs_nextra == 0),
-               d->comm, PETSC_ERR_FILE_UNEXPECTED, "restart point %s names step %" PetscInt_FMT ", which is of another procedure in this deck", d->rs_point,
+               d->comm, PETSC_ERR_FILE_UNEXPECTED, "%srestart point %s names step %" PetscInt_FMT ", which is of another procedure in this deck", where, d->rs_point,
                d->rs_loop.step + 1);
+    PetscCheck(!d->rs_oldjob || (d->rs_loop.step + 1 == m->restart_read_step && d->rs_loop.inc == m->restart_read_inc), d->comm, PETSC_ERR_FILE_UNEXPECTED,
+               "%srestart point %s holds step %" PetscInt_FMT " increment %" PetscInt_FMT ", not the one its name says", where, d->rs_point, d->rs_loop.step + 1,
+               d->rs_loop.inc);
   }
   /* the earlier run's output, which this run's extends */
   {
     int err = 0;
-    if (!rank) err = FindOutput(d, d->rs_run_id, d->rs_src_h5, d->rs_src_csv, sizeof(d->rs_src_h5));
+    if (!rank)
+      err = d->rs_oldjob ? FindOutput(odir, ojob, PETSC_TRUE, d->rs_run_id, d->rs_src_h5, d->rs_src_csv, sizeof(d->rs_src_h5))
+                         : FindOutput(d->rs_dir, d->rs_job, PETSC_FALSE, d->rs_run_id, d->rs_src_h5, d->rs_src_csv, sizeof(d->rs_src_h5));
     PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, d->comm));
     PetscCheck(err >= 0, d->comm, PETSC_ERR_FILE_OPEN,
-               "restart point %s: the output of the run that wrote it (%s.h5, .h5.part, .failed.h5 or .interrupted.h5 in %s, run %llx) is not there or not readable",
-               d->rs_point, jobname, d->rs_dir[0] ? d->rs_dir : ".", (unsigned long long)d->rs_run_id);
+               "%srestart point %s: the output of the run that wrote it (%s.h5, .h5.part, .failed.h5 or .interrupted.h5 in %s, run %llx) is not there or not readable",
+               where, d->rs_point, d->rs_oldjob ? ojob : jobname, d->rs_oldjob ? (odir[0] ? odir : ".") : (d->rs_dir[0] ? d->rs_dir : "."),
+               (unsigned long long)d->rs_run_id);
     PetscCheck(!err, d->comm, PETSC_ERR_FILE_WRITE, "restart: cannot move the interrupted run's output aside: %s", strerror(err));
     PetscCallMPI(MPI_Bcast(d->rs_src_h5, sizeof(d->rs_src_h5), MPI_CHAR, 0, d->comm));
     PetscCallMPI(MPI_Bcast(d->rs_src_csv, sizeof(d->rs_src_csv), MPI_CHAR, 0, d->comm));
@@ -869,6 +904,16 @@ PetscErrorCode TslRestartLoadExtra(Driver *d, TslRestartExtra *extra)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslRestartEndStep(Driver *d, PetscInt s, PetscReal *t, PetscReal period)
+{
+  PetscFunctionBeginUser;
+  if (!d->rs_end_step) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscPrintf(d->comm, "  step %" PetscInt_FMT " ends at the restart point, step time %g of %g (*RESTART, READ, END STEP)\n", s + 1, (double)*t, (double)period));
+  *t             = period;
+  d->rs_end_step = PETSC_FALSE;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslRestartFinish(Driver *d, PetscBool completed)
 {
   const TslModel *m;
@@ -878,7 +923,7 @@ PetscErrorCode TslRestartFinish(Driver *d, PetscBool completed)
   if (d->rs_count)
     PetscCall(PetscPrintf(d->comm, "thermoslide: %" PetscInt_FMT " restart points written, %.2f s in all (%.1f MB each)\n", d->rs_count, d->rs_seconds,
                           d->rs_bytes / 1048576.0));
-  if (completed && d->rs_src_h5[0] && strstr(d->rs_src_h5, ".interrupted.h5")) {
+  if (completed && !d->rs_oldjob && d->rs_src_h5[0] && strstr(d->rs_src_h5, ".interrupted.h5")) {
     /* the interrupted run's frames are in this run's output now */
     PetscMPIInt rank;
     PetscCallMPI(MPI_Comm_rank(d->comm, &rank));

@@ -140,8 +140,10 @@ typedef struct {
   double         rs_seconds, rs_bytes;
   char           rs_last[PETSC_MAX_PATH_LEN]; /* the last point written (OVERLAY removes it when the next is in place) */
   PetscBool      rs_resume;
+  PetscBool      rs_oldjob, rs_end_step; /* continuing an old job's point (*RESTART, READ); END STEP: its step ends there */
   char           rs_point[PETSC_MAX_PATH_LEN], rs_src_h5[PETSC_MAX_PATH_LEN], rs_src_csv[PETSC_MAX_PATH_LEN];
   TslRestartLoop rs_loop;
+  PetscReal      rs_ptime;     /* the problem's step time at the point (TslProblemGetStepTime) */
   PetscReal      rs_sums[24];  /* the driver's sums at the point (restart.c, RestoreSums) */
   PetscInt       rs_nframe, rs_nrow, rs_fell_back, rs_nextra, rs_nstate; /* the point's counts; this rank's state length (reals) */
   uint64_t       rs_run_id;
@@ -172,6 +174,9 @@ PetscErrorCode TslRestartLoad(Driver *d, TslRestartLoop *loop);
 /* The extra state of the point being continued from into extra's vectors and reals (their sizes this run's: an error
  * naming the point if its differ). */
 PetscErrorCode TslRestartLoadExtra(Driver *d, TslRestartExtra *extra);
+/* After the point's state is loaded into step s at step time *t: *RESTART, READ, END STEP ends the step there (*t set
+ * to the period; the loads of the next step start from their values at the point). */
+PetscErrorCode TslRestartEndStep(Driver *d, PetscInt s, PetscReal *t, PetscReal period);
 PetscErrorCode TslRestartFinish(Driver *d, PetscBool completed);
 
 
