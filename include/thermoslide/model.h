@@ -517,8 +517,12 @@ typedef struct {
    * point of that step's increment restart_read_inc (0: no *RESTART, READ), ending the step there with END STEP */
   PetscInt  restart_read_step, restart_read_inc;
   PetscBool restart_read_end_step;
-  char      restart_read_job[PETSC_MAX_PATH_LEN]; /* DIR/JOB as -oldjob gave it */
-  TslLoc    restart_read_loc;
+  char      restart_read_job[PETSC_MAX_PATH_LEN]; /* DIR/JOB as -oldjob gave it (also *POST OUTPUT's) */
+  TslLoc    restart_read_loc;                      /* the *RESTART, READ (or *POST OUTPUT) line */
+  /* *POST OUTPUT (with -oldjob): 0 none; 1 a frame of each of the npost points post[2k] (step), post[2k+1] (increment);
+   * 2 (ALL) of every point the old job wrote */
+  PetscInt  post_output, npost;
+  PetscInt *post;
 
   /* Filled by the mesh module on distribution (NULL / 0 in the model read by rank 0):
    * local nodes are ordered owned first, then ghosts. */

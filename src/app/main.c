@@ -115,7 +115,7 @@ static PetscErrorCode KeepDeckCopy(const TslModel *m, const char *flat, const ch
 
   PetscFunctionBeginUser;
   for (PetscInt k = 0; k < m->nstep; k++) writes = (PetscBool)(writes || m->steps[k].restart_frequency || m->steps[k].restart_interval > 0);
-  if (!writes || !flat) PetscFunctionReturn(PETSC_SUCCESS);
+  if (!writes || !flat || m->post_output) PetscFunctionReturn(PETSC_SUCCESS); /* a POST OUTPUT job writes no points */
   PetscCall(PetscSNPrintf(path, sizeof(path), "%s/%s.restart.inp", dir, job));
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   fp = fopen(tmp, "w");

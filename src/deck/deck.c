@@ -3319,70 +3319,137 @@ static PetscErrorCode KwIgnored(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The old job a restart or POST OUTPUT deck names with -oldjob DIR/JOB (what names the keyword in messages): its
+ * name in job, its directory in dir, and its deck copy DIR/JOB.restart.inp in copy, which must be there. */
+static PetscErrorCode OldJob(Deck *d, const char *what, char job[], char dir[], char copy[])
+{
+  PetscBool   set;
+  const char *slash;
+
+  PetscFunctionBeginUser;
+  job[0] = 0;
+  PetscCall(PetscOptionsGetString(NULL, NULL, "-oldjob", job, PETSC_MAX_PATH_LEN, &set));
+  USER_CHECK(set && job[0], LOC_FMT "%s continues an old job: name it with -oldjob DIR/JOB (its output directory and job name)", KLOC(d), what);
+  slash = strrchr(job, '/');
+  USER_CHECK(!slash || slash[1], LOC_FMT "-oldjob %s names a directory, not a job: give DIR/JOB", KLOC(d), job);
+  if (slash) {
+    PetscCall(PetscStrncpy(dir, job, (size_t)(slash - job) + 1));
+    if (!dir[0]) PetscCall(PetscStrncpy(dir, "/", PETSC_MAX_PATH_LEN));
+  } else PetscCall(PetscStrncpy(dir, ".", PETSC_MAX_PATH_LEN));
+  PetscCall(PetscSNPrintf(copy, PETSC_MAX_PATH_LEN + 64, "%s.restart.inp", job));
+  USER_CHECK(!access(copy, R_OK), LOC_FMT "%s: the old job's deck copy %s is not there (a job keeps one beside its points when its deck has *RESTART, WRITE)",
+             KLOC(d), what, copy);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The old job's restart point of step s, increment *inc (0: the latest of the step, set here), which must be there;
+ * the error names the step's points. loc: the line to name (a keyword's or a data line's). */
+static PetscErrorCode OldPoint(Deck *d, TslLoc loc, const char *what, const char *job, const char *dir, PetscInt s, PetscInt *inc)
+{
+  const char *slash = strrchr(job, '/'), *base = slash ? slash + 1 : job;
+  char        pfx[PETSC_MAX_PATH_LEN + 64], have[256] = "";
+  size_t      nh = 0;
+  PetscInt    found = -1, latest = -1, incs[32], ninc = 0, want = *inc;
+  DIR        *dp;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(pfx, sizeof(pfx), "%s.restart.%" PetscInt_FMT ".", base, s));
+  dp = opendir(dir);
+  USER_CHECK(dp, LOC_FMT "%s: cannot open the old job's directory %s: %s", TSL_LOC_ARGS(d->m, loc), what, dir, strerror(errno));
+  for (struct dirent *e; (e = readdir(dp));) {
+    long long i;
+    int       n = 0;
+    if (strncmp(e->d_name, pfx, strlen(pfx)) || sscanf(e->d_name + strlen(pfx), "%lld.h5%n", &i, &n) != 1 || e->d_name[strlen(pfx) + n]) continue;
+    if ((PetscInt)i == want) found = want;
+    latest = PetscMax(latest, (PetscInt)i);
+    if (ninc < 32) incs[ninc++] = (PetscInt)i;
+  }
+  closedir(dp);
+  PetscCall(PetscSortInt(ninc, incs)); /* the first 32 the directory lists, in order */
+  for (PetscInt k = 0; k < ninc; k++) nh += (size_t)snprintf(have + nh, sizeof(have) - nh, "%s%" PetscInt_FMT, k ? ", " : "", incs[k]);
+  if (!want) found = latest;
+  if (want) {
+    USER_CHECK(found >= 0, LOC_FMT "%s, STEP=%" PetscInt_FMT ", INC=%" PetscInt_FMT ": the old job %s wrote no restart point there (%s%s)", TSL_LOC_ARGS(d->m, loc), what, s,
+               want, job, nh ? "its points of that step: increments " : "none in that step", have);
+  } else
+    USER_CHECK(found >= 0, LOC_FMT "%s, STEP=%" PetscInt_FMT ": the old job %s wrote no restart point there (none in that step)", TSL_LOC_ARGS(d->m, loc), what, s, job);
+  *inc = found;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* A restart or POST OUTPUT deck takes its model from the old job: its keyword comes first (after a *HEADING). */
+static PetscErrorCode OldJobFirst(Deck *d, const char *what)
+{
+  const TslModel *m = d->m;
+
+  PetscFunctionBeginUser;
+  USER_CHECK(!m->nnode && !m->nelem && !m->nmaterial && d->step < 0 && !m->nstep && !m->restart_read_step && !m->post_output, LOC_FMT
+             "%s comes first in its deck (after *HEADING), before any model data or step: the model is the old job's", KLOC(d), what);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* *RESTART, READ, STEP=s [, INC=i] [, END STEP] (a restart deck, run with -oldjob DIR/JOB): first in the deck (after a
  * *HEADING), it reads the old job's deck copy DIR/JOB.restart.inp in its place, up to the end of its step s; the job
  * continues from the old job's point of step s, increment i (default: the latest written in that step), then runs
  * this deck's steps (src/solve/restart.c; docs/running.md "Restart"). */
 static PetscErrorCode RestartRead(Deck *d)
 {
-  TslModel   *m   = d->m;
-  PetscInt    s   = 0, inc = 0;
-  char        job[PETSC_MAX_PATH_LEN] = "", path[PETSC_MAX_PATH_LEN + 64], pfx[PETSC_MAX_PATH_LEN + 64], dir[PETSC_MAX_PATH_LEN];
-  const char *slash, *base;
-  PetscBool   set;
-  DIR        *dp;
+  TslModel *m = d->m;
+  PetscInt  s = 0, inc = 0;
+  char      job[PETSC_MAX_PATH_LEN], dir[PETSC_MAX_PATH_LEN], copy[PETSC_MAX_PATH_LEN + 64];
 
   PetscFunctionBeginUser;
-  USER_CHECK(!m->nnode && !m->nelem && !m->nmaterial && d->step < 0 && !m->nstep && !m->restart_read_step, LOC_FMT
-             "*RESTART, READ comes first in a restart deck (after *HEADING), before any model data or step: the model is the old job's",
-             KLOC(d));
-  PetscCall(PetscOptionsGetString(NULL, NULL, "-oldjob", job, sizeof(job), &set));
-  USER_CHECK(set && job[0], LOC_FMT "*RESTART, READ continues an old job: name it with -oldjob DIR/JOB (its output directory and job name)", KLOC(d));
+  PetscCall(OldJobFirst(d, "*RESTART, READ"));
+  PetscCall(OldJob(d, "*RESTART, READ", job, dir, copy));
   USER_CHECK(Param(d, "STEP"), LOC_FMT "*RESTART, READ needs STEP= (the old job's step to continue from)", KLOC(d));
   PetscCall(ParamInt(d, "STEP", &s));
   PetscCall(ParamInt(d, "INC", &inc));
   USER_CHECK(s >= 1 && inc >= 0, LOC_FMT "*RESTART, READ: STEP must be 1 or more and INC not negative (got STEP=%" PetscInt_FMT ", INC=%" PetscInt_FMT ")", KLOC(d), s, inc);
-  slash = strrchr(job, '/');
-  base  = slash ? slash + 1 : job;
-  USER_CHECK(base[0], LOC_FMT "-oldjob %s names a directory, not a job: give DIR/JOB", KLOC(d), job);
-  if (slash) {
-    PetscCall(PetscStrncpy(dir, job, (size_t)(slash - job) + 1));
-    if (!dir[0]) PetscCall(PetscStrncpy(dir, "/", sizeof(dir)));
-  } else PetscCall(PetscStrncpy(dir, ".", sizeof(dir)));
-  /* the point: the one named, or the latest of the step */
-  PetscCall(PetscSNPrintf(pfx, sizeof(pfx), "%s.restart.%" PetscInt_FMT ".", base, s));
-  {
-    char     have[256] = "";
-    size_t   nh        = 0;
-    PetscInt found = -1, latest = -1, incs[32], ninc = 0;
-    dp             = opendir(dir);
-    USER_CHECK(dp, LOC_FMT "*RESTART, READ: cannot open the old job's directory %s: %s", KLOC(d), dir, strerror(errno));
-    for (struct dirent *e; (e = readdir(dp));) {
-      long long i;
-      int       n = 0;
-      if (strncmp(e->d_name, pfx, strlen(pfx)) || sscanf(e->d_name + strlen(pfx), "%lld.h5%n", &i, &n) != 1 || e->d_name[strlen(pfx) + n]) continue;
-      if ((PetscInt)i == inc) found = inc;
-      latest = PetscMax(latest, (PetscInt)i);
-      if (ninc < 32) incs[ninc++] = (PetscInt)i;
-    }
-    closedir(dp);
-    PetscCall(PetscSortInt(ninc, incs)); /* the first 32 the directory lists, in order */
-    for (PetscInt k = 0; k < ninc; k++) nh += (size_t)snprintf(have + nh, sizeof(have) - nh, "%s%" PetscInt_FMT, k ? ", " : "", incs[k]);
-    if (!inc) found = inc = latest;
-    USER_CHECK(found >= 0 && inc >= 0, LOC_FMT "*RESTART, READ, STEP=%" PetscInt_FMT "%s%s: the old job %s wrote no restart point there (%s%s)", KLOC(d), s,
-               Param(d, "INC") ? ", INC=" : "", Param(d, "INC") ? Param(d, "INC") : "", job, nh ? "its points of that step: increments " : "none in that step", have);
-  }
-  PetscCall(PetscSNPrintf(path, sizeof(path), "%s.restart.inp", job));
-  USER_CHECK(!access(path, R_OK), LOC_FMT "*RESTART, READ: the old job's deck copy %s is not there (a job keeps one beside its points when its deck has *RESTART, WRITE)", KLOC(d), path);
+  PetscCall(OldPoint(d, d->kwloc, "*RESTART, READ", job, dir, s, &inc));
   m->restart_read_step     = s;
   m->restart_read_inc      = inc;
   m->restart_read_end_step = (PetscBool)(Param(d, "END STEP") != NULL);
   m->restart_read_loc      = d->kwloc;
   PetscCall(PetscStrncpy(m->restart_read_job, job, sizeof(m->restart_read_job)));
   if (d->record) d->flatlen = d->flat_kw, d->flat[d->flatlen] = 0; /* this job's copy holds the old deck in its place */
-  PetscCall(DeckOpen(d, path, PETSC_TRUE));
+  PetscCall(DeckOpen(d, copy, PETSC_TRUE));
   d->restart_stop  = s;
   d->restart_depth = d->depth;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* *POST OUTPUT [, ALL] with data lines "step, increment" (a POST OUTPUT deck, run with -oldjob DIR/JOB): a frame of each
+ * restart point named (ALL: of every point the old job wrote), recovered from the point's state with the output
+ * requests of its step in the old job's deck, which is read in this keyword's place (src/solve/restart.c,
+ * TslRestartPostOutput). The deck holds nothing else but a *HEADING. */
+static PetscErrorCode KwPostOutput(Deck *d, const DeckKeyword *kw)
+{
+  TslModel *m = d->m;
+  char      job[PETSC_MAX_PATH_LEN], dir[PETSC_MAX_PATH_LEN], copy[PETSC_MAX_PATH_LEN + 64];
+  PetscBool got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  PetscCall(OldJobFirst(d, "*POST OUTPUT"));
+  PetscCall(OldJob(d, "*POST OUTPUT", job, dir, copy));
+  m->post_output      = Param(d, "ALL") ? 2 : 1;
+  m->restart_read_loc = d->kwloc;
+  PetscCall(PetscStrncpy(m->restart_read_job, job, sizeof(m->restart_read_job)));
+  for (;;) {
+    PetscInt s, inc;
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    USER_CHECK(m->post_output == 1, LOC_FMT "*POST OUTPUT, ALL takes no data lines", DLOC(d));
+    USER_CHECK(d->nfield == 2, LOC_FMT "*POST OUTPUT data line: step, increment", DLOC(d));
+    PetscCall(FieldInt(d, 0, "the step", &s));
+    PetscCall(FieldInt(d, 1, "the increment", &inc));
+    USER_CHECK(s >= 1 && inc >= 1, LOC_FMT "*POST OUTPUT: the step and the increment must be 1 or more (got %" PetscInt_FMT ", %" PetscInt_FMT ")", DLOC(d), s, inc);
+    PetscCall(OldPoint(d, d->loc, "*POST OUTPUT", job, dir, s, &inc));
+    PetscCall(TslDeckGrow(&m->post, 2 * sizeof(PetscInt), m->npost));
+    m->post[2 * m->npost] = s, m->post[2 * m->npost + 1] = inc, m->npost++;
+  }
+  USER_CHECK(m->post_output == 2 || m->npost, LOC_FMT "*POST OUTPUT needs data lines (step, increment) or ALL", KLOC(d));
+  PetscCall(DeckOpen(d, copy, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -3800,6 +3867,7 @@ static const DeckKeyword Keywords[] = {
     {"FILE FORMAT", AT_BOTH, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"MONITOR", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"RESTART", AT_BOTH, IN_NONE, NULL, KwRestart, 0, NULL},
+    {"POST OUTPUT", AT_MODEL, IN_NONE, NULL, KwPostOutput, 0, NULL},
     {"CONTACT PRINT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"CONTACT FILE", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},
     {"ENERGY PRINT", AT_STEP, IN_NONE, NULL, KwIgnored, 0, NULL},

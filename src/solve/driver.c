@@ -1159,7 +1159,8 @@ PetscErrorCode TslAnalysisRun(TslProblem prob, const char *dir, const char *jobn
   PetscCall(TslFramesSetUp(&d, dir, jobname));
   ierr = TslRestartCopyOutput(&d); /* ... and the frames and history rows of the run that wrote it */
   /* every failure inside a step is decided by all ranks together (sys.h), so all ranks stop here alike */
-  for (PetscInt s = 0; s < m->nstep && !ierr; s++) {
+  if (m->post_output) ierr = TslRestartPostOutput(&d); /* a POST OUTPUT deck: frames from the old job's points, no step run */
+  for (PetscInt s = 0; s < m->nstep && !ierr && !m->post_output; s++) {
     const Procedure *pr = StepProcedure(&m->steps[s]);
     PetscCall(TslProblemSetMatrixFree(prob, pr->matrix_free));
     ierr = TslRestartStepStart(&d, s, &total);

@@ -634,15 +634,136 @@ static int FindOutput(const char *dir, const char *job, PetscBool readonly, uint
   return -1;
 }
 
+/* Rank 0: the points of job (DIR/JOB), into *pts (malloc'd), *np of them. */
+static void ListPoints(const char *job, PetscInt (**pts)[2], PetscInt *np)
+{
+  const char    *slash = strrchr(job, '/');
+  char           dir[PETSC_MAX_PATH_LEN] = ".", pfx[300];
+  DIR           *dp;
+  struct dirent *e;
+  PetscInt       cap = 0;
+
+  *np = 0, *pts = NULL;
+  if (slash) snprintf(dir, sizeof(dir), "%.*s", (int)(slash - job) + (slash == job), job);
+  snprintf(pfx, sizeof(pfx), "%s.restart.", slash ? slash + 1 : job);
+  dp = opendir(dir);
+  while (dp && (e = readdir(dp))) {
+    long long s, i;
+    int       n = 0;
+    if (strncmp(e->d_name, pfx, strlen(pfx))) continue;
+    if (sscanf(e->d_name + strlen(pfx), "%lld.%lld.h5%n", &s, &i, &n) != 2 || e->d_name[strlen(pfx) + n] != 0) continue;
+    if (*np == cap) {
+      cap  = PetscMax(16, 2 * cap);
+      *pts = realloc(*pts, sizeof(**pts) * cap);
+    }
+    (*pts)[*np][0] = (PetscInt)s, (*pts)[*np][1] = (PetscInt)i, (*np)++;
+  }
+  if (dp) closedir(dp);
+}
+
+/* Points in order of step, then increment (ascending, or descending when latest_first). */
+static void SortPoints(PetscInt (*pts)[2], PetscInt np, PetscBool latest_first)
+{
+  for (PetscInt a = 0; a < np; a++)
+    for (PetscInt b = a + 1; b < np; b++) {
+      PetscBool later = (PetscBool)(pts[b][0] > pts[a][0] || (pts[b][0] == pts[a][0] && pts[b][1] > pts[a][1]));
+      if (later == latest_first) {
+        PetscInt t0 = pts[a][0], t1 = pts[a][1];
+        pts[a][0] = pts[b][0], pts[a][1] = pts[b][1], pts[b][0] = t0, pts[b][1] = t1;
+      }
+    }
+}
+
+/* What this run expects of a point (any_steps: see Expect). Collective. */
+static PetscErrorCode ExpectFor(Driver *d, PetscInt any_steps, Expect *ex)
+{
+  const TslModel *m;
+  Vec             X;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCall(TslProblemGetSolution(d->prob, &X));
+  PetscCall(VecGetSize(X, &ex->nx));
+  PetscCallMPI(MPI_Comm_size(d->comm, &ex->size));
+  ex->nh        = HeaderLength(m->nstep);
+  ex->any_steps = any_steps;
+  PetscCall(TslProblemModelDigest(d->prob, &ex->model));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective: the point d->rs_point (checked by CheckPoint) sound (*st 1), to pass over (0) or not to be used at all (-1,
+ * why); its extra datasets, this rank's state length and its header's length (*nh_file) into d. */
+static PetscErrorCode CheckPoint(Driver *d, const Expect *ex, int *st, char why[], size_t len, PetscInt *nh_file)
+{
+  PetscMPIInt rank;
+  PetscInt    hs[4] = {0, 0, 0, 0}, nstate_local = 0;
+
+  PetscFunctionBeginUser;
+  PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+  if (!rank) *st = PointValid(d->rs_point, ex, why, len, &hs[0], &hs[1], &hs[2], &hs[3]);
+  PetscCallMPI(MPI_Bcast(st, 1, MPI_INT, 0, d->comm));
+  PetscCallMPI(MPI_Bcast(hs, 4, MPIU_INT, 0, d->comm));
+  PetscCallMPI(MPI_Bcast(why, (PetscMPIInt)len, MPI_CHAR, 0, d->comm));
+  if (*st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], &nstate_local, st, why, len));
+  if (*st == 1) d->rs_nextra = hs[2], d->rs_nstate = nstate_local, *nh_file = hs[3];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Collective: the header of the point d->rs_point (nh entries) into d: the loop's state, the sums, each step's start
+ * times. */
+static PetscErrorCode LoadHeader(Driver *d, PetscInt nh)
+{
+  const TslModel *m;
+  PetscMPIInt     rank;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+  {
+    PetscViewer  vw;
+    Vec          hv;
+    PetscScalar *h;
+    PetscReal    hb[H_SUMS + 24];
+    PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
+    PetscCall(LocalVec(d->comm, rank ? 0 : nh, "header", &hv));
+    PetscCall(VecLoad(hv, vw));
+    PetscCall(PetscViewerDestroy(&vw));
+    PetscCall(VecGetArray(hv, &h));
+    if (!rank) {
+      for (PetscInt i = 0; i < H_SUMS + 24; i++) hb[i] = PetscRealPart(h[i]);
+      for (PetscInt k = 0; k < PetscMin(2 * m->nstep, nh - H_TSTART); k++) d->rs_tstart[k] = PetscRealPart(h[H_TSTART + k]);
+    }
+    PetscCall(VecRestoreArray(hv, &h));
+    PetscCall(VecDestroy(&hv));
+    PetscCallMPI(MPI_Bcast(hb, H_SUMS + 24, MPIU_REAL, 0, d->comm));
+    PetscCallMPI(MPI_Bcast(d->rs_tstart, 2 * m->nstep, MPIU_REAL, 0, d->comm));
+    d->rs_loop.step        = (PetscInt)hb[H_STEP];
+    d->rs_loop.inc         = (PetscInt)hb[H_INC];
+    d->rs_loop.its_prev    = (PetscInt)hb[H_ITS_PREV];
+    d->rs_loop.cutbacks    = (PetscInt)hb[H_CUTBACKS];
+    d->rs_loop.t           = hb[H_T];
+    d->rs_loop.dt          = hb[H_DT];
+    d->rs_loop.total       = hb[H_TOTAL];
+    d->rs_loop.h_prev      = hb[H_HAS_XPREV] > 0 ? hb[H_H_PREV] : 0;
+    d->rs_loop.frames_next = hb[H_FRAMES_NEXT];
+    d->rs_ptime            = hb[H_PTIME];
+    d->rs_fell_back        = (PetscInt)hb[H_FELL_BACK];
+    d->rs_nframe           = (PetscInt)hb[H_NFRAME];
+    d->rs_nrow             = (PetscInt)hb[H_NROW];
+    d->rs_run_id           = Unbits(hb[H_RUN_ID]);
+    PetscCall(PetscArraycpy(d->rs_sums, &hb[H_SUMS], 24));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
 {
   const TslModel *m;
-  PetscMPIInt     rank, size;
-  PetscInt        nh;
+  PetscMPIInt     rank;
   char            msg[PETSC_MAX_PATH_LEN + 400] = "";
   int             found                         = 0;
   Expect          ex;
-  PetscInt        np = 0, nstate_local = 0, (*pts)[2] = NULL, nh_file = 0;
+  PetscInt        np = 0, (*pts)[2] = NULL, nh_file = 0;
   char            odir[PETSC_MAX_PATH_LEN] = "", ojob[256] = "", where[PETSC_MAX_PATH_LEN + 64] = "";
 
   PetscFunctionBeginUser;
@@ -665,46 +786,16 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   }
   if (!d->rs_resume) PetscFunctionReturn(PETSC_SUCCESS);
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
-  PetscCallMPI(MPI_Comm_size(d->comm, &size));
-  nh = HeaderLength(m->nstep);
-  {
-    Vec X;
-    PetscCall(TslProblemGetSolution(d->prob, &X));
-    PetscCall(VecGetSize(X, &ex.nx));
-    ex.nh        = nh;
-    ex.size      = size;
-    ex.any_steps = d->rs_oldjob ? m->restart_read_step : 0;
-    PetscCall(TslProblemModelDigest(d->prob, &ex.model));
-  }
+  PetscCall(ExpectFor(d, d->rs_oldjob ? m->restart_read_step : 0, &ex));
   if (d->rs_oldjob) { /* the one point the deck names (its existence checked when the deck was read) */
     np  = 1;
     pts = malloc(sizeof(*pts));
     pts[0][0] = m->restart_read_step, pts[0][1] = m->restart_read_inc;
-  } else if (!rank) {
-    /* the points of this job, latest first */
-    DIR           *dp = opendir(d->rs_dir[0] ? d->rs_dir : ".");
-    struct dirent *e;
-    PetscInt       cap = 0;
-    char           pfx[300];
-    snprintf(pfx, sizeof(pfx), "%s.restart.", jobname);
-    while (dp && (e = readdir(dp))) {
-      long long s, i;
-      int       n = 0;
-      if (strncmp(e->d_name, pfx, strlen(pfx))) continue;
-      if (sscanf(e->d_name + strlen(pfx), "%lld.%lld.h5%n", &s, &i, &n) != 2 || e->d_name[strlen(pfx) + n] != 0) continue;
-      if (np == cap) {
-        cap = PetscMax(16, 2 * cap);
-        pts = realloc(pts, sizeof(*pts) * cap);
-      }
-      pts[np][0] = (PetscInt)s, pts[np][1] = (PetscInt)i, np++;
-    }
-    if (dp) closedir(dp);
-    for (PetscInt a = 0; a < np; a++) /* latest first */
-      for (PetscInt b = a + 1; b < np; b++)
-        if (pts[b][0] > pts[a][0] || (pts[b][0] == pts[a][0] && pts[b][1] > pts[a][1])) {
-          PetscInt t0 = pts[a][0], t1 = pts[a][1];
-          pts[a][0] = pts[b][0], pts[a][1] = pts[b][1], pts[b][0] = t0, pts[b][1] = t1;
-        }
+  } else if (!rank) { /* the points of this job, latest first */
+    char job[PETSC_MAX_PATH_LEN + 300];
+    PetscCall(PetscSNPrintf(job, sizeof(job), "%s%s%s", d->rs_dir, d->rs_dir[0] ? "/" : "", jobname));
+    ListPoints(job, &pts, &np);
+    SortPoints(pts, np, PETSC_TRUE);
   }
   if (!d->rs_oldjob) {
     PetscCallMPI(MPI_Bcast(&np, 1, MPIU_INT, 0, d->comm));
@@ -713,18 +804,13 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   }
   /* the first sound one is taken, the later ones passed over named */
   for (PetscInt k = 0; k < np && !found; k++) {
-    char     why[300] = "";
-    PetscInt hs[4]    = {0, 0, 0, 0};
-    int      st       = 0;
+    char why[300] = "";
+    int  st       = 0;
     if (d->rs_oldjob)
       PetscCall(PetscSNPrintf(d->rs_point, sizeof(d->rs_point), "%s.restart.%" PetscInt_FMT ".%" PetscInt_FMT ".h5", m->restart_read_job, pts[k][0], pts[k][1]));
     else PetscCall(PointPath(d, pts[k][0], pts[k][1], "", d->rs_point, sizeof(d->rs_point)));
-    if (!rank) st = PointValid(d->rs_point, &ex, why, sizeof(why), &hs[0], &hs[1], &hs[2], &hs[3]);
-    PetscCallMPI(MPI_Bcast(&st, 1, MPI_INT, 0, d->comm));
-    PetscCallMPI(MPI_Bcast(hs, 4, MPIU_INT, 0, d->comm));
-    PetscCallMPI(MPI_Bcast(why, sizeof(why), MPI_CHAR, 0, d->comm));
-    if (st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], &nstate_local, &st, why, sizeof(why)));
-    if (st == 1) found = 1, d->rs_nextra = hs[2], d->rs_nstate = nstate_local, nh_file = hs[3];
+    PetscCall(CheckPoint(d, &ex, &st, why, sizeof(why), &nh_file));
+    if (st == 1) found = 1;
     else if (st < 0 || d->rs_oldjob) { /* the point a restart deck names cannot be passed over for another */
       snprintf(msg, sizeof(msg), "%srestart point %s %s %s", where, d->rs_point, st < 0 ? "was" : "is not usable:", why);
       found = -1;
@@ -733,39 +819,8 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   free(pts);
   if (!found) snprintf(msg, sizeof(msg), "-tsl_restart: no valid restart point of job %s in %s", jobname, d->rs_dir[0] ? d->rs_dir : ".");
   PetscCheck(found == 1, d->comm, PETSC_ERR_FILE_OPEN, "%s", msg);
+  PetscCall(LoadHeader(d, nh_file));
   {
-    PetscViewer  vw;
-    Vec          hv;
-    PetscScalar *h;
-    PetscReal    hb[H_SUMS + 24];
-    PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
-    PetscCall(LocalVec(d->comm, rank ? 0 : nh_file, "header", &hv));
-    PetscCall(VecLoad(hv, vw));
-    PetscCall(PetscViewerDestroy(&vw));
-    PetscCall(VecGetArray(hv, &h));
-    if (!rank) {
-      for (PetscInt i = 0; i < H_SUMS + 24; i++) hb[i] = PetscRealPart(h[i]);
-      for (PetscInt k = 0; k < PetscMin(2 * m->nstep, nh_file - H_TSTART); k++) d->rs_tstart[k] = PetscRealPart(h[H_TSTART + k]);
-    }
-    PetscCall(VecRestoreArray(hv, &h));
-    PetscCall(VecDestroy(&hv));
-    PetscCallMPI(MPI_Bcast(hb, H_SUMS + 24, MPIU_REAL, 0, d->comm));
-    PetscCallMPI(MPI_Bcast(d->rs_tstart, 2 * m->nstep, MPIU_REAL, 0, d->comm));
-    d->rs_loop.step        = (PetscInt)hb[H_STEP];
-    d->rs_loop.inc         = (PetscInt)hb[H_INC];
-    d->rs_loop.its_prev    = (PetscInt)hb[H_ITS_PREV];
-    d->rs_loop.cutbacks    = (PetscInt)hb[H_CUTBACKS];
-    d->rs_loop.t           = hb[H_T];
-    d->rs_loop.dt          = hb[H_DT];
-    d->rs_loop.total       = hb[H_TOTAL];
-    d->rs_loop.h_prev      = hb[H_HAS_XPREV] > 0 ? hb[H_H_PREV] : 0;
-    d->rs_loop.frames_next = hb[H_FRAMES_NEXT];
-    d->rs_ptime            = hb[H_PTIME];
-    d->rs_fell_back        = (PetscInt)hb[H_FELL_BACK];
-    d->rs_nframe           = (PetscInt)hb[H_NFRAME];
-    d->rs_nrow             = (PetscInt)hb[H_NROW];
-    d->rs_run_id           = Unbits(hb[H_RUN_ID]);
-    PetscCall(PetscArraycpy(d->rs_sums, &hb[H_SUMS], 24));
     PetscCheck(d->rs_loop.step >= 0 && d->rs_loop.step < m->nstep && (m->steps[d->rs_loop.step].explicit_dynamics ? d->rs_nextra > 0 : d->rs_nextra == 0),
                d->comm, PETSC_ERR_FILE_UNEXPECTED, "%srestart point %s names step %" PetscInt_FMT ", which is of another procedure in this deck", where, d->rs_point,
                d->rs_loop.step + 1);
@@ -802,6 +857,22 @@ PetscErrorCode TslRestartCopyOutput(Driver *d)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslRestartStepStartLoad(Driver *d, PetscInt s, Vec X)
+{
+  PetscViewer vw;
+  char        name[32];
+
+  PetscFunctionBeginUser;
+  if (!d->rs_xstart[s]) PetscCall(VecDuplicate(X, &d->rs_xstart[s]));
+  PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, s));
+  PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
+  PetscCall(LoadNamed(d->rs_xstart[s], name, vw));
+  PetscCall(PetscViewerDestroy(&vw));
+  PetscCall(VecCopy(d->rs_xstart[s], X));
+  PetscCall(TslProblemSetTime(d->prob, d->rs_tstart[2 * s + 1], 0, d->rs_tstart[2 * s]));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslRestartStepStart(Driver *d, PetscInt s, PetscReal *total_time)
 {
   Vec X;
@@ -811,15 +882,8 @@ PetscErrorCode TslRestartStepStart(Driver *d, PetscInt s, PetscReal *total_time)
   if (!d->rs_xstart[s]) PetscCall(VecDuplicate(X, &d->rs_xstart[s]));
   if (d->rs_resume && s <= d->rs_loop.step) {
     /* the continuation: the step starts from the state the original run started it from */
-    PetscViewer vw;
-    char        name[32];
-    PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, s));
-    PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
-    PetscCall(LoadNamed(d->rs_xstart[s], name, vw));
-    PetscCall(PetscViewerDestroy(&vw));
-    PetscCall(VecCopy(d->rs_xstart[s], X));
+    PetscCall(TslRestartStepStartLoad(d, s, X));
     *total_time = d->rs_tstart[2 * s];
-    PetscCall(TslProblemSetTime(d->prob, d->rs_tstart[2 * s + 1], 0, *total_time));
   } else {
     PetscCall(VecCopy(X, d->rs_xstart[s]));
     d->rs_tstart[2 * s]     = *total_time;
@@ -901,6 +965,71 @@ PetscErrorCode TslRestartLoadExtra(Driver *d, TslRestartExtra *extra)
   for (PetscInt i = 0; i < extra->nreal; i++) extra->real[i] = PetscRealPart(a[i]);
   PetscCall(VecRestoreArray(ev, &a));
   PetscCall(VecDestroy(&ev));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslRestartPostOutput(Driver *d)
+{
+  const TslModel *m;
+  PetscMPIInt     rank;
+  PetscInt        np = 0, (*pts)[2] = NULL, done_steps = 0;
+  Expect          ex;
+  char            where[PETSC_MAX_PATH_LEN + 64], loc[PETSC_MAX_PATH_LEN];
+  Vec             X, Xold;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+  PetscCall(TslProblemGetSolution(d->prob, &X));
+  PetscCall(TslProblemGetOldSolution(d->prob, &Xold));
+  PetscCall(PetscSNPrintf(where, sizeof(where), "%s: *POST OUTPUT: ", TslLocString(m, m->restart_read_loc, loc, sizeof(loc))));
+  if (m->post_output == 2) {
+    if (!rank) ListPoints(m->restart_read_job, &pts, &np);
+    PetscCallMPI(MPI_Bcast(&np, 1, MPIU_INT, 0, d->comm));
+    if (rank) pts = malloc(sizeof(*pts) * (np ? np : 1));
+    if (np) PetscCallMPI(MPI_Bcast(pts, (PetscMPIInt)(2 * np), MPIU_INT, 0, d->comm));
+    PetscCheck(np, d->comm, PETSC_ERR_FILE_OPEN, "%sthe old job %s has no restart points", where, m->restart_read_job);
+  } else {
+    np  = m->npost;
+    pts = malloc(sizeof(*pts) * np);
+    for (PetscInt k = 0; k < np; k++) pts[k][0] = m->post[2 * k], pts[k][1] = m->post[2 * k + 1];
+  }
+  SortPoints(pts, np, PETSC_FALSE); /* the frames in time order */
+  PetscCall(ExpectFor(d, 0, &ex));
+  PetscCall(PetscPrintf(d->comm, "thermoslide: POST OUTPUT of %" PetscInt_FMT " restart points of %s\n", np, m->restart_read_job));
+  for (PetscInt k = 0; k < np; k++) {
+    char      why[300] = "";
+    int       st       = 0;
+    PetscInt  nh, s;
+    PetscReal h;
+    PetscCall(PetscSNPrintf(d->rs_point, sizeof(d->rs_point), "%s.restart.%" PetscInt_FMT ".%" PetscInt_FMT ".h5", m->restart_read_job, pts[k][0], pts[k][1]));
+    PetscCall(CheckPoint(d, &ex, &st, why, sizeof(why), &nh));
+    if (st != 1) free(pts);
+    PetscCheck(st == 1, d->comm, PETSC_ERR_FILE_UNEXPECTED, "%srestart point %s %s %s", where, d->rs_point, st < 0 ? "was" : "is not usable:", why);
+    PetscCall(LoadHeader(d, nh));
+    s = d->rs_loop.step;
+    /* the steps up to the point's: each one's loads and boundary conditions from the state it started with */
+    for (; done_steps <= s; done_steps++) {
+      PetscCall(TslRestartStepStartLoad(d, done_steps, X));
+      PetscCall(TslProblemSetStep(d->prob, done_steps));
+    }
+    d->rs_resume = PETSC_TRUE;
+    PetscCall(TslRestartLoad(d, &d->rs_loop)); /* the state, the solution (and the one before it), the sums */
+    if (d->rs_loop.h_prev > 0) PetscCall(VecCopy(d->Xprev, Xold));
+    else PetscCall(VecCopy(X, Xold));
+    h = d->done_dt;
+    PetscCall(TslProblemSetTime(d->prob, d->rs_ptime, h, d->done_time));
+    PetscCall(TslProblemSetCapacityRate(d->prob, m->steps[s].steady || !(h > 0) ? 0.0 : 1.0 / h));
+    PetscCall(TslFramesSetRequests(d, &m->steps[s]));
+    {
+      TslHeatBalance hb;
+      PetscCall(TslProblemHeatBalance(d->prob, &hb)); /* the contact outputs at that state */
+    }
+    PetscCall(TslFramesWrite(d, s + 1, d->rs_loop.inc, d->done_time));
+    PetscCall(PetscPrintf(d->comm, "  frame of step %" PetscInt_FMT " increment %" PetscInt_FMT " (step time %g) from %s\n", s + 1, d->rs_loop.inc, (double)d->rs_loop.t,
+                          d->rs_point));
+  }
+  free(pts);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -157,6 +157,11 @@ typedef struct {
 PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname);
 PetscErrorCode TslRestartCopyOutput(Driver *d);
 PetscErrorCode TslRestartStepStart(Driver *d, PetscInt s, PetscReal *total_time);
+/* Step s's start from the point d->rs_point: its solution into X, the problem's time at the step's start. */
+PetscErrorCode TslRestartStepStartLoad(Driver *d, PetscInt s, Vec X);
+/* *POST OUTPUT: a frame of each point the deck names (or every point of the old job), recovered from its state with
+ * its step's output requests, in place of the steps. */
+PetscErrorCode TslRestartPostOutput(Driver *d);
 /* A procedure's own state in a point beyond the loop's (explicit steps: velocities, masses, forces, the element
  * increments; explicit.c): vectors of X's layout, and reals of each rank's own (NULL, 0 when none) */
 #define TSL_RESTART_MAXVEC 8

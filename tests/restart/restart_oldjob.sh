@@ -62,7 +62,7 @@ bad nostep "*RESTART, READ, STEP=9" "$out/nostep.inp:3: *RESTART, READ, STEP=9: 
 bad nooldjob "*RESTART, READ, STEP=2" "$out/nooldjob.inp:3: *RESTART, READ continues an old job: name it with -oldjob DIR/JOB" " "
 bad afternode "*NODE
  999, 0., 0.
-*RESTART, READ, STEP=2" "$out/afternode.inp:5: *RESTART, READ comes first in a restart deck"
+*RESTART, READ, STEP=2" "$out/afternode.inp:5: *RESTART, READ comes first in its deck"
 cp -r "$out/oldrun" "$out/nocopy" && rm "$out/nocopy/old.restart.inp"
 bad nocopy "*RESTART, READ, STEP=2" "the old job's deck copy $out/nocopy/old.restart.inp is not there" "-oldjob $out/nocopy/old"
 cp -r "$out/oldrun" "$out/corrupt"

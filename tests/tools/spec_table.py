@@ -49,9 +49,7 @@ BEGIN = "<!-- spec-table: begin (written by tests/tools/spec_table.py from a cte
 END = "<!-- spec-table: end -->"
 
 # The spec's decks without a counterpart in the suite, and why (each must name its reason).
-EXCEPTIONS = {
-    "eip2tssc_cpeg4rht_post": "a POST OUTPUT analysis of eip2tssc_cpeg4rht: it reads restart data (the restart issue, 49)",
-}
+EXCEPTIONS = {}
 
 # The spec's decks whose counterpart carries a time-dependent film coefficient (the spec: "eia2tssc.inp illustrates the
 # procedure to specify a time-dependent variation of the film coefficient"; make_decks.py --film-amplitude)
@@ -132,9 +130,9 @@ def parse(section):
 
 def candidates(d):
     """The test names (without rank suffix) a deck may be registered under, in order of preference."""
-    if d["kind"] != "run":
-        return []
     t = "sax2t" if "SAX2T" in d["types"] else d["types"][0].lower()
+    if d["kind"] == "post":  # a POST OUTPUT analysis of the deck before it: tests/restart/restart_post.sh
+        return ["restart_post_output_" + t]
     if d["procedure"] == "Explicit":
         job = "sliding_%s_explicit_%s_%s" % (d["series"], d["contact"], t)
         return ["explicit_spec_" + job, "explicit_" + job]
