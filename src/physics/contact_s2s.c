@@ -591,15 +591,22 @@ static PetscErrorCode NodalValues(TslProblem p, TslContactField which, PetscReal
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+PetscErrorCode TslS2SReserve(S2SPoint **pts, PetscInt *cap, PetscInt n)
+{
+  PetscFunctionBeginUser;
+  if (*cap < n) {
+    PetscCall(PetscFree(*pts));
+    *cap = n;
+    PetscCall(PetscMalloc1(*cap, pts));
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* dst[0..n) = src[0..n), dst grown as needed (committed <-> current point lists). */
 static PetscErrorCode CopyPoints(const S2SPoint *src, PetscInt n, S2SPoint **dst, PetscInt *cap, PetscInt *ndst)
 {
   PetscFunctionBeginUser;
-  if (*cap < n) {
-    PetscCall(PetscFree(*dst));
-    *cap = n;
-    PetscCall(PetscMalloc1(*cap, dst));
-  }
+  PetscCall(TslS2SReserve(dst, cap, n));
   if (n) PetscCall(PetscArraycpy(*dst, src, n));
   *ndst = n;
   PetscFunctionReturn(PETSC_SUCCESS);

@@ -34,6 +34,8 @@ struct _n_TslContactS2S {
 
 /* Shared by both dimensions (contact_s2s.c). */
 PetscErrorCode TslS2SPush(TslContactS2S s, const S2SPoint *pt);
+/* A point list of capacity *cap grown to hold n (its contents not kept). */
+PetscErrorCode TslS2SReserve(S2SPoint **pts, PetscInt *cap, PetscInt n);
 /* The secondary node a point of face fc stands for in the node-to-surface kernels (its weight and history),
  * and the local nodes of the point's expanded element: the face's, then the kernel element's others
  * (kn[1..nk), kn[0] being that stand-in node); *n of them. */

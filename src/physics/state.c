@@ -42,17 +42,6 @@ static void S2SPack(TslProblem p, char **at)
   Put(at, s->cslip_c, (size_t)p->nn * sizeof(PetscReal));
 }
 
-static PetscErrorCode Grow(S2SPoint **pt, PetscInt *cap, PetscInt n)
-{
-  PetscFunctionBeginUser;
-  if (*cap < n) {
-    PetscCall(PetscFree(*pt));
-    PetscCall(PetscMalloc1(n, pt));
-    *cap = n;
-  }
-  PetscFunctionReturn(PETSC_SUCCESS);
-}
-
 static PetscErrorCode S2SUnpack(TslProblem p, const char **at, const char *end)
 {
   TslContactS2S s = p->s2s;
@@ -69,8 +58,8 @@ static PetscErrorCode S2SUnpack(TslProblem p, const char **at, const char *end)
                "the restart point's surface-to-surface state has a face's points outside its list");
     s->face[i].first = f[0], s->face[i].npt = f[1], s->face[i].first_c = f[2], s->face[i].npt_c = f[3];
   }
-  PetscCall(Grow(&s->pt, &s->cap, n[0]));
-  PetscCall(Grow(&s->pt_c, &s->cap_c, n[1]));
+  PetscCall(TslS2SReserve(&s->pt, &s->cap, n[0]));
+  PetscCall(TslS2SReserve(&s->pt_c, &s->cap_c, n[1]));
   s->npt = n[0], s->npt_c = n[1];
   PetscCall(Take(at, end, s->pt, (size_t)n[0] * sizeof(S2SPoint)));
   PetscCall(Take(at, end, s->pt_c, (size_t)n[1] * sizeof(S2SPoint)));

@@ -112,12 +112,31 @@ static uint64_t Unbits(PetscReal r)
   return u;
 }
 
-static PetscErrorCode PointPath(Driver *d, PetscInt step, PetscInt inc, const char *suffix, char buf[], size_t len)
+/* The point of step (1-based) and increment inc of job, given as DIR/JOB (or JOB in the working directory). */
+static PetscErrorCode JobPointPath(const char *job, PetscInt step, PetscInt inc, char buf[], size_t len)
 {
   PetscFunctionBeginUser;
-  PetscCall(PetscSNPrintf(buf, len, "%s%s%s.restart.%" PetscInt_FMT ".%" PetscInt_FMT ".h5%s", d->rs_dir, d->rs_dir[0] ? "/" : "", d->rs_job, step, inc,
-                          suffix));
+  PetscCall(PetscSNPrintf(buf, len, "%s.restart.%" PetscInt_FMT ".%" PetscInt_FMT ".h5", job, step, inc));
   PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* ... of this run's job */
+static PetscErrorCode PointPath(Driver *d, PetscInt step, PetscInt inc, char buf[], size_t len)
+{
+  char job[PETSC_MAX_PATH_LEN + 300];
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSNPrintf(job, sizeof(job), "%s%s%s", d->rs_dir, d->rs_dir[0] ? "/" : "", d->rs_job));
+  PetscCall(JobPointPath(job, step, inc, buf, len));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* DIR/JOB into its directory (".": none given) and *base, the job's name in it */
+static void SplitJob(const char *job, char dir[], size_t len, const char **base)
+{
+  const char *slash = strrchr(job, '/');
+  snprintf(dir, len, "%.*s", slash ? (int)(slash - job) + (slash == job) : 1, slash ? job : ".");
+  *base = slash ? slash + 1 : job;
 }
 
 /* A vector of n local reals (a header on rank 0 only, one digest a rank, the state's bytes) */
@@ -240,7 +259,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCall(TslProblemStateSize(d->prob, &bytes));
   PetscCallMPI(MPI_Comm_size(d->comm, &size));
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
-  PetscCall(PointPath(d, loop->step + 1, loop->inc, "", path, sizeof(path)));
+  PetscCall(PointPath(d, loop->step + 1, loop->inc, path, sizeof(path)));
   PetscCall(TslOutputSync(d->out)); /* the frames the point counts are on disk, should the job be killed after it */
   PetscCall(PetscSNPrintf(tmp, sizeof(tmp), "%s.tmp", path));
   ns = loop->step + 1;
@@ -637,15 +656,15 @@ static int FindOutput(const char *dir, const char *job, PetscBool readonly, uint
 /* Rank 0: the points of job (DIR/JOB), into *pts (malloc'd), *np of them. */
 static void ListPoints(const char *job, PetscInt (**pts)[2], PetscInt *np)
 {
-  const char    *slash = strrchr(job, '/');
-  char           dir[PETSC_MAX_PATH_LEN] = ".", pfx[300];
+  const char    *base;
+  char           dir[PETSC_MAX_PATH_LEN], pfx[300];
   DIR           *dp;
   struct dirent *e;
   PetscInt       cap = 0;
 
   *np = 0, *pts = NULL;
-  if (slash) snprintf(dir, sizeof(dir), "%.*s", (int)(slash - job) + (slash == job), job);
-  snprintf(pfx, sizeof(pfx), "%s.restart.", slash ? slash + 1 : job);
+  SplitJob(job, dir, sizeof(dir), &base);
+  snprintf(pfx, sizeof(pfx), "%s.restart.", base);
   dp = opendir(dir);
   while (dp && (e = readdir(dp))) {
     long long s, i;
@@ -764,7 +783,8 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   int             found                         = 0;
   Expect          ex;
   PetscInt        np = 0, (*pts)[2] = NULL, nh_file = 0;
-  char            odir[PETSC_MAX_PATH_LEN] = "", ojob[256] = "", where[PETSC_MAX_PATH_LEN + 64] = "";
+  char            odir[PETSC_MAX_PATH_LEN] = "", where[PETSC_MAX_PATH_LEN + 64] = "";
+  const char     *ojob                     = "";
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
@@ -774,14 +794,11 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   /* d->rs_resume: -tsl_restart, read with the implicit procedure's options (driver.c), which continues this job's own
    * points; else a restart deck (*RESTART, READ with -oldjob) continues the old job's point it names */
   if (!d->rs_resume && m->restart_read_step) {
-    const char *slash = strrchr(m->restart_read_job, '/');
     char        loc[PETSC_MAX_PATH_LEN];
     d->rs_resume   = PETSC_TRUE;
     d->rs_oldjob   = PETSC_TRUE;
     d->rs_end_step = m->restart_read_end_step;
-    if (slash) PetscCall(PetscStrncpy(odir, m->restart_read_job, PetscMin(sizeof(odir), (size_t)(slash - m->restart_read_job) + 1)));
-    if (slash && !odir[0]) PetscCall(PetscStrncpy(odir, "/", sizeof(odir)));
-    PetscCall(PetscStrncpy(ojob, slash ? slash + 1 : m->restart_read_job, sizeof(ojob)));
+    SplitJob(m->restart_read_job, odir, sizeof(odir), &ojob);
     PetscCall(PetscSNPrintf(where, sizeof(where), "%s: *RESTART, READ: ", TslLocString(m, m->restart_read_loc, loc, sizeof(loc))));
   }
   if (!d->rs_resume) PetscFunctionReturn(PETSC_SUCCESS);
@@ -806,9 +823,8 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   for (PetscInt k = 0; k < np && !found; k++) {
     char why[300] = "";
     int  st       = 0;
-    if (d->rs_oldjob)
-      PetscCall(PetscSNPrintf(d->rs_point, sizeof(d->rs_point), "%s.restart.%" PetscInt_FMT ".%" PetscInt_FMT ".h5", m->restart_read_job, pts[k][0], pts[k][1]));
-    else PetscCall(PointPath(d, pts[k][0], pts[k][1], "", d->rs_point, sizeof(d->rs_point)));
+    if (d->rs_oldjob) PetscCall(JobPointPath(m->restart_read_job, pts[k][0], pts[k][1], d->rs_point, sizeof(d->rs_point)));
+    else PetscCall(PointPath(d, pts[k][0], pts[k][1], d->rs_point, sizeof(d->rs_point)));
     PetscCall(CheckPoint(d, &ex, &st, why, sizeof(why), &nh_file));
     if (st == 1) found = 1;
     else if (st < 0 || d->rs_oldjob) { /* the point a restart deck names cannot be passed over for another */
@@ -820,14 +836,12 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   if (!found) snprintf(msg, sizeof(msg), "-tsl_restart: no valid restart point of job %s in %s", jobname, d->rs_dir[0] ? d->rs_dir : ".");
   PetscCheck(found == 1, d->comm, PETSC_ERR_FILE_OPEN, "%s", msg);
   PetscCall(LoadHeader(d, nh_file));
-  {
-    PetscCheck(d->rs_loop.step >= 0 && d->rs_loop.step < m->nstep && (m->steps[d->rs_loop.step].explicit_dynamics ? d->rs_nextra > 0 : d->rs_nextra == 0),
-               d->comm, PETSC_ERR_FILE_UNEXPECTED, "%srestart point %s names step %" PetscInt_FMT ", which is of another procedure in this deck", where, d->rs_point,
-               d->rs_loop.step + 1);
-    PetscCheck(!d->rs_oldjob || (d->rs_loop.step + 1 == m->restart_read_step && d->rs_loop.inc == m->restart_read_inc), d->comm, PETSC_ERR_FILE_UNEXPECTED,
-               "%srestart point %s holds step %" PetscInt_FMT " increment %" PetscInt_FMT ", not the one its name says", where, d->rs_point, d->rs_loop.step + 1,
-               d->rs_loop.inc);
-  }
+  PetscCheck(d->rs_loop.step >= 0 && d->rs_loop.step < m->nstep && (m->steps[d->rs_loop.step].explicit_dynamics ? d->rs_nextra > 0 : d->rs_nextra == 0), d->comm,
+             PETSC_ERR_FILE_UNEXPECTED, "%srestart point %s names step %" PetscInt_FMT ", which is of another procedure in this deck", where, d->rs_point,
+             d->rs_loop.step + 1);
+  PetscCheck(!d->rs_oldjob || (d->rs_loop.step + 1 == m->restart_read_step && d->rs_loop.inc == m->restart_read_inc), d->comm, PETSC_ERR_FILE_UNEXPECTED,
+             "%srestart point %s holds step %" PetscInt_FMT " increment %" PetscInt_FMT ", not the one its name says", where, d->rs_point, d->rs_loop.step + 1,
+             d->rs_loop.inc);
   /* the earlier run's output, which this run's extends */
   {
     int err = 0;
@@ -837,7 +851,7 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
     PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, d->comm));
     PetscCheck(err >= 0, d->comm, PETSC_ERR_FILE_OPEN,
                "%srestart point %s: the output of the run that wrote it (%s.h5, .h5.part, .failed.h5 or .interrupted.h5 in %s, run %llx) is not there or not readable",
-               where, d->rs_point, d->rs_oldjob ? ojob : jobname, d->rs_oldjob ? (odir[0] ? odir : ".") : (d->rs_dir[0] ? d->rs_dir : "."),
+               where, d->rs_point, d->rs_oldjob ? ojob : jobname, d->rs_oldjob ? odir : (d->rs_dir[0] ? d->rs_dir : "."),
                (unsigned long long)d->rs_run_id);
     PetscCheck(!err, d->comm, PETSC_ERR_FILE_WRITE, "restart: cannot move the interrupted run's output aside: %s", strerror(err));
     PetscCallMPI(MPI_Bcast(d->rs_src_h5, sizeof(d->rs_src_h5), MPI_CHAR, 0, d->comm));
@@ -1002,7 +1016,7 @@ PetscErrorCode TslRestartPostOutput(Driver *d)
     int       st       = 0;
     PetscInt  nh, s;
     PetscReal h;
-    PetscCall(PetscSNPrintf(d->rs_point, sizeof(d->rs_point), "%s.restart.%" PetscInt_FMT ".%" PetscInt_FMT ".h5", m->restart_read_job, pts[k][0], pts[k][1]));
+    PetscCall(JobPointPath(m->restart_read_job, pts[k][0], pts[k][1], d->rs_point, sizeof(d->rs_point)));
     PetscCall(CheckPoint(d, &ex, &st, why, sizeof(why), &nh));
     if (st != 1) free(pts);
     PetscCheck(st == 1, d->comm, PETSC_ERR_FILE_UNEXPECTED, "%srestart point %s %s %s", where, d->rs_point, st < 0 ? "was" : "is not usable:", why);
