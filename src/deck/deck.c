@@ -3249,6 +3249,10 @@ static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw)
       PetscCall(PetscStrncpy(r->var[r->nvar++], v, sizeof(r->var[0])));
     }
   }
+  if (!r->nvar && !r->print) { /* no data line: CalculiX's defaults (*NODE FILE U; *EL FILE S and E), not a frame of nothing */
+    PetscCall(PetscStrncpy(r->var[r->nvar++], node ? "U" : "S", sizeof(r->var[0])));
+    if (!node) PetscCall(PetscStrncpy(r->var[r->nvar++], "E", sizeof(r->var[0])));
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
