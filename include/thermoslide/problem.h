@@ -75,6 +75,21 @@ PetscErrorCode TslProblemStateUnpack(TslProblem prob, const void *buf, size_t nb
 /* A digest of this rank's layout (nodes with their ids and coordinates, dofs, elements, contact nodes), for checking that a
  * continuation has the model and partition its restart point was written with. */
 PetscErrorCode TslProblemLayoutDigest(TslProblem prob, uint64_t *digest);
+/* The same state in the deck's own terms, for a continuation on another rank count or partition: blobs of reals, each
+ * under a key of TSL_BLOB_KEY integers made of natural indices (a kind, then e.g. the pair and the node), local indices
+ * written as natural ones (a pairing's main face as its first three nodes). StateBlobs gives this rank's (*n of them,
+ * keys key[TSL_BLOB_KEY*i..], lengths len[i], the values one after the other in val; PetscFree each array).
+ * StateFromBlobs asks fetch, collectively (a fixed number of rounds on every rank), for the blobs this rank's
+ * contact nodes, plastic elements and faces need, and takes them in; the solution must be in place already (the 3D
+ * nodal normals are computed from it). A state the point lacks, or a pairing with a main face this partition does
+ * not hold, is an error. */
+#define TSL_BLOB_KEY 5
+typedef PetscErrorCode (*TslBlobFetch)(void *ctx, PetscInt n, const int64_t key[], const PetscInt len[], PetscReal val[], PetscBool found[]);
+PetscErrorCode TslProblemStateBlobs(TslProblem prob, PetscInt *n, int64_t **key, PetscInt **len, PetscReal **val);
+PetscErrorCode TslProblemStateFromBlobs(TslProblem prob, TslBlobFetch fetch, void *ctx);
+/* Collective: a digest of the mesh (nodes with ids and coordinates, elements, contact nodes) independent of the rank
+ * count, for checking that a continuation on another one has the model its point was written with. */
+PetscErrorCode TslProblemMeshDigest(TslProblem prob, uint64_t *digest);
 /* A digest of the model's materials, sections, interactions and contact pairs (the same on every rank), for checking
  * that a continuation has the physics its restart point was written with. */
 PetscErrorCode TslProblemModelDigest(TslProblem prob, uint64_t *digest);

@@ -14,6 +14,7 @@
 #pragma once
 #include <thermoslide/compat.h>
 #include <petscvec.h> /* TslGhostUpdate */
+#include <stdint.h>
 
 typedef enum { TSL_FAIL_NONE = 0, TSL_FAIL_CONVERGENCE = 1, TSL_FAIL_FATAL = 2 } TslFailure;
 
@@ -109,3 +110,11 @@ int TslStopLocal(void);
 PetscErrorCode TslStopRequested(MPI_Comm comm, int *sig);
 /* "SIGTERM", ... */
 const char *TslStopName(int sig);
+
+/* Collective rendezvous by key (src/sys/rendezvous.c): every rank offers na answers (keys akey[kl*i..], w reals
+ * aval[w*i..] each) and asks nq questions (keys qkey[kl*q..]); each question gets the values of the answer with its
+ * key in qval[w*q..] and found[q] true, or found[q] false when no rank offered that key (of equal keys the first
+ * offered is taken). The answers and questions meet on the rank their key hashes to, so nothing of global size is
+ * held anywhere. */
+PetscErrorCode TslRendezvous(MPI_Comm comm, PetscInt kl, PetscInt w, PetscInt na, const int64_t akey[], const PetscReal aval[], PetscInt nq, const int64_t qkey[],
+                             PetscReal qval[], PetscBool found[]);

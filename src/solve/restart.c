@@ -13,10 +13,14 @@
  *   state    the problem's committed state as bytes per rank (contact nodes, 3D surface normals, plastic points);
  *   extra_j  in an explicit step's point, the procedure's own state (TslRestartExtra, explicit.c): its vectors
  *            (velocity, masses, forces) and extra_real, its reals per rank (the loop's, the element increments);
+ *   natnode  the natural index of each node block of the vectors (a point read on another rank count: NaturalMap);
+ *   blobs    the state in natural terms (TslProblemStateBlobs) as records of keys and reals (LoadState);
  *   checksum one order-independent checksum per dataset above (the sum of its values' bits modulo 2^64), verified
  *            before a point is used, so that a corrupted point is passed over for the one before it.
- * The vectors are in PETSc's parallel layout and the state in each rank's own, so a point continues on the rank
- * count and partition it was written with (checked: another count is an error that says so). */
+ * The vectors are in PETSc's parallel layout and the state in each rank's own: on the rank count and partition the
+ * point was written with they are read as they stand (bit for bit). On another count the vectors are scattered to this
+ * run's layout through natnode and the state is read from blobs by a rendezvous on their keys (TslRendezvous); an
+ * explicit step's reals are per rank, so its points continue on their own rank count only. */
 #include "solve_impl.h"
 #include <petscviewerhdf5.h>
 #include <dirent.h>
@@ -26,7 +30,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#define RS_VERSION 4
+#define RS_VERSION 5
 enum {
   H_VERSION = 0,
   H_NRANKS,
@@ -48,6 +52,8 @@ enum {
   H_MODEL,  /* TslProblemModelDigest: materials, sections, interactions */
   H_NEXTRA, /* the procedure's own datasets (TslRestartExtra): its vectors and its reals, 0 when none */
   H_PTIME,  /* the problem's step time as set (the last increment's start plus its length: the period to a rounding) */
+  H_MESH,   /* TslProblemMeshDigest: the mesh and contact nodes, whatever the rank count */
+  H_NBLOB,  /* records of the dataset blobs (the state in natural terms) */
   H_SUMS,
   H_TSTART = H_SUMS + 24 /* then 2 per step: total time at its start, step time the step before ended at */
 };
@@ -202,8 +208,59 @@ static PetscErrorCode Checksum(Vec v, uint64_t *ck)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The checksums' places: layout, state, X, Xprev, then start_k, then the extra datasets */
-enum { CK_LAYOUT = 0, CK_STATE, CK_X, CK_XPREV, CK_START };
+/* The checksums' places: layout, state, X, Xprev, natnode, blobs, then start_k, then the extra datasets */
+enum { CK_LAYOUT = 0, CK_STATE, CK_X, CK_XPREV, CK_NATNODE, CK_BLOBS, CK_START };
+
+/* The state in natural terms (TslProblemStateBlobs) as records of BLOB_KL keys (the blob's, then the chunk's number)
+ * and BLOB_W reals, a blob cut into chunks of BLOB_W reals (at least one) */
+#define BLOB_KL  (TSL_BLOB_KEY + 1)
+#define BLOB_W   16
+#define BLOB_REC (BLOB_KL + BLOB_W)
+static PetscInt BlobChunks(PetscInt len)
+{
+  return PetscMax(1, (len + BLOB_W - 1) / BLOB_W);
+}
+
+/* This rank's share of the points' datasets in natural terms: natnode, the natural index of each owned node (the
+ * blocks of X in order), and blobs, the state's records (*nrec of them) */
+static PetscErrorCode NaturalData(Driver *d, Vec *nv, Vec *bv, PetscInt *nrec)
+{
+  const TslModel *m;
+  PetscInt        n, *len, nown, ndof;
+  int64_t        *key;
+  PetscReal      *val;
+  PetscScalar    *a;
+  Vec             X;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCall(TslProblemGetSolution(d->prob, &X));
+  PetscCall(VecGetLocalSize(X, &nown));
+  PetscCall(VecGetBlockSize(X, &ndof));
+  nown /= ndof;
+  PetscCall(LocalVec(d->comm, nown, "natnode", nv));
+  PetscCall(VecGetArray(*nv, &a));
+  for (PetscInt l = 0; l < nown; l++) a[l] = (PetscReal)m->node_nat[l];
+  PetscCall(VecRestoreArray(*nv, &a));
+  PetscCall(TslProblemStateBlobs(d->prob, &n, &key, &len, &val));
+  *nrec = 0;
+  for (PetscInt i = 0; i < n; i++) *nrec += BlobChunks(len[i]);
+  PetscCall(LocalVec(d->comm, *nrec * BLOB_REC, "blobs", bv));
+  PetscCall(VecGetArray(*bv, &a));
+  for (PetscInt i = 0, r = 0, off = 0; i < n; off += len[i++])
+    for (PetscInt c = 0; c < BlobChunks(len[i]); c++, r++) {
+      PetscScalar *rec = &a[r * BLOB_REC];
+      for (PetscInt k = 0; k < TSL_BLOB_KEY; k++) rec[k] = (PetscReal)key[TSL_BLOB_KEY * i + k];
+      rec[TSL_BLOB_KEY] = (PetscReal)c;
+      for (PetscInt j = 0; j < BLOB_W; j++) rec[BLOB_KL + j] = c * BLOB_W + j < len[i] ? val[off + c * BLOB_W + j] : 0;
+    }
+  PetscCall(VecRestoreArray(*bv, &a));
+  PetscCall(PetscFree(key));
+  PetscCall(PetscFree(len));
+  PetscCall(PetscFree(val));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, nrec, 1, MPIU_INT, MPI_SUM, d->comm));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
 
 static void ExtraName(PetscInt j, PetscInt nextra, char name[], size_t len)
 {
@@ -247,9 +304,10 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscInt        nh, ns;
   char            tmp[PETSC_MAX_PATH_LEN + 8], path[PETSC_MAX_PATH_LEN];
   PetscViewer     vw;
-  Vec             hv, dv, sv, cv, X;
+  Vec             hv, dv, sv, cv, X, nv, bv;
   double          t0 = MPI_Wtime();
-  uint64_t        digest, model, *ck;
+  uint64_t        digest, model, mesh, *ck;
+  PetscInt        nrec;
   int             err = 0;
   const PetscInt  nextra = extra ? extra->nvec + 1 : 0;
   Vec             ev     = NULL;
@@ -265,6 +323,8 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   ns = loop->step + 1;
   nh = HeaderLength(m->nstep);
   PetscCall(TslProblemModelDigest(d->prob, &model));
+  PetscCall(TslProblemMeshDigest(d->prob, &mesh));
+  PetscCall(NaturalData(d, &nv, &bv, &nrec));
 
   PetscCall(LocalVec(d->comm, rank ? 0 : nh, "header", &hv));
   if (!rank) {
@@ -295,6 +355,8 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     h[H_MODEL]     = Bits(model);
     h[H_NEXTRA]    = (PetscReal)nextra;
     h[H_PTIME]     = TslProblemGetStepTime(d->prob);
+    h[H_MESH]      = Bits(mesh);
+    h[H_NBLOB]     = (PetscReal)nrec;
     SaveSums(d, &h[H_SUMS]);
     for (PetscInt k = 0; k < 2 * ns; k++) h[H_TSTART + k] = d->rs_tstart[k];
     PetscCall(VecRestoreArray(hv, &h));
@@ -324,6 +386,8 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCall(Checksum(X, &ck[CK_X]));
   ck[CK_XPREV] = 0;
   if (loop->h_prev > 0 && d->Xprev) PetscCall(Checksum(d->Xprev, &ck[CK_XPREV]));
+  PetscCall(Checksum(nv, &ck[CK_NATNODE]));
+  PetscCall(Checksum(bv, &ck[CK_BLOBS]));
   for (PetscInt k = 0; k < ns; k++) PetscCall(Checksum(d->rs_xstart[k], &ck[CK_START + k]));
   if (extra) {
     PetscScalar *a;
@@ -348,6 +412,8 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCall(VecView(dv, vw));
   PetscCall(VecView(sv, vw));
   PetscCall(VecView(cv, vw));
+  PetscCall(VecView(nv, vw));
+  PetscCall(VecView(bv, vw));
   PetscCall(ViewNamed(X, "X", vw));
   if (loop->h_prev > 0 && d->Xprev) PetscCall(ViewNamed(d->Xprev, "Xprev", vw));
   for (PetscInt k = 0; k < ns; k++) {
@@ -370,6 +436,8 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCall(VecDestroy(&sv));
   PetscCall(VecDestroy(&cv));
   PetscCall(VecDestroy(&ev));
+  PetscCall(VecDestroy(&nv));
+  PetscCall(VecDestroy(&bv));
   if (!rank && rename(tmp, path)) err = errno;
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, d->comm));
   PetscCheck(!err, d->comm, PETSC_ERR_FILE_WRITE, "Cannot rename the restart point %s to %s: %s", tmp, path, strerror(err));
@@ -399,9 +467,9 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
 /* What a continuation expects of a point: the header's length, the rank count, the model digest, the global lengths of
  * X and of the state */
 typedef struct {
-  PetscInt    nh, nx;
+  PetscInt    nh, nx, bs;
   PetscMPIInt size;
-  uint64_t    model;
+  uint64_t    model, mesh;
   PetscInt    any_steps; /* > 0: a point of another deck with at least this many steps (-oldjob), its header of any length */
 } Expect;
 
@@ -428,7 +496,8 @@ static PetscBool HasDataset(hid_t f, const char *name, PetscInt n)
  * truncated, unreadable) or one that cannot be continued with this deck and rank count at all (-1: another rank count,
  * model or mesh); the reason in why, the point's step, whether it holds Xprev and its extra datasets in h_step,
  * h_xprev, h_nextra, its header's length in h_len. */
-static int PointValid(const char *path, const Expect *e, char why[], size_t len, PetscInt *h_step, PetscInt *h_xprev, PetscInt *h_nextra, PetscInt *h_len)
+static int PointValid(const char *path, const Expect *e, char why[], size_t len, PetscInt *h_step, PetscInt *h_xprev, PetscInt *h_nextra, PetscInt *h_len, PetscInt *h_nranks,
+                      PetscInt *h_nblob)
 {
   H5E_auto2_t efunc;
   void       *edata;
@@ -473,19 +542,20 @@ static int PointValid(const char *path, const Expect *e, char why[], size_t len,
     ok = -1;
     goto done;
   }
-  if ((PetscMPIInt)h[H_NRANKS] != e->size) {
-    snprintf(why, len, "written on %d ranks: continue it on %d (another rank count is not supported yet)", (int)h[H_NRANKS], (int)h[H_NRANKS]);
-    ok = -1;
-    goto done;
-  }
   if (Unbits(h[H_MODEL]) != e->model) {
     snprintf(why, len, "written for a model with other materials, sections or contact interactions than this deck's");
     ok = -1;
     goto done;
   }
-  if (!HasDataset(f, "X", e->nx) || !HasDataset(f, "layout", 2 * e->size)) {
-    snprintf(why, len, "written for another mesh (its solution or contact state has another size than this deck's)");
+  if (!HasDataset(f, "X", e->nx) || Unbits(h[H_MESH]) != e->mesh) {
+    snprintf(why, len, "written for another mesh (its nodes, elements or contact nodes differ from this deck's)");
     ok = -1;
+    goto done;
+  }
+  *h_nranks = (PetscInt)h[H_NRANKS];
+  *h_nblob  = (PetscInt)h[H_NBLOB];
+  if (*h_nranks < 1 || *h_nblob < 0 || !HasDataset(f, "layout", 2 * *h_nranks) || !HasDataset(f, "natnode", e->nx / e->bs) || !HasDataset(f, "blobs", *h_nblob * BLOB_REC)) {
+    snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
     goto done;
   }
   *h_len    = (PetscInt)dims[0];
@@ -528,7 +598,8 @@ done:
 
 /* Collective: every dataset of the point read and checked against its checksum, and this rank's layout against the
  * one written. *status: 1 sound, 0 corrupted (why), -1 another model or partition (why). */
-static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nextra, PetscInt *nstate_local, int *status, char why[], size_t len)
+static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nextra, PetscBool portable, PetscInt *nstate_local, int *status,
+                                 char why[], size_t len)
 {
   PetscViewer vw;
   Vec         cv, v, X;
@@ -555,12 +626,18 @@ static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, Pet
   PetscCall(VecDestroy(&cv));
   PetscCallMPI(MPI_Bcast(want, (PetscMPIInt)nck, MPI_UINT64_T, 0, d->comm));
   *status = 1;
-  /* the layout: this rank's digest against the one its rank wrote, and the length of its state */
-  PetscCall(LocalVec(d->comm, 2, "layout", &v));
+  /* the layout: this rank's digest against the one its rank wrote, and the length of its state (on another rank count
+   * the point is read in natural terms, its per-rank data only checked) */
+  if (portable) {
+    PetscCall(VecCreate(d->comm, &v));
+    PetscCall(VecSetType(v, VECMPI));
+    PetscCall(PetscObjectSetName((PetscObject)v, "layout"));
+  } else PetscCall(LocalVec(d->comm, 2, "layout", &v));
   PetscCall(VecLoad(v, vw));
   PetscCall(Checksum(v, &got));
+  *nstate_local = 0;
   if (got != want[CK_LAYOUT]) *status = 0, which = "layout";
-  else {
+  else if (!portable) {
     const PetscScalar *a;
     PetscCall(TslProblemLayoutDigest(d->prob, &digest));
     PetscCall(VecGetArrayRead(v, &a));
@@ -575,25 +652,23 @@ static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, Pet
     }
   }
   PetscCall(VecDestroy(&v));
+  (void)nx;
   for (PetscInt k = CK_STATE; k < nck && *status == 1; k++) {
-    char        name[32];
-    PetscInt    n = k == CK_STATE ? *nstate_local : nx;
+    char           name[32];
     const PetscInt j = k - (CK_START + step + 1); /* an extra dataset's index */
+    const char    *names[CK_START] = {"layout", "state", "X", "Xprev", "natnode", "blobs"};
     if (k == CK_XPREV && !xprev) continue;
-    if (k == CK_STATE) PetscCall(PetscStrncpy(name, "state", sizeof(name)));
-    else if (k == CK_X) PetscCall(PetscStrncpy(name, "X", sizeof(name)));
-    else if (k == CK_XPREV) PetscCall(PetscStrncpy(name, "Xprev", sizeof(name)));
+    if (k < CK_START) PetscCall(PetscStrncpy(name, names[k], sizeof(name)));
     else if (j < 0) PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, k - CK_START));
     else ExtraName(j, nextra, name, sizeof(name));
-    if (j == nextra - 1) { /* the procedure's reals: their sizes are its own, the checksum independent of the ranks' shares */
-      PetscCall(VecCreate(d->comm, &v));
-      PetscCall(VecSetType(v, VECMPI));
-      PetscCall(PetscObjectSetName((PetscObject)v, name));
-    } else PetscCall(LocalVec(d->comm, n, name, &v));
+    /* in PETSc's split: the checksum is independent of the ranks' shares */
+    PetscCall(VecCreate(d->comm, &v));
+    PetscCall(VecSetType(v, VECMPI));
+    PetscCall(PetscObjectSetName((PetscObject)v, name));
     PetscCall(VecLoad(v, vw));
     PetscCall(Checksum(v, &got));
     PetscCall(VecDestroy(&v));
-    if (got != want[k]) *status = 0, which = k == CK_STATE ? "state" : k == CK_X ? "X" : k == CK_XPREV ? "Xprev" : j < 0 ? "start" : "explicit";
+    if (got != want[k]) *status = 0, which = k < CK_START ? names[k] : j < 0 ? "start" : "explicit";
   }
   PetscCall(PetscViewerDestroy(&vw));
   PetscCall(PetscFree(want));
@@ -703,7 +778,9 @@ static PetscErrorCode ExpectFor(Driver *d, PetscInt any_steps, Expect *ex)
   PetscCall(TslProblemGetModel(d->prob, &m));
   PetscCall(TslProblemGetSolution(d->prob, &X));
   PetscCall(VecGetSize(X, &ex->nx));
+  PetscCall(VecGetBlockSize(X, &ex->bs));
   PetscCallMPI(MPI_Comm_size(d->comm, &ex->size));
+  PetscCall(TslProblemMeshDigest(d->prob, &ex->mesh));
   ex->nh        = HeaderLength(m->nstep);
   ex->any_steps = any_steps;
   PetscCall(TslProblemModelDigest(d->prob, &ex->model));
@@ -715,16 +792,19 @@ static PetscErrorCode ExpectFor(Driver *d, PetscInt any_steps, Expect *ex)
 static PetscErrorCode CheckPoint(Driver *d, const Expect *ex, int *st, char why[], size_t len, PetscInt *nh_file)
 {
   PetscMPIInt rank;
-  PetscInt    hs[4] = {0, 0, 0, 0}, nstate_local = 0;
+  PetscInt    hs[6] = {0, 0, 0, 0, 0, 0}, nstate_local = 0;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
-  if (!rank) *st = PointValid(d->rs_point, ex, why, len, &hs[0], &hs[1], &hs[2], &hs[3]);
+  if (!rank) *st = PointValid(d->rs_point, ex, why, len, &hs[0], &hs[1], &hs[2], &hs[3], &hs[4], &hs[5]);
   PetscCallMPI(MPI_Bcast(st, 1, MPI_INT, 0, d->comm));
-  PetscCallMPI(MPI_Bcast(hs, 4, MPIU_INT, 0, d->comm));
+  PetscCallMPI(MPI_Bcast(hs, 6, MPIU_INT, 0, d->comm));
   PetscCallMPI(MPI_Bcast(why, (PetscMPIInt)len, MPI_CHAR, 0, d->comm));
-  if (*st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], &nstate_local, st, why, len));
-  if (*st == 1) d->rs_nextra = hs[2], d->rs_nstate = nstate_local, *nh_file = hs[3];
+  if (*st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], (PetscBool)(hs[4] != ex->size), &nstate_local, st, why, len));
+  if (*st == 1) {
+    d->rs_nextra = hs[2], d->rs_nstate = nstate_local, *nh_file = hs[3];
+    d->rs_portable = (PetscBool)(hs[4] != ex->size), d->rs_nblob = hs[5], d->rs_nranks = hs[4];
+  }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -839,6 +919,9 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   PetscCheck(d->rs_loop.step >= 0 && d->rs_loop.step < m->nstep && (m->steps[d->rs_loop.step].explicit_dynamics ? d->rs_nextra > 0 : d->rs_nextra == 0), d->comm,
              PETSC_ERR_FILE_UNEXPECTED, "%srestart point %s names step %" PetscInt_FMT ", which is of another procedure in this deck", where, d->rs_point,
              d->rs_loop.step + 1);
+  PetscCheck(!d->rs_portable || !m->steps[d->rs_loop.step].explicit_dynamics, d->comm, PETSC_ERR_SUP,
+             "%srestart point %s was written on %" PetscInt_FMT " ranks in an explicit step: such a point continues on the rank count it was written with (%" PetscInt_FMT ")", where,
+             d->rs_point, d->rs_nranks, d->rs_nranks);
   PetscCheck(!d->rs_oldjob || (d->rs_loop.step + 1 == m->restart_read_step && d->rs_loop.inc == m->restart_read_inc), d->comm, PETSC_ERR_FILE_UNEXPECTED,
              "%srestart point %s holds step %" PetscInt_FMT " increment %" PetscInt_FMT ", not the one its name says", where, d->rs_point, d->rs_loop.step + 1,
              d->rs_loop.inc);
@@ -859,6 +942,144 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   }
   PetscCall(PetscPrintf(d->comm, "thermoslide: continuing from restart point %s: step %" PetscInt_FMT " increment %" PetscInt_FMT ", step time %g (%" PetscInt_FMT " frames and %" PetscInt_FMT " history rows of %s kept)\n",
                         d->rs_point, d->rs_loop.step + 1, d->rs_loop.inc, (double)d->rs_loop.t, d->rs_nframe, d->rs_nrow, d->rs_src_h5));
+  if (d->rs_portable)
+    PetscCall(PetscPrintf(d->comm, "thermoslide: the point was written on %" PetscInt_FMT " ranks: its solution and state are read by node, element and face\n", d->rs_nranks));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Another rank count: the scatter from a point's vector as this run reads it (PETSc's split of the file's node
+ * blocks) to this run's layout, found through the natural index of each block (natnode) */
+static PetscErrorCode NaturalMap(Driver *d, PetscViewer vw)
+{
+  const TslModel *m;
+  Vec             X, nv;
+  PetscInt        bs, N, ns = PETSC_DECIDE, nn, s0, nown, bad = 0, *from, *to;
+  int64_t        *akey, *qkey;
+  PetscReal      *aval, *qval;
+  PetscBool      *found;
+  IS              isf, ist;
+
+  PetscFunctionBeginUser;
+  if (d->rs_map) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCall(TslProblemGetSolution(d->prob, &X));
+  PetscCall(VecGetBlockSize(X, &bs));
+  PetscCall(VecGetSize(X, &N));
+  PetscCall(VecGetLocalSize(X, &nown));
+  nn = N / bs, nown /= bs;
+  PetscCall(PetscSplitOwnership(d->comm, &ns, &nn));
+  PetscCall(LocalVec(d->comm, ns, "natnode", &nv));
+  PetscCall(VecLoad(nv, vw));
+  PetscCall(VecGetOwnershipRange(nv, &s0, NULL));
+  PetscCall(PetscMalloc6(nown + 1, &akey, nown + 1, &aval, ns + 1, &qkey, ns + 1, &qval, ns + 1, &found, 2 * (ns * bs + 1), &from));
+  to = from + ns * bs + 1;
+  for (PetscInt l = 0; l < nown; l++) akey[l] = m->node_nat[l], aval[l] = (PetscReal)m->node_gnum[l];
+  {
+    const PetscScalar *a;
+    PetscCall(VecGetArrayRead(nv, &a));
+    for (PetscInt i = 0; i < ns; i++) qkey[i] = (int64_t)PetscRealPart(a[i]);
+    PetscCall(VecRestoreArrayRead(nv, &a));
+  }
+  PetscCall(TslRendezvous(d->comm, 1, 1, nown, akey, aval, ns, qkey, qval, found));
+  for (PetscInt i = 0; i < ns; i++) {
+    if (!found[i]) bad++;
+    for (PetscInt c = 0; c < bs; c++) from[i * bs + c] = (s0 + i) * bs + c, to[i * bs + c] = found[i] ? (PetscInt)qval[i] * bs + c : -1;
+  }
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPIU_INT, MPI_SUM, d->comm));
+  PetscCheck(!bad, d->comm, PETSC_ERR_FILE_UNEXPECTED, "restart point %s: %" PetscInt_FMT " of its nodes are not this model's", d->rs_point, bad);
+  PetscCall(ISCreateGeneral(d->comm, ns * bs, from, PETSC_COPY_VALUES, &isf));
+  PetscCall(ISCreateGeneral(d->comm, ns * bs, to, PETSC_COPY_VALUES, &ist));
+  PetscCall(VecCreate(d->comm, &d->rs_fvec));
+  PetscCall(VecSetSizes(d->rs_fvec, ns * bs, PETSC_DETERMINE));
+  PetscCall(VecSetBlockSize(d->rs_fvec, bs));
+  PetscCall(VecSetType(d->rs_fvec, VECMPI));
+  PetscCall(VecScatterCreate(d->rs_fvec, isf, X, ist, &d->rs_map));
+  PetscCall(ISDestroy(&isf));
+  PetscCall(ISDestroy(&ist));
+  PetscCall(PetscFree6(akey, aval, qkey, qval, found, from));
+  PetscCall(VecDestroy(&nv));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Vector name of the point into v: as written (the same rank count) or through the natural map */
+static PetscErrorCode LoadVector(Driver *d, PetscViewer vw, const char *name, Vec v)
+{
+  Vec f;
+
+  PetscFunctionBeginUser;
+  if (!d->rs_portable) {
+    PetscCall(LoadNamed(v, name, vw));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  PetscCall(NaturalMap(d, vw));
+  PetscCall(VecDuplicate(d->rs_fvec, &f));
+  PetscCall(PetscObjectSetName((PetscObject)f, name));
+  PetscCall(VecLoad(f, vw));
+  PetscCall(VecScatterBegin(d->rs_map, f, v, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecScatterEnd(d->rs_map, f, v, INSERT_VALUES, SCATTER_FORWARD));
+  PetscCall(VecDestroy(&f));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The point's state records, this rank's share of them, as the answers of FetchBlobs */
+typedef struct {
+  MPI_Comm   comm;
+  PetscInt   na;
+  int64_t   *akey;
+  PetscReal *aval;
+} PointBlobs;
+
+static PetscErrorCode FetchBlobs(void *ctx, PetscInt n, const int64_t key[], const PetscInt len[], PetscReal val[], PetscBool found[])
+{
+  PointBlobs *pb = ctx;
+  PetscInt    nq = 0, q = 0, off = 0;
+  int64_t    *qkey;
+  PetscReal  *qval;
+  PetscBool  *qf;
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < n; i++) nq += BlobChunks(len[i]);
+  PetscCall(PetscMalloc3(nq * BLOB_KL + 1, &qkey, nq * BLOB_W + 1, &qval, nq + 1, &qf));
+  for (PetscInt i = 0; i < n; i++)
+    for (PetscInt c = 0; c < BlobChunks(len[i]); c++, q++) {
+      for (PetscInt k = 0; k < TSL_BLOB_KEY; k++) qkey[q * BLOB_KL + k] = key[TSL_BLOB_KEY * i + k];
+      qkey[q * BLOB_KL + TSL_BLOB_KEY] = c;
+    }
+  PetscCall(TslRendezvous(pb->comm, BLOB_KL, BLOB_W, pb->na, pb->akey, pb->aval, nq, qkey, qval, qf));
+  q = 0;
+  for (PetscInt i = 0; i < n; off += len[i++]) {
+    found[i] = PETSC_TRUE;
+    for (PetscInt c = 0; c < BlobChunks(len[i]); c++, q++) {
+      found[i] = (PetscBool)(found[i] && qf[q]);
+      for (PetscInt j = 0; j < BLOB_W && c * BLOB_W + j < len[i]; j++) val[off + c * BLOB_W + j] = qval[q * BLOB_W + j];
+    }
+  }
+  PetscCall(PetscFree3(qkey, qval, qf));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Another rank count: the state from the point's records (the solution already in place) */
+static PetscErrorCode LoadState(Driver *d, PetscViewer vw)
+{
+  PointBlobs         pb = {d->comm, PETSC_DECIDE, NULL, NULL};
+  PetscInt           nrec = d->rs_nblob;
+  Vec                bv;
+  const PetscScalar *a;
+
+  PetscFunctionBeginUser;
+  PetscCall(PetscSplitOwnership(d->comm, &pb.na, &nrec));
+  PetscCall(LocalVec(d->comm, pb.na * BLOB_REC, "blobs", &bv));
+  PetscCall(VecLoad(bv, vw));
+  PetscCall(PetscMalloc2(pb.na * BLOB_KL + 1, &pb.akey, pb.na * BLOB_W + 1, &pb.aval));
+  PetscCall(VecGetArrayRead(bv, &a));
+  for (PetscInt r = 0; r < pb.na; r++) {
+    for (PetscInt k = 0; k < BLOB_KL; k++) pb.akey[r * BLOB_KL + k] = (int64_t)PetscRealPart(a[r * BLOB_REC + k]);
+    for (PetscInt j = 0; j < BLOB_W; j++) pb.aval[r * BLOB_W + j] = PetscRealPart(a[r * BLOB_REC + BLOB_KL + j]);
+  }
+  PetscCall(VecRestoreArrayRead(bv, &a));
+  PetscCall(VecDestroy(&bv));
+  PetscCall(TslProblemStateFromBlobs(d->prob, FetchBlobs, &pb));
+  PetscCall(PetscFree2(pb.akey, pb.aval));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -880,7 +1101,7 @@ PetscErrorCode TslRestartStepStartLoad(Driver *d, PetscInt s, Vec X)
   if (!d->rs_xstart[s]) PetscCall(VecDuplicate(X, &d->rs_xstart[s]));
   PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, s));
   PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
-  PetscCall(LoadNamed(d->rs_xstart[s], name, vw));
+  PetscCall(LoadVector(d, vw, name, d->rs_xstart[s]));
   PetscCall(PetscViewerDestroy(&vw));
   PetscCall(VecCopy(d->rs_xstart[s], X));
   PetscCall(TslProblemSetTime(d->prob, d->rs_tstart[2 * s + 1], 0, d->rs_tstart[2 * s]));
@@ -917,19 +1138,22 @@ PetscErrorCode TslRestartLoad(Driver *d, TslRestartLoop *loop)
   PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
   /* the layout and the checksums were verified when the point was chosen (TslRestartSetUp), this rank's state length
    * read there */
-  PetscCall(LocalVec(d->comm, d->rs_nstate, "state", &sv));
-  PetscCall(VecLoad(sv, vw));
-  PetscCall(VecGetArray(sv, &a));
-  PetscCall(TslProblemStateUnpack(d->prob, a, sizeof(PetscScalar) * (size_t)d->rs_nstate));
-  PetscCall(VecRestoreArray(sv, &a));
-  PetscCall(VecDestroy(&sv));
-  PetscCall(LoadNamed(X, "X", vw));
+  if (!d->rs_portable) {
+    PetscCall(LocalVec(d->comm, d->rs_nstate, "state", &sv));
+    PetscCall(VecLoad(sv, vw));
+    PetscCall(VecGetArray(sv, &a));
+    PetscCall(TslProblemStateUnpack(d->prob, a, sizeof(PetscScalar) * (size_t)d->rs_nstate));
+    PetscCall(VecRestoreArray(sv, &a));
+    PetscCall(VecDestroy(&sv));
+  }
+  PetscCall(LoadVector(d, vw, "X", X));
   if (d->rs_loop.h_prev > 0) {
     if (!d->Xprev) PetscCall(VecDuplicate(X, &d->Xprev));
-    PetscCall(LoadNamed(d->Xprev, "Xprev", vw));
+    PetscCall(LoadVector(d, vw, "Xprev", d->Xprev));
   }
-  PetscCall(PetscViewerDestroy(&vw));
   PetscCall(TslGhostUpdate(X, INSERT_VALUES, SCATTER_FORWARD));
+  if (d->rs_portable) PetscCall(LoadState(d, vw)); /* after the solution: the 3D nodal normals are computed from it */
+  PetscCall(PetscViewerDestroy(&vw));
   RestoreSums(d, d->rs_sums);
   *loop       = d->rs_loop;
   d->rs_resume = PETSC_FALSE; /* from here on the run is an ordinary one */
@@ -946,6 +1170,8 @@ PetscErrorCode TslRestartLoadExtra(Driver *d, TslRestartExtra *extra)
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+  PetscCheck(!d->rs_portable, d->comm, PETSC_ERR_SUP, "restart point %s: an explicit step's point continues on the rank count it was written with (%" PetscInt_FMT ")",
+             d->rs_point, d->rs_nranks);
   PetscCheck(d->rs_nextra == extra->nvec + 1, d->comm, PETSC_ERR_FILE_UNEXPECTED,
              "restart point %s holds %" PetscInt_FMT " vectors of the explicit step's state, this run's step has %" PetscInt_FMT " (another contact set-up?)", d->rs_point,
              d->rs_nextra - 1, extra->nvec);
@@ -970,7 +1196,7 @@ PetscErrorCode TslRestartLoadExtra(Driver *d, TslRestartExtra *extra)
   for (PetscInt j = 0; j < extra->nvec; j++) {
     char name[32];
     ExtraName(j, extra->nvec + 1, name, sizeof(name));
-    PetscCall(LoadNamed(extra->vec[j], name, vw));
+    PetscCall(LoadVector(d, vw, name, extra->vec[j]));
   }
   PetscCall(LocalVec(d->comm, extra->nreal, "extra_real", &ev));
   PetscCall(VecLoad(ev, vw));
@@ -1073,6 +1299,8 @@ PetscErrorCode TslRestartFinish(Driver *d, PetscBool completed)
     if (!rank) (void)unlink(d->rs_src_h5), (void)unlink(d->rs_src_csv);
   }
   for (PetscInt s = 0; s < m->nstep; s++) PetscCall(VecDestroy(&d->rs_xstart[s]));
+  PetscCall(VecScatterDestroy(&d->rs_map));
+  PetscCall(VecDestroy(&d->rs_fvec));
   PetscCall(PetscFree2(d->rs_xstart, d->rs_tstart));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
