@@ -196,8 +196,9 @@ PetscErrorCode TslProblemSetMatrixFree(TslProblem prob, PetscBool matrix_free);
  * with a record, all ranks) and *mbytes (the records' memory, largest rank) may be NULL. Collective. */
 PetscErrorCode TslProblemExplicitRecords(TslProblem prob, PetscBool use, PetscInt *nfast, PetscReal *mbytes);
 /* The records' state carried from one explicit evaluation to the next (each lane's volumetric strain at its last,
- * the bulk viscosity's rate), for restart points: *ev and its length *n (NULL, 0: no records). Not collective. */
-PetscErrorCode TslProblemExplicitCarried(TslProblem prob, PetscReal **ev, PetscInt *n);
+ * the bulk viscosity's rate), for restart points: *ev and its length *n (NULL, 0: no records), and *lane the place
+ * in it of each local element's (-1: an element without a record; may be NULL). Not collective. */
+PetscErrorCode TslProblemExplicitCarried(TslProblem prob, PetscReal **ev, PetscInt *n, const PetscInt **lane);
 /* The same records for the implicit residuals (internal force, heat flow and the history's energies; the
  * tangent stays the generic kernels'): use builds them if no explicit step has (collective: *nfast, *mbytes
  * as above), false leaves them to explicit steps. */

@@ -393,11 +393,12 @@ PetscErrorCode TslProblemImplicitRecords(TslProblem p, PetscBool use, PetscInt *
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscErrorCode TslProblemExplicitCarried(TslProblem p, PetscReal **ev, PetscInt *n)
+PetscErrorCode TslProblemExplicitCarried(TslProblem p, PetscReal **ev, PetscInt *n, const PetscInt **lane)
 {
   PetscFunctionBeginUser;
   *ev = p->fast_built ? p->fast_ev : NULL;
   *n  = p->fast_built ? W * p->fast_nbatch : 0;
+  if (lane) *lane = p->fast_built ? p->fast_off : NULL;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

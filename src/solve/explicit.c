@@ -87,15 +87,22 @@ static PetscErrorCode Carry(Explicit *x, TslRestartExtra *e, PetscReal *h_prev, 
 {
   PetscReal *ev, *at, sc[XR_N];
   PetscInt   nev, ne = x->m->nelem;
+  const PetscInt *lane;
 
   PetscFunctionBeginUser;
-  PetscCall(TslProblemExplicitCarried(x->p, &ev, &nev));
+  PetscCall(TslProblemExplicitCarried(x->p, &ev, &nev, &lane));
   if (!e->real) {
     e->nvec   = 0;
     e->vec[e->nvec++] = x->V, e->vec[e->nvec++] = x->M, e->vec[e->nvec++] = x->Fi, e->vec[e->nvec++] = x->Fe;
     if (x->Fc) e->vec[e->nvec++] = x->Fc;
     e->nreal = XR_N + 2 * NRATES + 5 * ne + (x->qv ? ne : 0) + nev;
     PetscCall(PetscMalloc1(e->nreal, &e->real));
+    /* the loop's scalars and the heat rates are the same on every rank (summed), nrepair aside (a count of rank 0's
+     * for the log) */
+    e->nglobal     = XR_N + 2 * NRATES;
+    e->nearr       = 5 + (x->qv ? 1 : 0);
+    e->carried_off = e->nglobal + e->nearr * ne;
+    e->lane        = nev ? lane : NULL;
   }
   if (out) {
     sc[XR_H_PREV] = *h_prev, sc[XR_T_HIST] = *t_hist, sc[XR_DT] = x->dt, sc[XR_DT_STABLE] = x->dt_stable;

@@ -19,8 +19,8 @@
  *            before a point is used, so that a corrupted point is passed over for the one before it.
  * The vectors are in PETSc's parallel layout and the state in each rank's own: on the rank count and partition the
  * point was written with they are read as they stand (bit for bit). On another count the vectors are scattered to this
- * run's layout through natnode and the state is read from blobs by a rendezvous on their keys (TslRendezvous); an
- * explicit step's reals are per rank, so its points continue on their own rank count only. */
+ * run's layout through natnode and the state (with an explicit step's reals: ExtraBlobs) is read from blobs by a
+ * rendezvous on their keys (TslRendezvous). */
 #include "solve_impl.h"
 #include <petscviewerhdf5.h>
 #include <dirent.h>
@@ -221,9 +221,40 @@ static PetscInt BlobChunks(PetscInt len)
   return PetscMax(1, (len + BLOB_W - 1) / BLOB_W);
 }
 
+/* An explicit step's reals as blobs (TslRestartExtra's parts): its scalars under (7) from rank 0, each element's
+ * values under (6, element), each key ending with the blob's length (another set-up, e.g. bulk viscosity or not, finds
+ * none). With val NULL only *n and the lengths (key, len may be NULL too). */
+enum { B_EXPLICIT_ELEM = 6, B_EXPLICIT_SCALARS = 7 };
+static void ExtraBlobs(Driver *d, const TslRestartExtra *e, PetscMPIInt rank, PetscInt *n, int64_t *key, PetscInt *len, PetscReal *val)
+{
+  const TslModel *m;
+  PetscInt        k = 0, off = 0;
+
+  (void)TslProblemGetModel(d->prob, &m);
+  if (!rank) {
+    if (key) key[0] = B_EXPLICIT_SCALARS, key[1] = key[2] = key[3] = 0, key[4] = e->nglobal;
+    if (len) len[0] = e->nglobal;
+    if (val) PetscArraycpy(val, e->real, e->nglobal);
+    k++, off += e->nglobal;
+  }
+  for (PetscInt el = 0; el < m->nelem; el++, k++) {
+    if (key) {
+      int64_t *kk = &key[TSL_BLOB_KEY * k];
+      kk[0] = B_EXPLICIT_ELEM, kk[1] = m->elem_nat[el], kk[2] = kk[3] = 0, kk[4] = e->nearr + 1;
+    }
+    if (len) len[k] = e->nearr + 1;
+    if (val) {
+      for (PetscInt j = 0; j < e->nearr; j++) val[off + j] = e->real[e->nglobal + j * m->nelem + el];
+      val[off + e->nearr] = e->lane && e->lane[el] >= 0 ? e->real[e->carried_off + e->lane[el]] : 0;
+    }
+    off += e->nearr + 1;
+  }
+  *n = k;
+}
+
 /* This rank's share of the points' datasets in natural terms: natnode, the natural index of each owned node (the
- * blocks of X in order), and blobs, the state's records (*nrec of them) */
-static PetscErrorCode NaturalData(Driver *d, Vec *nv, Vec *bv, PetscInt *nrec)
+ * blocks of X in order), and blobs, the state's records and an explicit step's (*nrec of them) */
+static PetscErrorCode NaturalData(Driver *d, const TslRestartExtra *extra, Vec *nv, Vec *bv, PetscInt *nrec)
 {
   const TslModel *m;
   PetscInt        n, *len, nown, ndof;
@@ -243,6 +274,23 @@ static PetscErrorCode NaturalData(Driver *d, Vec *nv, Vec *bv, PetscInt *nrec)
   for (PetscInt l = 0; l < nown; l++) a[l] = (PetscReal)m->node_nat[l];
   PetscCall(VecRestoreArray(*nv, &a));
   PetscCall(TslProblemStateBlobs(d->prob, &n, &key, &len, &val));
+  if (extra) { /* appended to the state's */
+    PetscMPIInt rank;
+    PetscInt    ne, nv_ = 0;
+    PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
+    ExtraBlobs(d, extra, rank, &ne, NULL, NULL, NULL);
+    for (PetscInt i = 0; i < n; i++) nv_ += len[i];
+    PetscCall(PetscRealloc(sizeof(int64_t) * TSL_BLOB_KEY * (n + ne + 1), &key));
+    PetscCall(PetscRealloc(sizeof(PetscInt) * (n + ne + 1), &len));
+    ExtraBlobs(d, extra, rank, &ne, &key[TSL_BLOB_KEY * n], &len[n], NULL);
+    {
+      PetscInt nx = 0;
+      for (PetscInt i = n; i < n + ne; i++) nx += len[i];
+      PetscCall(PetscRealloc(sizeof(PetscReal) * (nv_ + nx + 1), &val));
+    }
+    ExtraBlobs(d, extra, rank, &ne, NULL, NULL, &val[nv_]);
+    n += ne;
+  }
   *nrec = 0;
   for (PetscInt i = 0; i < n; i++) *nrec += BlobChunks(len[i]);
   PetscCall(LocalVec(d->comm, *nrec * BLOB_REC, "blobs", bv));
@@ -324,7 +372,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   nh = HeaderLength(m->nstep);
   PetscCall(TslProblemModelDigest(d->prob, &model));
   PetscCall(TslProblemMeshDigest(d->prob, &mesh));
-  PetscCall(NaturalData(d, &nv, &bv, &nrec));
+  PetscCall(NaturalData(d, extra, &nv, &bv, &nrec));
 
   PetscCall(LocalVec(d->comm, rank ? 0 : nh, "header", &hv));
   if (!rank) {
@@ -448,7 +496,10 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     double      dt = MPI_Wtime() - t0, b = (double)bytes;
     PetscInt    N;
     PetscCall(VecGetSize(X, &N));
+    PetscInt    bs;
+    PetscCall(VecGetBlockSize(X, &bs));
     b += 8.0 * N * (1 + ns + (loop->h_prev > 0 && d->Xprev) + (extra ? extra->nvec : 0));
+    b += 8.0 * ((double)N / bs + (double)nrec * BLOB_REC); /* natnode, blobs */
     if (extra) {
       PetscInt nr = extra->nreal;
       PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nr, 1, MPIU_INT, MPI_SUM, d->comm));
@@ -919,9 +970,6 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   PetscCheck(d->rs_loop.step >= 0 && d->rs_loop.step < m->nstep && (m->steps[d->rs_loop.step].explicit_dynamics ? d->rs_nextra > 0 : d->rs_nextra == 0), d->comm,
              PETSC_ERR_FILE_UNEXPECTED, "%srestart point %s names step %" PetscInt_FMT ", which is of another procedure in this deck", where, d->rs_point,
              d->rs_loop.step + 1);
-  PetscCheck(!d->rs_portable || !m->steps[d->rs_loop.step].explicit_dynamics, d->comm, PETSC_ERR_SUP,
-             "%srestart point %s was written on %" PetscInt_FMT " ranks in an explicit step: such a point continues on the rank count it was written with (%" PetscInt_FMT ")", where,
-             d->rs_point, d->rs_nranks, d->rs_nranks);
   PetscCheck(!d->rs_oldjob || (d->rs_loop.step + 1 == m->restart_read_step && d->rs_loop.inc == m->restart_read_inc), d->comm, PETSC_ERR_FILE_UNEXPECTED,
              "%srestart point %s holds step %" PetscInt_FMT " increment %" PetscInt_FMT ", not the one its name says", where, d->rs_point, d->rs_loop.step + 1,
              d->rs_loop.inc);
@@ -1058,8 +1106,8 @@ static PetscErrorCode FetchBlobs(void *ctx, PetscInt n, const int64_t key[], con
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Another rank count: the state from the point's records (the solution already in place) */
-static PetscErrorCode LoadState(Driver *d, PetscViewer vw)
+/* Another rank count: this rank's share of the point's records into pb (PetscFree2(pb->akey, pb->aval)) */
+static PetscErrorCode LoadBlobs(Driver *d, PetscViewer vw, PointBlobs *pb_)
 {
   PointBlobs         pb = {d->comm, PETSC_DECIDE, NULL, NULL};
   PetscInt           nrec = d->rs_nblob;
@@ -1078,7 +1126,53 @@ static PetscErrorCode LoadState(Driver *d, PetscViewer vw)
   }
   PetscCall(VecRestoreArrayRead(bv, &a));
   PetscCall(VecDestroy(&bv));
+  *pb_ = pb;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Another rank count: the state from the point's records (the solution already in place) */
+static PetscErrorCode LoadState(Driver *d, PetscViewer vw)
+{
+  PointBlobs pb;
+
+  PetscFunctionBeginUser;
+  PetscCall(LoadBlobs(d, vw, &pb));
   PetscCall(TslProblemStateFromBlobs(d->prob, FetchBlobs, &pb));
+  PetscCall(PetscFree2(pb.akey, pb.aval));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* Another rank count: an explicit step's reals from the point's records (ExtraBlobs), into this run's layout of them */
+static PetscErrorCode LoadExtraBlobs(Driver *d, PetscViewer vw, TslRestartExtra *e)
+{
+  const TslModel *m;
+  PointBlobs      pb;
+  PetscInt        n, *len, nval = 0, missing = 0, off = 0;
+  int64_t        *key;
+  PetscReal      *val;
+  PetscBool      *found;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCall(LoadBlobs(d, vw, &pb));
+  ExtraBlobs(d, e, 0, &n, NULL, NULL, NULL); /* every rank asks for the scalars */
+  PetscCall(PetscMalloc3(TSL_BLOB_KEY * n + 1, &key, n + 1, &len, n + 1, &found));
+  ExtraBlobs(d, e, 0, &n, key, len, NULL);
+  for (PetscInt i = 0; i < n; i++) nval += len[i];
+  PetscCall(PetscMalloc1(nval + 1, &val));
+  PetscCall(FetchBlobs(&pb, n, key, len, val, found));
+  for (PetscInt i = 0; i < n; i++) missing += !found[i];
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPIU_INT, MPI_SUM, d->comm));
+  PetscCheck(!missing, d->comm, PETSC_ERR_FILE_UNEXPECTED, "restart point %s holds no explicit state for %" PetscInt_FMT " of this model's elements", d->rs_point, missing);
+  PetscCall(PetscArraycpy(e->real, val, e->nglobal));
+  off = e->nglobal;
+  for (PetscInt el = 0; el < m->nelem; el++) {
+    for (PetscInt j = 0; j < e->nearr; j++) e->real[e->nglobal + j * m->nelem + el] = val[off + j];
+    if (e->lane && e->lane[el] >= 0) e->real[e->carried_off + e->lane[el]] = val[off + e->nearr];
+    off += e->nearr + 1;
+  }
+  PetscCall(PetscFree(val));
+  PetscCall(PetscFree3(key, len, found));
   PetscCall(PetscFree2(pb.akey, pb.aval));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -1170,11 +1264,20 @@ PetscErrorCode TslRestartLoadExtra(Driver *d, TslRestartExtra *extra)
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
-  PetscCheck(!d->rs_portable, d->comm, PETSC_ERR_SUP, "restart point %s: an explicit step's point continues on the rank count it was written with (%" PetscInt_FMT ")",
-             d->rs_point, d->rs_nranks);
   PetscCheck(d->rs_nextra == extra->nvec + 1, d->comm, PETSC_ERR_FILE_UNEXPECTED,
              "restart point %s holds %" PetscInt_FMT " vectors of the explicit step's state, this run's step has %" PetscInt_FMT " (another contact set-up?)", d->rs_point,
              d->rs_nextra - 1, extra->nvec);
+  if (d->rs_portable) { /* another rank count: the vectors through the natural map, the reals from the records */
+    PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
+    for (PetscInt j = 0; j < extra->nvec; j++) {
+      char name[32];
+      ExtraName(j, extra->nvec + 1, name, sizeof(name));
+      PetscCall(LoadVector(d, vw, name, extra->vec[j]));
+    }
+    PetscCall(LoadExtraBlobs(d, vw, extra));
+    PetscCall(PetscViewerDestroy(&vw));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nr, 1, MPIU_INT, MPI_SUM, d->comm));
   if (!rank) {
     H5E_auto2_t efunc;

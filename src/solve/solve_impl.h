@@ -176,6 +176,11 @@ typedef struct {
   Vec        vec[TSL_RESTART_MAXVEC];
   PetscInt   nreal;
   PetscReal *real;
+  /* the reals' parts, for a point read on another rank count (restart.c, ExtraBlobs): real[0..nglobal) the same on
+   * every rank, then nearr arrays of one real per local element, then from carried_off the elements' carried reals,
+   * element e's at carried_off + lane[e] (lane NULL or lane[e] < 0: none) */
+  PetscInt        nglobal, nearr, carried_off;
+  const PetscInt *lane;
 } TslRestartExtra;
 /* Whether a point is due after increment inc (from step time t_old to t_new; last: the step's last) under the step's
  * *RESTART, WRITE, with the reason for the log in why. */

@@ -8,10 +8,13 @@
 # Each continuation's results (every frame) and history must equal the uninterrupted run's: bitwise on one rank,
 # within TOL of each field's largest value on more (MUMPS's parallel factorisation is not bitwise repeatable).
 # RESTART: the *RESTART line put before the first step (default: FREQUENCY=2); WAIT: the log line the interruption
-# waits for (default: step 2's second increment).
+# waits for (default: step 2's second increment). CONT_NP (environment): continue on that many ranks instead of NP,
+# reading the point by node, element and face (restart.c, NaturalMap, LoadState); TOL is then that of two whole runs
+# on the two counts, which differ too (the solvers' sums in another order).
 # usage: restart_interrupt.sh THERMOSLIDE MPIEXEC NP DECK OUTDIR PYTHON COMPARE TOL [RESTART [WAIT]]
 set -u
 exe=$1 mpiexec=$2 np=$3 deck=$4 out=$5 py=$6 compare=$7 tol=$8
+cnp=${CONT_NP:-$np}
 restart=${9:-*RESTART, WRITE, FREQUENCY=2} wait_for=${10:-step 2 increment 2:}
 rm -rf "$out" && mkdir -p "$out/whole" || exit 1
 job=$(basename "$deck" .inp)
@@ -47,9 +50,12 @@ for how in stop kill; do
     ls "$dir/$job.h5.part" > /dev/null 2>&1 || { echo "FAIL: kill: the killed run left no $job.h5.part"; fail=1; continue; }
   fi
   last=$(grep -o "step [0-9]* increment [0-9]*:" "$dir.log" | tail -n 1)
-  $mpiexec -n "$np" "$exe" "$out/$job.inp" -o "$dir" -tsl_restart > "$dir.cont.log" 2>&1 || { cat "$dir.cont.log"; echo "FAIL: $how: the continuation"; fail=1; continue; }
+  $mpiexec -n "$cnp" "$exe" "$out/$job.inp" -o "$dir" -tsl_restart > "$dir.cont.log" 2>&1 || { cat "$dir.cont.log"; echo "FAIL: $how: the continuation"; fail=1; continue; }
+  if [ "$cnp" != "$np" ]; then
+    grep -q "the point was written on $np ranks" "$dir.cont.log" || { cat "$dir.cont.log"; echo "FAIL: $how: the continuation on $cnp ranks did not say it read a point of $np"; fail=1; continue; }
+  fi
   from=$(grep -o "continuing from restart point .*: step [0-9]* increment [0-9]*" "$dir.cont.log" | sed 's/.*: //')
-  echo "$how: interrupted after ${last%:}, continued from $from"
+  echo "$how: interrupted after ${last%:} on $np ranks, continued from $from on $cnp"
   "$py" "$compare" "$out/whole/$job.h5" "$dir/$job.h5" "$tol" || { echo "FAIL: $how: the continuation's results differ from the whole run's"; fail=1; }
   if [ "$tol" = 0 ]; then cmp "$out/whole/$job.csv" "$dir/$job.csv" || { echo "FAIL: $how: the histories differ"; fail=1; }; fi
   [ "$(wc -l < "$out/whole/$job.csv")" = "$(wc -l < "$dir/$job.csv")" ] || { echo "FAIL: $how: history rows lost or duplicated"; fail=1; }
