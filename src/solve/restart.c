@@ -906,6 +906,15 @@ static PetscErrorCode LoadHeader(Driver *d, PetscInt nh)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The log's line for a point read on another rank count */
+static PetscErrorCode SayPortable(Driver *d)
+{
+  PetscFunctionBeginUser;
+  if (d->rs_portable)
+    PetscCall(PetscPrintf(d->comm, "thermoslide: the point was written on %" PetscInt_FMT " ranks: its solution and state are read by node, element and face\n", d->rs_nranks));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
 {
   const TslModel *m;
@@ -990,8 +999,7 @@ PetscErrorCode TslRestartSetUp(Driver *d, const char *dir, const char *jobname)
   }
   PetscCall(PetscPrintf(d->comm, "thermoslide: continuing from restart point %s: step %" PetscInt_FMT " increment %" PetscInt_FMT ", step time %g (%" PetscInt_FMT " frames and %" PetscInt_FMT " history rows of %s kept)\n",
                         d->rs_point, d->rs_loop.step + 1, d->rs_loop.inc, (double)d->rs_loop.t, d->rs_nframe, d->rs_nrow, d->rs_src_h5));
-  if (d->rs_portable)
-    PetscCall(PetscPrintf(d->comm, "thermoslide: the point was written on %" PetscInt_FMT " ranks: its solution and state are read by node, element and face\n", d->rs_nranks));
+  PetscCall(SayPortable(d));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1350,6 +1358,7 @@ PetscErrorCode TslRestartPostOutput(Driver *d)
     if (st != 1) free(pts);
     PetscCheck(st == 1, d->comm, PETSC_ERR_FILE_UNEXPECTED, "%srestart point %s %s %s", where, d->rs_point, st < 0 ? "was" : "is not usable:", why);
     PetscCall(LoadHeader(d, nh));
+    if (!k) PetscCall(SayPortable(d));
     s = d->rs_loop.step;
     /* the steps up to the point's: each one's loads and boundary conditions from the state it started with */
     for (; done_steps <= s; done_steps++) {

@@ -3,7 +3,8 @@
 # conductance series on CPEG4RHT with *RESTART, WRITE, FREQUENCY=5 (its checks: the spec's outcome), then POST OUTPUT
 # decks holding nothing but a heading and *POST OUTPUT, run with -oldjob: ALL gives a frame of every point equal to
 # the run's frame of that step and increment (TOL of each field's largest value), data lines give those points' frames
-# only; a data line without a point and ALL with data lines are errors at their line, with no result written.
+# only; ALL on another rank count gives the same frames; a data line without a point and ALL with data lines are
+# errors at their line, with no result written.
 # usage: restart_post.sh THERMOSLIDE MPIEXEC NP OUTDIR PYTHON SOURCE_DIR TOL
 set -u
 exe=$1 mpiexec=$2 np=$3 out=$4 py=$5 src=$6 tol=$7
@@ -17,13 +18,21 @@ post() { # NAME LINES...: a POST OUTPUT deck of a heading and LINES
   local name=$1
   shift
   { printf '*HEADING\nPOST OUTPUT of the CPEG4RHT conductance run\n'; printf '%s\n' "$@"; } > "$out/$name.inp"
-  $mpiexec -n "$np" "$exe" "$out/$name.inp" -oldjob "$out/run/run" -o "$out/$name" > "$out/$name.log" 2>&1
+  $mpiexec -n "${post_np:-$np}" "$exe" "$out/$name.inp" -oldjob "$out/run/run" -o "$out/$name" > "$out/$name.log" 2>&1
 }
 if post all "*POST OUTPUT, ALL"; then
   "$py" "$src/tests/tools/compare_post.py" "$out/run/run.h5" "$out/all/all.h5" "$tol" "$out/run" run || { echo "FAIL: all: the recovered frames"; fail=1; }
   ls "$out/all"/*.restart.* > /dev/null 2>&1 && { echo "FAIL: all: the POST OUTPUT job wrote restart data"; fail=1; }
 else
   cat "$out/all.log"; echo "FAIL: all: the POST OUTPUT job"; fail=1
+fi
+# on another rank count: the points read by node, element and face
+other=$((np == 1 ? 2 : 1))
+if post_np=$other post other "*POST OUTPUT, ALL"; then
+  grep -q "the point was written on $np ranks" "$out/other.log" || { cat "$out/other.log"; echo "FAIL: other: no word of the points' rank count"; fail=1; }
+  "$py" "$src/tests/tools/compare_post.py" "$out/run/run.h5" "$out/other/other.h5" "$tol" "$out/run" run || { echo "FAIL: other: the frames recovered on $other ranks"; fail=1; }
+else
+  cat "$out/other.log"; echo "FAIL: other: the POST OUTPUT job on $other ranks"; fail=1
 fi
 if post two "*POST OUTPUT" " 2, 10" " 4, 1"; then
   "$py" "$src/tests/tools/compare_post.py" "$out/run/run.h5" "$out/two/two.h5" "$tol" || { echo "FAIL: two: the recovered frames"; fail=1; }
