@@ -3913,12 +3913,18 @@ static PetscErrorCode CheckPlacement(Deck *d, const DeckKeyword *kw)
 
   PetscFunctionBeginUser;
   if (kw->placement & at) PetscFunctionReturn(PETSC_SUCCESS);
+  /* a restart deck (*RESTART, READ) may define new sets, surfaces and amplitudes for its own steps between the old job's
+   * steps and them, as the dialect allows; the rest of the model is the old job's */
+  if (at == AT_BETWEEN && d->m->restart_read_step > 0 && !d->restart_stop && (kw->handler == KwSet || kw->handler == KwSurface || kw->handler == KwAmplitude))
+    PetscFunctionReturn(PETSC_SUCCESS);
   USER_CHECK(kw->handler != KwEndStep, LOC_FMT "*END STEP without *STEP", KLOC(d));
   for (size_t i = 0; i < sizeof(PlacementText) / sizeof(PlacementText[0]); i++)
     if (PlacementText[i].placement == (PetscInt)kw->placement) kind = PlacementText[i].kind, belongs = PlacementText[i].belongs;
   if (at == AT_STEP)
     PetscCall(PetscSNPrintf(here, sizeof(here), "here it is inside the step that starts at %s:%" PetscInt_FMT "; missing *END STEP?",
                             TslDeckFileName(d->m, s->loc.file), s->loc.line));
+  else if (at == AT_BETWEEN && d->m->restart_read_step > 0 && !d->restart_stop)
+    PetscCall(PetscSNPrintf(here, sizeof(here), "a restart deck defines new sets, surfaces and amplitudes only: the rest of the model is the old job's"));
   else if (at == AT_BETWEEN)
     PetscCall(PetscSNPrintf(here, sizeof(here), "here it comes after the first step, which starts at %s:%" PetscInt_FMT,
                             TslDeckFileName(d->m, s->loc.file), s->loc.line));

@@ -6,7 +6,8 @@
 #   STEP=2 (the step's latest point, its end) and the same step: likewise;
 #   STEP=2, INC=60, END STEP: the slide ends halfway (step time 1.5 of 3): the frictional heat stops at half the
 #   series' 120 generated and 60 absorbed, and the equilibration follows from there;
-# and bad restart decks: an increment without a point, a step the old job does not have, no -oldjob, *RESTART, READ
+# new sets and amplitudes defined after *RESTART, READ for the deck's own step; and bad restart decks (new model data
+# other than sets, surfaces and amplitudes among them): an increment without a point, a step the old job does not have, no -oldjob, *RESTART, READ
 # after model data, a corrupted point, no deck copy: each a clear error naming the deck line, no result written.
 # usage: restart_oldjob.sh THERMOSLIDE MPIEXEC NP DECK OUTDIR PYTHON COMPARE TOL
 set -u
@@ -46,6 +47,45 @@ else
   cat "$out/endstep.log"; echo "FAIL: endstep: the restart job"; fail=1
 fi
 
+# new sets and amplitudes for the restart deck's own step (the dialect allows them after *RESTART, READ): the slide
+# ends at its end point, then node 1031 (a new node set) is pushed to u1 = 0.2 along a new amplitude
+cat > "$out/newdata.inp" << 'EOF'
+*HEADING
+restart with a new amplitude and a new node set
+*RESTART, READ, STEP=2, END STEP
+*AMPLITUDE, NAME=BACK
+ 0.0, 0.0, 1.0, 1.0
+*NSET, NSET=PUSH
+ 1031
+*STEP, NAME=BACK, INC=100
+*COUPLED TEMPERATURE-DISPLACEMENT
+ 0.1, 1.0
+*BOUNDARY, AMPLITUDE=BACK
+ PUSH, 1, 1, 0.2
+*END STEP
+EOF
+if $mpiexec -n "$np" "$exe" "$out/newdata.inp" -oldjob "$out/oldrun/old" -o "$out/newdata" > "$out/newdata.log" 2>&1; then
+  "$py" - "$out/newdata/newdata.h5" << 'EOF' || fail=1
+import sys
+import h5py
+import numpy as np
+f = h5py.File(sys.argv[1], "r")
+i = int(np.where(f["mesh/node_ids"][...] == 1031)[0][0])
+bad = n = 0
+for k in sorted(f["frames"]):
+    g = f["frames"][k]
+    if int(g.attrs["step"]) != 3:
+        continue
+    t = float(g.attrs["time"]) - 4.0  # step 3's time: the old job's steps took 1 + 3
+    n += 1
+    bad += abs(float(g["U"][i][0]) - 0.2 * t) > 1e-12
+print("newdata: u1 of node 1031 in %d frames of step 3 along the new amplitude (0.2 t): %s" % (n, "ok" if n and not bad else "FAIL"))
+sys.exit(1 if bad or not n else 0)
+EOF
+else
+  cat "$out/newdata.log"; echo "FAIL: newdata: the restart job with a new amplitude and node set"; fail=1
+fi
+
 # bad restart decks: NAME READLINE EXPECTED [DECK-EDIT]
 bad() {
   local name=$1 line=$2 want=$3 opts=${4:--oldjob $out/oldrun/old}
@@ -63,6 +103,8 @@ bad nooldjob "*RESTART, READ, STEP=2" "$out/nooldjob.inp:3: *RESTART, READ conti
 bad afternode "*NODE
  999, 0., 0.
 *RESTART, READ, STEP=2" "$out/afternode.inp:5: *RESTART, READ comes first in its deck"
+bad newmaterial "*RESTART, READ, STEP=2, END STEP
+*MATERIAL, NAME=NEW" "$out/newmaterial.inp:4: *MATERIAL is model data: it belongs before the first *STEP"
 cp -r "$out/oldrun" "$out/nocopy" && rm "$out/nocopy/old.restart.inp"
 bad nocopy "*RESTART, READ, STEP=2" "the old job's deck copy $out/nocopy/old.restart.inp is not there" "-oldjob $out/nocopy/old"
 cp -r "$out/oldrun" "$out/corrupt"
