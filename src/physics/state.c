@@ -364,7 +364,8 @@ PetscErrorCode TslProblemStateBlobs(TslProblem p, PetscInt *n, int64_t **key, Pe
         for (int a = 0; a < 3; a++) v[q * w + NR(S2SPoint) + a] = (PetscReal)mt[a];
       }
     }
-    for (PetscInt l = 0; l < p->nown; l++) {
+    for (PetscInt l = 0; l < p->nown; l++) { /* the nodes that slipped (a node without a blob has none) */
+      if (s->cslip[l] == 0 && s->cslip_c[l] == 0) continue;
       PetscCall(BlobAdd(&b, B_S2SSLIP, m->node_nat[l], 0, 0, 0, 2, &v));
       v    = BlobLast(&b);
       v[0] = s->cslip[l], v[1] = s->cslip_c[l];
@@ -380,6 +381,7 @@ PetscErrorCode TslProblemStateFromBlobs(TslProblem p, TslBlobFetch fetch, void *
   Blobs           b = {0};
   PetscBool      *found;
   PetscInt        missing = 0, lost = 0, at = 0;
+  char           *onface = NULL;
   FaceKey       **fk;
   PetscReal      *v;
 
@@ -396,7 +398,12 @@ PetscErrorCode TslProblemStateFromBlobs(TslProblem p, TslBlobFetch fetch, void *
       FaceNodes3(p, p->s2s->face[i].lnode, p->s2s->face[i].nsn, t);
       PetscCall(BlobAdd(&b, B_S2SFACE, p->s2s->face[i].pair, t[0], t[1], t[2], 2, &v));
     }
-    for (PetscInt l = 0; l < p->nn; l++) PetscCall(BlobAdd(&b, B_S2SSLIP, m->node_nat[l], 0, 0, 0, 2, &v));
+    PetscCall(PetscCalloc1(p->nn + 1, &onface)); /* the slip of the faces' nodes */
+    for (PetscInt i = 0; i < p->s2s->nface; i++)
+      for (PetscInt a = 0; a < p->s2s->face[i].nsn; a++)
+        if (p->s2s->face[i].lnode[a] >= 0) onface[p->s2s->face[i].lnode[a]] = 1;
+    for (PetscInt l = 0; l < p->nn; l++)
+      if (onface[l]) PetscCall(BlobAdd(&b, B_S2SSLIP, m->node_nat[l], 0, 0, 0, 2, &v));
   }
   PetscCall(PetscMalloc1(b.n + 1, &found));
   PetscCall(fetch(ctx, b.n, b.key, b.len, b.val, found));
@@ -433,11 +440,13 @@ PetscErrorCode TslProblemStateFromBlobs(TslProblem p, TslBlobFetch fetch, void *
       npt += fc->npt, npt_c += fc->npt_c;
       v += b.len[at];
     }
-    for (PetscInt l = 0; l < p->nn; l++, at++) {
+    for (PetscInt l = 0; l < p->nn; l++) {
       s->cslip[l] = s->cslip_c[l] = 0;
+      if (!onface[l]) continue;
       if (found[at]) s->cslip[l] = v[0], s->cslip_c[l] = v[1];
-      v += b.len[at];
+      v += b.len[at++];
     }
+    PetscCall(PetscFree(onface));
     /* the second round: each face's points */
     for (PetscInt i = 0; i < s->nface; i++) {
       const S2SFace *fc = &s->face[i];
