@@ -15,12 +15,13 @@
  *            (velocity, masses, forces) and extra_real, its reals per rank (the loop's, the element increments);
  *   natnode  the natural index of each node block of the vectors (a point read on another rank count: NaturalMap);
  *   blobs    the state in natural terms (TslProblemStateBlobs) as records of keys and reals (LoadState);
+ *   xelem    in an explicit step's point, each element's reals under its natural index (ElemRecords);
  *   checksum one order-independent checksum per dataset above (the sum of its values' bits modulo 2^64), verified
  *            before a point is used, so that a corrupted point is passed over for the one before it.
  * The vectors are in PETSc's parallel layout and the state in each rank's own: on the rank count and partition the
  * point was written with they are read as they stand (bit for bit). On another count the vectors are scattered to this
- * run's layout through natnode and the state (with an explicit step's reals: ExtraBlobs) is read from blobs by a
- * rendezvous on their keys (TslRendezvous). */
+ * run's layout through natnode and the state (with an explicit step's scalars) is read from blobs, an explicit
+ * step's element reals from xelem, by rendezvous on their keys (TslRendezvous). */
 #include "solve_impl.h"
 #include <petscviewerhdf5.h>
 #include <dirent.h>
@@ -54,6 +55,7 @@ enum {
   H_PTIME,  /* the problem's step time as set (the last increment's start plus its length: the period to a rounding) */
   H_MESH,   /* TslProblemMeshDigest: the mesh and contact nodes, whatever the rank count */
   H_NBLOB,  /* records of the dataset blobs (the state in natural terms) */
+  H_XELEM,  /* an explicit step's point: the width of the records of the dataset xelem (ElemRecords); 0 none */
   H_SUMS,
   H_TSTART = H_SUMS + 24 /* then 2 per step: total time at its start, step time the step before ended at */
 };
@@ -208,7 +210,8 @@ static PetscErrorCode Checksum(Vec v, uint64_t *ck)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* The checksums' places: layout, state, X, Xprev, natnode, blobs, then start_k, then the extra datasets */
+/* The checksums' places: layout, state, X, Xprev, natnode, blobs (with xelem's added), then start_k, then the extra
+ * datasets */
 enum { CK_LAYOUT = 0, CK_STATE, CK_X, CK_XPREV, CK_NATNODE, CK_BLOBS, CK_START };
 
 /* The state in natural terms (TslProblemStateBlobs) as records of BLOB_KL keys (the blob's, then the chunk's number)
@@ -221,39 +224,45 @@ static PetscInt BlobChunks(PetscInt len)
   return PetscMax(1, (len + BLOB_W - 1) / BLOB_W);
 }
 
-/* An explicit step's reals as blobs (TslRestartExtra's parts): its scalars under (7) from rank 0, each element's
- * values under (6, element), each key ending with the blob's length (another set-up, e.g. bulk viscosity or not, finds
- * none). With val NULL only *n and the lengths (key, len may be NULL too). */
-enum { B_EXPLICIT_ELEM = 6, B_EXPLICIT_SCALARS = 7 };
-static void ExtraBlobs(Driver *d, const TslRestartExtra *e, PetscMPIInt rank, PetscInt *n, int64_t *key, PetscInt *len, PetscReal *val)
+/* An explicit step's reals in natural terms (TslRestartExtra's parts): its scalars, the same on every rank, as the
+ * blob (7, 0, 0, 0, its length) written by rank 0 (ExtraScalars: the key into key[], the values into val if not
+ * NULL); each local element's reals as a record of the dataset xelem, [its natural index, its nearr values, its
+ * carried real], XelemWidth reals (ElemRecords). */
+enum { B_EXPLICIT_SCALARS = 7 };
+static void ExtraScalars(const TslRestartExtra *e, int64_t key[], PetscInt *len, PetscReal *val)
+{
+  key[0] = B_EXPLICIT_SCALARS, key[1] = key[2] = key[3] = 0, key[4] = e->nglobal;
+  *len = e->nglobal;
+  if (val) (void)PetscArraycpy(val, e->real, e->nglobal);
+}
+
+static PetscInt XelemWidth(const TslRestartExtra *e)
+{
+  return e->nearr + 2;
+}
+
+static PetscErrorCode ElemRecords(Driver *d, const TslRestartExtra *e, Vec *xv)
 {
   const TslModel *m;
-  PetscInt        k = 0, off = 0;
+  const PetscInt  w = XelemWidth(e);
+  PetscScalar    *a;
 
-  (void)TslProblemGetModel(d->prob, &m);
-  if (!rank) {
-    if (key) key[0] = B_EXPLICIT_SCALARS, key[1] = key[2] = key[3] = 0, key[4] = e->nglobal;
-    if (len) len[0] = e->nglobal;
-    if (val) PetscArraycpy(val, e->real, e->nglobal);
-    k++, off += e->nglobal;
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCall(LocalVec(d->comm, m->nelem * w, "xelem", xv));
+  PetscCall(VecGetArray(*xv, &a));
+  for (PetscInt el = 0; el < m->nelem; el++) {
+    PetscScalar *r = &a[el * w];
+    r[0]           = (PetscReal)m->elem_nat[el];
+    for (PetscInt j = 0; j < e->nearr; j++) r[1 + j] = e->real[e->nglobal + j * m->nelem + el];
+    r[w - 1] = e->lane && e->lane[el] >= 0 ? e->real[e->carried_off + e->lane[el]] : 0;
   }
-  for (PetscInt el = 0; el < m->nelem; el++, k++) {
-    if (key) {
-      int64_t *kk = &key[TSL_BLOB_KEY * k];
-      kk[0] = B_EXPLICIT_ELEM, kk[1] = m->elem_nat[el], kk[2] = kk[3] = 0, kk[4] = e->nearr + 1;
-    }
-    if (len) len[k] = e->nearr + 1;
-    if (val) {
-      for (PetscInt j = 0; j < e->nearr; j++) val[off + j] = e->real[e->nglobal + j * m->nelem + el];
-      val[off + e->nearr] = e->lane && e->lane[el] >= 0 ? e->real[e->carried_off + e->lane[el]] : 0;
-    }
-    off += e->nearr + 1;
-  }
-  *n = k;
+  PetscCall(VecRestoreArray(*xv, &a));
+  PetscFunctionReturn(PETSC_SUCCESS);
 }
 
 /* This rank's share of the points' datasets in natural terms: natnode, the natural index of each owned node (the
- * blocks of X in order), and blobs, the state's records and an explicit step's (*nrec of them) */
+ * blocks of X in order), and blobs, the state's records and an explicit step's scalars (*nrec of them) */
 static PetscErrorCode NaturalData(Driver *d, const TslRestartExtra *extra, Vec *nv, Vec *bv, PetscInt *nrec)
 {
   const TslModel *m;
@@ -274,22 +283,18 @@ static PetscErrorCode NaturalData(Driver *d, const TslRestartExtra *extra, Vec *
   for (PetscInt l = 0; l < nown; l++) a[l] = (PetscReal)m->node_nat[l];
   PetscCall(VecRestoreArray(*nv, &a));
   PetscCall(TslProblemStateBlobs(d->prob, &n, &key, &len, &val));
-  if (extra) { /* appended to the state's */
+  if (extra) { /* the explicit step's scalars appended to the state's, by rank 0 */
     PetscMPIInt rank;
-    PetscInt    ne, nv_ = 0;
+    PetscInt    nv_ = 0;
     PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
-    ExtraBlobs(d, extra, rank, &ne, NULL, NULL, NULL);
-    for (PetscInt i = 0; i < n; i++) nv_ += len[i];
-    PetscCall(PetscRealloc(sizeof(int64_t) * TSL_BLOB_KEY * (n + ne + 1), &key));
-    PetscCall(PetscRealloc(sizeof(PetscInt) * (n + ne + 1), &len));
-    ExtraBlobs(d, extra, rank, &ne, &key[TSL_BLOB_KEY * n], &len[n], NULL);
-    {
-      PetscInt nx = 0;
-      for (PetscInt i = n; i < n + ne; i++) nx += len[i];
-      PetscCall(PetscRealloc(sizeof(PetscReal) * (nv_ + nx + 1), &val));
+    if (!rank) {
+      for (PetscInt i = 0; i < n; i++) nv_ += len[i];
+      PetscCall(PetscRealloc(sizeof(int64_t) * TSL_BLOB_KEY * (n + 2), &key));
+      PetscCall(PetscRealloc(sizeof(PetscInt) * (n + 2), &len));
+      PetscCall(PetscRealloc(sizeof(PetscReal) * (nv_ + extra->nglobal + 1), &val));
+      ExtraScalars(extra, &key[TSL_BLOB_KEY * n], &len[n], &val[nv_]);
+      n++;
     }
-    ExtraBlobs(d, extra, rank, &ne, NULL, NULL, &val[nv_]);
-    n += ne;
   }
   *nrec = 0;
   for (PetscInt i = 0; i < n; i++) *nrec += BlobChunks(len[i]);
@@ -352,7 +357,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscInt        nh, ns;
   char            tmp[PETSC_MAX_PATH_LEN + 8], path[PETSC_MAX_PATH_LEN];
   PetscViewer     vw;
-  Vec             hv, dv, sv, cv, X, nv, bv;
+  Vec             hv, dv, sv, cv, X, nv, bv, xv = NULL;
   double          t0 = MPI_Wtime();
   uint64_t        digest, model, mesh, *ck;
   PetscInt        nrec;
@@ -405,6 +410,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     h[H_PTIME]     = TslProblemGetStepTime(d->prob);
     h[H_MESH]      = Bits(mesh);
     h[H_NBLOB]     = (PetscReal)nrec;
+    h[H_XELEM]     = extra ? (PetscReal)XelemWidth(extra) : 0;
     SaveSums(d, &h[H_SUMS]);
     for (PetscInt k = 0; k < 2 * ns; k++) h[H_TSTART + k] = d->rs_tstart[k];
     PetscCall(VecRestoreArray(hv, &h));
@@ -436,6 +442,12 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   if (loop->h_prev > 0 && d->Xprev) PetscCall(Checksum(d->Xprev, &ck[CK_XPREV]));
   PetscCall(Checksum(nv, &ck[CK_NATNODE]));
   PetscCall(Checksum(bv, &ck[CK_BLOBS]));
+  if (extra) {
+    uint64_t cx;
+    PetscCall(ElemRecords(d, extra, &xv));
+    PetscCall(Checksum(xv, &cx));
+    ck[CK_BLOBS] += cx;
+  }
   for (PetscInt k = 0; k < ns; k++) PetscCall(Checksum(d->rs_xstart[k], &ck[CK_START + k]));
   if (extra) {
     PetscScalar *a;
@@ -462,6 +474,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCall(VecView(cv, vw));
   PetscCall(VecView(nv, vw));
   PetscCall(VecView(bv, vw));
+  if (xv) PetscCall(VecView(xv, vw));
   PetscCall(ViewNamed(X, "X", vw));
   if (loop->h_prev > 0 && d->Xprev) PetscCall(ViewNamed(d->Xprev, "Xprev", vw));
   for (PetscInt k = 0; k < ns; k++) {
@@ -486,6 +499,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCall(VecDestroy(&ev));
   PetscCall(VecDestroy(&nv));
   PetscCall(VecDestroy(&bv));
+  PetscCall(VecDestroy(&xv));
   if (!rank && rename(tmp, path)) err = errno;
   PetscCallMPI(MPI_Bcast(&err, 1, MPI_INT, 0, d->comm));
   PetscCheck(!err, d->comm, PETSC_ERR_FILE_WRITE, "Cannot rename the restart point %s to %s: %s", tmp, path, strerror(err));
@@ -500,6 +514,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     PetscCall(VecGetBlockSize(X, &bs));
     b += 8.0 * N * (1 + ns + (loop->h_prev > 0 && d->Xprev) + (extra ? extra->nvec : 0));
     b += 8.0 * ((double)N / bs + (double)nrec * BLOB_REC); /* natnode, blobs */
+    if (extra) b += 8.0 * (double)m->nelem_global * XelemWidth(extra);
     if (extra) {
       PetscInt nr = extra->nreal;
       PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nr, 1, MPIU_INT, MPI_SUM, d->comm));
@@ -518,7 +533,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
 /* What a continuation expects of a point: the header's length, the rank count, the model digest, the global lengths of
  * X and of the state */
 typedef struct {
-  PetscInt    nh, nx, bs;
+  PetscInt    nh, nx, bs, nelem;
   PetscMPIInt size;
   uint64_t    model, mesh;
   PetscInt    any_steps; /* > 0: a point of another deck with at least this many steps (-oldjob), its header of any length */
@@ -548,7 +563,7 @@ static PetscBool HasDataset(hid_t f, const char *name, PetscInt n)
  * model or mesh); the reason in why, the point's step, whether it holds Xprev and its extra datasets in h_step,
  * h_xprev, h_nextra, its header's length in h_len. */
 static int PointValid(const char *path, const Expect *e, char why[], size_t len, PetscInt *h_step, PetscInt *h_xprev, PetscInt *h_nextra, PetscInt *h_len, PetscInt *h_nranks,
-                      PetscInt *h_nblob)
+                      PetscInt *h_nblob, PetscInt *h_xelem)
 {
   H5E_auto2_t efunc;
   void       *edata;
@@ -605,7 +620,9 @@ static int PointValid(const char *path, const Expect *e, char why[], size_t len,
   }
   *h_nranks = (PetscInt)h[H_NRANKS];
   *h_nblob  = (PetscInt)h[H_NBLOB];
-  if (*h_nranks < 1 || *h_nblob < 0 || !HasDataset(f, "layout", 2 * *h_nranks) || !HasDataset(f, "natnode", e->nx / e->bs) || !HasDataset(f, "blobs", *h_nblob * BLOB_REC)) {
+  *h_xelem  = (PetscInt)h[H_XELEM];
+  if (*h_nranks < 1 || *h_nblob < 0 || *h_xelem < 0 || !HasDataset(f, "layout", 2 * *h_nranks) || !HasDataset(f, "natnode", e->nx / e->bs) ||
+      !HasDataset(f, "blobs", *h_nblob * BLOB_REC) || (*h_xelem && !HasDataset(f, "xelem", e->nelem * *h_xelem))) {
     snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
     goto done;
   }
@@ -649,8 +666,8 @@ done:
 
 /* Collective: every dataset of the point read and checked against its checksum, and this rank's layout against the
  * one written. *status: 1 sound, 0 corrupted (why), -1 another model or partition (why). */
-static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nextra, PetscBool portable, PetscInt *nstate_local, int *status,
-                                 char why[], size_t len)
+static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nextra, PetscBool portable, PetscBool xelem, PetscInt *nstate_local,
+                                 int *status, char why[], size_t len)
 {
   PetscViewer vw;
   Vec         cv, v, X;
@@ -719,6 +736,16 @@ static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, Pet
     PetscCall(VecLoad(v, vw));
     PetscCall(Checksum(v, &got));
     PetscCall(VecDestroy(&v));
+    if (k == CK_BLOBS && xelem) { /* with the explicit step's element records */
+      uint64_t cx;
+      PetscCall(VecCreate(d->comm, &v));
+      PetscCall(VecSetType(v, VECMPI));
+      PetscCall(PetscObjectSetName((PetscObject)v, "xelem"));
+      PetscCall(VecLoad(v, vw));
+      PetscCall(Checksum(v, &cx));
+      PetscCall(VecDestroy(&v));
+      got += cx;
+    }
     if (got != want[k]) *status = 0, which = k < CK_START ? names[k] : j < 0 ? "start" : "explicit";
   }
   PetscCall(PetscViewerDestroy(&vw));
@@ -830,6 +857,7 @@ static PetscErrorCode ExpectFor(Driver *d, PetscInt any_steps, Expect *ex)
   PetscCall(TslProblemGetSolution(d->prob, &X));
   PetscCall(VecGetSize(X, &ex->nx));
   PetscCall(VecGetBlockSize(X, &ex->bs));
+  ex->nelem = m->nelem_global;
   PetscCallMPI(MPI_Comm_size(d->comm, &ex->size));
   PetscCall(TslProblemMeshDigest(d->prob, &ex->mesh));
   ex->nh        = HeaderLength(m->nstep);
@@ -843,18 +871,18 @@ static PetscErrorCode ExpectFor(Driver *d, PetscInt any_steps, Expect *ex)
 static PetscErrorCode CheckPoint(Driver *d, const Expect *ex, int *st, char why[], size_t len, PetscInt *nh_file)
 {
   PetscMPIInt rank;
-  PetscInt    hs[6] = {0, 0, 0, 0, 0, 0}, nstate_local = 0;
+  PetscInt    hs[7] = {0, 0, 0, 0, 0, 0, 0}, nstate_local = 0;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
-  if (!rank) *st = PointValid(d->rs_point, ex, why, len, &hs[0], &hs[1], &hs[2], &hs[3], &hs[4], &hs[5]);
+  if (!rank) *st = PointValid(d->rs_point, ex, why, len, &hs[0], &hs[1], &hs[2], &hs[3], &hs[4], &hs[5], &hs[6]);
   PetscCallMPI(MPI_Bcast(st, 1, MPI_INT, 0, d->comm));
-  PetscCallMPI(MPI_Bcast(hs, 6, MPIU_INT, 0, d->comm));
+  PetscCallMPI(MPI_Bcast(hs, 7, MPIU_INT, 0, d->comm));
   PetscCallMPI(MPI_Bcast(why, (PetscMPIInt)len, MPI_CHAR, 0, d->comm));
-  if (*st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], (PetscBool)(hs[4] != ex->size), &nstate_local, st, why, len));
+  if (*st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], (PetscBool)(hs[4] != ex->size), hs[6] > 0, &nstate_local, st, why, len));
   if (*st == 1) {
     d->rs_nextra = hs[2], d->rs_nstate = nstate_local, *nh_file = hs[3];
-    d->rs_portable = (PetscBool)(hs[4] != ex->size), d->rs_nblob = hs[5], d->rs_nranks = hs[4];
+    d->rs_portable = (PetscBool)(hs[4] != ex->size), d->rs_nblob = hs[5], d->rs_nranks = hs[4], d->rs_xelem = hs[6];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -1150,38 +1178,58 @@ static PetscErrorCode LoadState(Driver *d, PetscViewer vw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* Another rank count: an explicit step's reals from the point's records (ExtraBlobs), into this run's layout of them */
-static PetscErrorCode LoadExtraBlobs(Driver *d, PetscViewer vw, TslRestartExtra *e)
+/* Another rank count: an explicit step's reals from the point (its scalars' blob, its elements' records), into this
+ * run's layout of them */
+static PetscErrorCode LoadExtraNatural(Driver *d, PetscViewer vw, TslRestartExtra *e)
 {
   const TslModel *m;
+  const PetscInt  w = XelemWidth(e);
   PointBlobs      pb;
-  PetscInt        n, *len, nval = 0, missing = 0, off = 0;
-  int64_t        *key;
-  PetscReal      *val;
-  PetscBool      *found;
+  PetscInt        len, ns = PETSC_DECIDE, nel, missing = 0;
+  int64_t         key[TSL_BLOB_KEY], *akey, *qkey;
+  PetscReal      *aval, *qval;
+  PetscBool       found, *qf;
+  Vec             xv;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
+  PetscCheck(d->rs_xelem == w, d->comm, PETSC_ERR_FILE_UNEXPECTED,
+             "restart point %s: its explicit step's element state has another size than this run's (another bulk viscosity set-up?)", d->rs_point);
   PetscCall(LoadBlobs(d, vw, &pb));
-  ExtraBlobs(d, e, 0, &n, NULL, NULL, NULL); /* every rank asks for the scalars */
-  PetscCall(PetscMalloc3(TSL_BLOB_KEY * n + 1, &key, n + 1, &len, n + 1, &found));
-  ExtraBlobs(d, e, 0, &n, key, len, NULL);
-  for (PetscInt i = 0; i < n; i++) nval += len[i];
-  PetscCall(PetscMalloc1(nval + 1, &val));
-  PetscCall(FetchBlobs(&pb, n, key, len, val, found));
-  for (PetscInt i = 0; i < n; i++) missing += !found[i];
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPIU_INT, MPI_SUM, d->comm));
-  PetscCheck(!missing, d->comm, PETSC_ERR_FILE_UNEXPECTED, "restart point %s holds no explicit state for %" PetscInt_FMT " of this model's elements", d->rs_point, missing);
-  PetscCall(PetscArraycpy(e->real, val, e->nglobal));
-  off = e->nglobal;
-  for (PetscInt el = 0; el < m->nelem; el++) {
-    for (PetscInt j = 0; j < e->nearr; j++) e->real[e->nglobal + j * m->nelem + el] = val[off + j];
-    if (e->lane && e->lane[el] >= 0) e->real[e->carried_off + e->lane[el]] = val[off + e->nearr];
-    off += e->nearr + 1;
-  }
-  PetscCall(PetscFree(val));
-  PetscCall(PetscFree3(key, len, found));
+  ExtraScalars(e, key, &len, NULL);
+  PetscCall(FetchBlobs(&pb, 1, key, &len, e->real, &found));
   PetscCall(PetscFree2(pb.akey, pb.aval));
+  missing = !found;
+  /* the elements' records in PETSc's split of the file, answered by element */
+  nel = m->nelem_global;
+  PetscCall(PetscSplitOwnership(d->comm, &ns, &nel));
+  PetscCall(LocalVec(d->comm, ns * w, "xelem", &xv));
+  PetscCall(VecLoad(xv, vw));
+  PetscCall(PetscMalloc5(ns + 1, &akey, ns * (w - 1) + 1, &aval, m->nelem + 1, &qkey, m->nelem * (w - 1) + 1, &qval, m->nelem + 1, &qf));
+  {
+    const PetscScalar *a;
+    PetscCall(VecGetArrayRead(xv, &a));
+    for (PetscInt r = 0; r < ns; r++) {
+      akey[r] = (int64_t)PetscRealPart(a[r * w]);
+      for (PetscInt j = 1; j < w; j++) aval[r * (w - 1) + j - 1] = PetscRealPart(a[r * w + j]);
+    }
+    PetscCall(VecRestoreArrayRead(xv, &a));
+  }
+  PetscCall(VecDestroy(&xv));
+  for (PetscInt el = 0; el < m->nelem; el++) qkey[el] = m->elem_nat[el];
+  PetscCall(TslRendezvous(d->comm, 1, w - 1, ns, akey, aval, m->nelem, qkey, qval, qf));
+  for (PetscInt el = 0; el < m->nelem; el++) {
+    const PetscReal *v = &qval[el * (w - 1)];
+    if (!qf[el]) {
+      missing++;
+      continue;
+    }
+    for (PetscInt j = 0; j < e->nearr; j++) e->real[e->nglobal + j * m->nelem + el] = v[j];
+    if (e->lane && e->lane[el] >= 0) e->real[e->carried_off + e->lane[el]] = v[e->nearr];
+  }
+  PetscCall(PetscFree5(akey, aval, qkey, qval, qf));
+  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &missing, 1, MPIU_INT, MPI_SUM, d->comm));
+  PetscCheck(!missing, d->comm, PETSC_ERR_FILE_UNEXPECTED, "restart point %s holds no explicit state for %" PetscInt_FMT " of this model's elements (or its scalars)", d->rs_point, missing);
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -1282,7 +1330,7 @@ PetscErrorCode TslRestartLoadExtra(Driver *d, TslRestartExtra *extra)
       ExtraName(j, extra->nvec + 1, name, sizeof(name));
       PetscCall(LoadVector(d, vw, name, extra->vec[j]));
     }
-    PetscCall(LoadExtraBlobs(d, vw, extra));
+    PetscCall(LoadExtraNatural(d, vw, extra));
     PetscCall(PetscViewerDestroy(&vw));
     PetscFunctionReturn(PETSC_SUCCESS);
   }

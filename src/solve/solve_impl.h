@@ -149,7 +149,7 @@ typedef struct {
   /* a point written on another rank count (rs_nranks) is read in natural terms: its state's records (rs_nblob), its
    * vectors through rs_map, from their file split (rs_fvec's layout) to this run's (restart.c, NaturalMap) */
   PetscBool      rs_portable;
-  PetscInt       rs_nblob, rs_nranks;
+  PetscInt       rs_nblob, rs_nranks, rs_xelem;
   VecScatter     rs_map;
   Vec            rs_fvec;
   uint64_t       rs_run_id;
