@@ -61,10 +61,14 @@ static PetscErrorCode Scatter(MPI_Comm comm, PetscInt kl, PetscInt w, PetscInt n
   PetscCallMPI(MPI_Alltoall(scnt, 1, MPI_INT, rcnt, 1, MPI_INT, comm));
   sd[0] = rd[0] = 0;
   for (PetscMPIInt r = 0; r < size; r++) {
-    PetscCheck((PetscInt64)scnt[r] * PetscMax(kl, w) < PETSC_MPI_INT_MAX && (PetscInt64)rcnt[r] * PetscMax(kl, w) < PETSC_MPI_INT_MAX, comm, PETSC_ERR_SUP,
-               "rendezvous: too many items for one message");
     if (r) sd[r] = sd[r - 1] + scnt[r - 1], rd[r] = rd[r - 1] + rcnt[r - 1];
     total += rcnt[r];
+  }
+  /* the displacements in MPI's int as well; decided on every rank together */
+  {
+    PetscInt big = (PetscInt64)n * PetscMax(kl, w) >= PETSC_MPI_INT_MAX || (PetscInt64)total * PetscMax(kl, w) >= PETSC_MPI_INT_MAX;
+    PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &big, 1, MPIU_INT, MPI_MAX, comm));
+    PetscCheck(!big, comm, PETSC_ERR_SUP, "rendezvous: too many items on one rank for one exchange (this rank: %" PetscInt_FMT " sent, %" PetscInt_FMT " received)", n, total);
   }
   for (PetscMPIInt r = 0; r < size; r++) {
     sk[r] = (PetscMPIInt)(scnt[r] * kl), rk[r] = (PetscMPIInt)(rcnt[r] * kl), sv[r] = (PetscMPIInt)(scnt[r] * w), rv[r] = (PetscMPIInt)(rcnt[r] * w);
