@@ -63,26 +63,20 @@ PetscReal      TslProblemGetStepTime(TslProblem prob);
 /* Mises plasticity: the state the last TslProblemHeatBalance found at its solution becomes the committed one (an
  * accepted increment; a cutback keeps the committed state, so nothing is rolled back). */
 PetscErrorCode TslProblemCommitState(TslProblem prob);
-/* Restart (src/physics/state.c, for src/solve/restart.c): the problem's committed state beyond the solution and the
- * step's tables (its contact nodes' pairing, history and slip, the nodal normals of 3D main surfaces, the plastic
- * points' state, the surface-to-surface points, whose number varies with the cut) as one block of bytes in this rank's
- * own layout, so valid for a continuation on the same ranks and partition only. Unpack reads nbytes of it back, the
- * current state and the committed one as they were packed (an explicit increment's pairing search follows its commit),
- * and marks the matrix pattern stale. */
-PetscErrorCode TslProblemStateSize(TslProblem prob, size_t *bytes);
-PetscErrorCode TslProblemStatePack(TslProblem prob, void *buf);
-PetscErrorCode TslProblemStateUnpack(TslProblem prob, const void *buf, size_t nbytes);
 /* A digest of this rank's layout (nodes with their ids and coordinates, dofs, elements, contact nodes), for checking that a
  * continuation has the model and partition its restart point was written with. */
 PetscErrorCode TslProblemLayoutDigest(TslProblem prob, uint64_t *digest);
-/* The same state in the deck's own terms, for a continuation on another rank count or partition: blobs of reals, each
+/* Restart (src/physics/state.c, for src/solve/restart.c): the problem's state beyond the solution and the step's
+ * tables (its contact nodes' pairing, history and slip, the plastic points' state, the surface-to-surface points,
+ * whose number varies with the cut), current and committed (an explicit increment's pairing search follows its
+ * commit), in the deck's own terms, so that a continuation on any rank count or partition reads it: blobs of reals, each
  * under a key of TSL_BLOB_KEY integers made of natural indices (a kind, then e.g. the pair and the node), local indices
  * written as natural ones (a pairing's main face as its first three nodes). StateBlobs gives this rank's (*n of them,
  * keys key[TSL_BLOB_KEY*i..], lengths len[i], the values one after the other in val; PetscFree each array).
  * StateFromBlobs asks fetch, collectively (a fixed number of rounds on every rank), for the blobs this rank's
  * contact nodes, plastic elements and faces need, and takes them in; the solution must be in place already (the 3D
  * nodal normals are computed from it). A state the point lacks, or a pairing with a main face this partition does
- * not hold, is an error. */
+ * not hold, is an error. The matrix pattern is marked stale (the pairing is the point's). */
 #define TSL_BLOB_KEY 5
 typedef PetscErrorCode (*TslBlobFetch)(void *ctx, PetscInt n, const int64_t key[], const PetscInt len[], PetscReal val[], PetscBool found[]);
 PetscErrorCode TslProblemStateBlobs(TslProblem prob, PetscInt *n, int64_t **key, PetscInt **len, PetscReal **val);

@@ -5,23 +5,23 @@
  * writing leaves the points before it valid. It holds
  *   header   the increment loop's variables (TslRestartLoop), the driver's sums, the output's frame and history
  *            row counts and its run identity, and each step's total time at its start;
- *   layout   per rank: a digest of its nodes, elements and contact nodes (the continuation must have the same model
- *            and partition), and the length of its state (surface-to-surface points vary in number);
+ *   layout   per rank: a digest of its nodes, elements and contact nodes (a continuation on the same rank count
+ *            must have the same partition: it reads the vectors as they stand);
  *   X, Xprev the solution at the point and the one before it (the extrapolation of the next increment's start);
  *   start_k  the solution at the start of each step k up to the point's (TslProblemSetStep reads the values reached
  *            there: ramps from them, FIXED holds them), replayed by the continuation step by step;
- *   state    the problem's committed state as bytes per rank (contact nodes, 3D surface normals, plastic points);
- *   extra_j  in an explicit step's point, the procedure's own state (TslRestartExtra, explicit.c): its vectors
- *            (velocity, masses, forces) and extra_real, its reals per rank (the loop's, the element increments);
+ *   extra_j  in an explicit step's point, the procedure's own vectors (TslRestartExtra, explicit.c: velocity,
+ *            masses, forces);
  *   natnode  the natural index of each node block of the vectors (a point read on another rank count: NaturalMap);
- *   blobs    the state in natural terms (TslProblemStateBlobs) as records of keys and reals (LoadState);
+ *   blobs    the problem's state (contact nodes, plastic points, surface-to-surface points: TslProblemStateBlobs) and
+ *            an explicit step's scalars, in natural terms: records of keys and reals (LoadState);
  *   xelem    in an explicit step's point, each element's reals under its natural index (ElemRecords);
  *   checksum one order-independent checksum per dataset above (the sum of its values' bits modulo 2^64), verified
  *            before a point is used, so that a corrupted point is passed over for the one before it.
- * The vectors are in PETSc's parallel layout and the state in each rank's own: on the rank count and partition the
- * point was written with they are read as they stand (bit for bit). On another count the vectors are scattered to this
- * run's layout through natnode and the state (with an explicit step's scalars) is read from blobs, an explicit
- * step's element reals from xelem, by rendezvous on their keys (TslRendezvous). */
+ * The vectors are in PETSc's parallel layout: on the rank count and partition the point was written with they are read
+ * as they stand, on another they are scattered to this run's layout through natnode. The state is in natural terms
+ * whatever the count, one form for both: blobs and xelem are read by rendezvous on their keys (TslRendezvous), which
+ * gives each record back bit for bit. */
 #include "solve_impl.h"
 #include <petscviewerhdf5.h>
 #include <dirent.h>
@@ -31,7 +31,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#define RS_VERSION 5
+#define RS_VERSION 6
 enum {
   H_VERSION = 0,
   H_NRANKS,
@@ -212,7 +212,7 @@ static PetscErrorCode Checksum(Vec v, uint64_t *ck)
 
 /* The checksums' places: layout, state, X, Xprev, natnode, blobs (with xelem's added), then start_k, then the extra
  * datasets */
-enum { CK_LAYOUT = 0, CK_STATE, CK_X, CK_XPREV, CK_NATNODE, CK_BLOBS, CK_START };
+enum { CK_LAYOUT = 0, CK_X, CK_XPREV, CK_NATNODE, CK_BLOBS, CK_START };
 
 /* The state in natural terms (TslProblemStateBlobs) as records of BLOB_KL keys (the blob's, then the chunk's number)
  * and BLOB_W reals, a blob cut into chunks of BLOB_W reals (at least one) */
@@ -315,10 +315,9 @@ static PetscErrorCode NaturalData(Driver *d, const TslRestartExtra *extra, Vec *
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-static void ExtraName(PetscInt j, PetscInt nextra, char name[], size_t len)
+static void ExtraName(PetscInt j, char name[], size_t len)
 {
-  if (j == nextra - 1) snprintf(name, len, "extra_real");
-  else snprintf(name, len, "extra_%d", (int)j);
+  snprintf(name, len, "extra_%d", (int)j);
 }
 
 PetscBool TslRestartDue(const TslStep *step, PetscInt inc, PetscReal t_old, PetscReal t_new, PetscBool last, char why[], size_t len)
@@ -352,22 +351,19 @@ PetscBool TslRestartDue(const TslStep *step, PetscInt inc, PetscReal t_old, Pets
 PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char *why, const TslRestartExtra *extra)
 {
   const TslModel *m;
-  size_t          bytes;
   PetscMPIInt     size, rank;
   PetscInt        nh, ns;
   char            tmp[PETSC_MAX_PATH_LEN + 8], path[PETSC_MAX_PATH_LEN];
   PetscViewer     vw;
-  Vec             hv, dv, sv, cv, X, nv, bv, xv = NULL;
+  Vec             hv, dv, cv, X, nv, bv, xv = NULL;
   double          t0 = MPI_Wtime();
   uint64_t        digest, model, mesh, *ck;
   PetscInt        nrec;
   int             err = 0;
-  const PetscInt  nextra = extra ? extra->nvec + 1 : 0;
-  Vec             ev     = NULL;
+  const PetscInt  nextra = extra ? extra->nvec : 0;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetModel(d->prob, &m));
-  PetscCall(TslProblemStateSize(d->prob, &bytes));
   PetscCallMPI(MPI_Comm_size(d->comm, &size));
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
   PetscCall(PointPath(d, loop->step + 1, loop->inc, path, sizeof(path)));
@@ -418,25 +414,13 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     /* the output's counts are needed on rank 0 only; every rank takes part in nothing here */
   }
   PetscCall(TslProblemLayoutDigest(d->prob, &digest));
-  PetscCall(LocalVec(d->comm, 2, "layout", &dv));
-  PetscCall(VecSetValue(dv, 2 * rank, Bits(digest), INSERT_VALUES));
-  PetscCall(VecSetValue(dv, 2 * rank + 1, (PetscReal)((bytes + sizeof(PetscScalar) - 1) / sizeof(PetscScalar)), INSERT_VALUES));
+  PetscCall(LocalVec(d->comm, 1, "layout", &dv));
+  PetscCall(VecSetValue(dv, rank, Bits(digest), INSERT_VALUES));
   PetscCall(VecAssemblyBegin(dv));
   PetscCall(VecAssemblyEnd(dv));
-  PetscCall(LocalVec(d->comm, (PetscInt)((bytes + sizeof(PetscScalar) - 1) / sizeof(PetscScalar)), "state", &sv));
-  {
-    PetscScalar *a;
-    PetscInt     n;
-    PetscCall(VecGetLocalSize(sv, &n));
-    PetscCall(VecGetArray(sv, &a));
-    if (n) a[n - 1] = 0;
-    PetscCall(TslProblemStatePack(d->prob, a));
-    PetscCall(VecRestoreArray(sv, &a));
-  }
   PetscCall(TslProblemGetSolution(d->prob, &X));
   PetscCall(PetscMalloc1(CK_START + ns + nextra, &ck));
   PetscCall(Checksum(dv, &ck[CK_LAYOUT]));
-  PetscCall(Checksum(sv, &ck[CK_STATE]));
   PetscCall(Checksum(X, &ck[CK_X]));
   ck[CK_XPREV] = 0;
   if (loop->h_prev > 0 && d->Xprev) PetscCall(Checksum(d->Xprev, &ck[CK_XPREV]));
@@ -449,15 +433,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
     ck[CK_BLOBS] += cx;
   }
   for (PetscInt k = 0; k < ns; k++) PetscCall(Checksum(d->rs_xstart[k], &ck[CK_START + k]));
-  if (extra) {
-    PetscScalar *a;
-    for (PetscInt j = 0; j < extra->nvec; j++) PetscCall(Checksum(extra->vec[j], &ck[CK_START + ns + j]));
-    PetscCall(LocalVec(d->comm, extra->nreal, "extra_real", &ev));
-    PetscCall(VecGetArray(ev, &a));
-    for (PetscInt i = 0; i < extra->nreal; i++) a[i] = extra->real[i];
-    PetscCall(VecRestoreArray(ev, &a));
-    PetscCall(Checksum(ev, &ck[CK_START + ns + extra->nvec]));
-  }
+  for (PetscInt j = 0; j < nextra; j++) PetscCall(Checksum(extra->vec[j], &ck[CK_START + ns + j]));
   PetscCall(LocalVec(d->comm, rank ? 0 : CK_START + ns + nextra, "checksum", &cv));
   if (!rank) {
     PetscScalar *c;
@@ -470,7 +446,6 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCall(PetscViewerHDF5Open(d->comm, tmp, FILE_MODE_WRITE, &vw));
   PetscCall(VecView(hv, vw));
   PetscCall(VecView(dv, vw));
-  PetscCall(VecView(sv, vw));
   PetscCall(VecView(cv, vw));
   PetscCall(VecView(nv, vw));
   PetscCall(VecView(bv, vw));
@@ -484,8 +459,8 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   }
   for (PetscInt j = 0; j < nextra; j++) {
     char name[32];
-    ExtraName(j, nextra, name, sizeof(name));
-    PetscCall(j < nextra - 1 ? ViewNamed(extra->vec[j], name, vw) : VecView(ev, vw));
+    ExtraName(j, name, sizeof(name));
+    PetscCall(ViewNamed(extra->vec[j], name, vw));
   }
   {
     PetscInt one = 1;
@@ -494,9 +469,7 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscCall(PetscViewerDestroy(&vw));
   PetscCall(VecDestroy(&hv));
   PetscCall(VecDestroy(&dv));
-  PetscCall(VecDestroy(&sv));
   PetscCall(VecDestroy(&cv));
-  PetscCall(VecDestroy(&ev));
   PetscCall(VecDestroy(&nv));
   PetscCall(VecDestroy(&bv));
   PetscCall(VecDestroy(&xv));
@@ -507,19 +480,13 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   if (m->steps[loop->step].restart_overlay && d->rs_last[0] && strcmp(d->rs_last, path) && !rank) (void)unlink(d->rs_last);
   PetscCall(PetscStrncpy(d->rs_last, path, sizeof(d->rs_last)));
   {
-    double      dt = MPI_Wtime() - t0, b = (double)bytes;
-    PetscInt    N;
+    double   dt = MPI_Wtime() - t0, b;
+    PetscInt N, bs;
     PetscCall(VecGetSize(X, &N));
-    PetscInt    bs;
     PetscCall(VecGetBlockSize(X, &bs));
-    b += 8.0 * N * (1 + ns + (loop->h_prev > 0 && d->Xprev) + (extra ? extra->nvec : 0));
-    b += 8.0 * ((double)N / bs + (double)nrec * BLOB_REC); /* natnode, blobs */
-    if (extra) b += 8.0 * (double)m->nelem_global * XelemWidth(extra);
-    if (extra) {
-      PetscInt nr = extra->nreal;
-      PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nr, 1, MPIU_INT, MPI_SUM, d->comm));
-      b += 8.0 * nr;
-    }
+    b = 8.0 * N * (1 + ns + (loop->h_prev > 0 && d->Xprev) + nextra);   /* the vectors */
+    b += 8.0 * ((double)N / bs + (double)nrec * BLOB_REC);               /* natnode, blobs */
+    if (extra) b += 8.0 * (double)m->nelem_global * XelemWidth(extra); /* xelem */
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &dt, 1, MPI_DOUBLE, MPI_MAX, d->comm));
     d->rs_count++;
     d->rs_seconds += dt;
@@ -530,8 +497,8 @@ PetscErrorCode TslRestartWrite(Driver *d, const TslRestartLoop *loop, const char
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* What a continuation expects of a point: the header's length, the rank count, the model digest, the global lengths of
- * X and of the state */
+/* What a continuation expects of a point: the header's length, the rank count, the model and mesh digests, the global
+ * lengths of X, its block size and the element count */
 typedef struct {
   PetscInt    nh, nx, bs, nelem;
   PetscMPIInt size;
@@ -621,7 +588,7 @@ static int PointValid(const char *path, const Expect *e, char why[], size_t len,
   *h_nranks = (PetscInt)h[H_NRANKS];
   *h_nblob  = (PetscInt)h[H_NBLOB];
   *h_xelem  = (PetscInt)h[H_XELEM];
-  if (*h_nranks < 1 || *h_nblob < 0 || *h_xelem < 0 || !HasDataset(f, "layout", 2 * *h_nranks) || !HasDataset(f, "natnode", e->nx / e->bs) ||
+  if (*h_nranks < 1 || *h_nblob < 0 || *h_xelem < 0 || !HasDataset(f, "layout", *h_nranks) || !HasDataset(f, "natnode", e->nx / e->bs) ||
       !HasDataset(f, "blobs", *h_nblob * BLOB_REC) || (*h_xelem && !HasDataset(f, "xelem", e->nelem * *h_xelem))) {
     snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
     goto done;
@@ -630,7 +597,7 @@ static int PointValid(const char *path, const Expect *e, char why[], size_t len,
   *h_step   = (PetscInt)h[H_STEP];
   *h_xprev  = h[H_HAS_XPREV] > 0;
   *h_nextra = (PetscInt)h[H_NEXTRA];
-  if (*h_step < 0 || (PetscInt)(2 * *h_step + H_TSTART) >= *h_len || *h_nextra < 0 || *h_nextra > TSL_RESTART_MAXVEC + 1 ||
+  if (*h_step < 0 || (PetscInt)(2 * *h_step + H_TSTART) >= *h_len || *h_nextra < 0 || *h_nextra > TSL_RESTART_MAXVEC ||
       !HasDataset(f, "checksum", CK_START + *h_step + 1 + *h_nextra) || (*h_xprev && !HasDataset(f, "Xprev", e->nx))) {
     snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
     goto done;
@@ -644,15 +611,12 @@ static int PointValid(const char *path, const Expect *e, char why[], size_t len,
     }
   }
   for (PetscInt j = 0; j < *h_nextra; j++) {
-    char  name[32];
-    hid_t x;
-    ExtraName(j, *h_nextra, name, sizeof(name));
-    x = j < *h_nextra - 1 ? (HasDataset(f, name, e->nx) ? 1 : -1) : H5Dopen2(f, name, H5P_DEFAULT);
-    if (x < 0) {
+    char name[32];
+    ExtraName(j, name, sizeof(name));
+    if (!HasDataset(f, name, e->nx)) {
       snprintf(why, len, "some of its data are missing (truncated or corrupted?)");
       goto done;
     }
-    if (j == *h_nextra - 1) H5Dclose(x);
   }
   ok = 1;
 done:
@@ -666,21 +630,19 @@ done:
 
 /* Collective: every dataset of the point read and checked against its checksum, and this rank's layout against the
  * one written. *status: 1 sound, 0 corrupted (why), -1 another model or partition (why). */
-static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nextra, PetscBool portable, PetscBool xelem, PetscInt *nstate_local,
-                                 int *status, char why[], size_t len)
+static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, PetscInt xprev, PetscInt nextra, PetscBool portable, PetscBool xelem, int *status, char why[],
+                                 size_t len)
 {
   PetscViewer vw;
-  Vec         cv, v, X;
+  Vec         cv, v;
   PetscMPIInt rank;
-  PetscInt    nck = CK_START + step + 1 + nextra, nx;
+  PetscInt    nck = CK_START + step + 1 + nextra;
   uint64_t   *want, got, digest;
   PetscBool   bad = PETSC_FALSE;
   const char *which = NULL;
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
-  PetscCall(TslProblemGetSolution(d->prob, &X));
-  PetscCall(VecGetLocalSize(X, &nx));
   PetscCall(PetscMalloc1(nck, &want));
   PetscCall(PetscViewerHDF5Open(d->comm, path, FILE_MODE_READ, &vw));
   PetscCall(LocalVec(d->comm, rank ? 0 : nck, "checksum", &cv));
@@ -694,24 +656,21 @@ static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, Pet
   PetscCall(VecDestroy(&cv));
   PetscCallMPI(MPI_Bcast(want, (PetscMPIInt)nck, MPI_UINT64_T, 0, d->comm));
   *status = 1;
-  /* the layout: this rank's digest against the one its rank wrote, and the length of its state (on another rank count
-   * the point is read in natural terms, its per-rank data only checked) */
+  /* the layout: on the rank count the point was written on, this rank's digest against the one its rank wrote (the
+   * vectors are read as they stand); on another, only checked (they are read in natural terms) */
   if (portable) {
     PetscCall(VecCreate(d->comm, &v));
     PetscCall(VecSetType(v, VECMPI));
     PetscCall(PetscObjectSetName((PetscObject)v, "layout"));
-  } else PetscCall(LocalVec(d->comm, 2, "layout", &v));
+  } else PetscCall(LocalVec(d->comm, 1, "layout", &v));
   PetscCall(VecLoad(v, vw));
   PetscCall(Checksum(v, &got));
-  *nstate_local = 0;
   if (got != want[CK_LAYOUT]) *status = 0, which = "layout";
   else if (!portable) {
     const PetscScalar *a;
     PetscCall(TslProblemLayoutDigest(d->prob, &digest));
     PetscCall(VecGetArrayRead(v, &a));
-    bad           = (PetscBool)(Unbits(PetscRealPart(a[0])) != digest);
-    *nstate_local = (PetscInt)PetscRealPart(a[1]);
-    bad           = (PetscBool)(bad || *nstate_local < 0);
+    bad = (PetscBool)(Unbits(PetscRealPart(a[0])) != digest);
     PetscCall(VecRestoreArrayRead(v, &a));
     PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPIU_BOOL, MPI_LOR, d->comm));
     if (bad) {
@@ -720,15 +679,14 @@ static PetscErrorCode VerifyData(Driver *d, const char *path, PetscInt step, Pet
     }
   }
   PetscCall(VecDestroy(&v));
-  (void)nx;
-  for (PetscInt k = CK_STATE; k < nck && *status == 1; k++) {
+  for (PetscInt k = CK_X; k < nck && *status == 1; k++) {
     char           name[32];
     const PetscInt j = k - (CK_START + step + 1); /* an extra dataset's index */
-    const char    *names[CK_START] = {"layout", "state", "X", "Xprev", "natnode", "blobs"};
+    const char    *names[CK_START] = {"layout", "X", "Xprev", "natnode", "blobs"};
     if (k == CK_XPREV && !xprev) continue;
     if (k < CK_START) PetscCall(PetscStrncpy(name, names[k], sizeof(name)));
     else if (j < 0) PetscCall(PetscSNPrintf(name, sizeof(name), "start_%" PetscInt_FMT, k - CK_START));
-    else ExtraName(j, nextra, name, sizeof(name));
+    else ExtraName(j, name, sizeof(name));
     /* in PETSc's split: the checksum is independent of the ranks' shares */
     PetscCall(VecCreate(d->comm, &v));
     PetscCall(VecSetType(v, VECMPI));
@@ -871,7 +829,7 @@ static PetscErrorCode ExpectFor(Driver *d, PetscInt any_steps, Expect *ex)
 static PetscErrorCode CheckPoint(Driver *d, const Expect *ex, int *st, char why[], size_t len, PetscInt *nh_file)
 {
   PetscMPIInt rank;
-  PetscInt    hs[7] = {0, 0, 0, 0, 0, 0, 0}, nstate_local = 0;
+  PetscInt    hs[7] = {0, 0, 0, 0, 0, 0, 0};
 
   PetscFunctionBeginUser;
   PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
@@ -879,9 +837,9 @@ static PetscErrorCode CheckPoint(Driver *d, const Expect *ex, int *st, char why[
   PetscCallMPI(MPI_Bcast(st, 1, MPI_INT, 0, d->comm));
   PetscCallMPI(MPI_Bcast(hs, 7, MPIU_INT, 0, d->comm));
   PetscCallMPI(MPI_Bcast(why, (PetscMPIInt)len, MPI_CHAR, 0, d->comm));
-  if (*st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], (PetscBool)(hs[4] != ex->size), hs[6] > 0, &nstate_local, st, why, len));
+  if (*st == 1) PetscCall(VerifyData(d, d->rs_point, hs[0], hs[1], hs[2], (PetscBool)(hs[4] != ex->size), hs[6] > 0, st, why, len));
   if (*st == 1) {
-    d->rs_nextra = hs[2], d->rs_nstate = nstate_local, *nh_file = hs[3];
+    d->rs_nextra = hs[2], *nh_file = hs[3];
     d->rs_portable = (PetscBool)(hs[4] != ex->size), d->rs_nblob = hs[5], d->rs_nranks = hs[4], d->rs_xelem = hs[6];
   }
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -1279,30 +1237,20 @@ PetscErrorCode TslRestartStepStart(Driver *d, PetscInt s, PetscReal *total_time)
 
 PetscErrorCode TslRestartLoad(Driver *d, TslRestartLoop *loop)
 {
-  PetscViewer  vw;
-  Vec          X, sv;
-  PetscScalar *a;
+  PetscViewer vw;
+  Vec         X;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetSolution(d->prob, &X));
+  /* the layout and the checksums were verified when the point was chosen (TslRestartSetUp) */
   PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
-  /* the layout and the checksums were verified when the point was chosen (TslRestartSetUp), this rank's state length
-   * read there */
-  if (!d->rs_portable) {
-    PetscCall(LocalVec(d->comm, d->rs_nstate, "state", &sv));
-    PetscCall(VecLoad(sv, vw));
-    PetscCall(VecGetArray(sv, &a));
-    PetscCall(TslProblemStateUnpack(d->prob, a, sizeof(PetscScalar) * (size_t)d->rs_nstate));
-    PetscCall(VecRestoreArray(sv, &a));
-    PetscCall(VecDestroy(&sv));
-  }
   PetscCall(LoadVector(d, vw, "X", X));
   if (d->rs_loop.h_prev > 0) {
     if (!d->Xprev) PetscCall(VecDuplicate(X, &d->Xprev));
     PetscCall(LoadVector(d, vw, "Xprev", d->Xprev));
   }
   PetscCall(TslGhostUpdate(X, INSERT_VALUES, SCATTER_FORWARD));
-  if (d->rs_portable) PetscCall(LoadState(d, vw)); /* after the solution: the 3D nodal normals are computed from it */
+  PetscCall(LoadState(d, vw)); /* after the solution: the 3D nodal normals are computed from it */
   PetscCall(PetscViewerDestroy(&vw));
   RestoreSums(d, d->rs_sums);
   *loop       = d->rs_loop;
@@ -1312,58 +1260,20 @@ PetscErrorCode TslRestartLoad(Driver *d, TslRestartLoop *loop)
 
 PetscErrorCode TslRestartLoadExtra(Driver *d, TslRestartExtra *extra)
 {
-  PetscViewer  vw;
-  Vec          ev;
-  PetscInt     nr = extra->nreal, nr_file = -1;
-  PetscMPIInt  rank;
-  PetscScalar *a;
+  PetscViewer vw;
 
   PetscFunctionBeginUser;
-  PetscCallMPI(MPI_Comm_rank(d->comm, &rank));
-  PetscCheck(d->rs_nextra == extra->nvec + 1, d->comm, PETSC_ERR_FILE_UNEXPECTED,
+  PetscCheck(d->rs_nextra == extra->nvec, d->comm, PETSC_ERR_FILE_UNEXPECTED,
              "restart point %s holds %" PetscInt_FMT " vectors of the explicit step's state, this run's step has %" PetscInt_FMT " (another contact set-up?)", d->rs_point,
-             d->rs_nextra - 1, extra->nvec);
-  if (d->rs_portable) { /* another rank count: the vectors through the natural map, the reals from the records */
-    PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
-    for (PetscInt j = 0; j < extra->nvec; j++) {
-      char name[32];
-      ExtraName(j, extra->nvec + 1, name, sizeof(name));
-      PetscCall(LoadVector(d, vw, name, extra->vec[j]));
-    }
-    PetscCall(LoadExtraNatural(d, vw, extra));
-    PetscCall(PetscViewerDestroy(&vw));
-    PetscFunctionReturn(PETSC_SUCCESS);
-  }
-  PetscCallMPI(MPI_Allreduce(MPI_IN_PLACE, &nr, 1, MPIU_INT, MPI_SUM, d->comm));
-  if (!rank) {
-    H5E_auto2_t efunc;
-    void       *edata;
-    hid_t       f;
-    (void)H5Eget_auto2(H5E_DEFAULT, &efunc, &edata);
-    (void)H5Eset_auto2(H5E_DEFAULT, NULL, NULL);
-    f = H5Fopen(d->rs_point, H5F_ACC_RDONLY, H5P_DEFAULT);
-    if (f >= 0) {
-      if (HasDataset(f, "extra_real", nr)) nr_file = nr;
-      H5Fclose(f);
-    }
-    (void)H5Eset_auto2(H5E_DEFAULT, efunc, edata);
-  }
-  PetscCallMPI(MPI_Bcast(&nr_file, 1, MPIU_INT, 0, d->comm));
-  PetscCheck(nr_file == nr, d->comm, PETSC_ERR_FILE_UNEXPECTED,
-             "restart point %s: its explicit step's state has another size than this run's (another mass scaling, bulk viscosity or element set-up?)", d->rs_point);
+             d->rs_nextra, extra->nvec);
   PetscCall(PetscViewerHDF5Open(d->comm, d->rs_point, FILE_MODE_READ, &vw));
   for (PetscInt j = 0; j < extra->nvec; j++) {
     char name[32];
-    ExtraName(j, extra->nvec + 1, name, sizeof(name));
+    ExtraName(j, name, sizeof(name));
     PetscCall(LoadVector(d, vw, name, extra->vec[j]));
   }
-  PetscCall(LocalVec(d->comm, extra->nreal, "extra_real", &ev));
-  PetscCall(VecLoad(ev, vw));
+  PetscCall(LoadExtraNatural(d, vw, extra));
   PetscCall(PetscViewerDestroy(&vw));
-  PetscCall(VecGetArray(ev, &a));
-  for (PetscInt i = 0; i < extra->nreal; i++) extra->real[i] = PetscRealPart(a[i]);
-  PetscCall(VecRestoreArray(ev, &a));
-  PetscCall(VecDestroy(&ev));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

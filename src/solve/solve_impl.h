@@ -145,7 +145,7 @@ typedef struct {
   TslRestartLoop rs_loop;
   PetscReal      rs_ptime;     /* the problem's step time at the point (TslProblemGetStepTime) */
   PetscReal      rs_sums[24];  /* the driver's sums at the point (restart.c, RestoreSums) */
-  PetscInt       rs_nframe, rs_nrow, rs_fell_back, rs_nextra, rs_nstate; /* the point's counts; this rank's state length (reals) */
+  PetscInt       rs_nframe, rs_nrow, rs_fell_back, rs_nextra; /* the point's counts */
   /* a point written on another rank count (rs_nranks) is read in natural terms: its state's records (rs_nblob), its
    * vectors through rs_map, from their file split (rs_fvec's layout) to this run's (restart.c, NaturalMap) */
   PetscBool      rs_portable;
