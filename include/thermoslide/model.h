@@ -99,6 +99,10 @@ typedef struct {
   TslPlasticTable  plastic;
   PetscReal        heat_fraction; /* *INELASTIC HEAT FRACTION (0: none given: no plastic heating) */
   TslLoc           heat_fraction_loc;
+  /* *DAMPING, ALPHA=, BETA= (Rayleigh damping; explicit steps only, docs/explicit.md "Damping"): nodal forces alpha m v
+   * on the material's lumped masses and the damping stress beta D^el : eps_dot in its elements (0, 0: none) */
+  PetscReal        damp_alpha, damp_beta;
+  TslLoc           damping_loc;
   TslLoc           loc;
 } TslMaterial;
 

@@ -265,6 +265,9 @@ PetscErrorCode TslProblemExplicitKinematicForces(TslProblem prob, Vec Fk, TslExp
  * capacity dQ/dtheta in the temperature slot, at the current temperatures (collective). An element with a
  * non-positive lumped mass at a node is a user error naming it. */
 PetscErrorCode TslProblemLumpedMass(TslProblem prob, const PetscReal scale[], Vec M);
+/* *DAMPING of each local element's material: alpha[e] (mass-proportional, 1/time) and beta[e] (stiffness-proportional,
+ * time); 0 without. */
+PetscErrorCode TslProblemElementDamping(TslProblem prob, PetscReal alpha[], PetscReal beta[]);
 /* Each local element's stable increments with its unscaled lumped mass: mechanical 2 / omega_max and thermal
  * 2 / lambda_max, from the largest eigenvalues of M^-1 K_uu and C^-1 K_thth of the element (no global
  * eigenvalue exceeds the largest element one). dt_heat is PETSC_MAX_REAL for an element without conduction. */

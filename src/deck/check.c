@@ -583,6 +583,14 @@ static PetscErrorCode CheckNlgeom(TslModel *m)
     }
     for (PetscInt k = 0; k < m->nsection && plastic < 0; k++)
       if (TslMaterialIsPlastic(&m->materials[m->sections[k].material_index])) plastic = k;
+    for (PetscInt k = 0; k < m->nsection && s->explicit_dynamics; k++) {
+      const TslMaterial *mt = &m->materials[m->sections[k].material_index];
+      /* the damping stress is the small-strain beta D : B v on the reference configuration: it would resist a rigid rotation */
+      CHECK(mt->damp_beta == 0, mt->damping_loc,
+            "*DAMPING, BETA= (material %s) in the finite-strain explicit step %s is not supported: its damping stress is the small-strain one, "
+            "which resists rigid rotations; use ALPHA= or leave NLGEOM off",
+            mt->name, s->name);
+    }
     if (plastic >= 0)
       PetscCall(PetscPrintf(PETSC_COMM_SELF,
                             "%s: warning: *STEP, NLGEOM: in step %s the elements of material %s (*PLASTIC) keep small-strain kinematics (finite-strain "

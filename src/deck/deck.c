@@ -1516,6 +1516,31 @@ static PetscErrorCode KwInelasticHeatFraction(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *DAMPING, ALPHA=, BETA= (a material option; no data lines): Rayleigh damping of the material, mass-proportional alpha
+ * (1/time) and stiffness-proportional beta (time). Explicit steps apply it (docs/explicit.md "Damping"); the other steps
+ * have no inertia, so it has no effect there, as in the dialect. COMPOSITE= and STRUCTURAL= (the steady-state dynamics
+ * forms) are refused. */
+static PetscErrorCode KwDamping(Deck *d, const DeckKeyword *kw)
+{
+  TslMaterial *mat = &d->m->materials[d->material];
+  PetscBool    a = PETSC_FALSE, b = PETSC_FALSE, got;
+
+  PetscFunctionBeginUser;
+  (void)kw;
+  USER_CHECK(!Param(d, "STRUCTURAL") && !Param(d, "COMPOSITE"),
+             LOC_FMT "*DAMPING, STRUCTURAL= and COMPOSITE= (steady-state dynamics) are not supported: give ALPHA= and BETA= (Rayleigh damping)", KLOC(d));
+  USER_CHECK(mat->damping_loc.line == 0, LOC_FMT "*DAMPING is given twice in material %s", KLOC(d), mat->name);
+  PetscCall(ParamReal(d, "ALPHA", &mat->damp_alpha, &a));
+  PetscCall(ParamReal(d, "BETA", &mat->damp_beta, &b));
+  USER_CHECK(a || b, LOC_FMT "*DAMPING needs ALPHA= (mass-proportional, 1/time) or BETA= (stiffness-proportional, time)", KLOC(d));
+  USER_CHECK(mat->damp_alpha >= 0 && mat->damp_beta >= 0, LOC_FMT "*DAMPING, ALPHA= and BETA= must not be negative (got %g, %g)", KLOC(d),
+             (double)mat->damp_alpha, (double)mat->damp_beta);
+  mat->damping_loc = d->kwloc;
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(!got, LOC_FMT "*DAMPING takes no data lines (ALPHA= and BETA= are parameters)", DLOC(d));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* *RATE DEPENDENT (after *PLASTIC): the yield stress's rate factor, TYPE=POWER LAW (the default; "D, n") or JOHNSON
  * COOK ("C, rate_0"), one data line (temperature dependence and TYPE=YIELD RATIO: not yet). */
 static PetscErrorCode KwRateDependent(Deck *d, const DeckKeyword *kw)
@@ -3814,6 +3839,7 @@ static const DeckKeyword Keywords[] = {
     {"EXPANSION", AT_MODEL, IN_MATERIAL, "TYPE|ZERO", KwProperty, TSL_PROP_EXPANSION, NULL},
     {"PLASTIC", AT_MODEL, IN_MATERIAL, "HARDENING|RATE|DATA TYPE|NUMBER BACKSTRESSES", KwPlastic, 0, NULL},
     {"INELASTIC HEAT FRACTION", AT_MODEL, IN_MATERIAL, "", KwInelasticHeatFraction, 0, NULL},
+    {"DAMPING", AT_MODEL, IN_MATERIAL, "ALPHA|BETA|STRUCTURAL|COMPOSITE", KwDamping, 0, NULL},
     {"RATE DEPENDENT", AT_MODEL, IN_MATERIAL, "TYPE", KwRateDependent, 0, NULL},
     {"CYCLIC HARDENING", AT_MODEL, IN_MATERIAL, "PARAMETERS", KwCyclicHardening, 0, NULL},
     {"SOLID SECTION", AT_MODEL, IN_NONE, "ELSET|MATERIAL|REF NODE", KwSolidSection, 0, NULL},

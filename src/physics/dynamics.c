@@ -16,10 +16,12 @@ PetscErrorCode TslProblemSetMatrixFree(TslProblem p, PetscBool matrix_free)
 
 typedef struct {
   PetscScalar       *fi, *fe;
-  const PetscScalar *v;           /* local form of the half-step velocity (NULL: no bulk viscosity) */
+  const PetscScalar *v;           /* local form of the half-step velocity (NULL: no bulk viscosity from v, no damping) */
   const PetscReal   *eta, *eta2;  /* [nelem] b1 L_e / c_d and (b2 L_e / c_d)^2 (with q) */
   PetscReal         *q;           /* [nelem] q = p V of each element's viscosity: the last pass's in, this pass's out (NULL: no bulk viscosity) */
-  PetscReal          power, prev; /* this rank's sum of q eps_vol_dot, and of the last pass's q times this pass's eps_vol_dot */
+  PetscReal          power, prev; /* this rank's sum of q eps_vol_dot, and of the last pass's q times this pass's eps_vol_dot
+                                     (and of the *DAMPING, BETA forces' power v . f_d in both: DampingElement) */
+  PetscBool          damped;      /* some material has *DAMPING, BETA: v is gathered */
   PetscReal          hinv;        /* > 0: the records' rate from their centre strains over 1 / hinv (no gather of v); 0: from v */
   AsmHeat           *heat;
   PetscInt           bad;
@@ -49,7 +51,34 @@ static PetscErrorCode FaceLoads(TslProblem p, PetscInt e, TslElemData *d, ForceC
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-/* One element's internal forces and heat flow, and its bulk viscosity forces added to them, into fi (one
+/* *DAMPING, BETA (docs/explicit.md "Damping"): the damping stress beta D^el : eps_dot of the velocity v, whose nodal forces
+ * beta K v are the element's own small-strain elastic forces at u = v (the thermal strain taken away: the temperatures
+ * and their reference both the current ones, so D is the current temperature's; no plastic state: D^el), added to the
+ * mechanical rows of R; *power gets v . f_d = beta v^T K v >= 0. The extra nodes' slots (CPEG's reference node) are
+ * mechanical: all of them take v. */
+static PetscErrorCode DampingElement(const TslElemData *d, const PetscScalar *v, PetscReal beta, PetscInt ndof, PetscReal R[], PetscReal *power)
+{
+  TslElementInput in = d->in;
+  PetscReal       uv[TSL_MAX_ELEM_DOF], tv[TSL_MAX_ELEM_NODES], Rd[TSL_MAX_ELEM_DOF];
+  const PetscInt  ng = in.type->geom->nnode, th = ndof - 1;
+  PetscBool       inverted = PETSC_FALSE;
+
+  PetscFunctionBeginUser;
+  for (PetscInt a = 0; a < d->n; a++) {
+    for (PetscInt i = 0; i < ndof; i++) uv[a * ndof + i] = a < ng && i == th ? d->u[a * ndof + i] : PetscRealPart(v[d->ld[a * ndof + i]]);
+    tv[a] = a < ng ? d->u[a * ndof + th] : d->ti[a];
+  }
+  in.u = uv, in.theta_init = tv, in.pstate = NULL, in.pstate_new = NULL, in.inelastic_rate = 0, in.nlgeom = PETSC_FALSE;
+  PetscCall(TslElementInternal(&in, Rd, NULL, &inverted)); /* the element's geometry passed: never inverted here */
+  for (PetscInt r = 0; r < d->nd; r++) {
+    if (r / ndof < ng && r % ndof == th) continue;
+    R[r] += beta * Rd[r];
+    *power += beta * Rd[r] * uv[r];
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* One element's internal forces and heat flow, and its bulk viscosity and damping forces added to them, into fi (one
  * gather of the element's data per increment and one scatter), by the generic kernels. */
 static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, PetscBool *stop)
 {
@@ -68,11 +97,16 @@ static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, Pets
     *stop  = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
-  if (c->v && (c->eta[e] > 0 || c->eta2[e] > 0)) {
+  if (c->q && c->v && (c->eta[e] > 0 || c->eta2[e] > 0)) {
     PetscReal v[TSL_MAX_ELEM_DOF], w, qr[2];
     for (PetscInt r = 0; r < d->nd; r++) v[r] = PetscRealPart(c->v[d->ld[r]]);
     PetscCall(TslElementBulkViscosity(&d->in, v, c->eta[e], c->eta2[e], R, &w, qr)); /* added to R */
     c->power += w, c->prev += c->q[e] * qr[1], c->q[e] = qr[0];
+  }
+  if (c->damped && d->in.sec->mat->damp_beta > 0) {
+    PetscReal w = 0;
+    PetscCall(DampingElement(d, c->v, d->in.sec->mat->damp_beta, d->nd / d->n, R, &w));
+    c->power += w, c->prev += w; /* its work over an increment: the trapezoid of the two evaluations' power (explicit.c) */
   }
   for (PetscInt r = 0; r < d->nd; r++) c->fi[d->ld[r]] += R[r];
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -186,7 +220,13 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
     visc[j] = used[j] && (eta[j] > 0 || eta2[j] > 0) ? PETSC_TRUE : PETSC_FALSE;
     if (visc[j]) bv = PETSC_TRUE;
   }
-  if (bv && c->hinv == 0) GatherBatch(p, e, c->v, v, NULL, nd);
+  PetscReal beta[W];
+  PetscBool damp = PETSC_FALSE;
+  for (PetscInt j = 0; j < W; j++) {
+    beta[j] = c->damped && used[j] ? p->esec[e[j]].mat->damp_beta : 0;
+    if (beta[j] > 0) damp = PETSC_TRUE;
+  }
+  if ((bv && c->hinv == 0) || damp) GatherBatch(p, e, c->v, v, NULL, nd);
   if (b + 1 < p->fast_nbatch) { /* the next batch: its records past the caches (non-temporal), its nodal rows into them */
     const PetscReal *next = &p->fast_rec[p->fast_boff[b + 1]],
                     *end  = b + 2 < p->fast_nbatch ? &p->fast_rec[p->fast_boff[b + 2]] : p->fast_rec + p->fast_total;
@@ -208,6 +248,29 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
   if (bv) {
     for (PetscInt j = 0; j < W; j++)
       if (visc[j]) c->power += w[j], c->prev += c->q[e[j]] * qr[W + j], c->q[e[j]] = qr[j];
+  }
+  if (damp) { /* *DAMPING, BETA: the records' elastic forces at u = v, the temperatures their own reference (DampingElement) */
+    PetscReal uv[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED, tv[TSL_FAST_MAX_NODES * W] TSL_LANES_ALIGNED, Rd[TSL_MAX_ELEM_DOF * W] TSL_LANES_ALIGNED,
+        zero[W] = {0}, wd[W];
+    const PetscInt *ln[W];
+    const PetscInt  n = BatchNodes(p, e, ln);
+    for (PetscInt a = 0; a < n; a++)
+      for (PetscInt j = 0; j < W; j++) {
+        for (PetscInt i = 0; i < nd - 1; i++) uv[(nd * a + i) * W + j] = v[(nd * a + i) * W + j];
+        uv[(nd * a + nd - 1) * W + j] = tv[a * W + j] = u[(nd * a + nd - 1) * W + j];
+      }
+    TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], uv, tv, NULL, NULL, 0, zero, zero, Rd, NULL, wd, NULL);
+    for (PetscInt j = 0; j < W; j++) {
+      PetscReal pw = 0;
+      if (beta[j] == 0) continue;
+      for (PetscInt a = 0; a < n; a++)
+        for (PetscInt i = 0; i < nd - 1; i++) {
+          const PetscInt k = (nd * a + i) * W + j;
+          R[k] += beta[j] * Rd[k];
+          pw += beta[j] * Rd[k] * uv[k];
+        }
+      c->power += pw, c->prev += pw;
+    }
   }
   ScatterBatch(p, e, used, R, c->fi, nd);
 }
@@ -508,7 +571,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   const PetscScalar *xa;
   PetscScalar       *fc;
   AsmHeat            heat;
-  ForceCtx           c = {NULL, NULL, NULL, eta, eta2, q, 0, 0, 0, &heat, -1};
+  ForceCtx           c = {NULL, NULL, NULL, eta, eta2, q, 0, 0, PETSC_FALSE, 0, &heat, -1};
   /* with records on every element and a central-difference move since the last evaluation, the rate of the
    * bulk viscosity comes from the records' centre strains: v is neither exchanged nor gathered */
   const PetscBool    from_u = (PetscBool)(q && h > 0 && p->fast_built && p->fast_all);
@@ -519,7 +582,9 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscFunctionBeginUser;
   PetscCall(PetscMemzero(&heat, sizeof(heat)));
   if (from_u) c.hinv = 1 / h;
-  if (q && !from_u) {
+  for (PetscInt k = 0; k < p->m->nmaterial; k++)
+    if (p->m->materials[k].damp_beta > 0) c.damped = PETSC_TRUE; /* the same on every rank: the model's materials */
+  if ((q && !from_u) || c.damped) {
     PetscCall(TslGhostUpdate(V, INSERT_VALUES, SCATTER_FORWARD));
     PetscCall(VecGhostGetLocalForm(V, &vl));
     PetscCall(VecGetArrayRead(vl, &c.v));
@@ -561,7 +626,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(EndLocal(Fi, &il, &c.fi));
   PetscCall(VecRestoreArrayRead(xl, &xa));
   PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
-  if (q && !from_u) {
+  if ((q && !from_u) || c.damped) {
     PetscCall(VecRestoreArrayRead(vl, &c.v));
     PetscCall(VecGhostRestoreLocalForm(V, &vl));
   }
@@ -572,6 +637,13 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(MPIU_Allreduce(loc, g, 10, MPIU_REAL, MPIU_SUM, p->comm));
   rates->heat_in = g[0], rates->film_out = g[1], rates->interface_heat = g[2], rates->dissipation = g[3], rates->friction_heat = g[4];
   rates->viscous = g[5], rates->viscous_prev = g[6], rates->radiation_out = g[7], rates->plastic_work = g[8], rates->plastic_heat = g[9];
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemElementDamping(TslProblem p, PetscReal alpha[], PetscReal beta[])
+{
+  PetscFunctionBeginUser;
+  for (PetscInt e = 0; e < p->m->nelem; e++) alpha[e] = p->esec[e].mat->damp_alpha, beta[e] = p->esec[e].mat->damp_beta;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

@@ -65,6 +65,7 @@ PetscErrorCode TslProblemModelDigest(TslProblem p, uint64_t *digest)
     MixInt(&h, mt->plastic.rate_law);
     MixReals(&h, mt->plastic.rate, 2);
     MixReals(&h, &mt->heat_fraction, 1);
+    if (mt->damp_alpha != 0 || mt->damp_beta != 0) MixReals(&h, &mt->damp_alpha, 1), MixReals(&h, &mt->damp_beta, 1); /* undamped: the digest as before */
   }
   MixInt(&h, m->nsection);
   for (PetscInt k = 0; k < m->nsection; k++) {

@@ -37,6 +37,11 @@ typedef struct {
   Vec             Fi, Fe, Fc;      /* force vectors of the current state (Fi with the bulk viscosity's forces; Fc NULL without contact) */
   PetscReal      *qv, vd_h;        /* bulk viscosity: q = p V per element (NULL: none); h_avg of the last increment, whose
                                       viscous work's second half the next force evaluation books */
+  /* *DAMPING (docs/explicit.md "Damping"): per element alpha and beta of its material; AM the lumped alpha m per dof
+   * (NULL: no mass-proportional damping); damped: some beta > 0 (its forces are in Fi, its power in the rates' viscous) */
+  PetscReal      *alpha, *beta;
+  Vec             AM;
+  PetscBool       damped;
   Vec             Fk;              /* kinematic contact: the corrector's forces at the predicted state (NULL without) */
   Vec             W;               /* contact: a work vector (the corrector's, the interface's row sums for the stable increment; NULL without) */
   PetscInt        kin_passes, kin_total; /* -tsl_explicit_kinematic_passes (most corrector passes per increment); passes made in the step */
@@ -142,6 +147,8 @@ static PetscErrorCode WritePoint(Explicit *x, const TslRestartLoop *L, PetscReal
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode AlphaMasses(Explicit *x);
+
 /* The continuation (-tsl_restart) in the point's step: after the step's set-up (from the state the step started
  * with, so that what the set-up computes once is the original run's), the point's state replaces the set-up's. */
 static PetscErrorCode Resume(Explicit *x, TslRestartLoop *L, PetscReal *h_prev, PetscReal *t_hist)
@@ -154,6 +161,7 @@ static PetscErrorCode Resume(Explicit *x, TslRestartLoop *L, PetscReal *h_prev, 
   PetscCall(TslRestartLoad(x->d, L));
   PetscCall(Carry(x, &e, h_prev, t_hist, PETSC_FALSE));
   PetscCall(PetscFree(e.real));
+  PetscCall(AlphaMasses(x)); /* from the point's scale factors */
   PetscCall(TslGhostUpdate(x->M, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(TslGhostUpdate(x->V, INSERT_VALUES, SCATTER_FORWARD));
   PetscCall(TslProblemSetTime(x->p, L->t, *h_prev, L->total));
@@ -279,7 +287,9 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
      * and rho (b2 L_e)^2 = (lambda + 2 mu) (b2 dt_e)^2 (the scaled density, as Abaqus's mass scaling scales rho) */
     x->eta[e]  = x->step->bv_linear * (dm < PETSC_MAX_REAL ? dm : 0);
     x->eta2[e] = dm < PETSC_MAX_REAL ? PetscSqr(x->step->bv_quadratic * dm) : 0;
-    dm *= BulkViscosityFactor(x->step->bv_linear);
+    /* *DAMPING adds its fraction of critical at the element's highest mode omega = 2 / dm: beta omega / 2 and
+     * alpha / (2 omega) */
+    if (dm < PETSC_MAX_REAL) dm *= BulkViscosityFactor(x->step->bv_linear + x->beta[e] / dm + 0.25 * x->alpha[e] * dm);
     /* ties (copies of one element share their increments bit for bit: dynamics.c) go to the smallest id, as
      * MINLOC's across the ranks, so the log names the same element on any number of ranks */
     const int id = (int)x->m->elem_id[e];
@@ -296,7 +306,9 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
     const PetscReal mech = MechanicalLimit(x);
     PetscCall(PetscPrintf(x->comm, "  stable increment %.4e (safety %g x scale factor %g): mechanical %.4e at element %d%s, thermal %.4e at element %d; %s controls\n",
                           (double)x->dt_stable, (double)x->safety, (double)x->step->dt_scale, g[0].v, g[0].id,
-                          x->step->bv_linear > 0 ? " (with the linear bulk viscosity's damping)" : "", g[1].v, g[1].id,
+                          x->step->bv_linear > 0 ? (x->damped || x->AM ? " (with the damping of the linear bulk viscosity and *DAMPING)" : " (with the linear bulk viscosity's damping)")
+                                                 : (x->damped || x->AM ? " (with *DAMPING's damping)" : ""),
+                          g[1].v, g[1].id,
                           mech * x->safety * x->step->dt_scale <= x->dt_stable * (1 + 1e-12) ? "the mechanical limit" : "the thermal (diffusion) limit"));
     if (node_mech >= 0)
       PetscCall(PetscPrintf(x->comm, "  contact penalty (eps_n A on the lumped masses, nodal bound) %.4e at node %" PetscInt_FMT "; with the elements' %.4e: mechanical %.4e\n",
@@ -310,6 +322,22 @@ static PetscErrorCode StableIncrement(Explicit *x, PetscBool print)
 
 /* Lumped mass with the current scale factors; the work of adding mass to moving nodes, 1/2 dM v^2, goes to
  * ALLMW; the added mass is reported. */
+/* *DAMPING, ALPHA: AM = the lumped masses of the elements' alpha m with their scale factors (the mass the update uses:
+ * mass scaling scales the damping force with it, as it scales the density), a tie's secondary share moved as the mass's */
+static PetscErrorCode AlphaMasses(Explicit *x)
+{
+  PetscReal *as;
+
+  PetscFunctionBeginUser;
+  if (!x->AM) PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(PetscMalloc1(x->m->nelem, &as));
+  for (PetscInt e = 0; e < x->m->nelem; e++) as[e] = x->alpha[e] * x->scale[e];
+  PetscCall(TslProblemLumpedMass(x->p, as, x->AM));
+  PetscCall(TslProblemTieMove(x->p, x->AM));
+  PetscCall(PetscFree(as));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode Masses(Explicit *x, Energies *en, PetscBool report)
 {
   Vec                M0;
@@ -332,6 +360,7 @@ static PetscErrorCode Masses(Explicit *x, Energies *en, PetscBool report)
   PetscCall(VecRestoreArrayRead(M0, &m0));
   PetscCall(VecDestroy(&M0));
   PetscCall(TslGhostUpdate(x->M, INSERT_VALUES, SCATTER_FORWARD)); /* once per change: the corrector reads main nodes' masses */
+  PetscCall(AlphaMasses(x));
   if (report) {
     Vec                Mu;
     const PetscScalar *mu;
@@ -391,7 +420,7 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
   x->d->plastic_dissipated += x->rates.plastic_work; /* ALLPD: the move's plastic work, committed by this evaluation */
   PetscCall(TslProblemTieMove(x->p, x->Fi)); /* a tie's secondary forces and heat to its main nodes */
   PetscCall(TslProblemTieMove(x->p, x->Fe));
-  if (x->qv) {
+  if (x->qv || x->damped) {
     Energies       *en = (Energies *)x->d->energy;
     const PetscReal w  = 0.5 * x->vd_h * x->rates.viscous_prev;
     en->vd += w, en->ie -= w;
@@ -416,11 +445,12 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
 {
   PetscInt           passes;
   PetscScalar       *u;
-  const PetscScalar *v, *m, *mask, *fi, *fe, *fc = NULL;
+  const PetscScalar *v, *m, *mask, *fi, *fe, *fc = NULL, *am = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemContactKinematicStiffness(x->p, x->M, x->Mask, x->W, h * h_avg));
+  if (x->AM) PetscCall(VecGetArrayRead(x->AM, &am));
   PetscCall(VecGetArray(x->X, &u));
   PetscCall(VecGetArrayRead(x->V, &v));
   PetscCall(VecGetArrayRead(x->M, &m));
@@ -430,7 +460,8 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
   for (PetscInt i0 = 0; i0 < n; i0 += x->ndof) /* node by node: no division to tell a temperature dof */
     for (PetscInt i = i0; i < i0 + th; i++)
-      if (mask[i] == 0) u[i] += h * (v[i] + h_avg * (fe[i] - fi[i] - (fc ? fc[i] : 0)) / m[i]);
+      if (mask[i] == 0) u[i] += h * (v[i] + h_avg * (fe[i] - fi[i] - (fc ? fc[i] : 0) - (am ? am[i] * v[i] : 0)) / m[i]);
+  if (x->AM) PetscCall(VecRestoreArrayRead(x->AM, &am));
   if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
   PetscCall(VecRestoreArrayRead(x->Fe, &fe));
   PetscCall(VecRestoreArrayRead(x->Fi, &fi));
@@ -473,12 +504,12 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
 static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal h_prev, PetscReal t_new, PetscReal total_new)
 {
   PetscScalar       *u, *v;
-  const PetscScalar *uo, *xr, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL;
+  const PetscScalar *uo, *xr, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL, *am = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
   const PetscReal    h_avg = h_prev > 0 ? 0.5 * (h + h_prev) : 0.5 * h; /* from rest at the start: v_{1/2} = dt/2 a_0 */
   /* the loops' sums in locals whose address is never taken: in loc[] the compiler must keep them in memory, as
    * the stores to u and v might alias them (a store and a reload per dof on each sum's chain) */
-  PetscReal w_int = 0, w_ext = 0, w_con = 0, q_pres = 0, q_stored = 0;
+  PetscReal w_int = 0, w_ext = 0, w_con = 0, w_damp = 0, q_pres = 0, q_stored = 0;
   PetscReal loc[8], g[8];
 
   PetscFunctionBeginUser;
@@ -492,21 +523,24 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArrayRead(x->Fe, &fe));
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
   if (x->Fk) PetscCall(VecGetArrayRead(x->Fk, &fk));
+  if (x->AM) PetscCall(VecGetArrayRead(x->AM, &am));
   /* free dofs, node by node (no slot arithmetic per dof): the update and the forces' work; a temperature's
    * stored heat per unit time, m (theta_{n+1} - theta_n) / h, here too (the prescribed values set below do not
    * touch a free dof) */
   for (PetscInt i0 = 0; i0 < n; i0 += x->ndof) {
     const PetscInt it = i0 + th;
     for (PetscInt i = i0; i < it; i++) {
-      PetscReal fcon, f, vo, w;
+      PetscReal fcon, f, vo, w, fd;
       if (mask[i] != 0) continue;
-      fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon, vo = v[i];
+      /* *DAMPING, ALPHA: the force alpha m v of the latest velocity v_{n-1/2}, as the bulk viscosity's */
+      fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), vo = v[i], fd = am ? am[i] * vo : 0, f = fe[i] - fi[i] - fcon - fd;
       v[i] += h_avg * f / m[i];
       u[i] += h * v[i];
       w = h_avg * 0.5 * (vo + v[i]);
       w_int += fi[i] * w;
       w_ext += fe[i] * w;
       w_con += fcon * w;
+      w_damp += fd * w;
     }
     if (mask[it] == 0) {
       const PetscReal to = u[it];
@@ -522,7 +556,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   PetscCall(VecGetArrayRead(x->Xold, &uo));
   for (PetscInt k = 0; k < x->npresc; k++) { /* prescribed dofs: velocity, reaction and work; stored and brought-in heat */
     const PetscInt  i    = x->presc[k];
-    const PetscReal fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), f = fe[i] - fi[i] - fcon, vo = v[i];
+    const PetscReal fcon = (fc ? fc[i] : 0) + (fk ? fk[i] : 0), vo = v[i], fd = am && i % x->ndof != th ? am[i] * vo : 0, f = fe[i] - fi[i] - fcon - fd;
     PetscReal       w, s;
     if (i % x->ndof == th) {
       const PetscReal rate = m[i] * (xr[i] - uo[i]) / h; /* heat stored at the node per unit time */
@@ -536,17 +570,19 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     w_int += fi[i] * w;
     w_ext += (fe[i] + s) * w;
     w_con += fcon * w;
+    w_damp += fd * w;
   }
   PetscCall(VecRestoreArrayRead(x->Xold, &uo));
   PetscCall(VecRestoreArrayRead(x->X, &xr));
   if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
   if (x->Fk) PetscCall(VecRestoreArrayRead(x->Fk, &fk));
+  if (x->AM) PetscCall(VecRestoreArrayRead(x->AM, &am));
   PetscCall(VecRestoreArrayRead(x->Fe, &fe));
   PetscCall(VecRestoreArrayRead(x->Fi, &fi));
   PetscCall(VecRestoreArrayRead(x->Mask, &mask));
   PetscCall(VecRestoreArrayRead(x->M, &m));
   PetscCall(VecRestoreArray(x->V, &v));
-  loc[0] = w_int, loc[1] = w_ext, loc[2] = w_con, loc[3] = loc[4] = 0, loc[5] = q_pres, loc[6] = q_stored;
+  loc[0] = w_int, loc[1] = w_ext, loc[2] = w_con, loc[3] = w_damp, loc[4] = 0, loc[5] = q_pres, loc[6] = q_stored;
   loc[7] = TslStopLocal(); /* asked to stop: noticed in the reduction every increment makes anyway */
   PetscCall(MPIU_Allreduce(loc, g, 8, MPIU_REAL, MPIU_SUM, x->comm));
   if (g[7] != 0) PetscCall(TslStopRequested(x->comm, &x->stop)); /* which signal (every rank saw the sum) */
@@ -566,6 +602,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   en->vd += 0.5 * h_avg * x->rates.viscous;
   en->wk += g[1];
   en->cw += g[2];
+  en->vd += g[3]; /* *DAMPING, ALPHA's work (BETA's is in the viscous rates, its forces in Fi) */
   /* the forces of state n measured the slip over the increment that ended there (dt_forces): its
    * dissipation; the heat they generate enters the temperatures over h (forward Euler) */
   en->fd += x->rates.dissipation * x->dt_forces;
@@ -675,6 +712,8 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fe));
   PetscCall(VecDestroy(&x->Fc));
   PetscCall(PetscFree(x->qv));
+  PetscCall(PetscFree2(x->alpha, x->beta));
+  PetscCall(VecDestroy(&x->AM));
   PetscCall(VecDestroy(&x->Fk));
   PetscCall(VecDestroy(&x->W));
   PetscCall(PetscFree5(x->dt_mech, x->dt_heat, x->scale, x->eta, x->eta2));
@@ -749,6 +788,16 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   }
   if (x.step->bv_linear > 0 || x.step->bv_quadratic > 0) PetscCall(PetscCalloc1(x.m->nelem, &x.qv)); /* q of no earlier evaluation: 0 */
   PetscCall(PetscMalloc5(x.m->nelem, &x.dt_mech, x.m->nelem, &x.dt_heat, x.m->nelem, &x.scale, x.m->nelem, &x.eta, x.m->nelem, &x.eta2));
+  {
+    PetscBool any_alpha = PETSC_FALSE; /* the same on every rank: the model's materials */
+    PetscCall(PetscMalloc2(x.m->nelem, &x.alpha, x.m->nelem, &x.beta));
+    PetscCall(TslProblemElementDamping(x.p, x.alpha, x.beta));
+    for (PetscInt i = 0; i < x.m->nmaterial; i++) {
+      if (x.m->materials[i].damp_alpha > 0) any_alpha = PETSC_TRUE;
+      if (x.m->materials[i].damp_beta > 0) x.damped = PETSC_TRUE;
+    }
+    if (any_alpha) PetscCall(VecDuplicate(x.X, &x.AM));
+  }
   for (PetscInt i = 0; i < x.m->nmaterial; i++)
     if (TslMaterialIsTemperatureDependent(&x.m->materials[i])) x.capacity_varies = PETSC_TRUE;
   PetscCall(TslProblemConstrainedMask(x.p, x.Mask));

@@ -208,3 +208,11 @@ tsl_deck_bad(heat_dload heat_dload.inp "error: heat_dload.inp:22: *DLOAD in the 
 tsl_deck_bad(heat_displacement_dof heat_displacement_dof.inp "error: heat_displacement_dof.inp:19: bad degree of freedom 1 (valid: 11)")
 tsl_deck_bad(heat_end_ss_rate heat_end_ss_rate.inp "error: heat_end_ss_rate.inp:18: *HEAT TRANSFER, END=SS data line: initial increment, step period, minimum, maximum increment, steady-state temperature rate")
 tsl_deck_bad(heat_frequency heat_frequency.inp "error: heat_frequency.inp:17: *HEAT TRANSFER, FREQUENCY and MODAL DYNAMIC (eigenmodes) are not supported")
+# *DAMPING (Rayleigh damping, docs/keywords.md): the parameters it needs, their signs, the forms it does not take, and
+# BETA= in a finite-strain explicit step (its damping stress is the small-strain one)
+tsl_deck_bad(damping_negative damping_negative.inp "error: damping_negative.inp:43: *DAMPING, ALPHA= and BETA= must not be negative")
+tsl_deck_bad(damping_structural damping_structural.inp "error: damping_structural.inp:33: *DAMPING, STRUCTURAL= and COMPOSITE= (steady-state dynamics) are not supported")
+tsl_deck_bad(damping_no_parameter damping_no_parameter.inp "error: damping_no_parameter.inp:33: *DAMPING needs ALPHA= (mass-proportional, 1/time) or BETA=")
+tsl_deck_bad(damping_data_line damping_data_line.inp "error: damping_data_line.inp:34: *DAMPING takes no data lines")
+tsl_deck_bad(damping_twice damping_twice.inp "error: damping_twice.inp:34: *DAMPING is given twice in material MASS")
+tsl_deck_bad(damping_beta_nlgeom damping_beta_nlgeom.inp "error: damping_beta_nlgeom.inp:43: *DAMPING, BETA= (material STIFF) in the finite-strain explicit step RING is not supported")
