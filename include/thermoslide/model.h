@@ -527,6 +527,9 @@ typedef struct {
    * 2 (ALL) of every point the old job wrote */
   PetscInt  post_output, npost;
   PetscInt *post;
+  /* the POST OUTPUT deck's own field output requests after *POST OUTPUT (npost_out 0: the old steps' requests) */
+  TslOutputRequest *post_out;
+  PetscInt          npost_out;
 
   /* Filled by the mesh module on distribution (NULL / 0 in the model read by rank 0):
    * local nodes are ordered owned first, then ghosts. */

@@ -605,6 +605,21 @@ static PetscErrorCode CheckNlgeom(TslModel *m)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* The sets that output requests name exist. */
+static PetscErrorCode CheckRequestSets(TslModel *m, const TslOutputRequest *out, PetscInt nout)
+{
+  PetscFunctionBeginUser;
+  for (PetscInt k = 0; k < nout; k++) {
+    const TslOutputRequest *r = &out[k];
+    if (!r->set[0]) continue;
+    if (r->node)
+      CHECK(TslModelFindNodeSet(m, r->set) >= 0, r->loc, "undefined node set %s", r->set);
+    else
+      CHECK(TslModelFindElementSet(m, r->set) >= 0, r->loc, "undefined element set %s", r->set);
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckSteps(TslModel *m)
 {
   PetscFunctionBeginUser;
@@ -633,15 +648,9 @@ static PetscErrorCode CheckSteps(TslModel *m)
             s->name);
       PetscCall(CheckLoad(m, l));
     }
-    for (PetscInt k = 0; k < s->nout; k++) {
-      const TslOutputRequest *r = &s->out[k];
-      if (!r->set[0]) continue;
-      if (r->node)
-        CHECK(TslModelFindNodeSet(m, r->set) >= 0, r->loc, "undefined node set %s", r->set);
-      else
-        CHECK(TslModelFindElementSet(m, r->set) >= 0, r->loc, "undefined element set %s", r->set);
-    }
+    PetscCall(CheckRequestSets(m, s->out, s->nout));
   }
+  PetscCall(CheckRequestSets(m, m->post_out, m->npost_out)); /* a POST OUTPUT deck's own */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 

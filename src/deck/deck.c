@@ -47,6 +47,10 @@ typedef struct {
   /* *RESTART, READ: the old job's deck copy is read as an include at frame depth restart_depth - 1, up to the end of
    * its step restart_stop (1-based; 0: none pending) */
   PetscInt restart_stop, restart_depth;
+  /* *POST OUTPUT: the POST OUTPUT deck's frame depth (0: none); post_own: the old job's deck copy is read and the
+   * keywords are the POST OUTPUT deck's own again (its output requests, KwOutputRequest) */
+  PetscInt  post_depth;
+  PetscBool post_own;
 
   /* raw line pushback */
   PetscBool back;
@@ -592,6 +596,27 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
 static void RawUnget(Deck *d)
 {
   d->back = PETSC_TRUE;
+}
+
+/* A keyword line read ahead and given back (RawUnget) put back into its file instead, so that it is read after whatever
+ * DeckOpen opens next (*POST OUTPUT's old deck copy is read in the keyword's place, before the lines that follow it). The
+ * line came from the top frame (a data line loop reads ahead in the frame it reads): its end, turned into a NUL when it
+ * was read, is a newline again and the frame's position its start. */
+static void RawRewind(Deck *d)
+{
+  DeckFrame *f;
+  size_t     start;
+
+  if (!d->back || d->depth < 1) return;
+  f = &d->frame[d->depth - 1];
+  if (f->pos == 0 || d->rawloc.file != f->file) return;
+  if (f->pos <= f->len && f->pos > 0 && f->text[f->pos - 1] == 0) f->text[f->pos - 1] = '\n';
+  start = f->pos - 1;
+  while (start > 0 && f->text[start - 1] != 0 && f->text[start - 1] != '\n') start--;
+  f->pos  = start;
+  f->line = d->rawloc.line - 1;
+  d->back = PETSC_FALSE;
+  if (d->record) d->flatlen = d->flat_kw, d->flat[d->flatlen] = 0; /* recorded again when it is read again */
 }
 
 /* ---- logical lines --------------------------------------------------------------------------- */
@@ -3205,6 +3230,7 @@ static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
 {
   PetscFunctionBeginUser;
   (void)kw;
+  if (d->post_own) PetscFunctionReturn(PETSC_SUCCESS); /* a POST OUTPUT deck: its frames are the points named, whatever the intervals */
   PetscInt *freq = d->step >= 0 ? &d->out_frequency : &d->out_frequency_model; /* model data: every step's default */
 
   *freq = 1;
@@ -3241,15 +3267,20 @@ static PetscErrorCode KwOutput(Deck *d, const DeckKeyword *kw)
 
 static PetscErrorCode KwOutputRequest(Deck *d, const DeckKeyword *kw)
 {
-  TslStep          *s = &d->m->steps[d->step];
-  TslOutputRequest *r;
+  TslStep          *s = d->post_own ? NULL : &d->m->steps[d->step];
+  TslOutputRequest *r, **out = s ? &s->out : &d->m->post_out; /* a POST OUTPUT deck's own: the recovered frames' fields */
+  PetscInt         *nout = s ? &s->nout : &d->m->npost_out;
   PetscBool         node = (kw->kind & OUT_NODE) ? PETSC_TRUE : PETSC_FALSE, got;
   const char       *key = node ? "NSET" : "ELSET", *set = Param(d, key);
 
   PetscFunctionBeginUser;
+  USER_CHECK(!d->post_own || !(kw->kind & OUT_PRINT),
+             LOC_FMT "*%s in a POST OUTPUT deck: its frames take field output requests (*NODE OUTPUT, *ELEMENT OUTPUT, *NODE FILE, *EL FILE); "
+                     "printed tables are not recovered from restart points",
+             KLOC(d), d->kw);
   if (kw->kind & OUT_PRINT) PetscCall(ParamRequired(d, key, &set));
-  PetscCall(TslDeckGrow(&s->out, sizeof(TslOutputRequest), s->nout));
-  r            = &s->out[s->nout++];
+  PetscCall(TslDeckGrow(out, sizeof(TslOutputRequest), *nout));
+  r            = &(*out)[(*nout)++];
   r->node      = node;
   r->print     = (kw->kind & OUT_PRINT) ? PETSC_TRUE : PETSC_FALSE;
   r->loc       = d->kwloc;
@@ -3478,6 +3509,8 @@ static PetscErrorCode KwPostOutput(Deck *d, const DeckKeyword *kw)
     m->post[2 * m->npost] = s, m->post[2 * m->npost + 1] = inc, m->npost++;
   }
   USER_CHECK(m->post_output == 2 || m->npost, LOC_FMT "*POST OUTPUT needs data lines (step, increment) or ALL", KLOC(d));
+  d->post_depth = d->depth; /* what follows the old job's deck in this one is this deck's own (CheckPlacement) */
+  RawRewind(d);              /* the keyword line after the data lines: read after the old deck */
   PetscCall(DeckOpen(d, copy, PETSC_TRUE));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -3938,6 +3971,15 @@ static PetscErrorCode CheckPlacement(Deck *d, const DeckKeyword *kw)
   char           here[PETSC_MAX_PATH_LEN + 64];
 
   PetscFunctionBeginUser;
+  if (d->post_depth && d->depth <= d->post_depth) d->post_own = PETSC_TRUE; /* back in the POST OUTPUT deck */
+  if (d->post_own) {
+    /* after *POST OUTPUT (and the old job's deck it reads in its place) the deck holds its frames' output requests */
+    USER_CHECK(kw->handler == KwOutput || kw->handler == KwOutputRequest,
+               LOC_FMT "*%s in a POST OUTPUT deck: after *POST OUTPUT it holds output requests only (*OUTPUT, *NODE OUTPUT, *ELEMENT OUTPUT, "
+                       "*NODE FILE, *EL FILE): the model and the steps are the old job's",
+               KLOC(d), d->kw);
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   if (kw->placement & at) PetscFunctionReturn(PETSC_SUCCESS);
   /* a restart deck (*RESTART, READ) may define new sets, surfaces and amplitudes for its own steps between the old job's
    * steps and them, as the dialect allows; the rest of the model is the old job's */

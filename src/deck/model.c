@@ -32,6 +32,7 @@ PetscErrorCode TslModelDestroy(TslModel **model)
   for (PetscInt i = 0; i < m->nfile; i++) PetscCall(PetscFree(m->files[i]));
   PetscCall(PetscFree(m->files));
   PetscCall(PetscFree(m->post));
+  PetscCall(PetscFree(m->post_out));
   PetscCall(PetscFree(m->node_id));
   PetscCall(PetscFree(m->node_xyz));
   PetscCall(PetscFree(m->elem_id));
@@ -422,6 +423,7 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
     PetscCall(PackArray(p, &m->steps[i].out, m->steps[i].nout, sizeof(TslOutputRequest)));
   }
   PetscCall(PackArray(p, &m->post, 2 * m->npost, sizeof(PetscInt)));
+  PetscCall(PackArray(p, &m->post_out, m->npost_out, sizeof(TslOutputRequest)));
   PetscCall(PackArray(p, &m->node_gnum, m->nnode, sizeof(PetscInt)));
   PetscCall(PackArray(p, &m->node_nat, m->nnode, sizeof(PetscInt)));
   PetscCall(PackArray(p, &m->elem_nat, m->nelem, sizeof(PetscInt)));

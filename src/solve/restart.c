@@ -1330,7 +1330,11 @@ PetscErrorCode TslRestartPostOutput(Driver *d)
     h = d->done_dt;
     PetscCall(TslProblemSetTime(d->prob, d->rs_ptime, h, d->done_time));
     PetscCall(TslProblemSetCapacityRate(d->prob, m->steps[s].steady || !(h > 0) ? 0.0 : 1.0 / h));
-    PetscCall(TslFramesSetRequests(d, &m->steps[s]));
+    if (m->npost_out) { /* the POST OUTPUT deck's own requests, in place of the step's */
+      TslStep own = m->steps[s];
+      own.out = m->post_out, own.nout = m->npost_out;
+      PetscCall(TslFramesSetRequests(d, &own));
+    } else PetscCall(TslFramesSetRequests(d, &m->steps[s]));
     {
       TslHeatBalance hb;
       PetscCall(TslProblemHeatBalance(d->prob, &hb)); /* the contact outputs at that state */

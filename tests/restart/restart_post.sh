@@ -3,8 +3,9 @@
 # conductance series on CPEG4RHT with *RESTART, WRITE, FREQUENCY=5 (its checks: the spec's outcome), then POST OUTPUT
 # decks holding nothing but a heading and *POST OUTPUT, run with -oldjob: ALL gives a frame of every point equal to
 # the run's frame of that step and increment (TOL of each field's largest value), data lines give those points' frames
-# only; ALL on another rank count gives the same frames; a data line without a point and ALL with data lines are
-# errors at their line, with no result written.
+# only; ALL on another rank count gives the same frames; the deck's own field requests after *POST OUTPUT give frames
+# of those fields alone; a data line without a point, ALL with data lines, a step, a printed table or an undefined set
+# in the deck are errors at their line, with no result written.
 # usage: restart_post.sh THERMOSLIDE MPIEXEC NP OUTDIR PYTHON SOURCE_DIR TOL
 set -u
 exe=$1 mpiexec=$2 np=$3 out=$4 py=$5 src=$6 tol=$7
@@ -41,6 +42,12 @@ if post two "*POST OUTPUT" " 2, 10" " 4, 1"; then
 else
   cat "$out/two.log"; echo "FAIL: two: the POST OUTPUT job"; fail=1
 fi
+# the deck's own output requests after *POST OUTPUT: the frames hold those fields (NT and U here), not the run's
+if post own "*POST OUTPUT, ALL" "*OUTPUT, FIELD" "*NODE OUTPUT" " NT, U"; then
+  FIELDS="NT U" "$py" "$src/tests/tools/compare_post.py" "$out/run/run.h5" "$out/own/own.h5" "$tol" "$out/run" run || { echo "FAIL: own: the frames of the deck's own requests"; fail=1; }
+else
+  cat "$out/own.log"; echo "FAIL: own: the POST OUTPUT job with its own requests"; fail=1
+fi
 bad() { # NAME EXPECTED LINES...
   local name=$1 want=$2
   shift 2
@@ -50,5 +57,8 @@ bad() { # NAME EXPECTED LINES...
 }
 bad nopoint "$out/nopoint.inp:5: *POST OUTPUT, STEP=2, INC=7: the old job $out/run/run wrote no restart point there (its points of that step: increments 5, 10" "*POST OUTPUT" " 2, 5" " 2, 7"
 bad alldata "$out/alldata.inp:4: *POST OUTPUT, ALL takes no data lines" "*POST OUTPUT, ALL" " 2, 5"
+bad ownstep "$out/ownstep.inp:4: *STEP in a POST OUTPUT deck: after *POST OUTPUT it holds output requests only" "*POST OUTPUT, ALL" "*STEP" "*STATIC"
+bad ownprint "$out/ownprint.inp:4: *NODE PRINT in a POST OUTPUT deck: its frames take field output requests" "*POST OUTPUT, ALL" "*NODE PRINT, NSET=ALL" " NT"
+bad ownset "$out/ownset.inp:4: undefined node set NOSUCH" "*POST OUTPUT, ALL" "*NODE OUTPUT, NSET=NOSUCH" " NT"
 [ $fail = 0 ] && echo PASS
 exit $fail
