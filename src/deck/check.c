@@ -620,6 +620,29 @@ static PetscErrorCode CheckRequestSets(TslModel *m, const TslOutputRequest *out,
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *DAMPING acts in explicit steps only: a model with implicit steps is told once, at the first *DAMPING line, that
+ * those steps ignore it (no inertia there: the dialect ignores it too). */
+static PetscErrorCode NoteDamping(TslModel *m)
+{
+  PetscInt implicit = -1;
+  char     where[PETSC_MAX_PATH_LEN];
+
+  PetscFunctionBeginUser;
+  for (PetscInt i = 0; i < m->nstep && implicit < 0; i++)
+    if (!m->steps[i].explicit_dynamics) implicit = i;
+  if (implicit < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt k = 0; k < m->nmaterial; k++) {
+    const TslMaterial *mt = &m->materials[k];
+    if (mt->damp_alpha == 0 && mt->damp_beta == 0) continue;
+    (void)TslLocString(m, mt->damping_loc, where, sizeof(where));
+    PetscCall(PetscPrintf(PETSC_COMM_SELF,
+                          "%s: note: *DAMPING (material %s) acts in explicit steps only; step %s and the other steps without inertia ignore it\n",
+                          where, mt->name, m->steps[implicit].name[0] ? m->steps[implicit].name : "1"));
+    break;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode CheckSteps(TslModel *m)
 {
   PetscFunctionBeginUser;
@@ -874,6 +897,7 @@ PetscErrorCode TslModelCheck(TslModel *m)
   for (PetscInt i = 0; i < m->ntie; i++) PetscCall(CheckTie(m, &m->ties[i]));
   PetscCall(CheckSteps(m));
   PetscCall(CheckNlgeom(m));
+  PetscCall(NoteDamping(m));
   PetscCall(AttachReferenceNodes(m));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
