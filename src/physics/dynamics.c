@@ -575,7 +575,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   /* with records on every element and a central-difference move since the last evaluation, the rate of the
    * bulk viscosity comes from the records' centre strains: v is neither exchanged nor gathered */
   const PetscBool    from_u = (PetscBool)(q && h > 0 && p->fast_built && p->fast_all);
-  PetscReal          loc[10], g[10];
+  PetscReal          loc[12], g[12];
   TslFailure         fail;
   PetscErrorCode     ierr;
 
@@ -611,8 +611,9 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   ierr = fc ? TslProblemContactAssemble(p, ASM_RAW, xa, fc, NULL, &heat) : PETSC_SUCCESS;
   if (!ierr && TslInjectNow(&p->inject, TSL_INJECT_INTERNAL, p->step + 1)) ierr = InjectedInternal();
   PetscCall(TslCaptureEnd());
-  PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
-  PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit increment: %s", p->fail_msg);
+  /* a failure here (or an inverted element above) is agreed on after the ghost sums below, by a flag in the rates'
+   * reduction: the failing rank takes part in them as usual, and an increment without a failure costs no reduction of
+   * its own for either (TslAgree and TslProblemCheckBadElement run when the flags say so, on every rank) */
   for (PetscInt i = 0; i < p->nnload_own; i++) { /* nodal loads, owned dofs */
     const PetscInt  dof = p->nload_own[i];
     const PetscReal v   = TslProblemEvalLoadValue(p, &p->nload[dof]);
@@ -630,11 +631,16 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
     PetscCall(VecRestoreArrayRead(vl, &c.v));
     PetscCall(VecGhostRestoreLocalForm(V, &vl));
   }
-  PetscCall(TslProblemCheckBadElement(p, c.bad));
   if (Fc && !p->ncsurf) PetscCall(VecZeroEntries(Fc));
   loc[0] = heat.flux_in, loc[1] = -heat.film, loc[2] = heat.interface, loc[3] = heat.dissipation, loc[4] = heat.friction_heat, loc[5] = c.power;
   loc[6] = c.prev, loc[7] = -heat.radiation, loc[8] = heat.plastic_work, loc[9] = heat.plastic_heat;
-  PetscCall(MPIU_Allreduce(loc, g, 10, MPIU_REAL, MPIU_SUM, p->comm));
+  loc[10] = ierr ? 1 : 0, loc[11] = c.bad >= 0 ? 1 : 0;
+  PetscCall(MPIU_Allreduce(loc, g, 12, MPIU_REAL, MPIU_SUM, p->comm));
+  if (g[10] > 0) {
+    PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
+    PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit increment: %s", p->fail_msg);
+  }
+  if (g[11] > 0) PetscCall(TslProblemCheckBadElement(p, c.bad));
   rates->heat_in = g[0], rates->film_out = g[1], rates->interface_heat = g[2], rates->dissipation = g[3], rates->friction_heat = g[4];
   rates->viscous = g[5], rates->viscous_prev = g[6], rates->radiation_out = g[7], rates->plastic_work = g[8], rates->plastic_heat = g[9];
   PetscFunctionReturn(PETSC_SUCCESS);
@@ -653,7 +659,7 @@ PetscErrorCode TslProblemExplicitKinematicForces(TslProblem p, Vec Fk, TslExplic
   const PetscScalar *xa;
   PetscScalar       *fk;
   AsmHeat            heat;
-  PetscReal          loc[3], g[3];
+  PetscReal          loc[4], g[4];
   TslFailure         fail;
   PetscErrorCode     ierr;
 
@@ -669,13 +675,15 @@ PetscErrorCode TslProblemExplicitKinematicForces(TslProblem p, Vec Fk, TslExplic
   ierr = TslProblemContactAssemble(p, ASM_RAW, xa, fk, NULL, &heat);
   PetscCall(TslCaptureEnd());
   p->select_kinematic = PETSC_FALSE;
-  PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
-  PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit kinematic contact: %s", p->fail_msg);
-  PetscCall(EndLocal(Fk, &kl, &fk));
+  PetscCall(EndLocal(Fk, &kl, &fk)); /* a failure is agreed on after it, by a flag in the rates' reduction (as above) */
   PetscCall(VecRestoreArrayRead(xl, &xa));
   PetscCall(VecGhostRestoreLocalForm(p->X, &xl));
-  loc[0] = heat.interface, loc[1] = heat.dissipation, loc[2] = heat.friction_heat;
-  PetscCall(MPIU_Allreduce(loc, g, 3, MPIU_REAL, MPIU_SUM, p->comm));
+  loc[0] = heat.interface, loc[1] = heat.dissipation, loc[2] = heat.friction_heat, loc[3] = ierr ? 1 : 0;
+  PetscCall(MPIU_Allreduce(loc, g, 4, MPIU_REAL, MPIU_SUM, p->comm));
+  if (g[3] > 0) {
+    PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
+    PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit kinematic contact: %s", p->fail_msg);
+  }
   PetscCall(PetscMemzero(rates, sizeof(*rates)));
   rates->interface_heat = g[0], rates->dissipation = g[1], rates->friction_heat = g[2];
   PetscFunctionReturn(PETSC_SUCCESS);
