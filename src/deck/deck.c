@@ -367,6 +367,27 @@ static const char *DeckFileProblem(const char *path)
   return NULL;
 }
 
+/* A keyword line read ahead and given back (RawUnget) when a file is opened in the keyword's place (DeckOpen: *POST
+ * OUTPUT's data lines are followed by the old deck copy) goes back into its file, so that it is read after the opened
+ * file, not before it. It came from the top frame (a data line loop reads ahead in the frame it reads): its end, turned
+ * into a NUL when it was read, is a newline again and the frame's position its start. */
+static void RawRewind(Deck *d)
+{
+  DeckFrame *f;
+  size_t     start;
+
+  if (!d->back || d->depth < 1) return;
+  f = &d->frame[d->depth - 1];
+  if (f->pos == 0 || d->rawloc.file != f->file) return;
+  if (f->text[f->pos - 1] == 0) f->text[f->pos - 1] = '\n';
+  start = f->pos - 1;
+  while (start > 0 && f->text[start - 1] != 0 && f->text[start - 1] != '\n') start--;
+  f->pos  = start;
+  f->line = d->rawloc.line - 1;
+  d->back = PETSC_FALSE;
+  if (d->record) d->flatlen = d->flat_kw, d->flat[d->flatlen] = 0; /* recorded again when it is read again */
+}
+
 static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include)
 {
   FILE       *fp;
@@ -376,6 +397,7 @@ static PetscErrorCode DeckOpen(Deck *d, const char *path, PetscBool include)
   DeckFrame  *f;
 
   PetscFunctionBeginUser;
+  RawRewind(d); /* a keyword line read ahead belongs after the file opened here */
   fp = problem ? NULL : fopen(path, "rb");
   if (!fp) {
     if (!problem) problem = strerror(errno); /* unreadable */
@@ -596,27 +618,6 @@ static PetscErrorCode RawNext(Deck *d, const char **s, PetscBool *got)
 static void RawUnget(Deck *d)
 {
   d->back = PETSC_TRUE;
-}
-
-/* A keyword line read ahead and given back (RawUnget) put back into its file instead, so that it is read after whatever
- * DeckOpen opens next (*POST OUTPUT's old deck copy is read in the keyword's place, before the lines that follow it). The
- * line came from the top frame (a data line loop reads ahead in the frame it reads): its end, turned into a NUL when it
- * was read, is a newline again and the frame's position its start. */
-static void RawRewind(Deck *d)
-{
-  DeckFrame *f;
-  size_t     start;
-
-  if (!d->back || d->depth < 1) return;
-  f = &d->frame[d->depth - 1];
-  if (f->pos == 0 || d->rawloc.file != f->file) return;
-  if (f->pos <= f->len && f->pos > 0 && f->text[f->pos - 1] == 0) f->text[f->pos - 1] = '\n';
-  start = f->pos - 1;
-  while (start > 0 && f->text[start - 1] != 0 && f->text[start - 1] != '\n') start--;
-  f->pos  = start;
-  f->line = d->rawloc.line - 1;
-  d->back = PETSC_FALSE;
-  if (d->record) d->flatlen = d->flat_kw, d->flat[d->flatlen] = 0; /* recorded again when it is read again */
 }
 
 /* ---- logical lines --------------------------------------------------------------------------- */
@@ -3510,8 +3511,7 @@ static PetscErrorCode KwPostOutput(Deck *d, const DeckKeyword *kw)
   }
   USER_CHECK(m->post_output == 2 || m->npost, LOC_FMT "*POST OUTPUT needs data lines (step, increment) or ALL", KLOC(d));
   d->post_depth = d->depth; /* what follows the old job's deck in this one is this deck's own (CheckPlacement) */
-  RawRewind(d);              /* the keyword line after the data lines: read after the old deck */
-  PetscCall(DeckOpen(d, copy, PETSC_TRUE));
+  PetscCall(DeckOpen(d, copy, PETSC_TRUE)); /* the keyword line after the data lines is read after it (RawRewind) */
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -3971,7 +3971,6 @@ static PetscErrorCode CheckPlacement(Deck *d, const DeckKeyword *kw)
   char           here[PETSC_MAX_PATH_LEN + 64];
 
   PetscFunctionBeginUser;
-  if (d->post_depth && d->depth <= d->post_depth) d->post_own = PETSC_TRUE; /* back in the POST OUTPUT deck */
   if (d->post_own) {
     /* after *POST OUTPUT (and the old job's deck it reads in its place) the deck holds its frames' output requests */
     USER_CHECK(kw->handler == KwOutput || kw->handler == KwOutputRequest,
@@ -4009,6 +4008,7 @@ static PetscErrorCode DeckKeywordLine(Deck *d)
   for (size_t i = 0; i < sizeof(Keywords) / sizeof(Keywords[0]); i++)
     if (!strcmp(Keywords[i].name, d->kw)) kw = &Keywords[i];
   USER_CHECK(kw, LOC_FMT "unsupported keyword *%s", KLOC(d), d->kw);
+  if (d->post_depth && d->depth <= d->post_depth) d->post_own = PETSC_TRUE; /* back in the POST OUTPUT deck, after the old one */
   PetscCall(CheckPlacement(d, kw));
   /* what a part, an assembly and an instance may hold here (comments aside) */
   if (d->part >= 0 && kw->handler != KwIgnored)
