@@ -232,6 +232,9 @@ static inline PetscInt TslElementTypeNodes(const TslElementType *t)
  * the explicit loop books the viscous work per element from them (docs/explicit.md "Bulk viscosity"). */
 PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscReal v[], PetscReal eta1, PetscReal eta2, PetscReal R[],
                                        PetscReal *power, PetscReal qr[2]);
+/* The right Cauchy-Green tensor C = F^T F at the element's centre (Voigt order 11 22 33 12 13 23, from in->u on the
+ * reference in->x): the element's shape now, blind to rigid rotations. PETSC_FALSE for an inverted element. */
+PetscBool TslElementCentreStretch(const TslElementInput *in, PetscReal C[6]);
 
 /* Explicit force records (fast.c). In a small-strain analysis with temperature-independent properties the
  * geometry of an element never changes and its conduction is linear, so the explicit force loop need not
@@ -253,7 +256,12 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
  *   TslElementFastForce     R (internal force and heat flow, laid out as TslElementInternal's), Rv (bulk
  *                           viscosity forces, when eta > 0 or eta2 > 0: TslElementBulkViscosity's eta1,
  *                           eta2) and the power dissipated by the viscosity
- * u[] and v[] are laid out as in->u (theta last at each node), ti[] the nodal initial temperatures. */
+ * u[] and v[] are laid out as in->u (theta last at each node), ti[] the nodal initial temperatures.
+ * nl: the finite-strain forces (TslElementInput.nlgeom: the same record, the reference configuration's geometry being
+ * what a total Lagrangian form needs) in place of the small-strain ones, the bulk viscosity's rate J'/J from v (ev is
+ * then neither read nor written: the caller passes v). The force functions return the mask of lanes (bit j: lane j)
+ * whose det F <= 0 at a point (nl only; 0 at small strain): an element turned inside out, which the caller reports as
+ * the generic kernel's `inverted`. */
 #define TSL_FAST_MAX_NODES 10  /* tet10 */
 #define TSL_FAST_MAX_QP    9   /* quad8's full rule */
 #define TSL_FAST_MAX_SIZE  192 /* reals in the largest record */
@@ -276,12 +284,12 @@ typedef struct {
 PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *shape);
 PetscInt  TslElementFastSize(const TslElementInput *in);
 PetscBool TslElementFastBuild(const TslElementInput *in, PetscReal rec[]);
-void      TslElementFastForce(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
-                              PetscReal eta, PetscReal eta2, PetscReal R[], PetscReal Rv[], PetscReal *power);
+int       TslElementFastForce(const TslElementFastShape *shape, PetscBool nl, const PetscReal rec[], const PetscReal u[], const PetscReal ti[],
+                              const PetscReal v[], PetscReal eta, PetscReal eta2, PetscReal R[], PetscReal Rv[], PetscReal *power);
 /* The element's strain energy int 1/2 sigma : eps_mech dV and hourglass energy from its record, as
  * TslElementOutput's strain_energy and hourglass_energy (the explicit history rows' ALLSE). */
-void TslElementFastEnergy(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal *strain,
-                          PetscReal *hourglass);
+void TslElementFastEnergy(const TslElementFastShape *shape, PetscBool nl, const PetscReal rec[], const PetscReal u[], const PetscReal ti[],
+                          PetscReal *strain, PetscReal *hourglass);
 /* The same for a batch of TSL_FAST_LANES elements of one type at once (what the explicit loop calls): every
  * array interleaved by lane, value k of lane j at [k * TSL_FAST_LANES + j] (records, u, ti, v, R, Rv),
  * eta[], eta2[], power[], strain[], hourglass[] one per lane. v and Rv are NULL together (no bulk
@@ -293,15 +301,15 @@ void TslElementFastEnergy(const TslElementFastShape *shape, const PetscReal rec[
  * the difference quotient over the increment h = 1 / hinv since ev's evaluation, which equals v's when
  * v = (u - u_then) / h, as central differences make it, without v's gather.
  * TslElementFastInterleave stores a record (or any array of size reals) as lane `lane` of a batch. */
-void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
-                              PetscReal ev[], PetscReal hinv, const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[],
-                              PetscReal power[], PetscReal qr[]);
-void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal strain[],
-                               PetscReal hourglass[]);
+int  TslElementFastForceBatch(const TslElementFastShape *shape, PetscBool nl, const PetscReal rec[], const PetscReal u[], const PetscReal ti[],
+                              const PetscReal v[], PetscReal ev[], PetscReal hinv, const PetscReal eta[], const PetscReal eta2[], PetscReal R[],
+                              PetscReal Rv[], PetscReal power[], PetscReal qr[]);
+void TslElementFastEnergyBatch(const TslElementFastShape *shape, PetscBool nl, const PetscReal rec[], const PetscReal u[], const PetscReal ti[],
+                               PetscReal strain[], PetscReal hourglass[]);
 /* An implicit residual's part of a batch: R (interleaved) and, when energy is not NULL, each lane's strain
  * energy in energy[j] and hourglass energy in energy[TSL_FAST_LANES + j], from one evaluation. */
-void TslElementFastResidualBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal R[],
-                                 PetscReal energy[]);
+int  TslElementFastResidualBatch(const TslElementFastShape *shape, PetscBool nl, const PetscReal rec[], const PetscReal u[], const PetscReal ti[],
+                                 PetscReal R[], PetscReal energy[]);
 void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[], PetscReal batch[]);
 
 /* Lumped nodal quantities of the element at its current temperatures:

@@ -45,8 +45,8 @@ static inline Layout LayoutOf(PetscInt dim, PetscInt n, PetscInt nq, PetscInt nh
 {
   const PetscInt geo = nq > 1 ? dim * dim : dim * n; /* a point's A (full rows) or G (reduced rows) */
   Layout         L;
-  L.P    = HEADER;
-  L.ps   = geo + 1 + (axi ? 1 : 0) + (shell ? 9 : 0);
+  L.P  = HEADER;
+  L.ps = geo + 1 + (axi ? 1 : 0) + (shell ? 9 : 0);
   L.dV = geo, L.ri = geo + 1, L.fr = geo + 1 + (axi ? 1 : 0); /* within a point */
   L.K    = L.P + nq * L.ps;
   L.C    = nq > 1 ? L.K + n * (n - 1) / 2 : L.P;
@@ -84,19 +84,20 @@ static inline __attribute__((always_inline)) void Gradients(const PetscInt dim, 
  * The unknowns are split by component first, so every sum over the nodes is over arrays of constant
  * length. A full row's point works in the reference derivatives: the displacement gradient in xi (H),
  * mapped by A; the stress mapped back by A and spread by the same derivatives. */
-static inline __attribute__((always_inline)) void Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
-                                                        const PetscBool axi, const PetscBool ps, const PetscBool sf0, const PetscBool shell,
-                                                        const TslElementFastShape *shape, const PetscReal *rec, const PetscReal *u,
-                                                        const PetscReal *ti, const PetscReal *v, PetscReal *ev, const PetscReal hinv,
-                                                        const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power,
-                                                        PetscReal *qr, PetscReal *energy)
+static inline __attribute__((always_inline)) int Force(const PetscInt dim, const PetscInt n, const PetscInt nq, const PetscInt nh,
+                                                       const PetscBool axi, const PetscBool ps, const PetscBool sf0, const PetscBool shell,
+                                                       const PetscBool nl, const TslElementFastShape *shape, const PetscReal *rec, const PetscReal *u,
+                                                       const PetscReal *ti, const PetscReal *v, PetscReal *ev, const PetscReal hinv,
+                                                       const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv, PetscReal *power,
+                                                       PetscReal *qr, PetscReal *energy)
 {
   const PetscInt nd     = dim + 1;
   const Layout   L      = LayoutOf(dim, n, nq, nh, axi, shell);
   const V        lambda = Ld(rec + 1 * W), mu = Ld(rec + 2 * W), alpha = Ld(rec + 3 * W);
   V              U[3][TSL_FAST_MAX_NODES], th[TSL_FAST_MAX_NODES], dth[TSL_FAST_MAX_NODES], F[3][TSL_FAST_MAX_NODES], Fth[TSL_FAST_MAX_NODES];
   V              en[2] = {{0}, {0}};
-  const V        lps = ps ? lambda / (lambda + 2 * mu) : (V){0}; /* plane stress: eps33 from sigma33 = 0 */
+  const V        lps   = ps ? lambda / (lambda + 2 * mu) : (V){0}; /* plane stress: eps33 from sigma33 = 0 */
+  VI             inv   = {0};                                      /* finite strain: lanes with det F <= 0 at a point */
 
   const PetscBool sf = sf0 && shape->sf ? PETSC_TRUE : PETSC_FALSE;
   V               Hc[3][3][4], Qs[3][3][4]; /* sum factorisation: H per class of points, Q summed per class */
@@ -150,6 +151,30 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
           for (PetscInt a = 0; a < n; a++) g[i][d] += Ld(P + (d * n + a) * W) * U[i][a];
         }
     }
+    V Fm[3][3], gs[3][3]; /* finite strain: F = I + g; gs, the gradient the strain is taken from */
+    for (PetscInt i = 0; i < dim; i++)
+      for (PetscInt d = 0; d < dim; d++) gs[i][d] = g[i][d];
+    if (nl) {
+      /* finite strain (kernels.c, MechPointFinite; St Venant-Kirchhoff on the reference configuration): the strain
+       * rows below taken from gs = g + g^T g / 2, whose symmetric part is the Green-Lagrange E; the hoop's
+       * E_33 = h + h^2 / 2; the free thermal stretch's E_th = eps_th + eps_th^2 / 2; and the stress spread as
+       * P = F S (the first Piola-Kirchhoff stress) */
+      V J;
+      for (PetscInt i = 0; i < dim; i++)
+        for (PetscInt d = 0; d < dim; d++) {
+          Fm[i][d] = g[i][d] + (i == d ? 1.0 : 0.0);
+          for (PetscInt k = 0; k < dim; k++) gs[i][d] += 0.5 * g[k][i] * g[k][d];
+        }
+      if (dim == 3)
+        J = Fm[0][0] * (Fm[1][1] * Fm[2][2] - Fm[1][2] * Fm[2][1]) - Fm[0][1] * (Fm[1][0] * Fm[2][2] - Fm[1][2] * Fm[2][0]) +
+            Fm[0][2] * (Fm[1][0] * Fm[2][1] - Fm[1][1] * Fm[2][0]);
+      else
+        J = (Fm[0][0] * Fm[1][1] - Fm[0][1] * Fm[1][0]) * (1 + hoop);
+      inv |= (J <= 0);
+      Fm[2][2] = dim == 3 ? Fm[2][2] : 1 + hoop;
+      hoop += 0.5 * hoop * hoop;
+      eth += 0.5 * eth * eth;
+    }
     if (shell) {
       /* the continuum shell (kinematics.c, ShellLocal): the gradient in the frame, gl = Q g Q^T, the shell's
        * law there (lambda, mu the shell plane's; E_t; 5/6 mu across), and the stress back, Q^T S_l Q */
@@ -159,7 +184,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       for (PetscInt i = 0; i < 3; i++)
         for (PetscInt d = 0; d < 3; d++) Qf[i][d] = Ld(Fr + (3 * i + d) * W);
       for (PetscInt i = 0; i < 3; i++)
-        for (PetscInt d = 0; d < 3; d++) t[i][d] = Qf[i][0] * g[0][d] + Qf[i][1] * g[1][d] + Qf[i][2] * g[2][d];
+        for (PetscInt d = 0; d < 3; d++) t[i][d] = Qf[i][0] * gs[0][d] + Qf[i][1] * gs[1][d] + Qf[i][2] * gs[2][d];
       for (PetscInt i = 0; i < 3; i++)
         for (PetscInt j = 0; j < 3; j++) gl[i][j] = t[i][0] * Qf[j][0] + t[i][1] * Qf[j][1] + t[i][2] * Qf[j][2];
       e[0] = gl[0][0], e[1] = gl[1][1], e[2] = gl[2][2], e[3] = gl[0][1] + gl[1][0], e[4] = gl[0][2] + gl[2][0], e[5] = gl[1][2] + gl[2][1];
@@ -178,9 +203,9 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
       s[4] = Qf[0][0] * t[0][2] + Qf[1][0] * t[1][2] + Qf[2][0] * t[2][2];
       s[5] = Qf[0][1] * t[0][2] + Qf[1][1] * t[1][2] + Qf[2][1] * t[2][2];
     } else {
-      e[0] = g[0][0], e[1] = g[1][1], e[3] = g[0][1] + g[1][0];
+      e[0] = gs[0][0], e[1] = gs[1][1], e[3] = gs[0][1] + gs[1][0];
       if (dim == 3)
-        e[2] = g[2][2], e[4] = g[0][2] + g[2][0], e[5] = g[1][2] + g[2][1];
+        e[2] = gs[2][2], e[4] = gs[0][2] + gs[2][0], e[5] = gs[1][2] + gs[2][1];
       else
         e[2] = ps ? eth - lps * (e[0] + e[1] - 2 * eth) : hoop, e[4] = e[5] = (V){0};
       tr = e[0] + e[1] + e[2] - 3 * eth;
@@ -190,8 +215,19 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
         for (PetscInt r = 0; r < 6; r++) en[0] += 0.5 * s[r] * (r < 3 ? e[r] - eth : e[r]);
     }
     {
-      /* the stress as a matrix S[i][d] (dV included); F_ia += sum_d S[i][d] dN_a/dx_d */
-      const V S[3][3] = {{s[0], s[3], s[4]}, {s[3], s[1], s[5]}, {s[4], s[5], s[2]}};
+      /* the stress as a matrix S[i][d] (dV included; finite strain: F S); F_ia += sum_d S[i][d] dN_a/dx_d */
+      V S[3][3] = {{s[0], s[3], s[4]}, {s[3], s[1], s[5]}, {s[4], s[5], s[2]}};
+      if (nl) {
+        V P[3][3];
+        for (PetscInt i = 0; i < dim; i++)
+          for (PetscInt d = 0; d < dim; d++) {
+            P[i][d] = Fm[i][0] * S[0][d];
+            for (PetscInt k = 1; k < dim; k++) P[i][d] += Fm[i][k] * S[k][d];
+          }
+        for (PetscInt i = 0; i < dim; i++)
+          for (PetscInt d = 0; d < dim; d++) S[i][d] = P[i][d];
+        S[2][2] = dim == 3 ? S[2][2] : Fm[2][2] * s[2]; /* the hoop's P_33 = F_33 S_33 */
+      }
       if (nq > 1) { /* through the reference derivatives: Q[i][e] = sum_d S[i][d] A[e][d] */
         const PetscReal(*dN)[TSL_FAST_MAX_NODES] = shape->dN[q];
         V Q[3][3];
@@ -213,7 +249,7 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
             for (PetscInt d = 0; d < dim; d++) F[i][a] += Ld(P + (d * n + a) * W) * S[i][d];
       }
       if (axi) {
-        const V sr = s[2] * Ld(P + L.ri * W);
+        const V sr = S[2][2] * Ld(P + L.ri * W);
         for (PetscInt a = 0; a < n; a++) F[0][a] += Nq[a] * sr;
       }
     }
@@ -264,52 +300,118 @@ static inline __attribute__((always_inline)) void Force(const PetscInt dim, cons
   if (Rv) { /* lanes without viscosity (eta = eta2 = 0) get zero forces and power; Rv == R: added to R's forces */
     const PetscReal *C  = rec + L.C * W;
     const V          Vc = Ld(C + L.dV * W), cd = Ld(rec + 4 * W);
-    const PetscReal *Nc = nq > 1 ? shape->Nc : shape->N[0];
+    const PetscReal *Nc   = nq > 1 ? shape->Nc : shape->N[0];
     V                rate = {0}, tr = {0}, p, neg, gd[3][TSL_FAST_MAX_NODES];
-    if (nq > 1) Gradients(dim, n, C, shape->dNc, gd);
+    if (nq > 1)
+      Gradients(dim, n, C, shape->dNc, gd);
     else
       for (PetscInt d = 0; d < dim; d++)
         for (PetscInt a = 0; a < n; a++) gd[d][a] = Ld(C + (d * n + a) * W);
-    if (axi) {
-      const V ri = Ld(C + L.ri * W);
-      for (PetscInt a = 0; a < n; a++) gd[0][a] += Nc[a] * ri;
-    }
-    if (v)
-      for (PetscInt a = 0; a < n; a++)
-        for (PetscInt d = 0; d < dim; d++) rate += gd[d][a] * Ld(v + (nd * a + d) * W);
-    if (ev) { /* the volumetric strain at the centre, kept for the next evaluation's rate */
-      for (PetscInt a = 0; a < n; a++)
-        for (PetscInt d = 0; d < dim; d++) tr += gd[d][a] * U[d][a];
-      if (!v) rate = (tr - Ld(ev)) * hinv;
-      St(ev, tr);
-    }
-    neg = (V)((VI)rate & (rate < 0)); /* the quadratic term, in compression only */
-    p   = Ld(eta) * cd * rate - Ld(eta2) * cd * neg * neg;
-    if (Rv == R)
-      for (PetscInt a = 0; a < n; a++)
-        for (PetscInt d = 0; d < dim; d++) F[d][a] += p * gd[d][a] * Vc;
-    else
-      for (PetscInt a = 0; a < n; a++) {
-        for (PetscInt d = 0; d < dim; d++) St(Rv + (nd * a + d) * W, p * gd[d][a] * Vc);
-        St(Rv + (nd * a + dim) * W, (V){0});
+    if (nl) {
+      /* finite strain (kernels.c, TslElementBulkViscosity): the rate J'/J of the current volume from v (never from
+       * ev), the forces p dJ/du_c = p (cof F)_ik dN_a/dX_k (cof F = J F^-T; the hoop's F_33 adds
+       * (F_11 F_22 - F_12 F_21) N_a / r to u_r's), power p J'/J J V */
+      V Fc[3][3], cof[3][3], J, hc = {0};
+      for (PetscInt i = 0; i < dim; i++)
+        for (PetscInt k = 0; k < dim; k++) {
+          Fc[i][k] = (i == k ? 1.0 : 0.0) + gd[k][0] * U[i][0];
+          for (PetscInt a = 1; a < n; a++) Fc[i][k] += gd[k][a] * U[i][a];
+        }
+      if (axi) {
+        for (PetscInt a = 0; a < n; a++) hc += Nc[a] * U[0][a];
+        hc *= Ld(C + L.ri * W);
       }
-    St(power, p * rate * Vc);
-    if (qr) St(qr, p * Vc), St(qr + W, rate);
+      if (dim == 3) {
+        for (PetscInt i = 0; i < 3; i++)
+          for (PetscInt k = 0; k < 3; k++)
+            cof[i][k] = Fc[(i + 1) % 3][(k + 1) % 3] * Fc[(i + 2) % 3][(k + 2) % 3] - Fc[(i + 1) % 3][(k + 2) % 3] * Fc[(i + 2) % 3][(k + 1) % 3];
+        J = Fc[0][0] * cof[0][0] + Fc[0][1] * cof[0][1] + Fc[0][2] * cof[0][2];
+      } else {
+        const V f33 = 1 + hc;
+        cof[0][0] = Fc[1][1] * f33, cof[0][1] = -Fc[1][0] * f33, cof[1][0] = -Fc[0][1] * f33, cof[1][1] = Fc[0][0] * f33;
+        cof[2][2] = Fc[0][0] * Fc[1][1] - Fc[0][1] * Fc[1][0];
+        J         = cof[2][2] * f33;
+      }
+      inv |= (J <= 0);
+      for (PetscInt a = 0; a < n; a++) {
+        V h[3];
+        for (PetscInt i = 0; i < dim; i++) {
+          h[i] = cof[i][0] * gd[0][a];
+          for (PetscInt k = 1; k < dim; k++) h[i] += cof[i][k] * gd[k][a];
+        }
+        if (axi) h[0] += cof[2][2] * Nc[a] * Ld(C + L.ri * W);
+        for (PetscInt d = 0; d < dim; d++) gd[d][a] = h[d];
+      }
+      if (v)
+        for (PetscInt a = 0; a < n; a++)
+          for (PetscInt d = 0; d < dim; d++) rate += gd[d][a] * Ld(v + (nd * a + d) * W);
+      rate /= J;
+      neg = (V)((VI)rate & (rate < 0));
+      p   = Ld(eta) * cd * rate - Ld(eta2) * cd * neg * neg;
+      if (Rv == R)
+        for (PetscInt a = 0; a < n; a++)
+          for (PetscInt d = 0; d < dim; d++) F[d][a] += p * gd[d][a] * Vc;
+      else
+        for (PetscInt a = 0; a < n; a++) {
+          for (PetscInt d = 0; d < dim; d++) St(Rv + (nd * a + d) * W, p * gd[d][a] * Vc);
+          St(Rv + (nd * a + dim) * W, (V){0});
+        }
+      St(power, p * rate * J * Vc);
+      if (qr) St(qr, p * J * Vc), St(qr + W, rate);
+    } else {
+      if (axi) {
+        const V ri = Ld(C + L.ri * W);
+        for (PetscInt a = 0; a < n; a++) gd[0][a] += Nc[a] * ri;
+      }
+      if (v)
+        for (PetscInt a = 0; a < n; a++)
+          for (PetscInt d = 0; d < dim; d++) rate += gd[d][a] * Ld(v + (nd * a + d) * W);
+      if (ev) { /* the volumetric strain at the centre, kept for the next evaluation's rate */
+        for (PetscInt a = 0; a < n; a++)
+          for (PetscInt d = 0; d < dim; d++) tr += gd[d][a] * U[d][a];
+        if (!v) rate = (tr - Ld(ev)) * hinv;
+        St(ev, tr);
+      }
+      neg = (V)((VI)rate & (rate < 0)); /* the quadratic term, in compression only */
+      p   = Ld(eta) * cd * rate - Ld(eta2) * cd * neg * neg;
+      if (Rv == R)
+        for (PetscInt a = 0; a < n; a++)
+          for (PetscInt d = 0; d < dim; d++) F[d][a] += p * gd[d][a] * Vc;
+      else
+        for (PetscInt a = 0; a < n; a++) {
+          for (PetscInt d = 0; d < dim; d++) St(Rv + (nd * a + d) * W, p * gd[d][a] * Vc);
+          St(Rv + (nd * a + dim) * W, (V){0});
+        }
+      St(power, p * rate * Vc);
+      if (qr) St(qr, p * Vc), St(qr + W, rate);
+    }
   }
   for (PetscInt a = 0; a < n; a++) {
     for (PetscInt d = 0; d < dim; d++) St(R + (nd * a + d) * W, F[d][a]);
     St(R + (nd * a + dim) * W, Fth[a]);
   }
   if (energy) St(energy, en[0]), St(energy + W, en[1]);
+  {
+    int mask = 0;
+    for (PetscInt j = 0; j < W; j++) mask |= inv[j] ? 1 << j : 0;
+    return mask;
+  }
 }
 
-/* One function per row, cloned for x86-64-v4 and x86-64-v3 beside the baseline (TSL_CLONES, lanes.h). */
+/* Two functions per row, small strain (name) and finite strain (name##Nl), each cloned for x86-64-v4 and x86-64-v3
+ * beside the baseline (TSL_CLONES, lanes.h); they return the mask of lanes with det F <= 0 (finite strain). */
 #define FORCE_ROW(name, dim, n, nq, nh, axi, ps, sf, shell)                                                                                          \
-  TSL_CLONES static void name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,      \
-                              PetscReal *ev, PetscReal hinv, const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv,               \
-                              PetscReal *power, PetscReal *qr, PetscReal *energy)                                                                    \
+  TSL_CLONES static int name(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,       \
+                             PetscReal *ev, PetscReal hinv, const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv,                \
+                             PetscReal *power, PetscReal *qr, PetscReal *energy)                                                                     \
   {                                                                                                                                                  \
-    Force(dim, n, nq, nh, axi, ps, sf, shell, sh, rec, u, ti, v, ev, hinv, eta, eta2, R, Rv, power, qr, energy);                                     \
+    return Force(dim, n, nq, nh, axi, ps, sf, shell, PETSC_FALSE, sh, rec, u, ti, v, ev, hinv, eta, eta2, R, Rv, power, qr, energy);                 \
+  }                                                                                                                                                  \
+  TSL_CLONES static int name##Nl(const TslElementFastShape *sh, const PetscReal *rec, const PetscReal *u, const PetscReal *ti, const PetscReal *v,   \
+                                 PetscReal *ev, PetscReal hinv, const PetscReal *eta, const PetscReal *eta2, PetscReal *R, PetscReal *Rv,            \
+                                 PetscReal *power, PetscReal *qr, PetscReal *energy)                                                                 \
+  {                                                                                                                                                  \
+    return Force(dim, n, nq, nh, axi, ps, sf, shell, PETSC_TRUE, sh, rec, u, ti, v, ev, hinv, eta, eta2, R, Rv, power, qr, energy);                  \
   }
 FORCE_ROW(Hex8Full, 3, 8, 8, 0, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE)
 FORCE_ROW(Hex8Reduced, 3, 8, 1, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE)
@@ -333,8 +435,8 @@ FORCE_ROW(Tri6FullPs, 2, 6, 3, 0, PETSC_FALSE, PETSC_TRUE, PETSC_FALSE, PETSC_FA
 FORCE_ROW(Hex8Shell, 3, 8, 5, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
 FORCE_ROW(Wedge6Shell, 3, 6, 5, 4, PETSC_FALSE, PETSC_FALSE, PETSC_FALSE, PETSC_TRUE)
 
-typedef void (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, PetscReal *,
-                        PetscReal, const PetscReal *, const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
+typedef int (*ForceFn)(const TslElementFastShape *, const PetscReal *, const PetscReal *, const PetscReal *, const PetscReal *, PetscReal *,
+                       PetscReal, const PetscReal *, const PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *, PetscReal *);
 
 /* The rows: which (family, formulation, kinematics) have a record, and its sizes. */
 typedef struct {
@@ -342,36 +444,38 @@ typedef struct {
   const TslFormulation *form;
   TslKinematics         kin;
   PetscInt              nq, nh;
-  ForceFn               force;
-  PetscBool             sf; /* sum-factorised (hex8's full rule) */
+  ForceFn               force, force_nl; /* small and finite strain */
+  PetscBool             sf;              /* sum-factorised (hex8's full rule) */
 } FastRow;
 
 static const FastRow Rows[] = {
-    {&TslGeomHex8, &TslFormFull, TSL_KIN_SOLID3D, 8, 0, Hex8Full, PETSC_TRUE},
-    {&TslGeomHex8, &TslFormReduced, TSL_KIN_SOLID3D, 1, 4, Hex8Reduced, PETSC_FALSE},
-    {&TslGeomQuad4, &TslFormFull, TSL_KIN_PLANE_STRAIN, 4, 0, Quad4Full, PETSC_FALSE},
-    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRAIN, 1, 1, Quad4Reduced, PETSC_FALSE},
-    {&TslGeomQuad4, &TslFormFull, TSL_KIN_AXISYMMETRIC, 4, 0, Quad4FullAxi, PETSC_FALSE},
-    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_AXISYMMETRIC, 1, 1, Quad4ReducedAxi, PETSC_FALSE},
-    {&TslGeomTet4, &TslFormFull, TSL_KIN_SOLID3D, 1, 0, Tet4Full, PETSC_FALSE},
-    {&TslGeomTet10, &TslFormModified, TSL_KIN_SOLID3D, 4, 0, Tet10Full, PETSC_FALSE}, /* modified: lumping and pressure faces differ, not the force */
-    {&TslGeomTet10, &TslFormFullSubFace, TSL_KIN_SOLID3D, 4, 0, Tet10Full, PETSC_FALSE}, /* C3D10T: the same force */
-    {&TslGeomWedge6, &TslFormFull, TSL_KIN_SOLID3D, 6, 0, Wedge6Full, PETSC_FALSE},
-    {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRAIN, 1, 0, Tri3Full, PETSC_FALSE},
-    {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRAIN, 3, 0, Tri6Full, PETSC_FALSE},
-    {&TslGeomTri6, &TslFormFull, TSL_KIN_PLANE_STRAIN, 3, 0, Tri6Full, PETSC_FALSE}, /* the full tri6 (CPE6T ...): the same force */
-    {&TslGeomQuad8, &TslFormFull, TSL_KIN_PLANE_STRAIN, 9, 0, Quad8Full, PETSC_FALSE},
-    {&TslGeomTri3, &TslFormFull, TSL_KIN_AXISYMMETRIC, 1, 0, Tri3FullAxi, PETSC_FALSE},
-    {&TslGeomTri6, &TslFormModified, TSL_KIN_AXISYMMETRIC, 3, 0, Tri6FullAxi, PETSC_FALSE},
-    {&TslGeomTri6, &TslFormFull, TSL_KIN_AXISYMMETRIC, 3, 0, Tri6FullAxi, PETSC_FALSE}, /* the full tri6 (CPE6T ...): the same force */
-    {&TslGeomQuad8, &TslFormFull, TSL_KIN_AXISYMMETRIC, 9, 0, Quad8FullAxi, PETSC_FALSE},
-    {&TslGeomQuad4, &TslFormFull, TSL_KIN_PLANE_STRESS, 4, 0, Quad4FullPs, PETSC_FALSE},
-    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRESS, 1, 1, Quad4ReducedPs, PETSC_FALSE},
-    {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRESS, 1, 0, Tri3FullPs, PETSC_FALSE},
-    {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, PETSC_FALSE},
-    {&TslGeomTri6, &TslFormFull, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, PETSC_FALSE},                 /* the full tri6 (CPE6T ...): the same force */
-    {&TslGeomHex8, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Hex8Shell, PETSC_FALSE},     /* the default 5 Simpson points */
-    {&TslGeomWedge6, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Wedge6Shell, PETSC_FALSE}, /* xi eta, xi eta zeta vanish: zero vectors */
+    {&TslGeomHex8, &TslFormFull, TSL_KIN_SOLID3D, 8, 0, Hex8Full, Hex8FullNl, PETSC_TRUE},
+    {&TslGeomHex8, &TslFormReduced, TSL_KIN_SOLID3D, 1, 4, Hex8Reduced, Hex8ReducedNl, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormFull, TSL_KIN_PLANE_STRAIN, 4, 0, Quad4Full, Quad4FullNl, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRAIN, 1, 1, Quad4Reduced, Quad4ReducedNl, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormFull, TSL_KIN_AXISYMMETRIC, 4, 0, Quad4FullAxi, Quad4FullAxiNl, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_AXISYMMETRIC, 1, 1, Quad4ReducedAxi, Quad4ReducedAxiNl, PETSC_FALSE},
+    {&TslGeomTet4, &TslFormFull, TSL_KIN_SOLID3D, 1, 0, Tet4Full, Tet4FullNl, PETSC_FALSE},
+    {&TslGeomTet10, &TslFormModified, TSL_KIN_SOLID3D, 4, 0, Tet10Full, Tet10FullNl,
+     PETSC_FALSE}, /* modified: lumping and pressure faces differ, not the force */
+    {&TslGeomTet10, &TslFormFullSubFace, TSL_KIN_SOLID3D, 4, 0, Tet10Full, Tet10FullNl, PETSC_FALSE}, /* C3D10T: the same force */
+    {&TslGeomWedge6, &TslFormFull, TSL_KIN_SOLID3D, 6, 0, Wedge6Full, Wedge6FullNl, PETSC_FALSE},
+    {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRAIN, 1, 0, Tri3Full, Tri3FullNl, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRAIN, 3, 0, Tri6Full, Tri6FullNl, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormFull, TSL_KIN_PLANE_STRAIN, 3, 0, Tri6Full, Tri6FullNl, PETSC_FALSE}, /* the full tri6 (CPE6T ...): the same force */
+    {&TslGeomQuad8, &TslFormFull, TSL_KIN_PLANE_STRAIN, 9, 0, Quad8Full, Quad8FullNl, PETSC_FALSE},
+    {&TslGeomTri3, &TslFormFull, TSL_KIN_AXISYMMETRIC, 1, 0, Tri3FullAxi, Tri3FullAxiNl, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormModified, TSL_KIN_AXISYMMETRIC, 3, 0, Tri6FullAxi, Tri6FullAxiNl, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormFull, TSL_KIN_AXISYMMETRIC, 3, 0, Tri6FullAxi, Tri6FullAxiNl, PETSC_FALSE}, /* the full tri6 (CPE6T ...): the same force */
+    {&TslGeomQuad8, &TslFormFull, TSL_KIN_AXISYMMETRIC, 9, 0, Quad8FullAxi, Quad8FullAxiNl, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormFull, TSL_KIN_PLANE_STRESS, 4, 0, Quad4FullPs, Quad4FullPsNl, PETSC_FALSE},
+    {&TslGeomQuad4, &TslFormReduced, TSL_KIN_PLANE_STRESS, 1, 1, Quad4ReducedPs, Quad4ReducedPsNl, PETSC_FALSE},
+    {&TslGeomTri3, &TslFormFull, TSL_KIN_PLANE_STRESS, 1, 0, Tri3FullPs, Tri3FullPsNl, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormModified, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, Tri6FullPsNl, PETSC_FALSE},
+    {&TslGeomTri6, &TslFormFull, TSL_KIN_PLANE_STRESS, 3, 0, Tri6FullPs, Tri6FullPsNl, PETSC_FALSE}, /* the full tri6 (CPE6T ...): the same force */
+    {&TslGeomHex8, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Hex8Shell, Hex8ShellNl, PETSC_FALSE}, /* the default 5 Simpson points */
+    {&TslGeomWedge6, &TslFormContinuumShell, TSL_KIN_CONTINUUM_SHELL, 5, 4, Wedge6Shell, Wedge6ShellNl,
+     PETSC_FALSE}, /* xi eta, xi eta zeta vanish: zero vectors */
 };
 
 /* The record row of a coupled type (a heat-transfer type has none: its records would be the conduction alone,
@@ -464,7 +568,8 @@ PetscBool TslElementFastShapeGet(const TslElementType *t, TslElementFastShape *s
 PetscInt TslElementFastSize(const TslElementInput *in)
 {
   const PetscInt r = RowOf(in->type);
-  if (r < 0 || TslMaterialIsTemperatureDependent(in->sec->mat) || TslMaterialIsPlastic(in->sec->mat) || RowLayout(r).size > TSL_FAST_MAX_SIZE) return 0;
+  if (r < 0 || TslMaterialIsTemperatureDependent(in->sec->mat) || TslMaterialIsPlastic(in->sec->mat) || RowLayout(r).size > TSL_FAST_MAX_SIZE)
+    return 0;
   if (in->type->form->quadrature(in->type->geom, in->sec) != in->type->form->quadrature(in->type->geom, NULL))
     return 0; /* a shell section's own rule */
   return RowLayout(r).size;
@@ -561,30 +666,35 @@ void TslElementFastInterleave(PetscInt size, PetscInt lane, const PetscReal rec[
   for (PetscInt k = 0; k < size; k++) batch[k * W + lane] = rec[k];
 }
 
-void TslElementFastForceBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
-                              PetscReal ev[], PetscReal hinv, const PetscReal eta[], const PetscReal eta2[], PetscReal R[], PetscReal Rv[],
-                              PetscReal power[], PetscReal qr[])
+static inline ForceFn RowForce(const TslElementFastShape *shape, PetscBool nl)
+{
+  return nl ? Rows[shape->row].force_nl : Rows[shape->row].force;
+}
+
+int TslElementFastForceBatch(const TslElementFastShape *shape, PetscBool nl, const PetscReal rec[], const PetscReal u[], const PetscReal ti[],
+                             const PetscReal v[], PetscReal ev[], PetscReal hinv, const PetscReal eta[], const PetscReal eta2[], PetscReal R[],
+                             PetscReal Rv[], PetscReal power[], PetscReal qr[])
 {
   if (!Rv)
     for (PetscInt j = 0; j < W; j++) {
       power[j] = 0;
       if (qr) qr[j] = qr[W + j] = 0;
     }
-  Rows[shape->row].force(shape, rec, u, ti, v, ev, hinv, eta, eta2, R, Rv, power, qr, NULL);
+  return RowForce(shape, nl)(shape, rec, u, ti, v, ev, hinv, eta, eta2, R, Rv, power, qr, NULL);
 }
 
-void TslElementFastResidualBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal R[],
-                                 PetscReal energy[])
+int TslElementFastResidualBatch(const TslElementFastShape *shape, PetscBool nl, const PetscReal rec[], const PetscReal u[], const PetscReal ti[],
+                                PetscReal R[], PetscReal energy[])
 {
-  Rows[shape->row].force(shape, rec, u, ti, NULL, NULL, 0, NULL, NULL, R, NULL, NULL, NULL, energy);
+  return RowForce(shape, nl)(shape, rec, u, ti, NULL, NULL, 0, NULL, NULL, R, NULL, NULL, NULL, energy);
 }
 
-void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal strain[],
-                               PetscReal hourglass[])
+void TslElementFastEnergyBatch(const TslElementFastShape *shape, PetscBool nl, const PetscReal rec[], const PetscReal u[], const PetscReal ti[],
+                               PetscReal strain[], PetscReal hourglass[])
 {
   PetscReal R[TSL_MAX_ELEM_DOF * W], energy[2 * W];
 
-  TslElementFastResidualBatch(shape, rec, u, ti, R, energy);
+  (void)TslElementFastResidualBatch(shape, nl, rec, u, ti, R, energy);
   for (PetscInt j = 0; j < W; j++) strain[j] = energy[j], hourglass[j] = energy[W + j];
 }
 
@@ -592,7 +702,7 @@ void TslElementFastEnergyBatch(const TslElementFastShape *shape, const PetscReal
  * loop calls the batch functions). */
 typedef struct {
   PetscReal rec[TSL_FAST_MAX_SIZE * W], u[TSL_MAX_ELEM_DOF * W], ti[TSL_FAST_MAX_NODES * W], v[TSL_MAX_ELEM_DOF * W], R[TSL_MAX_ELEM_DOF * W],
-    Rv[TSL_MAX_ELEM_DOF * W];
+      Rv[TSL_MAX_ELEM_DOF * W];
 } Single;
 
 static void SingleFill(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
@@ -609,32 +719,34 @@ static void SingleFill(const TslElementFastShape *shape, const PetscReal rec[], 
   }
 }
 
-void TslElementFastForce(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], const PetscReal v[],
-                         PetscReal eta, PetscReal eta2, PetscReal R[], PetscReal Rv[], PetscReal *power)
+int TslElementFastForce(const TslElementFastShape *shape, PetscBool nl, const PetscReal rec[], const PetscReal u[], const PetscReal ti[],
+                        const PetscReal v[], PetscReal eta, PetscReal eta2, PetscReal R[], PetscReal Rv[], PetscReal *power)
 {
-  Single         s;
-  const FastRow *row = &Rows[shape->row];
-  const PetscInt nd  = row->geom->nnode * (row->geom->dim + 1);
-  const PetscBool bv = (eta > 0 || eta2 > 0) && Rv ? PETSC_TRUE : PETSC_FALSE;
-  PetscReal      e1[W], e2[W], w[W];
+  Single          s;
+  const FastRow  *row = &Rows[shape->row];
+  const PetscInt  nd  = row->geom->nnode * (row->geom->dim + 1);
+  const PetscBool bv  = (eta > 0 || eta2 > 0) && Rv ? PETSC_TRUE : PETSC_FALSE;
+  PetscReal       e1[W], e2[W], w[W];
+  int             mask;
 
   for (PetscInt j = 0; j < W; j++) e1[j] = eta, e2[j] = eta2;
   SingleFill(shape, rec, u, ti, bv ? v : NULL, &s);
-  TslElementFastForceBatch(shape, s.rec, s.u, s.ti, bv ? s.v : NULL, NULL, 0, e1, e2, s.R, bv ? s.Rv : NULL, w, NULL);
+  mask = TslElementFastForceBatch(shape, nl, s.rec, s.u, s.ti, bv ? s.v : NULL, NULL, 0, e1, e2, s.R, bv ? s.Rv : NULL, w, NULL);
   for (PetscInt i = 0; i < nd; i++) {
     R[i] = s.R[i * W];
     if (bv) Rv[i] = s.Rv[i * W];
   }
   *power = w[0];
+  return mask & 1;
 }
 
-void TslElementFastEnergy(const TslElementFastShape *shape, const PetscReal rec[], const PetscReal u[], const PetscReal ti[], PetscReal *strain,
-                          PetscReal *hourglass)
+void TslElementFastEnergy(const TslElementFastShape *shape, PetscBool nl, const PetscReal rec[], const PetscReal u[], const PetscReal ti[],
+                          PetscReal *strain, PetscReal *hourglass)
 {
   Single    s;
   PetscReal se[W], hg[W];
 
   SingleFill(shape, rec, u, ti, NULL, &s);
-  TslElementFastEnergyBatch(shape, s.rec, s.u, s.ti, se, hg);
+  TslElementFastEnergyBatch(shape, nl, s.rec, s.u, s.ti, se, hg);
   *strain = se[0], *hourglass = hg[0];
 }

@@ -2080,3 +2080,23 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
   if (qr) qr[0] = p * pt.dV, qr[1] = rate;
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+PetscBool TslElementCentreStretch(const TslElementInput *in, PetscReal C[6])
+{
+  const TslElementType *t = in->type;
+  PetscReal             xi[3], H[3][3], F[3][3];
+  TslElementPoint       pt;
+  TslGradientColumn     col[TSL_MAX_ELEM_NODES * 3];
+
+  TslElementCentre(t->geom, xi);
+  if (!TslElementPointEvaluate(t, in->sec, in->x, xi, t->geom->ref_volume, &pt)) return PETSC_FALSE;
+  TslElementDeformation(t, in->sec, in->x, &pt, in->u, H, col);
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = 0; j < 3; j++) F[i][j] = (i == j) + H[i][j];
+  for (PetscInt r = 0; r < 6; r++) {
+    const PetscInt K = VoigtI[r], L = VoigtJ[r];
+    C[r]             = 0;
+    for (PetscInt i = 0; i < 3; i++) C[r] += F[i][K] * F[i][L];
+  }
+  return Det3(F) > 0 ? PETSC_TRUE : PETSC_FALSE;
+}

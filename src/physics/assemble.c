@@ -409,9 +409,13 @@ static PetscErrorCode AssembleRecords(TslProblem p, const PetscScalar *xa, const
       TslElementFastInterleave(d[j].nd, j, d[j].u, u);
       TslElementFastInterleave(d[j].n, j, d[j].ti, ti);
     }
-    TslElementFastResidualBatch(shape, &p->fast_rec[p->fast_boff[b]], u, ti, R, c->heat ? energy : NULL);
+    const int inv = TslElementFastResidualBatch(shape, p->nlgeom, &p->fast_rec[p->fast_boff[b]], u, ti, R, c->heat ? energy : NULL);
     for (PetscInt j = 0; j < W; j++) {
       if (lane[j] < 0) continue;
+      if (inv & (1 << j)) { /* finite strain: turned inside out by this iterate, as the generic kernel's `inverted` */
+        if (*c->bad_elem < 0) *c->bad_elem = lane[j];
+        continue;
+      }
       for (PetscInt i = 0; i < d[j].nd; i++) c->R[i] = R[i * W + j];
       if (c->heat) c->heat->energy[0] += energy[j], c->heat->energy[1] += energy[W + j];
       PetscCall(ElementRest(p, lane[j], &d[j], c));
@@ -426,7 +430,7 @@ static PetscErrorCode AssembleLoop(TslProblem p, AsmMode mode, const PetscScalar
                                    PetscReal *R, PetscReal *K, PetscInt *bad_elem)
 {
   AsmCtx          ctx     = {mode, A, f, heat, R, K, bad_elem};
-  const PetscBool records = (mode == ASM_RESIDUAL || mode == ASM_RAW) && p->fast_implicit && p->fast_built && !p->nlgeom; /* records: small strain */
+  const PetscBool records = (mode == ASM_RESIDUAL || mode == ASM_RAW) && p->fast_implicit && p->fast_built; /* small or finite strain */
 
   PetscFunctionBeginUser;
   if (mode == ASM_RESIDUAL) p->flux_abs[0] = p->flux_abs[1] = p->flux_n[0] = p->flux_n[1] = 0;

@@ -193,7 +193,7 @@ void TslProblemFastBatchEnergy(TslProblem p, PetscInt b, const PetscScalar *xa, 
 
   BatchElements(p, b, e, used);
   tib = GatherBatch(p, e, xa, u, ti, p->ndof);
-  TslElementFastEnergyBatch(&p->fast_shape[p->m->elem_type[e[0]]], &p->fast_rec[p->fast_boff[b]], u, tib, se, hg);
+  TslElementFastEnergyBatch(&p->fast_shape[p->m->elem_type[e[0]]], p->nlgeom, &p->fast_rec[p->fast_boff[b]], u, tib, se, hg);
   *strain = *hourglass = 0;
   for (PetscInt j = 0; j < W; j++)
     if (used[j]) *strain += se[j], *hourglass += hg[j];
@@ -211,6 +211,7 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
   const PetscReal *tib;
   PetscInt         e[W];
   PetscBool        used[W], visc[W], bv = PETSC_FALSE;
+  int              inv;
 
   BatchElements(p, b, e, used);
   sh = &p->fast_shape[p->m->elem_type[e[0]]];
@@ -243,8 +244,10 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
     }
   }
   /* the viscous forces added to the internal ones in R (Rv = R; zero in lanes without viscosity): one scatter */
-  TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], u, tib, bv && c->hinv == 0 ? v : NULL, bv ? &p->fast_ev[W * b] : NULL, c->hinv, eta,
-                           eta2, R, bv ? R : NULL, w, bv ? qr : NULL);
+  inv = TslElementFastForceBatch(sh, p->nlgeom, &p->fast_rec[p->fast_boff[b]], u, tib, bv && c->hinv == 0 ? v : NULL, bv ? &p->fast_ev[W * b] : NULL,
+                                 c->hinv, eta, eta2, R, bv ? R : NULL, w, bv ? qr : NULL);
+  for (PetscInt j = 0; j < W; j++) /* finite strain: an element turned inside out, agreed on with the rates (TslProblemExplicitForces) */
+    if (used[j] && (inv & (1 << j)) && c->bad < 0) c->bad = e[j];
   if (bv) {
     for (PetscInt j = 0; j < W; j++)
       if (visc[j]) c->power += w[j], c->prev += c->q[e[j]] * qr[W + j], c->q[e[j]] = qr[j];
@@ -259,7 +262,7 @@ static inline __attribute__((always_inline)) void FastBatchNd(TslProblem p, Pets
         for (PetscInt i = 0; i < nd - 1; i++) uv[(nd * a + i) * W + j] = v[(nd * a + i) * W + j];
         uv[(nd * a + nd - 1) * W + j] = tv[a * W + j] = u[(nd * a + nd - 1) * W + j];
       }
-    TslElementFastForceBatch(sh, &p->fast_rec[p->fast_boff[b]], uv, tv, NULL, NULL, 0, zero, zero, Rd, NULL, wd, NULL);
+    (void)TslElementFastForceBatch(sh, PETSC_FALSE, &p->fast_rec[p->fast_boff[b]], uv, tv, NULL, NULL, 0, zero, zero, Rd, NULL, wd, NULL);
     for (PetscInt j = 0; j < W; j++) {
       PetscReal pw = 0;
       if (beta[j] == 0) continue;
@@ -373,8 +376,8 @@ static PetscErrorCode FaceLoadsCached(TslProblem p, PetscInt e, const PetscScala
 
   PetscFunctionBeginUser;
   *done = PETSC_FALSE;
-  for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++)
-    if (p->fcache_off[i] < 0) PetscFunctionReturn(PETSC_SUCCESS);
+  for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) /* finite strain: a pressure follows the deformed face (generic) */
+    if (p->fcache_off[i] < 0 || (p->nlgeom && p->face[i].kind == TSL_FACE_PRESSURE)) PetscFunctionReturn(PETSC_SUCCESS);
   for (PetscInt i = p->face_start[e]; i < p->face_start[e + 1]; i++) {
     const TslFaceRecord *rec = &p->face[i];
     const PetscInt       fn = rec->face < 1 ? 0 : g->face_nnode[rec->face - 1], *fnode = rec->face < 1 ? NULL : g->face_node[rec->face - 1];
@@ -438,6 +441,7 @@ PetscErrorCode TslProblemFastDestroy(TslProblem p)
 {
   PetscFunctionBeginUser;
   PetscCall(ElemCacheDestroy(&p->elem_cache));
+  PetscCall(PetscFree(p->stable_shape));
   PetscCall(PetscFree2(p->fast_shape, p->fast_off));
   PetscCall(PetscFree(p->fast_rec));
   PetscCall(PetscFree(p->fast_ev));
@@ -574,7 +578,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   ForceCtx           c = {NULL, NULL, NULL, eta, eta2, q, 0, 0, PETSC_FALSE, 0, &heat, -1};
   /* with records on every element and a central-difference move since the last evaluation, the rate of the
    * bulk viscosity comes from the records' centre strains: v is neither exchanged nor gathered */
-  const PetscBool    from_u = (PetscBool)(q && h > 0 && p->fast_built && p->fast_all);
+  const PetscBool    from_u = (PetscBool)(q && h > 0 && p->fast_built && p->fast_all && !p->nlgeom); /* finite strain: J'/J from v */
   PetscReal          loc[12], g[12];
   TslFailure         fail;
   PetscErrorCode     ierr;
@@ -996,6 +1000,13 @@ static void MergeCollapsed(const TslElemData *d, PetscInt nnode, PetscInt ndof, 
   }
 }
 
+/* Finite strain: an element whose centre C = F^T F is within this of its value at the element's last evaluation keeps
+ * the increments found then. The element's eigenvalue follows its shape (and its stress, in the geometric stiffness):
+ * a change of C by 1e-3 moves lambda by about that much, and the increment by half of it, against the 0.9 safety factor
+ * on it; a rigid rotation leaves C as it was. Without it the spec's NLGEOM explicit slide spent 40 % of its time
+ * evaluating every element's tangent and eigenvalue every TSL_NLGEOM_STABLE_EVERY increments. */
+#define TSL_STABLE_SHAPE_TOL 1e-3
+
 static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
 {
   StableCtx      *c = (StableCtx *)ctx;
@@ -1009,6 +1020,15 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
   PetscFunctionBeginUser;
   if (p->nlgeom) { /* finite strain: the element as it stands now (the current size and shape set its increments) */
     const PetscInt dim = d->in.type->dim;
+    PetscReal     *last = &p->stable_shape[8 * e], Cn[6], dC = 0;
+    if (TslElementCentreStretch(&d->in, Cn)) {
+      for (PetscInt r = 0; r < 6; r++) dC = PetscMax(dC, PetscAbsReal(Cn[r] - last[r]));
+      if (dC <= TSL_STABLE_SHAPE_TOL) { /* its shape as at its last evaluation, turned perhaps: its increments then */
+        c->dt_mech[e] = last[6], c->dt_heat[e] = last[7];
+        PetscFunctionReturn(PETSC_SUCCESS);
+      }
+      for (PetscInt r = 0; r < 6; r++) last[r] = Cn[r];
+    }
     cur = *d;
     for (PetscInt a = 0; a < d->in.type->geom->nnode; a++)
       for (PetscInt c = 0; c < dim; c++) cur.x[3 * a + c] += d->u[a * p->ndof + c];
@@ -1019,6 +1039,7 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
   if (g.entry && g.entry->has_dt) {
     c->dt_mech[e] = g.entry->dt_mech;
     c->dt_heat[e] = g.entry->dt_heat;
+    if (p->nlgeom) p->stable_shape[8 * e + 6] = c->dt_mech[e], p->stable_shape[8 * e + 7] = c->dt_heat[e];
     p->elem_cache->hits[0]++;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -1042,6 +1063,7 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
     if (first[a] == a) idx[n] = a * p->ndof + th, w[n++] = Cm[a];
   LargestEigenvalue(n, idx, c->K, d->nd, w, &lam);
   c->dt_heat[e] = lam > 0 ? 2.0 / (lam * raise) : PETSC_MAX_REAL;
+  if (p->nlgeom) p->stable_shape[8 * e + 6] = c->dt_mech[e], p->stable_shape[8 * e + 7] = c->dt_heat[e];
   if (g.entry) {
     g.entry->dt_mech = c->dt_mech[e], g.entry->dt_heat = c->dt_heat[e], g.entry->has_dt = PETSC_TRUE;
     if (!g.entry->has_mass) { /* the same masses as MassElement's */
@@ -1061,6 +1083,10 @@ PetscErrorCode TslProblemStableIncrements(TslProblem p, PetscReal dt_mech[], Pet
 
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &c.R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &c.K));
+  if (p->nlgeom && !p->stable_shape) { /* no shape seen yet: every element evaluated at the first call */
+    PetscCall(PetscMalloc1(8 * p->m->nelem, &p->stable_shape));
+    for (PetscInt k = 0; k < 8 * p->m->nelem; k++) p->stable_shape[k] = PETSC_MAX_REAL;
+  }
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
   PetscCall(TslProblemElementLoop(p, xa, xa, StableElement, &c));
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));

@@ -287,7 +287,7 @@ PetscErrorCode TslProblemSetStep(TslProblem p, PetscInt s)
   PetscInt           nd = p->nn * p->ndof;
 
   PetscFunctionBeginUser;
-  /* finite strain (an explicit step's force records are small-strain: it takes the generic kernels, explicit.c) */
+  /* finite strain (the force records and the generic kernels alike: TslElementInput.nlgeom) */
   p->nlgeom = step->nlgeom;
   /* values reached at the end of the previous step */
   for (PetscInt d = 0; d < nd; d++) Freeze(p, &p->bc[d]), Freeze(p, &p->nload[d]), p->bc[d].file = PETSC_FALSE;

@@ -817,14 +817,15 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   {
     PetscInt  nfast;
     PetscReal mb;
-    /* the records hold the reference geometry's small-strain forces: an NLGEOM step takes the generic kernels */
-    PetscCall(TslProblemExplicitRecords(x.p, d->explicit_records && !x.step->nlgeom, &nfast, &mb));
+    /* the records hold the reference geometry: they give the small-strain forces, or in an NLGEOM step the finite-strain
+     * (total Lagrangian) ones */
+    PetscCall(TslProblemExplicitRecords(x.p, d->explicit_records, &nfast, &mb));
+    if (d->explicit_records)
+      PetscCall(PetscPrintf(d->comm, "  force records%s: %" PetscInt_FMT " of %" PetscInt_FMT " elements (%.1f MB on the largest rank); the others take the generic kernels\n",
+                            x.step->nlgeom ? " (finite strain)" : "", nfast, x.m->nelem_global, (double)mb));
     if (x.step->nlgeom)
-      PetscCall(PetscPrintf(d->comm, "  finite strain (NLGEOM): every element takes the generic kernels, the stable increment follows the deformed elements (every %d increments)\n",
+      PetscCall(PetscPrintf(d->comm, "  finite strain (NLGEOM): the stable increment follows the deformed elements (every %d increments)\n",
                             (int)TSL_NLGEOM_STABLE_EVERY));
-    else if (d->explicit_records)
-      PetscCall(PetscPrintf(d->comm, "  force records: %" PetscInt_FMT " of %" PetscInt_FMT " elements (%.1f MB on the largest rank); the others take the generic kernels\n",
-                            nfast, x.m->nelem_global, (double)mb));
   }
   PetscCall(TslProblemSetTime(x.p, 0, 0, *total_time));
   PetscCall(TslProblemApplyPrescribed(x.p, x.X));
