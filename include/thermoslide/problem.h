@@ -193,6 +193,11 @@ PetscErrorCode TslProblemExplicitRecords(TslProblem prob, PetscBool use, PetscIn
  * the bulk viscosity's rate), for restart points: *ev and its length *n (NULL, 0: no records), and *lane the place
  * in it of each local element's (-1: an element without a record; may be NULL). Not collective. */
 PetscErrorCode TslProblemExplicitCarried(TslProblem prob, PetscReal **ev, PetscInt *n, const PetscInt **lane);
+/* A finite-strain (NLGEOM) explicit step's per-element memory of the stable increments, for restart points: each local
+ * element's centre C = F^T F at its last stable-increment evaluation and the increments found then, TSL_STABLE_SHAPE
+ * reals per element at [TSL_STABLE_SHAPE e] (dynamics.c, StableElement); NULL at small strain. Not collective. */
+#define TSL_STABLE_SHAPE 8
+PetscErrorCode TslProblemStableShapes(TslProblem prob, PetscReal **shape);
 /* The same records for the implicit residuals (internal force, heat flow and the history's energies; the
  * tangent stays the generic kernels'): use builds them if no explicit step has (collective: *nfast, *mbytes
  * as above), false leaves them to explicit steps. */

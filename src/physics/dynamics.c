@@ -460,6 +460,24 @@ PetscErrorCode TslProblemImplicitRecords(TslProblem p, PetscBool use, PetscInt *
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+static PetscErrorCode StableShapesCreate(TslProblem p)
+{
+  PetscFunctionBeginUser;
+  if (p->nlgeom && !p->stable_shape) { /* no shape seen yet: every element evaluated at the first call */
+    PetscCall(PetscMalloc1(TSL_STABLE_SHAPE * p->m->nelem, &p->stable_shape));
+    for (PetscInt k = 0; k < TSL_STABLE_SHAPE * p->m->nelem; k++) p->stable_shape[k] = PETSC_MAX_REAL;
+  }
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslProblemStableShapes(TslProblem p, PetscReal **shape)
+{
+  PetscFunctionBeginUser;
+  PetscCall(StableShapesCreate(p));
+  *shape = p->nlgeom ? p->stable_shape : NULL;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslProblemExplicitCarried(TslProblem p, PetscReal **ev, PetscInt *n, const PetscInt **lane)
 {
   PetscFunctionBeginUser;
@@ -1020,7 +1038,7 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
   PetscFunctionBeginUser;
   if (p->nlgeom) { /* finite strain: the element as it stands now (the current size and shape set its increments) */
     const PetscInt dim = d->in.type->dim;
-    PetscReal     *last = &p->stable_shape[8 * e], Cn[6], dC = 0;
+    PetscReal     *last = &p->stable_shape[TSL_STABLE_SHAPE * e], Cn[6], dC = 0;
     if (TslElementCentreStretch(&d->in, Cn)) {
       for (PetscInt r = 0; r < 6; r++) dC = PetscMax(dC, PetscAbsReal(Cn[r] - last[r]));
       if (dC <= TSL_STABLE_SHAPE_TOL) { /* its shape as at its last evaluation, turned perhaps: its increments then */
@@ -1039,7 +1057,7 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
   if (g.entry && g.entry->has_dt) {
     c->dt_mech[e] = g.entry->dt_mech;
     c->dt_heat[e] = g.entry->dt_heat;
-    if (p->nlgeom) p->stable_shape[8 * e + 6] = c->dt_mech[e], p->stable_shape[8 * e + 7] = c->dt_heat[e];
+    if (p->nlgeom) p->stable_shape[TSL_STABLE_SHAPE * e + 6] = c->dt_mech[e], p->stable_shape[TSL_STABLE_SHAPE * e + 7] = c->dt_heat[e];
     p->elem_cache->hits[0]++;
     PetscFunctionReturn(PETSC_SUCCESS);
   }
@@ -1063,7 +1081,7 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
     if (first[a] == a) idx[n] = a * p->ndof + th, w[n++] = Cm[a];
   LargestEigenvalue(n, idx, c->K, d->nd, w, &lam);
   c->dt_heat[e] = lam > 0 ? 2.0 / (lam * raise) : PETSC_MAX_REAL;
-  if (p->nlgeom) p->stable_shape[8 * e + 6] = c->dt_mech[e], p->stable_shape[8 * e + 7] = c->dt_heat[e];
+  if (p->nlgeom) p->stable_shape[TSL_STABLE_SHAPE * e + 6] = c->dt_mech[e], p->stable_shape[TSL_STABLE_SHAPE * e + 7] = c->dt_heat[e];
   if (g.entry) {
     g.entry->dt_mech = c->dt_mech[e], g.entry->dt_heat = c->dt_heat[e], g.entry->has_dt = PETSC_TRUE;
     if (!g.entry->has_mass) { /* the same masses as MassElement's */
@@ -1083,10 +1101,7 @@ PetscErrorCode TslProblemStableIncrements(TslProblem p, PetscReal dt_mech[], Pet
 
   PetscFunctionBeginUser;
   PetscCall(PetscMalloc2(TSL_MAX_ELEM_DOF, &c.R, TSL_MAX_ELEM_DOF * TSL_MAX_ELEM_DOF, &c.K));
-  if (p->nlgeom && !p->stable_shape) { /* no shape seen yet: every element evaluated at the first call */
-    PetscCall(PetscMalloc1(8 * p->m->nelem, &p->stable_shape));
-    for (PetscInt k = 0; k < 8 * p->m->nelem; k++) p->stable_shape[k] = PETSC_MAX_REAL;
-  }
+  PetscCall(StableShapesCreate(p));
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
   PetscCall(TslProblemElementLoop(p, xa, xa, StableElement, &c));
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));

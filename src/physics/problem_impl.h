@@ -191,7 +191,7 @@ struct _p_TslProblem {
   /* the explicit procedure's per-element stable increments and lumped masses, once per distinct element
    * (dynamics.c, "Each distinct element once"; NULL until an explicit step asks) */
   struct TslElemCache *elem_cache;
-  /* finite-strain explicit steps: [8 nelem] each element's centre C = F^T F (Voigt) at its last stable-increment
+  /* finite-strain explicit steps: [TSL_STABLE_SHAPE nelem] each element's centre C = F^T F (Voigt) at its last stable-increment
    * evaluation, then its dt_mech and dt_heat there (dynamics.c, StableElement); NULL until first asked */
   PetscReal *stable_shape;
   PetscBool            fast_implicit;                       /* implicit residuals take the records too (TslProblemImplicitRecords) */

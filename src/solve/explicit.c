@@ -90,22 +90,24 @@ static void CarryReals(PetscReal **at, PetscReal *var, PetscInt n, PetscBool out
  * are the loop's. */
 static PetscErrorCode Carry(Explicit *x, TslRestartExtra *e, PetscReal *h_prev, PetscReal *t_hist, PetscBool out)
 {
-  PetscReal *ev, *at, sc[XR_N];
-  PetscInt   nev, ne = x->m->nelem;
+  PetscReal *ev, *at, sc[XR_N], *shape;
+  PetscInt   nev, ne = x->m->nelem, nsh;
   const PetscInt *lane;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemExplicitCarried(x->p, &ev, &nev, &lane));
+  PetscCall(TslProblemStableShapes(x->p, &shape)); /* finite strain: the stable increments' memory of the shapes */
+  nsh = shape ? TSL_STABLE_SHAPE : 0;
   if (!e->real) {
     e->nvec   = 0;
     e->vec[e->nvec++] = x->V, e->vec[e->nvec++] = x->M, e->vec[e->nvec++] = x->Fi, e->vec[e->nvec++] = x->Fe;
     if (x->Fc) e->vec[e->nvec++] = x->Fc;
-    e->nreal = XR_N + 2 * NRATES + 5 * ne + (x->qv ? ne : 0) + nev;
+    e->nreal = XR_N + 2 * NRATES + (5 + nsh) * ne + (x->qv ? ne : 0) + nev;
     PetscCall(PetscMalloc1(e->nreal, &e->real));
     /* the loop's scalars and the heat rates are the same on every rank (summed), nrepair aside (a count of rank 0's
      * for the log) */
     e->nglobal     = XR_N + 2 * NRATES;
-    e->nearr       = 5 + (x->qv ? 1 : 0);
+    e->nearr       = 5 + (x->qv ? 1 : 0) + nsh;
     e->carried_off = e->nglobal + e->nearr * ne;
     e->lane        = nev ? lane : NULL;
   }
@@ -125,6 +127,11 @@ static PetscErrorCode Carry(Explicit *x, TslRestartExtra *e, PetscReal *h_prev, 
   CarryReals(&at, x->eta, ne, out);
   CarryReals(&at, x->eta2, ne, out);
   if (x->qv) CarryReals(&at, x->qv, ne, out);
+  for (PetscInt k = 0; k < nsh; k++, at += ne) /* one array per part, as the others (the elements' arrays of xelem) */
+    for (PetscInt el = 0; el < ne; el++) {
+      if (out) at[el] = shape[nsh * el + k];
+      else shape[nsh * el + k] = at[el];
+    }
   if (nev) CarryReals(&at, ev, nev, out);
   if (!out) {
     *h_prev = sc[XR_H_PREV], *t_hist = sc[XR_T_HIST], x->dt = sc[XR_DT], x->dt_stable = sc[XR_DT_STABLE];
