@@ -301,7 +301,7 @@ static inline __attribute__((always_inline)) int Force(const PetscInt dim, const
     const PetscReal *C  = rec + L.C * W;
     const V          Vc = Ld(C + L.dV * W), cd = Ld(rec + 4 * W);
     const PetscReal *Nc   = nq > 1 ? shape->Nc : shape->N[0];
-    V                rate = {0}, tr = {0}, p, neg, gd[3][TSL_FAST_MAX_NODES];
+    V                rate = {0}, tr = {0}, p, neg, gd[3][TSL_FAST_MAX_NODES], Jv = (V){0} + 1;
     if (nq > 1)
       Gradients(dim, n, C, shape->dNc, gd);
     else
@@ -342,49 +342,33 @@ static inline __attribute__((always_inline)) int Force(const PetscInt dim, const
         if (axi) h[0] += cof[2][2] * Nc[a] * Ld(C + L.ri * W);
         for (PetscInt d = 0; d < dim; d++) gd[d][a] = h[d];
       }
-      if (v)
-        for (PetscInt a = 0; a < n; a++)
-          for (PetscInt d = 0; d < dim; d++) rate += gd[d][a] * Ld(v + (nd * a + d) * W);
-      rate /= J;
-      neg = (V)((VI)rate & (rate < 0));
-      p   = Ld(eta) * cd * rate - Ld(eta2) * cd * neg * neg;
-      if (Rv == R)
-        for (PetscInt a = 0; a < n; a++)
-          for (PetscInt d = 0; d < dim; d++) F[d][a] += p * gd[d][a] * Vc;
-      else
-        for (PetscInt a = 0; a < n; a++) {
-          for (PetscInt d = 0; d < dim; d++) St(Rv + (nd * a + d) * W, p * gd[d][a] * Vc);
-          St(Rv + (nd * a + dim) * W, (V){0});
-        }
-      St(power, p * rate * J * Vc);
-      if (qr) St(qr, p * J * Vc), St(qr + W, rate);
-    } else {
-      if (axi) {
-        const V ri = Ld(C + L.ri * W);
-        for (PetscInt a = 0; a < n; a++) gd[0][a] += Nc[a] * ri;
-      }
-      if (v)
-        for (PetscInt a = 0; a < n; a++)
-          for (PetscInt d = 0; d < dim; d++) rate += gd[d][a] * Ld(v + (nd * a + d) * W);
-      if (ev) { /* the volumetric strain at the centre, kept for the next evaluation's rate */
-        for (PetscInt a = 0; a < n; a++)
-          for (PetscInt d = 0; d < dim; d++) tr += gd[d][a] * U[d][a];
-        if (!v) rate = (tr - Ld(ev)) * hinv;
-        St(ev, tr);
-      }
-      neg = (V)((VI)rate & (rate < 0)); /* the quadratic term, in compression only */
-      p   = Ld(eta) * cd * rate - Ld(eta2) * cd * neg * neg;
-      if (Rv == R)
-        for (PetscInt a = 0; a < n; a++)
-          for (PetscInt d = 0; d < dim; d++) F[d][a] += p * gd[d][a] * Vc;
-      else
-        for (PetscInt a = 0; a < n; a++) {
-          for (PetscInt d = 0; d < dim; d++) St(Rv + (nd * a + d) * W, p * gd[d][a] * Vc);
-          St(Rv + (nd * a + dim) * W, (V){0});
-        }
-      St(power, p * rate * Vc);
-      if (qr) St(qr, p * Vc), St(qr + W, rate);
+      Jv = J;
+    } else if (axi) {
+      const V ri = Ld(C + L.ri * W);
+      for (PetscInt a = 0; a < n; a++) gd[0][a] += Nc[a] * ri;
     }
+    if (v)
+      for (PetscInt a = 0; a < n; a++)
+        for (PetscInt d = 0; d < dim; d++) rate += gd[d][a] * Ld(v + (nd * a + d) * W);
+    rate /= Jv;
+    if (ev && !nl) { /* the volumetric strain at the centre, kept for the next evaluation's rate */
+      for (PetscInt a = 0; a < n; a++)
+        for (PetscInt d = 0; d < dim; d++) tr += gd[d][a] * U[d][a];
+      if (!v) rate = (tr - Ld(ev)) * hinv;
+      St(ev, tr);
+    }
+    neg = (V)((VI)rate & (rate < 0)); /* the quadratic term, in compression only */
+    p   = Ld(eta) * cd * rate - Ld(eta2) * cd * neg * neg;
+    if (Rv == R)
+      for (PetscInt a = 0; a < n; a++)
+        for (PetscInt d = 0; d < dim; d++) F[d][a] += p * gd[d][a] * Vc;
+    else
+      for (PetscInt a = 0; a < n; a++) {
+        for (PetscInt d = 0; d < dim; d++) St(Rv + (nd * a + d) * W, p * gd[d][a] * Vc);
+        St(Rv + (nd * a + dim) * W, (V){0});
+      }
+    St(power, p * rate * Jv * Vc); /* finite strain: the rate of the current volume J V */
+    if (qr) St(qr, p * Jv * Vc), St(qr + W, rate);
   }
   for (PetscInt a = 0; a < n; a++) {
     for (PetscInt d = 0; d < dim; d++) St(R + (nd * a + d) * W, F[d][a]);
