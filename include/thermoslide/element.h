@@ -235,6 +235,10 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
 /* The right Cauchy-Green tensor C = F^T F at the element's centre (Voigt order 11 22 33 12 13 23, from in->u on the
  * reference in->x): the element's shape now, blind to rigid rotations. PETSC_FALSE for an inverted element. */
 PetscBool TslElementCentreStretch(const TslElementInput *in, PetscReal C[6]);
+/* The angle the element has turned by at its centre, theta = atan2(|axial(F - F^T)| / 2, (tr F - 1) / 2) with F = I + grad u
+ * (exact for a rigid turn, and for a turn with a uniform stretch in the plane of a planar element; 0 for a heat-transfer
+ * type). PETSC_FALSE for an inverted element. */
+PetscBool TslElementCentreRotation(const TslElementInput *in, PetscReal *theta);
 
 /* Explicit force records (fast.c). In a small-strain analysis with temperature-independent properties the
  * geometry of an element never changes and its conduction is linear, so the explicit force loop need not

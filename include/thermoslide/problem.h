@@ -119,6 +119,9 @@ PetscErrorCode TslProblemHeatBalance(TslProblem prob, TslHeatBalance *hb);
 /* Strain energy of the elements and the energy of the reduced-integration types' hourglass control
  * (collective; the element outputs ELSE and ELASE summed). */
 PetscErrorCode TslProblemEnergies(TslProblem prob, PetscReal *strain, PetscReal *hourglass);
+/* The largest element rotation of the current state (TslElementCentreRotation) over all ranks, and an element (its id)
+ * that has it (collective). */
+PetscErrorCode TslProblemLargestRotation(TslProblem prob, PetscReal *omega, PetscInt *elem_id);
 
 /* Output fields, one table row each (fields.c): nodal U, NT, RF, RFL, CPRESS, CSLIP, CSTATUS, HFLA and
  * element S, E, HFL, ELSE (strain energy), ELASE (hourglass-control energy). TslFieldFind returns -1 for

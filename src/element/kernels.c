@@ -2081,16 +2081,26 @@ PetscErrorCode TslElementBulkViscosity(const TslElementInput *in, const PetscRea
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
-PetscBool TslElementCentreStretch(const TslElementInput *in, PetscReal C[6])
+/* The displacement gradient H at the element's centre (TslElementDeformation: the kinematics' own, hoop and twist
+ * included); PETSC_FALSE for an inverted element. */
+static PetscBool CentreGradient(const TslElementInput *in, PetscReal H[3][3])
 {
   const TslElementType *t = in->type;
-  PetscReal             xi[3], H[3][3], F[3][3];
+  PetscReal             xi[3];
   TslElementPoint       pt;
   TslGradientColumn     col[TSL_MAX_ELEM_NODES * 3];
 
   TslElementCentre(t->geom, xi);
   if (!TslElementPointEvaluate(t, in->sec, in->x, xi, t->geom->ref_volume, &pt)) return PETSC_FALSE;
   TslElementDeformation(t, in->sec, in->x, &pt, in->u, H, col);
+  return PETSC_TRUE;
+}
+
+PetscBool TslElementCentreStretch(const TslElementInput *in, PetscReal C[6])
+{
+  PetscReal H[3][3], F[3][3];
+
+  if (!CentreGradient(in, H)) return PETSC_FALSE;
   for (PetscInt i = 0; i < 3; i++)
     for (PetscInt j = 0; j < 3; j++) F[i][j] = (i == j) + H[i][j];
   for (PetscInt r = 0; r < 6; r++) {
@@ -2099,4 +2109,18 @@ PetscBool TslElementCentreStretch(const TslElementInput *in, PetscReal C[6])
     for (PetscInt i = 0; i < 3; i++) C[r] += F[i][K] * F[i][L];
   }
   return Det3(F) > 0 ? PETSC_TRUE : PETSC_FALSE;
+}
+
+PetscBool TslElementCentreRotation(const TslElementInput *in, PetscReal *theta)
+{
+  PetscReal H[3][3], s = 0;
+
+  *theta = 0;
+  if (in->type->ndof < 2) return PETSC_TRUE; /* a heat-transfer type: nothing turns */
+  if (!CentreGradient(in, H)) return PETSC_FALSE;
+  /* F = I + H: |axial(F - F^T)| / 2 = sin theta and (tr F - 1) / 2 = cos theta for a rotation by theta */
+  for (PetscInt i = 0; i < 3; i++)
+    for (PetscInt j = i + 1; j < 3; j++) s += 0.25 * (H[i][j] - H[j][i]) * (H[i][j] - H[j][i]);
+  *theta = PetscAtan2Real(PetscSqrtReal(s), 1 + 0.5 * (H[0][0] + H[1][1] + H[2][2]));
+  return PETSC_TRUE;
 }

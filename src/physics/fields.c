@@ -198,3 +198,26 @@ PetscErrorCode TslProblemEnergies(TslProblem p, PetscReal *strain, PetscReal *ho
   *hourglass = g[1];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
+
+PetscErrorCode TslProblemLargestRotation(TslProblem p, PetscReal *omega, PetscInt *elem_id)
+{
+  Vec                xl;
+  const PetscScalar *xa;
+  PetscReal          w = 0;
+  PetscInt           id = -1;
+  TslElemData        d;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
+  for (PetscInt e = 0; e < p->m->nelem; e++) {
+    PetscReal we;
+    TslProblemGather(p, e, xa, xa, &d);
+    if (TslElementCentreRotation(&d.in, &we) && we > w) w = we, id = p->m->elem_id[e];
+  }
+  PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscCall(MPIU_Allreduce(&w, omega, 1, MPIU_REAL, MPIU_MAX, p->comm));
+  if (w != *omega) id = -1;
+  PetscCall(MPIU_Allreduce(MPI_IN_PLACE, &id, 1, MPIU_INT, MPI_MAX, p->comm));
+  *elem_id = id;
+  PetscFunctionReturn(PETSC_SUCCESS);
+}

@@ -120,6 +120,37 @@ PetscBool TslFrameTimesReached(TslFrameTimes *ft, PetscReal t)
   return PETSC_TRUE;
 }
 
+/* Small-strain kinematics (no NLGEOM) take a rigid turn by theta for a strain of about theta^2 / 2 (and stresses of E
+ * theta^2 / 2): above this rotation an element's results are wrong by more than a metal's yield strain, and the step
+ * says so once, at the frame that first shows it (the deck's step may be meant for finite strain: Abaqus/Explicit's
+ * default is NLGEOM, and a deck from it without the parameter turns its parts here with small-strain kinematics). */
+#define TSL_SMALL_STRAIN_ROTATION 0.05
+
+static PetscErrorCode SmallStrainRotation(Driver *d, PetscInt step, PetscReal time)
+{
+  const TslModel *m;
+  PetscReal       w;
+  PetscInt        id;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslProblemGetModel(d->prob, &m));
+  if (step < 1 || step > m->nstep || m->steps[step - 1].nlgeom || d->rotation_warned == step ||
+      !TslProblemFieldAvailable(d->prob, TslFieldFind("U"))) /* heat transfer: nothing turns */
+    PetscFunctionReturn(PETSC_SUCCESS);
+  PetscCall(TslProblemLargestRotation(d->prob, &w, &id));
+  if (!(w > TSL_SMALL_STRAIN_ROTATION)) PetscFunctionReturn(PETSC_SUCCESS);
+  d->rotation_warned = step;
+  PetscCall(PetscPrintf(
+      d->comm,
+      "warning: step %s: element %" PetscInt_FMT " has turned by %.3g rad at time %g with small-strain kinematics, which take such a "
+      "turn for a strain of %.2g (1 - cos theta) and stresses of that times E; write NLGEOM on the *STEP line for finite strain "
+      "(%s)\n",
+      m->steps[step - 1].name, id, (double)w, (double)time, (double)(1 - PetscCosReal(w)),
+      m->steps[step - 1].explicit_dynamics ? "an explicit step here is small-strain unless NLGEOM is given; Abaqus/Explicit's default is NLGEOM"
+                                           : "CalculiX's default is small strain too"));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 PetscErrorCode TslFramesWrite(Driver *d, PetscInt step, PetscInt inc, PetscReal time)
 {
   PetscFunctionBeginUser;
@@ -142,6 +173,7 @@ PetscErrorCode TslFramesWrite(Driver *d, PetscInt step, PetscInt inc, PetscReal 
   d->in_output  = PETSC_FALSE;
   d->frame_step = step;
   d->frame_inc  = inc;
+  PetscCall(SmallStrainRotation(d, step, time));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -231,4 +263,3 @@ PetscErrorCode TslFramesPrintTables(Driver *d, const TslStep *step)
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }
-

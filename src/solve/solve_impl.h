@@ -80,6 +80,7 @@ typedef struct {
   PetscBool  field_on[MAX_FIELDS]; /* rows of the problem's field table written in frames */
   PetscInt   frequency;
   PetscInt   frame_step, frame_inc; /* last frame written */
+  PetscInt   rotation_warned;       /* the step (1-based) whose large small-strain rotation was reported (frames.c) */
   PetscInt   done_step, done_inc;   /* last converged increment */
   PetscReal  dissipated, absorbed;  /* frictional dissipation and the heat made of it, since the start */
   PetscReal  plastic_dissipated;    /* the plastic work since the start (ALLPD) */
