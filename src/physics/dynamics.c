@@ -1025,6 +1025,12 @@ static void MergeCollapsed(const TslElemData *d, PetscInt nnode, PetscInt ndof, 
  * evaluating every element's tangent and eigenvalue every TSL_NLGEOM_STABLE_EVERY increments. */
 #define TSL_STABLE_SHAPE_TOL 1e-3
 
+/* Finite strain: element e's increments just found, beside the shape they were found for (StableElement). */
+static void KeepIncrements(TslProblem p, PetscInt e, const StableCtx *c)
+{
+  if (p->nlgeom) p->stable_shape[TSL_STABLE_SHAPE * e + 6] = c->dt_mech[e], p->stable_shape[TSL_STABLE_SHAPE * e + 7] = c->dt_heat[e];
+}
+
 static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, void *ctx, PetscBool *stop)
 {
   StableCtx      *c = (StableCtx *)ctx;
@@ -1057,8 +1063,8 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
   if (g.entry && g.entry->has_dt) {
     c->dt_mech[e] = g.entry->dt_mech;
     c->dt_heat[e] = g.entry->dt_heat;
-    if (p->nlgeom) p->stable_shape[TSL_STABLE_SHAPE * e + 6] = c->dt_mech[e], p->stable_shape[TSL_STABLE_SHAPE * e + 7] = c->dt_heat[e];
     p->elem_cache->hits[0]++;
+    KeepIncrements(p, e, c);
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   PetscCall(TslElementInternal(&g.in, c->R, c->K, &inverted));
@@ -1081,7 +1087,7 @@ static PetscErrorCode StableElement(TslProblem p, PetscInt e, TslElemData *d, vo
     if (first[a] == a) idx[n] = a * p->ndof + th, w[n++] = Cm[a];
   LargestEigenvalue(n, idx, c->K, d->nd, w, &lam);
   c->dt_heat[e] = lam > 0 ? 2.0 / (lam * raise) : PETSC_MAX_REAL;
-  if (p->nlgeom) p->stable_shape[TSL_STABLE_SHAPE * e + 6] = c->dt_mech[e], p->stable_shape[TSL_STABLE_SHAPE * e + 7] = c->dt_heat[e];
+  KeepIncrements(p, e, c);
   if (g.entry) {
     g.entry->dt_mech = c->dt_mech[e], g.entry->dt_heat = c->dt_heat[e], g.entry->has_dt = PETSC_TRUE;
     if (!g.entry->has_mass) { /* the same masses as MassElement's */

@@ -120,8 +120,8 @@ PetscBool TslFrameTimesReached(TslFrameTimes *ft, PetscReal t)
   return PETSC_TRUE;
 }
 
-/* Small-strain kinematics (no NLGEOM) take a rigid turn by theta for a strain of about theta^2 / 2 (and stresses of E
- * theta^2 / 2): above this rotation an element's results are wrong by more than a metal's yield strain, and the step
+/* Small-strain kinematics (no NLGEOM) take a rigid turn by theta for a strain of 1 - cos theta, about theta^2 / 2 (and
+ * stresses of E times that): above this rotation an element's results are wrong by more than a metal's yield strain, and the step
  * says so once, at the frame that first shows it (the deck's step may be meant for finite strain: Abaqus/Explicit's
  * default is NLGEOM, and a deck from it without the parameter turns its parts here with small-strain kinematics). */
 #define TSL_SMALL_STRAIN_ROTATION 0.05
