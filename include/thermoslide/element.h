@@ -218,6 +218,10 @@ PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], Pets
  * energy[2] the plastic work of the increment int sigma : d eps_p dV and energy[3] the heat it gives per unit time
  * (eta inelastic_rate energy[2]). */
 PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted, PetscReal energy[4]);
+/* The same without the tangent, a plastic element's heat sources (N_a eta w inelastic_rate dV, energy[3] their sum) apart in
+ * heat[TslElementTypeNodes] instead of in R's heat rows: the explicit procedure deposits them as the energy of the move,
+ * whatever the length of the next increment (docs/explicit.md "Plastic heat"). heat is zeroed; an elastic element's stays 0. */
+PetscErrorCode TslElementInternalPlasticHeat(const TslElementInput *in, PetscReal R[], PetscBool *inverted, PetscReal energy[4], PetscReal heat[]);
 /* Nodes of the element's vectors: the family's nodes and the type's extra nodes. */
 static inline PetscInt TslElementTypeNodes(const TslElementType *t)
 {

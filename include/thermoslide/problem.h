@@ -232,8 +232,10 @@ typedef struct {
  * prescribed dofs included): the elements with a force record then take their volumetric strain rate as the
  * difference of their centre strains over h and V is not read by them; h = 0 (the first evaluation of a step)
  * reads V everywhere. The residual of the implicit code is Fi - Fe + Fc; an explicit increment sets
- * M a = Fe - Fi - Fc. */
-PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], PetscReal q[],
+ * M a = Fe - Fi - Fc. Qp (NULL: they are in Fi's heat rows) gets the plastic elements' heat sources apart, positive,
+ * a rate over h, the move's increment: the explicit procedure deposits h Qp, the heat of the move, over an
+ * increment of any length (TslElementInternalPlasticHeat). */
+PetscErrorCode TslProblemExplicitForces(TslProblem prob, Vec Fi, Vec Fe, Vec Fc, Vec Qp, Vec V, const PetscReal eta[], const PetscReal eta2[], PetscReal q[],
                                         PetscReal h, TslExplicitRates *rates);
 /* The initial velocities of the deck (*INITIAL CONDITIONS, TYPE=VELOCITY) at the owned dofs into V (zeroed
  * first; the temperature slots stay zero), for the first explicit step after TslProblemSetStep: a dof held by

@@ -1175,7 +1175,7 @@ static void PlasticModuli(const MechPoint *mq, PetscReal *mu, PetscReal *Kb, Pet
  * symmetric), K_u_theta = t - K_ua K_aa^-1 s (t, s the B and G moments of dsig N_b), and the heat rows' derivatives
  * through alpha likewise. FALSE: an inverted element, or alpha not converged (a cutback). */
 static PetscBool MechanicsIncompatiblePlastic(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
-                                              PetscReal energy[4])
+                                              PetscReal energy[4], PetscReal heat_out[])
 {
   const TslElementType *t    = in->type;
   const TslGeometry    *g    = t->geom;
@@ -1245,7 +1245,11 @@ static PetscBool MechanicsIncompatiblePlastic(const TslElementInput *in, const T
         for (PetscInt r = 0; r < 6; r++) f += mq->B[r][nu * a + i] * o[q].sig[r];
         R[ndof * a + i] += f * mq->p->dV;
       }
-    for (PetscInt a = 0; a < n; a++) R[ndof * a + th] -= mq->p->N[a] * heat * o[q].w * mq->p->dV;
+    for (PetscInt a = 0; a < n; a++) {
+      const PetscReal qa = mq->p->N[a] * heat * o[q].w * mq->p->dV;
+      if (heat_out) heat_out[a] += qa;
+      else R[ndof * a + th] -= qa;
+    }
     if (in->pstate_new) PlasticStateNew(mat, st, &o[q], theta[q], in->pstate_new + ns * q);
     if (res) {
       for (PetscInt r = 0; r < 6; r++) res->E[r] += eps[q][r] / nq, res->S[r] += o[q].sig[r] / nq, res->PE[r] += (st[r] + o[q].deps[r]) / nq;
@@ -1319,7 +1323,7 @@ static PetscBool MechanicsIncompatiblePlastic(const TslElementInput *in, const T
 }
 
 static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoint full[], PetscReal R[], PetscReal K[], TslElementResult *res,
-                                  PetscReal energy[4])
+                                  PetscReal energy[4], PetscReal heat_out[])
 {
   const TslElementType *t    = in->type;
   const TslGeometry    *g    = t->geom;
@@ -1341,7 +1345,7 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
   for (PetscInt r = 0; r < mat->plastic.nkt; r++)
     for (PetscInt kb = 0; kb < nb; kb++)
       if (mat->plastic.kt_gamma[r][kb] > 0) symmetric = PETSC_FALSE;
-  if (t->form->incompatible) return MechanicsIncompatiblePlastic(in, full, R, K, res, energy);
+  if (t->form->incompatible) return MechanicsIncompatiblePlastic(in, full, R, K, res, energy, heat_out);
   if (energy) energy[0] = energy[2] = energy[3] = 0;
   if (hybrid) PetscCallAbort(PETSC_COMM_SELF, PetscMemzero(&hy, sizeof(hy)));
   for (PetscInt q = 0; q < quad->n; q++) {
@@ -1374,7 +1378,11 @@ static PetscBool MechanicsPlastic(const TslElementInput *in, const TslElementPoi
         for (PetscInt r = 0; r < 6; r++) f += mq.B[r][nu * a + i] * o.sig[r];
         R[ndof * a + i] += f * mq.p->dV;
       }
-    for (PetscInt a = 0; a < n; a++) R[ndof * a + th] -= mq.p->N[a] * heat * o.w * mq.p->dV; /* the plastic heat, a source */
+    for (PetscInt a = 0; a < n; a++) { /* the plastic heat, a source */
+      const PetscReal qa = mq.p->N[a] * heat * o.w * mq.p->dV;
+      if (heat_out) heat_out[a] += qa;
+      else R[ndof * a + th] -= qa;
+    }
     if (in->pstate_new) PlasticStateNew(mat, st, &o, theta, in->pstate_new + ns * q);
     if (res) {
       for (PetscInt r = 0; r < 6; r++) {
@@ -1505,7 +1513,7 @@ static PetscBool Mechanics(const TslElementInput *in, const TslElementPoint full
   PetscReal             Kuu[TSL_MAX_ELEM_NODES * 3 * TSL_MAX_ELEM_NODES * 3]; /* upper triangle, ncol x ncol */
 
   if (nu == 0) return PETSC_TRUE; /* a heat-transfer type: no displacement, no mechanical term */
-  if (in->pstate) return MechanicsPlastic(in, full, R, K, res, NULL);
+  if (in->pstate) return MechanicsPlastic(in, full, R, K, res, NULL, NULL);
   if (t->form->incompatible) return MechanicsIncompatible(in, full, R, K, res, energy);
   if (K && !se && !hybrid && !finite && LeanStrain(in)) return MechanicsSolid3DTangent(in, full, R, K);
   if (finite && !se && !res && !hybrid && LeanStrain(in)) return MechanicsSolid3DFinite(in, full, R, K);
@@ -1637,6 +1645,8 @@ PetscBool TslElementValid(const TslElementInput *in)
   return PETSC_TRUE;
 }
 
+static PetscErrorCode InternalEnergy(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted, PetscReal energy[4], PetscReal heat_out[]);
+
 PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted)
 {
   PetscFunctionBeginUser;
@@ -1645,6 +1655,22 @@ PetscErrorCode TslElementInternal(const TslElementInput *in, PetscReal R[], Pets
 }
 
 PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted, PetscReal energy[4])
+{
+  PetscFunctionBeginUser;
+  PetscCall(InternalEnergy(in, R, K, inverted, energy, NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+PetscErrorCode TslElementInternalPlasticHeat(const TslElementInput *in, PetscReal R[], PetscBool *inverted, PetscReal energy[4], PetscReal heat[])
+{
+  PetscFunctionBeginUser;
+  PetscCall(PetscArrayzero(heat, TslElementTypeNodes(in->type)));
+  PetscCall(InternalEnergy(in, R, NULL, inverted, energy, in->pstate ? heat : NULL));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* TslElementInternalEnergy; heat_out not NULL: a plastic element's heat sources there (MechanicsPlastic), not in R */
+static PetscErrorCode InternalEnergy(const TslElementInput *in, PetscReal R[], PetscReal K[], PetscBool *inverted, PetscReal energy[4], PetscReal heat_out[])
 {
   const PetscInt  nd = TslElementTypeNodes(in->type) * in->type->ndof;
   Hybrid          hy;
@@ -1661,7 +1687,7 @@ PetscErrorCode TslElementInternalEnergy(const TslElementInput *in, PetscReal R[]
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   Conduction(in, full, R, K);
-  if (!(in->pstate ? MechanicsPlastic(in, full, R, K, NULL, energy) : Mechanics(in, full, R, K, &hy, NULL, energy))) {
+  if (!(in->pstate ? MechanicsPlastic(in, full, R, K, NULL, energy, heat_out) : Mechanics(in, full, R, K, &hy, NULL, energy))) {
     *inverted = PETSC_TRUE;
     PetscFunctionReturn(PETSC_SUCCESS);
   }

@@ -16,6 +16,7 @@ PetscErrorCode TslProblemSetMatrixFree(TslProblem p, PetscBool matrix_free)
 
 typedef struct {
   PetscScalar       *fi, *fe;
+  PetscScalar       *qp;          /* local form of the plastic heat sources (NULL: in fi) */
   const PetscScalar *v;           /* local form of the half-step velocity (NULL: no bulk viscosity from v, no damping) */
   const PetscReal   *eta, *eta2;  /* [nelem] b1 L_e / c_d and (b2 L_e / c_d)^2 (with q) */
   PetscReal         *q;           /* [nelem] q = p V of each element's viscosity: the last pass's in, this pass's out (NULL: no bulk viscosity) */
@@ -87,8 +88,12 @@ static PetscErrorCode ForceElement(PetscInt e, TslElemData *d, ForceCtx *c, Pets
 
   PetscFunctionBeginUser;
   if (d->in.pstate) { /* a plastic element: its work and heat over the move, and the state it reaches (pstate_new) */
-    PetscReal en[4];
-    PetscCall(TslElementInternalEnergy(&d->in, R, NULL, &inverted, en));
+    PetscReal en[4], qh[TSL_MAX_ELEM_NODES];
+    if (c->qp) {
+      const PetscInt ndof = d->nd / d->n, th = ndof - 1;
+      PetscCall(TslElementInternalPlasticHeat(&d->in, R, &inverted, en, qh)); /* its heat apart: c->qp */
+      for (PetscInt a = 0; a < d->n && !inverted; a++) c->qp[d->ld[a * ndof + th]] += qh[a];
+    } else PetscCall(TslElementInternalEnergy(&d->in, R, NULL, &inverted, en));
     c->heat->plastic_work += en[2], c->heat->plastic_heat += en[3];
   } else
     PetscCall(TslElementInternal(&d->in, R, NULL, &inverted));
@@ -586,14 +591,14 @@ static PetscErrorCode InjectedInternal(void)
   SETERRQ(PETSC_COMM_SELF, PETSC_ERR_PLIB, "injected internal failure (-tsl_debug_fail_kind)");
 }
 
-PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec V, const PetscReal eta[], const PetscReal eta2[], PetscReal q[],
+PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Vec Qp, Vec V, const PetscReal eta[], const PetscReal eta2[], PetscReal q[],
                                         PetscReal h, TslExplicitRates *rates)
 {
-  Vec                xl, il, el, cl = NULL, vl = NULL;
+  Vec                xl, il, el, cl = NULL, vl = NULL, ql = NULL;
   const PetscScalar *xa;
   PetscScalar       *fc;
   AsmHeat            heat;
-  ForceCtx           c = {NULL, NULL, NULL, eta, eta2, q, 0, 0, PETSC_FALSE, 0, &heat, -1};
+  ForceCtx           c = {NULL, NULL, NULL, NULL, eta, eta2, q, 0, 0, PETSC_FALSE, 0, &heat, -1};
   /* with records on every element and a central-difference move since the last evaluation, the rate of the
    * bulk viscosity comes from the records' centre strains: v is neither exchanged nor gathered */
   const PetscBool    from_u = (PetscBool)(q && h > 0 && p->fast_built && p->fast_all && !p->nlgeom); /* finite strain: J'/J from v */
@@ -619,6 +624,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
   PetscCall(BeginLocal(Fi, &il, &c.fi));
   PetscCall(BeginLocal(Fe, &el, &c.fe));
   PetscCall(BeginLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
+  PetscCall(BeginLocal(Qp, &ql, &c.qp));
   /* the plastic state: each evaluation returns from the committed one and commits what it reaches (an explicit
    * state is evaluated once; a second evaluation of the same state flows no further), its heat a rate over the
    * move's increment h, deposited over the next one as the friction heat is (0 for a step's first evaluation) */
@@ -644,6 +650,7 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
     else
       c.fe[dof] += v;
   }
+  PetscCall(EndLocal(Qp, &ql, &c.qp));
   PetscCall(EndLocal(p->ncsurf ? Fc : NULL, &cl, &fc));
   PetscCall(EndLocal(Fe, &el, &c.fe));
   PetscCall(EndLocal(Fi, &il, &c.fi));

@@ -35,6 +35,7 @@ typedef struct {
   Vec             V, M, Mask;      /* half-step velocity, lumped mass / capacity, prescribed dofs */
   PetscInt         npresc, *presc;  /* the owned dofs the mask holds (prescribed or pinned), in increasing order */
   Vec             Fi, Fe, Fc;      /* force vectors of the current state (Fi with the bulk viscosity's forces; Fc NULL without contact) */
+  Vec             Qp;              /* *PLASTIC: the plastic heat sources, a rate over dt_forces, deposited as dt_forces Qp (NULL: no plastic material) */
   PetscReal      *qv, vd_h;        /* bulk viscosity: q = p V per element (NULL: none); h_avg of the last increment, whose
                                       viscous work's second half the next force evaluation books */
   /* *DAMPING (docs/explicit.md "Damping"): per element alpha and beta of its material; AM the lumped alpha m per dof
@@ -102,6 +103,7 @@ static PetscErrorCode Carry(Explicit *x, TslRestartExtra *e, PetscReal *h_prev, 
     e->nvec   = 0;
     e->vec[e->nvec++] = x->V, e->vec[e->nvec++] = x->M, e->vec[e->nvec++] = x->Fi, e->vec[e->nvec++] = x->Fe;
     if (x->Fc) e->vec[e->nvec++] = x->Fc;
+    if (x->Qp) e->vec[e->nvec++] = x->Qp;
     e->nreal = XR_N + 2 * NRATES + (5 + nsh) * ne + (x->qv ? ne : 0) + nev;
     PetscCall(PetscMalloc1(e->nreal, &e->real));
     /* the loop's scalars and the heat rates are the same on every rank (summed), nrepair aside (a count of rank 0's
@@ -423,10 +425,11 @@ static PetscErrorCode Forces(Explicit *x, PetscReal dt, PetscInt inc)
    * same element pass, its forces in Fi. The viscous work over the last increment, q (eps_n + eps_{n+1}) / 2
    * h_avg per element, is booked in two halves: q_n eps_n by Advance, q_n eps_{n+1} here, at the next
    * evaluation (ALLVD; ALLIE is the internal forces' work less it) */
-  PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->V, x->eta, x->eta2, x->qv, dt, &x->rates));
+  PetscCall(TslProblemExplicitForces(x->p, x->Fi, x->Fe, x->Fc, x->Qp, x->V, x->eta, x->eta2, x->qv, dt, &x->rates));
   x->d->plastic_dissipated += x->rates.plastic_work; /* ALLPD: the move's plastic work, committed by this evaluation */
   PetscCall(TslProblemTieMove(x->p, x->Fi)); /* a tie's secondary forces and heat to its main nodes */
   PetscCall(TslProblemTieMove(x->p, x->Fe));
+  if (x->Qp) PetscCall(TslProblemTieMove(x->p, x->Qp));
   if (x->qv || x->damped) {
     Energies       *en = (Energies *)x->d->energy;
     const PetscReal w  = 0.5 * x->vd_h * x->rates.viscous_prev;
@@ -511,9 +514,11 @@ static PetscErrorCode KinematicCorrector(Explicit *x, PetscReal h, PetscReal h_a
 static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal h_prev, PetscReal t_new, PetscReal total_new)
 {
   PetscScalar       *u, *v;
-  const PetscScalar *uo, *xr, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL, *am = NULL;
+  const PetscScalar *uo, *xr, *m, *mask, *fi, *fe, *fc = NULL, *fk = NULL, *am = NULL, *qp = NULL;
   const PetscInt     n = x->nown * x->ndof, th = x->ndof - 1;
   const PetscReal    h_avg = h_prev > 0 ? 0.5 * (h + h_prev) : 0.5 * h; /* from rest at the start: v_{1/2} = dt/2 a_0 */
+  /* the plastic heat is the move's (a rate over dt_forces): deposited whole over this increment, whatever its length */
+  const PetscReal    qh = x->dt_forces / h;
   /* the loops' sums in locals whose address is never taken: in loc[] the compiler must keep them in memory, as
    * the stores to u and v might alias them (a store and a reload per dof on each sum's chain) */
   PetscReal w_int = 0, w_ext = 0, w_con = 0, w_damp = 0, q_pres = 0, q_stored = 0;
@@ -531,6 +536,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   if (x->Fc) PetscCall(VecGetArrayRead(x->Fc, &fc));
   if (x->Fk) PetscCall(VecGetArrayRead(x->Fk, &fk));
   if (x->AM) PetscCall(VecGetArrayRead(x->AM, &am));
+  if (x->Qp) PetscCall(VecGetArrayRead(x->Qp, &qp));
   /* free dofs, node by node (no slot arithmetic per dof): the update and the forces' work; a temperature's
    * stored heat per unit time, m (theta_{n+1} - theta_n) / h, here too (the prescribed values set below do not
    * touch a free dof) */
@@ -551,7 +557,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     }
     if (mask[it] == 0) {
       const PetscReal to = u[it];
-      u[it] += h * (fe[it] - fi[it] - ((fc ? fc[it] : 0) + (fk ? fk[it] : 0))) / m[it];
+      u[it] += h * (fe[it] - fi[it] - ((fc ? fc[it] : 0) + (fk ? fk[it] : 0)) + (qp ? qh * qp[it] : 0)) / m[it];
       q_stored += m[it] * (u[it] - to) / h;
     }
   }
@@ -568,7 +574,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
     if (i % x->ndof == th) {
       const PetscReal rate = m[i] * (xr[i] - uo[i]) / h; /* heat stored at the node per unit time */
       q_stored += rate;
-      q_pres += rate - f; /* heat the prescribed temperature brings in */
+      q_pres += rate - f - (qp ? qh * qp[i] : 0); /* heat the prescribed temperature brings in */
       continue;
     }
     v[i] = (xr[i] - uo[i]) / h;
@@ -584,6 +590,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
   if (x->Fc) PetscCall(VecRestoreArrayRead(x->Fc, &fc));
   if (x->Fk) PetscCall(VecRestoreArrayRead(x->Fk, &fk));
   if (x->AM) PetscCall(VecRestoreArrayRead(x->AM, &am));
+  if (x->Qp) PetscCall(VecRestoreArrayRead(x->Qp, &qp));
   PetscCall(VecRestoreArrayRead(x->Fe, &fe));
   PetscCall(VecRestoreArrayRead(x->Fi, &fi));
   PetscCall(VecRestoreArrayRead(x->Mask, &mask));
@@ -625,7 +632,7 @@ static PetscErrorCode Advance(Explicit *x, Energies *en, PetscReal h, PetscReal 
    * against the heat stored over it; round-off. The history row is written after the next force evaluation,
    * whose rates (state n+1) its heat columns show: their balance with this stored heat would be off by the
    * rates' change over one increment (up to 0.6 of a heat input of 200 where the flux is ramped down) */
-  x->balance = x->rates.heat_in + g[5] + x->rates.friction_heat + x->krates.friction_heat + x->rates.plastic_heat - x->rates.film_out -
+  x->balance = x->rates.heat_in + g[5] + x->rates.friction_heat + x->krates.friction_heat + x->rates.plastic_heat * qh - x->rates.film_out -
                x->rates.radiation_out - g[6];
   PetscFunctionReturn(PETSC_SUCCESS);
 }
@@ -718,6 +725,7 @@ static PetscErrorCode Destroy(Explicit *x)
   PetscCall(VecDestroy(&x->Fi));
   PetscCall(VecDestroy(&x->Fe));
   PetscCall(VecDestroy(&x->Fc));
+  PetscCall(VecDestroy(&x->Qp));
   PetscCall(PetscFree(x->qv));
   PetscCall(PetscFree2(x->alpha, x->beta));
   PetscCall(VecDestroy(&x->AM));
@@ -783,6 +791,8 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
   PetscCall(VecDuplicate(x.X, &x.Mask));
   PetscCall(VecDuplicate(x.X, &x.Fi));
   PetscCall(VecDuplicate(x.X, &x.Fe));
+  for (PetscInt k = 0; k < x.m->nmaterial; k++) /* the same on every rank: the model's materials */
+    if (TslMaterialIsPlastic(&x.m->materials[k]) && !x.Qp) PetscCall(VecDuplicate(x.X, &x.Qp));
   if (x.m->npair) {
     PetscBool kinematic;
     PetscCall(VecDuplicate(x.X, &x.Fc));
