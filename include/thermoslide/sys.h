@@ -30,9 +30,9 @@ PetscErrorCode TslCaptureEnd(void);
 PetscErrorCode TslAgree(MPI_Comm comm, PetscErrorCode local, TslFailure *kind, char msg[]);
 
 /* Test aid: a failure injected on one rank, to prove that no failure on one rank hangs the others.
- * Options: -tsl_debug_fail_kind converge|internal|output -tsl_debug_fail_rank R -tsl_debug_fail_step S
+ * Options: -tsl_debug_fail_kind converge|internal|output|element -tsl_debug_fail_rank R -tsl_debug_fail_step S
  * [-tsl_debug_fail_count N]. Each object that injects keeps its own copy (no global state). */
-typedef enum { TSL_INJECT_NONE, TSL_INJECT_CONVERGE, TSL_INJECT_INTERNAL, TSL_INJECT_OUTPUT } TslInjectKind;
+typedef enum { TSL_INJECT_NONE, TSL_INJECT_CONVERGE, TSL_INJECT_INTERNAL, TSL_INJECT_OUTPUT, TSL_INJECT_ELEMENT } TslInjectKind;
 typedef struct {
   PetscBool     mine; /* this rank injects */
   TslInjectKind kind;

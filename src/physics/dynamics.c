@@ -840,6 +840,11 @@ static PetscInt StableKey(TslProblem p, PetscInt e, const TslElemData *d, PetscI
   in->x          = x;
   in->u          = u;
   in->theta_init = ti;
+  /* elastic: a plastic element's increments and masses are its elastic ones (unloading is elastic, the elastic wave the
+   * fastest); with its committed plastic strain against u = 0 the tangent was an elastoplastic one (a reverse flow),
+   * and the increments up to 10 times too long once it had yielded (a blow-up of explicit_cps4t under NLGEOM) */
+  in->pstate     = NULL;
+  in->pstate_new = NULL;
   return n;
 }
 

@@ -78,6 +78,29 @@ static PetscErrorCode ElementResult(TslProblem p, PetscInt e, TslElemData *d, vo
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* testing aid (-tsl_debug_fail_kind element): an element pass that fails on one rank, inside the pass's capture */
+static PetscErrorCode InjectedElement(TslProblem p)
+{
+  PetscFunctionBeginUser;
+  PetscCheck(!TslInjectNow(&p->inject, TSL_INJECT_ELEMENT, p->step + 1), PETSC_COMM_SELF, PETSC_ERR_ARG_WRONG,
+             "injected element output failure (-tsl_debug_fail_kind)");
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* The outcome of a rank's element pass (its error code, captured: TslCaptureBegin) agreed on all ranks (collective): an
+ * element whose output fails on one rank (a plastic return that does not converge) stops every rank with its message,
+ * where the others would wait in the next collective call. */
+static PetscErrorCode AgreeElementPass(TslProblem p, PetscErrorCode ierr, const char *what)
+{
+  TslFailure fail;
+  char       msg[TSL_FAIL_MSG_LEN];
+
+  PetscFunctionBeginUser;
+  PetscCall(TslAgree(p->comm, ierr, &fail, msg));
+  PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "%s: %s", what, msg);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 /* S and E (Voigt 11 22 33 12 13 23), HFL (3): integration-point averages; ELSE, ELASE: the element's
  * strain energy and the energy of its hourglass control. */
 static PetscErrorCode ElementValues(TslProblem p, PetscInt which, PetscInt ncomp, PetscReal vals[])
@@ -85,11 +108,16 @@ static PetscErrorCode ElementValues(TslProblem p, PetscInt which, PetscInt ncomp
   Vec                xl;
   const PetscScalar *xa;
   ElementFieldCtx    ctx = {vals, which, ncomp};
+  PetscErrorCode     ierr;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
-  PetscCall(TslProblemElementLoop(p, xa, xa, ElementResult, &ctx));
+  PetscCall(TslCaptureBegin());
+  ierr = TslProblemElementLoop(p, xa, xa, ElementResult, &ctx);
+  if (!ierr) ierr = InjectedElement(p);
+  PetscCall(TslCaptureEnd());
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscCall(AgreeElementPass(p, ierr, "element output"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
@@ -178,6 +206,7 @@ PetscErrorCode TslProblemEnergies(TslProblem p, PetscReal *strain, PetscReal *ho
   const PetscScalar *xa;
   PetscReal          loc[2] = {0, 0}, g[2];
   TslElemData        d;
+  PetscErrorCode     ierr = PETSC_SUCCESS;
 
   PetscFunctionBeginUser;
   PetscCall(TslProblemGetLocalSolution(p, &xl, &xa));
@@ -186,13 +215,17 @@ PetscErrorCode TslProblemEnergies(TslProblem p, PetscReal *strain, PetscReal *ho
     TslProblemFastBatchEnergy(p, b, xa, &se, &hg);
     loc[0] += se, loc[1] += hg;
   }
-  for (PetscInt e = 0; e < p->m->nelem; e++) {
+  PetscCall(TslCaptureBegin());
+  for (PetscInt e = 0; e < p->m->nelem && !ierr; e++) {
     PetscBool stop = PETSC_FALSE;
     if (p->fast_built && p->fast_off[e] >= 0) continue;
     TslProblemGather(p, e, xa, xa, &d);
-    PetscCall(EnergyVisit(p, e, &d, loc, &stop));
+    ierr = EnergyVisit(p, e, &d, loc, &stop);
   }
+  if (!ierr) ierr = InjectedElement(p);
+  PetscCall(TslCaptureEnd());
   PetscCall(TslProblemRestoreLocalSolution(p, &xl, &xa));
+  PetscCall(AgreeElementPass(p, ierr, "element energies"));
   PetscCall(MPIU_Allreduce(loc, g, 2, MPIU_REAL, MPIU_SUM, p->comm));
   *strain    = g[0];
   *hourglass = g[1];

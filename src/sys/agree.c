@@ -60,7 +60,7 @@ PetscErrorCode TslAgree(MPI_Comm comm, PetscErrorCode local, TslFailure *kind, c
 
 PetscErrorCode TslInjectSetFromOptions(MPI_Comm comm, TslInject *inj)
 {
-  const char *const kinds[] = {"none", "converge", "internal", "output", "TslInjectKind", "TSL_INJECT_", NULL};
+  const char *const kinds[] = {"none", "converge", "internal", "output", "element", "TslInjectKind", "TSL_INJECT_", NULL};
   PetscEnum         kind    = (PetscEnum)TSL_INJECT_NONE;
   PetscInt          r       = 0;
   PetscMPIInt       rank;

@@ -1,12 +1,22 @@
 #!/bin/sh
 # usage: fault.sh MPIEXEC THERMOSLIDE DECK OUTDIR KIND PYTHON CHECK_SLIDING
-# A failure of KIND (converge | internal | output) injected on rank 1 only, in step 2, on 2 ranks with the
+# A failure of KIND (converge | internal | output | element) injected on rank 1 only, in step 2, on 2 ranks with the
 # contact pair split across them. Nothing may hang (timeout), print a trace or a source path, or leave
 # temporary files; see tests/robust/CMakeLists.txt for what each kind must give.
 mpiexec=$1 exe=$2 deck=$3 out=$4 kind=$5 py=$6 check=$7
 job=$(basename "$deck" .inp)
 rm -rf "$out" && mkdir -p "$out"
 fail() { echo "FAIL: $*"; exit 1; }
+# the frames kept are step 1's: the failure came in step 2 before a frame of it
+steps_saved() {
+  "$py" - "$out" "$job" <<'PY' || exit 1
+import sys, h5py
+f = h5py.File("%s/%s.h5" % (sys.argv[1], sys.argv[2]), "r")
+steps = sorted(set(int(f["/frames/" + k].attrs["step"]) for k in f["/frames"]))
+print("frames saved for steps %s (the last converged state is the end of step 1)" % steps)
+sys.exit(0 if steps == [1] else 1)
+PY
+}
 if [ "$kind" = output ]; then
   timeout 300 "$mpiexec" -n 2 "$exe" "$deck" -o "$out" > "$out/good.log" 2>&1 || { cat "$out/good.log"; fail "good run"; }
   before=$(cd "$out" && md5sum "$job.h5" "$job.xmf" "$job.csv")
@@ -31,14 +41,12 @@ internal)
   [ $rc -ne 0 ] || fail "exit code 0"
   [ "$(grep -c 'error' "$out/log")" -eq 1 ] || fail "not exactly one error message"
   grep -q "internal error (code [0-9]*): injected internal failure" "$out/log" || fail "no clear message"
-  "$py" - "$out" "$job" <<'PY' || exit 1
-import sys, h5py
-f = h5py.File("%s/%s.h5" % (sys.argv[1], sys.argv[2]), "r")
-steps = sorted(set(int(f["/frames/" + k].attrs["step"]) for k in f["/frames"]))
-print("frames saved for steps %s (the last converged state is the end of step 1)" % steps)
-sys.exit(0 if steps == [1] else 1)
-PY
-  ;;
+  steps_saved ;;
+element)
+  [ $rc -ne 0 ] || fail "exit code 0"
+  [ "$(grep -c 'error' "$out/log")" -eq 1 ] || fail "not exactly one error message"
+  grep -q "internal error (code [0-9]*): .*injected element output failure" "$out/log" || fail "no clear message"
+  steps_saved ;;
 output)
   [ $rc -ne 0 ] || fail "exit code 0"
   [ "$(grep -c 'error' "$out/log")" -eq 1 ] || fail "not exactly one error message"
