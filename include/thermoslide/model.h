@@ -448,6 +448,8 @@ typedef struct {
   PetscBool         direct;                    /* DIRECT: fixed increments */
   PetscBool         nlgeom;                    /* finite strain (NLGEOM; on in every step after one that has it, check.c) */
   PetscBool         nlgeom_given;              /* NLGEOM= written on the *STEP line */
+  PetscBool         nlgeom_default;            /* on by the explicit procedure's default (Abaqus/Explicit's; NLGEOM not written
+                                                  and not inherited): not carried into later implicit steps (check.c) */
   PetscBool         no_extrapolation;          /* EXTRAPOLATION=NO: each increment starts from the last converged state */
   PetscReal         dt0, period, dtmin, dtmax; /* data line; defaults dt0=period=1, dtmin=1e-5*period, dtmax=period */
   PetscReal         deltmx;                    /* DELTMX (0 = none) */

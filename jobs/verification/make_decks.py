@@ -760,6 +760,8 @@ def sliding_blocks_3d(series, typ, outdir=None, surf=False, explicit=None):
         text += explicit_steps(series, " BASE, 1, 3\n TOPFACE, 1, 1\n TOPFACE, 3, 3\n", "1", "2",
                                lambda kind, value: load_lines(pressed, kind, value), load_lines(filmed, "F", "0.0, 10.0"), "100.0",
                                constraint=explicit)
+        if damp:  # *DAMPING, BETA= has the small-strain damping stress: these steps keep small strain (NLGEOM, the explicit default, refuses it)
+            text = text.replace("*STEP, NAME=", "*STEP, NLGEOM=NO, NAME=")
         name = "sliding_%s_explicit_%s_%s.inp" % (series, explicit.lower(), typ.lower())
         with open(os.path.join(outdir or HERE, name), "w") as f:
             f.write(text)

@@ -558,8 +558,9 @@ static PetscErrorCode CheckExplicitStep(TslModel *m, const TslStep *s)
 }
 
 /* *STEP, NLGEOM: once on, on in the steps that follow (the dialect; NLGEOM=NO after it is overruled, with a
- * warning). What keeps small strain in such a step says so at its *STEP line: an explicit step, and the plastic and
- * incompatible-mode elements (docs/elements.md "Finite strain"). */
+ * warning). An explicit step without NLGEOM= takes it, as Abaqus/Explicit does (NLGEOM=NO keeps small strain); that
+ * default is the procedure's and does not carry into a later implicit step. What keeps small strain in such a step
+ * says so at its *STEP line: the plastic and incompatible-mode elements (docs/elements.md "Finite strain"). */
 static PetscErrorCode CheckNlgeom(TslModel *m)
 {
   char where[PETSC_MAX_PATH_LEN];
@@ -568,13 +569,14 @@ static PetscErrorCode CheckNlgeom(TslModel *m)
   for (PetscInt i = 0; i < m->nstep; i++) {
     TslStep  *s = &m->steps[i];
     PetscInt  plastic = -1, incompatible = -1;
-    if (i > 0 && m->steps[i - 1].nlgeom && !s->nlgeom) {
+    if (i > 0 && m->steps[i - 1].nlgeom && !m->steps[i - 1].nlgeom_default && !s->nlgeom) {
       (void)TslLocString(m, s->loc, where, sizeof(where));
       if (s->nlgeom_given)
         PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s: warning: *STEP, NLGEOM=NO: step %s keeps finite strain, as every step after one with NLGEOM does\n",
                               where, s->name));
       s->nlgeom = PETSC_TRUE;
     }
+    if (!s->nlgeom && !s->nlgeom_given && s->explicit_dynamics) s->nlgeom = s->nlgeom_default = PETSC_TRUE;
     if (!s->nlgeom) continue;
     (void)TslLocString(m, s->loc, where, sizeof(where));
     for (PetscInt e = 0; e < m->nelem && (plastic < 0 || incompatible < 0); e++) {
@@ -586,10 +588,17 @@ static PetscErrorCode CheckNlgeom(TslModel *m)
     for (PetscInt k = 0; k < m->nsection && s->explicit_dynamics; k++) {
       const TslMaterial *mt = &m->materials[m->sections[k].material_index];
       /* the damping stress is the small-strain beta D : B v on the reference configuration: it would resist a rigid rotation */
-      CHECK(mt->damp_beta == 0, mt->damping_loc,
-            "*DAMPING, BETA= (material %s) in the finite-strain explicit step %s is not supported: its damping stress is the small-strain one, "
-            "which resists rigid rotations; use ALPHA= or leave NLGEOM off",
-            mt->name, s->name);
+      if (s->nlgeom_default)
+        CHECK(mt->damp_beta == 0, mt->damping_loc,
+              "*DAMPING, BETA= (material %s) is not supported at finite strain, and the explicit step %s takes finite strain by default "
+              "(NLGEOM, as in Abaqus/Explicit): its damping stress is the small-strain one, which resists rigid rotations; write NLGEOM=NO on "
+              "the step's *STEP line for small strain, or use ALPHA=",
+              mt->name, s->name);
+      else
+        CHECK(mt->damp_beta == 0, mt->damping_loc,
+              "*DAMPING, BETA= (material %s) in the finite-strain explicit step %s is not supported: its damping stress is the small-strain one, "
+              "which resists rigid rotations; use ALPHA= or leave NLGEOM off",
+              mt->name, s->name);
     }
     if (plastic >= 0)
       PetscCall(PetscPrintf(PETSC_COMM_SELF,

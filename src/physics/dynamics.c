@@ -669,6 +669,14 @@ PetscErrorCode TslProblemExplicitForces(TslProblem p, Vec Fi, Vec Fe, Vec Fc, Ve
     PetscCall(TslAgree(p->comm, ierr, &fail, p->fail_msg));
     PetscCheck(!fail, p->comm, PETSC_ERR_NOT_CONVERGED, "explicit increment: %s", p->fail_msg);
   }
+  if (g[11] > 0 && p->nlgeom) { /* the reference geometry was checked before the job: the deformation turned it */
+    PetscInt id = c.bad >= 0 ? p->m->elem_id[c.bad] : -1, gid;
+    PetscCall(MPIU_Allreduce(&id, &gid, 1, MPIU_INT, MPI_MAX, p->comm));
+    SETERRQ(p->comm, PETSC_ERR_NOT_CONVERGED,
+            "explicit increment: element %" PetscInt_FMT " turned inside out (det F <= 0) at step time %g: the motion has crushed it, or the solution "
+            "has left the stable range (an increment above the stable one); the frames written before are kept",
+            gid, (double)p->t);
+  }
   if (g[11] > 0) PetscCall(TslProblemCheckBadElement(p, c.bad));
   rates->heat_in = g[0], rates->film_out = g[1], rates->interface_heat = g[2], rates->dissipation = g[3], rates->friction_heat = g[4];
   rates->viscous = g[5], rates->viscous_prev = g[6], rates->radiation_out = g[7], rates->plastic_work = g[8], rates->plastic_heat = g[9];

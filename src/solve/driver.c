@@ -1070,6 +1070,7 @@ static PetscErrorCode SaveLastConverged(Driver *d)
   Vec            X, Xold;
 
   PetscFunctionBeginUser;
+  if (d->in_explicit) PetscFunctionReturn(PETSC_SUCCESS); /* X is past the last history row's state: the frames written stay */
   if (d->trial) {
     PetscCall(TslProblemGetSolution(d->prob, &X));
     PetscCall(TslProblemGetOldSolution(d->prob, &Xold));

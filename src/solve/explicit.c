@@ -838,10 +838,11 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
      * (total Lagrangian) ones */
     PetscCall(TslProblemExplicitRecords(x.p, d->explicit_records, &nfast, &mb));
     if (d->explicit_records)
-      PetscCall(PetscPrintf(d->comm, "  force records%s: %" PetscInt_FMT " of %" PetscInt_FMT " elements (%.1f MB on the largest rank); the others take the generic kernels\n",
-                            x.step->nlgeom ? " (finite strain)" : "", nfast, x.m->nelem_global, (double)mb));
+      PetscCall(PetscPrintf(d->comm, "  force records: %" PetscInt_FMT " of %" PetscInt_FMT " elements (%.1f MB on the largest rank%s); the others take the generic kernels\n",
+                            nfast, x.m->nelem_global, (double)mb, x.step->nlgeom ? ", finite strain" : ""));
     if (x.step->nlgeom)
-      PetscCall(PetscPrintf(d->comm, "  finite strain (NLGEOM): the stable increment follows the deformed elements (every %d increments)\n",
+      PetscCall(PetscPrintf(d->comm, "  finite strain (NLGEOM%s): the stable increment follows the deformed elements (every %d increments)\n",
+                            x.step->nlgeom_default ? ", the explicit default: NLGEOM=NO on the *STEP line keeps small strain" : "",
                             (int)TSL_NLGEOM_STABLE_EVERY));
   }
   PetscCall(TslProblemSetTime(x.p, 0, 0, *total_time));
@@ -866,7 +867,8 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
     t = L.t, inc = L.inc, *total_time = L.total, frames.next = L.frames_next;
     PetscCall(TslRestartEndStep(d, s, &t, x.step->period));
   }
-  wall0   = MPI_Wtime();
+  wall0          = MPI_Wtime();
+  d->in_explicit = PETSC_TRUE; /* a failure from here on keeps the frames written (driver.c, SaveLastConverged) */
   PetscCall(PetscPrintf(d->comm, "  about %.0f increments; frames every %g\n", (double)PetscCeilReal((x.step->period - t) / x.dt), (double)frames.dt));
   while (t < x.step->period - eps) {
     PetscReal h, t_new, to_frame = TslFrameTimesBound(&frames) - t;
@@ -947,7 +949,8 @@ PetscErrorCode TslExplicitRunStep(Driver *d, PetscInt s, PetscReal *total_time)
                             (double)(en->ke + en->ie + en->vd + en->cw - en->wk - en->mw), now - wall0, (now - wall0) * (x.step->period - t) / t));
     }
   }
-  now = MPI_Wtime();
+  d->in_explicit = PETSC_FALSE;
+  now            = MPI_Wtime();
   PetscCall(KineticEnergy(&x, &en->ke));
   PetscCall(PetscPrintf(d->comm,
                         "  step %" PetscInt_FMT ": %" PetscInt_FMT " increments in %.2f s (%.3g s per increment); ALLKE %.6g ALLIE %.6g ALLWK %.6g ALLFD %.6g ALLCW %.6g ALLMW %.6g ALLVD %.6g ETOTAL %.3g\n",

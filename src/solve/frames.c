@@ -122,8 +122,8 @@ PetscBool TslFrameTimesReached(TslFrameTimes *ft, PetscReal t)
 
 /* Small-strain kinematics (no NLGEOM) take a rigid turn by theta for a strain of 1 - cos theta, about theta^2 / 2 (and
  * stresses of E times that): above this rotation an element's results are wrong by more than a metal's yield strain, and the step
- * says so once, at the frame that first shows it (the deck's step may be meant for finite strain: Abaqus/Explicit's
- * default is NLGEOM, and a deck from it without the parameter turns its parts here with small-strain kinematics). */
+ * says so once, at the frame that first shows it (the deck's step may be meant for finite strain: an implicit step from
+ * an Abaqus or CalculiX deck is small-strain without NLGEOM, an explicit step only with NLGEOM=NO). */
 #define TSL_SMALL_STRAIN_ROTATION 0.05
 
 static PetscErrorCode SmallStrainRotation(Driver *d, PetscInt step, PetscReal time)
@@ -146,7 +146,7 @@ static PetscErrorCode SmallStrainRotation(Driver *d, PetscInt step, PetscReal ti
       "turn for a strain of %.2g (1 - cos theta) and stresses of that times E; write NLGEOM on the *STEP line for finite strain "
       "(%s)\n",
       m->steps[step - 1].name, id, (double)w, (double)time, (double)(1 - PetscCosReal(w)),
-      m->steps[step - 1].explicit_dynamics ? "an explicit step here is small-strain unless NLGEOM is given; Abaqus/Explicit's default is NLGEOM"
+      m->steps[step - 1].explicit_dynamics ? "this explicit step was given NLGEOM=NO; without it an explicit step takes finite strain"
                                            : "CalculiX's default is small strain too"));
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -100,6 +100,8 @@ typedef struct {
   PetscReal  done_time, done_step_time, done_dt;
   PetscBool  trial;     /* X holds an unconverged trial state (Xold the last converged one) */
   PetscBool  in_output; /* inside a frame: a failure there leaves the output unusable */
+  PetscBool  in_explicit; /* inside an explicit step's loop: the state has moved past its last history row, so a failure
+                           keeps the frames written (SaveLastConverged writes none) */
   PetscInt   ndefault;  /* solver options entered as defaults (SetDefaultOption) */
   char       defaults[MAX_DEFAULTS][64];
   /* explicit steps: the velocity and the energies carry over from one explicit step to the next (an

@@ -22,8 +22,9 @@ static PetscErrorCode Summary(const TslModel *m)
   for (PetscInt i = 0; i < m->nstep; i++) {
     const TslStep *s = &m->steps[i];
     PetscCall(PetscPrintf(
-        PETSC_COMM_SELF, "step %s: %s, dt0 %g, period %g, dtmin %g, dtmax %g, %" PetscInt_FMT " loads, %" PetscInt_FMT " output requests\n", s->name,
-        s->steady ? "steady" : "transient", (double)s->dt0, (double)s->period, (double)s->dtmin, (double)s->dtmax, s->nload, s->nout));
+        PETSC_COMM_SELF, "step %s: %s%s, dt0 %g, period %g, dtmin %g, dtmax %g, %" PetscInt_FMT " loads, %" PetscInt_FMT " output requests%s\n", s->name,
+        s->explicit_dynamics ? "explicit, " : "", s->steady ? "steady" : "transient", (double)s->dt0, (double)s->period, (double)s->dtmin, (double)s->dtmax,
+        s->nload, s->nout, s->nlgeom ? (s->nlgeom_default ? ", finite strain (the explicit default)" : ", finite strain") : ", small strain"));
   }
   PetscFunctionReturn(PETSC_SUCCESS);
 }

@@ -216,3 +216,4 @@ tsl_deck_bad(damping_no_parameter damping_no_parameter.inp "error: damping_no_pa
 tsl_deck_bad(damping_data_line damping_data_line.inp "error: damping_data_line.inp:34: *DAMPING takes no data lines")
 tsl_deck_bad(damping_twice damping_twice.inp "error: damping_twice.inp:34: *DAMPING is given twice in material MASS")
 tsl_deck_bad(damping_beta_nlgeom damping_beta_nlgeom.inp "error: damping_beta_nlgeom.inp:43: *DAMPING, BETA= (material STIFF) in the finite-strain explicit step RING is not supported")
+tsl_deck_bad(damping_beta_default damping_beta_default.inp "error: damping_beta_default.inp:43: *DAMPING, BETA= (material STIFF) is not supported at finite strain, and the explicit step RING takes finite strain by default (NLGEOM, as in Abaqus/Explicit)")
