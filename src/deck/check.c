@@ -588,17 +588,11 @@ static PetscErrorCode CheckNlgeom(TslModel *m)
     for (PetscInt k = 0; k < m->nsection && s->explicit_dynamics; k++) {
       const TslMaterial *mt = &m->materials[m->sections[k].material_index];
       /* the damping stress is the small-strain beta D : B v on the reference configuration: it would resist a rigid rotation */
-      if (s->nlgeom_default)
-        CHECK(mt->damp_beta == 0, mt->damping_loc,
-              "*DAMPING, BETA= (material %s) is not supported at finite strain, and the explicit step %s takes finite strain by default "
-              "(NLGEOM, as in Abaqus/Explicit): its damping stress is the small-strain one, which resists rigid rotations; write NLGEOM=NO on "
-              "the step's *STEP line for small strain, or use ALPHA=",
-              mt->name, s->name);
-      else
-        CHECK(mt->damp_beta == 0, mt->damping_loc,
-              "*DAMPING, BETA= (material %s) in the finite-strain explicit step %s is not supported: its damping stress is the small-strain one, "
-              "which resists rigid rotations; use ALPHA= or leave NLGEOM off",
-              mt->name, s->name);
+      CHECK(mt->damp_beta == 0, mt->damping_loc,
+            "*DAMPING, BETA= (material %s) %s explicit step %s%s: its damping stress is the small-strain one, which resists rigid rotations; %s",
+            mt->name, s->nlgeom_default ? "is not supported at finite strain, and the" : "in the finite-strain", s->name,
+            s->nlgeom_default ? " takes finite strain by default (NLGEOM, as in Abaqus/Explicit)" : " is not supported",
+            s->nlgeom_default ? "write NLGEOM=NO on the step's *STEP line for small strain, or use ALPHA=" : "use ALPHA= or leave NLGEOM off");
     }
     if (plastic >= 0)
       PetscCall(PetscPrintf(PETSC_COMM_SELF,
