@@ -154,6 +154,12 @@ typedef struct {
   PetscReal *t, *a;      /* tabular (time, value) pairs, t ascending */
   PetscBool  total_time; /* TIME=TOTAL TIME (default STEP TIME) */
   PetscBool  smooth;     /* DEFINITION=SMOOTH STEP: a + (b - a) xi^3 (10 - 15 xi + 6 xi^2) between points */
+  /* DEFINITION=PERIODIC (n = 0, no points): a0 + sum_k cosc[k] cos((k+1) omega (t - t0)) + sinc[k] sin((k+1) omega (t - t0))
+   * for t >= t0, a0 before t0 (Abaqus's Fourier series) */
+  PetscBool  periodic;
+  PetscInt   nterm;
+  PetscReal  omega, t0, a0;
+  PetscReal *cosc, *sinc;
   TslLoc     loc;
 } TslAmplitude;
 
@@ -569,9 +575,11 @@ PetscInt       TslModelNodeIndex(const TslModel *model, PetscInt id);
 PetscInt       TslModelElementIndex(const TslModel *model, PetscInt id);
 
 /* Amplitude value at time t (linear interpolation, or the smooth step between points with SMOOTH STEP;
- * constant beyond the ends). */
+ * constant beyond the ends; the Fourier series with PERIODIC). TslAmplitudeIntegral: its integral over [ta, tb],
+ * exact for every definition; TslAmplitudeBound: the largest |value| it can take. */
 PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t);
 PetscReal TslAmplitudeIntegral(const TslAmplitude *amp, PetscReal ta, PetscReal tb);
+PetscReal TslAmplitudeBound(const TslAmplitude *amp);
 
 /* Serialisation used to broadcast / scatter models. TslModelPack writes the whole model into a
  * newly allocated buffer (caller frees with PetscFree); TslModelUnpack builds a model from it. */

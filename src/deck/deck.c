@@ -1880,6 +1880,42 @@ static PetscErrorCode KwInitial(Deck *d, const DeckKeyword *kw)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* DEFINITION=PERIODIC, Abaqus's Fourier series: a line "N, omega, t0, A0", then the N pairs "A_k, B_k" over as many
+ * lines as they take; a = A0 + sum_k A_k cos(k omega (t - t0)) + B_k sin(k omega (t - t0)) for t >= t0, A0 before. */
+static PetscErrorCode AmplitudePeriodic(Deck *d, TslAmplitude *a)
+{
+  PetscInt  got_terms = 0;
+  PetscBool got;
+
+  PetscFunctionBeginUser;
+  a->periodic = PETSC_TRUE;
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(got, LOC_FMT "*AMPLITUDE %s, DEFINITION=PERIODIC: expected a line \"N, omega, t0, A0\"", KLOC(d), a->name);
+  USER_CHECK(d->nfield >= 2 && d->nfield <= 4, LOC_FMT "*AMPLITUDE, DEFINITION=PERIODIC: the first line holds N, omega, t0, A0 (got %" PetscInt_FMT " values)", DLOC(d), d->nfield);
+  PetscCall(FieldInt(d, 0, "the number of terms N", &a->nterm));
+  PetscCall(FieldReal(d, 1, "the circular frequency omega", &a->omega));
+  PetscCall(FieldRealDefault(d, 2, "the starting time t0", 0, &a->t0));
+  PetscCall(FieldRealDefault(d, 3, "the constant term A0", 0, &a->a0));
+  USER_CHECK(a->nterm >= 1 && a->nterm <= 1000, LOC_FMT "*AMPLITUDE, DEFINITION=PERIODIC: N must be 1 to 1000 (got %" PetscInt_FMT ")", DLOC(d), a->nterm);
+  USER_CHECK(a->omega > 0, LOC_FMT "*AMPLITUDE, DEFINITION=PERIODIC: omega must be > 0 (got %g)", DLOC(d), (double)a->omega);
+  PetscCall(PetscCalloc1(a->nterm, &a->cosc));
+  PetscCall(PetscCalloc1(a->nterm, &a->sinc));
+  while (got_terms < a->nterm) {
+    PetscCall(DataLine(d, 0, &got));
+    USER_CHECK(got, LOC_FMT "*AMPLITUDE %s, DEFINITION=PERIODIC: N = %" PetscInt_FMT " needs %" PetscInt_FMT " pairs A_k, B_k; the data ends after %" PetscInt_FMT, KLOC(d), a->name,
+               a->nterm, a->nterm, got_terms);
+    USER_CHECK(d->nfield % 2 == 0, LOC_FMT "*AMPLITUDE, DEFINITION=PERIODIC: the coefficients come in pairs A_k, B_k; got an odd number of values", DLOC(d));
+    USER_CHECK(got_terms + d->nfield / 2 <= a->nterm, LOC_FMT "*AMPLITUDE, DEFINITION=PERIODIC: more than N = %" PetscInt_FMT " pairs A_k, B_k", DLOC(d), a->nterm);
+    for (PetscInt i = 0; i < d->nfield; i += 2, got_terms++) {
+      PetscCall(FieldReal(d, i, "a cosine coefficient A_k", &a->cosc[got_terms]));
+      PetscCall(FieldReal(d, i + 1, "a sine coefficient B_k", &a->sinc[got_terms]));
+    }
+  }
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(!got, LOC_FMT "*AMPLITUDE, DEFINITION=PERIODIC: more than N = %" PetscInt_FMT " pairs A_k, B_k", DLOC(d), a->nterm);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw)
 {
   TslModel     *m = d->m;
@@ -1896,14 +1932,18 @@ static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw)
   def  = ParamUpper(d, "DEFINITION", b2, sizeof(b2));
   USER_CHECK(!time || !strcmp(time, "STEP TIME") || !strcmp(time, "TOTAL TIME"),
              LOC_FMT "*AMPLITUDE, TIME=%s is not supported (STEP TIME or TOTAL TIME)", KLOC(d), time);
-  USER_CHECK(!def || !strcmp(def, "TABULAR") || !strcmp(def, "SMOOTH STEP"),
-             LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (TABULAR or SMOOTH STEP)", KLOC(d), def);
+  USER_CHECK(!def || !strcmp(def, "TABULAR") || !strcmp(def, "SMOOTH STEP") || !strcmp(def, "PERIODIC"),
+             LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (TABULAR, SMOOTH STEP or PERIODIC)", KLOC(d), def);
   PetscCall(TslDeckGrow(&m->amplitudes, sizeof(TslAmplitude), m->namplitude));
   a = &m->amplitudes[m->namplitude++];
   PetscCall(CopyName(d, d->kwloc, a->name, name));
   a->total_time = (time && !strcmp(time, "TOTAL TIME")) ? PETSC_TRUE : PETSC_FALSE;
   a->smooth     = (def && !strcmp(def, "SMOOTH STEP")) ? PETSC_TRUE : PETSC_FALSE;
   a->loc        = d->kwloc;
+  if (def && !strcmp(def, "PERIODIC")) {
+    PetscCall(AmplitudePeriodic(d, a));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
   for (;;) {
     PetscCall(DataLine(d, 0, &got));
     if (!got) break;

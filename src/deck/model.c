@@ -57,6 +57,8 @@ PetscErrorCode TslModelDestroy(TslModel **model)
   for (PetscInt i = 0; i < m->namplitude; i++) {
     PetscCall(PetscFree(m->amplitudes[i].t));
     PetscCall(PetscFree(m->amplitudes[i].a));
+    PetscCall(PetscFree(m->amplitudes[i].cosc));
+    PetscCall(PetscFree(m->amplitudes[i].sinc));
   }
   PetscCall(PetscFree(m->amplitudes));
   for (PetscInt i = 0; i < m->nequation; i++) {
@@ -229,10 +231,40 @@ PetscInt TslModelElementIndex(const TslModel *model, PetscInt id)
 
 /* ---- amplitudes ------------------------------------------------------------------------------ */
 
+/* PERIODIC: the series at t (which = 0), or its primitive from t0 (which = 1): A0 (t - t0) + sum A_k sin(k w tau)/(k w)
+ * + B_k (1 - cos(k w tau))/(k w), tau = t - t0; before t0 the constant A0 and its integral. */
+static PetscReal AmplitudeSeries(const TslAmplitude *amp, PetscReal t, PetscBool primitive)
+{
+  const PetscReal tau = t - amp->t0;
+  PetscReal       s   = primitive ? amp->a0 * tau : amp->a0;
+
+  if (tau <= 0) return s;
+  for (PetscInt k = 0; k < amp->nterm; k++) {
+    const PetscReal w = (k + 1) * amp->omega, c = PetscCosReal(w * tau), sn = PetscSinReal(w * tau);
+    s += primitive ? (amp->cosc[k] * sn + amp->sinc[k] * (1 - c)) / w : amp->cosc[k] * c + amp->sinc[k] * sn;
+  }
+  return s;
+}
+
+PetscReal TslAmplitudeBound(const TslAmplitude *amp)
+{
+  PetscReal b = 0;
+
+  if (!amp) return 1.0;
+  if (amp->periodic) {
+    b = PetscAbsReal(amp->a0);
+    for (PetscInt k = 0; k < amp->nterm; k++) b += PetscAbsReal(amp->cosc[k]) + PetscAbsReal(amp->sinc[k]);
+    return b;
+  }
+  for (PetscInt i = 0; i < amp->n; i++) b = PetscMax(b, PetscAbsReal(amp->a[i]));
+  return b;
+}
+
 /* Piecewise linear through (t_i, a_i), constant beyond the ends. At a repeated time (a jump) the
  * later value wins, so a jump at t takes effect at t. */
 PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t)
 {
+  if (amp && amp->periodic) return AmplitudeSeries(amp, t, PETSC_FALSE);
   if (!amp || amp->n < 1) return 1.0;
   if (t < amp->t[0]) return amp->a[0];
   for (PetscInt i = 0; i + 1 < amp->n; i++) {
@@ -272,6 +304,7 @@ static PetscReal AmplitudePrimitive(const TslAmplitude *amp, PetscReal t)
 
 PetscReal TslAmplitudeIntegral(const TslAmplitude *amp, PetscReal ta, PetscReal tb)
 {
+  if (amp && amp->periodic) return AmplitudeSeries(amp, tb, PETSC_TRUE) - AmplitudeSeries(amp, ta, PETSC_TRUE);
   if (!amp || amp->n < 1) return tb - ta;
   return AmplitudePrimitive(amp, tb) - AmplitudePrimitive(amp, ta);
 }
@@ -385,6 +418,8 @@ static PetscErrorCode ModelWalk(Packer *p, TslModel *m)
   for (PetscInt i = 0; i < m->namplitude; i++) {
     PetscCall(PackArray(p, &m->amplitudes[i].t, m->amplitudes[i].n, sizeof(PetscReal)));
     PetscCall(PackArray(p, &m->amplitudes[i].a, m->amplitudes[i].n, sizeof(PetscReal)));
+    PetscCall(PackArray(p, &m->amplitudes[i].cosc, m->amplitudes[i].nterm, sizeof(PetscReal)));
+    PetscCall(PackArray(p, &m->amplitudes[i].sinc, m->amplitudes[i].nterm, sizeof(PetscReal)));
   }
   PetscCall(PackArray(p, &m->ties, m->ntie, sizeof(TslTie)));
   PetscCall(PackArray(p, &m->equations, m->nequation, sizeof(TslEquation)));

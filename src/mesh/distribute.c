@@ -821,10 +821,7 @@ static PetscReal LargestPrescribedDisplacement(const TslModel *g)
       const TslLoad *ld  = &g->steps[s].loads[l];
       PetscReal      amp = 1;
       if (ld->kind != TSL_LOAD_BOUNDARY) continue;
-      if (ld->amplitude >= 0 && ld->amplitude < g->namplitude) {
-        amp = 0;
-        for (PetscInt i = 0; i < g->amplitudes[ld->amplitude].n; i++) amp = PetscMax(amp, PetscAbsReal(g->amplitudes[ld->amplitude].a[i]));
-      }
+      if (ld->amplitude >= 0 && ld->amplitude < g->namplitude) amp = TslAmplitudeBound(&g->amplitudes[ld->amplitude]);
       if (ld->velocity) { /* a velocity moves the dof for as long as it holds: this step and every later one, at most */
         PetscReal T = 0;
         for (PetscInt r = s; r < g->nstep; r++) T += g->steps[r].period;

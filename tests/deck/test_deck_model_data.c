@@ -4,6 +4,7 @@
  * in the model data (the steps' default frequency), both placements the dialect allows. */
 #include <thermoslide/model.h>
 #include <string.h>
+#include <math.h>
 
 #ifndef TSL_DECK_DATA
 #error "TSL_DECK_DATA (the tests/deck/data directory) must be defined"
@@ -84,11 +85,57 @@ static PetscErrorCode TestInitialVelocity(void)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* *AMPLITUDE, DEFINITION=PERIODIC: a = A0 + sum A_k cos(k w (t - t0)) + B_k sin(k w (t - t0)) from t0, A0 before, and its
+ * integral in closed form (a velocity boundary condition integrates it); the defaults t0 = A0 = 0; through pack/unpack. */
+static PetscReal SpinSeries(PetscReal t)
+{
+  const PetscReal w = 3.0, tau = t - 0.5;
+  if (tau <= 0) return -1;
+  return -1 + 2 * cos(w * tau) + 0.5 * sin(w * tau) + 0.25 * cos(2 * w * tau) - sin(2 * w * tau);
+}
+
+static PetscReal SpinPrimitive(PetscReal t) /* from t0 */
+{
+  const PetscReal w = 3.0, tau = t - 0.5;
+  if (tau <= 0) return -tau;
+  return -tau + 2 * sin(w * tau) / w + 0.5 * (1 - cos(w * tau)) / w + 0.25 * sin(2 * w * tau) / (2 * w) - (1 - cos(2 * w * tau)) / (2 * w);
+}
+
+static PetscErrorCode TestPeriodicAmplitude(void)
+{
+  TslModel           *m, *s;
+  const TslAmplitude *spin, *plain;
+  char               *buf;
+  size_t              len;
+
+  PetscFunctionBeginUser;
+  PetscCall(TslDeckRead(TSL_DECK_DATA "/periodic.inp", &m));
+  PetscCall(TslModelPack(m, &buf, &len));
+  PetscCall(TslModelUnpack(buf, len, &s));
+  PetscCall(PetscFree(buf));
+  EXPECT(s->namplitude == 2);
+  spin  = &s->amplitudes[TslModelFindAmplitude(s, "SPIN")];
+  plain = &s->amplitudes[TslModelFindAmplitude(s, "PLAIN")];
+  EXPECT(spin->periodic && spin->nterm == 2 && spin->n == 0 && !spin->total_time);
+  EXPECT(plain->periodic && plain->nterm == 1 && plain->t0 == 0 && plain->a0 == 0 && plain->total_time);
+  for (PetscReal t = 0; t <= 4.0; t += 0.37) {
+    EXPECT(PetscAbsReal(TslAmplitudeEval(spin, t) - SpinSeries(t)) < 1e-13);
+    EXPECT(PetscAbsReal(TslAmplitudeIntegral(spin, 0.2, t) - (SpinPrimitive(t) - SpinPrimitive(0.2))) < 1e-13);
+    EXPECT(PetscAbsReal(TslAmplitudeEval(plain, t) - sin(2 * PETSC_PI * t)) < 1e-13);
+  }
+  EXPECT(PetscAbsReal(TslAmplitudeIntegral(plain, 0, 1)) < 1e-14); /* a whole period of a sine */
+  EXPECT(PetscAbsReal(TslAmplitudeBound(spin) - 4.75) < 1e-14);
+  PetscCall(TslModelDestroy(&s));
+  PetscCall(TslModelDestroy(&m));
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 int main(int argc, char **argv)
 {
   PetscCall(PetscInitialize(&argc, &argv, NULL, NULL));
   PetscCall(TestModelBoundary());
   PetscCall(TestInitialVelocity());
+  PetscCall(TestPeriodicAmplitude());
   PetscCall(PetscPrintf(PETSC_COMM_SELF, "%s: %d failed check(s)\n", nfail ? "FAILED" : "PASSED", nfail));
   PetscCall(PetscFinalize());
   return nfail ? 1 : 0;

@@ -217,3 +217,9 @@ tsl_deck_bad(damping_data_line damping_data_line.inp "error: damping_data_line.i
 tsl_deck_bad(damping_twice damping_twice.inp "error: damping_twice.inp:34: *DAMPING is given twice in material MASS")
 tsl_deck_bad(damping_beta_nlgeom damping_beta_nlgeom.inp "error: damping_beta_nlgeom.inp:43: *DAMPING, BETA= (material STIFF) in the finite-strain explicit step RING is not supported")
 tsl_deck_bad(damping_beta_default damping_beta_default.inp "error: damping_beta_default.inp:43: *DAMPING, BETA= (material STIFF) is not supported at finite strain, and the explicit step RING takes finite strain by default (NLGEOM, as in Abaqus/Explicit)")
+# *AMPLITUDE, DEFINITION=PERIODIC (Abaqus's Fourier series): the first line's count, omega > 0, the pairs and their number
+tsl_deck_bad(periodic_first_line periodic_first_line.inp "error: periodic_first_line.inp:19: *AMPLITUDE, DEFINITION=PERIODIC: the first line holds N, omega, t0, A0 (got 1 values)")
+tsl_deck_bad(periodic_omega periodic_omega.inp "error: periodic_omega.inp:19: *AMPLITUDE, DEFINITION=PERIODIC: omega must be > 0")
+tsl_deck_bad(periodic_odd periodic_odd.inp "error: periodic_odd.inp:20: *AMPLITUDE, DEFINITION=PERIODIC: the coefficients come in pairs A_k, B_k; got an odd number of values")
+tsl_deck_bad(periodic_short periodic_short.inp "error: periodic_short.inp:18: *AMPLITUDE SPIN, DEFINITION=PERIODIC: N = 3 needs 3 pairs A_k, B_k; the data ends after 2")
+tsl_deck_bad(periodic_long periodic_long.inp "error: periodic_long.inp:21: *AMPLITUDE, DEFINITION=PERIODIC: more than N = 1 pairs A_k, B_k")
