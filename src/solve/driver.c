@@ -921,14 +921,15 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
   while (t < step->period - eps) {
     SNESConvergedReason reason;
     PetscInt            its, lits;
-    PetscReal           dtheta = 0, h, t_end;
+    PetscReal           dtheta = 0, h, t_end, t_corner;
     PetscBool           accept, last, frame, steady;
     const char         *why;
     char                why_rs[64];
 
     /* the increment ends at the next output time too (*OUTPUT, NUMBER INTERVAL= / TIME INTERVAL=), as Abaqus/Standard cuts it */
-    PetscCall(TslProblemNextAmplitudeCorner(d->prob, t, TslFrameTimesBound(&frames), &t_end));
-    h    = PetscMin(dt, t_end - t);
+    PetscCall(TslProblemNextAmplitudeCorner(d->prob, t, step->period, &t_corner));
+    t_end = PetscMin(t_corner, TslFrameTimesBound(&frames));
+    h     = PetscMin(dt, t_end - t);
     last = (PetscBool)(t + h >= step->period - eps);
     PetscCheck(inc < step->max_inc, d->comm, PETSC_ERR_NOT_CONVERGED,
                "step %" PetscInt_FMT ": the maximum number of increments (INC=%" PetscInt_FMT ") was reached at step time %g", s + 1, step->max_inc,
@@ -939,7 +940,7 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     PetscCall(SetIncrement(d, step, t + h, h, *total_time + h));
     /* the start of the Newton solve: the last increment's change scaled to this one (the dialect's EXTRAPOLATION=LINEAR),
      * X + (h / h_prev)(X - Xprev), then the prescribed values; not in a step's first increment, nor after an
-     * increment cut short at an amplitude's corner or an output time (the rate may change there) */
+     * increment cut short at an amplitude's corner (the rate may change there) or to less than a tenth of its size */
     if (d->extrapolate && !step->no_extrapolation && d->h_prev > 0) PetscCall(VecAXPBY(X, -h / d->h_prev, 1.0 + h / d->h_prev, d->Xprev));
     PetscCall(TslProblemApplyPrescribed(d->prob, X));
     PetscCall(SolveIncrement(d, X, &reason, &its, &lits));
@@ -1010,7 +1011,13 @@ static PetscErrorCode RunStep(Driver *d, PetscInt s, PetscReal *total_time)
     if (d->extrapolate) {
       if (!d->Xprev) PetscCall(VecDuplicate(X, &d->Xprev));
       PetscCall(VecCopy(Xold, d->Xprev));
-      d->h_prev = h < dt * (1 - 1e-12) ? 0 : h;
+      /* an output time (*OUTPUT, NUMBER INTERVAL= / TIME INTERVAL=) is no corner of the loading: the rate goes on, and
+       * without the extrapolation the increment after each frame would start from the last state with only the
+       * prescribed values moved (a disc turned by its hub, a pad on it: the first solve's nodes slide past their
+       * faces on the faces' tangents, the re-pairing finds them all open and the pad unsupported: a cutback at
+       * every frame; tests/nlgeom spin_disc_implicit) */
+      const PetscBool corner = (PetscBool)(h < dt * (1 - 1e-12) && t_corner <= t_end + eps);
+      d->h_prev              = corner || h < 0.1 * dt ? 0 : h;
     }
     d->trial = PETSC_FALSE;
     PetscCall(TslPhaseBegin(TSL_PHASE_OUTPUT));
