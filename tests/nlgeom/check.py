@@ -13,6 +13,9 @@ uniaxial   the bar at twice its length: sigma_11 = lambda S_11 / lt^2 with S_11 
            ln lt, ln lt), the free lateral faces at lt - 1, the pulled end's reaction lambda S_11 A0 (1e-8)
 pressure   the block pressed by the follower pressure p: Cauchy stress -p along the load in every element, the stresses
            across it 0 (plane strain: sigma_33 not) (1e-8 of p)
+spin_disc  the disc turned once under the pressed pad (implicit, explicit): frictional dissipation mu N x 2 pi R (N from
+           CPRESS over the pad face, 0.5 %), the heat absorbed, the hub torque (implicit), the disc away from the pad below
+           5 % of the contact pressure, the stress field stationary in space (1e-8 implicit, 3e-2 explicit: its waves)
 spin       the explicit block spinning through a quarter turn: at Q X (1e-3 of the displacement), its kinetic energy kept
            (1e-3), ETOTAL at round-off, stresses of the centrifugal size (below 1e-4 of E)
 usage: check.py OUTDIR JOB turn|homog|uniaxial|pressure|spin [AXIS: the load's direction, 0 x, 1 y (the ring's z)]"""
@@ -130,6 +133,58 @@ elif case == "spin":
     check("kinetic energy kept: |ALLKE_end / ALLKE_0 - 1|", abs(ke[-1] / ke[0] - 1), 0.0, 1e-3)
     check("ETOTAL / ALLKE_0 (every row)", np.abs(et).max() / ke[0], 0.0, 1e-10)
     check("max|S| / E (the centrifugal stress, 25 x 0.25 / 2e5 = 3e-5)", np.abs(S).max() / E, 0.0, 1e-4)
+elif case == "spin_disc":
+    # the disc turned once under the pressed pad (make_decks.py spin_disc): its constants
+    RO, HALF, MU_F = 1.0, math.radians(4.0), 0.1
+    NT = int((r.node_ids <= 10000).sum()) // 5  # the disc's segments: 5 rings of nodes
+    explicit = "explicit" in job
+    eids, conn, h = r.h5["/mesh/element_ids"][...], r.elements(), r.history
+    disc = np.where(eids < 5001)[0]
+    pad_in = np.where((r.node_ids >= 10001) & (r.node_ids <= 10017))[0]
+    L = np.zeros(len(pad_in))  # each pad node's share of the pad face (the reference lengths contact works on)
+    for k in range(len(pad_in) - 1):
+        d = np.linalg.norm(X[pad_in[k + 1], :2] - X[pad_in[k], :2])
+        L[k:k + 2] += d / 2
+    spin = [i for i in range(len(r.frames)) if int(r.frame(i).attrs["step"]) == 2]
+    N = np.array([(r.field("CPRESS", i)[pad_in, 0] * L).sum() for i in spin])
+    p_mean = N.mean() / (2 * HALF * RO)
+    print("normal force N = sum CPRESS x length over the pad face: %.6g (spread over the turn %.2g), mean pressure %.6g" %
+          (N.mean(), (N.max() - N.min()) / N.mean(), p_mean))
+    rows = h["step"] == 2
+    start = h["friction_dissipation_total"][h["step"] == 1][-1]
+    dis = h["friction_dissipation_total"][rows][-1] - start
+    check("frictional dissipation of the revolution = mu N x 2 pi R (sliding distance)", dis, MU_F * N.mean() * 2 * math.pi * RO, 5e-3, relative=True)
+    check("frictional heat absorbed = dissipation (eta = 1)", h["friction_heat_total"][rows][-1] - h["friction_heat_total"][h["step"] == 1][-1],
+          dis, 1e-9, relative=True)
+    if not explicit:
+        # the hub's torque about the axis (current positions) / R: the friction force mu N (the facets' tilted normals
+        # add a moment that comes back with every facet: 0.4 %)
+        hub = np.where(r.node_ids <= NT)[0]
+        for i in spin[1::2]:
+            x, RF = X[hub, :2] + r.field("U", i)[hub, :2], r.field("RF", i)[hub]
+            check("frame %d: hub torque / R = mu N" % i, (x[:, 0] * RF[:, 1] - x[:, 1] * RF[:, 0]).sum() / RO, MU_F * N[spin.index(i)], 1e-2, relative=True)
+
+    def mises(S):
+        d = S[:, :3] - S[:, :3].mean(1)[:, None]
+        return np.sqrt(1.5 * ((d**2).sum(1) + 2 * (S[:, 3:]**2).sum(1)))
+
+    # away from the pad (the half of the disc below the axis, where it is at that frame) the disc carries only what
+    # holds the pad's load and the torque: a few % of the contact pressure (small strain: a rigid turn by 90 degrees
+    # alone would strain it by 1, a stress of the order of E, here 3e3 (implicit) and 3e2 (explicit) x p)
+    worst = 0.0
+    for i in spin:
+        x = X[:, :2] + r.field("U", i)[:, :2]
+        below = np.array([x[conn[e], 1].mean() < 0 for e in disc])
+        worst = max(worst, mises(r.field("S", i)[disc][below]).max())
+    check("largest Mises stress in the half away from the pad, any frame / mean contact pressure", worst / p_mean, 0.0, 5e-2)
+    # the state is stationary in space: the stress where an element is at one frame is the stress of the element that is
+    # there half a turn later (the mesh maps onto itself: frames 45 degrees apart, NT segments)
+    S_end, S_half = r.field("S", spin[-1])[disc], r.field("S", spin[-5])[disc]
+    j, layer = (eids[disc] - 1) % NT, (eids[disc] - 1) // NT
+    index = {(a, b): n for n, (a, b) in enumerate(zip(j, layer))}
+    there = np.array([index[((a + NT // 2) % NT, b)] for a, b in zip(j, layer)])
+    peak = max(np.abs(r.field("S", i)[disc]).max() for i in spin)
+    check("half a turn apart: the stress at the same place / largest stress", np.abs(S_end - S_half[there]).max() / peak, 0.0, 3e-2 if explicit else 1e-8)
 else:
     sys.exit("unknown case " + case)
 finish()

@@ -204,6 +204,94 @@ def spin(etype):
     write("spin_" + etype.lower(), text)
 
 
+# The disc turned through a full revolution under a pressed pad (issue 48: a case small strain cannot do). An annulus
+# Ri = 0.5, Ro = 1 (NT segments around, NRD radial), its hub (the inner nodes) turned rigidly by per-node PERIODIC
+# amplitudes, u = (Q(omega t) - I) X exactly (Abaqus's Fourier series: A0 = -X, A1 = X, B1 = -Y for u_x); a softer pad,
+# an annular sector over 90 +- PAD_HALF degrees from Ro to Ro + PAD_H, pressed by the pressure Q_PAD on its outer face
+# (held in x there), friction MU with gap heat generation. Step 1 presses with the hub held, step 2 turns the hub once.
+DISC_RI, DISC_RO, DISC_NT, DISC_NR = 0.5, 1.0, 256, 4
+PAD_HALF, PAD_H, PAD_NT, PAD_NR = 4.0, 0.1, 16, 2
+DISC_E, PAD_E, Q_PAD, MU = 30.0e6, 3.0e6, 1.0e4, 0.1
+
+
+def spin_disc(kind):
+    """Implicit: step PRESS presses the pad with the hub held, step SPIN turns the hub once (displacement amplitudes).
+    Explicit (ten times softer, so that the mass scaled to DT = 2e-5 stays small): the disc starts spinning (initial
+    velocities omega x X, the hub's velocity amplitudes on total time, so nothing starts with a jerk) while step PRESS
+    ramps the pressure smoothly over 0.2 of its 0.25; step SPIN is the full revolution under the constant pressure."""
+    explicit = kind == "explicit"
+    e_disc, e_pad = (DISC_E / 10, PAD_E / 10) if explicit else (DISC_E, PAD_E)
+    nt = DISC_NT
+    nodes, elems, pad_elems = {}, [], []
+    did = lambda i, j: 1 + j % nt + nt * i
+    for i in range(DISC_NR + 1):
+        r = DISC_RI + (DISC_RO - DISC_RI) * i / DISC_NR
+        for j in range(nt):
+            a = 2 * math.pi * j / nt
+            nodes[did(i, j)] = (r * math.cos(a), r * math.sin(a))
+    for i in range(DISC_NR):
+        for j in range(nt):
+            elems.append([did(i, j), did(i + 1, j), did(i + 1, j + 1), did(i, j + 1)])
+    pid = lambda i, j: 10001 + j + (PAD_NT + 1) * i
+    for i in range(PAD_NR + 1):
+        r = DISC_RO + PAD_H * i / PAD_NR
+        for j in range(PAD_NT + 1):
+            a = math.radians(90.0 - PAD_HALF + 2 * PAD_HALF * j / PAD_NT)
+            nodes[pid(i, j)] = (r * math.cos(a), r * math.sin(a))
+    for i in range(PAD_NR):
+        for j in range(PAD_NT):
+            pad_elems.append([pid(i, j), pid(i + 1, j), pid(i + 1, j + 1), pid(i, j + 1)])
+    text = ("*HEADING\n NLGEOM: a CPE4T disc turned through a full revolution under a pad pressed by %g, friction %g, %s"
+            " (make_decks.py spin_disc)\n" % (Q_PAD, MU, kind))
+    text += "*NODE, NSET=NALL\n" + "".join("%d, %.15g, %.15g\n" % (n, x[0], x[1]) for n, x in nodes.items())
+    text += "*ELEMENT, TYPE=CPE4T, ELSET=DISC\n" + "".join("%d, %d, %d, %d, %d\n" % ((e + 1,) + tuple(c)) for e, c in enumerate(elems))
+    text += "*ELEMENT, TYPE=CPE4T, ELSET=PAD\n" + "".join("%d, %d, %d, %d, %d\n" % ((5001 + e,) + tuple(c)) for e, c in enumerate(pad_elems))
+    text += "*ELSET, ELSET=RIM, GENERATE\n%d, %d\n" % (1 + nt * (DISC_NR - 1), nt * DISC_NR)
+    text += "*ELSET, ELSET=PADIN, GENERATE\n5001, %d\n" % (5000 + PAD_NT)
+    text += "*ELSET, ELSET=PADOUT, GENERATE\n%d, %d\n" % (5001 + PAD_NT * (PAD_NR - 1), 5000 + PAD_NT * PAD_NR)
+    text += nset("HUB", [did(0, j) for j in range(nt)]) + nset("PADTOP", [pid(PAD_NR, j) for j in range(PAD_NT + 1)])
+    text += "*SURFACE, NAME=DISCRIM, TYPE=ELEMENT\nRIM, S2\n*SURFACE, NAME=PADFACE, TYPE=ELEMENT\nPADIN, S4\n"
+    for name, e in (("STEEL", e_disc), ("SOFT", e_pad)):
+        text += "*MATERIAL, NAME=%s\n*ELASTIC\n%g, 0.3\n*CONDUCTIVITY\n10.\n*DENSITY\n%g\n*SPECIFIC HEAT\n%g\n" % (
+            name, e, 1.0 if explicit else 1000.0, 100.0 if explicit else 0.001)
+    text += "*SOLID SECTION, ELSET=DISC, MATERIAL=STEEL\n1.\n*SOLID SECTION, ELSET=PAD, MATERIAL=SOFT\n1.\n"
+    text += ("*SURFACE INTERACTION, NAME=IFACE\n*FRICTION%s\n%g\n*GAP CONDUCTANCE, PRESSURE\n20., 0.\n*GAP HEAT GENERATION\n1., 0.5\n"
+             % ("" if explicit else ", LAGRANGE", MU))
+    text += "*CONTACT PAIR, INTERACTION=IFACE%s\nPADFACE, DISCRIM\n" % (", MECHANICAL CONSTRAINT=KINEMATIC" if explicit else "")
+    omega = 2 * math.pi  # one revolution in unit time
+    for n in range(nt):
+        X, Y = nodes[did(0, n)]
+        # u_x = X (cos wt - 1) - Y sin wt, u_y = Y (cos wt - 1) + X sin wt (displacement); their rates (velocity)
+        if explicit:
+            cx, sx, cy, sy, a0x, a0y, tt = -Y * omega, -X * omega, X * omega, -Y * omega, 0.0, 0.0, ", TIME=TOTAL TIME"
+        else:
+            cx, sx, cy, sy, a0x, a0y, tt = X, -Y, Y, X, -X, -Y, ""
+        for ax, a0, c, sn in (("X", a0x, cx, sx), ("Y", a0y, cy, sy)):
+            text += "*AMPLITUDE, NAME=H%s%d, DEFINITION=PERIODIC%s\n1, %.17g, 0., %.17g\n%.17g, %.17g\n" % (ax, n, tt, omega, a0, c, sn)
+    text += "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 0.\n"
+    hub = lambda typ: "".join("*BOUNDARY, %sAMPLITUDE=HX%d\n%d, 1, 1, 1.\n*BOUNDARY, %sAMPLITUDE=HY%d\n%d, 2, 2, 1.\n"
+                              % (typ, n, did(0, n), typ, n, did(0, n)) for n in range(nt))
+    out = "*NODE OUTPUT\nU, NT, RF, CPRESS\n*ELEMENT OUTPUT\nS\n"
+    if explicit:
+        text += "*INITIAL CONDITIONS, TYPE=VELOCITY\n"
+        for i in range(DISC_NR + 1):
+            for j in range(nt):
+                X, Y = nodes[did(i, j)]
+                text += "%d, 1, %.17g\n%d, 2, %.17g\n" % (did(i, j), -omega * Y, did(i, j), omega * X)
+        text += "*AMPLITUDE, NAME=RAMP, DEFINITION=SMOOTH STEP\n0., 0., 0.2, 1.\n"
+        text += "*STEP, NAME=PRESS\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n, 0.25\n*FIXED MASS SCALING, DT=2e-5\n"
+        text += "*BOUNDARY\nPADTOP, 1, 1\n" + hub("TYPE=VELOCITY, ") + "*DLOAD, AMPLITUDE=RAMP\nPADOUT, P2, %g\n" % Q_PAD
+        text += "*OUTPUT, FIELD, NUMBER INTERVAL=1\n" + out + "*END STEP\n"
+        text += "*STEP, NAME=SPIN\n*DYNAMIC TEMPERATURE-DISPLACEMENT, EXPLICIT\n, 1.\n*FIXED MASS SCALING, DT=2e-5\n"
+        text += "*OUTPUT, FIELD, NUMBER INTERVAL=8\n"
+    else:
+        text += "*STEP, NAME=PRESS, NLGEOM, INC=100\n*COUPLED TEMPERATURE-DISPLACEMENT\n0.25, 1.\n"
+        text += "*BOUNDARY\nHUB, 1, 2\nPADTOP, 1, 1\n*DLOAD\nPADOUT, P2, %g\n*END STEP\n" % Q_PAD
+        text += "*STEP, NAME=SPIN, INC=1000\n*COUPLED TEMPERATURE-DISPLACEMENT\n%.17g, 1., 1e-6, %.17g\n*OUTPUT, FIELD, NUMBER INTERVAL=8\n" % (1 / 180, 1 / 180)
+        text += hub("")
+    text += out + "*END STEP\n"
+    write("spin_disc_" + kind, text)
+
 for t in ("C3D8T", "CPS4T", "CGAX4T"):
     turn(t)
 for t in ("C3D8T", "CPE4T"):
@@ -216,3 +304,5 @@ for t in ("C3D8T", "CPE4T", "CAX4T"):
     pressure(t)
 for t in ("C3D8T", "CGAX4RHT"):
     jacobian(t)
+spin_disc("implicit")
+spin_disc("explicit")
