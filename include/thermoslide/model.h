@@ -148,18 +148,23 @@ typedef struct {
   TslLoc    loc;
 } TslInitialVelocity;
 
+/* *AMPLITUDE, DEFINITION=: points (TABULAR, EQUALLY SPACED, SMOOTH STEP) or a closed form */
+typedef enum { TSL_AMP_POINTS = 0, TSL_AMP_PERIODIC, TSL_AMP_DECAY, TSL_AMP_MODULATED } TslAmplitudeForm;
+
 typedef struct {
   char       name[TSL_NAME_LEN];
   PetscInt   n;
-  PetscReal *t, *a;      /* tabular (time, value) pairs, t ascending */
+  PetscReal *t, *a;      /* tabular (time, value) pairs, t ascending (EQUALLY SPACED: BEGIN + k FIXED INTERVAL) */
   PetscBool  total_time; /* TIME=TOTAL TIME (default STEP TIME) */
   PetscBool  smooth;     /* DEFINITION=SMOOTH STEP: a + (b - a) xi^3 (10 - 15 xi + 6 xi^2) between points */
-  /* DEFINITION=PERIODIC (n = 0, no points): a0 + sum_k cosc[k] cos((k+1) omega (t - t0)) + sinc[k] sin((k+1) omega (t - t0))
-   * for t >= t0, a0 before t0 (Abaqus's Fourier series) */
-  PetscBool  periodic;
-  PetscInt   nterm;
-  PetscReal  omega, t0, a0;
-  PetscReal *cosc, *sinc;
+  /* The closed forms (n = 0, no points), each a0 before t0 and, with tau = t - t0 >= 0 (Abaqus's definitions):
+   * PERIODIC   a0 + sum_k cosc[k] cos((k+1) omega tau) + sinc[k] sin((k+1) omega tau) (the Fourier series)
+   * DECAY      a0 + A exp(-tau / td)
+   * MODULATED  a0 + A sin(omega tau) sin(omega2 tau) */
+  TslAmplitudeForm form;
+  PetscInt         nterm;
+  PetscReal        omega, omega2, t0, a0, A, td;
+  PetscReal       *cosc, *sinc;
   TslLoc     loc;
 } TslAmplitude;
 

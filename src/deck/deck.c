@@ -1888,7 +1888,7 @@ static PetscErrorCode AmplitudePeriodic(Deck *d, TslAmplitude *a)
   PetscBool got;
 
   PetscFunctionBeginUser;
-  a->periodic = PETSC_TRUE;
+  a->form = TSL_AMP_PERIODIC;
   PetscCall(DataLine(d, 0, &got));
   USER_CHECK(got, LOC_FMT "*AMPLITUDE %s, DEFINITION=PERIODIC: expected a line \"N, omega, t0, A0\"", KLOC(d), a->name);
   USER_CHECK(d->nfield >= 2 && d->nfield <= 4, LOC_FMT "*AMPLITUDE, DEFINITION=PERIODIC: the first line holds N, omega, t0, A0 (got %" PetscInt_FMT " values)", DLOC(d), d->nfield);
@@ -1916,6 +1916,63 @@ static PetscErrorCode AmplitudePeriodic(Deck *d, TslAmplitude *a)
   PetscFunctionReturn(PETSC_SUCCESS);
 }
 
+/* DEFINITION=DECAY (one line "A0, A, t0, td": a = A0 + A exp(-(t - t0) / td) from t0) and MODULATED (one line
+ * "A0, A, t0, omega1, omega2": a = A0 + A sin(omega1 (t - t0)) sin(omega2 (t - t0)) from t0), A0 before t0. */
+static PetscErrorCode AmplitudeOneLine(Deck *d, TslAmplitude *a, const char *def)
+{
+  const PetscBool decay = (PetscBool)!strcmp(def, "DECAY");
+  const PetscInt  nval  = decay ? 4 : 5;
+  const char     *form  = decay ? "A0, A, t0, td" : "A0, A, t0, omega1, omega2";
+  PetscBool       got;
+
+  PetscFunctionBeginUser;
+  a->form = decay ? TSL_AMP_DECAY : TSL_AMP_MODULATED;
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(got, LOC_FMT "*AMPLITUDE %s, DEFINITION=%s: expected a line \"%s\"", KLOC(d), a->name, def, form);
+  USER_CHECK(d->nfield == nval, LOC_FMT "*AMPLITUDE, DEFINITION=%s: the line holds %s (got %" PetscInt_FMT " values)", DLOC(d), def, form, d->nfield);
+  PetscCall(FieldReal(d, 0, "the constant A0", &a->a0));
+  PetscCall(FieldReal(d, 1, "the coefficient A", &a->A));
+  PetscCall(FieldReal(d, 2, "the starting time t0", &a->t0));
+  if (decay) {
+    PetscCall(FieldReal(d, 3, "the decay time td", &a->td));
+    USER_CHECK(a->td > 0, LOC_FMT "*AMPLITUDE, DEFINITION=DECAY: the decay time td must be > 0 (got %g)", DLOC(d), (double)a->td);
+  } else {
+    PetscCall(FieldReal(d, 3, "the circular frequency omega1", &a->omega));
+    PetscCall(FieldReal(d, 4, "the circular frequency omega2", &a->omega2));
+    USER_CHECK(a->omega >= 0 && a->omega2 >= 0, LOC_FMT "*AMPLITUDE, DEFINITION=MODULATED: omega1 and omega2 must not be negative", DLOC(d));
+  }
+  PetscCall(DataLine(d, 0, &got));
+  USER_CHECK(!got, LOC_FMT "*AMPLITUDE, DEFINITION=%s takes one data line", DLOC(d), def);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
+/* DEFINITION=EQUALLY SPACED, FIXED INTERVAL=dt[, BEGIN=t_b]: the values a_k (any number per line) at t_b + k dt,
+ * interpolated linearly as TABULAR's points. */
+static PetscErrorCode AmplitudeEquallySpaced(Deck *d, TslAmplitude *a)
+{
+  PetscReal dt = 0, begin = 0;
+  PetscBool has_dt, got;
+
+  PetscFunctionBeginUser;
+  PetscCall(ParamReal(d, "FIXED INTERVAL", &dt, &has_dt));
+  PetscCall(ParamReal(d, "BEGIN", &begin, NULL));
+  USER_CHECK(has_dt, LOC_FMT "*AMPLITUDE %s, DEFINITION=EQUALLY SPACED needs FIXED INTERVAL= (the time between values)", KLOC(d), a->name);
+  USER_CHECK(dt > 0, LOC_FMT "*AMPLITUDE, FIXED INTERVAL must be > 0 (got %g)", KLOC(d), (double)dt);
+  for (;;) {
+    PetscCall(DataLine(d, 0, &got));
+    if (!got) break;
+    for (PetscInt i = 0; i < d->nfield; i++) {
+      PetscCall(TslDeckGrow(&a->t, sizeof(PetscReal), a->n));
+      PetscCall(TslDeckGrow(&a->a, sizeof(PetscReal), a->n));
+      PetscCall(FieldReal(d, i, "an amplitude value", &a->a[a->n]));
+      a->t[a->n] = begin + a->n * dt;
+      a->n++;
+    }
+  }
+  USER_CHECK(a->n > 0, LOC_FMT "*AMPLITUDE %s has no data", KLOC(d), a->name);
+  PetscFunctionReturn(PETSC_SUCCESS);
+}
+
 static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw)
 {
   TslModel     *m = d->m;
@@ -1932,16 +1989,27 @@ static PetscErrorCode KwAmplitude(Deck *d, const DeckKeyword *kw)
   def  = ParamUpper(d, "DEFINITION", b2, sizeof(b2));
   USER_CHECK(!time || !strcmp(time, "STEP TIME") || !strcmp(time, "TOTAL TIME"),
              LOC_FMT "*AMPLITUDE, TIME=%s is not supported (STEP TIME or TOTAL TIME)", KLOC(d), time);
-  USER_CHECK(!def || !strcmp(def, "TABULAR") || !strcmp(def, "SMOOTH STEP") || !strcmp(def, "PERIODIC"),
-             LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (TABULAR, SMOOTH STEP or PERIODIC)", KLOC(d), def);
+  USER_CHECK(!def || !strcmp(def, "TABULAR") || !strcmp(def, "SMOOTH STEP") || !strcmp(def, "PERIODIC") || !strcmp(def, "EQUALLY SPACED") ||
+               !strcmp(def, "DECAY") || !strcmp(def, "MODULATED"),
+             LOC_FMT "*AMPLITUDE, DEFINITION=%s is not supported (TABULAR, EQUALLY SPACED, SMOOTH STEP, PERIODIC, DECAY or MODULATED)", KLOC(d), def);
   PetscCall(TslDeckGrow(&m->amplitudes, sizeof(TslAmplitude), m->namplitude));
   a = &m->amplitudes[m->namplitude++];
   PetscCall(CopyName(d, d->kwloc, a->name, name));
   a->total_time = (time && !strcmp(time, "TOTAL TIME")) ? PETSC_TRUE : PETSC_FALSE;
   a->smooth     = (def && !strcmp(def, "SMOOTH STEP")) ? PETSC_TRUE : PETSC_FALSE;
   a->loc        = d->kwloc;
+  USER_CHECK(!(Param(d, "FIXED INTERVAL") || Param(d, "BEGIN")) || (def && !strcmp(def, "EQUALLY SPACED")),
+             LOC_FMT "*AMPLITUDE, FIXED INTERVAL= and BEGIN= belong to DEFINITION=EQUALLY SPACED", KLOC(d));
   if (def && !strcmp(def, "PERIODIC")) {
     PetscCall(AmplitudePeriodic(d, a));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (def && (!strcmp(def, "DECAY") || !strcmp(def, "MODULATED"))) {
+    PetscCall(AmplitudeOneLine(d, a, def));
+    PetscFunctionReturn(PETSC_SUCCESS);
+  }
+  if (def && !strcmp(def, "EQUALLY SPACED")) {
+    PetscCall(AmplitudeEquallySpaced(d, a));
     PetscFunctionReturn(PETSC_SUCCESS);
   }
   for (;;) {
@@ -3921,7 +3989,7 @@ static const DeckKeyword Keywords[] = {
      NULL},
     {"NODAL THICKNESS", AT_MODEL, IN_NONE, "", KwNodalThickness, 0, NULL},
     {"INITIAL CONDITIONS", AT_MODEL, IN_NONE, "TYPE", KwInitial, 0, NULL},
-    {"AMPLITUDE", AT_BOTH, IN_NONE, "NAME|TIME|DEFINITION", KwAmplitude, 0, NULL},
+    {"AMPLITUDE", AT_BOTH, IN_NONE, "NAME|TIME|DEFINITION|FIXED INTERVAL|BEGIN", KwAmplitude, 0, NULL},
     {"PHYSICAL CONSTANTS", AT_MODEL, IN_NONE, "ABSOLUTE ZERO|STEFAN BOLTZMANN", KwPhysical, 0, NULL},
     {"EQUATION", AT_MODEL, IN_NONE, "", KwEquation, 0, NULL},
     {"SURFACE INTERACTION", AT_MODEL, IN_NONE, "NAME", KwSurfaceInteraction, 0, NULL},

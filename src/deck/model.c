@@ -231,17 +231,36 @@ PetscInt TslModelElementIndex(const TslModel *model, PetscInt id)
 
 /* ---- amplitudes ------------------------------------------------------------------------------ */
 
-/* PERIODIC: the series at t (which = 0), or its primitive from t0 (which = 1): A0 (t - t0) + sum A_k sin(k w tau)/(k w)
- * + B_k (1 - cos(k w tau))/(k w), tau = t - t0; before t0 the constant A0 and its integral. */
-static PetscReal AmplitudeSeries(const TslAmplitude *amp, PetscReal t, PetscBool primitive)
+/* A closed form at t (primitive = 0) or its primitive from t0 (primitive = 1); before t0 the constant A0 and its integral.
+ * PERIODIC: A0 tau + sum A_k sin(k w tau)/(k w) + B_k (1 - cos(k w tau))/(k w); DECAY: A0 tau + A td (1 - exp(-tau/td));
+ * MODULATED: sin a tau sin b tau = (cos (a - b) tau - cos (a + b) tau) / 2, whose primitive takes sin(x tau)/x -> tau at x = 0. */
+static PetscReal SinOver(PetscReal x, PetscReal tau)
+{
+  return PetscAbsReal(x * tau) < 1e-8 ? tau : PetscSinReal(x * tau) / x;
+}
+
+static PetscReal AmplitudeClosed(const TslAmplitude *amp, PetscReal t, PetscBool primitive)
 {
   const PetscReal tau = t - amp->t0;
   PetscReal       s   = primitive ? amp->a0 * tau : amp->a0;
 
   if (tau <= 0) return s;
-  for (PetscInt k = 0; k < amp->nterm; k++) {
-    const PetscReal w = (k + 1) * amp->omega, c = PetscCosReal(w * tau), sn = PetscSinReal(w * tau);
-    s += primitive ? (amp->cosc[k] * sn + amp->sinc[k] * (1 - c)) / w : amp->cosc[k] * c + amp->sinc[k] * sn;
+  switch (amp->form) {
+  case TSL_AMP_PERIODIC:
+    for (PetscInt k = 0; k < amp->nterm; k++) {
+      const PetscReal w = (k + 1) * amp->omega, c = PetscCosReal(w * tau), sn = PetscSinReal(w * tau);
+      s += primitive ? (amp->cosc[k] * sn + amp->sinc[k] * (1 - c)) / w : amp->cosc[k] * c + amp->sinc[k] * sn;
+    }
+    break;
+  case TSL_AMP_DECAY:
+    s += primitive ? -amp->A * amp->td * expm1(-tau / amp->td) : amp->A * PetscExpReal(-tau / amp->td);
+    break;
+  case TSL_AMP_MODULATED:
+    s += primitive ? 0.5 * amp->A * (SinOver(amp->omega - amp->omega2, tau) - SinOver(amp->omega + amp->omega2, tau))
+                   : amp->A * PetscSinReal(amp->omega * tau) * PetscSinReal(amp->omega2 * tau);
+    break;
+  default:
+    break;
   }
   return s;
 }
@@ -251,8 +270,8 @@ PetscReal TslAmplitudeBound(const TslAmplitude *amp)
   PetscReal b = 0;
 
   if (!amp) return 1.0;
-  if (amp->periodic) {
-    b = PetscAbsReal(amp->a0);
+  if (amp->form != TSL_AMP_POINTS) {
+    b = PetscAbsReal(amp->a0) + PetscAbsReal(amp->A);
     for (PetscInt k = 0; k < amp->nterm; k++) b += PetscAbsReal(amp->cosc[k]) + PetscAbsReal(amp->sinc[k]);
     return b;
   }
@@ -264,7 +283,7 @@ PetscReal TslAmplitudeBound(const TslAmplitude *amp)
  * later value wins, so a jump at t takes effect at t. */
 PetscReal TslAmplitudeEval(const TslAmplitude *amp, PetscReal t)
 {
-  if (amp && amp->periodic) return AmplitudeSeries(amp, t, PETSC_FALSE);
+  if (amp && amp->form != TSL_AMP_POINTS) return AmplitudeClosed(amp, t, PETSC_FALSE);
   if (!amp || amp->n < 1) return 1.0;
   if (t < amp->t[0]) return amp->a[0];
   for (PetscInt i = 0; i + 1 < amp->n; i++) {
@@ -304,7 +323,7 @@ static PetscReal AmplitudePrimitive(const TslAmplitude *amp, PetscReal t)
 
 PetscReal TslAmplitudeIntegral(const TslAmplitude *amp, PetscReal ta, PetscReal tb)
 {
-  if (amp && amp->periodic) return AmplitudeSeries(amp, tb, PETSC_TRUE) - AmplitudeSeries(amp, ta, PETSC_TRUE);
+  if (amp && amp->form != TSL_AMP_POINTS) return AmplitudeClosed(amp, tb, PETSC_TRUE) - AmplitudeClosed(amp, ta, PETSC_TRUE);
   if (!amp || amp->n < 1) return tb - ta;
   return AmplitudePrimitive(amp, tb) - AmplitudePrimitive(amp, ta);
 }

@@ -86,7 +86,8 @@ static PetscErrorCode TestInitialVelocity(void)
 }
 
 /* *AMPLITUDE, DEFINITION=PERIODIC: a = A0 + sum A_k cos(k w (t - t0)) + B_k sin(k w (t - t0)) from t0, A0 before, and its
- * integral in closed form (a velocity boundary condition integrates it); the defaults t0 = A0 = 0; through pack/unpack. */
+ * integral in closed form (a velocity boundary condition integrates it); the defaults t0 = A0 = 0; DECAY, MODULATED and
+ * EQUALLY SPACED alike; all through pack/unpack. */
 static PetscReal SpinSeries(PetscReal t)
 {
   const PetscReal w = 3.0, tau = t - 0.5;
@@ -109,15 +110,15 @@ static PetscErrorCode TestPeriodicAmplitude(void)
   size_t              len;
 
   PetscFunctionBeginUser;
-  PetscCall(TslDeckRead(TSL_DECK_DATA "/periodic.inp", &m));
+  PetscCall(TslDeckRead(TSL_DECK_DATA "/amplitude_forms.inp", &m));
   PetscCall(TslModelPack(m, &buf, &len));
   PetscCall(TslModelUnpack(buf, len, &s));
   PetscCall(PetscFree(buf));
-  EXPECT(s->namplitude == 2);
+  EXPECT(s->namplitude == 6);
   spin  = &s->amplitudes[TslModelFindAmplitude(s, "SPIN")];
   plain = &s->amplitudes[TslModelFindAmplitude(s, "PLAIN")];
-  EXPECT(spin->periodic && spin->nterm == 2 && spin->n == 0 && !spin->total_time);
-  EXPECT(plain->periodic && plain->nterm == 1 && plain->t0 == 0 && plain->a0 == 0 && plain->total_time);
+  EXPECT(spin->form == TSL_AMP_PERIODIC && spin->nterm == 2 && spin->n == 0 && !spin->total_time);
+  EXPECT(plain->form == TSL_AMP_PERIODIC && plain->nterm == 1 && plain->t0 == 0 && plain->a0 == 0 && plain->total_time);
   for (PetscReal t = 0; t <= 4.0; t += 0.37) {
     EXPECT(PetscAbsReal(TslAmplitudeEval(spin, t) - SpinSeries(t)) < 1e-13);
     EXPECT(PetscAbsReal(TslAmplitudeIntegral(spin, 0.2, t) - (SpinPrimitive(t) - SpinPrimitive(0.2))) < 1e-13);
@@ -125,6 +126,25 @@ static PetscErrorCode TestPeriodicAmplitude(void)
   }
   EXPECT(PetscAbsReal(TslAmplitudeIntegral(plain, 0, 1)) < 1e-14); /* a whole period of a sine */
   EXPECT(PetscAbsReal(TslAmplitudeBound(spin) - 4.75) < 1e-14);
+  {
+    /* DECAY: 2 + 3 exp(-(t - 0.25) / 0.5); MODULATED: 0.5 + 2 sin 7 tau sin 3 tau (tau = t - 0.1), and with equal
+     * frequencies sin^2 4t (its primitive t/2 - sin 8t / 16); EQUALLY SPACED: 0, 1, 4, -2 at 1, 1.5, 2, 2.5 */
+    const TslAmplitude *fade = &s->amplitudes[TslModelFindAmplitude(s, "FADE")], *beat = &s->amplitudes[TslModelFindAmplitude(s, "BEAT")];
+    const TslAmplitude *unison = &s->amplitudes[TslModelFindAmplitude(s, "UNISON")], *rec = &s->amplitudes[TslModelFindAmplitude(s, "RECORD")];
+    EXPECT(fade->form == TSL_AMP_DECAY && beat->form == TSL_AMP_MODULATED && rec->form == TSL_AMP_POINTS && rec->n == 4);
+    for (PetscReal t = 0; t <= 3.0; t += 0.23) {
+      const PetscReal tf = t - 0.25, tb = t - 0.1;
+      const PetscReal fade_int = (tf <= 0 ? 2 * tf : 2 * tf + 1.5 * (1 - exp(-tf / 0.5))) - 2 * (0.05 - 0.25);
+      const PetscReal beat_prim = tb <= 0 ? 0.5 * tb : 0.5 * tb + (sin(4 * tb) / 4 - sin(10 * tb) / 10);
+      EXPECT(PetscAbsReal(TslAmplitudeEval(fade, t) - (tf < 0 ? 2 : 2 + 3 * exp(-tf / 0.5))) < 1e-13);
+      EXPECT(PetscAbsReal(TslAmplitudeIntegral(fade, 0.05, t) - fade_int) < 1e-13);
+      EXPECT(PetscAbsReal(TslAmplitudeEval(beat, t) - (tb < 0 ? 0.5 : 0.5 + 2 * sin(7 * tb) * sin(3 * tb))) < 1e-13);
+      EXPECT(PetscAbsReal(TslAmplitudeIntegral(beat, 0, t) - (beat_prim + 0.05)) < 1e-13);
+      EXPECT(PetscAbsReal(TslAmplitudeIntegral(unison, 0, t) - (t / 2 - sin(8 * t) / 16)) < 1e-13);
+    }
+    EXPECT(TslAmplitudeEval(rec, 0.5) == 0 && TslAmplitudeEval(rec, 1.75) == 2.5 && TslAmplitudeEval(rec, 2.25) == 1 && TslAmplitudeEval(rec, 9) == -2);
+    EXPECT(PetscAbsReal(TslAmplitudeBound(fade) - 5) < 1e-14 && PetscAbsReal(TslAmplitudeBound(rec) - 4) < 1e-14);
+  }
   PetscCall(TslModelDestroy(&s));
   PetscCall(TslModelDestroy(&m));
   PetscFunctionReturn(PETSC_SUCCESS);
